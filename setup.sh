@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# One entry point for a fresh Debian 12 machine:
+#   ./setup.sh demo   install what is missing, build, run the main job on an embedded sample
+#   ./setup.sh test   install what is missing, build, run the whole test suite
+# Idempotent: packages already installed are not touched, and an up-to-date build does nothing.
+set -euo pipefail
+cd "$(dirname "$0")"
+
+BUILD_DIR=${HULLPACK_BUILD_DIR:-build}
+JOBS=$(nproc 2>/dev/null || echo 2)
+
+# Debian packages the build and the tests need (keep sorted).
+PACKAGES=(
+  cmake
+  g++
+  libassimp-dev
+  libeigen3-dev
+  libgmock-dev
+  libgtest-dev
+  make
+  ninja-build
+  pkg-config
+  zlib1g-dev
+)
+
+log() { printf 'setup: %s\n' "$*" >&2; }
+
+install_missing_packages() {
+  local missing=()
+  for p in "${PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  log "installing ${missing[*]}"
+  local sudo=()
+  if [ "$(id -u)" -ne 0 ]; then
+    command -v sudo >/dev/null || { log "need root or sudo to install: ${missing[*]}"; exit 1; }
+    sudo=(sudo)
+  fi
+  "${sudo[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+configure_and_build() {
+  if [ ! -f "$BUILD_DIR/CMakeCache.txt" ]; then
+    log "configuring $BUILD_DIR"
+    cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release
+  fi
+  log "building ($JOBS jobs)"
+  cmake --build "$BUILD_DIR" -j "$JOBS"
+}
+
+case "${1:-}" in
+  demo)
+    install_missing_packages
+    configure_and_build
+    log "running: hullpack info samples/torus.obj"
+    "$BUILD_DIR/tools/hullpack/hullpack" info samples/torus.obj
+    ;;
+  test)
+    install_missing_packages
+    configure_and_build
+    ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS"
+    ;;
+  *)
+    echo "usage: ./setup.sh demo|test" >&2
+    exit 2
+    ;;
+esac

@@ -1,0 +1,114 @@
+// The scene model: what every reader produces, every check inspects and every writer consumes.
+// Plain data, no behaviour beyond size queries; the pipeline stages live in their own folders.
+#ifndef HULLPACK_TOOLS_SCENE_SCENE_H_
+#define HULLPACK_TOOLS_SCENE_SCENE_H_
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace hullpack {
+
+// Column-major 4x4 matrix, as glTF stores it.
+using Matrix4 = std::array<double, 16>;
+constexpr Matrix4 kIdentity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+
+// An image as the source file held it: encoded bytes (PNG/JPEG/...) or an external URI.
+struct Image {
+  std::string name;
+  std::string uri;        // empty when the bytes are embedded
+  std::string mime_type;  // "image/png", "image/jpeg", ... (may be empty for URIs)
+  std::vector<uint8_t> bytes;
+};
+
+// A reference from a material slot to an image, read through one UV set.
+struct TextureRef {
+  int image = -1;   // index into Scene::images; -1 = no texture in this slot
+  int uv_set = 0;   // which Mesh::uv_sets entry the texture is sampled with
+  bool used() const { return image >= 0; }
+};
+
+struct Material {
+  std::string name;
+  std::array<float, 4> base_color = {1, 1, 1, 1};
+  float metallic = 1.0f;
+  float roughness = 1.0f;
+  std::array<float, 3> emissive = {0, 0, 0};
+  bool double_sided = false;
+  TextureRef base_color_texture;
+  TextureRef metallic_roughness_texture;
+  TextureRef normal_texture;
+  TextureRef occlusion_texture;
+  TextureRef emissive_texture;
+};
+
+// An indexed triangle mesh. Every per-vertex array is either empty or holds exactly
+// vertex_count() entries of its width; material_ids is empty or one per triangle.
+struct Mesh {
+  std::string name;
+  std::vector<float> positions;               // 3 per vertex
+  std::vector<uint32_t> indices;              // 3 per triangle
+  std::vector<float> normals;                 // 3 per vertex, or empty
+  std::vector<float> tangents;                // 4 per vertex (xyz, handedness), or empty
+  std::vector<std::vector<float>> uv_sets;    // each 2 per vertex
+  std::vector<float> colors;                  // 4 per vertex (RGBA, 0..1), or empty
+  std::vector<uint16_t> joints;               // 4 per vertex (indices into the skin's joints), or empty
+  std::vector<float> weights;                 // 4 per vertex, or empty
+  std::vector<uint32_t> material_ids;         // 1 per triangle (index into Scene::materials), or empty
+  bool collides = true;                       // false when the source marks it as non-colliding
+
+  size_t vertex_count() const { return positions.size() / 3; }
+  size_t triangle_count() const { return indices.size() / 3; }
+  bool has_skin() const { return !joints.empty() && !weights.empty(); }
+};
+
+struct Skin {
+  std::string name;
+  std::vector<int> joints;                    // node indices
+  std::vector<float> inverse_bind_matrices;   // 16 per joint (column-major), or empty
+  int skeleton = -1;                          // root node, or -1
+};
+
+struct Node {
+  std::string name;
+  int parent = -1;                            // -1 for a root
+  std::vector<int> children;
+  Matrix4 local_transform = kIdentity;
+  std::vector<int> meshes;                    // indices into Scene::meshes
+  int skin = -1;                              // index into Scene::skins, or -1
+};
+
+struct Scene {
+  std::vector<Mesh> meshes;
+  std::vector<Material> materials;
+  std::vector<Image> images;
+  std::vector<Skin> skins;
+  std::vector<Node> nodes;                    // nodes[0..] in any order; roots have parent -1
+  // What a reader could not keep, one human-readable line each ("dropped 2 animations: ...").
+  std::vector<std::string> dropped;
+
+  size_t triangle_count() const {
+    size_t n = 0;
+    for (const Mesh& m : meshes) n += m.triangle_count();
+    return n;
+  }
+  size_t vertex_count() const {
+    size_t n = 0;
+    for (const Mesh& m : meshes) n += m.vertex_count();
+    return n;
+  }
+};
+
+// A scene with one root node that holds every mesh; what formats without a hierarchy produce.
+inline void AddRootNodeForAllMeshes(Scene& scene, const std::string& name) {
+  Node root;
+  root.name = name;
+  for (size_t i = 0; i < scene.meshes.size(); ++i) root.meshes.push_back(static_cast<int>(i));
+  scene.nodes.push_back(std::move(root));
+}
+
+}  // namespace hullpack
+
+#endif  // HULLPACK_TOOLS_SCENE_SCENE_H_
