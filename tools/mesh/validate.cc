@@ -1,0 +1,110 @@
+#include "mesh/validate.h"
+
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace hullpack {
+namespace {
+
+// An attribute must be empty or hold exactly `width` values per vertex.
+template <typename T>
+Status CheckSize(const std::vector<T>& values, size_t width, size_t vertex_count,
+                 const std::string& name) {
+  if (values.empty() || values.size() == width * vertex_count) return Status::Ok();
+  std::ostringstream msg;
+  msg << name << ": " << values.size() << " values for " << vertex_count << " vertices (expected "
+      << width * vertex_count << " = " << width << " per vertex, or none)";
+  return Status(StatusCode::kInvalidMesh, msg.str());
+}
+
+// `components` names each value of one vertex ("xyz", "rgba", ...); its length is the width.
+Status CheckFinite(const std::vector<float>& values, const std::string& components,
+                   const std::string& name) {
+  const size_t width = components.size();
+  size_t bad = 0;
+  size_t first = 0;
+  for (size_t i = 0; i < values.size(); ++i) {
+    if (std::isfinite(values[i])) continue;
+    if (bad++ == 0) first = i;
+  }
+  if (bad == 0) return Status::Ok();
+  std::ostringstream msg;
+  msg << name << ": " << bad << " non-finite value" << (bad == 1 ? "" : "s") << ", first at vertex "
+      << first / width << " (" << components[first % width] << " = " << values[first]
+      << ")";
+  return Status(StatusCode::kInvalidMesh, msg.str());
+}
+
+}  // namespace
+
+Status ValidateMesh(const Mesh& mesh) {
+  const std::string where = mesh.name.empty() ? std::string("mesh: ") : "mesh '" + mesh.name + "': ";
+  auto fail = [&where](const Status& status) {
+    return Status(status.code(), where + status.message());
+  };
+
+  if (mesh.positions.size() % 3 != 0) {
+    return fail(Status(StatusCode::kInvalidMesh,
+                       "positions: " + std::to_string(mesh.positions.size()) +
+                           " values, not a multiple of 3"));
+  }
+  if (mesh.indices.size() % 3 != 0) {
+    return fail(Status(StatusCode::kInvalidMesh,
+                       "indices: " + std::to_string(mesh.indices.size()) +
+                           " values, not a multiple of 3 (triangles only)"));
+  }
+
+  const size_t n = mesh.vertex_count();
+  const Status size_checks[] = {
+      CheckSize(mesh.normals, 3, n, "normals"),
+      CheckSize(mesh.tangents, 4, n, "tangents"),
+      CheckSize(mesh.colors, 4, n, "colors"),
+      CheckSize(mesh.joints, 4, n, "joints"),
+      CheckSize(mesh.weights, 4, n, "weights"),
+  };
+  for (const Status& s : size_checks) {
+    if (!s.ok()) return fail(s);
+  }
+  for (size_t set = 0; set < mesh.uv_sets.size(); ++set) {
+    Status s = CheckSize(mesh.uv_sets[set], 2, n, "uv set " + std::to_string(set));
+    if (!s.ok()) return fail(s);
+  }
+  if (mesh.joints.empty() != mesh.weights.empty()) {
+    return fail(Status(StatusCode::kInvalidMesh,
+                       mesh.joints.empty() ? "weights without joints" : "joints without weights"));
+  }
+  if (!mesh.material_ids.empty() && mesh.material_ids.size() != mesh.triangle_count()) {
+    return fail(Status(StatusCode::kInvalidMesh,
+                       "material_ids: " + std::to_string(mesh.material_ids.size()) + " ids for " +
+                           std::to_string(mesh.triangle_count()) + " triangles"));
+  }
+
+  size_t bad_indices = 0;
+  size_t first_bad = 0;
+  for (size_t i = 0; i < mesh.indices.size(); ++i) {
+    if (mesh.indices[i] < n) continue;
+    if (bad_indices++ == 0) first_bad = i;
+  }
+  if (bad_indices > 0) {
+    std::ostringstream msg;
+    msg << "indices: " << bad_indices << " out of range (vertex count " << n
+        << "), first in triangle " << first_bad / 3 << " (corner " << first_bad % 3 << " = "
+        << mesh.indices[first_bad] << ")";
+    return fail(Status(StatusCode::kInvalidMesh, msg.str()));
+  }
+
+  Status s = CheckFinite(mesh.positions, "xyz", "positions");
+  if (s.ok()) s = CheckFinite(mesh.normals, "xyz", "normals");
+  if (s.ok()) s = CheckFinite(mesh.tangents, "xyzw", "tangents");
+  if (s.ok()) s = CheckFinite(mesh.colors, "rgba", "colors");
+  if (s.ok()) s = CheckFinite(mesh.weights, "0123", "weights");
+  for (size_t set = 0; s.ok() && set < mesh.uv_sets.size(); ++set) {
+    s = CheckFinite(mesh.uv_sets[set], "uv", "uv set " + std::to_string(set));
+  }
+  if (!s.ok()) return fail(s);
+  return Status::Ok();
+}
+
+}  // namespace hullpack
