@@ -52,7 +52,7 @@ struct Mesh {
   std::vector<uint32_t> indices;              // 3 per triangle
   std::vector<float> normals;                 // 3 per vertex, or empty
   std::vector<float> tangents;                // 4 per vertex (xyz, handedness), or empty
-  std::vector<std::vector<float>> uv_sets;    // each 2 per vertex
+  std::vector<std::vector<float>> uv_sets;    // each 2 per vertex; glTF convention (v = 0 at the top)
   std::vector<float> colors;                  // 4 per vertex (RGBA, 0..1), or empty
   std::vector<uint16_t> joints;               // 4 per vertex (indices into the skin's joints), or empty
   std::vector<float> weights;                 // 4 per vertex, or empty
@@ -88,6 +88,8 @@ struct Scene {
   std::vector<Node> nodes;                    // nodes[0..] in any order; roots have parent -1
   // What a reader could not keep, one human-readable line each ("dropped 2 animations: ...").
   std::vector<std::string> dropped;
+  // Vertex records the file held (OBJ `v` lines, OFF/PLY vertices, ...) before unification; 0 = unknown.
+  size_t source_vertex_records = 0;
 
   size_t triangle_count() const {
     size_t n = 0;

@@ -1,0 +1,69 @@
+#include "common/file_util.h"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <random>
+
+namespace hullpack {
+
+Result<std::vector<uint8_t>> ReadFileBytes(const std::string& path) {
+  struct stat st;
+  if (stat(path.c_str(), &st) != 0) {
+    return Status(StatusCode::kIoError, path + ": " + std::strerror(errno));
+  }
+  if (S_ISDIR(st.st_mode)) return Status(StatusCode::kIoError, path + ": is a directory");
+  FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) return Status(StatusCode::kIoError, path + ": " + std::strerror(errno));
+  std::vector<uint8_t> bytes;
+  uint8_t chunk[1 << 16];
+  size_t n;
+  while ((n = std::fread(chunk, 1, sizeof(chunk), f)) > 0) bytes.insert(bytes.end(), chunk, chunk + n);
+  const bool failed = std::ferror(f) != 0;
+  std::fclose(f);
+  if (failed) return Status(StatusCode::kIoError, path + ": read error");
+  return bytes;
+}
+
+Status WriteFileAtomically(const std::string& path, const void* data, size_t size) {
+  std::random_device rd;
+  const std::string tmp = path + ".tmp-" + std::to_string(getpid()) + "-" + std::to_string(rd() % 1000000);
+  FILE* f = std::fopen(tmp.c_str(), "wb");
+  if (!f) return Status(StatusCode::kIoError, path + ": cannot create: " + std::strerror(errno));
+  bool ok = size == 0 || std::fwrite(data, 1, size, f) == size;
+  ok = (std::fflush(f) == 0) && ok;
+  ok = (fsync(fileno(f)) == 0 || errno == EINVAL) && ok;
+  ok = (std::fclose(f) == 0) && ok;
+  if (!ok) {
+    const std::string why = std::strerror(errno);
+    std::remove(tmp.c_str());
+    return Status(StatusCode::kIoError, path + ": write failed: " + why);
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    const std::string why = std::strerror(errno);
+    std::remove(tmp.c_str());
+    return Status(StatusCode::kIoError, path + ": cannot rename into place: " + why);
+  }
+  return Status::Ok();
+}
+
+bool SameFile(const std::string& a, const std::string& b) {
+  struct stat sa, sb;
+  if (stat(a.c_str(), &sa) != 0 || stat(b.c_str(), &sb) != 0) return false;
+  return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
+std::string LowerExtension(const std::string& path) {
+  const size_t slash = path.find_last_of("/\\");
+  const size_t dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  std::string ext = path.substr(dot + 1);
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+}  // namespace hullpack

@@ -1,0 +1,329 @@
+#include "io/assimp_reader.h"
+
+#include <assimp/GltfMaterial.h>
+#include <assimp/material.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <algorithm>
+#include <array>
+#include <assimp/Importer.hpp>
+#include <cmath>
+#include <map>
+#include <unordered_map>
+
+namespace hullpack {
+namespace {
+
+Matrix4 ToColumnMajor(const aiMatrix4x4& m) {
+  // aiMatrix4x4 is row-major (a1..a4 is the first row).
+  return {m.a1, m.b1, m.c1, m.d1, m.a2, m.b2, m.c2, m.d2, m.a3, m.b3, m.c3, m.d3, m.a4, m.b4, m.c4, m.d4};
+}
+
+class AssimpConverter {
+ public:
+  AssimpConverter(const aiScene& ai, const std::string& name) : ai_(ai), name_(name) {}
+
+  Scene Convert() {
+    ConvertImagesAndMaterials();
+    mesh_index_.assign(ai_.mNumMeshes, -1);
+    for (unsigned i = 0; i < ai_.mNumMeshes; ++i) ConvertMesh(i);
+    if (ai_.mRootNode) ConvertNode(*ai_.mRootNode, -1);
+    ConvertSkins();
+    Note(ai_.mNumAnimations, "animations not kept");
+    Note(ai_.mNumCameras, "cameras not kept");
+    Note(ai_.mNumLights, "lights not kept");
+    Note(point_line_meshes_, "point or line primitives not kept: meshes hold triangles only");
+    Note(morph_targets_, "morph targets not kept");
+    Note(extra_color_sets_, "extra vertex colour sets not kept (the first is)");
+    Note(clipped_influences_, "vertices with more than 4 joint influences: the 4 largest kept, renormalized");
+    for (const Mesh& m : scene_.meshes) scene_.source_vertex_records += m.vertex_count();
+    return std::move(scene_);
+  }
+
+ private:
+  void Note(size_t count, const std::string& what) {
+    if (count) scene_.dropped.push_back(std::to_string(count) + " " + what);
+  }
+
+  int ImageFor(const aiString& path) {
+    const std::string key(path.C_Str());
+    auto it = image_of_path_.find(key);
+    if (it != image_of_path_.end()) return it->second;
+    Image image;
+    image.name = key;
+    const aiTexture* embedded = ai_.GetEmbeddedTexture(path.C_Str());
+    if (embedded) {
+      if (embedded->mHeight == 0 && embedded->pcData) {
+        const uint8_t* bytes = reinterpret_cast<const uint8_t*>(embedded->pcData);
+        image.bytes.assign(bytes, bytes + embedded->mWidth);
+        const std::string hint(embedded->achFormatHint);
+        image.mime_type = hint == "jpg" || hint == "jpeg" ? "image/jpeg" : "image/" + hint;
+      } else {
+        scene_.dropped.push_back("uncompressed embedded texture '" + key + "' not kept");
+        image_of_path_.emplace(key, -1);
+        return -1;
+      }
+    } else {
+      image.uri = key;
+    }
+    scene_.images.push_back(std::move(image));
+    const int index = static_cast<int>(scene_.images.size() - 1);
+    image_of_path_.emplace(key, index);
+    return index;
+  }
+
+  TextureRef Texture(const aiMaterial& m, aiTextureType type) {
+    TextureRef ref;
+    aiString path;
+    unsigned uv_index = 0;
+    if (m.GetTextureCount(type) == 0 || m.GetTexture(type, 0, &path, nullptr, &uv_index) != AI_SUCCESS) return ref;
+    ref.image = ImageFor(path);
+    ref.uv_set = static_cast<int>(uv_index);
+    return ref;
+  }
+
+  void ConvertImagesAndMaterials() {
+    for (unsigned i = 0; i < ai_.mNumMaterials; ++i) {
+      const aiMaterial& am = *ai_.mMaterials[i];
+      Material m;
+      aiString name;
+      if (am.Get(AI_MATKEY_NAME, name) == AI_SUCCESS) m.name = name.C_Str();
+      aiColor4D color;
+      if (am.Get(AI_MATKEY_BASE_COLOR, color) == AI_SUCCESS || am.Get(AI_MATKEY_COLOR_DIFFUSE, color) == AI_SUCCESS) {
+        m.base_color = {color.r, color.g, color.b, color.a};
+      }
+      float opacity;
+      if (am.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS && opacity < 1.0f) m.base_color[3] = opacity;
+      am.Get(AI_MATKEY_METALLIC_FACTOR, m.metallic);
+      am.Get(AI_MATKEY_ROUGHNESS_FACTOR, m.roughness);
+      aiColor3D emissive;
+      if (am.Get(AI_MATKEY_COLOR_EMISSIVE, emissive) == AI_SUCCESS) m.emissive = {emissive.r, emissive.g, emissive.b};
+      int two_sided = 0;
+      if (am.Get(AI_MATKEY_TWOSIDED, two_sided) == AI_SUCCESS) m.double_sided = two_sided != 0;
+      m.base_color_texture = Texture(am, aiTextureType_BASE_COLOR);
+      if (!m.base_color_texture.used()) m.base_color_texture = Texture(am, aiTextureType_DIFFUSE);
+      m.metallic_roughness_texture = Texture(am, aiTextureType_UNKNOWN);
+      m.normal_texture = Texture(am, aiTextureType_NORMALS);
+      m.occlusion_texture = Texture(am, aiTextureType_LIGHTMAP);
+      m.emissive_texture = Texture(am, aiTextureType_EMISSIVE);
+      scene_.materials.push_back(std::move(m));
+    }
+  }
+
+  void ConvertMesh(unsigned index) {
+    const aiMesh& am = *ai_.mMeshes[index];
+    if (!(am.mPrimitiveTypes & aiPrimitiveType_TRIANGLE) || am.mNumFaces == 0) {
+      ++point_line_meshes_;
+      return;
+    }
+    Mesh m;
+    m.name = am.mName.C_Str();
+    const size_t n = am.mNumVertices;
+    m.positions.resize(n * 3);
+    for (size_t i = 0; i < n; ++i) {
+      m.positions[i * 3] = am.mVertices[i].x;
+      m.positions[i * 3 + 1] = am.mVertices[i].y;
+      m.positions[i * 3 + 2] = am.mVertices[i].z;
+    }
+    if (am.mNormals) {
+      m.normals.resize(n * 3);
+      for (size_t i = 0; i < n; ++i) {
+        m.normals[i * 3] = am.mNormals[i].x;
+        m.normals[i * 3 + 1] = am.mNormals[i].y;
+        m.normals[i * 3 + 2] = am.mNormals[i].z;
+      }
+    }
+    if (am.mTangents && am.mBitangents && am.mNormals) {
+      m.tangents.resize(n * 4);
+      for (size_t i = 0; i < n; ++i) {
+        const aiVector3D& t = am.mTangents[i];
+        const aiVector3D& b = am.mBitangents[i];
+        const aiVector3D& nn = am.mNormals[i];
+        const aiVector3D c = nn ^ t;  // cross product
+        m.tangents[i * 4] = t.x;
+        m.tangents[i * 4 + 1] = t.y;
+        m.tangents[i * 4 + 2] = t.z;
+        m.tangents[i * 4 + 3] = (c * b) < 0.0f ? -1.0f : 1.0f;
+      }
+    }
+    for (unsigned k = 0; k < AI_MAX_NUMBER_OF_TEXTURECOORDS && am.HasTextureCoords(k); ++k) {
+      std::vector<float> uv(n * 2);
+      for (size_t i = 0; i < n; ++i) {
+        uv[i * 2] = am.mTextureCoords[k][i].x;
+        uv[i * 2 + 1] = am.mTextureCoords[k][i].y;
+      }
+      m.uv_sets.push_back(std::move(uv));
+    }
+    if (am.HasVertexColors(0)) {
+      m.colors.resize(n * 4);
+      for (size_t i = 0; i < n; ++i) {
+        const aiColor4D& c = am.mColors[0][i];
+        m.colors[i * 4] = c.r;
+        m.colors[i * 4 + 1] = c.g;
+        m.colors[i * 4 + 2] = c.b;
+        m.colors[i * 4 + 3] = c.a;
+      }
+    }
+    for (unsigned k = 1; k < AI_MAX_NUMBER_OF_COLOR_SETS; ++k) extra_color_sets_ += am.HasVertexColors(k);
+    morph_targets_ += am.mNumAnimMeshes;
+    m.indices.reserve(static_cast<size_t>(am.mNumFaces) * 3);
+    for (unsigned f = 0; f < am.mNumFaces; ++f) {
+      const aiFace& face = am.mFaces[f];
+      if (face.mNumIndices != 3) continue;  // points/lines sorted into this mesh by SortByPType
+      m.indices.insert(m.indices.end(), face.mIndices, face.mIndices + 3);
+    }
+    if (ai_.mNumMaterials > 1 || (ai_.mNumMaterials == 1 && am.mMaterialIndex == 0 && HasNamedMaterial())) {
+      m.material_ids.assign(m.triangle_count(), am.mMaterialIndex);
+    }
+    if (am.HasBones()) ConvertBones(am, m);
+    mesh_index_[index] = static_cast<int>(scene_.meshes.size());
+    scene_.meshes.push_back(std::move(m));
+  }
+
+  bool HasNamedMaterial() const {
+    aiString name;
+    return ai_.mMaterials[0]->Get(AI_MATKEY_NAME, name) == AI_SUCCESS && std::string(name.C_Str()) != AI_DEFAULT_MATERIAL_NAME;
+  }
+
+  // Per vertex: the (up to) four largest influences, renormalized to sum to one.
+  void ConvertBones(const aiMesh& am, Mesh& m) {
+    const size_t n = am.mNumVertices;
+    std::vector<std::array<std::pair<float, uint16_t>, 8>> influences(n);
+    std::vector<uint8_t> counts(n, 0);
+    for (unsigned b = 0; b < am.mNumBones && b < 65535; ++b) {
+      const aiBone& bone = *am.mBones[b];
+      for (unsigned w = 0; w < bone.mNumWeights; ++w) {
+        const aiVertexWeight& vw = bone.mWeights[w];
+        if (vw.mVertexId >= n || !(vw.mWeight > 0.0f)) continue;
+        auto& slots = influences[vw.mVertexId];
+        uint8_t& c = counts[vw.mVertexId];
+        if (c < slots.size()) {
+          slots[c++] = {vw.mWeight, static_cast<uint16_t>(b)};
+        } else {
+          auto smallest = std::min_element(slots.begin(), slots.end());
+          if (smallest->first < vw.mWeight) *smallest = {vw.mWeight, static_cast<uint16_t>(b)};
+        }
+      }
+    }
+    m.joints.assign(n * 4, 0);
+    m.weights.assign(n * 4, 0.0f);
+    for (size_t i = 0; i < n; ++i) {
+      auto& slots = influences[i];
+      const uint8_t c = counts[i];
+      std::sort(slots.begin(), slots.begin() + c, [](const auto& a, const auto& b) {
+        return a.first != b.first ? a.first > b.first : a.second < b.second;
+      });
+      if (c > 4) ++clipped_influences_;
+      float sum = 0;
+      for (int k = 0; k < std::min<int>(c, 4); ++k) sum += slots[k].first;
+      for (int k = 0; k < std::min<int>(c, 4); ++k) {
+        m.joints[i * 4 + k] = slots[k].second;
+        m.weights[i * 4 + k] = sum > 0 ? slots[k].first / sum : 0.0f;
+      }
+    }
+    skinned_.push_back({&am, scene_.meshes.size()});
+  }
+
+  int ConvertNode(const aiNode& an, int parent) {
+    const int index = static_cast<int>(scene_.nodes.size());
+    scene_.nodes.emplace_back();
+    {
+      Node& node = scene_.nodes.back();
+      node.name = an.mName.C_Str();
+      node.parent = parent;
+      node.local_transform = ToColumnMajor(an.mTransformation);
+      for (unsigned i = 0; i < an.mNumMeshes; ++i) {
+        const unsigned mi = an.mMeshes[i];
+        if (mi < mesh_index_.size() && mesh_index_[mi] >= 0) node.meshes.push_back(mesh_index_[mi]);
+      }
+    }
+    node_of_name_.emplace(an.mName.C_Str(), index);
+    for (unsigned c = 0; c < an.mNumChildren; ++c) {
+      const int child = ConvertNode(*an.mChildren[c], index);
+      scene_.nodes[index].children.push_back(child);
+    }
+    return index;
+  }
+
+  void ConvertSkins() {
+    for (const auto& [am, mesh] : skinned_) {
+      Skin skin;
+      skin.name = std::string(am->mName.C_Str()) + "_skin";
+      for (unsigned b = 0; b < am->mNumBones; ++b) {
+        const aiBone& bone = *am->mBones[b];
+        auto it = node_of_name_.find(bone.mName.C_Str());
+        skin.joints.push_back(it == node_of_name_.end() ? -1 : it->second);
+        const Matrix4 inv = ToColumnMajor(bone.mOffsetMatrix);
+        skin.inverse_bind_matrices.insert(skin.inverse_bind_matrices.end(), inv.begin(), inv.end());
+      }
+      if (std::find(skin.joints.begin(), skin.joints.end(), -1) != skin.joints.end()) {
+        scene_.dropped.push_back("skin of mesh '" + std::string(am->mName.C_Str()) + "' names joints with no node: skin not kept");
+        scene_.meshes[mesh].joints.clear();
+        scene_.meshes[mesh].weights.clear();
+        continue;
+      }
+      const int skin_index = static_cast<int>(scene_.skins.size());
+      scene_.skins.push_back(std::move(skin));
+      for (Node& node : scene_.nodes) {
+        if (std::find(node.meshes.begin(), node.meshes.end(), static_cast<int>(mesh)) != node.meshes.end()) node.skin = skin_index;
+      }
+    }
+  }
+
+  const aiScene& ai_;
+  const std::string& name_;
+  Scene scene_;
+  std::vector<int> mesh_index_;
+  std::map<std::string, int> image_of_path_;
+  std::unordered_map<std::string, int> node_of_name_;
+  std::vector<std::pair<const aiMesh*, size_t>> skinned_;
+  size_t point_line_meshes_ = 0, morph_targets_ = 0, extra_color_sets_ = 0, clipped_influences_ = 0;
+};
+
+unsigned FlagsFor(FileFormat format) {
+  // FlipUVs: assimp's convention is v = 0 at the bottom, the scene model's is glTF's.
+  unsigned flags = aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_FlipUVs;
+  if (format == FileFormat::kStl) flags |= aiProcess_JoinIdenticalVertices;  // STL has no index buffer
+  return flags;
+}
+
+const char* HintFor(FileFormat format) {
+  switch (format) {
+    case FileFormat::kGltf: return "gltf";
+    case FileFormat::kGlb: return "glb";
+    case FileFormat::kFbx: return "fbx";
+    case FileFormat::kDae: return "dae";
+    case FileFormat::kPly: return "ply";
+    case FileFormat::kStl: return "stl";
+    default: return "";
+  }
+}
+
+Result<Scene> Finish(const aiScene* ai, Assimp::Importer& importer, const std::string& name) {
+  if (!ai) {
+    std::string why = importer.GetErrorString();
+    if (why.empty()) why = "the importer could not read it";
+    return Status(StatusCode::kParseError, name + ": " + why);
+  }
+  if (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) {
+    return Status(StatusCode::kParseError, name + ": incomplete scene (truncated or unsupported content)");
+  }
+  return AssimpConverter(*ai, name).Convert();
+}
+
+}  // namespace
+
+Result<Scene> ReadWithAssimp(const std::string& path, FileFormat format) {
+  Assimp::Importer importer;
+  const aiScene* ai = importer.ReadFile(path, FlagsFor(format));
+  return Finish(ai, importer, path);
+}
+
+Result<Scene> ReadWithAssimpFromMemory(const uint8_t* data, size_t size, FileFormat format, const std::string& name) {
+  Assimp::Importer importer;
+  const aiScene* ai = importer.ReadFileFromMemory(data, size, FlagsFor(format), HintFor(format));
+  return Finish(ai, importer, name);
+}
+
+}  // namespace hullpack

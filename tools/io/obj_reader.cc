@@ -1,0 +1,455 @@
+#include "io/obj_reader.h"
+
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "io/text_scanner.h"
+
+namespace hullpack {
+namespace {
+
+// One face corner: 0-based indices into the file's v / vt / vn pools; -1 = absent.
+struct Corner {
+  int64_t v = -1, vt = -1, vn = -1;
+  bool operator==(const Corner& o) const { return v == o.v && vt == o.vt && vn == o.vn; }
+};
+struct CornerHash {
+  size_t operator()(const Corner& c) const {
+    uint64_t h = static_cast<uint64_t>(c.v) * 0x9E3779B97F4A7C15ull;
+    h ^= static_cast<uint64_t>(c.vt + 1) * 0xC2B2AE3D27D4EB4Full + (h << 6) + (h >> 2);
+    h ^= static_cast<uint64_t>(c.vn + 1) * 0x165667B19E3779F9ull + (h << 6) + (h >> 2);
+    return static_cast<size_t>(h);
+  }
+};
+
+struct MeshBuilder {
+  std::string name;
+  std::unordered_map<Corner, uint32_t, CornerHash> vertex_of;
+  std::vector<Corner> corners;  // one per output vertex
+  std::vector<uint32_t> indices;
+  std::vector<uint32_t> material_ids;
+};
+
+// Statements of the OBJ specification that carry nothing the scene model holds.
+bool IsIgnoredStatement(std::string_view k) {
+  static const char* const kIgnored[] = {
+      "s",     "g",    "vp",      "cstype", "deg",    "bmat",     "step",      "curv",   "curv2",
+      "surf",  "parm", "trim",    "hole",   "scrv",   "sp",       "end",       "con",    "mg",
+      "lod",   "usemap", "maplib", "shadow_obj", "trace_obj", "ctech", "stech", "bevel",
+      "c_interp", "d_interp", "call", "csh"};
+  for (const char* s : kIgnored) {
+    if (k == s) return true;
+  }
+  return false;
+}
+
+class ObjParser {
+ public:
+  ObjParser(const char* data, size_t size, const std::string& name, const ObjParseOptions& options)
+      : scan_(data, data + size), data_(data), size_(size), name_(name), options_(options) {}
+
+  Result<Scene> Parse() {
+    if (std::memchr(data_, '\0', size_) != nullptr) return Error("binary data (NUL byte): not an OBJ file");
+    builders_.emplace_back();
+    while (!scan_.AtEnd()) {
+      scan_.SkipBlanks();
+      if (scan_.AtLineEnd()) {
+        scan_.SkipLine();
+        continue;
+      }
+      const std::string_view key = scan_.Word();
+      Status s = Statement(key);
+      if (!s.ok()) return s;
+      scan_.SkipLine();
+    }
+    return Finish();
+  }
+
+ private:
+  Status Error(const std::string& what) const {
+    return Status(StatusCode::kParseError, name_ + ": line " + std::to_string(scan_.line()) + ": " + what);
+  }
+
+  Status ReadNumbers(double* out, int min_count, int max_count, int* count, const char* what) {
+    *count = 0;
+    for (;;) {
+      scan_.SkipBlanks();
+      if (scan_.AtLineEnd()) break;
+      double value;
+      if (*count == max_count || !scan_.ParseDouble(&value)) {
+        return Error(std::string("malformed ") + what + " (expected " + std::to_string(min_count) +
+                     (min_count == max_count ? "" : " to " + std::to_string(max_count)) + " numbers)");
+      }
+      out[(*count)++] = value;
+    }
+    if (*count < min_count) return Error(std::string(what) + " needs at least " + std::to_string(min_count) + " numbers");
+    return Status::Ok();
+  }
+
+  Status Statement(std::string_view key) {
+    double n[7];
+    int count = 0;
+    if (key == "v") {
+      Status s = ReadNumbers(n, 3, 7, &count, "vertex");
+      if (!s.ok()) return s;
+      positions_.push_back({n[0], n[1], n[2]});
+      if (count >= 6) {  // `v x y z r g b`; a 4-number line is `v x y z w`
+        if (colors_.empty() && positions_.size() > 1) colors_.resize(positions_.size() - 1, {1, 1, 1});
+        colors_.push_back({n[3], n[4], n[5]});
+      } else if (!colors_.empty()) {
+        colors_.push_back({1, 1, 1});
+      }
+      return Status::Ok();
+    }
+    if (key == "vt") {
+      Status s = ReadNumbers(n, 1, 3, &count, "texture coordinate");
+      if (!s.ok()) return s;
+      texcoords_.push_back({n[0], count > 1 ? n[1] : 0.0});
+      return Status::Ok();
+    }
+    if (key == "vn") {
+      Status s = ReadNumbers(n, 3, 3, &count, "normal");
+      if (!s.ok()) return s;
+      normals_.push_back({n[0], n[1], n[2]});
+      return Status::Ok();
+    }
+    if (key == "f" || key == "fo") return Face();
+    if (key == "o") {
+      StartMesh(std::string(scan_.RestOfLine()));
+      return Status::Ok();
+    }
+    if (key == "usemtl") {
+      current_material_ = MaterialIndex(std::string(scan_.RestOfLine()));
+      return Status::Ok();
+    }
+    if (key == "mtllib") return MaterialLibraries(scan_.RestOfLine());
+    if (key == "l") {
+      ++dropped_lines_;
+      return Status::Ok();
+    }
+    if (key == "p") {
+      ++dropped_points_;
+      return Status::Ok();
+    }
+    if (IsIgnoredStatement(key)) return Status::Ok();
+    std::string shown(key.substr(0, 32));
+    for (char& c : shown) {
+      if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126) c = '?';
+    }
+    return Error("unknown statement '" + shown + "'");
+  }
+
+  void StartMesh(std::string mesh_name) {
+    if (builders_.back().indices.empty() && builders_.back().corners.empty()) {
+      builders_.back().name = std::move(mesh_name);
+      return;
+    }
+    builders_.emplace_back();
+    builders_.back().name = std::move(mesh_name);
+  }
+
+  // Resolves a 1-based or negative OBJ index against a pool of `pool_size` entries.
+  bool Resolve(int64_t raw, size_t pool_size, int64_t* out) const {
+    const int64_t size = static_cast<int64_t>(pool_size);
+    if (raw > 0 && raw <= size) {
+      *out = raw - 1;
+      return true;
+    }
+    if (raw < 0 && -raw <= size) {
+      *out = size + raw;
+      return true;
+    }
+    return false;
+  }
+
+  Status ParseCorner(Corner* c) {
+    int64_t raw;
+    if (!scan_.ParseInt64(&raw)) return Error("malformed face corner");
+    if (!Resolve(raw, positions_.size(), &c->v)) {
+      return Error("face refers to vertex " + std::to_string(raw) + " but only " +
+                   std::to_string(positions_.size()) + " are defined");
+    }
+    if (!scan_.Consume('/')) return Status::Ok();
+    if (scan_.Peek() != '/') {
+      if (!scan_.ParseInt64(&raw)) return Error("malformed texture index in face corner");
+      if (!Resolve(raw, texcoords_.size(), &c->vt)) {
+        return Error("face refers to texture coordinate " + std::to_string(raw) + " but only " +
+                     std::to_string(texcoords_.size()) + " are defined");
+      }
+    }
+    if (!scan_.Consume('/')) return Status::Ok();
+    if (!scan_.ParseInt64(&raw)) return Error("malformed normal index in face corner");
+    if (!Resolve(raw, normals_.size(), &c->vn)) {
+      return Error("face refers to normal " + std::to_string(raw) + " but only " +
+                   std::to_string(normals_.size()) + " are defined");
+    }
+    return Status::Ok();
+  }
+
+  Status Face() {
+    polygon_.clear();
+    for (;;) {
+      scan_.SkipBlanks();
+      if (scan_.AtLineEnd()) break;
+      Corner c;
+      Status s = ParseCorner(&c);
+      if (!s.ok()) return s;
+      const char next = scan_.Peek();
+      if (next != ' ' && next != '\t' && next != '\r' && next != '\n' && next != '#' && !scan_.AtEnd()) {
+        return Error("malformed face corner");
+      }
+      polygon_.push_back(c);
+    }
+    if (polygon_.size() < 3) {
+      ++dropped_short_faces_;
+      return Status::Ok();
+    }
+    MeshBuilder& b = builders_.back();
+    uint32_t ids[3];
+    auto vertex = [&](const Corner& c) {
+      auto it = b.vertex_of.find(c);
+      if (it != b.vertex_of.end()) return it->second;
+      const uint32_t id = static_cast<uint32_t>(b.corners.size());
+      b.vertex_of.emplace(c, id);
+      b.corners.push_back(c);
+      return id;
+    };
+    ids[0] = vertex(polygon_[0]);
+    for (size_t i = 1; i + 1 < polygon_.size(); ++i) {  // fan triangulation
+      ids[1] = vertex(polygon_[i]);
+      ids[2] = vertex(polygon_[i + 1]);
+      b.indices.insert(b.indices.end(), ids, ids + 3);
+      b.material_ids.push_back(current_material_);
+    }
+    if (polygon_.size() > 3) ++polygons_triangulated_;
+    return Status::Ok();
+  }
+
+  uint32_t MaterialIndex(const std::string& material_name) {
+    auto it = material_index_.find(material_name);
+    if (it != material_index_.end()) return it->second;
+    const uint32_t id = static_cast<uint32_t>(materials_.size());
+    Material m;
+    m.name = material_name;
+    materials_.push_back(m);
+    material_index_.emplace(material_name, id);
+    return id;
+  }
+
+  Status MaterialLibraries(std::string_view names) {
+    // Several libraries may be named on one line.
+    size_t pos = 0;
+    while (pos < names.size()) {
+      while (pos < names.size() && (names[pos] == ' ' || names[pos] == '\t')) ++pos;
+      size_t end = pos;
+      while (end < names.size() && names[end] != ' ' && names[end] != '\t') ++end;
+      if (end > pos) {
+        const std::string lib(names.substr(pos, end - pos));
+        if (!options_.load_material_library) {
+          dropped_.push_back("material library '" + lib + "' not read (no file access)");
+        } else {
+          Result<std::string> text = options_.load_material_library(lib);
+          if (!text.ok()) {
+            dropped_.push_back("material library '" + lib + "' not found: material colours and textures not kept");
+          } else {
+            ParseMtl(text.value());
+          }
+        }
+      }
+      pos = end;
+    }
+    return Status::Ok();
+  }
+
+  int ImageIndex(const std::string& uri) {
+    for (size_t i = 0; i < images_.size(); ++i) {
+      if (images_[i].uri == uri) return static_cast<int>(i);
+    }
+    Image image;
+    image.uri = uri;
+    image.name = uri;
+    images_.push_back(image);
+    return static_cast<int>(images_.size() - 1);
+  }
+
+  // MTL is parsed leniently: what it cannot understand it skips (materials are optional data).
+  void ParseMtl(const std::string& text) {
+    TextScanner s(text.data(), text.data() + text.size());
+    Material* current = nullptr;
+    while (!s.AtEnd()) {
+      s.SkipBlanks();
+      if (s.AtLineEnd()) {
+        s.SkipLine();
+        continue;
+      }
+      const std::string_view key = s.Word();
+      double v[3];
+      auto numbers = [&](int n) {
+        for (int i = 0; i < n; ++i) {
+          s.SkipBlanks();
+          if (!s.ParseDouble(&v[i])) return false;
+        }
+        return true;
+      };
+      if (key == "newmtl") {
+        current = &materials_[MaterialIndex(std::string(s.RestOfLine()))];
+      } else if (current && key == "Kd" && numbers(3)) {
+        for (int i = 0; i < 3; ++i) current->base_color[i] = static_cast<float>(v[i]);
+      } else if (current && key == "Ke" && numbers(3)) {
+        for (int i = 0; i < 3; ++i) current->emissive[i] = static_cast<float>(v[i]);
+      } else if (current && key == "d" && numbers(1)) {
+        current->base_color[3] = static_cast<float>(v[0]);
+      } else if (current && key == "Tr" && numbers(1)) {
+        current->base_color[3] = static_cast<float>(1.0 - v[0]);
+      } else if (current && (key == "map_Kd" || key == "map_Bump" || key == "bump" || key == "norm")) {
+        // The file name is the last word; options such as `-bm 1` come before it.
+        std::string_view rest = s.RestOfLine();
+        const size_t space = rest.find_last_of(" \t");
+        const std::string file(space == std::string_view::npos ? rest : rest.substr(space + 1));
+        if (!file.empty()) {
+          TextureRef& slot = key == "map_Kd" ? current->base_color_texture : current->normal_texture;
+          slot.image = ImageIndex(file);
+        }
+      }
+      s.SkipLine();
+    }
+  }
+
+  Result<Scene> Finish() {
+    Scene scene;
+    scene.materials = std::move(materials_);
+    scene.images = std::move(images_);
+    scene.source_vertex_records = positions_.size();
+    std::vector<uint8_t> referenced(positions_.size(), 0);
+    size_t missing_uv = 0, missing_normal = 0;
+    for (MeshBuilder& b : builders_) {
+      if (b.indices.empty()) continue;
+      Mesh m;
+      m.name = b.name;
+      const size_t n = b.corners.size();
+      bool has_uv = false, has_normal = false;
+      for (const Corner& c : b.corners) {
+        has_uv |= c.vt >= 0;
+        has_normal |= c.vn >= 0;
+      }
+      m.positions.resize(n * 3);
+      if (has_uv) m.uv_sets.emplace_back(n * 2, 0.0f);
+      if (has_normal) m.normals.resize(n * 3, 0.0f);
+      if (!colors_.empty()) m.colors.resize(n * 4, 1.0f);
+      std::vector<uint8_t> lacks_normal;
+      for (size_t i = 0; i < n; ++i) {
+        const Corner& c = b.corners[i];
+        referenced[static_cast<size_t>(c.v)] = 1;
+        for (int k = 0; k < 3; ++k) m.positions[i * 3 + k] = static_cast<float>(positions_[c.v][k]);
+        if (!colors_.empty()) {
+          for (int k = 0; k < 3; ++k) m.colors[i * 4 + k] = static_cast<float>(colors_[c.v][k]);
+        }
+        if (has_uv) {
+          if (c.vt >= 0) {
+            m.uv_sets[0][i * 2] = static_cast<float>(texcoords_[c.vt][0]);
+            m.uv_sets[0][i * 2 + 1] = static_cast<float>(1.0 - texcoords_[c.vt][1]);
+          } else {
+            ++missing_uv;
+          }
+        }
+        if (has_normal) {
+          if (c.vn >= 0) {
+            for (int k = 0; k < 3; ++k) m.normals[i * 3 + k] = static_cast<float>(normals_[c.vn][k]);
+          } else {
+            if (lacks_normal.empty()) lacks_normal.resize(n, 0);
+            lacks_normal[i] = 1;
+            ++missing_normal;
+          }
+        }
+      }
+      if (!lacks_normal.empty()) FillNormalsFromFaces(m, lacks_normal);
+      m.indices = std::move(b.indices);
+      m.material_ids = std::move(b.material_ids);
+      scene.meshes.push_back(std::move(m));
+    }
+    // Faces before the first `usemtl` carry kNoMaterial: without any material in the file the ids
+    // say nothing and are dropped; otherwise those faces get a material of their own.
+    const bool file_has_materials = !scene.materials.empty();
+    uint32_t fallback = kNoMaterial;
+    for (Mesh& m : scene.meshes) {
+      if (!file_has_materials) {
+        m.material_ids.clear();
+        continue;
+      }
+      for (uint32_t& id : m.material_ids) {
+        if (id != kNoMaterial) continue;
+        if (fallback == kNoMaterial) {
+          fallback = static_cast<uint32_t>(scene.materials.size());
+          Material none;
+          none.name = "(no material)";
+          scene.materials.push_back(none);
+        }
+        id = fallback;
+      }
+    }
+    size_t unreferenced = 0;
+    for (uint8_t r : referenced) unreferenced += r == 0;
+    auto note = [&](size_t count, const std::string& what) {
+      if (count) scene.dropped.push_back(std::to_string(count) + " " + what);
+    };
+    note(unreferenced, "unreferenced vertices not kept");
+    note(dropped_lines_, "line elements (`l`) not kept: meshes hold triangles only");
+    note(dropped_points_, "point elements (`p`) not kept: meshes hold triangles only");
+    note(dropped_short_faces_, "faces with fewer than 3 corners not kept");
+    note(missing_uv, "face corners without a texture coordinate given (0, 0)");
+    note(missing_normal, "face corners without a normal given the area-weighted face normal");
+    for (std::string& d : dropped_) scene.dropped.push_back(std::move(d));
+    AddRootNodeForAllMeshes(scene, name_);
+    return scene;
+  }
+
+  static void FillNormalsFromFaces(Mesh& m, const std::vector<uint8_t>& lacks_normal) {
+    std::vector<double> acc(m.normals.size(), 0.0);
+    for (size_t t = 0; t + 2 < m.indices.size(); t += 3) {
+      const float* a = &m.positions[m.indices[t] * 3];
+      const float* b = &m.positions[m.indices[t + 1] * 3];
+      const float* c = &m.positions[m.indices[t + 2] * 3];
+      const double u[3] = {double(b[0]) - a[0], double(b[1]) - a[1], double(b[2]) - a[2]};
+      const double v[3] = {double(c[0]) - a[0], double(c[1]) - a[1], double(c[2]) - a[2]};
+      const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+      for (int k = 0; k < 3; ++k) {
+        for (int j = 0; j < 3; ++j) acc[m.indices[t + k] * 3 + j] += n[j];
+      }
+    }
+    for (size_t i = 0; i < lacks_normal.size(); ++i) {
+      if (!lacks_normal[i]) continue;
+      const double len = std::sqrt(acc[i * 3] * acc[i * 3] + acc[i * 3 + 1] * acc[i * 3 + 1] + acc[i * 3 + 2] * acc[i * 3 + 2]);
+      for (int j = 0; j < 3; ++j) {
+        m.normals[i * 3 + j] = len > 0 && std::isfinite(len) ? static_cast<float>(acc[i * 3 + j] / len) : (j == 2 ? 1.0f : 0.0f);
+      }
+    }
+  }
+
+  TextScanner scan_;
+  const char* data_;
+  size_t size_;
+  const std::string& name_;
+  const ObjParseOptions& options_;
+  std::vector<std::array<double, 3>> positions_, colors_, normals_;
+  std::vector<std::array<double, 2>> texcoords_;
+  std::vector<MeshBuilder> builders_;
+  std::vector<Corner> polygon_;
+  std::vector<Material> materials_;
+  std::unordered_map<std::string, uint32_t> material_index_;
+  std::vector<Image> images_;
+  static constexpr uint32_t kNoMaterial = 0xFFFFFFFFu;
+  uint32_t current_material_ = kNoMaterial;
+  size_t dropped_lines_ = 0, dropped_points_ = 0, dropped_short_faces_ = 0, polygons_triangulated_ = 0;
+  std::vector<std::string> dropped_;
+};
+
+}  // namespace
+
+Result<Scene> ParseObj(const char* data, size_t size, const std::string& name, const ObjParseOptions& options) {
+  return ObjParser(data, size, name, options).Parse();
+}
+
+}  // namespace hullpack
