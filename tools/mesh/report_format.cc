@@ -15,12 +15,21 @@ std::string Number(Float value) {
   return std::string(buffer, result.ptr);
 }
 
+// Six significant digits: enough for a person reading a report.
+std::string Short(double value) {
+  if (!std::isfinite(value)) return std::to_string(value);
+  char buffer[32];
+  const auto result =
+      std::to_chars(buffer, buffer + sizeof(buffer), value, std::chars_format::general, 6);
+  return std::string(buffer, result.ptr);
+}
+
 std::string Plural(size_t count, const char* singular, const char* plural) {
   return std::to_string(count) + " " + (count == 1 ? singular : plural);
 }
 
 std::string Point(const std::array<float, 3>& p) {
-  return "(" + Number(p[0]) + ", " + Number(p[1]) + ", " + Number(p[2]) + ")";
+  return "(" + Short(p[0]) + ", " + Short(p[1]) + ", " + Short(p[2]) + ")";
 }
 
 // Builds {"key": value, ...} in insertion order.
@@ -71,8 +80,8 @@ std::vector<std::string> FormatTopologyReport(const TopologyReport& r) {
   closed += r.genus >= 0 ? ", genus " + std::to_string(r.genus)
                          : ", genus unknown (not a closed manifold)";
   lines.push_back(closed);
-  lines.push_back("area: " + Number(r.area));
-  lines.push_back("volume: " + Number(r.volume) +
+  lines.push_back("area: " + Short(r.area));
+  lines.push_back("volume: " + Short(r.volume) +
                   (r.closed_components == 0 ? " (no closed component)"
                                             : " (closed components only)"));
   lines.push_back("bounds: " + Point(r.bbox_min) + " to " + Point(r.bbox_max));

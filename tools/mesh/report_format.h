@@ -10,7 +10,7 @@
 
 namespace hullpack {
 
-// One line per aspect, without trailing newlines, e.g.
+// One line per aspect, without trailing newlines, numbers to 6 significant digits, e.g.
 //   "triangles: 12 (0 degenerate, 0 duplicate, 0 opposite-winding pairs)"
 //   "closed: yes, genus 0"
 //   "volume: 1 (closed components only)"

@@ -41,6 +41,18 @@ TEST(ReportFormatTest, OpenInconsistentMeshLines) {
   EXPECT_EQ(lines[9], "bounds: (0, 0, 0) to (0.1, 0.1, 0.1)");
 }
 
+TEST(ReportFormatTest, TextRoundsToSixDigitsJsonKeepsEverything) {
+  TopologyReport r;
+  r.area = 39.47811725685738;
+  r.volume = 1.0 / 3.0;
+  const std::vector<std::string> lines = FormatTopologyReport(r);
+  EXPECT_EQ(lines[7], "area: 39.4781");
+  EXPECT_EQ(lines[8], "volume: 0.333333 (no closed component)");
+  const std::string json = TopologyReportToJson(r);
+  EXPECT_NE(json.find("\"area\": 39.47811725685738,"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"volume\": 0.3333333333333333,"), std::string::npos) << json;
+}
+
 TEST(ReportFormatTest, TopologyJsonHasEveryFieldInOrder) {
   TopologyReport r;
   r.vertices = 10;
