@@ -127,7 +127,12 @@ void MarkDuplicateTriangles(const Mesh& mesh, const RepairOptions& options,
         ++report.duplicate_triangles_removed;
       }
     }
-    report.opposite_triangle_pairs += std::min(per_winding[0], per_winding[1]);
+    // Pairs among the triangles that stay: one per winding when copies are removed.
+    size_t kept[2] = {per_winding[0], per_winding[1]};
+    if (options.remove_duplicate_triangles) {
+      for (size_t& count : kept) count = std::min<size_t>(count, 1);
+    }
+    report.opposite_triangle_pairs += std::min(kept[0], kept[1]);
     if (options.remove_opposite_duplicates && per_winding[0] > 0 && per_winding[1] > 0) {
       for (size_t k = i; k < j; ++k) {
         const Canonical& c = canon[k];

@@ -143,6 +143,21 @@ TEST(RepairTest, RemovesSameWindingCopiesKeepsTwoSidedFaces) {
   EXPECT_TRUE(AnalyzeTopology(copy).closed);
 }
 
+TEST(RepairTest, CountsTwoSidedFacesAfterRemovingCopies) {
+  Mesh mesh;
+  const uint32_t a = AddVertex(mesh, 0, 0, 0), b = AddVertex(mesh, 1, 0, 0),
+                 c = AddVertex(mesh, 0, 1, 0);
+  for (int copy = 0; copy < 2; ++copy) {
+    AddTriangle(mesh, a, b, c);
+    AddTriangle(mesh, a, c, b);
+  }
+  const RepairReport r = RepairMesh(mesh);
+  EXPECT_EQ(r.duplicate_triangles_removed, 2u);
+  EXPECT_EQ(r.opposite_triangle_pairs, 1u);
+  EXPECT_EQ(mesh.indices, (std::vector<uint32_t>{a, b, c, a, c, b}));
+  EXPECT_EQ(AnalyzeTopology(mesh).opposite_triangle_pairs, r.opposite_triangle_pairs);
+}
+
 TEST(RepairTest, OppositeRemovalLeavesSameWindingCopiesWhenTheyAreKept) {
   Mesh mesh;
   const uint32_t a = AddVertex(mesh, 0, 0, 0), b = AddVertex(mesh, 1, 0, 0),
