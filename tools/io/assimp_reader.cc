@@ -1,6 +1,7 @@
 #include "io/assimp_reader.h"
 
 #include <assimp/GltfMaterial.h>
+#include <assimp/config.h>
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -283,9 +284,15 @@ class AssimpConverter {
 
 unsigned FlagsFor(FileFormat format) {
   // FlipUVs: assimp's convention is v = 0 at the bottom, the scene model's is glTF's.
-  unsigned flags = aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_FlipUVs;
-  if (format == FileFormat::kStl) flags |= aiProcess_JoinIdenticalVertices;  // STL has no index buffer
+  // ValidateDataStructure runs first and rejects broken importer output before other steps touch it.
+  unsigned flags = aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_FlipUVs;
+  // STL has no index buffer and only facet normals: drop those and weld the corners back together.
+  if (format == FileFormat::kStl) flags |= aiProcess_RemoveComponent | aiProcess_JoinIdenticalVertices;
   return flags;
+}
+
+void Configure(Assimp::Importer& importer, FileFormat format) {
+  if (format == FileFormat::kStl) importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, aiComponent_NORMALS);
 }
 
 const char* HintFor(FileFormat format) {
@@ -316,12 +323,14 @@ Result<Scene> Finish(const aiScene* ai, Assimp::Importer& importer, const std::s
 
 Result<Scene> ReadWithAssimp(const std::string& path, FileFormat format) {
   Assimp::Importer importer;
+  Configure(importer, format);
   const aiScene* ai = importer.ReadFile(path, FlagsFor(format));
   return Finish(ai, importer, path);
 }
 
 Result<Scene> ReadWithAssimpFromMemory(const uint8_t* data, size_t size, FileFormat format, const std::string& name) {
   Assimp::Importer importer;
+  Configure(importer, format);
   const aiScene* ai = importer.ReadFileFromMemory(data, size, FlagsFor(format), HintFor(format));
   return Finish(ai, importer, name);
 }

@@ -1,5 +1,6 @@
 #include "io/obj_reader.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -327,6 +328,7 @@ class ObjParser {
     size_t missing_uv = 0, missing_normal = 0;
     for (MeshBuilder& b : builders_) {
       if (b.indices.empty()) continue;
+      KeepFileOrder(b);
       Mesh m;
       m.name = b.name;
       const size_t n = b.corners.size();
@@ -404,6 +406,26 @@ class ObjParser {
     for (std::string& d : dropped_) scene.dropped.push_back(std::move(d));
     AddRootNodeForAllMeshes(scene, name_);
     return scene;
+  }
+
+  // Vertices were numbered in order of first use; renumber them in the order of their (v, vt, vn)
+  // triples so that a file's vertex order survives (a positions-only file keeps its `v` order).
+  static void KeepFileOrder(MeshBuilder& b) {
+    std::vector<uint32_t> order(b.corners.size());
+    for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) {
+      const Corner& a = b.corners[x];
+      const Corner& c = b.corners[y];
+      return a.v != c.v ? a.v < c.v : a.vt != c.vt ? a.vt < c.vt : a.vn < c.vn;
+    });
+    std::vector<uint32_t> new_index(order.size());
+    std::vector<Corner> sorted(order.size());
+    for (uint32_t i = 0; i < order.size(); ++i) {
+      new_index[order[i]] = i;
+      sorted[i] = b.corners[order[i]];
+    }
+    b.corners = std::move(sorted);
+    for (uint32_t& index : b.indices) index = new_index[index];
   }
 
   static void FillNormalsFromFaces(Mesh& m, const std::vector<uint8_t>& lacks_normal) {

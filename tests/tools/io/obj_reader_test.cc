@@ -1,0 +1,106 @@
+#include "io/obj_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace hullpack {
+namespace {
+
+Result<Scene> Parse(const std::string& text) { return ParseObj(text.data(), text.size(), "test.obj"); }
+
+TEST(ObjReader, MixedCornerFormatsUnifyIntoVertices) {
+  const std::string text =
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"
+      "vt 0 0\nvt 1 0\nvt 0 1\n"
+      "vn 0 0 1\n"
+      "f 1/1/1 2/2/1 3/3/1\n"
+      "f 2 4 3\n"
+      "f 2//1 4//1 3//1\n";
+  Result<Scene> s = Parse(text);
+  ASSERT_TRUE(s.ok()) << s.status().ToString();
+  ASSERT_EQ(s->meshes.size(), 1u);
+  const Mesh& m = s->meshes[0];
+  EXPECT_EQ(m.triangle_count(), 3u);
+  // (1/1/1) (2/2/1) (3/3/1) (2) (4) (3) (2//1) (4//1) (3//1): nine distinct triples, numbered in
+  // (v, vt, vn) order: 1/1/1, 2, 2//1, 2/2/1, 3, 3//1, 3/3/1, 4, 4//1.
+  EXPECT_EQ(m.vertex_count(), 9u);
+  ASSERT_EQ(m.uv_sets.size(), 1u);
+  EXPECT_FLOAT_EQ(m.uv_sets[0][2 * 3 + 0], 1.0f);  // 2/2/1 has vt 1 0
+  EXPECT_FLOAT_EQ(m.uv_sets[0][2 * 6 + 1], 0.0f);  // 3/3/1 has vt 0 1, flipped to the glTF convention
+  EXPECT_EQ(m.indices[0], 0u);
+  EXPECT_EQ(s->source_vertex_records, 4u);
+  EXPECT_FALSE(s->dropped.empty());  // corners without vt/vn are reported
+}
+
+TEST(ObjReader, PolygonsNegativeIndicesObjectsAndMaterials) {
+  const std::string text =
+      "o first\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nusemtl red\nf -4 -3 -2 -1\n"
+      "o second\nv 0 0 1\nv 1 0 1\nv 1 1 1\nusemtl blue\nf 5 6 7\nusemtl red\nf 7 6 5\n";
+  Result<Scene> s = Parse(text);
+  ASSERT_TRUE(s.ok()) << s.status().ToString();
+  ASSERT_EQ(s->meshes.size(), 2u);
+  EXPECT_EQ(s->meshes[0].name, "first");
+  EXPECT_EQ(s->meshes[0].triangle_count(), 2u);
+  ASSERT_EQ(s->materials.size(), 2u);
+  EXPECT_EQ(s->materials[0].name, "red");
+  EXPECT_EQ(s->meshes[1].material_ids, (std::vector<uint32_t>{1, 0}));
+}
+
+TEST(ObjReader, VertexColorsAndUnreferencedVertices) {
+  Result<Scene> s = Parse("v 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 0 1 0 0 0 1\nv 5 5 5 1 1 1\nf 1 2 3\n");
+  ASSERT_TRUE(s.ok());
+  const Mesh& m = s->meshes[0];
+  ASSERT_EQ(m.colors.size(), 12u);
+  EXPECT_FLOAT_EQ(m.colors[4 + 1], 1.0f);
+  EXPECT_FLOAT_EQ(m.colors[3], 1.0f);  // alpha
+  ASSERT_EQ(s->dropped.size(), 1u);
+  EXPECT_NE(s->dropped[0].find("1 unreferenced"), std::string::npos);
+}
+
+TEST(ObjReader, MaterialLibraryIsReadThroughTheCallback) {
+  ObjParseOptions options;
+  options.load_material_library = [](const std::string& name) -> Result<std::string> {
+    if (name != "a.mtl") return Status(StatusCode::kIoError, "missing");
+    return std::string("newmtl skin\nKd 0.5 0.25 1\nd 0.5\nmap_Kd -bm 1 tex/skin.png\n");
+  };
+  const std::string text = "mtllib a.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nusemtl skin\nf 1/1 2/1 3/1\n";
+  Result<Scene> s = ParseObj(text.data(), text.size(), "t.obj", options);
+  ASSERT_TRUE(s.ok());
+  ASSERT_EQ(s->materials.size(), 1u);
+  EXPECT_FLOAT_EQ(s->materials[0].base_color[1], 0.25f);
+  EXPECT_FLOAT_EQ(s->materials[0].base_color[3], 0.5f);
+  ASSERT_TRUE(s->materials[0].base_color_texture.used());
+  EXPECT_EQ(s->images[0].uri, "tex/skin.png");
+}
+
+TEST(ObjReader, ErrorsNameTheLineAndTheProblem) {
+  struct Case {
+    const char* text;
+    const char* expect;
+  } cases[] = {
+      {"v 0 0 0\nv 1 0 0\nf 1 2 3\n", "line 3: face refers to vertex 3 but only 2"},
+      {"v 0 0\n", "line 1: vertex needs at least 3"},
+      {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/x 2 3\n", "line 4: malformed"},
+      {"v 0 0 0\nhello world\n", "line 2: unknown statement 'hello'"},
+      {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 0\n", "refers to vertex 0"},
+      {"v 0 0 0\n\0v", "NUL"},
+  };
+  for (const Case& c : cases) {
+    const std::string text(c.text, c.text + std::char_traits<char>::length(c.text) + (std::string(c.expect) == "NUL" ? 2 : 0));
+    Result<Scene> s = Parse(text);
+    ASSERT_FALSE(s.ok()) << c.text;
+    EXPECT_EQ(s.status().code(), StatusCode::kParseError);
+    EXPECT_NE(s.status().message().find("test.obj"), std::string::npos);
+    EXPECT_NE(s.status().message().find(c.expect), std::string::npos) << s.status().message();
+  }
+}
+
+TEST(ObjReader, CommentsBlankLinesAndCrLf) {
+  Result<Scene> s = Parse("# c\r\n\r\nv 0 0 0 # trailing\r\nv 1 0 0\r\nv 0 1 0\r\ns off\r\ng grp\r\nf 1 2 3\r\n");
+  ASSERT_TRUE(s.ok()) << s.status().ToString();
+  EXPECT_EQ(s->meshes[0].triangle_count(), 1u);
+}
+
+}  // namespace
+}  // namespace hullpack

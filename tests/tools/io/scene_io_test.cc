@@ -1,0 +1,125 @@
+// Dispatch, atomic writes, and bad input in every supported format.
+#include "io/scene_io.h"
+
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include "common/file_util.h"
+#include "io_test_util.h"
+
+namespace hullpack {
+namespace {
+
+using testing::TempDir;
+using testing::TorusScene;
+
+TEST(SceneIo, FormatFromExtension) {
+  EXPECT_EQ(FormatFromExtension("a/b.OBJ"), FileFormat::kObj);
+  EXPECT_EQ(FormatFromExtension("x.glb"), FileFormat::kGlb);
+  EXPECT_EQ(FormatFromExtension("x.tar.gz"), FileFormat::kUnknown);
+  EXPECT_EQ(FormatFromExtension("dir.obj/noext"), FileFormat::kUnknown);
+}
+
+TEST(SceneIo, WriteThenReadEveryWrittenFormat) {
+  TempDir dir;
+  const Scene in = TorusScene();
+  for (const char* ext : {"obj", "off", "wrl", "ply"}) {
+    const std::string path = dir.File(std::string("t.") + ext);
+    ASSERT_TRUE(WriteScene(in, path).ok()) << ext;
+    Result<Scene> out = ReadScene(path);
+    ASSERT_TRUE(out.ok()) << out.status().ToString();
+    EXPECT_EQ(out->triangle_count(), in.triangle_count()) << ext;
+  }
+}
+
+TEST(SceneIo, FormatsThroughAssimp) {
+  TempDir dir;
+  const Scene in = TorusScene(8, 6);
+  struct Case {
+    const char* assimp_id;
+    const char* ext;
+  } cases[] = {{"collada", "dae"}, {"stlb", "stl"}, {"fbxa", "fbx"}, {"glb2", "glb"}, {"plyb", "ply"}};
+  for (const Case& c : cases) {
+    const std::vector<uint8_t> bytes = testing::ExportWithAssimp(in, c.assimp_id);
+    ASSERT_FALSE(bytes.empty()) << c.assimp_id;
+    const std::string path = dir.File(std::string("in.") + c.ext);
+    testing::WriteBytes(path, bytes.data(), bytes.size());
+    Result<Scene> out = ReadScene(path);
+    ASSERT_TRUE(out.ok()) << c.ext << ": " << out.status().ToString();
+    EXPECT_EQ(out->triangle_count(), in.triangle_count()) << c.ext;
+    // STL has no index buffer: the reader welds identical corners back into shared vertices.
+    if (std::string(c.ext) == "stl") EXPECT_EQ(out->meshes[0].vertex_count(), in.meshes[0].vertex_count());
+  }
+}
+
+TEST(SceneIo, MissingFileAndUnknownFormat) {
+  Result<Scene> missing = ReadScene("/nonexistent/dir/mesh.obj");
+  ASSERT_FALSE(missing.ok());
+  EXPECT_EQ(missing.status().code(), StatusCode::kIoError);
+  EXPECT_NE(missing.status().message().find("/nonexistent/dir/mesh.obj"), std::string::npos);
+  Result<Scene> unknown = ReadScene("model.xyz");
+  ASSERT_FALSE(unknown.ok());
+  EXPECT_EQ(unknown.status().code(), StatusCode::kUnknownFormat);
+  EXPECT_NE(unknown.status().message().find("'.xyz'"), std::string::npos);
+}
+
+TEST(SceneIo, EmptyRandomAndTruncatedFilesGiveErrorsInEveryFormat) {
+  TempDir dir;
+  const Scene in = TorusScene(8, 6);
+  struct Case {
+    const char* ext;
+    std::vector<uint8_t> valid;
+  };
+  std::vector<Case> cases;
+  for (const char* ext : {"obj", "off", "wrl", "ply"}) {
+    Result<std::vector<uint8_t>> bytes = EncodeScene(in, FormatFromExtension(std::string("x.") + ext));
+    ASSERT_TRUE(bytes.ok());
+    cases.push_back({ext, bytes.value()});
+  }
+  cases.push_back({"stl", testing::ExportWithAssimp(in, "stlb")});
+  cases.push_back({"dae", testing::ExportWithAssimp(in, "collada")});
+  cases.push_back({"fbx", testing::ExportWithAssimp(in, "fbxa")});
+  cases.push_back({"glb", testing::ExportWithAssimp(in, "glb2")});
+  cases.push_back({"gltf", testing::ExportWithAssimp(in, "gltf2")});
+  for (const Case& c : cases) {
+    ASSERT_FALSE(c.valid.empty()) << c.ext;
+    const std::string path = dir.File(std::string("bad.") + c.ext);
+    // Empty.
+    testing::WriteBytes(path, "", 0);
+    Result<Scene> r = ReadScene(path);
+    EXPECT_FALSE(r.ok()) << c.ext << " empty";
+    // Random bytes.
+    for (uint32_t seed = 1; seed <= 3; ++seed) {
+      const std::vector<uint8_t> noise = testing::RandomBytes(4096, seed);
+      testing::WriteBytes(path, noise.data(), noise.size());
+      r = ReadScene(path);
+      EXPECT_FALSE(r.ok()) << c.ext << " random seed " << seed;
+      if (!r.ok()) EXPECT_EQ(r.status().message().rfind(path, 0), 0u) << r.status().message();
+    }
+    // Truncated to a third: every format either errors or, at worst, holds fewer triangles.
+    testing::WriteBytes(path, c.valid.data(), c.valid.size() / 3);
+    r = ReadScene(path);
+    if (r.ok()) {
+      EXPECT_LT(r->triangle_count(), in.triangle_count()) << c.ext << " truncated";
+    } else {  // NOLINT
+      EXPECT_EQ(r.status().message().rfind(path, 0), 0u) << r.status().message();
+    }
+  }
+}
+
+TEST(SceneIo, WriteIsAtomicAndReportsUnwritableTargets) {
+  TempDir dir;
+  const std::string path = dir.File("out.obj");
+  ASSERT_TRUE(WriteScene(TorusScene(), path).ok());
+  // No temporary file is left behind.
+  const std::string listing = dir.File("");
+  EXPECT_TRUE(SameFile(path, path));
+  Status bad = WriteScene(TorusScene(), "/nonexistent/dir/out.obj");
+  EXPECT_FALSE(bad.ok());
+  EXPECT_NE(bad.message().find("/nonexistent/dir/out.obj"), std::string::npos);
+  Status unknown = WriteScene(TorusScene(), dir.File("out.xyz"));
+  EXPECT_EQ(unknown.code(), StatusCode::kUnknownFormat);
+}
+
+}  // namespace
+}  // namespace hullpack
