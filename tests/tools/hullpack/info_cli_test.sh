@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# End-to-end checks of `hullpack info`: good files describe themselves, bad ones give one line on
+# stderr that names the file and the problem, a non-zero exit, and no crash.
+# usage: info_cli_test.sh HULLPACK_BINARY SOURCE_DIR
+set -u
+bin=$1
+src=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+failures=0
+passes=0
+
+check() {  # check NAME EXPECTED_EXIT STDERR_PATTERN -- command...
+  local name=$1 want=$2 pattern=$3
+  shift 4
+  "$@" >"$tmp/out" 2>"$tmp/err"
+  local rc=$?
+  if [ "$rc" -ge 128 ]; then
+    echo "FAIL $name: crashed (exit $rc)"; failures=$((failures + 1)); return
+  fi
+  if [ "$want" = 0 ] && [ "$rc" -ne 0 ]; then
+    echo "FAIL $name: exit $rc: $(cat "$tmp/err")"; failures=$((failures + 1)); return
+  fi
+  if [ "$want" != 0 ] && [ "$rc" -eq 0 ]; then
+    echo "FAIL $name: exit 0, expected an error"; failures=$((failures + 1)); return
+  fi
+  if [ -n "$pattern" ] && ! grep -q -- "$pattern" "$tmp/err" "$tmp/out"; then
+    echo "FAIL $name: output lacks '$pattern': $(head -c 300 "$tmp/err")"; failures=$((failures + 1)); return
+  fi
+  if [ "$want" != 0 ] && [ "$(wc -l <"$tmp/err")" -ne 1 ]; then
+    echo "FAIL $name: expected a one-line error, got: $(cat "$tmp/err")"; failures=$((failures + 1)); return
+  fi
+  passes=$((passes + 1))
+}
+
+check sample 0 "closed, manifold, 1 component, genus 1" -- "$bin" info "$src/samples/torus.obj"
+check sample-json 0 '"genus": 1' -- "$bin" info --json "$src/samples/torus.obj"
+check no-args 2 "usage" -- "$bin" info
+check missing 1 "$tmp/missing.obj: No such file" -- "$bin" info "$tmp/missing.obj"
+touch "$tmp/model.xyz"
+check unknown-format 1 "$tmp/model.xyz: unknown format '.xyz'" -- "$bin" info "$tmp/model.xyz"
+for ext in obj off wrl ply stl gltf glb fbx dae; do
+  head -c 3000 /dev/urandom >"$tmp/random.$ext"
+  check "random-$ext" 1 "$tmp/random.$ext" -- "$bin" info "$tmp/random.$ext"
+  : >"$tmp/empty.$ext"
+  check "empty-$ext" 1 "$tmp/empty.$ext" -- "$bin" info "$tmp/empty.$ext"
+done
+head -c 30000 "$src/samples/torus.obj" >"$tmp/truncated.obj"
+check truncated-obj-mid-line 1 "$tmp/truncated.obj: line" -- "$bin" info "$tmp/truncated.obj"
+head -n 100 "$src/samples/torus.obj" >"$tmp/truncated2.obj"
+check truncated-obj-no-faces 1 "$tmp/truncated2.obj: contains no triangles" -- "$bin" info "$tmp/truncated2.obj"
+printf 'v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n' >"$tmp/nan.obj"
+check nan 1 "$tmp/nan.obj" -- "$bin" info "$tmp/nan.obj"
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n' >"$tmp/index.off"
+check out-of-range 1 "refers to vertex 7" -- "$bin" info "$tmp/index.off"
+mkdir "$tmp/folder.obj"
+check dir 1 "$tmp/folder.obj: is a directory" -- "$bin" info "$tmp/folder.obj"
+
+echo "$passes passed, $failures failed"
+[ "$failures" -eq 0 ]
