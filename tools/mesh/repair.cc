@@ -45,7 +45,9 @@ std::vector<uint32_t> FindIdenticalVertices(const Mesh& mesh) {
     }
     rows.insert(rows.end(), row.begin(), row.end());
   }
-  auto row_of = [&rows, width](uint32_t v) { return rows.begin() + static_cast<ptrdiff_t>(width * v); };
+  auto row_of = [&rows, width](uint32_t v) {
+    return rows.begin() + static_cast<ptrdiff_t>(width * v);
+  };
 
   std::vector<uint32_t> order(n);
   std::iota(order.begin(), order.end(), 0u);
@@ -110,7 +112,8 @@ void MarkDuplicateTriangles(const Mesh& mesh, const RepairOptions& options,
     // Rotating to the smallest index keeps the winding and makes rotations compare equal.
     const int m = p[0] < p[1] ? (p[0] < p[2] ? 0 : 2) : (p[1] < p[2] ? 1 : 2);
     const uint32_t next = p[(m + 1) % 3], prev = p[(m + 2) % 3];
-    canon.push_back({{p[m], std::min(next, prev), std::max(next, prev)}, next > prev,
+    canon.push_back({{p[m], std::min(next, prev), std::max(next, prev)},
+                     next > prev,
                      static_cast<uint32_t>(t)});
   }
   std::sort(canon.begin(), canon.end());
@@ -222,13 +225,14 @@ std::string DescribeRepairs(const RepairReport& report) {
                     (count == 1 ? singular : plural));
   };
   add(report.welded_vertices, "welded", "duplicate vertex", "duplicate vertices");
-  add(report.degenerate_triangles_removed, "removed", "degenerate triangle", "degenerate triangles");
+  add(report.degenerate_triangles_removed, "removed", "degenerate triangle",
+      "degenerate triangles");
   add(report.zero_area_triangles_removed, "removed", "zero-area triangle", "zero-area triangles");
   add(report.duplicate_triangles_removed, "removed", "duplicate triangle", "duplicate triangles");
   add(report.opposite_triangles_removed, "removed", "opposite-winding copy",
       "opposite-winding copies");
-  add(report.opposite_triangle_pairs - std::min(report.opposite_triangle_pairs,
-                                                report.opposite_triangles_removed),
+  add(report.opposite_triangle_pairs -
+          std::min(report.opposite_triangle_pairs, report.opposite_triangles_removed),
       "kept", "two-sided face", "two-sided faces");
   add(report.unused_vertices_removed, "removed", "unused vertex", "unused vertices");
   if (parts.empty()) return "no repairs needed";

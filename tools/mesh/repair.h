@@ -30,15 +30,15 @@ struct RepairOptions {
 };
 
 struct RepairReport {
-  size_t welded_vertices = 0;                // vertices merged into an identical earlier one
-  size_t degenerate_triangles_removed = 0;   // repeated vertex index
-  size_t zero_area_triangles_removed = 0;    // collinear positions (option)
-  size_t duplicate_triangles_removed = 0;    // same vertices, same winding
+  size_t welded_vertices = 0;               // vertices merged into an identical earlier one
+  size_t degenerate_triangles_removed = 0;  // repeated vertex index
+  size_t zero_area_triangles_removed = 0;   // collinear positions (option)
+  size_t duplicate_triangles_removed = 0;   // same vertices, same winding
   // Two-sided faces found (same vertices, both windings), counted among the triangles left
   // after same-winding copies are removed.
   size_t opposite_triangle_pairs = 0;
-  size_t opposite_triangles_removed = 0;     // ... of which removed (option)
-  size_t unused_vertices_removed = 0;        // referenced by no triangle (not counting welded ones)
+  size_t opposite_triangles_removed = 0;  // ... of which removed (option)
+  size_t unused_vertices_removed = 0;     // referenced by no triangle (not counting welded ones)
 
   // True when the mesh was modified (finding opposite pairs alone changes nothing).
   bool changed() const {

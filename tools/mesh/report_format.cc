@@ -6,7 +6,8 @@
 namespace hullpack {
 namespace {
 
-// Shortest text that reads back as the same float or double; JSON has no NaN/Inf, so those are null.
+// Shortest text that reads back as the same float or double; JSON has no NaN/Inf, so those are
+// null.
 template <typename Float>
 std::string Number(Float value) {
   if (!std::isfinite(value)) return "null";
@@ -42,7 +43,9 @@ class JsonObject {
   }
   JsonObject& Add(const char* key, size_t value) { return Add(key, std::to_string(value)); }
   JsonObject& Add(const char* key, int value) { return Add(key, std::to_string(value)); }
-  JsonObject& Add(const char* key, bool value) { return Add(key, std::string(value ? "true" : "false")); }
+  JsonObject& Add(const char* key, bool value) {
+    return Add(key, std::string(value ? "true" : "false"));
+  }
   JsonObject& Add(const char* key, double value) { return Add(key, Number(value)); }
   JsonObject& Add(const char* key, const std::array<float, 3>& p) {
     return Add(key, "[" + Number(p[0]) + ", " + Number(p[1]) + ", " + Number(p[2]) + "]");
@@ -57,11 +60,10 @@ class JsonObject {
 
 std::vector<std::string> FormatTopologyReport(const TopologyReport& r) {
   std::vector<std::string> lines;
-  lines.push_back("triangles: " + std::to_string(r.triangles) + " (" +
-                  std::to_string(r.degenerate_triangles) + " degenerate, " +
-                  std::to_string(r.duplicate_triangles) + " duplicate, " +
-                  Plural(r.opposite_triangle_pairs, "opposite-winding pair", "opposite-winding pairs") +
-                  ")");
+  lines.push_back(
+      "triangles: " + std::to_string(r.triangles) + " (" + std::to_string(r.degenerate_triangles) +
+      " degenerate, " + std::to_string(r.duplicate_triangles) + " duplicate, " +
+      Plural(r.opposite_triangle_pairs, "opposite-winding pair", "opposite-winding pairs") + ")");
   lines.push_back("vertices: " + std::to_string(r.vertices) + " (" +
                   std::to_string(r.referenced_vertices) + " referenced, " +
                   Plural(r.unique_positions, "unique position", "unique positions") + ")");
@@ -81,9 +83,9 @@ std::vector<std::string> FormatTopologyReport(const TopologyReport& r) {
                          : ", genus unknown (not a closed manifold)";
   lines.push_back(closed);
   lines.push_back("area: " + Short(r.area));
-  lines.push_back("volume: " + Short(r.volume) +
-                  (r.closed_components == 0 ? " (no closed component)"
-                                            : " (closed components only)"));
+  lines.push_back(
+      "volume: " + Short(r.volume) +
+      (r.closed_components == 0 ? " (no closed component)" : " (closed components only)"));
   lines.push_back("bounds: " + Point(r.bbox_min) + " to " + Point(r.bbox_max));
   return lines;
 }

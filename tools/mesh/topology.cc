@@ -67,10 +67,10 @@ size_t WeldPositions(const Mesh& mesh, std::vector<uint32_t>& point_of) {
 
 // One triangle side, as the sort-based edge list stores it.
 struct HalfEdge {
-  uint64_t key;       // (min point << 32) | max point
+  uint64_t key;  // (min point << 32) | max point
   uint32_t triangle;
-  uint8_t corner;     // the side runs from corner to corner + 1 (mod 3)
-  bool forward;       // the triangle traverses it from the smaller point to the larger
+  uint8_t corner;  // the side runs from corner to corner + 1 (mod 3)
+  bool forward;    // the triangle traverses it from the smaller point to the larger
 };
 
 struct Vec3 {
@@ -169,7 +169,8 @@ TopologyReport AnalyzeTopology(const Mesh& mesh, const TopologyOptions& options)
     for (size_t i = 0; i < canon.size();) {
       size_t j = i;
       size_t same_winding[2] = {0, 0};
-      while (j < canon.size() && canon[j].sorted == canon[i].sorted) ++same_winding[canon[j++].flipped];
+      while (j < canon.size() && canon[j].sorted == canon[i].sorted)
+        ++same_winding[canon[j++].flipped];
       for (size_t count : same_winding) report.duplicate_triangles += count > 0 ? count - 1 : 0;
       report.opposite_triangle_pairs += std::min(same_winding[0], same_winding[1]);
       i = j;
@@ -273,8 +274,9 @@ TopologyReport AnalyzeTopology(const Mesh& mesh, const TopologyOptions& options)
     struct CornerAt {
       uint32_t point, component, fan;
       bool operator<(const CornerAt& o) const {
-        return point != o.point ? point < o.point
-                                : (component != o.component ? component < o.component : fan < o.fan);
+        return point != o.point
+                   ? point < o.point
+                   : (component != o.component ? component < o.component : fan < o.fan);
       }
     };
     std::vector<CornerAt> corners;

@@ -32,11 +32,11 @@ struct TopologyOptions {
 // Degenerate triangles (two corners on the same welded point) are counted and then left out
 // of every other figure: they have no area and no proper edges.
 struct TopologyReport {
-  size_t vertices = 0;             // vertex_count(): entries in Mesh::positions / 3
-  size_t referenced_vertices = 0;  // vertex indices used by at least one triangle
-  size_t unique_positions = 0;     // distinct positions among the referenced vertices
-  size_t triangles = 0;            // triangle_count()
-  size_t degenerate_triangles = 0; // two or three corners on the same welded point
+  size_t vertices = 0;              // vertex_count(): entries in Mesh::positions / 3
+  size_t referenced_vertices = 0;   // vertex indices used by at least one triangle
+  size_t unique_positions = 0;      // distinct positions among the referenced vertices
+  size_t triangles = 0;             // triangle_count()
+  size_t degenerate_triangles = 0;  // two or three corners on the same welded point
   // Extra copies of a triangle with the same three points in the same cyclic order
   // (a triangle present k times adds k - 1).
   size_t duplicate_triangles = 0;
@@ -45,9 +45,9 @@ struct TopologyReport {
   // cause is visible.
   size_t opposite_triangle_pairs = 0;
 
-  size_t edges = 0;                // distinct undirected edges between welded points
-  size_t boundary_edges = 0;       // used by exactly one triangle (open edges)
-  size_t non_manifold_edges = 0;   // used by more than two triangles
+  size_t edges = 0;               // distinct undirected edges between welded points
+  size_t boundary_edges = 0;      // used by exactly one triangle (open edges)
+  size_t non_manifold_edges = 0;  // used by more than two triangles
   // Vertices whose incident triangles do not form a single fan (disk or half-disk) when
   // triangles are joined across the vertex's manifold edges only: bow-ties, cone tips touching,
   // every vertex on a non-manifold edge.

@@ -19,8 +19,8 @@ Status CheckSize(const std::vector<T>& values, size_t width, size_t vertex_count
   return Status(StatusCode::kInvalidMesh, msg.str());
 }
 
-// `components` names each value of one vertex ("xyz", "rgba", ...); its length is the width.
-Status CheckFinite(const std::vector<float>& values, const std::string& components,
+// `components` names each value of one vertex ({"x", "y", "z"}, ...); its size is the width.
+Status CheckFinite(const std::vector<float>& values, const std::vector<std::string>& components,
                    const std::string& name) {
   const size_t width = components.size();
   size_t bad = 0;
@@ -32,36 +32,34 @@ Status CheckFinite(const std::vector<float>& values, const std::string& componen
   if (bad == 0) return Status::Ok();
   std::ostringstream msg;
   msg << name << ": " << bad << " non-finite value" << (bad == 1 ? "" : "s") << ", first at vertex "
-      << first / width << " (" << components[first % width] << " = " << values[first]
-      << ")";
+      << first / width << " (" << components[first % width] << " = " << values[first] << ")";
   return Status(StatusCode::kInvalidMesh, msg.str());
 }
 
 }  // namespace
 
 Status ValidateMesh(const Mesh& mesh) {
-  const std::string where = mesh.name.empty() ? std::string("mesh: ") : "mesh '" + mesh.name + "': ";
+  const std::string where =
+      mesh.name.empty() ? std::string("mesh: ") : "mesh '" + mesh.name + "': ";
   auto fail = [&where](const Status& status) {
     return Status(status.code(), where + status.message());
   };
 
   if (mesh.positions.size() % 3 != 0) {
-    return fail(Status(StatusCode::kInvalidMesh,
-                       "positions: " + std::to_string(mesh.positions.size()) +
-                           " values, not a multiple of 3"));
+    return fail(Status(
+        StatusCode::kInvalidMesh,
+        "positions: " + std::to_string(mesh.positions.size()) + " values, not a multiple of 3"));
   }
   if (mesh.indices.size() % 3 != 0) {
-    return fail(Status(StatusCode::kInvalidMesh,
-                       "indices: " + std::to_string(mesh.indices.size()) +
-                           " values, not a multiple of 3 (triangles only)"));
+    return fail(
+        Status(StatusCode::kInvalidMesh, "indices: " + std::to_string(mesh.indices.size()) +
+                                             " values, not a multiple of 3 (triangles only)"));
   }
 
   const size_t n = mesh.vertex_count();
   const Status size_checks[] = {
-      CheckSize(mesh.normals, 3, n, "normals"),
-      CheckSize(mesh.tangents, 4, n, "tangents"),
-      CheckSize(mesh.colors, 4, n, "colors"),
-      CheckSize(mesh.joints, 4, n, "joints"),
+      CheckSize(mesh.normals, 3, n, "normals"), CheckSize(mesh.tangents, 4, n, "tangents"),
+      CheckSize(mesh.colors, 4, n, "colors"),   CheckSize(mesh.joints, 4, n, "joints"),
       CheckSize(mesh.weights, 4, n, "weights"),
   };
   for (const Status& s : size_checks) {
@@ -95,13 +93,13 @@ Status ValidateMesh(const Mesh& mesh) {
     return fail(Status(StatusCode::kInvalidMesh, msg.str()));
   }
 
-  Status s = CheckFinite(mesh.positions, "xyz", "positions");
-  if (s.ok()) s = CheckFinite(mesh.normals, "xyz", "normals");
-  if (s.ok()) s = CheckFinite(mesh.tangents, "xyzw", "tangents");
-  if (s.ok()) s = CheckFinite(mesh.colors, "rgba", "colors");
-  if (s.ok()) s = CheckFinite(mesh.weights, "0123", "weights");
+  Status s = CheckFinite(mesh.positions, {"x", "y", "z"}, "positions");
+  if (s.ok()) s = CheckFinite(mesh.normals, {"x", "y", "z"}, "normals");
+  if (s.ok()) s = CheckFinite(mesh.tangents, {"x", "y", "z", "w"}, "tangents");
+  if (s.ok()) s = CheckFinite(mesh.colors, {"r", "g", "b", "a"}, "colors");
+  if (s.ok()) s = CheckFinite(mesh.weights, {"w0", "w1", "w2", "w3"}, "weights");
   for (size_t set = 0; s.ok() && set < mesh.uv_sets.size(); ++set) {
-    s = CheckFinite(mesh.uv_sets[set], "uv", "uv set " + std::to_string(set));
+    s = CheckFinite(mesh.uv_sets[set], {"u", "v"}, "uv set " + std::to_string(set));
   }
   if (!s.ok()) return fail(s);
   return Status::Ok();

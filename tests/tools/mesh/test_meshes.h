@@ -82,7 +82,8 @@ inline void AddTorus(Mesh& mesh, float cx, float R, float r, int rings = 48, int
     return base + static_cast<uint32_t>((i % rings) * sides + (j % sides));
   };
   for (int i = 0; i < rings; ++i) {
-    for (int j = 0; j < sides; ++j) AddQuad(mesh, at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+    for (int j = 0; j < sides; ++j)
+      AddQuad(mesh, at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
   }
 }
 

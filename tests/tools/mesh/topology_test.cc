@@ -42,7 +42,8 @@ TEST(TopologyTest, VolumeIsSignedAndIndependentOfPlacement) {
   AddCube(far, 1000, -2000, 3000, 2);
   EXPECT_NEAR(AnalyzeTopology(far).volume, 8.0, 1e-9);
   // Reversing every triangle turns the volume inside out.
-  for (size_t t = 0; t < far.triangle_count(); ++t) std::swap(far.indices[3 * t + 1], far.indices[3 * t + 2]);
+  for (size_t t = 0; t < far.triangle_count(); ++t)
+    std::swap(far.indices[3 * t + 1], far.indices[3 * t + 2]);
   const TopologyReport r = AnalyzeTopology(far);
   EXPECT_NEAR(r.volume, -8.0, 1e-9);
   EXPECT_TRUE(r.consistently_oriented);
@@ -125,6 +126,21 @@ TEST(TopologyTest, BowTieHasOneNonManifoldVertex) {
   EXPECT_EQ(r.components_by_vertex, 1u);
 }
 
+TEST(TopologyTest, CubesTouchingAtACornerAreClosedButNotManifold) {
+  Mesh mesh;
+  AddCube(mesh, 0, 0, 0);
+  AddCube(mesh, 1, 1, 1);  // shares the point (1, 1, 1), as a separate vertex index
+  const TopologyReport r = AnalyzeTopology(mesh);
+  EXPECT_TRUE(r.closed);
+  EXPECT_EQ(r.non_manifold_vertices, 1u);
+  EXPECT_EQ(r.components, 2u);
+  EXPECT_EQ(r.components_by_vertex, 1u);
+  EXPECT_EQ(r.closed_components, 2u);
+  EXPECT_EQ(r.closed_manifold_components, 0u);
+  EXPECT_EQ(r.genus, -1);
+  EXPECT_NEAR(r.volume, 2.0, 1e-12);
+}
+
 TEST(TopologyTest, ThreeTrianglesOnOneEdgeMakeANonManifoldEdge) {
   Mesh mesh;
   const uint32_t a = AddVertex(mesh, 0, 0, 0);
@@ -178,7 +194,8 @@ TEST(TopologyTest, SplitCubeIsClosedByPositionButNotByIndex) {
 TEST(TopologyTest, NegativeZeroIsTheSamePointAsZero) {
   Mesh mesh;
   AddTriangle(mesh, AddVertex(mesh, 0, 0, 0), AddVertex(mesh, 1, 0, 0), AddVertex(mesh, 0, 1, 0));
-  AddTriangle(mesh, AddVertex(mesh, -0.0f, 0, 0), AddVertex(mesh, 0, -1, 0), AddVertex(mesh, 1, 0, 0));
+  AddTriangle(mesh, AddVertex(mesh, -0.0f, 0, 0), AddVertex(mesh, 0, -1, 0),
+              AddVertex(mesh, 1, 0, 0));
   const TopologyReport r = AnalyzeTopology(mesh);
   EXPECT_EQ(r.unique_positions, 4u);
   EXPECT_EQ(r.edges, 5u);
@@ -187,8 +204,8 @@ TEST(TopologyTest, NegativeZeroIsTheSamePointAsZero) {
 
 TEST(TopologyTest, CountsDegenerateDuplicateAndOppositeTriangles) {
   Mesh mesh = UnitCube();
-  AddTriangle(mesh, 0, 0, 1);                                       // degenerate by index
-  AddTriangle(mesh, AddVertex(mesh, 0, 0, 0), 0, 7);                // degenerate by position
+  AddTriangle(mesh, 0, 0, 1);                                            // degenerate by index
+  AddTriangle(mesh, AddVertex(mesh, 0, 0, 0), 0, 7);                     // degenerate by position
   AddTriangle(mesh, mesh.indices[1], mesh.indices[2], mesh.indices[0]);  // triangle 0, rotated
   AddTriangle(mesh, mesh.indices[3], mesh.indices[5], mesh.indices[4]);  // triangle 1, flipped
   const TopologyReport r = AnalyzeTopology(mesh);

@@ -66,7 +66,7 @@ TEST(ValidateTest, RejectsNonFiniteAttributes) {
 
   Mesh weights = CubeWithAllAttributes();
   weights.weights[4 * 3] = inf;
-  ExpectInvalid(ValidateMesh(weights), {"weights", "vertex 3"});
+  ExpectInvalid(ValidateMesh(weights), {"weights", "vertex 3", "w0 = inf"});
 
   Mesh tangents = CubeWithAllAttributes();
   tangents.tangents[4 * 2 + 3] = inf;
