@@ -1,0 +1,196 @@
+#include "pipeline/prune.h"
+
+#include <algorithm>
+#include <array>
+#include <set>
+
+namespace hullpack {
+namespace {
+
+std::array<const TextureRef*, 5> TextureSlots(const Material& m) {
+  return {&m.base_color_texture, &m.metallic_roughness_texture, &m.normal_texture, &m.occlusion_texture,
+          &m.emissive_texture};
+}
+
+// Materials a mesh's triangles use; with no material ids, none.
+std::set<uint32_t> MaterialsOf(const Mesh& mesh) {
+  return std::set<uint32_t>(mesh.material_ids.begin(), mesh.material_ids.end());
+}
+
+void RemoveUnusedUvSets(Scene& scene, Mesh& mesh, PruneReport& report) {
+  int highest_used = -1;
+  for (uint32_t id : MaterialsOf(mesh)) {
+    if (id >= scene.materials.size()) continue;
+    for (const TextureRef* t : TextureSlots(scene.materials[id])) {
+      if (t->used()) highest_used = std::max(highest_used, t->uv_set);
+    }
+  }
+  // Only trailing sets can go: texture slots name sets by index.
+  const size_t keep = static_cast<size_t>(highest_used + 1);
+  if (mesh.uv_sets.size() > keep) {
+    report.uv_sets_removed += mesh.uv_sets.size() - keep;
+    mesh.uv_sets.resize(keep);
+  }
+}
+
+void RemoveUnusedTangents(const Scene& scene, Mesh& mesh, PruneReport& report) {
+  if (mesh.tangents.empty()) return;
+  for (uint32_t id : MaterialsOf(mesh)) {
+    if (id < scene.materials.size() && scene.materials[id].normal_texture.used()) return;
+  }
+  mesh.tangents.clear();
+  ++report.tangent_sets_removed;
+}
+
+// COLOR_0 multiplies the base colour: a constant one is the same as a material whose base colour
+// is multiplied by it. Each material the mesh uses is copied so other meshes are not affected.
+void FoldConstantColors(Scene& scene, Mesh& mesh, PruneReport& report) {
+  if (mesh.colors.size() < 4) return;
+  for (size_t i = 4; i < mesh.colors.size(); ++i) {
+    if (mesh.colors[i] != mesh.colors[i % 4]) return;
+  }
+  const float c[4] = {mesh.colors[0], mesh.colors[1], mesh.colors[2], mesh.colors[3]};
+  mesh.colors.clear();
+  ++report.constant_color_sets_folded;
+  if (c[0] == 1 && c[1] == 1 && c[2] == 1 && c[3] == 1) return;
+  if (mesh.material_ids.empty()) {
+    Material m;
+    m.name = mesh.name + "_color";
+    scene.materials.push_back(m);
+    mesh.material_ids.assign(mesh.triangle_count(), static_cast<uint32_t>(scene.materials.size() - 1));
+  }
+  std::vector<std::pair<uint32_t, uint32_t>> copies;  // old id -> tinted copy
+  for (uint32_t& id : mesh.material_ids) {
+    auto it = std::find_if(copies.begin(), copies.end(), [&](const auto& p) { return p.first == id; });
+    if (it == copies.end()) {
+      Material tinted = id < scene.materials.size() ? scene.materials[id] : Material();
+      for (int k = 0; k < 4; ++k) tinted.base_color[k] *= c[k];
+      scene.materials.push_back(tinted);
+      copies.emplace_back(id, static_cast<uint32_t>(scene.materials.size() - 1));
+      it = copies.end() - 1;
+    }
+    id = it->second;
+  }
+}
+
+void RemoveUnusedSkinData(const Scene& scene, size_t mesh_index, Mesh& mesh, PruneReport& report) {
+  if (mesh.joints.empty() && mesh.weights.empty()) return;
+  for (const Node& node : scene.nodes) {
+    if (node.skin >= 0 && std::find(node.meshes.begin(), node.meshes.end(), static_cast<int>(mesh_index)) != node.meshes.end()) return;
+  }
+  mesh.joints.clear();
+  mesh.weights.clear();
+  ++report.skin_data_removed;
+}
+
+void RemoveUnreferencedMeshes(Scene& scene, PruneReport& report) {
+  if (scene.nodes.empty()) return;
+  std::vector<int> new_index(scene.meshes.size(), -1);
+  for (const Node& node : scene.nodes) {
+    for (int m : node.meshes) {
+      if (m >= 0 && static_cast<size_t>(m) < scene.meshes.size()) new_index[m] = 0;
+    }
+  }
+  std::vector<Mesh> kept;
+  for (size_t i = 0; i < scene.meshes.size(); ++i) {
+    if (new_index[i] < 0) continue;
+    new_index[i] = static_cast<int>(kept.size());
+    kept.push_back(std::move(scene.meshes[i]));
+  }
+  report.meshes_removed += scene.meshes.size() - kept.size();
+  scene.meshes = std::move(kept);
+  for (Node& node : scene.nodes) {
+    std::vector<int> meshes;
+    for (int m : node.meshes) {
+      if (m >= 0 && static_cast<size_t>(m) < new_index.size() && new_index[m] >= 0) meshes.push_back(new_index[m]);
+    }
+    node.meshes = std::move(meshes);
+  }
+}
+
+void RemoveUnreferencedMaterials(Scene& scene, PruneReport& report) {
+  std::vector<int> new_index(scene.materials.size(), -1);
+  for (const Mesh& mesh : scene.meshes) {
+    for (uint32_t id : mesh.material_ids) {
+      if (id < new_index.size()) new_index[id] = 0;
+    }
+  }
+  std::vector<Material> kept;
+  for (size_t i = 0; i < scene.materials.size(); ++i) {
+    if (new_index[i] < 0) continue;
+    new_index[i] = static_cast<int>(kept.size());
+    kept.push_back(std::move(scene.materials[i]));
+  }
+  report.materials_removed += scene.materials.size() - kept.size();
+  scene.materials = std::move(kept);
+  for (Mesh& mesh : scene.meshes) {
+    for (uint32_t& id : mesh.material_ids) {
+      if (id < new_index.size()) id = static_cast<uint32_t>(new_index[id]);
+    }
+  }
+}
+
+void RemoveUnreferencedImages(Scene& scene, PruneReport& report) {
+  std::vector<int> new_index(scene.images.size(), -1);
+  for (const Material& m : scene.materials) {
+    for (const TextureRef* t : TextureSlots(m)) {
+      if (t->used() && static_cast<size_t>(t->image) < new_index.size()) new_index[t->image] = 0;
+    }
+  }
+  std::vector<Image> kept;
+  for (size_t i = 0; i < scene.images.size(); ++i) {
+    if (new_index[i] < 0) continue;
+    new_index[i] = static_cast<int>(kept.size());
+    kept.push_back(std::move(scene.images[i]));
+  }
+  report.images_removed += scene.images.size() - kept.size();
+  scene.images = std::move(kept);
+  for (Material& m : scene.materials) {
+    for (TextureRef* t : {&m.base_color_texture, &m.metallic_roughness_texture, &m.normal_texture,
+                          &m.occlusion_texture, &m.emissive_texture}) {
+      if (t->used()) t->image = static_cast<size_t>(t->image) < new_index.size() ? new_index[t->image] : -1;
+    }
+  }
+}
+
+void Sum(RepairReport& total, const RepairReport& r) {
+  total.welded_vertices += r.welded_vertices;
+  total.degenerate_triangles_removed += r.degenerate_triangles_removed;
+  total.zero_area_triangles_removed += r.zero_area_triangles_removed;
+  total.duplicate_triangles_removed += r.duplicate_triangles_removed;
+  total.opposite_triangle_pairs += r.opposite_triangle_pairs;
+  total.opposite_triangles_removed += r.opposite_triangles_removed;
+  total.unused_vertices_removed += r.unused_vertices_removed;
+}
+
+}  // namespace
+
+PruneReport LeaveOutUnused(Scene& scene, const PruneOptions& options) {
+  PruneReport report;
+  if (options.unreferenced_meshes) RemoveUnreferencedMeshes(scene, report);
+  for (size_t i = 0; i < scene.meshes.size(); ++i) {
+    Mesh& mesh = scene.meshes[i];
+    if (options.constant_colors) FoldConstantColors(scene, mesh, report);
+    if (options.unused_uv_sets) RemoveUnusedUvSets(scene, mesh, report);
+    if (options.unused_tangents) RemoveUnusedTangents(scene, mesh, report);
+    if (options.unused_skin_data) RemoveUnusedSkinData(scene, i, mesh, report);
+    Sum(report.repairs, RepairMesh(mesh, options.repairs));
+  }
+  if (options.unreferenced_materials) RemoveUnreferencedMaterials(scene, report);
+  if (options.unreferenced_images) RemoveUnreferencedImages(scene, report);
+
+  auto line = [&](size_t n, const char* what) {
+    if (n) report.lines.push_back(std::to_string(n) + " " + what);
+  };
+  line(report.uv_sets_removed, "UV sets no texture samples");
+  line(report.tangent_sets_removed, "tangent sets without a normal map");
+  line(report.constant_color_sets_folded, "constant vertex colour sets (folded into the material)");
+  line(report.skin_data_removed, "joint/weight sets of meshes no skinned node shows");
+  line(report.meshes_removed, "meshes no node shows");
+  line(report.materials_removed, "materials no triangle uses");
+  line(report.images_removed, "images no material uses");
+  if (report.repairs.changed()) report.lines.push_back(DescribeRepairs(report.repairs));
+  return report;
+}
+
+}  // namespace hullpack
