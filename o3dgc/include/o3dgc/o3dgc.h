@@ -1,0 +1,200 @@
+// o3dgc: in-memory triangle mesh compression (connectivity + quantized, predicted attributes,
+// adaptive binary arithmetic coding). Standard library only.
+//
+// Typical use:
+//   o3dgc::MeshView mesh;               // plain pointers into the caller's arrays
+//   mesh.positions = xyz; mesh.num_vertices = n; mesh.indices = idx; mesh.num_triangles = t;
+//   std::vector<uint8_t> stream;
+//   o3dgc::Status s = o3dgc::Encode(mesh, o3dgc::EncodeParams(), &stream);
+//   o3dgc::DecodedMesh out;
+//   s = o3dgc::Decode(stream.data(), stream.size(), o3dgc::DecodeOptions(), &out);
+//
+// Trust model: Encode trusts nothing it cannot check cheaply but expects the pointers of a
+// MeshView to be valid for the sizes stated below. Decode is safe on untrusted input: it validates
+// every count, size and value, bounds its allocations by what the stream can hold, returns a
+// Status for any malformed or truncated stream and never reads outside [data, data + size).
+// Neither function ever produces NaN or infinite values.
+#ifndef O3DGC_O3DGC_H_
+#define O3DGC_O3DGC_H_
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace o3dgc {
+
+// Format version written by Encode and the only one Decode accepts.
+constexpr uint32_t kStreamVersion = 1;
+
+enum class Status : uint8_t {
+  kOk = 0,
+  kInvalidArgument,    // Encode: bad MeshView/EncodeParams (null pointer, index out of range, NaN...)
+  kUnsupported,        // a feature/option this version cannot encode or decode
+  kBadMagic,           // Decode: not an o3dgc stream
+  kBadVersion,         // Decode: stream of another format version
+  kTruncated,          // Decode: the stream ends before its declared content
+  kCorrupt,            // Decode: inconsistent content (bad count, value out of range, ...)
+  kChecksumMismatch,   // Decode: CRC32 of the stream does not match
+  kLimitExceeded,      // Decode: declared sizes exceed DecodeOptions limits or what the stream holds
+  kCancelled,          // the progress callback asked to stop
+};
+
+// Stable name of a status ("ok", "corrupt", ...); never null.
+const char* StatusName(Status status);
+
+enum class StreamType : uint8_t {
+  kBinary = 0,  // arithmetic-coded bytes
+  kAscii = 1,   // the same content as 7-bit bytes (every byte < 128), meant to be served gzip'd
+};
+
+enum class Prediction : uint8_t {
+  kNone = 0,           // values coded as they are
+  kDifferential = 1,   // residual against the previous vertex in coding order
+  kParallelogram = 2,  // multi-parallelogram over the mesh, falling back to neighbour averages
+  kSurfaceNormal = 3,  // normals only: predicted from the decoded surface; output is unit length
+  kDefault = 255,      // per-semantic default (see Semantic)
+};
+
+// What an attribute means. Defaults: kPosition parallelogram; kNormal surface-normal;
+// kTexCoord parallelogram; kColor differential; kWeight parallelogram; kGeneric parallelogram;
+// int attributes (kJointId, kGeneric) unquantized, differential.
+enum class Semantic : uint8_t {
+  kGeneric = 0,
+  kPosition = 1,  // internal use; positions are given in MeshView::positions
+  kNormal = 2,
+  kTexCoord = 3,
+  kColor = 4,
+  kWeight = 5,
+  kJointId = 6,
+};
+
+// How the quantization range of a float attribute is chosen.
+enum class RangeMode : uint8_t {
+  kUniform = 0,  // one range for all components (largest extent): cubic cells
+  kPerAxis = 1,  // one range per component
+};
+
+// A per-vertex float attribute: `dimension` floats per vertex, vertex i at
+// (const char*)data + i * stride (stride 0 means dimension * sizeof(float)).
+struct FloatAttributeView {
+  const float* data = nullptr;
+  size_t stride = 0;
+  uint32_t dimension = 2;           // 1..4
+  Semantic semantic = Semantic::kGeneric;
+  int bits = 12;                    // quantization bits per component, 1..30
+  Prediction prediction = Prediction::kDefault;
+  RangeMode range = RangeMode::kPerAxis;
+};
+
+// A per-vertex int attribute (joint ids, generic); coded exactly.
+struct IntAttributeView {
+  const int32_t* data = nullptr;
+  size_t stride = 0;                // 0 means dimension * sizeof(int32_t)
+  uint32_t dimension = 4;           // 1..4
+  Semantic semantic = Semantic::kJointId;
+  Prediction prediction = Prediction::kDefault;  // kNone or kDifferential (default)
+};
+
+// The mesh to encode. Every pointer must be valid for the sizes given:
+//  positions: num_vertices vertices of 3 floats, vertex i at (const char*)positions + i*stride;
+//  indices: 3 * num_triangles values, each < num_vertices (may be null when num_triangles == 0);
+//  normals: optional (null = none), 3 floats per vertex;
+//  triangle_groups: optional (null = none), one id per triangle (e.g. an OBJ usemtl group).
+// Triangles may be degenerate, duplicated, inconsistently oriented or non-manifold; vertices may
+// be unreferenced.
+struct MeshView {
+  const float* positions = nullptr;
+  size_t position_stride = 0;
+  size_t num_vertices = 0;
+  const uint32_t* indices = nullptr;
+  size_t num_triangles = 0;
+  const float* normals = nullptr;
+  size_t normal_stride = 0;
+  std::vector<FloatAttributeView> float_attributes;
+  std::vector<IntAttributeView> int_attributes;
+  const uint32_t* triangle_groups = nullptr;
+};
+
+// Progress hook: called with a fraction in [0,1]; return false to cancel (Status::kCancelled).
+using ProgressFn = std::function<bool(float)>;
+
+struct EncodeParams {
+  StreamType stream_type = StreamType::kBinary;
+  // false (default): vertices and triangles may be reordered (and triangle corners rotated, with
+  // winding kept) for size. true: the decoded vertex order, triangle order and corner order are
+  // exactly those of the input.
+  bool keep_order = false;
+  int position_bits = 14;                           // 1..30
+  Prediction position_prediction = Prediction::kParallelogram;
+  RangeMode position_range = RangeMode::kUniform;
+  int normal_bits = 10;                             // 1..30
+  Prediction normal_prediction = Prediction::kSurfaceNormal;
+  ProgressFn progress;                              // optional
+};
+
+struct DecodeOptions {
+  bool verify_checksum = true;
+  size_t max_vertices = size_t(1) << 28;
+  size_t max_triangles = size_t(1) << 28;
+  ProgressFn progress;                              // optional
+};
+
+struct DecodedFloatAttribute {
+  Semantic semantic = Semantic::kGeneric;
+  uint32_t dimension = 0;
+  std::vector<float> values;  // dimension per vertex
+};
+
+struct DecodedIntAttribute {
+  Semantic semantic = Semantic::kGeneric;
+  uint32_t dimension = 0;
+  std::vector<int32_t> values;  // dimension per vertex
+};
+
+struct DecodedMesh {
+  std::vector<float> positions;          // 3 per vertex
+  std::vector<uint32_t> indices;         // 3 per triangle
+  std::vector<float> normals;            // 3 per vertex or empty
+  std::vector<DecodedFloatAttribute> float_attributes;  // in MeshView order
+  std::vector<DecodedIntAttribute> int_attributes;      // in MeshView order
+  std::vector<uint32_t> triangle_groups; // 1 per triangle or empty
+  size_t num_vertices() const { return positions.size() / 3; }
+  size_t num_triangles() const { return indices.size() / 3; }
+};
+
+// Byte sizes of the parts of a stream (binary form; for an ASCII stream `total` is the ASCII size).
+struct StreamInfo {
+  StreamType stream_type = StreamType::kBinary;
+  uint32_t version = 0;
+  bool keep_order = false;
+  size_t num_vertices = 0;
+  size_t num_triangles = 0;
+  size_t total = 0;
+  size_t header = 0;         // magic, version, counts, quantization parameters, checksum
+  size_t connectivity = 0;   // triangles, seams, duplicates (and order tables in keep_order mode)
+  size_t positions = 0;
+  size_t normals = 0;
+  std::vector<size_t> float_attributes;
+  std::vector<size_t> int_attributes;
+  size_t groups = 0;
+};
+
+// Encodes `mesh`. On success `*out` holds the stream (replacing its content) and, if `info` is not
+// null, the per-part sizes. Returns kInvalidArgument for null pointers with non-zero counts, indices
+// >= num_vertices, bits outside 1..30, dimensions outside 1..4, non-finite values, or counts above
+// 2^28.
+Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint8_t>* out,
+              StreamInfo* info = nullptr);
+
+// Decodes `size` bytes at `data` (binary or ASCII stream, detected from the magic). Safe on
+// untrusted input. On success `*out` is replaced by the mesh; on failure its content is unspecified.
+Status Decode(const uint8_t* data, size_t size, const DecodeOptions& options, DecodedMesh* out,
+              StreamInfo* info = nullptr);
+
+// Parses only the header and section table of a stream (no checksum check, no decoding).
+Status ReadStreamInfo(const uint8_t* data, size_t size, StreamInfo* info);
+
+}  // namespace o3dgc
+
+#endif  // O3DGC_O3DGC_H_

@@ -1,0 +1,78 @@
+// Coding of per-vertex attribute values (encoder in attribute_encoder.cc, decoder in
+// attribute_decoder.cc; both share the context models defined here).
+//
+// Quantized values are predicted (none / differential / multi-parallelogram), and each residual
+// component is coded with a signed adaptive Exp-Golomb binarization whose models are selected by
+// the component, the kind of prediction that was possible and the magnitude of the residuals of the
+// already decoded neighbours. Normals in surface-normal mode are coded in octahedral coordinates
+// against the normal of the decoded surface. Int attributes are coded exactly.
+#ifndef O3DGC_SRC_ATTRIBUTE_CODER_H_
+#define O3DGC_SRC_ATTRIBUTE_CODER_H_
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "arithmetic_coder.h"
+#include "entropy.h"
+#include "o3dgc/o3dgc.h"
+#include "predictors.h"
+
+namespace o3dgc {
+
+constexpr int kMagContexts = 14;
+
+struct ResidualModels {
+  SignedModel m[4][3][kMagContexts];
+};
+
+inline int MagContext(uint64_t mag) {
+  const int b = mag == 0 ? 0 : FloorLog2(mag) + 1;
+  return b < kMagContexts ? b : kMagContexts - 1;
+}
+
+inline uint32_t SaturatingMagnitude(const int64_t* r, int dim) {
+  uint64_t s = 0;
+  for (int k = 0; k < dim; ++k) s += uint64_t(r[k] < 0 ? -r[k] : r[k]);
+  return s > 0xFFFFFFFFu ? 0xFFFFFFFFu : uint32_t(s);
+}
+
+// Surface normal of vertex c from the triangles around it; positions are quantized values per
+// position vertex, `scale` the step per axis, `position_of` maps attribute vertices to position
+// vertices. Returns a unit vector ((0,0,1) when the surface gives none).
+void SurfaceNormal(const MeshAdjacency& adj, uint32_t c, const int32_t* positions,
+                   const double scale[3], const uint32_t* position_of, double n[3]);
+
+// Octahedral quantization of a unit normal with `bits` per coordinate.
+inline int32_t OctQuantize(double u, uint32_t maxq) {
+  double q = (u + 1) * 0.5 * maxq + 0.5;
+  if (q < 0) q = 0;
+  if (q > maxq) q = maxq;
+  return int32_t(q);
+}
+inline double OctDequantize(int32_t q, uint32_t maxq) { return double(q) / maxq * 2 - 1; }
+
+struct NormalGeometry {
+  const int32_t* positions;      // quantized, 3 per position vertex
+  double scale[3];               // position step per axis
+  const uint32_t* position_of;   // attribute vertex -> position vertex
+};
+
+void EncodeQuantized(ArithmeticEncoder* enc, const MeshAdjacency& adj,
+                     const std::vector<int32_t>& q, int dim, int bits, Prediction mode);
+Status DecodeQuantized(ArithmeticDecoder* dec, const MeshAdjacency& adj, uint32_t n, int dim,
+                       int bits, Prediction mode, std::vector<int32_t>* q);
+
+// normals: 3 floats per vertex (any length; zero-length codes as (0,0,1)).
+void EncodeOctNormals(ArithmeticEncoder* enc, const MeshAdjacency& adj, const NormalGeometry& geo,
+                      const std::vector<float>& normals, int bits);
+Status DecodeOctNormals(ArithmeticDecoder* dec, const MeshAdjacency& adj, const NormalGeometry& geo,
+                        uint32_t n, int bits, std::vector<float>* normals);
+
+void EncodeInts(ArithmeticEncoder* enc, const std::vector<int32_t>& values, int dim, Prediction mode);
+Status DecodeInts(ArithmeticDecoder* dec, uint32_t n, int dim, Prediction mode,
+                  std::vector<int32_t>* values);
+
+}  // namespace o3dgc
+
+#endif  // O3DGC_SRC_ATTRIBUTE_CODER_H_

@@ -1,0 +1,97 @@
+// Attribute decoder (see attribute_coder.h; the mirror of attribute_encoder.cc).
+#include <cmath>
+
+#include "attribute_coder.h"
+
+namespace o3dgc {
+
+Status DecodeQuantized(ArithmeticDecoder* dec, const MeshAdjacency& adj, uint32_t n, int dim,
+                       int bits, Prediction mode, std::vector<int32_t>* out) {
+  std::vector<int32_t>& q = *out;
+  q.assign(size_t(n) * dim, 0);
+  const int64_t maxq = (int64_t(1) << bits) - 1;
+  if (mode == Prediction::kNone) {
+    for (size_t i = 0; i < q.size(); ++i) {
+      q[i] = int32_t(dec->DecodeBits(bits));
+      if ((i & 1023) == 0 && dec->failed()) return Status::kTruncated;
+    }
+    return dec->failed() ? Status::kTruncated : Status::kOk;
+  }
+  std::unique_ptr<ResidualModels> models(new ResidualModels);
+  std::vector<uint32_t> mags(n, 0);
+  for (uint32_t c = 0; c < n; ++c) {
+    if (dec->failed()) return Status::kTruncated;
+    int64_t pred[4];
+    PredictionContext pc;
+    if (mode == Prediction::kParallelogram) {
+      pc = PredictParallelogram(adj, c, q.data(), dim, mags.data(), pred);
+    } else {
+      for (int k = 0; k < dim; ++k) pred[k] = c > 0 ? q[size_t(c - 1) * dim + k] : 0;
+      pc.neighbour_magnitude = c > 0 ? mags[c - 1] : 0;
+    }
+    const int mctx = MagContext(pc.neighbour_magnitude);
+    int64_t r[4];
+    for (int k = 0; k < dim; ++k) {
+      if (pred[k] < 0) pred[k] = 0;
+      if (pred[k] > maxq) pred[k] = maxq;
+      r[k] = DecodeSigned(*dec, models->m[k][pc.kind][mctx]);
+      const int64_t v = pred[k] + r[k];
+      if (v < 0 || v > maxq) return Status::kCorrupt;
+      q[size_t(c) * dim + k] = int32_t(v);
+    }
+    mags[c] = SaturatingMagnitude(r, dim);
+  }
+  return dec->failed() ? Status::kTruncated : Status::kOk;
+}
+
+Status DecodeOctNormals(ArithmeticDecoder* dec, const MeshAdjacency& adj, const NormalGeometry& geo,
+                        uint32_t n, int bits, std::vector<float>* normals) {
+  const uint32_t maxq = uint32_t((uint64_t(1) << bits) - 1);
+  std::unique_ptr<ResidualModels> models(new ResidualModels);
+  std::vector<uint32_t> mags(n, 0);
+  normals->assign(size_t(n) * 3, 0.0f);
+  for (uint32_t c = 0; c < n; ++c) {
+    if (dec->failed()) return Status::kTruncated;
+    double p[3];
+    SurfaceNormal(adj, c, geo.positions, geo.scale, geo.position_of, p);
+    const bool flip = p[2] < 0;
+    if (flip) p[2] = -p[2];
+    double pu, pv;
+    OctEncode(p, &pu, &pv);
+    const int32_t qp[2] = {OctQuantize(pu, maxq), OctQuantize(pv, maxq)};
+    const int mctx = MagContext(NeighbourMagnitude(adj, c, mags.data()));
+    int64_t r[2];
+    int32_t qa[2];
+    for (int k = 0; k < 2; ++k) {
+      r[k] = DecodeSigned(*dec, models->m[k][0][mctx]);
+      const int64_t v = qp[k] + r[k];
+      if (v < 0 || v > int64_t(maxq)) return Status::kCorrupt;
+      qa[k] = int32_t(v);
+    }
+    mags[c] = SaturatingMagnitude(r, 2);
+    double a[3];
+    OctDecode(OctDequantize(qa[0], maxq), OctDequantize(qa[1], maxq), a);
+    if (flip) a[2] = -a[2];
+    for (int k = 0; k < 3; ++k) (*normals)[3 * size_t(c) + k] = float(a[k]);
+  }
+  return dec->failed() ? Status::kTruncated : Status::kOk;
+}
+
+Status DecodeInts(ArithmeticDecoder* dec, uint32_t n, int dim, Prediction mode,
+                  std::vector<int32_t>* values) {
+  std::unique_ptr<ResidualModels> models(new ResidualModels);
+  values->assign(size_t(n) * dim, 0);
+  for (size_t c = 0; c < n; ++c) {
+    if (dec->failed()) return Status::kTruncated;
+    for (int k = 0; k < dim; ++k) {
+      const int64_t pred =
+          (mode == Prediction::kDifferential && c > 0) ? (*values)[(c - 1) * dim + k] : 0;
+      const int64_t v = pred + DecodeSigned(*dec, models->m[k][0][0]);
+      if (v < INT32_MIN || v > INT32_MAX) return Status::kCorrupt;
+      (*values)[c * dim + k] = int32_t(v);
+    }
+  }
+  return dec->failed() ? Status::kTruncated : Status::kOk;
+}
+
+}  // namespace o3dgc

@@ -1,0 +1,20 @@
+// Connectivity decoder: the mirror of connectivity_encoder.h.
+#ifndef O3DGC_SRC_CONNECTIVITY_DECODER_H_
+#define O3DGC_SRC_CONNECTIVITY_DECODER_H_
+
+#include <cstdint>
+#include <vector>
+
+#include "arithmetic_coder.h"
+#include "o3dgc/o3dgc.h"
+
+namespace o3dgc {
+
+// Decodes exactly `num_triangles` triangles using at most `max_vertices` vertices. On success
+// `triangles` holds 3 * num_triangles ids < *num_vertices, every vertex referenced.
+Status DecodeConnectivity(ArithmeticDecoder* dec, size_t num_triangles, size_t max_vertices,
+                          std::vector<uint32_t>* triangles, uint32_t* num_vertices);
+
+}  // namespace o3dgc
+
+#endif  // O3DGC_SRC_CONNECTIVITY_DECODER_H_

@@ -1,0 +1,247 @@
+// Connectivity encoder (see connectivity_encoder.h).
+#include "connectivity_encoder.h"
+
+#include <algorithm>
+#include <array>
+#include <memory>
+
+#include "connectivity_front.h"
+#include "entropy.h"
+
+namespace o3dgc {
+namespace {
+
+constexpr uint32_t kNone = 0xFFFFFFFFu;
+
+class Encoder {
+ public:
+  Encoder(const std::vector<uint32_t>& tris, uint32_t num_vertices, ArithmeticEncoder* enc,
+          ConnectivityEncoding* out)
+      : tris_(tris), nt_(tris.size() / 3), nv_in_(num_vertices), enc_(*enc), out_(*out),
+        m_(new ConnectivityModels) {}
+
+  void Run() {
+    Classify();
+    BuildVertexTriangles();
+    new_of_old_.assign(nv_in_, kNone);
+    visited_.assign(nt_, 0);
+    out_.triangles.reserve(nt_ * 3);
+    out_.source.reserve(nt_);
+    front_.Reserve(nv_in_, nt_ * 2);
+
+    size_t scan = 0;
+    for (;;) {
+      if (front_.empty()) {
+        while (scan < nt_ && (kind_[scan] != kPrimary || visited_[scan])) ++scan;
+        if (scan == nt_) {
+          enc_.Encode(0, m_->more_components);
+          break;
+        }
+        enc_.Encode(1, m_->more_components);
+        const size_t t = scan;
+        visited_[t] = 1;
+        const uint32_t x = CodeVertexRef(tris_[3 * t]);
+        const uint32_t y = CodeVertexRef(tris_[3 * t + 1]);
+        const uint32_t z = CodeVertexRef(tris_[3 * t + 2]);
+        front_.StartTriangle(x, y, z);
+        Emit(t, x, y, z);
+        continue;
+      }
+      const int32_t g = front_.Pop();
+      if (g < 0) continue;
+      const uint32_t a = front_.gate(g).a, b = front_.gate(g).b;
+      const uint32_t oa = out_.old_of_new[a], ob = out_.old_of_new[b];
+      // Find an unvisited primary triangle across a-b, preferring the consistent orientation.
+      size_t found = kNone;
+      int flip = 0;
+      uint32_t oc = kNone;
+      for (uint32_t k = vt_start_[oa]; k < vt_start_[oa + 1]; ++k) {
+        const uint32_t t = vt_[k];
+        if (visited_[t]) continue;
+        const uint32_t* v = &tris_[3 * t];
+        int ia = -1, ib = -1;
+        for (int j = 0; j < 3; ++j) {
+          if (v[j] == oa) ia = j;
+          if (v[j] == ob) ib = j;
+        }
+        if (ib < 0) continue;
+        const int third = 3 - ia - ib;
+        const bool consistent = ((ib + 1) % 3) == ia;  // the triangle holds b->a
+        if (consistent) {
+          found = t;
+          flip = 0;
+          oc = v[third];
+          break;
+        }
+        if (found == kNone) {
+          found = t;
+          flip = 1;
+          oc = v[third];
+        }
+      }
+      const int ctx = front_.Context(a, b);
+      if (found == kNone) {
+        enc_.Encode(0, m_->attach[ctx]);
+        front_.Close(g);
+        continue;
+      }
+      enc_.Encode(1, m_->attach[ctx]);
+      uint32_t c = new_of_old_[oc];
+      if (c == kNone) {
+        enc_.Encode(1, m_->is_new[ctx]);
+        c = NewVertex(oc);
+      } else {
+        enc_.Encode(0, m_->is_new[ctx]);
+        const int64_t r = front_.RightCandidate(b);
+        const int64_t l = front_.LeftCandidate(a);
+        bool done = false;
+        if (r >= 0) {
+          enc_.Encode(c == r, m_->is_right[ctx]);
+          done = (c == r);
+        }
+        if (!done && l >= 0 && l != r) {
+          enc_.Encode(c == l, m_->is_left[ctx]);
+          done = (c == l);
+        }
+        if (!done) EncodeEG(enc_, m_->other_ref, front_.num_vertices() - 1 - c);
+      }
+      enc_.Encode(flip, m_->flip);
+      visited_[found] = 1;
+      front_.Attach(g, a, b, c);
+      if (flip) {
+        Emit(found, a, b, c);
+      } else {
+        Emit(found, b, a, c);
+      }
+    }
+    // Degenerate triangles, with explicit references.
+    EncodeEG(enc_, m_->extra_count, degenerate_.size());
+    for (uint32_t t : degenerate_) {
+      const uint32_t x = CodeVertexRef(tris_[3 * t]);
+      const uint32_t y = CodeVertexRef(tris_[3 * t + 1]);
+      const uint32_t z = CodeVertexRef(tris_[3 * t + 2]);
+      out_.triangles.insert(out_.triangles.end(), {x, y, z});
+      out_.source.push_back(t);
+    }
+  }
+
+ private:
+  enum : uint8_t { kPrimary = 0, kCopy = 1, kDegenerate = 2 };
+
+  void Classify() {
+    kind_.assign(nt_, kPrimary);
+    first_copy_.assign(nt_, kNone);
+    next_copy_.assign(nt_, kNone);
+    std::vector<std::array<uint32_t, 4>> keys;
+    keys.reserve(nt_);
+    for (size_t t = 0; t < nt_; ++t) {
+      uint32_t a = tris_[3 * t], b = tris_[3 * t + 1], c = tris_[3 * t + 2];
+      if (a == b || b == c || a == c) {
+        kind_[t] = kDegenerate;
+        degenerate_.push_back(uint32_t(t));
+        continue;
+      }
+      if (a > b) std::swap(a, b);
+      if (b > c) std::swap(b, c);
+      if (a > b) std::swap(a, b);
+      keys.push_back({a, b, c, uint32_t(t)});
+    }
+    std::sort(keys.begin(), keys.end());
+    for (size_t i = 1; i < keys.size(); ++i) {
+      if (keys[i][0] == keys[i - 1][0] && keys[i][1] == keys[i - 1][1] &&
+          keys[i][2] == keys[i - 1][2]) {
+        // keys[i-1] is either the primary or a copy already linked; find the primary.
+        size_t j = i - 1;
+        while (kind_[keys[j][3]] == kCopy) --j;
+        const uint32_t p = keys[j][3], t = keys[i][3];
+        kind_[t] = kCopy;
+        if (first_copy_[p] == kNone) {
+          first_copy_[p] = t;
+        } else {
+          uint32_t q = first_copy_[p];
+          while (next_copy_[q] != kNone) q = next_copy_[q];
+          next_copy_[q] = t;
+        }
+      }
+    }
+  }
+
+  void BuildVertexTriangles() {
+    vt_start_.assign(nv_in_ + 1, 0);
+    for (size_t t = 0; t < nt_; ++t) {
+      if (kind_[t] != kPrimary) continue;
+      for (int j = 0; j < 3; ++j) ++vt_start_[tris_[3 * t + j] + 1];
+    }
+    for (uint32_t v = 0; v < nv_in_; ++v) vt_start_[v + 1] += vt_start_[v];
+    vt_.resize(vt_start_[nv_in_]);
+    std::vector<uint32_t> fill(vt_start_.begin(), vt_start_.end() - 1);
+    for (size_t t = 0; t < nt_; ++t) {
+      if (kind_[t] != kPrimary) continue;
+      for (int j = 0; j < 3; ++j) vt_[fill[tris_[3 * t + j]]++] = uint32_t(t);
+    }
+  }
+
+  uint32_t NewVertex(uint32_t old) {
+    const uint32_t id = front_.AddVertex();
+    new_of_old_[old] = id;
+    out_.old_of_new.push_back(old);
+    return id;
+  }
+
+  uint32_t CodeVertexRef(uint32_t old) {
+    const uint32_t v = new_of_old_[old];
+    if (v == kNone) {
+      enc_.Encode(1, m_->start_new);
+      return NewVertex(old);
+    }
+    enc_.Encode(0, m_->start_new);
+    EncodeEG(enc_, m_->start_ref, front_.num_vertices() - 1 - v);
+    return v;
+  }
+
+  // Records a primary triangle and codes its copies.
+  void Emit(size_t t, uint32_t x, uint32_t y, uint32_t z) {
+    out_.triangles.insert(out_.triangles.end(), {x, y, z});
+    out_.source.push_back(uint32_t(t));
+    uint32_t count = 0;
+    for (uint32_t q = first_copy_[t]; q != kNone; q = next_copy_[q]) ++count;
+    EncodeEG(enc_, m_->copies, count);
+    for (uint32_t q = first_copy_[t]; q != kNone; q = next_copy_[q]) {
+      const uint32_t* v = &tris_[3 * q];
+      const uint32_t nx = new_of_old_[v[0]], ny = new_of_old_[v[1]];
+      // Same cyclic order as (x, y, z)?
+      const bool same = (nx == x && ny == y) || (nx == y && ny == z) || (nx == z && ny == x);
+      enc_.Encode(same ? 0 : 1, m_->copy_flip);
+      if (same) {
+        out_.triangles.insert(out_.triangles.end(), {x, y, z});
+      } else {
+        out_.triangles.insert(out_.triangles.end(), {x, z, y});
+      }
+      out_.source.push_back(q);
+    }
+  }
+
+  const std::vector<uint32_t>& tris_;
+  const size_t nt_;
+  const uint32_t nv_in_;
+  ArithmeticEncoder& enc_;
+  ConnectivityEncoding& out_;
+  std::unique_ptr<ConnectivityModels> m_;
+  Front front_;
+  std::vector<uint8_t> kind_, visited_;
+  std::vector<uint32_t> first_copy_, next_copy_, degenerate_;
+  std::vector<uint32_t> vt_start_, vt_;
+  std::vector<uint32_t> new_of_old_;
+};
+
+}  // namespace
+
+void EncodeConnectivity(const std::vector<uint32_t>& triangles, uint32_t num_vertices,
+                        ArithmeticEncoder* enc, ConnectivityEncoding* out) {
+  out->triangles.clear();
+  out->source.clear();
+  out->old_of_new.clear();
+  Encoder(triangles, num_vertices, enc, out).Run();
+}
+
+}  // namespace o3dgc

@@ -1,0 +1,31 @@
+// Connectivity encoder: codes a triangle list (any topology) by region growing over gates.
+//
+// Per gate a->b the coder says whether a triangle is attached across it and, if so, where its third
+// vertex comes from: a new vertex, the end of the gate leaving b ("right"), the start of the gate
+// entering a ("left"), or any earlier vertex (explicit back reference). Inconsistently oriented
+// triangles carry a flip bit, repeated triangles (same vertex set) a copy count and orientation,
+// degenerate triangles (a repeated vertex) are coded at the end with explicit references, and
+// disconnected parts start with a seed triangle. Vertices are numbered in order of appearance.
+#ifndef O3DGC_SRC_CONNECTIVITY_ENCODER_H_
+#define O3DGC_SRC_CONNECTIVITY_ENCODER_H_
+
+#include <cstdint>
+#include <vector>
+
+#include "arithmetic_coder.h"
+
+namespace o3dgc {
+
+struct ConnectivityEncoding {
+  std::vector<uint32_t> triangles;   // 3 per triangle, decoded order, new vertex ids
+  std::vector<uint32_t> source;      // input triangle of each decoded triangle
+  std::vector<uint32_t> old_of_new;  // input vertex of each new vertex id
+};
+
+// `triangles`: 3 * num_triangles vertex ids < num_vertices, every vertex referenced at least once.
+void EncodeConnectivity(const std::vector<uint32_t>& triangles, uint32_t num_vertices,
+                        ArithmeticEncoder* enc, ConnectivityEncoding* out);
+
+}  // namespace o3dgc
+
+#endif  // O3DGC_SRC_CONNECTIVITY_ENCODER_H_

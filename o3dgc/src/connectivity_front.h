@@ -1,0 +1,135 @@
+// The state shared by the connectivity encoder and decoder: the "front" of open gates.
+//
+// The coder grows the decoded region triangle by triangle. A gate is a directed edge a->b of a
+// decoded triangle whose other side has not been visited. Gates are kept in per-vertex intrusive
+// lists (gates leaving / entering each vertex) and on a stack that fixes the traversal order. The
+// encoder and the decoder drive this structure with the same operations in the same order, so their
+// states stay identical and every coded symbol can use it as context.
+#ifndef O3DGC_SRC_CONNECTIVITY_FRONT_H_
+#define O3DGC_SRC_CONNECTIVITY_FRONT_H_
+
+#include <cstdint>
+#include <vector>
+
+#include "arithmetic_coder.h"
+#include "entropy.h"
+
+namespace o3dgc {
+
+constexpr int kConnectivityContexts = 64;
+
+struct ConnectivityModels {
+  BitModel more_components;
+  BitModel start_new;
+  EGModel start_ref;
+  BitModel attach[kConnectivityContexts];
+  BitModel is_new[kConnectivityContexts];
+  BitModel is_right[kConnectivityContexts];
+  BitModel is_left[kConnectivityContexts];
+  EGModel other_ref;
+  BitModel flip;
+  EGModel copies;
+  BitModel copy_flip;
+  EGModel extra_count;
+};
+
+class Front {
+ public:
+  struct Gate {
+    uint32_t a, b;
+    int32_t next_out, prev_out, next_in, prev_in;
+    bool open;
+  };
+
+  void Reserve(size_t vertices, size_t triangles) {
+    head_out_.reserve(vertices);
+    head_in_.reserve(vertices);
+    deg_.reserve(vertices);
+    gates_.reserve(triangles + 16);
+  }
+  uint32_t AddVertex() {
+    head_out_.push_back(-1);
+    head_in_.push_back(-1);
+    deg_.push_back(0);
+    return uint32_t(deg_.size() - 1);
+  }
+  uint32_t num_vertices() const { return uint32_t(deg_.size()); }
+  bool empty() const { return stack_.empty(); }
+  // Pops the next gate; returns -1 if it was closed meanwhile.
+  int32_t Pop() {
+    const int32_t g = stack_.back();
+    stack_.pop_back();
+    return gates_[g].open ? g : -1;
+  }
+  const Gate& gate(int32_t g) const { return gates_[g]; }
+
+  int Context(uint32_t a, uint32_t b) const {
+    const int has_r = head_out_[b] >= 0;
+    const int has_l = head_in_[a] >= 0;
+    const uint32_t d = deg_[b] < 7 ? deg_[b] : 7;
+    const uint32_t da = deg_[a] < 1 ? 0 : 1;
+    return int(((has_r + 2 * has_l) * 2 + da) * 8 + d);
+  }
+  // Candidate third vertices: the end of the newest gate leaving b, the start of the newest gate
+  // entering a (-1 if none).
+  int64_t RightCandidate(uint32_t b) const {
+    return head_out_[b] >= 0 ? int64_t(gates_[head_out_[b]].b) : -1;
+  }
+  int64_t LeftCandidate(uint32_t a) const {
+    return head_in_[a] >= 0 ? int64_t(gates_[head_in_[a]].a) : -1;
+  }
+
+  void Close(int32_t g) {
+    Gate& x = gates_[g];
+    x.open = false;
+    if (x.prev_out >= 0) gates_[x.prev_out].next_out = x.next_out; else head_out_[x.a] = x.next_out;
+    if (x.next_out >= 0) gates_[x.next_out].prev_out = x.prev_out;
+    if (x.prev_in >= 0) gates_[x.prev_in].next_in = x.next_in; else head_in_[x.b] = x.next_in;
+    if (x.next_in >= 0) gates_[x.next_in].prev_in = x.prev_in;
+  }
+
+  // A new triangle edge u->v: closes the open gate v->u if there is one, else opens u->v.
+  void AddHalfEdge(uint32_t u, uint32_t v) {
+    for (int32_t g = head_out_[v]; g >= 0; g = gates_[g].next_out) {
+      if (gates_[g].b == u) {
+        Close(g);
+        return;
+      }
+    }
+    const int32_t id = int32_t(gates_.size());
+    gates_.push_back(Gate{u, v, head_out_[u], -1, head_in_[v], -1, true});
+    if (head_out_[u] >= 0) gates_[head_out_[u]].prev_out = id;
+    head_out_[u] = id;
+    if (head_in_[v] >= 0) gates_[head_in_[v]].prev_in = id;
+    head_in_[v] = id;
+    stack_.push_back(id);
+  }
+
+  void StartTriangle(uint32_t x, uint32_t y, uint32_t z) {
+    ++deg_[x];
+    ++deg_[y];
+    ++deg_[z];
+    AddHalfEdge(x, y);
+    AddHalfEdge(y, z);
+    AddHalfEdge(z, x);
+  }
+  // Attaches the triangle (b, a, c) across the gate g = a->b.
+  void Attach(int32_t g, uint32_t a, uint32_t b, uint32_t c) {
+    Close(g);
+    ++deg_[a];
+    ++deg_[b];
+    ++deg_[c];
+    AddHalfEdge(a, c);
+    AddHalfEdge(c, b);
+  }
+
+ private:
+  std::vector<Gate> gates_;
+  std::vector<int32_t> head_out_, head_in_;
+  std::vector<uint32_t> deg_;
+  std::vector<int32_t> stack_;
+};
+
+}  // namespace o3dgc
+
+#endif  // O3DGC_SRC_CONNECTIVITY_FRONT_H_

@@ -1,0 +1,369 @@
+// Top-level encoder: validation, position welding, and the sequence of payload parts
+// (see payload_header.h for the layout; decoder.cc mirrors every step).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <memory>
+
+#include "arithmetic_coder.h"
+#include "ascii_stream.h"
+#include "attribute_coder.h"
+#include "connectivity_encoder.h"
+#include "entropy.h"
+#include "o3dgc/o3dgc.h"
+#include "payload_header.h"
+#include "predictors.h"
+#include "stream_header.h"
+
+namespace o3dgc {
+namespace {
+
+constexpr uint32_t kNone = 0xFFFFFFFFu;
+constexpr size_t kMaxCount = size_t(1) << 28;
+
+Prediction ResolveFloat(Prediction p, Semantic s) {
+  if (p != Prediction::kDefault) return p;
+  return s == Semantic::kColor ? Prediction::kDifferential : Prediction::kParallelogram;
+}
+
+// Copies `count` vectors of `dim` elements at `stride` bytes into a dense array.
+template <typename T>
+std::vector<T> Gather(const T* data, size_t stride, uint32_t dim, size_t count) {
+  if (stride == 0) stride = dim * sizeof(T);
+  std::vector<T> out(count * dim);
+  for (size_t i = 0; i < count; ++i) {
+    std::memcpy(&out[i * dim], reinterpret_cast<const char*>(data) + i * stride, dim * sizeof(T));
+  }
+  return out;
+}
+
+bool AllFinite(const std::vector<float>& v) {
+  for (float f : v) {
+    if (!std::isfinite(f)) return false;
+  }
+  return true;
+}
+
+std::vector<float> Reorder(const std::vector<float>& v, uint32_t dim,
+                           const std::vector<uint32_t>& old_of_new) {
+  std::vector<float> out(v.size());
+  for (size_t i = 0; i < old_of_new.size(); ++i) {
+    std::memcpy(&out[i * dim], &v[size_t(old_of_new[i]) * dim], dim * sizeof(float));
+  }
+  return out;
+}
+
+}  // namespace
+
+Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint8_t>* out,
+              StreamInfo* info) {
+  if (!out) return Status::kInvalidArgument;
+  const size_t nv = mesh.num_vertices, nt = mesh.num_triangles;
+  if (nv > kMaxCount || nt > kMaxCount) return Status::kInvalidArgument;
+  if ((nv > 0 && !mesh.positions) || (nt > 0 && !mesh.indices)) return Status::kInvalidArgument;
+  if (params.position_bits < 1 || params.position_bits > 30) return Status::kInvalidArgument;
+  if (params.normal_bits < 1 || params.normal_bits > 30) return Status::kInvalidArgument;
+  if (params.position_prediction == Prediction::kSurfaceNormal) return Status::kInvalidArgument;
+  for (size_t i = 0; i < 3 * nt; ++i) {
+    if (mesh.indices[i] >= nv) return Status::kInvalidArgument;
+  }
+  auto progress = [&](float f) { return !params.progress || params.progress(f); };
+
+  // Descriptors.
+  PayloadHeader h;
+  h.num_vertices = nv;
+  h.num_triangles = nt;
+  h.has_normals = mesh.normals != nullptr;
+  h.has_groups = mesh.triangle_groups != nullptr;
+  h.position.semantic = Semantic::kPosition;
+  h.position.dimension = 3;
+  h.position.bits = params.position_bits;
+  h.position.prediction = params.position_prediction == Prediction::kDefault
+                              ? Prediction::kParallelogram
+                              : params.position_prediction;
+  h.position.range = params.position_range;
+  std::vector<float> positions = nv ? Gather(mesh.positions, mesh.position_stride, 3, nv)
+                                    : std::vector<float>();
+  if (!AllFinite(positions)) return Status::kInvalidArgument;
+  std::vector<float> normals;
+  if (h.has_normals) {
+    h.normal.semantic = Semantic::kNormal;
+    h.normal.dimension = 3;
+    h.normal.bits = params.normal_bits;
+    h.normal.prediction = params.normal_prediction == Prediction::kDefault
+                              ? Prediction::kSurfaceNormal
+                              : params.normal_prediction;
+    h.normal.range = RangeMode::kPerAxis;
+    normals = Gather(mesh.normals, mesh.normal_stride, 3, nv);
+    if (!AllFinite(normals)) return Status::kInvalidArgument;
+  }
+  std::vector<std::vector<float>> floats;
+  for (const FloatAttributeView& a : mesh.float_attributes) {
+    if (a.dimension < 1 || a.dimension > 4 || a.bits < 1 || a.bits > 30) {
+      return Status::kInvalidArgument;
+    }
+    if ((nv > 0 && !a.data) || uint8_t(a.semantic) > uint8_t(Semantic::kJointId)) {
+      return Status::kInvalidArgument;
+    }
+    AttributeDesc d;
+    d.semantic = a.semantic;
+    d.dimension = a.dimension;
+    d.bits = a.bits;
+    d.prediction = ResolveFloat(a.prediction, a.semantic);
+    if (d.prediction == Prediction::kSurfaceNormal) return Status::kInvalidArgument;
+    d.range = a.range;
+    h.floats.push_back(d);
+    floats.push_back(nv ? Gather(a.data, a.stride, a.dimension, nv) : std::vector<float>());
+    if (!AllFinite(floats.back())) return Status::kInvalidArgument;
+  }
+  std::vector<std::vector<int32_t>> ints;
+  for (const IntAttributeView& a : mesh.int_attributes) {
+    if (a.dimension < 1 || a.dimension > 4 || (nv > 0 && !a.data) ||
+        uint8_t(a.semantic) > uint8_t(Semantic::kJointId)) {
+      return Status::kInvalidArgument;
+    }
+    AttributeDesc d;
+    d.semantic = a.semantic;
+    d.dimension = a.dimension;
+    d.prediction = a.prediction == Prediction::kDefault ? Prediction::kDifferential : a.prediction;
+    if (d.prediction != Prediction::kNone && d.prediction != Prediction::kDifferential) {
+      return Status::kInvalidArgument;
+    }
+    h.ints.push_back(d);
+    ints.push_back(nv ? Gather(a.data, a.stride, a.dimension, nv) : std::vector<int32_t>());
+  }
+  if (h.floats.size() > 64 || h.ints.size() > 64) return Status::kInvalidArgument;
+
+  // Quantizers.
+  auto fit = [&](AttributeDesc* d, const std::vector<float>& v) {
+    d->quant.dimension = d->dimension;
+    d->quant.bits = d->bits;
+    d->quant.mode = d->range;
+    d->quant.Fit(v.data(), d->dimension * sizeof(float), nv);
+  };
+  fit(&h.position, positions);
+  if (h.has_normals && h.normal.prediction != Prediction::kSurfaceNormal) fit(&h.normal, normals);
+  for (size_t i = 0; i < h.floats.size(); ++i) fit(&h.floats[i], floats[i]);
+
+  // Weld referenced vertices with bitwise equal positions.
+  std::vector<uint32_t> weld(nv, kNone);
+  uint32_t num_welded = 0;
+  {
+    std::vector<uint8_t> referenced(nv, 0);
+    for (size_t i = 0; i < 3 * nt; ++i) referenced[mesh.indices[i]] = 1;
+    std::vector<std::array<uint32_t, 4>> keys;
+    for (size_t v = 0; v < nv; ++v) {
+      if (!referenced[v]) continue;
+      std::array<uint32_t, 4> k;
+      std::memcpy(k.data(), &positions[3 * v], 12);
+      k[3] = uint32_t(v);
+      keys.push_back(k);
+    }
+    std::sort(keys.begin(), keys.end());
+    for (size_t i = 0; i < keys.size(); ++i) {
+      if (i == 0 || keys[i][0] != keys[i - 1][0] || keys[i][1] != keys[i - 1][1] ||
+          keys[i][2] != keys[i - 1][2]) {
+        ++num_welded;
+      }
+      weld[keys[i][3]] = num_welded - 1;
+    }
+  }
+  std::vector<uint32_t> welded_tris(3 * nt);
+  for (size_t i = 0; i < 3 * nt; ++i) welded_tris[i] = weld[mesh.indices[i]];
+
+  std::vector<uint8_t> payload;
+  ArithmeticEncoder enc(&payload);
+  StreamInfo si;
+  EncodePayloadHeader(&enc, h);
+  si.header = enc.BytesSoFar();
+
+  // Connectivity over welded vertices.
+  ConnectivityEncoding conn;
+  EncodeConnectivity(welded_tris, num_welded, &enc, &conn);
+  const uint32_t nc = uint32_t(conn.old_of_new.size());
+  std::vector<uint32_t> welded_new(num_welded, kNone);
+  for (uint32_t i = 0; i < nc; ++i) welded_new[conn.old_of_new[i]] = i;
+  if (!progress(0.2f)) return Status::kCancelled;
+
+  // Original corner of every decoded corner, and the rotation of every decoded triangle.
+  std::vector<uint32_t> corner_vertex(3 * nt);
+  std::vector<uint8_t> rotation(nt, 0);
+  for (size_t j = 0; j < nt; ++j) {
+    const uint32_t s = conn.source[j];
+    const uint32_t* o = &mesh.indices[3 * size_t(s)];
+    const uint32_t* d = &conn.triangles[3 * j];
+    const uint32_t n0 = welded_new[weld[o[0]]], n1 = welded_new[weld[o[1]]],
+                   n2 = welded_new[weld[o[2]]];
+    if (n0 == n1 || n1 == n2 || n0 == n2) {
+      for (int k = 0; k < 3; ++k) corner_vertex[3 * j + k] = o[k];
+      continue;
+    }
+    for (int k = 0; k < 3; ++k) {
+      const int m = d[k] == n0 ? 0 : (d[k] == n1 ? 1 : 2);
+      corner_vertex[3 * j + k] = o[m];
+      if (m == 0) rotation[j] = uint8_t(k);
+    }
+  }
+
+  // Seams: attribute vertices per welded vertex, and which one each corner uses.
+  std::unique_ptr<SideModels> sm(new SideModels);
+  std::vector<uint32_t> split_count(nc, 0);
+  for (size_t v = 0; v < nv; ++v) {
+    if (weld[v] != kNone) ++split_count[welded_new[weld[v]]];
+  }
+  for (uint32_t w = 0; w < nc; ++w) EncodeEG(enc, sm->seam_count, split_count[w] - 1);
+  std::vector<uint32_t> orig_new(nv, kNone), split_index(nv, kNone);
+  std::vector<uint32_t> seen(nc, 0), last(nc, 0);
+  std::vector<uint32_t> old_of_orig;  // original vertex of each new vertex id
+  old_of_orig.reserve(nv);
+  for (size_t i = 0; i < 3 * nt; ++i) {
+    const uint32_t o = corner_vertex[i];
+    const uint32_t w = welded_new[weld[o]];
+    const uint32_t s = split_index[o];
+    if (split_count[w] > 1 && seen[w] > 0) {
+      enc.Encode(s == last[w], sm->seam_same);
+      if (s != last[w]) {
+        if (seen[w] < split_count[w]) enc.Encode(s == kNone, sm->seam_new);
+        if (s != kNone) enc.EncodeBits(s < last[w] ? s : s - 1, BitsFor(seen[w] - 1));
+      }
+    }
+    if (s == kNone) {
+      split_index[o] = seen[w]++;
+      orig_new[o] = uint32_t(old_of_orig.size());
+      old_of_orig.push_back(o);
+    }
+    last[w] = split_index[o];
+  }
+  // Unreferenced vertices follow, each its own welded vertex.
+  std::vector<uint32_t> welded_of_orig(nv);  // new vertex id -> welded new id
+  for (uint32_t i = 0; i < old_of_orig.size(); ++i) {
+    welded_of_orig[i] = welded_new[weld[old_of_orig[i]]];
+  }
+  std::vector<uint32_t> rep_of_welded(nc, kNone);
+  for (uint32_t i = 0; i < old_of_orig.size(); ++i) {
+    if (rep_of_welded[welded_of_orig[i]] == kNone) rep_of_welded[welded_of_orig[i]] = old_of_orig[i];
+  }
+  uint32_t nw = nc;
+  for (size_t v = 0; v < nv; ++v) {
+    if (weld[v] != kNone) continue;
+    orig_new[v] = uint32_t(old_of_orig.size());
+    welded_of_orig[old_of_orig.size()] = nw++;
+    old_of_orig.push_back(uint32_t(v));
+    rep_of_welded.push_back(uint32_t(v));
+  }
+
+  // Exact order.
+  if (params.keep_order) {
+    int64_t prev = -1;
+    for (uint32_t i = 0; i < nv; ++i) {
+      EncodeEG(enc, sm->perm_vertex, ZigZag(int64_t(old_of_orig[i]) - (prev + 1)));
+      prev = old_of_orig[i];
+    }
+    prev = -1;
+    for (size_t j = 0; j < nt; ++j) {
+      EncodeEG(enc, sm->perm_triangle, ZigZag(int64_t(conn.source[j]) - (prev + 1)));
+      prev = conn.source[j];
+      enc.Encode(rotation[j] != 0, sm->rotation[0]);
+      if (rotation[j] != 0) enc.Encode(rotation[j] == 2, sm->rotation[1]);
+    }
+  }
+  si.connectivity = enc.BytesSoFar() - si.header;
+  if (!progress(0.4f)) return Status::kCancelled;
+
+  // Positions, per welded vertex.
+  size_t mark = enc.BytesSoFar();
+  std::vector<int32_t> qpos(size_t(nw) * 3);
+  for (uint32_t w = 0; w < nw; ++w) {
+    for (uint32_t k = 0; k < 3; ++k) {
+      qpos[3 * size_t(w) + k] = h.position.quant.Quantize(positions[3 * size_t(rep_of_welded[w]) + k], k);
+    }
+  }
+  {
+    MeshAdjacency adj;
+    adj.Build(conn.triangles, nw);
+    EncodeQuantized(&enc, adj, qpos, 3, h.position.bits, h.position.prediction);
+  }
+  si.positions = enc.BytesSoFar() - mark;
+  if (!progress(0.6f)) return Status::kCancelled;
+
+  // Per-vertex attributes over the attribute-vertex mesh.
+  std::vector<uint32_t> attr_tris(3 * nt);
+  for (size_t i = 0; i < 3 * nt; ++i) attr_tris[i] = orig_new[corner_vertex[i]];
+  MeshAdjacency attr_adj;
+  attr_adj.Build(attr_tris, uint32_t(nv));
+  auto code_float = [&](const AttributeDesc& d, const std::vector<float>& values) {
+    const std::vector<float> v = Reorder(values, d.dimension, old_of_orig);
+    std::vector<int32_t> q(v.size());
+    for (size_t i = 0; i < v.size(); ++i) q[i] = d.quant.Quantize(v[i], uint32_t(i % d.dimension));
+    EncodeQuantized(&enc, attr_adj, q, int(d.dimension), d.bits, d.prediction);
+  };
+  mark = enc.BytesSoFar();
+  if (h.has_normals) {
+    if (h.normal.prediction == Prediction::kSurfaceNormal) {
+      NormalGeometry geo;
+      geo.positions = qpos.data();
+      for (int k = 0; k < 3; ++k) {
+        geo.scale[k] = double(h.position.quant.range[k]) / double(h.position.quant.max_q());
+      }
+      geo.position_of = welded_of_orig.data();
+      EncodeOctNormals(&enc, attr_adj, geo, Reorder(normals, 3, old_of_orig), h.normal.bits);
+    } else {
+      code_float(h.normal, normals);
+    }
+  }
+  si.normals = enc.BytesSoFar() - mark;
+  for (size_t i = 0; i < h.floats.size(); ++i) {
+    mark = enc.BytesSoFar();
+    code_float(h.floats[i], floats[i]);
+    si.float_attributes.push_back(enc.BytesSoFar() - mark);
+  }
+  for (size_t i = 0; i < h.ints.size(); ++i) {
+    mark = enc.BytesSoFar();
+    const uint32_t dim = h.ints[i].dimension;
+    std::vector<int32_t> v(ints[i].size());
+    for (size_t j = 0; j < nv; ++j) {
+      std::memcpy(&v[j * dim], &ints[i][size_t(old_of_orig[j]) * dim], dim * sizeof(int32_t));
+    }
+    EncodeInts(&enc, v, int(dim), h.ints[i].prediction);
+    si.int_attributes.push_back(enc.BytesSoFar() - mark);
+  }
+  if (!progress(0.9f)) return Status::kCancelled;
+
+  // Triangle groups.
+  mark = enc.BytesSoFar();
+  if (h.has_groups) {
+    uint32_t prev = 0;
+    for (size_t j = 0; j < nt; ++j) {
+      const uint32_t g = mesh.triangle_groups[conn.source[j]];
+      enc.Encode(g == prev, sm->group_same);
+      if (g != prev) EncodeEG(enc, sm->group_value, g);
+      prev = g;
+    }
+  }
+  enc.Finish();
+  si.groups = payload.size() > mark ? payload.size() - mark : 0;
+
+  // Pad so that the decoder's size check holds (only pathological meshes need it).
+  const uint64_t budget = h.Budget();
+  while (kElementsPerByte * (payload.size() + kBudgetSlackBytes) < budget) payload.push_back(0);
+
+  out->clear();
+  WriteHeader(params.keep_order, payload.size(), out);
+  const size_t byte_header = out->size();
+  out->insert(out->end(), payload.begin(), payload.end());
+  FinalizeCrc(out);
+  si.header += byte_header;
+  si.stream_type = params.stream_type;
+  si.version = kStreamVersion;
+  si.keep_order = params.keep_order;
+  si.num_vertices = nv;
+  si.num_triangles = nt;
+  if (params.stream_type == StreamType::kAscii) *out = PackAscii(*out);
+  si.total = out->size();
+  if (info) *info = si;
+  if (!progress(1.0f)) return Status::kCancelled;
+  return Status::kOk;
+}
+
+}  // namespace o3dgc

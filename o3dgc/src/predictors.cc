@@ -1,0 +1,128 @@
+// Predictors (see predictors.h).
+#include "predictors.h"
+
+#include <cmath>
+
+namespace o3dgc {
+
+void MeshAdjacency::Build(const std::vector<uint32_t>& triangles, uint32_t num_vertices) {
+  tris_ = &triangles;
+  start_.assign(size_t(num_vertices) + 1, 0);
+  const size_t nt = triangles.size() / 3;
+  auto ok = [&](size_t t) {
+    const uint32_t* v = &triangles[3 * t];
+    return v[0] != v[1] && v[1] != v[2] && v[0] != v[2];
+  };
+  for (size_t t = 0; t < nt; ++t) {
+    if (!ok(t)) continue;
+    for (int j = 0; j < 3; ++j) ++start_[triangles[3 * t + j] + 1];
+  }
+  for (uint32_t v = 0; v < num_vertices; ++v) start_[v + 1] += start_[v];
+  tri_.resize(start_[num_vertices]);
+  std::vector<uint32_t> fill(start_.begin(), start_.end() - 1);
+  for (size_t t = 0; t < nt; ++t) {
+    if (!ok(t)) continue;
+    for (int j = 0; j < 3; ++j) tri_[fill[triangles[3 * t + j]]++] = uint32_t(t);
+  }
+}
+
+PredictionContext PredictParallelogram(const MeshAdjacency& adj, uint32_t c, const int32_t* values,
+                                       int dim, const uint32_t* magnitudes, int64_t* pred) {
+  int64_t par[4] = {0, 0, 0, 0}, nb[4] = {0, 0, 0, 0};
+  int n_par = 0, n_nb = 0;
+  uint64_t mag = 0;
+  for (const uint32_t* it = adj.begin(c); it != adj.end(c); ++it) {
+    const uint32_t t = *it;
+    const uint32_t* v = adj.corners(t);
+    const int j = v[0] == c ? 0 : (v[1] == c ? 1 : 2);
+    const uint32_t u = v[(j + 1) % 3], w2 = v[(j + 2) % 3];
+    if (u < c) {
+      for (int k = 0; k < dim; ++k) nb[k] += values[size_t(u) * dim + k];
+      if (magnitudes) mag += magnitudes[u];
+      ++n_nb;
+    }
+    if (w2 < c) {
+      for (int k = 0; k < dim; ++k) nb[k] += values[size_t(w2) * dim + k];
+      if (magnitudes) mag += magnitudes[w2];
+      ++n_nb;
+    }
+    if (u < c && w2 < c) {
+      // The triangle across u-w2.
+      for (const uint32_t* it2 = adj.begin(u); it2 != adj.end(u); ++it2) {
+        if (*it2 == t) continue;
+        const uint32_t* o = adj.corners(*it2);
+        int has = -1;
+        for (int q = 0; q < 3; ++q) {
+          if (o[q] == w2) has = q;
+        }
+        if (has < 0) continue;
+        const int iu = o[0] == u ? 0 : (o[1] == u ? 1 : 2);
+        const uint32_t x = o[3 - iu - has];
+        if (x >= c) continue;
+        for (int k = 0; k < dim; ++k) {
+          par[k] += int64_t(values[size_t(u) * dim + k]) + values[size_t(w2) * dim + k] -
+                    values[size_t(x) * dim + k];
+        }
+        ++n_par;
+        break;
+      }
+    }
+  }
+  PredictionContext ctx;
+  ctx.neighbour_magnitude = n_nb ? mag / uint64_t(n_nb) : 0;
+  if (n_par > 0) {
+    for (int k = 0; k < dim; ++k) pred[k] = DivRound(par[k], n_par);
+    ctx.kind = kPredParallelogram;
+  } else if (n_nb > 0) {
+    for (int k = 0; k < dim; ++k) pred[k] = DivRound(nb[k], n_nb);
+    ctx.kind = kPredNeighbours;
+  } else {
+    for (int k = 0; k < dim; ++k) pred[k] = c > 0 ? values[size_t(c - 1) * dim + k] : 0;
+    ctx.kind = kPredPrevious;
+    if (magnitudes && c > 0) ctx.neighbour_magnitude = magnitudes[c - 1];
+  }
+  return ctx;
+}
+
+uint64_t NeighbourMagnitude(const MeshAdjacency& adj, uint32_t c, const uint32_t* magnitudes) {
+  uint64_t mag = 0;
+  int n = 0;
+  for (const uint32_t* it = adj.begin(c); it != adj.end(c); ++it) {
+    const uint32_t* v = adj.corners(*it);
+    for (int j = 0; j < 3; ++j) {
+      if (v[j] < c) {
+        mag += magnitudes[v[j]];
+        ++n;
+      }
+    }
+  }
+  if (n == 0) return c > 0 ? magnitudes[c - 1] : 0;
+  return mag / uint64_t(n);
+}
+
+void OctEncode(const double n[3], double* u, double* v) {
+  const double s = std::fabs(n[0]) + std::fabs(n[1]) + std::fabs(n[2]);
+  double x = n[0] / s, y = n[1] / s;
+  if (n[2] < 0) {
+    const double ox = x, oy = y;
+    x = (1 - std::fabs(oy)) * (ox >= 0 ? 1 : -1);
+    y = (1 - std::fabs(ox)) * (oy >= 0 ? 1 : -1);
+  }
+  *u = x;
+  *v = y;
+}
+
+void OctDecode(double u, double v, double n[3]) {
+  double z = 1 - std::fabs(u) - std::fabs(v);
+  double x = u, y = v;
+  if (z < 0) {
+    x = (1 - std::fabs(v)) * (u >= 0 ? 1 : -1);
+    y = (1 - std::fabs(u)) * (v >= 0 ? 1 : -1);
+  }
+  const double len = std::sqrt(x * x + y * y + z * z);
+  n[0] = x / len;
+  n[1] = y / len;
+  n[2] = z / len;
+}
+
+}  // namespace o3dgc

@@ -1,0 +1,56 @@
+// Predictors of per-vertex attribute values from already decoded vertices.
+//
+// Vertices are predicted in increasing id order (the coding order), so a vertex may only use
+// vertices with smaller ids. Multi-parallelogram prediction averages u + v - w over every triangle
+// (c, u, v) with u, v decoded whose neighbour across u-v has a decoded third vertex w; without such
+// a pair it averages the decoded neighbours, then falls back to the previous vertex.
+#ifndef O3DGC_SRC_PREDICTORS_H_
+#define O3DGC_SRC_PREDICTORS_H_
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace o3dgc {
+
+// Vertex -> incident triangles (CSR) of a triangle list; degenerate triangles are left out.
+class MeshAdjacency {
+ public:
+  void Build(const std::vector<uint32_t>& triangles, uint32_t num_vertices);
+  const uint32_t* begin(uint32_t v) const { return tri_.data() + start_[v]; }
+  const uint32_t* end(uint32_t v) const { return tri_.data() + start_[v + 1]; }
+  const uint32_t* corners(uint32_t t) const { return tris_->data() + 3 * size_t(t); }
+  uint32_t num_vertices() const { return uint32_t(start_.size() - 1); }
+
+ private:
+  const std::vector<uint32_t>* tris_ = nullptr;
+  std::vector<uint32_t> start_, tri_;
+};
+
+enum PredictionKind { kPredPrevious = 0, kPredNeighbours = 1, kPredParallelogram = 2 };
+
+struct PredictionContext {
+  int kind = kPredPrevious;
+  uint64_t neighbour_magnitude = 0;  // mean residual magnitude of the decoded neighbours
+};
+
+// Predicts vertex c (values: dim ints per vertex; magnitudes: per-vertex residual magnitudes of
+// decoded vertices, may be null). pred receives dim values.
+PredictionContext PredictParallelogram(const MeshAdjacency& adj, uint32_t c, const int32_t* values,
+                                       int dim, const uint32_t* magnitudes, int64_t* pred);
+
+// Neighbour residual magnitude only (for the differential and surface-normal modes).
+uint64_t NeighbourMagnitude(const MeshAdjacency& adj, uint32_t c, const uint32_t* magnitudes);
+
+// Rounded division for possibly negative numerators, n > 0.
+inline int64_t DivRound(int64_t s, int64_t n) {
+  return s >= 0 ? (2 * s + n) / (2 * n) : -((-2 * s + n) / (2 * n));
+}
+
+// Octahedral mapping of unit vectors to [-1,1]^2 and back.
+void OctEncode(const double n[3], double* u, double* v);
+void OctDecode(double u, double v, double n[3]);
+
+}  // namespace o3dgc
+
+#endif  // O3DGC_SRC_PREDICTORS_H_

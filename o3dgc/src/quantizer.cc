@@ -1,0 +1,58 @@
+// Uniform scalar quantization (see quantizer.h).
+#include "quantizer.h"
+
+#include <cmath>
+
+namespace o3dgc {
+
+void Quantizer::Fit(const float* data, size_t stride, size_t count) {
+  double lo[4], hi[4];
+  for (uint32_t c = 0; c < dimension; ++c) {
+    lo[c] = 0;
+    hi[c] = 0;
+  }
+  for (size_t i = 0; i < count; ++i) {
+    const float* v = reinterpret_cast<const float*>(reinterpret_cast<const char*>(data) + i * stride);
+    for (uint32_t c = 0; c < dimension; ++c) {
+      if (i == 0 || v[c] < lo[c]) lo[c] = v[c];
+      if (i == 0 || v[c] > hi[c]) hi[c] = v[c];
+    }
+  }
+  double extent = 0;
+  for (uint32_t c = 0; c < dimension; ++c) {
+    min[c] = float(lo[c]);  // exact: lo is a float value
+    if (hi[c] - lo[c] > extent) extent = hi[c] - lo[c];
+  }
+  for (uint32_t c = 0; c < dimension; ++c) {
+    double e = mode == RangeMode::kUniform ? extent : hi[c] - lo[c];
+    float r = float(e);
+    // Round up so that every value lies within [min, min + range].
+    while (double(min[c]) + double(r) < hi[c]) r = std::nextafter(r, INFINITY);
+    range[c] = r;
+  }
+}
+
+int32_t Quantizer::Quantize(float x, uint32_t c) const {
+  if (!(range[c] > 0)) return 0;
+  const double t = (double(x) - double(min[c])) / double(range[c]);
+  double q = std::floor(t * double(max_q()) + 0.5);
+  if (q < 0) q = 0;
+  if (q > double(max_q())) q = double(max_q());
+  return int32_t(q);
+}
+
+
+float Quantizer::Dequantize(int32_t q, uint32_t c) const {
+  if (!(range[c] > 0)) return min[c];
+  return float(double(min[c]) + double(q) * (double(range[c]) / double(max_q())));
+}
+
+bool Quantizer::Valid() const {
+  for (uint32_t c = 0; c < dimension; ++c) {
+    if (!std::isfinite(min[c]) || !std::isfinite(range[c]) || range[c] < 0) return false;
+    if (!std::isfinite(float(double(min[c]) + double(range[c])))) return false;
+  }
+  return true;
+}
+
+}  // namespace o3dgc

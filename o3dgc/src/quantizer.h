@@ -1,0 +1,34 @@
+// Uniform scalar quantization of float attributes.
+//
+// A component x in [min, min + range] maps to q = round((x - min) / range * (2^bits - 1)); the
+// reconstruction min + q * range / (2^bits - 1) is within half a step of x. `range` is one value
+// for all components (RangeMode::kUniform, cubic cells) or one per component (kPerAxis).
+#ifndef O3DGC_SRC_QUANTIZER_H_
+#define O3DGC_SRC_QUANTIZER_H_
+
+#include <cstddef>
+#include <cstdint>
+
+#include "o3dgc/o3dgc.h"
+
+namespace o3dgc {
+
+struct Quantizer {
+  uint32_t dimension = 0;
+  int bits = 0;
+  RangeMode mode = RangeMode::kUniform;
+  float min[4] = {0, 0, 0, 0};
+  float range[4] = {0, 0, 0, 0};
+
+  uint32_t max_q() const { return uint32_t((uint64_t(1) << bits) - 1); }
+  // Sets min/range from `count` vectors of `dimension` floats at data + i * stride bytes.
+  void Fit(const float* data, size_t stride, size_t count);
+  int32_t Quantize(float x, uint32_t component) const;
+  float Dequantize(int32_t q, uint32_t component) const;
+  // True if min/range are finite, range >= 0 and min + range is finite (decoder-side check).
+  bool Valid() const;
+};
+
+}  // namespace o3dgc
+
+#endif  // O3DGC_SRC_QUANTIZER_H_

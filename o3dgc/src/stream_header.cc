@@ -1,0 +1,74 @@
+// Stream header and CRC32 (see stream_header.h).
+#include "stream_header.h"
+
+#include <cstring>
+
+namespace o3dgc {
+namespace {
+
+struct CrcTable {
+  uint32_t v[256];
+  CrcTable() {
+    for (uint32_t i = 0; i < 256; ++i) {
+      uint32_t c = i;
+      for (int k = 0; k < 8; ++k) c = (c & 1) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
+      v[i] = c;
+    }
+  }
+};
+
+}  // namespace
+
+uint32_t Crc32(const uint8_t* data, size_t size, uint32_t crc) {
+  static const CrcTable table;
+  crc = ~crc;
+  for (size_t i = 0; i < size; ++i) crc = table.v[(crc ^ data[i]) & 0xFF] ^ (crc >> 8);
+  return ~crc;
+}
+
+void WriteHeader(bool keep_order, size_t payload_size, std::vector<uint8_t>* out) {
+  out->insert(out->end(), kMagic, kMagic + 4);
+  out->push_back(uint8_t(kStreamVersion));
+  out->push_back(keep_order ? 1 : 0);
+  for (size_t i = 0; i < kCrcSize; ++i) out->push_back(0);
+  uint64_t v = payload_size;
+  do {
+    uint8_t byte = uint8_t(v & 0x7F);
+    v >>= 7;
+    if (v) byte |= 0x80;
+    out->push_back(byte);
+  } while (v);
+}
+
+void FinalizeCrc(std::vector<uint8_t>* stream) {
+  const size_t start = kCrcOffset + kCrcSize;
+  const uint32_t crc = Crc32(stream->data() + start, stream->size() - start);
+  for (size_t i = 0; i < 4; ++i) (*stream)[kCrcOffset + i] = uint8_t(crc >> (8 * i));
+}
+
+Status ParseHeader(const uint8_t* data, size_t size, StreamHeader* header) {
+  if (size < 4 || std::memcmp(data, kMagic, 4) != 0) return Status::kBadMagic;
+  if (size < kCrcOffset + kCrcSize + 1) return Status::kTruncated;
+  header->version = data[4];
+  if (header->version != kStreamVersion) return Status::kBadVersion;
+  if (data[5] & ~1u) return Status::kCorrupt;
+  header->keep_order = (data[5] & 1) != 0;
+  header->crc = uint32_t(data[6]) | uint32_t(data[7]) << 8 | uint32_t(data[8]) << 16 |
+                uint32_t(data[9]) << 24;
+  uint64_t v = 0;
+  size_t pos = kCrcOffset + kCrcSize;
+  for (int i = 0;; ++i) {
+    if (pos >= size) return Status::kTruncated;
+    if (i >= 5) return Status::kCorrupt;
+    const uint8_t byte = data[pos++];
+    v |= uint64_t(byte & 0x7F) << (7 * i);
+    if (!(byte & 0x80)) break;
+  }
+  header->payload_offset = pos;
+  if (v > size - pos) return Status::kTruncated;
+  if (v < size - pos) return Status::kCorrupt;
+  header->payload_size = size_t(v);
+  return Status::kOk;
+}
+
+}  // namespace o3dgc

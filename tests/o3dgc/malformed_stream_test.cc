@@ -1,0 +1,155 @@
+// Decoder robustness: truncations, byte flips, lying headers.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <random>
+
+#include "o3dgc/o3dgc.h"
+#include "entropy.h"
+#include "stream_header.h"
+#include "test_meshes.h"
+
+namespace {
+
+using namespace o3dgc;
+
+std::vector<uint8_t> SmallStream(bool keep_order, StreamType type = StreamType::kBinary) {
+  o3dgc_test::TestMesh t = o3dgc_test::Awkward();
+  t.joints.assign(t.nv() * 4, 3);
+  t.normals.assign(t.nv() * 3, 0.0f);
+  for (size_t i = 0; i < t.nv(); ++i) t.normals[3 * i + (i % 3)] = 1.0f;
+  EncodeParams p;
+  p.keep_order = keep_order;
+  p.stream_type = type;
+  std::vector<uint8_t> s;
+  EXPECT_EQ(Encode(t.View(), p, &s), Status::kOk);
+  return s;
+}
+
+void ExpectSane(const DecodedMesh& m) {
+  for (float f : m.positions) ASSERT_TRUE(std::isfinite(f));
+  for (float f : m.normals) ASSERT_TRUE(std::isfinite(f));
+  for (const auto& a : m.float_attributes) {
+    for (float f : a.values) ASSERT_TRUE(std::isfinite(f));
+  }
+  for (uint32_t i : m.indices) ASSERT_LT(i, m.num_vertices());
+}
+
+TEST(Malformed, EveryTruncationIsRejected) {
+  for (bool keep : {false, true}) {
+    for (StreamType type : {StreamType::kBinary, StreamType::kAscii}) {
+      const auto s = SmallStream(keep, type);
+      for (size_t n = 0; n < s.size(); ++n) {
+        DecodedMesh m;
+        for (bool crc : {true, false}) {
+          DecodeOptions o;
+          o.verify_checksum = crc;
+          EXPECT_NE(Decode(s.data(), n, o, &m), Status::kOk) << n;
+        }
+      }
+    }
+  }
+}
+
+TEST(Malformed, RandomByteFlipsNeverCrash) {
+  std::mt19937 rng(42);
+  int accepted = 0;
+  for (bool keep : {false, true}) {
+    const auto s = SmallStream(keep);
+    for (int iter = 0; iter < 3000; ++iter) {
+      auto c = s;
+      const int flips = 1 + int(rng() % 4);
+      for (int f = 0; f < flips; ++f) c[rng() % c.size()] ^= uint8_t(1 + rng() % 255);
+      DecodeOptions o;
+      o.verify_checksum = false;  // exercise the parser itself
+      DecodedMesh m;
+      if (Decode(c.data(), c.size(), o, &m) == Status::kOk) {
+        ++accepted;
+        ExpectSane(m);
+      }
+      o.verify_checksum = true;
+      if (c != s) {
+        EXPECT_NE(Decode(c.data(), c.size(), o, &m), Status::kOk);
+      }
+    }
+  }
+  SUCCEED() << accepted << " corrupted streams decoded to valid meshes";
+}
+
+TEST(Malformed, RandomGarbageAfterHeader) {
+  std::mt19937 rng(9);
+  const auto s = SmallStream(false);
+  for (int iter = 0; iter < 2000; ++iter) {
+    std::vector<uint8_t> c(s.begin(), s.begin() + 11);
+    const size_t n = rng() % 300;
+    for (size_t i = 0; i < n; ++i) c.push_back(uint8_t(rng()));
+    // Fix the payload length so the header parses.
+    std::vector<uint8_t> out;
+    WriteHeader(false, n, &out);
+    out.insert(out.end(), c.begin() + 11, c.end());
+    FinalizeCrc(&out);
+    DecodedMesh m;
+    if (Decode(out.data(), out.size(), DecodeOptions(), &m) == Status::kOk) ExpectSane(m);
+  }
+}
+
+TEST(Malformed, HugeVertexCountRejectedQuickly) {
+  // A payload whose header claims 2^32 vertices and 2^31 triangles.
+  std::vector<uint8_t> payload;
+  {
+    ArithmeticEncoder enc(&payload);
+    EGModel m;
+    EncodeEG(enc, m, uint64_t(1) << 32);
+    EncodeEG(enc, m, uint64_t(1) << 31);
+    enc.EncodeBits(0, 2);
+    EncodeEG(enc, m, 0);
+    EncodeEG(enc, m, 0);
+    // Position descriptor: semantic position, 3 components, parallelogram, 14 bits, uniform range,
+    // min = 0 and range = 0 (all zero floats).
+    enc.EncodeBits(1, 3);
+    enc.EncodeBits(2, 2);
+    enc.EncodeBits(2, 2);
+    enc.EncodeBits(13, 5);
+    enc.EncodeBits(0, 1);
+    for (int i = 0; i < 40; ++i) enc.EncodeBits(0, 32);
+    enc.Finish();
+  }
+  std::vector<uint8_t> s;
+  WriteHeader(false, payload.size(), &s);
+  s.insert(s.end(), payload.begin(), payload.end());
+  FinalizeCrc(&s);
+  const auto t0 = std::chrono::steady_clock::now();
+  DecodedMesh m;
+  DecodeOptions o;
+  o.max_vertices = size_t(1) << 40;
+  o.max_triangles = size_t(1) << 40;
+  const Status st = Decode(s.data(), s.size(), o, &m);
+  EXPECT_EQ(st, Status::kLimitExceeded) << StatusName(st);
+  EXPECT_EQ(Decode(s.data(), s.size(), DecodeOptions(), &m), Status::kLimitExceeded);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 0.5);
+}
+
+TEST(Malformed, HeaderChecks) {
+  auto s = SmallStream(false);
+  DecodedMesh m;
+  auto c = s;
+  c[0] = 'X';
+  EXPECT_EQ(Decode(c.data(), c.size(), DecodeOptions(), &m), Status::kBadMagic);
+  c = s;
+  c[4] = 99;
+  EXPECT_EQ(Decode(c.data(), c.size(), DecodeOptions(), &m), Status::kBadVersion);
+  c = s;
+  c.push_back(0);
+  EXPECT_EQ(Decode(c.data(), c.size(), DecodeOptions(), &m), Status::kCorrupt);
+  c = s;
+  c.back() ^= 1;
+  EXPECT_EQ(Decode(c.data(), c.size(), DecodeOptions(), &m), Status::kChecksumMismatch);
+  EXPECT_EQ(Decode(nullptr, 0, DecodeOptions(), &m), Status::kBadMagic);
+  DecodeOptions small;
+  small.max_vertices = 3;
+  EXPECT_EQ(Decode(s.data(), s.size(), small, &m), Status::kLimitExceeded);
+  EXPECT_STREQ(StatusName(Status::kCorrupt), "corrupt");
+}
+
+}  // namespace

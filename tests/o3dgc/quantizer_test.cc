@@ -1,0 +1,71 @@
+// Quantizer and octahedral mapping.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "predictors.h"
+#include "quantizer.h"
+
+namespace {
+
+using namespace o3dgc;
+
+TEST(Quantizer, HalfStepBoundAllBitDepths) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> u(-1000.f, 3000.f);
+  std::vector<float> v(3 * 500);
+  for (auto& x : v) x = u(rng);
+  for (int bits = 1; bits <= 30; ++bits) {
+    for (RangeMode mode : {RangeMode::kUniform, RangeMode::kPerAxis}) {
+      Quantizer q;
+      q.dimension = 3;
+      q.bits = bits;
+      q.mode = mode;
+      q.Fit(v.data(), 12, 500);
+      ASSERT_TRUE(q.Valid());
+      for (size_t i = 0; i < v.size(); ++i) {
+        const uint32_t c = uint32_t(i % 3);
+        const int32_t k = q.Quantize(v[i], c);
+        ASSERT_GE(k, 0);
+        ASSERT_LE(uint32_t(k), q.max_q());
+        const double step = double(q.range[c]) / q.max_q();
+        EXPECT_LE(std::fabs(double(q.Dequantize(k, c)) - v[i]), step / 2 + std::fabs(v[i]) * 1e-7);
+      }
+    }
+  }
+}
+
+TEST(Quantizer, ConstantDataAndValidity) {
+  std::vector<float> v(6, 2.5f);
+  Quantizer q;
+  q.dimension = 3;
+  q.bits = 12;
+  q.Fit(v.data(), 12, 2);
+  EXPECT_EQ(q.Quantize(2.5f, 0), 0);
+  EXPECT_EQ(q.Dequantize(0, 1), 2.5f);
+  q.range[0] = INFINITY;
+  EXPECT_FALSE(q.Valid());
+  q.range[0] = 1;
+  q.min[2] = 3e38f;
+  q.range[2] = 3e38f;
+  EXPECT_FALSE(q.Valid());
+}
+
+TEST(Octahedral, RoundTripsDirections) {
+  std::mt19937 rng(5);
+  std::normal_distribution<double> g;
+  for (int i = 0; i < 10000; ++i) {
+    double n[3] = {g(rng), g(rng), g(rng)};
+    const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (double& x : n) x /= l;
+    double u, v, r[3];
+    OctEncode(n, &u, &v);
+    ASSERT_LE(std::fabs(u), 1.0);
+    ASSERT_LE(std::fabs(v), 1.0);
+    OctDecode(u, v, r);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(r[k], n[k], 1e-9);
+  }
+}
+
+}  // namespace

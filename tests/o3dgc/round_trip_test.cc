@@ -1,0 +1,358 @@
+// Round trips through Encode/Decode: connectivity, accuracy bounds, attributes, groups, modes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "o3dgc/o3dgc.h"
+#include "test_meshes.h"
+
+namespace {
+
+using namespace o3dgc;
+using o3dgc_test::TestMesh;
+
+std::vector<uint8_t> EncodeOk(const TestMesh& t, const EncodeParams& p, StreamInfo* info = nullptr,
+                              int uv_bits = 12) {
+  std::vector<uint8_t> s;
+  EXPECT_EQ(Encode(t.View(uv_bits), p, &s, info), Status::kOk);
+  return s;
+}
+
+DecodedMesh DecodeOk(const std::vector<uint8_t>& s) {
+  DecodedMesh m;
+  EXPECT_EQ(Decode(s.data(), s.size(), DecodeOptions(), &m), Status::kOk);
+  return m;
+}
+
+// Per-corner integer key: quantized position (uniform range), quantized uv, joints, group.
+struct Keyer {
+  double min[3], step;
+  explicit Keyer(const TestMesh& t, int bits) {
+    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+    for (size_t i = 0; i < t.nv(); ++i) {
+      for (int k = 0; k < 3; ++k) {
+        lo[k] = std::min(lo[k], double(t.positions[3 * i + k]));
+        hi[k] = std::max(hi[k], double(t.positions[3 * i + k]));
+      }
+    }
+    double e = 0;
+    for (int k = 0; k < 3; ++k) {
+      min[k] = lo[k];
+      e = std::max(e, hi[k] - lo[k]);
+    }
+    step = e / double((1u << bits) - 1);
+  }
+  int64_t Q(double x, int k) const { return step > 0 ? int64_t(std::floor((x - min[k]) / step + 0.5)) : 0; }
+};
+
+std::vector<std::vector<int64_t>> Triangles(const Keyer& key, const std::vector<float>& pos,
+                                            const std::vector<uint32_t>& idx,
+                                            const std::vector<int32_t>* joints,
+                                            const std::vector<uint32_t>* groups) {
+  std::vector<std::vector<int64_t>> out;
+  for (size_t t = 0; t < idx.size() / 3; ++t) {
+    std::vector<std::vector<int64_t>> c(3);
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t v = idx[3 * t + k];
+      for (int d = 0; d < 3; ++d) c[k].push_back(key.Q(pos[3 * size_t(v) + d], d));
+      if (joints && !joints->empty()) {
+        for (int d = 0; d < 4; ++d) c[k].push_back((*joints)[4 * size_t(v) + d]);
+      }
+    }
+    int best = 0;
+    for (int k = 1; k < 3; ++k) {
+      if (c[k] < c[best]) best = k;
+    }
+    std::vector<int64_t> r;
+    for (int k = 0; k < 3; ++k) r.insert(r.end(), c[(best + k) % 3].begin(), c[(best + k) % 3].end());
+    if (groups && !groups->empty()) r.push_back((*groups)[t]);
+    out.push_back(r);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+void CheckTriangleSet(const TestMesh& t, const DecodedMesh& m, int bits) {
+  Keyer key(t, bits);
+  const std::vector<int32_t>* dj = m.int_attributes.empty() ? nullptr : &m.int_attributes[0].values;
+  EXPECT_EQ(Triangles(key, t.positions, t.indices, &t.joints, &t.groups),
+            Triangles(key, m.positions, m.indices, dj, &m.triangle_groups));
+}
+
+double StepOf(const std::vector<float>& v, int dim, int k, int bits) {
+  float lo = 1e30f, hi = -1e30f;
+  for (size_t i = k; i < v.size(); i += dim) {
+    lo = std::min(lo, v[i]);
+    hi = std::max(hi, v[i]);
+  }
+  return (double(hi) - lo) / double((1u << bits) - 1);
+}
+
+// keep_order: everything must correspond index by index.
+void CheckExact(const TestMesh& t, const DecodedMesh& m, int pbits, int nbits, int uvbits) {
+  ASSERT_EQ(m.indices, t.indices);
+  ASSERT_EQ(m.num_vertices(), t.nv());
+  Keyer key(t, pbits);
+  for (size_t i = 0; i < t.positions.size(); ++i) {
+    EXPECT_LE(std::fabs(double(m.positions[i]) - t.positions[i]), key.step * 0.5 * (1 + 1e-6) + 1e-7)
+        << "position component " << i;
+  }
+  if (!t.normals.empty()) {
+    ASSERT_EQ(m.normals.size(), t.normals.size());
+    const double bound = 2.5 / double(1u << nbits) * 3.14159;
+    for (size_t v = 0; v < t.nv(); ++v) {
+      double dot = 0, la = 0, lb = 0;
+      for (int k = 0; k < 3; ++k) {
+        dot += double(m.normals[3 * v + k]) * t.normals[3 * v + k];
+        la += double(m.normals[3 * v + k]) * m.normals[3 * v + k];
+        lb += double(t.normals[3 * v + k]) * t.normals[3 * v + k];
+      }
+      EXPECT_NEAR(la, 1.0, 1e-5);
+      const double angle = std::acos(std::min(1.0, dot / std::sqrt(la * lb)));
+      EXPECT_LE(angle, bound) << "normal " << v;
+    }
+  }
+  size_t fa = 0;
+  if (!t.uvs.empty()) {
+    const auto& a = m.float_attributes[fa++];
+    ASSERT_EQ(a.values.size(), t.uvs.size());
+    for (size_t i = 0; i < t.uvs.size(); ++i) {
+      const double step = StepOf(t.uvs, 2, int(i % 2), uvbits);
+      EXPECT_LE(std::fabs(double(a.values[i]) - t.uvs[i]), step * 0.5 * (1 + 1e-6) + 1e-7);
+    }
+  }
+  if (!t.colors.empty()) {
+    const auto& a = m.float_attributes[fa++];
+    ASSERT_EQ(a.values.size(), t.colors.size());
+    for (size_t i = 0; i < t.colors.size(); ++i) {
+      const double step = StepOf(t.colors, 4, int(i % 4), 10);
+      EXPECT_LE(std::fabs(double(a.values[i]) - t.colors[i]), step * 0.5 * (1 + 1e-6) + 1e-7);
+    }
+  }
+  if (!t.joints.empty()) {
+    ASSERT_EQ(m.int_attributes.size(), 1u);
+    EXPECT_EQ(m.int_attributes[0].values, t.joints);
+  }
+  if (!t.groups.empty()) {
+    EXPECT_EQ(m.triangle_groups, t.groups);
+  }
+}
+
+TestMesh WithGroups(TestMesh t) {
+  t.groups.resize(t.nt());
+  for (size_t i = 0; i < t.nt(); ++i) t.groups[i] = uint32_t(i * 4 / t.nt());
+  return t;
+}
+
+std::vector<TestMesh> AllMeshes() {
+  TestMesh single;
+  single.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  single.indices = {0, 1, 2};
+  return {o3dgc_test::Grid(12, 9), o3dgc_test::Sphere(16, 10), o3dgc_test::Torus(20, 12),
+          o3dgc_test::Awkward(), single, WithGroups(o3dgc_test::Sphere(12, 7))};
+}
+
+TEST(RoundTrip, DefaultModeKeepsTriangleSet) {
+  for (const TestMesh& t : AllMeshes()) {
+    EncodeParams p;
+    const auto s = EncodeOk(t, p);
+    const DecodedMesh m = DecodeOk(s);
+    EXPECT_EQ(m.num_triangles(), t.nt());
+    EXPECT_EQ(m.num_vertices(), t.nv());
+    CheckTriangleSet(t, m, p.position_bits);
+  }
+}
+
+TEST(RoundTrip, KeepOrderIsExact) {
+  for (const TestMesh& t : AllMeshes()) {
+    EncodeParams p;
+    p.keep_order = true;
+    const DecodedMesh m = DecodeOk(EncodeOk(t, p));
+    CheckExact(t, m, p.position_bits, p.normal_bits, 12);
+  }
+}
+
+TEST(RoundTrip, EveryPredictionModeAndBitDepth) {
+  const TestMesh t = o3dgc_test::Torus(24, 10);
+  TestMesh s = o3dgc_test::Sphere(20, 12);
+  for (Prediction pp : {Prediction::kNone, Prediction::kDifferential, Prediction::kParallelogram}) {
+    for (Prediction np : {Prediction::kNone, Prediction::kDifferential, Prediction::kParallelogram,
+                          Prediction::kSurfaceNormal}) {
+      for (int bits : {1, 7, 14, 30}) {
+        EncodeParams p;
+        p.keep_order = true;
+        p.position_prediction = pp;
+        p.normal_prediction = np;
+        p.position_bits = bits;
+        p.normal_bits = bits < 4 ? 4 : (bits > 20 ? 20 : bits);
+        const DecodedMesh m = DecodeOk(EncodeOk(s, p));
+        if (np == Prediction::kSurfaceNormal) {
+          CheckExact(s, m, bits, p.normal_bits, 12);
+        } else {
+          // Magnitude-preserving modes: half a step per component.
+          TestMesh no_normals = s;
+          no_normals.normals.clear();
+          DecodedMesh m2 = m;
+          m2.normals.clear();
+          CheckExact(no_normals, m2, bits, 0, 12);
+          for (size_t i = 0; i < s.normals.size(); ++i) {
+            const double step = StepOf(s.normals, 3, int(i % 3), p.normal_bits);
+            EXPECT_LE(std::fabs(double(m.normals[i]) - s.normals[i]), step * 0.5 * (1 + 1e-6) + 1e-7);
+          }
+        }
+        const DecodedMesh mt = DecodeOk(EncodeOk(t, p));
+        CheckExact(t, mt, bits, 0, 12);
+      }
+    }
+  }
+}
+
+TEST(RoundTrip, FloatAttributeModesDimensionsAndRanges) {
+  TestMesh t = o3dgc_test::Grid(10, 10);
+  t.normals.clear();
+  std::vector<float> attr(t.nv() * 4);
+  for (size_t i = 0; i < attr.size(); ++i) attr[i] = float(std::sin(double(i) * 0.37) * 100.0);
+  for (uint32_t dim = 1; dim <= 4; ++dim) {
+    for (Prediction pr : {Prediction::kNone, Prediction::kDifferential, Prediction::kParallelogram}) {
+      for (RangeMode rm : {RangeMode::kUniform, RangeMode::kPerAxis}) {
+        MeshView v = t.View();
+        v.float_attributes.clear();
+        FloatAttributeView a;
+        a.data = attr.data();
+        a.stride = 16;  // strided access: dim of the 4 floats
+        a.dimension = dim;
+        a.bits = 11;
+        a.prediction = pr;
+        a.range = rm;
+        a.semantic = Semantic::kWeight;
+        v.float_attributes.push_back(a);
+        EncodeParams p;
+        p.keep_order = true;
+        std::vector<uint8_t> s;
+        ASSERT_EQ(Encode(v, p, &s), Status::kOk);
+        DecodedMesh m = DecodeOk(s);
+        ASSERT_EQ(m.float_attributes.size(), 1u);
+        ASSERT_EQ(m.float_attributes[0].dimension, dim);
+        EXPECT_EQ(m.float_attributes[0].semantic, Semantic::kWeight);
+        double ext = 0;
+        for (uint32_t k = 0; k < dim; ++k) {
+          std::vector<float> c;
+          for (size_t i = 0; i < t.nv(); ++i) c.push_back(attr[4 * i + k]);
+          ext = std::max(ext, StepOf(c, 1, 0, 11));
+        }
+        for (size_t i = 0; i < t.nv(); ++i) {
+          for (uint32_t k = 0; k < dim; ++k) {
+            std::vector<float> c;
+            for (size_t j = 0; j < t.nv(); ++j) c.push_back(attr[4 * j + k]);
+            const double step = rm == RangeMode::kUniform ? ext : StepOf(c, 1, 0, 11);
+            EXPECT_LE(std::fabs(double(m.float_attributes[0].values[i * dim + k]) - attr[4 * i + k]),
+                      step * 0.5 * (1 + 1e-6) + 1e-5);
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST(RoundTrip, IntAttributesExactIncludingExtremes) {
+  TestMesh t = o3dgc_test::Torus(8, 6);
+  t.joints[0] = INT32_MIN;
+  t.joints[1] = INT32_MAX;
+  t.joints[5] = INT32_MIN;
+  for (Prediction pr : {Prediction::kNone, Prediction::kDifferential}) {
+    MeshView v = t.View();
+    v.int_attributes[0].prediction = pr;
+    EncodeParams p;
+    p.keep_order = true;
+    std::vector<uint8_t> s;
+    ASSERT_EQ(Encode(v, p, &s), Status::kOk);
+    DecodedMesh m = DecodeOk(s);
+    ASSERT_EQ(m.int_attributes.size(), 1u);
+    EXPECT_EQ(m.int_attributes[0].values, t.joints);
+  }
+}
+
+TEST(RoundTrip, AsciiStreamIsSevenBitAndDecodesIdentically) {
+  for (const TestMesh& t : AllMeshes()) {
+    EncodeParams p;
+    const auto bin = EncodeOk(t, p);
+    p.stream_type = StreamType::kAscii;
+    StreamInfo info;
+    const auto asc = EncodeOk(t, p, &info);
+    EXPECT_EQ(info.stream_type, StreamType::kAscii);
+    for (uint8_t c : asc) ASSERT_LT(c, 128);
+    const DecodedMesh a = DecodeOk(bin), b = DecodeOk(asc);
+    EXPECT_EQ(a.positions, b.positions);
+    EXPECT_EQ(a.indices, b.indices);
+  }
+}
+
+TEST(RoundTrip, EmptyMeshAndIsolatedVertices) {
+  TestMesh empty;
+  DecodedMesh m = DecodeOk(EncodeOk(empty, EncodeParams()));
+  EXPECT_EQ(m.num_vertices(), 0u);
+  EXPECT_EQ(m.num_triangles(), 0u);
+  TestMesh points;
+  points.positions = {1, 2, 3, -1, 0, 5, 1, 2, 3, 7, 7, 7};
+  EncodeParams p;
+  p.keep_order = true;
+  m = DecodeOk(EncodeOk(points, p));
+  CheckExact(points, m, 14, 10, 12);
+}
+
+TEST(RoundTrip, DeterministicAndStreamInfoAddsUp) {
+  const TestMesh t = o3dgc_test::Sphere(30, 20);
+  StreamInfo info;
+  const auto a = EncodeOk(t, EncodeParams(), &info);
+  const auto b = EncodeOk(t, EncodeParams());
+  EXPECT_EQ(a, b);
+  EXPECT_EQ(info.total, a.size());
+  EXPECT_GT(info.connectivity, 0u);
+  EXPECT_GT(info.positions, 0u);
+  EXPECT_GT(info.normals, 0u);
+  ASSERT_EQ(info.float_attributes.size(), 0u);
+  const size_t sum = info.header + info.connectivity + info.positions + info.normals + info.groups;
+  EXPECT_LE(sum, a.size() + 8);
+  EXPECT_GE(sum + 8, a.size());
+  StreamInfo read;
+  ASSERT_EQ(ReadStreamInfo(a.data(), a.size(), &read), Status::kOk);
+  EXPECT_EQ(read.num_vertices, t.nv());
+  EXPECT_EQ(read.num_triangles, t.nt());
+}
+
+TEST(RoundTrip, RejectsInvalidInput) {
+  TestMesh t = o3dgc_test::Grid(3, 3);
+  std::vector<uint8_t> s;
+  MeshView v = t.View();
+  t.indices[4] = 1000;
+  EXPECT_EQ(Encode(t.View(), EncodeParams(), &s), Status::kInvalidArgument);
+  t = o3dgc_test::Grid(3, 3);
+  t.positions[5] = std::nanf("");
+  EXPECT_EQ(Encode(t.View(), EncodeParams(), &s), Status::kInvalidArgument);
+  t = o3dgc_test::Grid(3, 3);
+  EncodeParams p;
+  p.position_bits = 31;
+  EXPECT_EQ(Encode(t.View(), p, &s), Status::kInvalidArgument);
+  EXPECT_EQ(Encode(t.View(), EncodeParams(), nullptr), Status::kInvalidArgument);
+  (void)v;
+}
+
+TEST(RoundTrip, CancelFromProgress) {
+  const TestMesh t = o3dgc_test::Sphere(10, 6);
+  EncodeParams p;
+  p.progress = [](float f) { return f < 0.5f; };
+  std::vector<uint8_t> s;
+  EXPECT_EQ(Encode(t.View(), p, &s), Status::kCancelled);
+}
+
+TEST(RoundTrip, CompressesARegularSphereWell) {
+  // 14-bit positions + 10-bit normals of a smooth closed mesh: well under 4 bytes per vertex.
+  const TestMesh t = o3dgc_test::Sphere(64, 48);
+  StreamInfo info;
+  const auto s = EncodeOk(t, EncodeParams(), &info);
+  EXPECT_LT(double(s.size()) / t.nv(), 4.0);
+  EXPECT_LT(double(info.connectivity) * 8 / t.nv(), 1.0);  // regular valence-6 mesh
+}
+
+}  // namespace

@@ -1,0 +1,187 @@
+// Meshes generated in code for the o3dgc tests, and round-trip comparison helpers.
+#ifndef O3DGC_TESTS_TEST_MESHES_H_
+#define O3DGC_TESTS_TEST_MESHES_H_
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <vector>
+
+#include "o3dgc/o3dgc.h"
+
+namespace o3dgc_test {
+
+struct TestMesh {
+  std::vector<float> positions;
+  std::vector<uint32_t> indices;
+  std::vector<float> normals;
+  std::vector<float> uvs;
+  std::vector<float> colors;
+  std::vector<int32_t> joints;
+  std::vector<uint32_t> groups;
+  size_t nv() const { return positions.size() / 3; }
+  size_t nt() const { return indices.size() / 3; }
+  o3dgc::MeshView View(int uv_bits = 12) const {
+    o3dgc::MeshView v;
+    v.positions = positions.data();
+    v.num_vertices = nv();
+    v.indices = indices.data();
+    v.num_triangles = nt();
+    if (!normals.empty()) v.normals = normals.data();
+    if (!uvs.empty()) {
+      o3dgc::FloatAttributeView a;
+      a.data = uvs.data();
+      a.dimension = 2;
+      a.semantic = o3dgc::Semantic::kTexCoord;
+      a.bits = uv_bits;
+      v.float_attributes.push_back(a);
+    }
+    if (!colors.empty()) {
+      o3dgc::FloatAttributeView a;
+      a.data = colors.data();
+      a.dimension = 4;
+      a.semantic = o3dgc::Semantic::kColor;
+      a.bits = 10;
+      v.float_attributes.push_back(a);
+    }
+    if (!joints.empty()) {
+      o3dgc::IntAttributeView a;
+      a.data = joints.data();
+      a.dimension = 4;
+      v.int_attributes.push_back(a);
+    }
+    if (!groups.empty()) v.triangle_groups = groups.data();
+    return v;
+  }
+};
+
+// (n+1) x (m+1) vertex grid in the unit square, z = small bump; with uv = xy.
+inline TestMesh Grid(int n, int m) {
+  TestMesh t;
+  for (int j = 0; j <= m; ++j) {
+    for (int i = 0; i <= n; ++i) {
+      const float x = float(i) / n, y = float(j) / m;
+      t.positions.insert(t.positions.end(), {x, y, 0.1f * std::sin(3 * x) * std::cos(2 * y)});
+      t.uvs.insert(t.uvs.end(), {x, y});
+      t.normals.insert(t.normals.end(), {0, 0, 1});
+    }
+  }
+  for (int j = 0; j < m; ++j) {
+    for (int i = 0; i < n; ++i) {
+      const uint32_t a = uint32_t(j * (n + 1) + i), b = a + 1, c = a + uint32_t(n + 1), d = c + 1;
+      t.indices.insert(t.indices.end(), {a, b, d, a, d, c});
+    }
+  }
+  return t;
+}
+
+// UV sphere with poles (closed, genus 0) and exact unit normals.
+inline TestMesh Sphere(int slices, int stacks) {
+  TestMesh t;
+  const double pi = 3.14159265358979323846;
+  t.positions.insert(t.positions.end(), {0, 0, 1});
+  t.normals.insert(t.normals.end(), {0, 0, 1});
+  for (int j = 1; j < stacks; ++j) {
+    const double th = pi * j / stacks;
+    for (int i = 0; i < slices; ++i) {
+      const double ph = 2 * pi * i / slices;
+      const float x = float(std::sin(th) * std::cos(ph)), y = float(std::sin(th) * std::sin(ph)),
+                  z = float(std::cos(th));
+      t.positions.insert(t.positions.end(), {x, y, z});
+      t.normals.insert(t.normals.end(), {x, y, z});
+    }
+  }
+  t.positions.insert(t.positions.end(), {0, 0, -1});
+  t.normals.insert(t.normals.end(), {0, 0, -1});
+  const uint32_t south = uint32_t(t.nv() - 1);
+  auto ring = [&](int j, int i) { return uint32_t(1 + (j - 1) * slices + (i % slices)); };
+  for (int i = 0; i < slices; ++i) t.indices.insert(t.indices.end(), {0, ring(1, i), ring(1, i + 1)});
+  for (int j = 1; j < stacks - 1; ++j) {
+    for (int i = 0; i < slices; ++i) {
+      t.indices.insert(t.indices.end(), {ring(j, i), ring(j + 1, i), ring(j + 1, i + 1)});
+      t.indices.insert(t.indices.end(), {ring(j, i), ring(j + 1, i + 1), ring(j, i + 1)});
+    }
+  }
+  for (int i = 0; i < slices; ++i) {
+    t.indices.insert(t.indices.end(), {south, ring(stacks - 1, i + 1), ring(stacks - 1, i)});
+  }
+  return t;
+}
+
+// Torus (genus 1) with colours and joint ids.
+inline TestMesh Torus(int n, int m) {
+  TestMesh t;
+  const double pi = 3.14159265358979323846;
+  for (int j = 0; j < m; ++j) {
+    for (int i = 0; i < n; ++i) {
+      const double u = 2 * pi * i / n, v = 2 * pi * j / m;
+      t.positions.insert(t.positions.end(), {float((2 + 0.5 * std::cos(v)) * std::cos(u)),
+                                             float((2 + 0.5 * std::cos(v)) * std::sin(u)),
+                                             float(0.5 * std::sin(v))});
+      t.colors.insert(t.colors.end(), {float(i) / n, float(j) / m, 0.5f, 1.0f});
+      t.joints.insert(t.joints.end(), {i % 3, j % 5, 1000 + i, -7});
+    }
+  }
+  for (int j = 0; j < m; ++j) {
+    for (int i = 0; i < n; ++i) {
+      const uint32_t a = uint32_t(j * n + i), b = uint32_t(j * n + (i + 1) % n),
+                     c = uint32_t(((j + 1) % m) * n + i), d = uint32_t(((j + 1) % m) * n + (i + 1) % n);
+      t.indices.insert(t.indices.end(), {a, b, d, a, d, c});
+    }
+  }
+  return t;
+}
+
+// A mix of awkward cases: a fan of three triangles on one edge (non-manifold), a flipped triangle,
+// a duplicated triangle (both windings), a degenerate triangle, a separate component, isolated
+// vertices and a seam (two vertices at the same position).
+inline TestMesh Awkward() {
+  TestMesh t;
+  t.positions = {0, 0, 0,  1, 0, 0,  0, 1, 0,  0, -1, 0,  0, 0, 1,  1, 1, 1,   // 0..5
+                 5, 5, 5,  6, 5, 5,  5, 6, 5,                                     // 6..8 component
+                 9, 9, 9,  -3, 2, 1,                                              // 9, 10 isolated
+                 1, 0, 0};                                                        // 11 = seam of 1
+  t.indices = {0, 1, 2,  1, 0, 3,  0, 1, 4,   // three triangles on edge 0-1
+               1, 2, 5,  2, 1, 5,             // same vertex set, both windings
+               0, 2, 4,  0, 2, 4,             // exact duplicate
+               2, 2, 5,                       // degenerate
+               6, 7, 8,                       // component
+               11, 5, 4};                     // uses the seam vertex
+  t.uvs.resize(t.nv() * 2);
+  for (size_t i = 0; i < t.nv(); ++i) {
+    t.uvs[2 * i] = float(i) / 16;
+    t.uvs[2 * i + 1] = 1 - float(i) / 16;
+  }
+  t.groups = {0, 0, 1, 1, 2, 2, 2, 3, 7, 7};
+  return t;
+}
+
+// Sorted multiset of triangles up to rotation (winding kept), over vertex positions.
+inline std::vector<std::array<float, 9>> TriangleSet(const std::vector<float>& p,
+                                                     const std::vector<uint32_t>& idx) {
+  std::vector<std::array<float, 9>> out;
+  for (size_t t = 0; t < idx.size() / 3; ++t) {
+    std::array<std::array<float, 3>, 3> c;
+    for (int k = 0; k < 3; ++k) {
+      for (int d = 0; d < 3; ++d) c[k][d] = p[3 * size_t(idx[3 * t + k]) + d];
+    }
+    // Rotate so the smallest corner comes first.
+    int best = 0;
+    for (int k = 1; k < 3; ++k) {
+      if (c[k] < c[best]) best = k;
+    }
+    std::array<float, 9> r;
+    for (int k = 0; k < 3; ++k) {
+      for (int d = 0; d < 3; ++d) r[3 * k + d] = c[(best + k) % 3][d];
+    }
+    out.push_back(r);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace o3dgc_test
+
+#endif  // O3DGC_TESTS_TEST_MESHES_H_
