@@ -19,6 +19,7 @@ PACKAGES=(
   libgtest-dev
   make
   ninja-build
+  nlohmann-json3-dev
   pkg-config
   zlib1g-dev
 )

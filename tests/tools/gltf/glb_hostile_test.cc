@@ -1,0 +1,352 @@
+// The reader against hostile bytes: every failure must be an error Status, never a crash or hang.
+#include <cstring>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "gltf/glb_reader.h"
+#include "gltf/glb_writer.h"
+#include "gltf_test_scenes.h"
+
+namespace hullpack {
+namespace {
+
+using nlohmann::json;
+
+std::vector<uint8_t> RichGlb() {
+  Result<std::vector<uint8_t>> glb = EncodeGlb(testing_gltf::MakeRichScene());
+  EXPECT_TRUE(glb.ok());
+  return glb.ok() ? glb.value() : std::vector<uint8_t>();
+}
+
+void PutU32(std::vector<uint8_t>& b, size_t at, uint32_t v) {
+  for (int i = 0; i < 4; ++i) b[at + static_cast<size_t>(i)] = static_cast<uint8_t>(v >> (8 * i));
+}
+
+uint32_t GetU32(const std::vector<uint8_t>& b, size_t at) {
+  uint32_t v = 0;
+  for (int i = 3; i >= 0; --i) v = (v << 8) | b[at + static_cast<size_t>(i)];
+  return v;
+}
+
+// Re-encodes the rich scene's document after `mutate` edits its JSON.
+Result<Scene> DecodeMutated(const std::function<void(json&)>& mutate) {
+  const std::vector<uint8_t> glb = RichGlb();
+  Result<GltfDocument> doc = DecodeGlbDocument(glb.data(), glb.size(), "mutated.glb");
+  EXPECT_TRUE(doc.ok());
+  mutate(doc->json());
+  GltfDocument edited(doc->json(), doc->binary(), true, glb.size());
+  return DecodeGltfDocument(edited, "mutated.glb");
+}
+
+void ExpectError(const Result<Scene>& r, StatusCode code, const std::string& needle) {
+  ASSERT_FALSE(r.ok()) << "expected an error mentioning " << needle;
+  EXPECT_EQ(r.status().code(), code) << r.status().ToString();
+  EXPECT_NE(r.status().message().find(needle), std::string::npos) << r.status().ToString();
+  EXPECT_EQ(r.status().message().rfind("mutated.glb: ", 0), 0u) << r.status().ToString();
+}
+
+TEST(GlbHostileTest, EveryTruncationIsAnError) {
+  const std::vector<uint8_t> glb = RichGlb();
+  ASSERT_GT(glb.size(), 1000u);
+  for (size_t len = 0; len < glb.size(); ++len) {
+    Result<Scene> s = DecodeGlb(glb.data(), len, "cut.glb");
+    ASSERT_FALSE(s.ok()) << "length " << len;
+    EXPECT_EQ(s.status().code(), StatusCode::kParseError) << len << ": " << s.status().ToString();
+  }
+  EXPECT_TRUE(DecodeGlb(glb.data(), glb.size(), "whole.glb").ok());
+}
+
+TEST(GlbHostileTest, TruncatedGlbWithPatchedLengthIsAnError) {
+  // Same cut, but the header and BIN chunk claim the shorter length, so only the JSON references
+  // reach past the end of the data.
+  const std::vector<uint8_t> glb = RichGlb();
+  const size_t json_len = GetU32(glb, 12);
+  const size_t bin_data = 20 + json_len + 8;
+  size_t failures = 0;
+  for (size_t len = bin_data; len < glb.size() - 4; len += 4) {
+    std::vector<uint8_t> cut(glb.begin(), glb.begin() + static_cast<std::ptrdiff_t>(len));
+    PutU32(cut, 8, static_cast<uint32_t>(len));
+    PutU32(cut, 20 + json_len, static_cast<uint32_t>(len - bin_data));
+    Result<Scene> s = DecodeGlb(cut.data(), cut.size(), "cut.glb");
+    ASSERT_FALSE(s.ok()) << len;
+    EXPECT_EQ(s.status().code(), StatusCode::kParseError) << s.status().ToString();
+    ++failures;
+  }
+  EXPECT_GT(failures, 100u);
+}
+
+TEST(GlbHostileTest, RandomByteFlipsNeverCrash) {
+  const std::vector<uint8_t> glb = RichGlb();
+  std::mt19937 rng(12345);
+  size_t ok = 0, errors = 0;
+  for (int iter = 0; iter < 4000; ++iter) {
+    std::vector<uint8_t> b = glb;
+    const int flips = 1 + static_cast<int>(rng() % 8);
+    for (int f = 0; f < flips; ++f) {
+      const size_t at = rng() % b.size();
+      b[at] = static_cast<uint8_t>(iter % 3 == 0 ? rng() : b[at] ^ (1u << (rng() % 8)));
+    }
+    Result<Scene> s = DecodeGlb(b.data(), b.size(), "flipped.glb");
+    if (s.ok()) {
+      ++ok;
+      // A scene that decodes is internally consistent: indices within the vertices.
+      for (const Mesh& m : s->meshes) {
+        for (uint32_t i : m.indices) ASSERT_LT(i, m.vertex_count());
+      }
+    } else {
+      ++errors;
+      EXPECT_FALSE(s.status().message().empty());
+    }
+  }
+  EXPECT_GT(errors, 100u);
+  EXPECT_GT(ok, 100u);  // flips in the binary payload are just different numbers
+}
+
+// Replaces one random number in the JSON with a hostile value.
+bool MutateRandomNumber(json& j, std::mt19937& rng, const json& replacement) {
+  std::vector<json*> numbers;
+  std::vector<json*> stack = {&j};
+  while (!stack.empty()) {
+    json* at = stack.back();
+    stack.pop_back();
+    if (at->is_number()) numbers.push_back(at);
+    if (at->is_structured()) {
+      for (auto& child : *at) stack.push_back(&child);
+    }
+  }
+  if (numbers.empty()) return false;
+  *numbers[rng() % numbers.size()] = replacement;
+  return true;
+}
+
+TEST(GlbHostileTest, HostileNumbersInTheJsonNeverCrash) {
+  const std::vector<uint8_t> glb = RichGlb();
+  Result<GltfDocument> doc = DecodeGlbDocument(glb.data(), glb.size(), "n.glb");
+  ASSERT_TRUE(doc.ok());
+  const json values[] = {0, 1, 3, -1, 255, 65535, 65536, 4294967295ull, 4294967296ull, 18446744073709551615ull,
+                         9223372036854775807ll, -9223372036854775807ll, 1.5, 1e300, "7", nullptr, json::array(),
+                         json::object(), true};
+  std::mt19937 rng(777);
+  size_t errors = 0;
+  for (int iter = 0; iter < 3000; ++iter) {
+    json j = doc->json();
+    const int edits = 1 + static_cast<int>(rng() % 3);
+    for (int e = 0; e < edits; ++e) MutateRandomNumber(j, rng, values[rng() % (sizeof values / sizeof values[0])]);
+    GltfDocument mutated(j, doc->binary(), true, glb.size());
+    Result<Scene> s = DecodeGltfDocument(mutated, "n.glb");
+    if (!s.ok()) {
+      ++errors;
+      continue;
+    }
+    for (const Mesh& m : s->meshes) {
+      for (uint32_t i : m.indices) ASSERT_LT(i, m.vertex_count());
+      EXPECT_TRUE(m.material_ids.empty() || m.material_ids.size() == m.triangle_count());
+      for (uint32_t id : m.material_ids) ASSERT_LT(id, s->materials.size());
+    }
+    for (const Node& n : s->nodes) {
+      for (int c : n.children) ASSERT_LT(static_cast<size_t>(c), s->nodes.size());
+      for (int mi : n.meshes) ASSERT_LT(static_cast<size_t>(mi), s->meshes.size());
+    }
+  }
+  EXPECT_GT(errors, 1000u);
+}
+
+TEST(GlbHostileTest, HeaderProblems) {
+  std::vector<uint8_t> glb = RichGlb();
+  {
+    std::vector<uint8_t> b = glb;
+    b[0] = 'X';
+    Result<Scene> s = DecodeGlb(b.data(), b.size(), "magic.glb");
+    ASSERT_FALSE(s.ok());  // without the magic it is parsed as JSON text and fails there
+    EXPECT_EQ(s.status().code(), StatusCode::kParseError);
+    Result<GltfDocument> d = ParseGlb(b.data(), b.size(), "magic.glb");
+    ASSERT_FALSE(d.ok());
+    EXPECT_NE(d.status().message().find("magic"), std::string::npos);
+  }
+  {
+    std::vector<uint8_t> b = glb;
+    PutU32(b, 4, 1);
+    Result<Scene> s = DecodeGlb(b.data(), b.size(), "v1.glb");
+    ASSERT_FALSE(s.ok());
+    EXPECT_EQ(s.status().code(), StatusCode::kUnsupported);
+    EXPECT_NE(s.status().message().find("version 1"), std::string::npos);
+  }
+  {
+    std::vector<uint8_t> b = glb;
+    PutU32(b, 8, static_cast<uint32_t>(b.size() + 1));
+    Result<Scene> s = DecodeGlb(b.data(), b.size(), "len.glb");
+    ASSERT_FALSE(s.ok());
+    EXPECT_NE(s.status().message().find("truncated"), std::string::npos);
+  }
+  for (uint32_t bad : {0xFFFFFFFFu, 0xFFFFFFF8u, static_cast<uint32_t>(glb.size())}) {
+    std::vector<uint8_t> b = glb;
+    PutU32(b, 12, bad);  // JSON chunk length past the end
+    Result<Scene> s = DecodeGlb(b.data(), b.size(), "chunk.glb");
+    ASSERT_FALSE(s.ok());
+    EXPECT_NE(s.status().message().find("chunk 0 declares"), std::string::npos) << s.status().ToString();
+  }
+  {
+    std::vector<uint8_t> b = glb;
+    const size_t bin_header = 20 + GetU32(b, 12);
+    PutU32(b, bin_header, 0x7FFFFFFF);  // BIN chunk length past the end
+    Result<Scene> s = DecodeGlb(b.data(), b.size(), "bin.glb");
+    ASSERT_FALSE(s.ok());
+    EXPECT_NE(s.status().message().find("chunk 1 declares"), std::string::npos) << s.status().ToString();
+  }
+  {
+    std::vector<uint8_t> b = glb;
+    PutU32(b, 16, gltf::kChunkBin);
+    Result<Scene> s = DecodeGlb(b.data(), b.size(), "order.glb");
+    ASSERT_FALSE(s.ok());
+    EXPECT_NE(s.status().message().find("not JSON"), std::string::npos);
+  }
+}
+
+TEST(GlbHostileTest, AccessorAndViewBounds) {
+  ExpectError(DecodeMutated([](json& j) { j["accessors"][0]["count"] = 1000000; }), StatusCode::kParseError,
+              "accessors[0]: byteOffset 0 + count 1000000");
+  ExpectError(DecodeMutated([](json& j) { j["accessors"][0]["count"] = 18446744073709551615ull; }),
+              StatusCode::kParseError, "accessors[0]");
+  ExpectError(DecodeMutated([](json& j) { j["accessors"][0]["count"] = 0; }), StatusCode::kParseError,
+              "count is 0");
+  ExpectError(DecodeMutated([](json& j) { j["accessors"][0]["byteOffset"] = 4; }), StatusCode::kParseError,
+              "exceeds bufferViews[");
+  ExpectError(DecodeMutated([](json& j) { j["accessors"][0]["componentType"] = 5124; }), StatusCode::kParseError,
+              "unknown componentType 5124");
+  ExpectError(DecodeMutated([](json& j) { j["accessors"][0]["type"] = "VEC7"; }), StatusCode::kParseError,
+              "unknown type");
+  ExpectError(DecodeMutated([](json& j) { j["accessors"][0]["bufferView"] = 999; }), StatusCode::kParseError,
+              "bufferView 999 does not exist");
+  ExpectError(DecodeMutated([](json& j) { j["bufferViews"][1]["byteOffset"] = 1u << 30; }),
+              StatusCode::kParseError, "exceed buffers[0]");
+  ExpectError(DecodeMutated([](json& j) { j["bufferViews"][1]["byteLength"] = 4294967295ull; }),
+              StatusCode::kParseError, "exceed buffers[0]");
+  ExpectError(DecodeMutated([](json& j) { j["bufferViews"][1]["byteStride"] = 2; }), StatusCode::kParseError,
+              "byteStride 2");
+  ExpectError(DecodeMutated([](json& j) { j["buffers"][0]["byteLength"] = 1u << 30; }), StatusCode::kParseError,
+              "exceeds the GLB binary chunk");
+  ExpectError(DecodeMutated([](json& j) { j["buffers"][0]["byteLength"] = -5; }), StatusCode::kParseError,
+              "not a non-negative integer");
+  ExpectError(DecodeMutated([](json& j) { j["accessors"] = json::object(); }), StatusCode::kParseError,
+              "'accessors' is not an array");
+  ExpectError(DecodeMutated([](json& j) { j["accessors"][0]["normalized"] = true; }), StatusCode::kParseError,
+              "normalized");
+}
+
+TEST(GlbHostileTest, IndexAndReferenceBounds) {
+  // Rewrite one index past the vertex count through the binary chunk.
+  const std::vector<uint8_t> glb = RichGlb();
+  Result<GltfDocument> doc = DecodeGlbDocument(glb.data(), glb.size(), "mutated.glb");
+  ASSERT_TRUE(doc.ok());
+  const json& j = doc->json();
+  const int acc = j["meshes"][2]["primitives"][0]["indices"].get<int>();
+  const int view = j["accessors"][acc]["bufferView"].get<int>();
+  const size_t offset = j["bufferViews"][view]["byteOffset"].get<size_t>();
+  std::vector<uint8_t> bin = doc->binary();
+  bin[offset] = 4;  // the tetrahedron has 4 vertices (UNSIGNED_SHORT indices)
+  bin[offset + 1] = 0;
+  ExpectError(DecodeGltfDocument(GltfDocument(j, bin, true, glb.size()), "mutated.glb"), StatusCode::kParseError,
+              "index 0 is 4 but the primitive has 4 vertices");
+
+  ExpectError(DecodeMutated([](json& js) { js["meshes"][0]["primitives"][0]["material"] = 2; }),
+              StatusCode::kParseError, "material 2 does not exist");
+  ExpectError(DecodeMutated([](json& js) { js["nodes"][0]["mesh"] = 3; }), StatusCode::kParseError,
+              "mesh 3 does not exist");
+  ExpectError(DecodeMutated([](json& js) { js["nodes"][0]["children"].push_back(0); }), StatusCode::kParseError,
+              "lists itself");
+  ExpectError(DecodeMutated([](json& js) { js["nodes"][4]["children"].push_back(2); }), StatusCode::kParseError,
+              "already has parent");
+  ExpectError(DecodeMutated([](json& js) {
+                js["nodes"][2]["children"] = {0};  // 0 -> 1 -> 2 -> 0
+              }),
+              StatusCode::kParseError, "cycle");
+  ExpectError(DecodeMutated([](json& js) { js["skins"][0]["joints"] = {1}; }), StatusCode::kParseError,
+              "inverseBindMatrices has 2 matrices for 1 joints");
+  ExpectError(DecodeMutated([](json& js) {
+                js["skins"][0]["joints"] = {1};
+                js["skins"][0].erase("inverseBindMatrices");
+              }),
+              StatusCode::kParseError, "uses joint 1 but skin 0 has 1");
+  ExpectError(DecodeMutated([](json& js) { js["skins"][0]["joints"] = {1, 1}; }), StatusCode::kParseError,
+              "twice");
+  ExpectError(DecodeMutated([](json& js) { js["materials"][0]["normalTexture"]["index"] = 40; }),
+              StatusCode::kParseError, "texture 40 does not exist");
+  ExpectError(DecodeMutated([](json& js) { js["textures"][0]["source"] = 40; }), StatusCode::kParseError,
+              "source image 40");
+  ExpectError(DecodeMutated([](json& js) { js["images"][0]["bufferView"] = -1; }), StatusCode::kParseError,
+              "images[0]");
+  ExpectError(DecodeMutated([](json& js) {
+                js["meshes"][0]["primitives"][0]["attributes"]["TANGENT"] =
+                    js["meshes"][0]["primitives"][0]["attributes"]["POSITION"];
+              }),
+              StatusCode::kParseError, "TANGENT (accessors[0]): has type VEC3");
+}
+
+TEST(GlbHostileTest, AttributeCountsMustAgree) {
+  Result<Scene> s = DecodeMutated([](json& js) {
+    // NORMAL of mesh 0 pointed at mesh 1's normals (fewer vertices).
+    js["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] =
+        js["meshes"][1]["primitives"][0]["attributes"]["NORMAL"];
+  });
+  ExpectError(s, StatusCode::kParseError, "NORMAL has 9 elements but POSITION has 20");
+}
+
+TEST(GlbHostileTest, AmplificationIsCapped) {
+  // A zero-filled accessor (no bufferView) of 100 million vertices in a 5 KB file.
+  Result<Scene> s = DecodeMutated([](json& js) {
+    js["accessors"].push_back({{"componentType", gltf::kFloat}, {"count", 100000000}, {"type", "VEC3"}});
+    js["meshes"][2]["primitives"][0]["attributes"]["POSITION"] = js["accessors"].size() - 1;
+    js["meshes"][2]["primitives"][0].erase("indices");
+  });
+  ExpectError(s, StatusCode::kUnsupported, "exceed the limit");
+  // Many primitives re-reading the largest accessor through distinct accessor copies.
+  Result<Scene> many = DecodeMutated([](json& js) {
+    json prim = js["meshes"][0]["primitives"][0];
+    json copy = js["accessors"][prim["attributes"]["POSITION"].get<int>()];
+    for (int i = 0; i < 20000; ++i) {
+      js["accessors"].push_back(copy);
+      prim["attributes"]["POSITION"] = js["accessors"].size() - 1;
+      js["meshes"][0]["primitives"].push_back(prim);
+    }
+  });
+  // The JSON grew with the copies, so this may legitimately decode; what matters is the bound.
+  if (!many.ok()) {
+    EXPECT_EQ(many.status().code(), StatusCode::kUnsupported) << many.status().ToString();
+  }
+}
+
+TEST(GlbHostileTest, DeeplyNestedJsonIsAnErrorNotAStackOverflow) {
+  std::string text = R"({"asset":{"version":"2.0"},"extras":)";
+  text += std::string(200000, '[') + std::string(200000, ']') + "}";
+  Result<Scene> s = DecodeGlb(reinterpret_cast<const uint8_t*>(text.data()), text.size(), "deep.gltf");
+  // nlohmann's parser is iterative; either outcome is fine as long as it returns.
+  if (!s.ok()) {
+    EXPECT_EQ(s.status().code(), StatusCode::kParseError);
+  }
+  std::string unclosed = std::string(100000, '[');
+  Result<Scene> u = DecodeGlb(reinterpret_cast<const uint8_t*>(unclosed.data()), unclosed.size(), "deep.gltf");
+  ASSERT_FALSE(u.ok());
+  EXPECT_EQ(u.status().code(), StatusCode::kParseError);
+}
+
+TEST(GlbHostileTest, JsonShapeErrors) {
+  for (const char* text : {"", "null", "[]", "42", R"({"asset":1})", R"({"asset":{"version":2}})",
+                           R"({"asset":{"version":"2.0"},"meshes":[1]})",
+                           R"({"asset":{"version":"2.0"},"meshes":[{"primitives":{}}]})",
+                           R"({"asset":{"version":"2.0"},"meshes":[{"primitives":[{"attributes":{}}]}]})",
+                           R"({"asset":{"version":"2.0"},"nodes":[{"children":[5]}]})",
+                           R"({"asset":{"version":"2.0"},"nodes":[{"matrix":[1,2]}]})",
+                           R"({"asset":{"version":"2.0"},"nodes":[{"translation":[1,"x",3]}]})",
+                           R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":4}],"bufferViews":[{"buffer":0,"byteLength":4}],
+                               "accessors":[{"bufferView":0,"componentType":5126,"count":1,"type":"SCALAR"}],
+                               "meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}]})"}) {
+    Result<Scene> s = DecodeGlb(reinterpret_cast<const uint8_t*>(text), std::strlen(text), "shape.gltf");
+    ASSERT_FALSE(s.ok()) << text;
+    EXPECT_EQ(s.status().code(), StatusCode::kParseError) << text << " -> " << s.status().ToString();
+    EXPECT_EQ(s.status().message().rfind("shape.gltf: ", 0), 0u) << s.status().message();
+  }
+}
+
+}  // namespace
+}  // namespace hullpack

@@ -1,0 +1,366 @@
+// The reader on general glTF 2.0 that the project's writer does not produce.
+#include "gltf/glb_reader.h"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "gltf/gltf_document.h"
+
+namespace hullpack {
+namespace {
+
+using nlohmann::json;
+
+template <typename T>
+void Put(std::vector<uint8_t>& bin, std::initializer_list<T> values) {
+  for (T v : values) {
+    uint8_t b[sizeof(T)];
+    std::memcpy(b, &v, sizeof(T));
+    bin.insert(bin.end(), b, b + sizeof(T));
+  }
+}
+
+void Pad4(std::vector<uint8_t>& bin) {
+  while (bin.size() % 4 != 0) bin.push_back(0);
+}
+
+Result<Scene> Decode(const json& j, const std::vector<uint8_t>& bin, const std::string& name = "test.glb") {
+  GltfDocument doc(j, bin, !bin.empty(), 0);
+  Result<std::vector<uint8_t>> glb = doc.Serialize();
+  EXPECT_TRUE(glb.ok());
+  return DecodeGlb(glb->data(), glb->size(), name);
+}
+
+bool Contains(const std::vector<std::string>& lines, const std::string& needle) {
+  for (const std::string& l : lines) {
+    if (l.find(needle) != std::string::npos) return true;
+  }
+  return false;
+}
+
+TEST(GlbReaderTest, NormalizedAndQuantizedAttributes) {
+  std::vector<uint8_t> bin;
+  Put<int16_t>(bin, {0, 0, 0, 100, 0, 0, 0, -200, 0, 0});                 // 0: POSITION SHORT (+pad)
+  Put<int8_t>(bin, {0, 0, 127, 0, 0, 0, -127, 0, -128, 0, 0, 0});       // 20: NORMAL BYTE norm (stride 4)
+  Put<uint16_t>(bin, {0, 65535, 65535, 0, 32768, 0});                    // 32: TEXCOORD USHORT norm
+  Pad4(bin);
+  Put<uint8_t>(bin, {255, 0, 0, 0, 0, 255, 0, 0, 0, 51, 102, 0});        // 44: COLOR VEC3 UBYTE norm (stride 4)
+  Put<uint8_t>(bin, {255, 0, 0, 0, 128, 127, 0, 0, 0, 0, 0, 255});       // 56: WEIGHTS UBYTE norm
+  Put<uint8_t>(bin, {0, 1, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0});               // 68: JOINTS UBYTE
+  json j = {
+      {"asset", {{"version", "2.0"}}},
+      {"extensionsUsed", {"KHR_mesh_quantization"}},
+      {"extensionsRequired", {"KHR_mesh_quantization"}},
+      {"buffers", {{{"byteLength", bin.size()}}}},
+      {"bufferViews",
+       {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 20}, {"byteStride", 8}},
+        {{"buffer", 0}, {"byteOffset", 20}, {"byteLength", 12}, {"byteStride", 4}},
+        {{"buffer", 0}, {"byteOffset", 32}, {"byteLength", 12}},
+        {{"buffer", 0}, {"byteOffset", 44}, {"byteLength", 12}, {"byteStride", 4}},
+        {{"buffer", 0}, {"byteOffset", 56}, {"byteLength", 24}}}},
+      {"accessors",
+       {{{"bufferView", 0}, {"componentType", gltf::kShort}, {"count", 3}, {"type", "VEC3"}},
+        {{"bufferView", 1}, {"componentType", gltf::kByte}, {"normalized", true}, {"count", 3}, {"type", "VEC3"}},
+        {{"bufferView", 2}, {"componentType", gltf::kUnsignedShort}, {"normalized", true}, {"count", 3}, {"type", "VEC2"}},
+        {{"bufferView", 3}, {"componentType", gltf::kUnsignedByte}, {"normalized", true}, {"count", 3}, {"type", "VEC3"}},
+        {{"bufferView", 4}, {"componentType", gltf::kUnsignedByte}, {"normalized", true}, {"count", 3}, {"type", "VEC4"}},
+        {{"bufferView", 4}, {"byteOffset", 12}, {"componentType", gltf::kUnsignedByte}, {"count", 3}, {"type", "VEC4"}}}},
+      {"meshes",
+       {{{"primitives",
+          {{{"attributes",
+             {{"POSITION", 0}, {"NORMAL", 1}, {"TEXCOORD_0", 2}, {"COLOR_0", 3}, {"WEIGHTS_0", 4}, {"JOINTS_0", 5}}}}}}}}},
+      {"nodes", {{{"mesh", 0}}}},
+  };
+  // The SHORT positions use a stride of 8: (0,0,0) (100,0,0) (0,-200,0) at offsets 0, 8, 16... but the
+  // view holds 20 bytes, so element 2 starts at 16 and its 6 bytes end at 22 > 20: rejected.
+  Result<Scene> too_short = Decode(j, bin);
+  ASSERT_FALSE(too_short.ok());
+  EXPECT_EQ(too_short.status().code(), StatusCode::kParseError);
+  EXPECT_NE(too_short.status().message().find("accessors[0]"), std::string::npos) << too_short.status().ToString();
+  // With a 6-byte element pitch the layout is tight (the stride is dropped): (0,0,0) (100,0,0) (0,-200,0)
+  j["bufferViews"][0].erase("byteStride");
+  j["bufferViews"][0]["byteLength"] = 18;
+  Result<Scene> s = Decode(j, bin);
+  ASSERT_TRUE(s.ok()) << s.status().ToString();
+  const Mesh& m = s->meshes[0];
+  EXPECT_EQ(m.positions, std::vector<float>({0, 0, 0, 100, 0, 0, 0, -200, 0}));
+  // BYTE -128 normalizes to -1 (clamped), per the spec's max(c / 127, -1).
+  EXPECT_EQ(m.normals, std::vector<float>({0, 0, 1, 0, 0, -1, -1, 0, 0}));
+  ASSERT_EQ(m.uv_sets.size(), 1u);
+  EXPECT_FLOAT_EQ(m.uv_sets[0][1], 1.0f);
+  EXPECT_FLOAT_EQ(m.uv_sets[0][4], 32768.0f / 65535.0f);
+  EXPECT_EQ(m.colors.size(), 12u);
+  EXPECT_FLOAT_EQ(m.colors[0], 1.0f);
+  EXPECT_FLOAT_EQ(m.colors[3], 1.0f);  // VEC3 colour gets alpha 1
+  EXPECT_FLOAT_EQ(m.colors[9], 0.2f);
+  EXPECT_FLOAT_EQ(m.colors[10], 0.4f);
+  EXPECT_FLOAT_EQ(m.weights[4], 128.0f / 255.0f);
+  EXPECT_EQ(m.joints, std::vector<uint16_t>({0, 1, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0}));
+  EXPECT_EQ(m.indices, std::vector<uint32_t>({0, 1, 2}));  // non-indexed triangles
+  EXPECT_FALSE(Contains(s->dropped, "KHR_mesh_quantization"));
+}
+
+TEST(GlbReaderTest, NormalBytesClampAtMinusOne) {
+  std::vector<uint8_t> bin;
+  Put<float>(bin, {0, 0, 0, 1, 0, 0, 0, 1, 0});
+  Put<int8_t>(bin, {-128, 0, 0, 0, 0, -127, 0, 0, 0, 127, 0, 0});
+  json j = {{"asset", {{"version", "2.0"}}},
+            {"buffers", {{{"byteLength", bin.size()}}}},
+            {"bufferViews",
+             {{{"buffer", 0}, {"byteLength", 36}}, {{"buffer", 0}, {"byteOffset", 36}, {"byteLength", 12}, {"byteStride", 4}}}},
+            {"accessors",
+             {{{"bufferView", 0}, {"componentType", gltf::kFloat}, {"count", 3}, {"type", "VEC3"}},
+              {{"bufferView", 1}, {"componentType", gltf::kByte}, {"normalized", true}, {"count", 3}, {"type", "VEC3"}}}},
+            {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}}}}}}}}}};
+  Result<Scene> s = Decode(j, bin);
+  ASSERT_TRUE(s.ok()) << s.status().ToString();
+  EXPECT_EQ(s->meshes[0].normals, std::vector<float>({-1, 0, 0, 0, -1, 0, 0, 1, 0}));
+}
+
+// Four vertices, interleaved POSITION+NORMAL (stride 24), and three primitives.
+json InterleavedQuad(std::vector<uint8_t>* bin) {
+  for (int v = 0; v < 4; ++v) {
+    Put<float>(*bin, {static_cast<float>(v & 1), static_cast<float>(v >> 1), 0.0f, 0.0f, 0.0f, 1.0f});
+  }
+  Put<uint8_t>(*bin, {0, 1, 2, 3});        // 96: strip
+  Put<uint16_t>(*bin, {0, 1, 3, 2});       // 100: fan
+  Put<uint32_t>(*bin, {0, 1, 3});          // 108: triangles
+  return {{"asset", {{"version", "2.0"}}},
+          {"buffers", {{{"byteLength", bin->size()}}}},
+          {"bufferViews",
+           {{{"buffer", 0}, {"byteLength", 96}, {"byteStride", 24}, {"target", gltf::kArrayBuffer}},
+            {{"buffer", 0}, {"byteOffset", 96}, {"byteLength", 24}}}},
+          {"accessors",
+           {{{"bufferView", 0}, {"componentType", gltf::kFloat}, {"count", 4}, {"type", "VEC3"}},
+            {{"bufferView", 0}, {"byteOffset", 12}, {"componentType", gltf::kFloat}, {"count", 4}, {"type", "VEC3"}},
+            {{"bufferView", 1}, {"componentType", gltf::kUnsignedByte}, {"count", 4}, {"type", "SCALAR"}},
+            {{"bufferView", 1}, {"byteOffset", 4}, {"componentType", gltf::kUnsignedShort}, {"count", 4}, {"type", "SCALAR"}},
+            {{"bufferView", 1}, {"byteOffset", 12}, {"componentType", gltf::kUnsignedInt}, {"count", 3}, {"type", "SCALAR"}}}},
+          {"materials", {{{"name", "red"}}}},
+          {"meshes",
+           {{{"name", "quad"},
+             {"primitives",
+              {{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}}}, {"indices", 2}, {"mode", 5}, {"material", 0}},
+               {{"attributes", {{"POSITION", 0}, {"NORMAL", 1}}}, {"indices", 3}, {"mode", 6}},
+               {{"attributes", {{"POSITION", 0}}}, {"indices", 4}, {"material", 0}}}}}}},
+          {"nodes",
+           {{{"mesh", 0},
+             {"translation", {1, 2, 3}},
+             {"rotation", {0, 0, std::sqrt(0.5), std::sqrt(0.5)}},
+             {"scale", {2, 2, 2}}}}}};
+}
+
+TEST(GlbReaderTest, StridesStripsFansAndMixedPrimitives) {
+  std::vector<uint8_t> bin;
+  const json j = InterleavedQuad(&bin);
+  Result<Scene> s = Decode(j, bin);
+  ASSERT_TRUE(s.ok()) << s.status().ToString();
+  const Mesh& m = s->meshes[0];
+  EXPECT_EQ(m.name, "quad");
+  // Primitives 1 and 2 share (POSITION 0, NORMAL 1); primitive 3 has a different set, so its vertices
+  // are appended and get zero normals.
+  ASSERT_EQ(m.vertex_count(), 8u);
+  EXPECT_EQ(std::vector<float>(m.positions.begin(), m.positions.begin() + 12),
+            std::vector<float>({0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0}));
+  EXPECT_EQ(m.normals[2], 1.0f);
+  EXPECT_EQ(m.normals[3 * 4 + 2], 0.0f);
+  const std::vector<uint32_t> expected = {
+      0, 1, 2, 1, 3, 2,  // strip 0 1 2 3 -> (0 1 2) (1 3 2)
+      1, 3, 0, 3, 2, 0,  // fan 0 1 3 2 -> (1 3 0) (3 2 0)
+      4, 5, 7};          // triangles, offset by the appended block
+  EXPECT_EQ(m.indices, expected);
+  // The primitive without a material gets an added default material.
+  ASSERT_EQ(s->materials.size(), 2u);
+  EXPECT_EQ(s->materials[1].name, "default");
+  EXPECT_EQ(m.material_ids, std::vector<uint32_t>({0, 0, 1, 1, 0}));
+  // TRS -> column-major matrix: rotate 90 degrees about z, scale 2, translate (1,2,3).
+  const Matrix4& t = s->nodes[0].local_transform;
+  const double expected_m[16] = {0, 2, 0, 0, -2, 0, 0, 0, 0, 0, 2, 0, 1, 2, 3, 1};
+  for (int i = 0; i < 16; ++i) EXPECT_NEAR(t[static_cast<size_t>(i)], expected_m[i], 1e-12) << i;
+}
+
+TEST(GlbReaderTest, ReportsWhatItDrops) {
+  std::vector<uint8_t> bin;
+  json j = InterleavedQuad(&bin);
+  j["animations"] = json::array({json::object()});
+  j["cameras"] = json::array({{{"type", "perspective"}}});
+  j["scenes"] = json::array({{{"nodes", {0}}}, json::object()});
+  j["samplers"] = json::array({json::object()});
+  j["extensionsUsed"] = {"KHR_lights_punctual", "KHR_texture_transform"};
+  j["nodes"][0]["camera"] = 0;
+  j["nodes"][0]["extensions"]["KHR_lights_punctual"] = {{"light", 0}};
+  j["meshes"][0]["primitives"][0]["targets"] = json::array({{{"POSITION", 0}}});
+  j["meshes"][0]["primitives"][0]["attributes"]["COLOR_1"] = 0;
+  j["meshes"][0]["primitives"][0]["attributes"]["_TEMPERATURE"] = 0;
+  j["meshes"][0]["primitives"].push_back({{"attributes", {{"POSITION", 0}}}, {"mode", 1}});
+  Result<Scene> s = Decode(j, bin);
+  ASSERT_TRUE(s.ok()) << s.status().ToString();
+  const auto& d = s->dropped;
+  EXPECT_TRUE(Contains(d, "1 animations"));
+  EXPECT_TRUE(Contains(d, "1 cameras"));
+  EXPECT_TRUE(Contains(d, "1 node cameras"));
+  EXPECT_TRUE(Contains(d, "KHR_lights_punctual node lights"));
+  EXPECT_TRUE(Contains(d, "ignored extensions: KHR_lights_punctual, KHR_texture_transform"));
+  EXPECT_TRUE(Contains(d, "morph targets of 1 primitives"));
+  EXPECT_TRUE(Contains(d, "1 point/line primitives"));
+  EXPECT_TRUE(Contains(d, "COLOR_1"));
+  EXPECT_TRUE(Contains(d, "_TEMPERATURE"));
+  EXPECT_TRUE(Contains(d, "extra scenes"));
+  EXPECT_TRUE(Contains(d, "texture samplers"));
+  EXPECT_EQ(s->meshes[0].triangle_count(), 5u);
+}
+
+TEST(GlbReaderTest, UnsupportedInputsSayWhy) {
+  std::vector<uint8_t> bin;
+  const json base = InterleavedQuad(&bin);
+  {
+    json j = base;
+    j["accessors"][0]["sparse"] = {{"count", 1}};
+    Result<Scene> s = Decode(j, bin);
+    ASSERT_FALSE(s.ok());
+    EXPECT_EQ(s.status().code(), StatusCode::kUnsupported);
+    EXPECT_NE(s.status().message().find("sparse"), std::string::npos);
+    EXPECT_EQ(s.status().message().rfind("test.glb: accessors[0]", 0), 0u) << s.status().message();
+  }
+  {
+    json j = base;
+    j["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+    Result<Scene> s = Decode(j, bin);
+    ASSERT_FALSE(s.ok());
+    EXPECT_EQ(s.status().code(), StatusCode::kUnsupported);
+    EXPECT_NE(s.status().message().find("KHR_draco_mesh_compression"), std::string::npos);
+  }
+  {
+    json j = base;
+    j["asset"]["version"] = "1.0";
+    Result<Scene> s = Decode(j, bin);
+    ASSERT_FALSE(s.ok());
+    EXPECT_EQ(s.status().code(), StatusCode::kUnsupported);
+  }
+  {
+    json j = base;
+    j["buffers"][0]["uri"] = "quad.bin";
+    GltfDocument doc(j, {}, false, 100);
+    Result<Scene> s = DecodeGltfDocument(doc, "mem.gltf");
+    ASSERT_FALSE(s.ok());
+    EXPECT_EQ(s.status().code(), StatusCode::kUnsupported);
+    EXPECT_NE(s.status().message().find("quad.bin"), std::string::npos);
+  }
+}
+
+std::string Base64(const std::vector<uint8_t>& in) {
+  static const char* k = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (size_t i = 0; i < in.size(); i += 3) {
+    uint32_t v = static_cast<uint32_t>(in[i]) << 16;
+    if (i + 1 < in.size()) v |= static_cast<uint32_t>(in[i + 1]) << 8;
+    if (i + 2 < in.size()) v |= in[i + 2];
+    out += k[(v >> 18) & 63];
+    out += k[(v >> 12) & 63];
+    out += i + 1 < in.size() ? k[(v >> 6) & 63] : '=';
+    out += i + 2 < in.size() ? k[v & 63] : '=';
+  }
+  return out;
+}
+
+class GltfFileTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    char tmpl[] = "/tmp/hullpack_gltf_XXXXXX";
+    ASSERT_NE(mkdtemp(tmpl), nullptr);
+    dir_ = tmpl;
+  }
+  void TearDown() override {
+    for (const std::string& f : files_) std::remove(f.c_str());
+    rmdir((dir_ + "/sub").c_str());
+    rmdir(dir_.c_str());
+  }
+  std::string Write(const std::string& name, const std::string& bytes) {
+    const std::string path = dir_ + "/" + name;
+    std::ofstream(path, std::ios::binary) << bytes;
+    files_.push_back(path);
+    return path;
+  }
+  std::string dir_;
+  std::vector<std::string> files_;
+};
+
+TEST_F(GltfFileTest, DataUriBuffersAndImages) {
+  std::vector<uint8_t> bin;
+  json j = InterleavedQuad(&bin);
+  j["buffers"][0]["uri"] = "data:application/octet-stream;base64," + Base64(bin);
+  j["images"] = {{{"uri", "data:image/png;base64," + Base64({0x89, 'P', 'N', 'G'})}}, {{"uri", "tex/a%20b.png"}}};
+  const std::string path = Write("quad.gltf", j.dump());
+  Result<Scene> s = ReadGltfFile(path);
+  ASSERT_TRUE(s.ok()) << s.status().ToString();
+  EXPECT_EQ(s->meshes[0].triangle_count(), 5u);
+  ASSERT_EQ(s->images.size(), 2u);
+  EXPECT_EQ(s->images[0].mime_type, "image/png");
+  EXPECT_EQ(s->images[0].bytes, std::vector<uint8_t>({0x89, 'P', 'N', 'G'}));
+  EXPECT_EQ(s->images[1].uri, "tex/a%20b.png");
+  // Bad base64 is a parse error naming the buffer.
+  j["buffers"][0]["uri"] = "data:application/octet-stream;base64,@@@@";
+  Result<Scene> bad = ReadGltfFile(Write("bad.gltf", j.dump()));
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.status().message().find("buffers[0]"), std::string::npos) << bad.status().ToString();
+}
+
+TEST_F(GltfFileTest, ExternalBinNextToTheFile) {
+  std::vector<uint8_t> bin;
+  json j = InterleavedQuad(&bin);
+  ASSERT_EQ(mkdir((dir_ + "/sub").c_str(), 0700), 0);
+  Write("sub/quad data.bin", std::string(bin.begin(), bin.end()));
+  j["buffers"][0]["uri"] = "sub/quad%20data.bin";
+  Result<Scene> s = ReadGltfFile(Write("quad.gltf", j.dump()));
+  ASSERT_TRUE(s.ok()) << s.status().ToString();
+  EXPECT_EQ(s->meshes[0].vertex_count(), 8u);
+  // A byteLength larger than the file is refused before anything is allocated.
+  j["buffers"][0]["byteLength"] = 1ull << 40;
+  Result<Scene> big = ReadGltfFile(Write("big.gltf", j.dump()));
+  ASSERT_FALSE(big.ok());
+  EXPECT_EQ(big.status().code(), StatusCode::kParseError);
+  // URIs that would leave the folder are not followed.
+  for (const char* uri : {"../quad.bin", "sub/../../x.bin", "/etc/passwd", "file:///etc/passwd", "%2e%2e/x.bin"}) {
+    j["buffers"][0]["uri"] = uri;
+    j["buffers"][0]["byteLength"] = bin.size();
+    Result<Scene> esc = ReadGltfFile(Write("escape.gltf", j.dump()));
+    ASSERT_FALSE(esc.ok()) << uri;
+    EXPECT_EQ(esc.status().code(), StatusCode::kUnsupported) << uri << ": " << esc.status().ToString();
+  }
+  j["buffers"][0]["uri"] = "missing.bin";
+  Result<Scene> missing = ReadGltfFile(Write("missing.gltf", j.dump()));
+  ASSERT_FALSE(missing.ok());
+  EXPECT_EQ(missing.status().code(), StatusCode::kIoError);
+}
+
+TEST_F(GltfFileTest, ReadsGlbFilesAndNamesThePath) {
+  std::vector<uint8_t> bin;
+  const json j = InterleavedQuad(&bin);
+  GltfDocument doc(j, bin, true, 0);
+  Result<std::vector<uint8_t>> glb = doc.Serialize();
+  ASSERT_TRUE(glb.ok());
+  const std::string path = Write("quad.glb", std::string(glb->begin(), glb->end()));
+  Result<Scene> s = ReadGltfFile(path);
+  ASSERT_TRUE(s.ok()) << s.status().ToString();
+  EXPECT_EQ(s->meshes[0].triangle_count(), 5u);
+  Result<GltfDocument> d = ReadGltfDocumentFile(path);
+  ASSERT_TRUE(d.ok());
+  EXPECT_EQ(d->json()["meshes"][0]["name"], "quad");
+  const std::string cut = Write("cut.glb", std::string(glb->begin(), glb->begin() + 40));
+  Result<Scene> truncated = ReadGltfFile(cut);
+  ASSERT_FALSE(truncated.ok());
+  EXPECT_EQ(truncated.status().message().rfind(cut + ": ", 0), 0u) << truncated.status().message();
+  Result<Scene> none = ReadGltfFile(dir_ + "/nope.glb");
+  ASSERT_FALSE(none.ok());
+  EXPECT_EQ(none.status().code(), StatusCode::kIoError);
+}
+
+}  // namespace
+}  // namespace hullpack

@@ -1,0 +1,277 @@
+#include "gltf/glb_writer.h"
+
+#include <cstring>
+
+#include <gtest/gtest.h>
+
+#include "gltf/glb_reader.h"
+#include "gltf/gltf_document.h"
+#include "gltf_test_scenes.h"
+
+namespace hullpack {
+namespace {
+
+using nlohmann::json;
+using testing_gltf::ExpectScenesEqual;
+
+GltfDocument Parse(const std::vector<uint8_t>& glb) {
+  Result<GltfDocument> doc = DecodeGlbDocument(glb.data(), glb.size(), "test.glb");
+  EXPECT_TRUE(doc.ok()) << doc.status().ToString();
+  return doc.ok() ? std::move(doc).value() : GltfDocument();
+}
+
+TEST(GlbWriterTest, RichSceneRoundTripsExactly) {
+  const Scene scene = testing_gltf::MakeRichScene();
+  Result<std::vector<uint8_t>> glb = EncodeGlb(scene);
+  ASSERT_TRUE(glb.ok()) << glb.status().ToString();
+  Result<Scene> back = DecodeGlb(glb->data(), glb->size(), "rich.glb");
+  ASSERT_TRUE(back.ok()) << back.status().ToString();
+  ExpectScenesEqual(scene, back.value());
+  EXPECT_TRUE(back->dropped.empty());
+}
+
+TEST(GlbWriterTest, RichSceneJsonLayout) {
+  const Scene scene = testing_gltf::MakeRichScene();
+  Result<std::vector<uint8_t>> glb = EncodeGlb(scene);
+  ASSERT_TRUE(glb.ok());
+  const GltfDocument doc = Parse(glb.value());
+  const json& j = doc.json();
+  EXPECT_EQ(j["asset"]["version"], "2.0");
+  EXPECT_EQ(j["asset"]["generator"], "hullpack");
+  // Mesh 0: one primitive per material, sharing the vertex accessors; 2 UV sets, colour, skin.
+  const json& prims = j["meshes"][0]["primitives"];
+  ASSERT_EQ(prims.size(), 2u);
+  EXPECT_EQ(prims[0]["material"], 0);
+  EXPECT_EQ(prims[1]["material"], 1);
+  EXPECT_EQ(prims[0]["attributes"], prims[1]["attributes"]);
+  EXPECT_NE(prims[0]["indices"], prims[1]["indices"]);
+  for (const char* a : {"POSITION", "NORMAL", "TANGENT", "TEXCOORD_0", "TEXCOORD_1", "COLOR_0", "JOINTS_0",
+                        "WEIGHTS_0"}) {
+    EXPECT_TRUE(prims[0]["attributes"].contains(a)) << a;
+  }
+  const json& pos = j["accessors"][prims[0]["attributes"]["POSITION"].get<int>()];
+  ASSERT_TRUE(pos.contains("min") && pos.contains("max"));
+  EXPECT_EQ(pos["min"], json({-1.0, 0.125, 0.0}));
+  EXPECT_EQ(pos["max"][0], 1.0);
+  const json& joints = j["accessors"][prims[0]["attributes"]["JOINTS_0"].get<int>()];
+  EXPECT_EQ(joints["componentType"], gltf::kUnsignedByte);
+  const json& idx = j["accessors"][prims[0]["indices"].get<int>()];
+  EXPECT_EQ(idx["componentType"], gltf::kUnsignedShort);
+  EXPECT_EQ(idx["count"], 30);
+  // Mesh 1 (no material ids): one primitive without a material; collides=false in extras.
+  ASSERT_EQ(j["meshes"][1]["primitives"].size(), 1u);
+  EXPECT_FALSE(j["meshes"][1]["primitives"][0].contains("material"));
+  EXPECT_EQ(j["meshes"][1]["extras"]["hullpack"]["collides"], false);
+  // Images: embedded with bufferView + mimeType, external as uri.
+  EXPECT_TRUE(j["images"][0].contains("bufferView"));
+  EXPECT_EQ(j["images"][0]["mimeType"], "image/png");
+  EXPECT_EQ(j["images"][1]["uri"], "textures/wood%20dark.jpg");
+  EXPECT_EQ(j["materials"][0]["normalTexture"]["texCoord"], 1);
+  EXPECT_FALSE(j["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"].contains("texCoord"));
+  // Nodes: identity matrices omitted; node 4's second mesh in an appended child.
+  EXPECT_FALSE(j["nodes"][1].contains("matrix"));
+  EXPECT_TRUE(j["nodes"][0].contains("matrix"));
+  ASSERT_EQ(j["nodes"].size(), 6u);
+  EXPECT_EQ(j["nodes"][4]["children"], json({5}));
+  EXPECT_EQ(j["nodes"][5]["mesh"], 2);
+  EXPECT_EQ(j["scenes"][0]["nodes"], json({0, 4}));
+  EXPECT_EQ(j["skins"][0]["joints"], json({1, 2}));
+  EXPECT_EQ(j["accessors"][j["skins"][0]["inverseBindMatrices"].get<int>()]["type"], "MAT4");
+  // Every bufferView starts 4-aligned and fits the buffer.
+  const size_t buffer_length = j["buffers"][0]["byteLength"].get<size_t>();
+  EXPECT_LE(buffer_length, doc.binary().size());
+  EXPECT_LT(doc.binary().size() - buffer_length, 4u);  // only the chunk's zero padding
+  for (const json& v : j["bufferViews"]) {
+    EXPECT_EQ(v.value("byteOffset", 0u) % 4, 0u);
+    EXPECT_LE(v.value("byteOffset", 0u) + v["byteLength"].get<size_t>(), buffer_length);
+  }
+}
+
+TEST(GlbWriterTest, LargeMeshUsesUnsignedIntIndices) {
+  const Scene scene = testing_gltf::MakeLargeScene();
+  ASSERT_GT(scene.meshes[0].vertex_count(), 65535u);
+  Result<std::vector<uint8_t>> glb = EncodeGlb(scene);
+  ASSERT_TRUE(glb.ok()) << glb.status().ToString();
+  const GltfDocument doc = Parse(glb.value());
+  const json& prim = doc.json()["meshes"][0]["primitives"][0];
+  EXPECT_EQ(doc.json()["accessors"][prim["indices"].get<int>()]["componentType"], gltf::kUnsignedInt);
+  Result<Scene> back = DecodeGlb(glb->data(), glb->size(), "large.glb");
+  ASSERT_TRUE(back.ok()) << back.status().ToString();
+  ExpectScenesEqual(scene, back.value());
+}
+
+TEST(GlbWriterTest, IndexTypeSwitchesExactlyAt65536Vertices) {
+  for (size_t vc : {65535u, 65536u}) {
+    Scene s;
+    Mesh m;
+    for (size_t v = 0; v < vc; ++v) m.positions.insert(m.positions.end(), {static_cast<float>(v), 0, 0});
+    m.indices = {0, 1, static_cast<uint32_t>(vc - 1)};
+    s.meshes.push_back(m);
+    Result<std::vector<uint8_t>> glb = EncodeGlb(s);
+    ASSERT_TRUE(glb.ok());
+    const GltfDocument doc = Parse(glb.value());
+    const int idx = doc.json()["meshes"][0]["primitives"][0]["indices"].get<int>();
+    EXPECT_EQ(doc.json()["accessors"][idx]["componentType"],
+              vc < 65536 ? gltf::kUnsignedShort : gltf::kUnsignedInt);
+    Result<Scene> back = DecodeGlb(glb->data(), glb->size(), "edge.glb");
+    ASSERT_TRUE(back.ok());
+    EXPECT_EQ(back->meshes[0].indices, m.indices);
+  }
+}
+
+TEST(GlbWriterTest, InterleavedMaterialIdsAreGroupedStably) {
+  Scene s;
+  s.materials.resize(3);
+  Mesh m = testing_gltf::MakeGrid(3, 1, 1, 0.0f);  // 6 triangles
+  m.material_ids = {2, 0, 2, 1, 0, 2};
+  s.meshes.push_back(m);
+  GltfDocument doc;
+  GltfSceneLayout layout;
+  ASSERT_TRUE(BuildGltfDocument(s, {}, &doc, &layout).ok());
+  ASSERT_EQ(layout.meshes.size(), 1u);
+  const std::vector<uint32_t> expected_order = {1, 4, 3, 0, 2, 5};
+  EXPECT_EQ(layout.meshes[0].triangle_order, expected_order);
+  ASSERT_EQ(layout.meshes[0].primitives.size(), 3u);
+  EXPECT_EQ(layout.meshes[0].primitives[0].material, 0);
+  EXPECT_EQ(layout.meshes[0].primitives[2].triangle_count, 3u);
+  Result<std::vector<uint8_t>> glb = doc.Serialize();
+  ASSERT_TRUE(glb.ok());
+  Result<Scene> back = DecodeGlb(glb->data(), glb->size(), "grouped.glb");
+  ASSERT_TRUE(back.ok()) << back.status().ToString();
+  const Mesh& b = back->meshes[0];
+  ASSERT_EQ(b.triangle_count(), 6u);
+  for (size_t t = 0; t < 6; ++t) {
+    const uint32_t src = expected_order[t];
+    EXPECT_EQ(b.material_ids[t], m.material_ids[src]);
+    for (size_t c = 0; c < 3; ++c) EXPECT_EQ(b.indices[3 * t + c], m.indices[3 * src + c]);
+  }
+  EXPECT_EQ(b.positions, m.positions);
+}
+
+TEST(GlbWriterTest, SceneWithoutNodesGetsOneNodePerMesh) {
+  Scene s;
+  s.meshes.push_back(testing_gltf::MakeGrid(1, 1, 0, 0.0f));
+  s.meshes.push_back(testing_gltf::MakeGrid(2, 1, 0, 1.0f));
+  s.meshes[1].name = "second";
+  Result<std::vector<uint8_t>> glb = EncodeGlb(s);
+  ASSERT_TRUE(glb.ok());
+  Result<Scene> back = DecodeGlb(glb->data(), glb->size(), "nodes.glb");
+  ASSERT_TRUE(back.ok());
+  ASSERT_EQ(back->nodes.size(), 2u);
+  EXPECT_EQ(back->nodes[0].meshes, std::vector<int>({0}));
+  EXPECT_EQ(back->nodes[1].meshes, std::vector<int>({1}));
+  EXPECT_EQ(back->nodes[1].name, "second");
+  EXPECT_EQ(back->nodes[1].parent, -1);
+}
+
+TEST(GlbWriterTest, WideJointIndicesUseUnsignedShort) {
+  Scene s = testing_gltf::MakeRichScene();
+  // A skin with 300 joints: every node 5.. is a child of joint1.
+  for (int i = 0; i < 298; ++i) {
+    Node n;
+    n.name = "extra joint " + std::to_string(i);
+    n.parent = 2;
+    s.nodes[2].children.push_back(static_cast<int>(s.nodes.size()));
+    s.skins[0].joints.push_back(static_cast<int>(s.nodes.size()));
+    s.nodes.push_back(n);
+  }
+  s.skins[0].inverse_bind_matrices.clear();
+  s.meshes[0].joints[1] = 299;
+  Result<std::vector<uint8_t>> glb = EncodeGlb(s);
+  ASSERT_TRUE(glb.ok()) << glb.status().ToString();
+  const GltfDocument doc = Parse(glb.value());
+  const int acc = doc.json()["meshes"][0]["primitives"][0]["attributes"]["JOINTS_0"].get<int>();
+  EXPECT_EQ(doc.json()["accessors"][acc]["componentType"], gltf::kUnsignedShort);
+  Result<Scene> back = DecodeGlb(glb->data(), glb->size(), "joints.glb");
+  ASSERT_TRUE(back.ok()) << back.status().ToString();
+  ExpectScenesEqual(s, back.value());
+}
+
+TEST(GlbWriterTest, RejectsInconsistentScenes) {
+  const Scene good = testing_gltf::MakeRichScene();
+  struct Case {
+    const char* what;
+    void (*mutate)(Scene&);
+    StatusCode code;
+  };
+  const Case cases[] = {
+      {"index out of range", [](Scene& s) { s.meshes[0].indices[4] = 1000; }, StatusCode::kInvalidMesh},
+      {"short normals", [](Scene& s) { s.meshes[0].normals.pop_back(); }, StatusCode::kInvalidMesh},
+      {"uv set size", [](Scene& s) { s.meshes[0].uv_sets[1].resize(3); }, StatusCode::kInvalidMesh},
+      {"NaN position", [](Scene& s) { s.meshes[1].positions[0] = std::nanf(""); }, StatusCode::kInvalidMesh},
+      {"material id", [](Scene& s) { s.meshes[0].material_ids[0] = 7; }, StatusCode::kInvalidMesh},
+      {"no triangles", [](Scene& s) { s.meshes[2].indices.clear(); }, StatusCode::kInvalidMesh},
+      {"weights without joints", [](Scene& s) { s.meshes[0].joints.clear(); }, StatusCode::kInvalidMesh},
+      {"texture image", [](Scene& s) { s.materials[0].normal_texture.image = 9; }, StatusCode::kInvalidArgument},
+      {"skin joint", [](Scene& s) { s.skins[0].joints.push_back(42); }, StatusCode::kInvalidArgument},
+      {"ibm count", [](Scene& s) { s.skins[0].inverse_bind_matrices.resize(20); }, StatusCode::kInvalidArgument},
+      {"joint index vs skin", [](Scene& s) { s.meshes[0].joints[0] = 5; }, StatusCode::kInvalidArgument},
+      {"child parent mismatch", [](Scene& s) { s.nodes[2].parent = 0; }, StatusCode::kInvalidArgument},
+      {"cycle",
+       [](Scene& s) {
+         s.nodes[0].parent = 2;
+         s.nodes[2].children.push_back(0);
+       },
+       StatusCode::kInvalidArgument},
+      {"node mesh", [](Scene& s) { s.nodes[4].meshes.push_back(3); }, StatusCode::kInvalidArgument},
+      {"image without data", [](Scene& s) { s.images[0].bytes.clear(); }, StatusCode::kInvalidArgument},
+  };
+  for (const Case& c : cases) {
+    Scene s = good;
+    c.mutate(s);
+    Result<std::vector<uint8_t>> glb = EncodeGlb(s);
+    ASSERT_FALSE(glb.ok()) << c.what;
+    EXPECT_EQ(glb.status().code(), c.code) << c.what << ": " << glb.status().ToString();
+  }
+}
+
+TEST(GlbWriterTest, OptionsChangeGeneratorAndJointType) {
+  GlbWriteOptions options;
+  options.generator = "hullpack test 1.2";
+  options.compact_joints = false;
+  Result<std::vector<uint8_t>> glb = EncodeGlb(testing_gltf::MakeRichScene(), options);
+  ASSERT_TRUE(glb.ok());
+  const GltfDocument doc = Parse(glb.value());
+  EXPECT_EQ(doc.json()["asset"]["generator"], "hullpack test 1.2");
+  const int acc = doc.json()["meshes"][0]["primitives"][0]["attributes"]["JOINTS_0"].get<int>();
+  EXPECT_EQ(doc.json()["accessors"][acc]["componentType"], gltf::kUnsignedShort);
+}
+
+TEST(GlbWriterTest, PackerCanExtendTheDocument) {
+  // What the packaging stage does: build the plain document, add a compressed stream and extensions.
+  const Scene scene = testing_gltf::MakeRichScene();
+  GltfDocument doc;
+  GltfSceneLayout layout;
+  ASSERT_TRUE(BuildGltfDocument(scene, {}, &doc, &layout).ok());
+  const std::vector<uint8_t> stream = {1, 2, 3, 4, 5};
+  const int view = doc.AddBufferView(stream, 8);
+  json& prim = doc.json()["meshes"][layout.meshes[2].gltf_mesh]["primitives"][0];
+  prim["extensions"]["EXT_hullpack_test"] = {{"bufferView", view}};
+  doc.json()["nodes"][layout.mesh_nodes[0][0]]["extensions"]["EXT_hullpack_body"] = {{"mass", 2}};
+  doc.json()["extensions"]["EXT_hullpack_body"] = {{"shapes", json::array()}};
+  doc.UseExtension("EXT_hullpack_test", true);
+  doc.UseExtension("EXT_hullpack_body", false);
+  doc.UseExtension("EXT_hullpack_test", true);
+  Result<std::vector<uint8_t>> glb = doc.Serialize();
+  ASSERT_TRUE(glb.ok());
+  const GltfDocument parsed = Parse(glb.value());
+  EXPECT_EQ(parsed.json()["extensionsUsed"], json({"EXT_hullpack_test", "EXT_hullpack_body"}));
+  EXPECT_EQ(parsed.json()["extensionsRequired"], json({"EXT_hullpack_test"}));
+  const json& v = parsed.json()["bufferViews"][view];
+  EXPECT_EQ(v["byteOffset"].get<size_t>() % 8, 0u);
+  EXPECT_EQ(0, std::memcmp(parsed.binary().data() + v["byteOffset"].get<size_t>(), stream.data(), 5));
+  // The plain reader refuses the unknown required extension unless the caller handles it.
+  Result<Scene> plain = DecodeGltfDocument(parsed, "ext.glb");
+  ASSERT_FALSE(plain.ok());
+  EXPECT_EQ(plain.status().code(), StatusCode::kUnsupported);
+  EXPECT_NE(plain.status().message().find("EXT_hullpack_test"), std::string::npos);
+  GltfReadOptions options;
+  options.handled_extensions = {"EXT_hullpack_test", "EXT_hullpack_body"};
+  Result<Scene> handled = DecodeGltfDocument(parsed, "ext.glb", options);
+  ASSERT_TRUE(handled.ok()) << handled.status().ToString();
+  ExpectScenesEqual(scene, handled.value());
+  EXPECT_TRUE(handled->dropped.empty());
+}
+
+}  // namespace
+}  // namespace hullpack

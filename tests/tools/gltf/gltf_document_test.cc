@@ -1,0 +1,147 @@
+#include "gltf/gltf_document.h"
+
+#include <gtest/gtest.h>
+
+namespace hullpack {
+namespace {
+
+using nlohmann::json;
+
+uint32_t U32(const std::vector<uint8_t>& b, size_t at) {
+  return static_cast<uint32_t>(b[at]) | (static_cast<uint32_t>(b[at + 1]) << 8) |
+         (static_cast<uint32_t>(b[at + 2]) << 16) | (static_cast<uint32_t>(b[at + 3]) << 24);
+}
+
+TEST(GltfDocumentTest, ComponentTables) {
+  EXPECT_EQ(gltf::ComponentSize(gltf::kByte), 1u);
+  EXPECT_EQ(gltf::ComponentSize(gltf::kUnsignedShort), 2u);
+  EXPECT_EQ(gltf::ComponentSize(gltf::kUnsignedInt), 4u);
+  EXPECT_EQ(gltf::ComponentSize(gltf::kFloat), 4u);
+  EXPECT_EQ(gltf::ComponentSize(5124), 0u);  // INT is not a glTF 2.0 component type
+  EXPECT_EQ(gltf::ComponentCount("VEC3"), 3);
+  EXPECT_EQ(gltf::ComponentCount("MAT4"), 16);
+  EXPECT_EQ(gltf::ComponentCount("vec3"), 0);
+}
+
+TEST(GltfDocumentTest, AlignedAppendsAndAccessors) {
+  GltfDocument doc;
+  const uint8_t three[3] = {7, 8, 9};
+  EXPECT_EQ(doc.AddBufferView(three, 3, 1), 0);
+  const float f[2] = {1.5f, -2.0f};
+  EXPECT_EQ(doc.AddBufferView(f, sizeof f, 4, gltf::kArrayBuffer), 1);
+  const uint8_t one = 42;
+  EXPECT_EQ(doc.AddBufferView(&one, 1, 16, gltf::kNoTarget, 4), 2);
+  const json& views = doc.json()["bufferViews"];
+  EXPECT_EQ(views[0]["byteOffset"], 0);
+  EXPECT_EQ(views[1]["byteOffset"], 4);
+  EXPECT_EQ(views[1]["target"], gltf::kArrayBuffer);
+  EXPECT_FALSE(views[0].contains("target"));
+  EXPECT_EQ(views[2]["byteOffset"], 16);
+  EXPECT_EQ(views[2]["byteStride"], 4);
+  EXPECT_EQ(doc.binary().size(), 17u);
+  EXPECT_EQ(doc.binary()[3], 0);  // zero-filled gap
+  AccessorDesc a;
+  a.buffer_view = 1;
+  a.count = 2;
+  a.min = {-2};
+  a.max = {1.5};
+  EXPECT_EQ(doc.AddAccessor(a), 0);
+  AccessorDesc b;  // no bufferView: the accessor omits it (and byteOffset)
+  b.byte_offset = 8;
+  b.count = 3;
+  b.type = "VEC3";
+  b.normalized = true;
+  b.component_type = gltf::kUnsignedByte;
+  EXPECT_EQ(doc.AddAccessor(b), 1);
+  const json& acc = doc.json()["accessors"];
+  EXPECT_EQ(acc[0]["min"], json({-2.0}));
+  EXPECT_FALSE(acc[1].contains("bufferView"));
+  EXPECT_FALSE(acc[1].contains("byteOffset"));
+  EXPECT_EQ(acc[1]["normalized"], true);
+}
+
+TEST(GltfDocumentTest, SerializeWritesAPaddedGlb) {
+  GltfDocument doc;
+  const uint8_t five[5] = {1, 2, 3, 4, 5};
+  doc.AddBufferView(five, 5, 4);
+  doc.json()["asset"]["generator"] = "x";  // odd JSON length forces padding
+  Result<std::vector<uint8_t>> glb = doc.Serialize();
+  ASSERT_TRUE(glb.ok());
+  const std::vector<uint8_t>& b = glb.value();
+  EXPECT_EQ(U32(b, 0), gltf::kGlbMagic);
+  EXPECT_EQ(U32(b, 4), 2u);
+  EXPECT_EQ(U32(b, 8), b.size());
+  const uint32_t json_len = U32(b, 12);
+  EXPECT_EQ(U32(b, 16), gltf::kChunkJson);
+  EXPECT_EQ(json_len % 4, 0u);
+  const size_t bin_at = 20 + json_len;
+  EXPECT_EQ(U32(b, bin_at), 8u);  // 5 bytes padded to 8
+  EXPECT_EQ(U32(b, bin_at + 4), gltf::kChunkBin);
+  EXPECT_EQ(b.size(), bin_at + 8 + 8);
+  EXPECT_EQ(b[bin_at + 8 + 5], 0);
+  const std::string text(b.begin() + 20, b.begin() + 20 + json_len);
+  EXPECT_EQ(text[text.find_last_not_of(' ')], '}');  // the rest is space padding
+  const json parsed = json::parse(text);
+  EXPECT_EQ(parsed["buffers"][0]["byteLength"], 5);
+  Result<GltfDocument> back = ParseGlb(b.data(), b.size(), "doc.glb");
+  ASSERT_TRUE(back.ok()) << back.status().ToString();
+  EXPECT_TRUE(back->has_binary_chunk());
+  EXPECT_EQ(back->binary().size(), 8u);
+  EXPECT_EQ(back->json()["asset"]["generator"], "x");
+  EXPECT_EQ(back->source_size(), b.size());
+}
+
+TEST(GltfDocumentTest, SerializeWithoutBinaryHasNoBinChunk) {
+  GltfDocument doc;
+  Result<std::vector<uint8_t>> glb = doc.Serialize();
+  ASSERT_TRUE(glb.ok());
+  EXPECT_EQ(U32(glb.value(), 8), glb->size());
+  EXPECT_EQ(glb->size(), 20u + U32(glb.value(), 12));
+  EXPECT_FALSE(json::parse(std::string(glb->begin() + 20, glb->end())).contains("buffers"));
+}
+
+TEST(GltfDocumentTest, SerializeReplacesInvalidUtf8InNames) {
+  GltfDocument doc;
+  doc.Append("nodes", json{{"name", std::string("bad\xff name")}});
+  Result<std::vector<uint8_t>> glb = doc.Serialize();
+  ASSERT_TRUE(glb.ok());
+  Result<GltfDocument> back = ParseGlb(glb->data(), glb->size(), "utf8.glb");
+  ASSERT_TRUE(back.ok()) << back.status().ToString();
+  EXPECT_NE(back->json()["nodes"][0]["name"].get<std::string>().find("name"), std::string::npos);
+}
+
+TEST(GltfDocumentTest, SerializeRefusesBufferZeroWithUri) {
+  GltfDocument doc;
+  doc.Append("buffers", json{{"uri", "data.bin"}, {"byteLength", 4}});
+  const uint8_t four[4] = {1, 2, 3, 4};
+  doc.AddBufferView(four, 4, 4);
+  Result<std::vector<uint8_t>> glb = doc.Serialize();
+  EXPECT_FALSE(glb.ok());
+  EXPECT_EQ(glb.status().code(), StatusCode::kInvalidArgument);
+}
+
+TEST(GltfDocumentTest, UseExtensionListsOnce) {
+  GltfDocument doc;
+  doc.UseExtension("A", false);
+  doc.UseExtension("B", true);
+  doc.UseExtension("A", true);
+  EXPECT_EQ(doc.json()["extensionsUsed"], json({"A", "B"}));
+  EXPECT_EQ(doc.json()["extensionsRequired"], json({"B", "A"}));
+}
+
+TEST(GltfDocumentTest, ParseGltfBytesDetectsJson) {
+  const std::string text = R"({"asset":{"version":"2.0"},"nodes":[{}]})";
+  Result<GltfDocument> doc =
+      ParseGltfBytes(reinterpret_cast<const uint8_t*>(text.data()), text.size(), "a.gltf");
+  ASSERT_TRUE(doc.ok());
+  EXPECT_FALSE(doc->has_binary_chunk());
+  EXPECT_EQ(doc->json()["nodes"].size(), 1u);
+  const std::string bad = "[1,2";
+  Result<GltfDocument> broken = ParseGltfBytes(reinterpret_cast<const uint8_t*>(bad.data()), bad.size(), "b.gltf");
+  ASSERT_FALSE(broken.ok());
+  EXPECT_EQ(broken.status().code(), StatusCode::kParseError);
+  EXPECT_EQ(broken.status().message().rfind("b.gltf: ", 0), 0u);
+}
+
+}  // namespace
+}  // namespace hullpack

@@ -1,0 +1,224 @@
+#include "gltf_test_scenes.h"
+
+#include <cmath>
+#include <cstring>
+
+#include <gtest/gtest.h>
+
+namespace hullpack {
+namespace testing_gltf {
+
+const std::vector<uint8_t>& TinyPng() {
+  static const std::vector<uint8_t> kPng = {
+      0x89, 0x50, 0x4E, 0x47, 0x0D, 0x0A, 0x1A, 0x0A, 0x00, 0x00, 0x00, 0x0D, 0x49, 0x48, 0x44, 0x52, 0x00, 0x00,
+      0x00, 0x01, 0x00, 0x00, 0x00, 0x01, 0x08, 0x06, 0x00, 0x00, 0x00, 0x1F, 0x15, 0xC4, 0x89, 0x00, 0x00, 0x00,
+      0x0D, 0x49, 0x44, 0x41, 0x54, 0x78, 0x9C, 0x63, 0xF8, 0xDF, 0xC0, 0xF0, 0x1F, 0x00, 0x06, 0x80, 0x02, 0x7F,
+      0x10, 0x4C, 0x1B, 0xE1, 0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4E, 0x44, 0xAE, 0x42, 0x60, 0x82};
+  return kPng;
+}
+
+Mesh MakeGrid(int nx, int ny, int uv_sets, float z) {
+  Mesh m;
+  m.uv_sets.resize(static_cast<size_t>(uv_sets));
+  for (int y = 0; y <= ny; ++y) {
+    for (int x = 0; x <= nx; ++x) {
+      const float fx = static_cast<float>(x) / static_cast<float>(nx);
+      const float fy = static_cast<float>(y) / static_cast<float>(ny);
+      m.positions.insert(m.positions.end(), {fx * 2.0f - 1.0f, fy * 3.0f + 0.125f, z + 0.1f * fx * fy});
+      m.normals.insert(m.normals.end(), {0.0f, 0.0f, 1.0f});
+      m.tangents.insert(m.tangents.end(), {1.0f, 0.0f, 0.0f, (x % 2) ? -1.0f : 1.0f});
+      for (int u = 0; u < uv_sets; ++u) {
+        m.uv_sets[static_cast<size_t>(u)].insert(m.uv_sets[static_cast<size_t>(u)].end(),
+                                                  {fx * static_cast<float>(u + 1), 1.0f - fy});
+      }
+      m.colors.insert(m.colors.end(), {fx, fy, 0.5f, 1.0f - 0.25f * fx});
+    }
+  }
+  const uint32_t row = static_cast<uint32_t>(nx + 1);
+  for (uint32_t y = 0; y < static_cast<uint32_t>(ny); ++y) {
+    for (uint32_t x = 0; x < static_cast<uint32_t>(nx); ++x) {
+      const uint32_t a = y * row + x, b = a + 1, c = a + row, d = c + 1;
+      m.indices.insert(m.indices.end(), {a, b, d, a, d, c});
+    }
+  }
+  return m;
+}
+
+Scene MakeRichScene() {
+  Scene s;
+  Image png;
+  png.name = "checker";
+  png.mime_type = "image/png";
+  png.bytes = TinyPng();
+  s.images.push_back(png);
+  Image external;
+  external.name = "wood";
+  external.uri = "textures/wood%20dark.jpg";
+  external.mime_type = "image/jpeg";
+  s.images.push_back(external);
+
+  Material m0;
+  m0.name = "painted";
+  m0.base_color = {0.8f, 0.25f, 0.125f, 1.0f};
+  m0.metallic = 0.0f;
+  m0.roughness = 0.5f;
+  m0.base_color_texture = {0, 0};
+  m0.normal_texture = {0, 1};
+  s.materials.push_back(m0);
+  Material m1;
+  m1.name = "metal";
+  m1.metallic = 1.0f;
+  m1.roughness = 0.25f;
+  m1.emissive = {0.5f, 0.25f, 0.0f};
+  m1.double_sided = true;
+  m1.metallic_roughness_texture = {1, 0};
+  m1.occlusion_texture = {1, 1};
+  m1.emissive_texture = {0, 0};
+  s.materials.push_back(m1);
+
+  Mesh skinned = MakeGrid(4, 3, 2, 0.0f);
+  skinned.name = "skinned grid";
+  const size_t vc = skinned.vertex_count();
+  for (size_t v = 0; v < vc; ++v) {
+    const float w = static_cast<float>(v % 5) / 4.0f;  // exact binary fractions, sums to 1
+    skinned.joints.insert(skinned.joints.end(), {0, 1, 0, 0});
+    skinned.weights.insert(skinned.weights.end(), {1.0f - w, w, 0.0f, 0.0f});
+  }
+  // Non-decreasing material ids: the first 10 triangles metal-free, the rest metal.
+  for (size_t t = 0; t < skinned.triangle_count(); ++t) skinned.material_ids.push_back(t < 10 ? 0 : 1);
+  s.meshes.push_back(skinned);
+
+  Mesh hull = MakeGrid(2, 2, 0, 1.0f);
+  hull.name = "trigger volume";
+  hull.colors.clear();
+  hull.tangents.clear();
+  hull.collides = false;
+  s.meshes.push_back(hull);
+
+  Mesh plain;
+  plain.name = "tetra";
+  plain.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+  plain.indices = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+  plain.material_ids = {1, 1, 1, 1};
+  s.meshes.push_back(plain);
+
+  // Nodes: 0 root -> {1 joint0 -> 2 joint1, 3 skinned}; 4 root with two meshes.
+  s.nodes.resize(5);
+  s.nodes[0].name = "root";
+  s.nodes[0].children = {1, 3};
+  s.nodes[0].local_transform = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 2.5, -1, 0.75, 1};
+  s.nodes[1].name = "joint0";
+  s.nodes[1].parent = 0;
+  s.nodes[1].children = {2};
+  s.nodes[2].name = "joint1";
+  s.nodes[2].parent = 1;
+  s.nodes[2].local_transform = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 1.5, 0, 1};
+  s.nodes[3].name = "skinned";
+  s.nodes[3].parent = 0;
+  s.nodes[3].meshes = {0};
+  s.nodes[3].skin = 0;
+  s.nodes[4].name = "multi";
+  s.nodes[4].meshes = {1, 2};
+  // 90 degrees about z, scaled by 2.
+  s.nodes[4].local_transform = {0, 2, 0, 0, -2, 0, 0, 0, 0, 0, 2, 0, 0, 0, -3, 1};
+
+  Skin skin;
+  skin.name = "rig";
+  skin.joints = {1, 2};
+  skin.skeleton = 1;
+  const float ibm0[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  const float ibm1[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -1.5f, 0, 1};
+  skin.inverse_bind_matrices.assign(ibm0, ibm0 + 16);
+  skin.inverse_bind_matrices.insert(skin.inverse_bind_matrices.end(), ibm1, ibm1 + 16);
+  s.skins.push_back(skin);
+  return s;
+}
+
+Scene MakeLargeScene() {
+  Scene s;
+  Mesh m = MakeGrid(300, 250, 1, 0.0f);  // 301 * 251 = 75551 vertices
+  m.name = "large";
+  s.meshes.push_back(m);
+  AddRootNodeForAllMeshes(s, "large root");
+  return s;
+}
+
+namespace {
+
+template <typename T>
+void ExpectBitEqual(const std::vector<T>& a, const std::vector<T>& b, const std::string& what) {
+  ASSERT_EQ(a.size(), b.size()) << what;
+  if (!a.empty()) {
+    EXPECT_EQ(0, std::memcmp(a.data(), b.data(), a.size() * sizeof(T))) << what;
+  }
+}
+
+}  // namespace
+
+void ExpectScenesEqual(const Scene& e, const Scene& a) {
+  ASSERT_EQ(e.meshes.size(), a.meshes.size());
+  for (size_t i = 0; i < e.meshes.size(); ++i) {
+    const Mesh& em = e.meshes[i];
+    const Mesh& am = a.meshes[i];
+    const std::string w = "mesh " + std::to_string(i) + " ";
+    EXPECT_EQ(em.name, am.name) << w;
+    EXPECT_EQ(em.collides, am.collides) << w;
+    ExpectBitEqual(em.positions, am.positions, w + "positions");
+    ExpectBitEqual(em.indices, am.indices, w + "indices");
+    ExpectBitEqual(em.normals, am.normals, w + "normals");
+    ExpectBitEqual(em.tangents, am.tangents, w + "tangents");
+    ASSERT_EQ(em.uv_sets.size(), am.uv_sets.size()) << w;
+    for (size_t u = 0; u < em.uv_sets.size(); ++u) ExpectBitEqual(em.uv_sets[u], am.uv_sets[u], w + "uv");
+    ExpectBitEqual(em.colors, am.colors, w + "colors");
+    ExpectBitEqual(em.joints, am.joints, w + "joints");
+    ExpectBitEqual(em.weights, am.weights, w + "weights");
+    ExpectBitEqual(em.material_ids, am.material_ids, w + "material_ids");
+  }
+  ASSERT_EQ(e.materials.size(), a.materials.size());
+  for (size_t i = 0; i < e.materials.size(); ++i) {
+    const Material& em = e.materials[i];
+    const Material& am = a.materials[i];
+    const std::string w = "material " + std::to_string(i);
+    EXPECT_EQ(em.name, am.name) << w;
+    EXPECT_EQ(em.base_color, am.base_color) << w;
+    EXPECT_EQ(em.metallic, am.metallic) << w;
+    EXPECT_EQ(em.roughness, am.roughness) << w;
+    EXPECT_EQ(em.emissive, am.emissive) << w;
+    EXPECT_EQ(em.double_sided, am.double_sided) << w;
+    const TextureRef* et[] = {&em.base_color_texture, &em.metallic_roughness_texture, &em.normal_texture,
+                              &em.occlusion_texture, &em.emissive_texture};
+    const TextureRef* at[] = {&am.base_color_texture, &am.metallic_roughness_texture, &am.normal_texture,
+                              &am.occlusion_texture, &am.emissive_texture};
+    for (int k = 0; k < 5; ++k) {
+      EXPECT_EQ(et[k]->image, at[k]->image) << w << " slot " << k;
+      EXPECT_EQ(et[k]->uv_set, at[k]->uv_set) << w << " slot " << k;
+    }
+  }
+  ASSERT_EQ(e.images.size(), a.images.size());
+  for (size_t i = 0; i < e.images.size(); ++i) {
+    EXPECT_EQ(e.images[i].name, a.images[i].name);
+    EXPECT_EQ(e.images[i].uri, a.images[i].uri);
+    EXPECT_EQ(e.images[i].mime_type, a.images[i].mime_type);
+    EXPECT_EQ(e.images[i].bytes, a.images[i].bytes);
+  }
+  ASSERT_EQ(e.skins.size(), a.skins.size());
+  for (size_t i = 0; i < e.skins.size(); ++i) {
+    EXPECT_EQ(e.skins[i].name, a.skins[i].name);
+    EXPECT_EQ(e.skins[i].joints, a.skins[i].joints);
+    EXPECT_EQ(e.skins[i].skeleton, a.skins[i].skeleton);
+    ExpectBitEqual(e.skins[i].inverse_bind_matrices, a.skins[i].inverse_bind_matrices, "ibm");
+  }
+  ASSERT_EQ(e.nodes.size(), a.nodes.size());
+  for (size_t i = 0; i < e.nodes.size(); ++i) {
+    const std::string w = "node " + std::to_string(i);
+    EXPECT_EQ(e.nodes[i].name, a.nodes[i].name) << w;
+    EXPECT_EQ(e.nodes[i].parent, a.nodes[i].parent) << w;
+    EXPECT_EQ(e.nodes[i].children, a.nodes[i].children) << w;
+    EXPECT_EQ(e.nodes[i].local_transform, a.nodes[i].local_transform) << w;
+    EXPECT_EQ(e.nodes[i].meshes, a.nodes[i].meshes) << w;
+    EXPECT_EQ(e.nodes[i].skin, a.nodes[i].skin) << w;
+  }
+}
+
+}  // namespace testing_gltf
+}  // namespace hullpack

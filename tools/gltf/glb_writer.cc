@@ -1,0 +1,476 @@
+#include "gltf/glb_writer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <utility>
+
+namespace hullpack {
+namespace {
+
+using nlohmann::json;
+
+Status MeshError(size_t mesh_index, const Mesh& mesh, const std::string& what) {
+  std::string label = "mesh " + std::to_string(mesh_index);
+  if (!mesh.name.empty()) label += " '" + mesh.name + "'";
+  return Status(StatusCode::kInvalidMesh, label + ": " + what);
+}
+
+Status ArgError(const std::string& what) { return Status(StatusCode::kInvalidArgument, what); }
+
+bool AllFinite(const std::vector<float>& v) {
+  for (float f : v) {
+    if (!std::isfinite(f)) return false;
+  }
+  return true;
+}
+
+template <typename Array>
+bool AllFiniteArray(const Array& v) {
+  for (auto f : v) {
+    if (!std::isfinite(f)) return false;
+  }
+  return true;
+}
+
+// "image/png" / "image/jpeg" from the first bytes, or "" when unrecognised.
+std::string SniffImageMime(const std::vector<uint8_t>& b) {
+  static const uint8_t kPng[8] = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A};
+  if (b.size() >= 8 && std::equal(kPng, kPng + 8, b.begin())) return "image/png";
+  if (b.size() >= 3 && b[0] == 0xFF && b[1] == 0xD8 && b[2] == 0xFF) return "image/jpeg";
+  if (b.size() >= 12 && std::equal(b.begin(), b.begin() + 4, "RIFF") &&
+      std::equal(b.begin() + 8, b.begin() + 12, "WEBP")) {
+    return "image/webp";
+  }
+  return "";
+}
+
+Status CheckPerVertex(size_t mesh_index, const Mesh& mesh, size_t got, size_t width,
+                      const char* what) {
+  if (got != 0 && got != width * mesh.vertex_count()) {
+    return MeshError(mesh_index, mesh,
+                     std::string(what) + " has " + std::to_string(got) + " values, expected " +
+                         std::to_string(width * mesh.vertex_count()) + " (" +
+                         std::to_string(width) + " per vertex) or none");
+  }
+  return Status::Ok();
+}
+
+Status CheckTextureRef(const Scene& scene, size_t material_index, const TextureRef& ref,
+                       const char* slot) {
+  if (!ref.used()) return Status::Ok();
+  if (static_cast<size_t>(ref.image) >= scene.images.size()) {
+    return ArgError("material " + std::to_string(material_index) + " " + slot + " references image " +
+                    std::to_string(ref.image) + " of " + std::to_string(scene.images.size()));
+  }
+  if (ref.uv_set < 0) {
+    return ArgError("material " + std::to_string(material_index) + " " + slot + " has uv set " +
+                    std::to_string(ref.uv_set));
+  }
+  return Status::Ok();
+}
+
+std::vector<uint8_t> Bytes(const void* data, size_t size) {
+  const uint8_t* p = static_cast<const uint8_t*>(data);
+  return std::vector<uint8_t>(p, p + size);
+}
+
+// Adds a tightly packed vertex-attribute bufferView + accessor for `values` (`width` per vertex).
+int AddFloatAttribute(GltfDocument* doc, const std::vector<float>& values, int width,
+                      const char* type, bool with_bounds) {
+  AccessorDesc desc;
+  desc.buffer_view = doc->AddBufferView(values.data(), values.size() * sizeof(float), 4, gltf::kArrayBuffer);
+  desc.component_type = gltf::kFloat;
+  desc.count = values.size() / static_cast<size_t>(width);
+  desc.type = type;
+  if (with_bounds) {
+    desc.min.assign(static_cast<size_t>(width), std::numeric_limits<double>::infinity());
+    desc.max.assign(static_cast<size_t>(width), -std::numeric_limits<double>::infinity());
+    for (size_t i = 0; i < values.size(); ++i) {
+      const size_t c = i % static_cast<size_t>(width);
+      desc.min[c] = std::min(desc.min[c], static_cast<double>(values[i]));
+      desc.max[c] = std::max(desc.max[c], static_cast<double>(values[i]));
+    }
+  }
+  return doc->AddAccessor(desc);
+}
+
+json TextureInfo(const TextureRef& ref, std::map<int, int>* texture_of_image, GltfDocument* doc) {
+  auto it = texture_of_image->find(ref.image);
+  int texture;
+  if (it == texture_of_image->end()) {
+    texture = doc->Append("textures", json{{"source", ref.image}});
+    texture_of_image->emplace(ref.image, texture);
+  } else {
+    texture = it->second;
+  }
+  json info = {{"index", texture}};
+  if (ref.uv_set != 0) info["texCoord"] = ref.uv_set;
+  return info;
+}
+
+}  // namespace
+
+Status ValidateSceneForGltf(const Scene& scene) {
+  for (size_t mi = 0; mi < scene.meshes.size(); ++mi) {
+    const Mesh& m = scene.meshes[mi];
+    if (m.positions.size() % 3 != 0) return MeshError(mi, m, "positions is not a multiple of 3");
+    const size_t vc = m.vertex_count();
+    if (vc == 0) return MeshError(mi, m, "no vertices (glTF has no empty meshes)");
+    if (vc > std::numeric_limits<uint32_t>::max()) return MeshError(mi, m, "more than 2^32-1 vertices");
+    if (m.indices.empty() || m.indices.size() % 3 != 0) {
+      return MeshError(mi, m, "indices must be a non-empty multiple of 3, got " + std::to_string(m.indices.size()));
+    }
+    for (size_t i = 0; i < m.indices.size(); ++i) {
+      if (m.indices[i] >= vc) {
+        return MeshError(mi, m, "index " + std::to_string(i) + " is " + std::to_string(m.indices[i]) +
+                                    " but there are " + std::to_string(vc) + " vertices");
+      }
+    }
+    Status s = CheckPerVertex(mi, m, m.normals.size(), 3, "normals");
+    if (s.ok()) s = CheckPerVertex(mi, m, m.tangents.size(), 4, "tangents");
+    if (s.ok()) s = CheckPerVertex(mi, m, m.colors.size(), 4, "colors");
+    if (s.ok()) s = CheckPerVertex(mi, m, m.joints.size(), 4, "joints");
+    if (s.ok()) s = CheckPerVertex(mi, m, m.weights.size(), 4, "weights");
+    for (size_t u = 0; s.ok() && u < m.uv_sets.size(); ++u) {
+      if (m.uv_sets[u].size() != 2 * vc) {
+        s = MeshError(mi, m, "uv set " + std::to_string(u) + " has " + std::to_string(m.uv_sets[u].size()) +
+                                 " values, expected " + std::to_string(2 * vc));
+      }
+    }
+    if (!s.ok()) return s;
+    if (m.joints.empty() != m.weights.empty()) {
+      return MeshError(mi, m, "joints and weights must both be present or both be absent");
+    }
+    bool finite = AllFinite(m.positions) && AllFinite(m.normals) && AllFinite(m.tangents) &&
+                  AllFinite(m.colors) && AllFinite(m.weights);
+    for (const auto& uv : m.uv_sets) finite = finite && AllFinite(uv);
+    if (!finite) return MeshError(mi, m, "a vertex attribute holds NaN or infinity");
+    if (!m.material_ids.empty()) {
+      if (m.material_ids.size() != m.triangle_count()) {
+        return MeshError(mi, m, "material_ids has " + std::to_string(m.material_ids.size()) +
+                                    " entries for " + std::to_string(m.triangle_count()) + " triangles");
+      }
+      for (size_t t = 0; t < m.material_ids.size(); ++t) {
+        if (m.material_ids[t] >= scene.materials.size()) {
+          return MeshError(mi, m, "triangle " + std::to_string(t) + " uses material " +
+                                      std::to_string(m.material_ids[t]) + " of " +
+                                      std::to_string(scene.materials.size()));
+        }
+      }
+    }
+  }
+  for (size_t i = 0; i < scene.materials.size(); ++i) {
+    const Material& mat = scene.materials[i];
+    if (!AllFiniteArray(mat.base_color) || !AllFiniteArray(mat.emissive) ||
+        !std::isfinite(mat.metallic) || !std::isfinite(mat.roughness)) {
+      return ArgError("material " + std::to_string(i) + " has a NaN or infinite factor");
+    }
+    Status s = CheckTextureRef(scene, i, mat.base_color_texture, "base colour texture");
+    if (s.ok()) s = CheckTextureRef(scene, i, mat.metallic_roughness_texture, "metallic-roughness texture");
+    if (s.ok()) s = CheckTextureRef(scene, i, mat.normal_texture, "normal texture");
+    if (s.ok()) s = CheckTextureRef(scene, i, mat.occlusion_texture, "occlusion texture");
+    if (s.ok()) s = CheckTextureRef(scene, i, mat.emissive_texture, "emissive texture");
+    if (!s.ok()) return s;
+  }
+  for (size_t i = 0; i < scene.images.size(); ++i) {
+    const Image& img = scene.images[i];
+    if (img.uri.empty() && img.bytes.empty()) {
+      return ArgError("image " + std::to_string(i) + " has neither bytes nor a uri");
+    }
+    if (img.uri.empty() && img.mime_type.empty() && SniffImageMime(img.bytes).empty()) {
+      return ArgError("image " + std::to_string(i) + " has no mime type and is neither PNG, JPEG nor WebP");
+    }
+  }
+  const size_t node_count = scene.nodes.size();
+  for (size_t i = 0; i < scene.skins.size(); ++i) {
+    const Skin& skin = scene.skins[i];
+    if (skin.joints.empty()) return ArgError("skin " + std::to_string(i) + " has no joints");
+    std::vector<bool> seen(node_count, false);
+    for (int j : skin.joints) {
+      if (j < 0 || static_cast<size_t>(j) >= node_count) {
+        return ArgError("skin " + std::to_string(i) + " joint " + std::to_string(j) + " is not a node");
+      }
+      if (seen[static_cast<size_t>(j)]) {
+        return ArgError("skin " + std::to_string(i) + " lists node " + std::to_string(j) + " twice");
+      }
+      seen[static_cast<size_t>(j)] = true;
+    }
+    if (!skin.inverse_bind_matrices.empty() && skin.inverse_bind_matrices.size() != 16 * skin.joints.size()) {
+      return ArgError("skin " + std::to_string(i) + " has " + std::to_string(skin.inverse_bind_matrices.size()) +
+                      " inverse bind matrix values for " + std::to_string(skin.joints.size()) + " joints");
+    }
+    if (!AllFinite(skin.inverse_bind_matrices)) {
+      return ArgError("skin " + std::to_string(i) + " has a NaN or infinite inverse bind matrix");
+    }
+    if (skin.skeleton < -1 || skin.skeleton >= static_cast<int>(node_count)) {
+      return ArgError("skin " + std::to_string(i) + " skeleton " + std::to_string(skin.skeleton) + " is not a node");
+    }
+  }
+  for (size_t i = 0; i < node_count; ++i) {
+    const Node& n = scene.nodes[i];
+    const std::string label = "node " + std::to_string(i);
+    for (int m : n.meshes) {
+      if (m < 0 || static_cast<size_t>(m) >= scene.meshes.size()) {
+        return ArgError(label + " references mesh " + std::to_string(m));
+      }
+    }
+    if (n.skin != -1) {
+      if (n.skin < 0 || static_cast<size_t>(n.skin) >= scene.skins.size()) {
+        return ArgError(label + " references skin " + std::to_string(n.skin));
+      }
+      if (n.meshes.empty()) return ArgError(label + " has a skin but no mesh");
+      const size_t joint_count = scene.skins[static_cast<size_t>(n.skin)].joints.size();
+      for (int m : n.meshes) {
+        for (uint16_t j : scene.meshes[static_cast<size_t>(m)].joints) {
+          if (j >= joint_count) {
+            return ArgError(label + " skins mesh " + std::to_string(m) + " whose joint index " +
+                            std::to_string(j) + " exceeds the skin's " + std::to_string(joint_count) + " joints");
+          }
+        }
+      }
+    }
+    if (!AllFiniteArray(n.local_transform)) return ArgError(label + " has a NaN or infinite transform");
+    if (n.parent < -1 || n.parent >= static_cast<int>(node_count)) {
+      return ArgError(label + " has parent " + std::to_string(n.parent));
+    }
+    for (int c : n.children) {
+      if (c < 0 || static_cast<size_t>(c) >= node_count) {
+        return ArgError(label + " has child " + std::to_string(c));
+      }
+      if (scene.nodes[static_cast<size_t>(c)].parent != static_cast<int>(i)) {
+        return ArgError(label + " lists child " + std::to_string(c) + " whose parent is " +
+                        std::to_string(scene.nodes[static_cast<size_t>(c)].parent));
+      }
+    }
+    if (n.parent >= 0) {
+      const auto& siblings = scene.nodes[static_cast<size_t>(n.parent)].children;
+      if (std::count(siblings.begin(), siblings.end(), static_cast<int>(i)) != 1) {
+        return ArgError(label + " has parent " + std::to_string(n.parent) +
+                        " which does not list it exactly once as a child");
+      }
+    }
+  }
+  // Every node reaches a root within node_count steps, else there is a cycle.
+  for (size_t i = 0; i < node_count; ++i) {
+    int at = static_cast<int>(i);
+    size_t steps = 0;
+    while (at != -1) {
+      if (++steps > node_count) return ArgError("the node hierarchy has a cycle through node " + std::to_string(i));
+      at = scene.nodes[static_cast<size_t>(at)].parent;
+    }
+  }
+  return Status::Ok();
+}
+
+Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, GltfDocument* doc,
+                         GltfSceneLayout* layout) {
+  Status valid = ValidateSceneForGltf(scene);
+  if (!valid.ok()) return valid;
+  GltfSceneLayout local_layout;
+  GltfSceneLayout& out = layout != nullptr ? *layout : local_layout;
+  out = GltfSceneLayout();
+
+  json& root = doc->json();
+  root["asset"] = json{{"version", "2.0"}, {"generator", options.generator}};
+
+  // Images.
+  for (const Image& img : scene.images) {
+    json j = json::object();
+    if (!img.name.empty()) j["name"] = img.name;
+    if (!img.uri.empty()) {
+      j["uri"] = img.uri;
+      if (!img.mime_type.empty()) j["mimeType"] = img.mime_type;
+    } else {
+      j["bufferView"] = doc->AddBufferView(img.bytes, 4);
+      j["mimeType"] = img.mime_type.empty() ? SniffImageMime(img.bytes) : img.mime_type;
+    }
+    doc->Append("images", std::move(j));
+  }
+
+  // Materials (textures are created on first use, one per image).
+  std::map<int, int> texture_of_image;
+  for (const Material& mat : scene.materials) {
+    json j = json::object();
+    if (!mat.name.empty()) j["name"] = mat.name;
+    json pbr = {{"baseColorFactor", mat.base_color},
+                {"metallicFactor", mat.metallic},
+                {"roughnessFactor", mat.roughness}};
+    if (mat.base_color_texture.used()) {
+      pbr["baseColorTexture"] = TextureInfo(mat.base_color_texture, &texture_of_image, doc);
+    }
+    if (mat.metallic_roughness_texture.used()) {
+      pbr["metallicRoughnessTexture"] = TextureInfo(mat.metallic_roughness_texture, &texture_of_image, doc);
+    }
+    j["pbrMetallicRoughness"] = std::move(pbr);
+    if (mat.normal_texture.used()) j["normalTexture"] = TextureInfo(mat.normal_texture, &texture_of_image, doc);
+    if (mat.occlusion_texture.used()) {
+      j["occlusionTexture"] = TextureInfo(mat.occlusion_texture, &texture_of_image, doc);
+    }
+    if (mat.emissive_texture.used()) j["emissiveTexture"] = TextureInfo(mat.emissive_texture, &texture_of_image, doc);
+    if (mat.emissive != std::array<float, 3>{0, 0, 0}) j["emissiveFactor"] = mat.emissive;
+    if (mat.double_sided) j["doubleSided"] = true;
+    doc->Append("materials", std::move(j));
+  }
+
+  // Meshes.
+  out.meshes.resize(scene.meshes.size());
+  for (size_t mi = 0; mi < scene.meshes.size(); ++mi) {
+    const Mesh& m = scene.meshes[mi];
+    GltfSceneLayout::MeshLayout& ml = out.meshes[mi];
+    const size_t vc = m.vertex_count();
+    json attributes = json::object();
+    ml.position_accessor = AddFloatAttribute(doc, m.positions, 3, "VEC3", true);
+    attributes["POSITION"] = ml.position_accessor;
+    if (!m.normals.empty()) attributes["NORMAL"] = AddFloatAttribute(doc, m.normals, 3, "VEC3", false);
+    if (!m.tangents.empty()) attributes["TANGENT"] = AddFloatAttribute(doc, m.tangents, 4, "VEC4", false);
+    for (size_t u = 0; u < m.uv_sets.size(); ++u) {
+      attributes["TEXCOORD_" + std::to_string(u)] = AddFloatAttribute(doc, m.uv_sets[u], 2, "VEC2", false);
+    }
+    if (!m.colors.empty()) attributes["COLOR_0"] = AddFloatAttribute(doc, m.colors, 4, "VEC4", false);
+    if (!m.joints.empty()) {
+      const bool bytes = options.compact_joints &&
+                         *std::max_element(m.joints.begin(), m.joints.end()) < 256;
+      AccessorDesc desc;
+      if (bytes) {
+        std::vector<uint8_t> packed(m.joints.begin(), m.joints.end());
+        desc.buffer_view = doc->AddBufferView(packed, 4, gltf::kArrayBuffer);
+        desc.component_type = gltf::kUnsignedByte;
+      } else {
+        desc.buffer_view = doc->AddBufferView(m.joints.data(), m.joints.size() * sizeof(uint16_t), 4,
+                                              gltf::kArrayBuffer);
+        desc.component_type = gltf::kUnsignedShort;
+      }
+      desc.count = vc;
+      desc.type = "VEC4";
+      attributes["JOINTS_0"] = doc->AddAccessor(desc);
+      attributes["WEIGHTS_0"] = AddFloatAttribute(doc, m.weights, 4, "VEC4", false);
+    }
+
+    // Triangles grouped by material id, ascending; original order inside each group.
+    std::vector<std::pair<int, std::vector<uint32_t>>> groups;  // material -> triangle indices
+    if (m.material_ids.empty()) {
+      groups.emplace_back(-1, std::vector<uint32_t>());
+      groups.back().second.resize(m.triangle_count());
+      for (size_t t = 0; t < m.triangle_count(); ++t) groups.back().second[t] = static_cast<uint32_t>(t);
+    } else {
+      std::map<uint32_t, std::vector<uint32_t>> by_material;
+      for (size_t t = 0; t < m.material_ids.size(); ++t) {
+        by_material[m.material_ids[t]].push_back(static_cast<uint32_t>(t));
+      }
+      for (auto& kv : by_material) groups.emplace_back(static_cast<int>(kv.first), std::move(kv.second));
+    }
+
+    const bool short_indices = vc < 65536;
+    json primitives = json::array();
+    for (const auto& group : groups) {
+      std::vector<uint8_t> index_bytes;
+      const size_t n = group.second.size() * 3;
+      if (short_indices) {
+        std::vector<uint16_t> idx(n);
+        for (size_t k = 0; k < group.second.size(); ++k) {
+          for (size_t c = 0; c < 3; ++c) idx[3 * k + c] = static_cast<uint16_t>(m.indices[3 * group.second[k] + c]);
+        }
+        index_bytes = Bytes(idx.data(), idx.size() * sizeof(uint16_t));
+      } else {
+        std::vector<uint32_t> idx(n);
+        for (size_t k = 0; k < group.second.size(); ++k) {
+          for (size_t c = 0; c < 3; ++c) idx[3 * k + c] = m.indices[3 * group.second[k] + c];
+        }
+        index_bytes = Bytes(idx.data(), idx.size() * sizeof(uint32_t));
+      }
+      AccessorDesc desc;
+      desc.buffer_view = doc->AddBufferView(index_bytes, 4, gltf::kElementArrayBuffer);
+      desc.component_type = short_indices ? gltf::kUnsignedShort : gltf::kUnsignedInt;
+      desc.count = n;
+      desc.type = "SCALAR";
+      GltfSceneLayout::Primitive prim_layout;
+      prim_layout.material = group.first;
+      prim_layout.indices_accessor = doc->AddAccessor(desc);
+      prim_layout.triangle_count = group.second.size();
+      json prim = {{"attributes", attributes}, {"indices", prim_layout.indices_accessor}};
+      if (group.first >= 0) prim["material"] = group.first;
+      primitives.push_back(std::move(prim));
+      ml.primitives.push_back(prim_layout);
+      ml.triangle_order.insert(ml.triangle_order.end(), group.second.begin(), group.second.end());
+    }
+    json mesh_json = {{"primitives", std::move(primitives)}};
+    if (!m.name.empty()) mesh_json["name"] = m.name;
+    if (!m.collides) mesh_json["extras"] = json{{"hullpack", {{"collides", false}}}};
+    ml.gltf_mesh = doc->Append("meshes", std::move(mesh_json));
+  }
+
+  // Skins.
+  for (const Skin& skin : scene.skins) {
+    json j = {{"joints", skin.joints}};
+    if (!skin.name.empty()) j["name"] = skin.name;
+    if (skin.skeleton >= 0) j["skeleton"] = skin.skeleton;
+    if (!skin.inverse_bind_matrices.empty()) {
+      AccessorDesc desc;
+      desc.buffer_view = doc->AddBufferView(skin.inverse_bind_matrices.data(),
+                                            skin.inverse_bind_matrices.size() * sizeof(float), 4);
+      desc.component_type = gltf::kFloat;
+      desc.count = skin.joints.size();
+      desc.type = "MAT4";
+      j["inverseBindMatrices"] = doc->AddAccessor(desc);
+    }
+    doc->Append("skins", std::move(j));
+  }
+
+  // Nodes. Scene nodes keep their indices; extra-mesh children come after them.
+  out.mesh_nodes.assign(scene.meshes.size(), {});
+  std::vector<Node> nodes = scene.nodes;
+  if (nodes.empty()) {
+    for (size_t mi = 0; mi < scene.meshes.size(); ++mi) {
+      Node n;
+      n.name = scene.meshes[mi].name;
+      n.meshes.push_back(static_cast<int>(mi));
+      nodes.push_back(std::move(n));
+    }
+  }
+  json node_array = json::array();
+  json extra_nodes = json::array();
+  std::vector<int> roots;
+  for (size_t i = 0; i < nodes.size(); ++i) {
+    const Node& n = nodes[i];
+    json j = json::object();
+    if (!n.name.empty()) j["name"] = n.name;
+    std::vector<int> children = n.children;
+    if (!n.meshes.empty()) {
+      j["mesh"] = n.meshes[0];
+      out.mesh_nodes[static_cast<size_t>(n.meshes[0])].push_back(static_cast<int>(i));
+      if (n.skin >= 0) j["skin"] = n.skin;
+      for (size_t k = 1; k < n.meshes.size(); ++k) {
+        const int index = static_cast<int>(nodes.size() + extra_nodes.size());
+        json extra = {{"mesh", n.meshes[k]}, {"extras", {{"hullpack", {{"mesh_of_parent", true}}}}}};
+        if (n.skin >= 0) extra["skin"] = n.skin;
+        extra_nodes.push_back(std::move(extra));
+        children.push_back(index);
+        out.mesh_nodes[static_cast<size_t>(n.meshes[k])].push_back(index);
+      }
+    }
+    if (!children.empty()) j["children"] = children;
+    if (n.local_transform != kIdentity) j["matrix"] = n.local_transform;
+    node_array.push_back(std::move(j));
+    out.nodes.push_back(static_cast<int>(i));
+    if (n.parent < 0) roots.push_back(static_cast<int>(i));
+  }
+  for (auto& e : extra_nodes) node_array.push_back(std::move(e));
+  if (scene.nodes.empty()) out.nodes.clear();
+  if (!node_array.empty()) root["nodes"] = std::move(node_array);
+  json scene_json = json::object();
+  if (!roots.empty()) scene_json["nodes"] = roots;
+  root["scenes"] = json::array({std::move(scene_json)});
+  root["scene"] = 0;
+  return Status::Ok();
+}
+
+Result<std::vector<uint8_t>> EncodeGlb(const Scene& scene, const GlbWriteOptions& options) {
+  GltfDocument doc;
+  Status s = BuildGltfDocument(scene, options, &doc, nullptr);
+  if (!s.ok()) return s;
+  return doc.Serialize();
+}
+
+}  // namespace hullpack

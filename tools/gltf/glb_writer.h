@@ -1,0 +1,68 @@
+// The plain (uncompressed) glTF 2.0 writer: Scene -> GLB.
+//
+// Layout: one buffer (the GLB BIN chunk), one tightly packed bufferView per accessor. Per scene Mesh
+// one glTF mesh whose primitives share the mesh's vertex accessors (POSITION with min/max, NORMAL,
+// TANGENT, TEXCOORD_n, COLOR_0 as float RGBA, JOINTS_0, WEIGHTS_0); one primitive per material id
+// present, in ascending id order, each with its own index accessor (UNSIGNED_SHORT below 65536
+// vertices, else UNSIGNED_INT) holding its triangles in their original order. A mesh without
+// material ids gets one primitive without a material. Mesh::collides == false is written as
+// mesh.extras.hullpack.collides = false.
+//
+// Nodes keep their scene indices; a node with several meshes gets one extra child node per extra
+// mesh (appended after the scene's nodes, marked extras.hullpack.mesh_of_parent so the reader folds
+// them back). A scene without nodes gets one root node per mesh.
+//
+// The packaging stage builds on BuildGltfDocument(): it gets the document plus a layout that maps
+// scene meshes/nodes to glTF indices, adds its bufferViews and extensions, then calls Serialize().
+#ifndef HULLPACK_TOOLS_GLTF_GLB_WRITER_H_
+#define HULLPACK_TOOLS_GLTF_GLB_WRITER_H_
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "common/status.h"
+#include "gltf/gltf_document.h"
+#include "scene/scene.h"
+
+namespace hullpack {
+
+struct GlbWriteOptions {
+  std::string generator = "hullpack";  // asset.generator
+  // JOINTS_0 as UNSIGNED_BYTE when every joint index is below 256 (else UNSIGNED_SHORT).
+  bool compact_joints = true;
+};
+
+// Where BuildGltfDocument put each scene object.
+struct GltfSceneLayout {
+  struct Primitive {
+    int material = -1;        // scene material id, -1 for none
+    int indices_accessor = -1;
+    size_t triangle_count = 0;  // triangles in this primitive
+  };
+  struct MeshLayout {
+    int gltf_mesh = -1;
+    std::vector<Primitive> primitives;  // the order of mesh.primitives in the JSON
+    int position_accessor = -1;
+    // Scene triangle index of each triangle, primitive after primitive (the written order).
+    std::vector<uint32_t> triangle_order;
+  };
+  std::vector<MeshLayout> meshes;           // one per Scene::meshes entry
+  std::vector<int> nodes;                   // scene node -> glTF node (identity when the scene has nodes)
+  std::vector<std::vector<int>> mesh_nodes; // scene mesh -> glTF nodes that reference it
+};
+
+// Checks what the writer relies on: array sizes, index and material bounds, texture/skin/node
+// references, a node hierarchy that is a forest. kInvalidMesh / kInvalidArgument otherwise.
+Status ValidateSceneForGltf(const Scene& scene);
+
+// Writes `scene` into `doc` (which should be fresh). `layout` may be null.
+Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, GltfDocument* doc,
+                         GltfSceneLayout* layout);
+
+// BuildGltfDocument + Serialize.
+Result<std::vector<uint8_t>> EncodeGlb(const Scene& scene, const GlbWriteOptions& options = {});
+
+}  // namespace hullpack
+
+#endif  // HULLPACK_TOOLS_GLTF_GLB_WRITER_H_
