@@ -21,9 +21,17 @@
 namespace o3dgc {
 
 constexpr int kMagContexts = 14;
+constexpr int kIntraContexts = 5;
+
+// Context from the residual of the previous component of the same vertex.
+inline int IntraContext(int64_t r) {
+  const uint64_t a = uint64_t(r < 0 ? -r : r);
+  const int b = a == 0 ? 0 : FloorLog2(a) + 1;
+  return b < kIntraContexts ? b : kIntraContexts - 1;
+}
 
 struct ResidualModels {
-  SignedModel m[4][3][kMagContexts];
+  SignedModel m[4][3][kMagContexts][kIntraContexts];
 };
 
 inline int MagContext(uint64_t mag) {

@@ -5,8 +5,10 @@
 
 namespace o3dgc {
 
-Status DecodeQuantized(ArithmeticDecoder* dec, const MeshAdjacency& adj, uint32_t n, int dim,
-                       int bits, Prediction mode, std::vector<int32_t>* out) {
+namespace {
+
+Status DecodeQuantizedInOrder(ArithmeticDecoder* dec, const MeshAdjacency& adj, uint32_t n, int dim,
+                              int bits, Prediction mode, std::vector<int32_t>* out) {
   std::vector<int32_t>& q = *out;
   q.assign(size_t(n) * dim, 0);
   const int64_t maxq = (int64_t(1) << bits) - 1;
@@ -34,7 +36,7 @@ Status DecodeQuantized(ArithmeticDecoder* dec, const MeshAdjacency& adj, uint32_
     for (int k = 0; k < dim; ++k) {
       if (pred[k] < 0) pred[k] = 0;
       if (pred[k] > maxq) pred[k] = maxq;
-      r[k] = DecodeSigned(*dec, models->m[k][pc.kind][mctx]);
+      r[k] = DecodeSigned(*dec, models->m[k][pc.kind][mctx][k ? IntraContext(r[k - 1]) : 0]);
       const int64_t v = pred[k] + r[k];
       if (v < 0 || v > maxq) return Status::kCorrupt;
       q[size_t(c) * dim + k] = int32_t(v);
@@ -42,6 +44,27 @@ Status DecodeQuantized(ArithmeticDecoder* dec, const MeshAdjacency& adj, uint32_
     mags[c] = SaturatingMagnitude(r, dim);
   }
   return dec->failed() ? Status::kTruncated : Status::kOk;
+}
+
+}  // namespace
+
+Status DecodeQuantized(ArithmeticDecoder* dec, const MeshAdjacency& adj, uint32_t n, int dim,
+                       int bits, Prediction mode, std::vector<int32_t>* out) {
+  if (mode != Prediction::kParallelogram) {
+    return DecodeQuantizedInOrder(dec, adj, n, dim, bits, mode, out);
+  }
+  const std::vector<uint32_t> order = MaxDegreeOrder(adj);
+  const std::vector<uint32_t> renamed_tris = RenameByOrder(adj, order);
+  MeshAdjacency renamed;
+  renamed.Build(renamed_tris, n);
+  std::vector<int32_t> q;
+  const Status s = DecodeQuantizedInOrder(dec, renamed, n, dim, bits, mode, &q);
+  if (s != Status::kOk) return s;
+  out->assign(q.size(), 0);
+  for (uint32_t i = 0; i < n; ++i) {
+    for (int k = 0; k < dim; ++k) (*out)[size_t(order[i]) * dim + k] = q[size_t(i) * dim + k];
+  }
+  return Status::kOk;
 }
 
 Status DecodeOctNormals(ArithmeticDecoder* dec, const MeshAdjacency& adj, const NormalGeometry& geo,
@@ -63,7 +86,7 @@ Status DecodeOctNormals(ArithmeticDecoder* dec, const MeshAdjacency& adj, const 
     int64_t r[2];
     int32_t qa[2];
     for (int k = 0; k < 2; ++k) {
-      r[k] = DecodeSigned(*dec, models->m[k][0][mctx]);
+      r[k] = DecodeSigned(*dec, models->m[k][0][mctx][0]);
       const int64_t v = qp[k] + r[k];
       if (v < 0 || v > int64_t(maxq)) return Status::kCorrupt;
       qa[k] = int32_t(v);
@@ -86,7 +109,7 @@ Status DecodeInts(ArithmeticDecoder* dec, uint32_t n, int dim, Prediction mode,
     for (int k = 0; k < dim; ++k) {
       const int64_t pred =
           (mode == Prediction::kDifferential && c > 0) ? (*values)[(c - 1) * dim + k] : 0;
-      const int64_t v = pred + DecodeSigned(*dec, models->m[k][0][0]);
+      const int64_t v = pred + DecodeSigned(*dec, models->m[k][0][0][0]);
       if (v < INT32_MIN || v > INT32_MAX) return Status::kCorrupt;
       (*values)[c * dim + k] = int32_t(v);
     }

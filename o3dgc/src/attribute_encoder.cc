@@ -32,13 +32,32 @@ void SurfaceNormal(const MeshAdjacency& adj, uint32_t c, const int32_t* position
   for (int k = 0; k < 3; ++k) n[k] = s[k] / len;
 }
 
-void EncodeQuantized(ArithmeticEncoder* enc, const MeshAdjacency& adj,
-                     const std::vector<int32_t>& q, int dim, int bits, Prediction mode) {
-  const uint32_t n = uint32_t(q.size() / size_t(dim));
+void EncodeQuantized(ArithmeticEncoder* enc, const MeshAdjacency& adj_in,
+                     const std::vector<int32_t>& q_in, int dim, int bits, Prediction mode) {
+  const uint32_t n = uint32_t(q_in.size() / size_t(dim));
   if (mode == Prediction::kNone) {
-    for (int32_t v : q) enc->EncodeBits(uint32_t(v), bits);
+    for (int32_t v : q_in) enc->EncodeBits(uint32_t(v), bits);
     return;
   }
+  // Parallelogram prediction codes the vertices in max-prediction-degree order.
+  const MeshAdjacency* adj_ptr = &adj_in;
+  const std::vector<int32_t>* q_ptr = &q_in;
+  MeshAdjacency renamed;
+  std::vector<uint32_t> renamed_tris;
+  std::vector<int32_t> q_renamed;
+  if (mode == Prediction::kParallelogram) {
+    const std::vector<uint32_t> order = MaxDegreeOrder(adj_in);
+    renamed_tris = RenameByOrder(adj_in, order);
+    renamed.Build(renamed_tris, n);
+    q_renamed.resize(q_in.size());
+    for (uint32_t i = 0; i < n; ++i) {
+      for (int k = 0; k < dim; ++k) q_renamed[size_t(i) * dim + k] = q_in[size_t(order[i]) * dim + k];
+    }
+    adj_ptr = &renamed;
+    q_ptr = &q_renamed;
+  }
+  const MeshAdjacency& adj = *adj_ptr;
+  const std::vector<int32_t>& q = *q_ptr;
   std::unique_ptr<ResidualModels> models(new ResidualModels);
   std::vector<uint32_t> mags(n, 0);
   const int64_t maxq = (int64_t(1) << bits) - 1;
@@ -57,7 +76,7 @@ void EncodeQuantized(ArithmeticEncoder* enc, const MeshAdjacency& adj,
       if (pred[k] < 0) pred[k] = 0;
       if (pred[k] > maxq) pred[k] = maxq;
       r[k] = int64_t(q[size_t(c) * dim + k]) - pred[k];
-      EncodeSigned(*enc, models->m[k][pc.kind][mctx], r[k]);
+      EncodeSigned(*enc, models->m[k][pc.kind][mctx][k ? IntraContext(r[k - 1]) : 0], r[k]);
     }
     mags[c] = SaturatingMagnitude(r, dim);
   }
@@ -93,7 +112,7 @@ void EncodeOctNormals(ArithmeticEncoder* enc, const MeshAdjacency& adj, const No
     int64_t r[2];
     for (int k = 0; k < 2; ++k) {
       r[k] = int64_t(qa[k]) - qp[k];
-      EncodeSigned(*enc, models->m[k][0][mctx], r[k]);
+      EncodeSigned(*enc, models->m[k][0][mctx][0], r[k]);
     }
     mags[c] = SaturatingMagnitude(r, 2);
   }
@@ -107,7 +126,7 @@ void EncodeInts(ArithmeticEncoder* enc, const std::vector<int32_t>& values, int 
     for (int k = 0; k < dim; ++k) {
       const int64_t pred =
           (mode == Prediction::kDifferential && c > 0) ? values[(c - 1) * dim + k] : 0;
-      EncodeSigned(*enc, models->m[k][0][0], int64_t(values[c * dim + k]) - pred);
+      EncodeSigned(*enc, models->m[k][0][0][0], int64_t(values[c * dim + k]) - pred);
     }
   }
 }

@@ -100,6 +100,60 @@ uint64_t NeighbourMagnitude(const MeshAdjacency& adj, uint32_t c, const uint32_t
   return mag / uint64_t(n);
 }
 
+std::vector<uint32_t> MaxDegreeOrder(const MeshAdjacency& adj) {
+  const uint32_t n = adj.num_vertices();
+  constexpr int kLevels = 4;
+  std::vector<uint32_t> order;
+  order.reserve(n);
+  std::vector<uint8_t> done(n, 0);
+  std::vector<uint32_t> degree(n, 0);
+  std::vector<uint32_t> stacks[kLevels];
+  uint32_t next_start = 0;
+  auto visit = [&](uint32_t c) {
+    done[c] = 1;
+    order.push_back(c);
+    for (const uint32_t* it = adj.begin(c); it != adj.end(c); ++it) {
+      const uint32_t* v = adj.corners(*it);
+      const int j = v[0] == c ? 0 : (v[1] == c ? 1 : 2);
+      const uint32_t u = v[(j + 1) % 3], w = v[(j + 2) % 3];
+      if (!done[u] && done[w]) {
+        ++degree[u];
+        stacks[degree[u] < kLevels ? degree[u] : kLevels - 1].push_back(u);
+      } else if (done[u] && !done[w]) {
+        ++degree[w];
+        stacks[degree[w] < kLevels ? degree[w] : kLevels - 1].push_back(w);
+      } else if (!done[u] && !done[w]) {
+        stacks[0].push_back(w);
+        stacks[0].push_back(u);
+      }
+    }
+  };
+  while (order.size() < n) {
+    int level = kLevels - 1;
+    while (level >= 0 && stacks[level].empty()) --level;
+    if (level < 0) {
+      while (done[next_start]) ++next_start;
+      visit(next_start);
+      continue;
+    }
+    const uint32_t c = stacks[level].back();
+    stacks[level].pop_back();
+    if (done[c]) continue;
+    const int cur = degree[c] < kLevels ? int(degree[c]) : kLevels - 1;
+    if (cur != level) continue;  // stale entry: a newer one sits at its current level
+    visit(c);
+  }
+  return order;
+}
+
+std::vector<uint32_t> RenameByOrder(const MeshAdjacency& adj, const std::vector<uint32_t>& order) {
+  std::vector<uint32_t> rank(order.size());
+  for (uint32_t i = 0; i < order.size(); ++i) rank[order[i]] = i;
+  std::vector<uint32_t> out(adj.triangles().size());
+  for (size_t i = 0; i < out.size(); ++i) out[i] = rank[adj.triangles()[i]];
+  return out;
+}
+
 void OctEncode(const double n[3], double* u, double* v) {
   const double s = std::fabs(n[0]) + std::fabs(n[1]) + std::fabs(n[2]);
   double x = n[0] / s, y = n[1] / s;

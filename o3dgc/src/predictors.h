@@ -21,6 +21,7 @@ class MeshAdjacency {
   const uint32_t* end(uint32_t v) const { return tri_.data() + start_[v + 1]; }
   const uint32_t* corners(uint32_t t) const { return tris_->data() + 3 * size_t(t); }
   uint32_t num_vertices() const { return uint32_t(start_.size() - 1); }
+  const std::vector<uint32_t>& triangles() const { return *tris_; }
 
  private:
   const std::vector<uint32_t>* tris_ = nullptr;
@@ -41,6 +42,15 @@ PredictionContext PredictParallelogram(const MeshAdjacency& adj, uint32_t c, con
 
 // Neighbour residual magnitude only (for the differential and surface-normal modes).
 uint64_t NeighbourMagnitude(const MeshAdjacency& adj, uint32_t c, const uint32_t* magnitudes);
+
+// The order in which attribute values are coded: a greedy traversal that always continues with a
+// vertex having the most triangles whose other two corners are already coded (so that most
+// vertices have several parallelograms), ties broken last-in first-out; a new component starts at
+// the lowest uncoded id. Deterministic in the triangle list. order[i] = vertex coded i-th.
+std::vector<uint32_t> MaxDegreeOrder(const MeshAdjacency& adj);
+
+// The triangles of `adj` with every vertex v renamed rank[v], where rank is the inverse of `order`.
+std::vector<uint32_t> RenameByOrder(const MeshAdjacency& adj, const std::vector<uint32_t>& order);
 
 // Rounded division for possibly negative numerators, n > 0.
 inline int64_t DivRound(int64_t s, int64_t n) {
