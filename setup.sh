@@ -20,6 +20,8 @@ PACKAGES=(
   make
   ninja-build
   nlohmann-json3-dev
+  nodejs
+  npm
   pkg-config
   zlib1g-dev
 )
@@ -29,6 +31,8 @@ log() { printf 'setup: %s\n' "$*" >&2; }
 install_missing_packages() {
   local missing=()
   for p in "${PACKAGES[@]}"; do
+    # NodeSource's nodejs package bundles npm (and conflicts with Debian's npm package).
+    [ "$p" = npm ] && command -v npm >/dev/null && continue
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
   done
   [ ${#missing[@]} -eq 0 ] && return 0
@@ -40,6 +44,14 @@ install_missing_packages() {
   fi
   "${sudo[@]}" apt-get update -qq
   DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+# Node packages pinned in package-lock.json (the glTF-Validator used by tests/tools/gltf).
+install_node_packages() {
+  [ -d node_modules ] && return 0
+  command -v npm >/dev/null || { log "npm not found; the glTF-Validator test will be skipped"; return 0; }
+  log "installing node packages (npm ci)"
+  npm ci --no-audit --no-fund || log "npm ci failed; the glTF-Validator test will be skipped"
 }
 
 configure_and_build() {
@@ -60,6 +72,7 @@ case "${1:-}" in
     ;;
   test)
     install_missing_packages
+    install_node_packages
     configure_and_build
     ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS"
     ;;

@@ -789,10 +789,16 @@ Status Decoder::DecodeMesh(int64_t mesh_index, Scene* scene, Mesh* out) {
   const std::string mw = Item("meshes", static_cast<uint64_t>(mesh_index));
   const json& j = (*meshes)[static_cast<size_t>(mesh_index)];
   HP_RETURN_IF_ERROR(GetString(j, "name", mw, &out->name));
+  // The writer's zero-filled padding UV sets (see glb_writer.cc) are dropped again.
+  constexpr uint64_t kNoUvSetLimit = std::numeric_limits<uint64_t>::max();
+  uint64_t uv_set_limit = kNoUvSetLimit;
   auto extras = j.find("extras");
   if (extras != j.end() && extras->is_object()) {
     auto hp = extras->find("hullpack");
-    if (hp != extras->end() && hp->is_object()) HP_RETURN_IF_ERROR(GetBool(*hp, "collides", mw + ".extras.hullpack", &out->collides));
+    if (hp != extras->end() && hp->is_object()) {
+      HP_RETURN_IF_ERROR(GetBool(*hp, "collides", mw + ".extras.hullpack", &out->collides));
+      HP_RETURN_IF_ERROR(GetUint(*hp, "uv_sets", mw + ".extras.hullpack", kNoUvSetLimit, &uv_set_limit));
+    }
   }
   const json* primitives = nullptr;
   HP_RETURN_IF_ERROR(GetArray(j, "primitives", mw, &primitives));
@@ -995,6 +1001,7 @@ Status Decoder::DecodeMesh(int64_t mesh_index, Scene* scene, Mesh* out) {
     PadTo(out->weights, vc, 4, 0.0f);
   }
   for (size_t u = 0; u < uv_count; ++u) PadTo(out->uv_sets[u], vc, 2, 0.0f);
+  if (out->uv_sets.size() > uv_set_limit) out->uv_sets.resize(static_cast<size_t>(uv_set_limit));
 
   const bool any_material =
       std::any_of(triangle_material.begin(), triangle_material.end(), [](int m) { return m >= 0; });

@@ -17,6 +17,8 @@ Status MeshError(size_t mesh_index, const Mesh& mesh, const std::string& what) {
   return Status(StatusCode::kInvalidMesh, label + ": " + what);
 }
 
+constexpr int kMaxUvSet = 31;
+
 Status ArgError(const std::string& what) { return Status(StatusCode::kInvalidArgument, what); }
 
 bool AllFinite(const std::vector<float>& v) {
@@ -64,7 +66,7 @@ Status CheckTextureRef(const Scene& scene, size_t material_index, const TextureR
     return ArgError("material " + std::to_string(material_index) + " " + slot + " references image " +
                     std::to_string(ref.image) + " of " + std::to_string(scene.images.size()));
   }
-  if (ref.uv_set < 0) {
+  if (ref.uv_set < 0 || ref.uv_set > kMaxUvSet) {
     return ArgError("material " + std::to_string(material_index) + " " + slot + " has uv set " +
                     std::to_string(ref.uv_set));
   }
@@ -108,6 +110,22 @@ json TextureInfo(const TextureRef& ref, std::map<int, int>* texture_of_image, Gl
   json info = {{"index", texture}};
   if (ref.uv_set != 0) info["texCoord"] = ref.uv_set;
   return info;
+}
+
+// UV sets the materials used by `m` sample (the highest texCoord + 1), at least m.uv_sets.size().
+size_t UvSetsNeeded(const Scene& scene, const Mesh& m) {
+  size_t needed = m.uv_sets.size();
+  std::vector<bool> used(scene.materials.size(), false);
+  for (uint32_t id : m.material_ids) used[id] = true;
+  for (size_t i = 0; i < used.size(); ++i) {
+    if (!used[i]) continue;
+    const Material& mat = scene.materials[i];
+    for (const TextureRef* ref : {&mat.base_color_texture, &mat.metallic_roughness_texture, &mat.normal_texture,
+                                  &mat.occlusion_texture, &mat.emissive_texture}) {
+      if (ref->used()) needed = std::max(needed, static_cast<size_t>(ref->uv_set) + 1);
+    }
+  }
+  return needed;
 }
 
 }  // namespace
@@ -328,6 +346,16 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
     for (size_t u = 0; u < m.uv_sets.size(); ++u) {
       attributes["TEXCOORD_" + std::to_string(u)] = AddFloatAttribute(doc, m.uv_sets[u], 2, "VEC2", false);
     }
+    // A material texture read through a UV set the mesh lacks makes the primitive invalid glTF, so the
+    // missing sets are added as zero-filled accessors (no bufferView, no bytes) and the reader drops
+    // them again (extras.hullpack.uv_sets).
+    const size_t needed_uv_sets = UvSetsNeeded(scene, m);
+    for (size_t u = m.uv_sets.size(); u < needed_uv_sets; ++u) {
+      AccessorDesc zeros;
+      zeros.count = vc;
+      zeros.type = "VEC2";
+      attributes["TEXCOORD_" + std::to_string(u)] = doc->AddAccessor(zeros);
+    }
     if (!m.colors.empty()) attributes["COLOR_0"] = AddFloatAttribute(doc, m.colors, 4, "VEC4", false);
     if (!m.joints.empty()) {
       const bool bytes = options.compact_joints &&
@@ -397,7 +425,8 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
     }
     json mesh_json = {{"primitives", std::move(primitives)}};
     if (!m.name.empty()) mesh_json["name"] = m.name;
-    if (!m.collides) mesh_json["extras"] = json{{"hullpack", {{"collides", false}}}};
+    if (!m.collides) mesh_json["extras"]["hullpack"]["collides"] = false;
+    if (needed_uv_sets > m.uv_sets.size()) mesh_json["extras"]["hullpack"]["uv_sets"] = m.uv_sets.size();
     ml.gltf_mesh = doc->Append("meshes", std::move(mesh_json));
   }
 

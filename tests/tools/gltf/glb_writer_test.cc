@@ -65,7 +65,7 @@ TEST(GlbWriterTest, RichSceneJsonLayout) {
   // Images: embedded with bufferView + mimeType, external as uri.
   EXPECT_TRUE(j["images"][0].contains("bufferView"));
   EXPECT_EQ(j["images"][0]["mimeType"], "image/png");
-  EXPECT_EQ(j["images"][1]["uri"], "textures/wood%20dark.jpg");
+  EXPECT_EQ(j["images"][1]["uri"], "textures/wood%20dark.png");
   EXPECT_EQ(j["materials"][0]["normalTexture"]["texCoord"], 1);
   EXPECT_FALSE(j["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"].contains("texCoord"));
   // Nodes: identity matrices omitted; node 4's second mesh in an appended child.
@@ -74,7 +74,17 @@ TEST(GlbWriterTest, RichSceneJsonLayout) {
   ASSERT_EQ(j["nodes"].size(), 6u);
   EXPECT_EQ(j["nodes"][4]["children"], json({5}));
   EXPECT_EQ(j["nodes"][5]["mesh"], 2);
-  EXPECT_EQ(j["scenes"][0]["nodes"], json({0, 4}));
+  EXPECT_EQ(j["scenes"][0]["nodes"], json({0, 3, 4}));
+  // Mesh 2 has no UVs but its material samples sets 0 and 1: zero-filled accessors without bytes,
+  // and a note for the reader to drop them.
+  const json& tetra = j["meshes"][2];
+  EXPECT_EQ(tetra["extras"]["hullpack"]["uv_sets"], 0);
+  for (const char* uv : {"TEXCOORD_0", "TEXCOORD_1"}) {
+    const json& a = j["accessors"][tetra["primitives"][0]["attributes"][uv].get<int>()];
+    EXPECT_FALSE(a.contains("bufferView")) << uv;
+    EXPECT_EQ(a["count"], 4) << uv;
+  }
+  EXPECT_FALSE(j["meshes"][0].contains("extras"));
   EXPECT_EQ(j["skins"][0]["joints"], json({1, 2}));
   EXPECT_EQ(j["accessors"][j["skins"][0]["inverseBindMatrices"].get<int>()]["type"], "MAT4");
   // Every bufferView starts 4-aligned and fits the buffer.

@@ -53,8 +53,8 @@ Scene MakeRichScene() {
   s.images.push_back(png);
   Image external;
   external.name = "wood";
-  external.uri = "textures/wood%20dark.jpg";
-  external.mime_type = "image/jpeg";
+  external.uri = "textures/wood%20dark.png";  // write_validation_samples puts a PNG there
+  external.mime_type = "image/png";
   s.images.push_back(external);
 
   Material m0;
@@ -81,7 +81,8 @@ Scene MakeRichScene() {
   const size_t vc = skinned.vertex_count();
   for (size_t v = 0; v < vc; ++v) {
     const float w = static_cast<float>(v % 5) / 4.0f;  // exact binary fractions, sums to 1
-    skinned.joints.insert(skinned.joints.end(), {0, 1, 0, 0});
+    // A joint with zero weight is written as joint 0, as the glTF-Validator recommends.
+    skinned.joints.insert(skinned.joints.end(), {0, static_cast<uint16_t>(w > 0.0f ? 1 : 0), 0, 0});
     skinned.weights.insert(skinned.weights.end(), {1.0f - w, w, 0.0f, 0.0f});
   }
   // Non-decreasing material ids: the first 10 triangles metal-free, the rest metal.
@@ -102,10 +103,11 @@ Scene MakeRichScene() {
   plain.material_ids = {1, 1, 1, 1};
   s.meshes.push_back(plain);
 
-  // Nodes: 0 root -> {1 joint0 -> 2 joint1, 3 skinned}; 4 root with two meshes.
+  // Nodes: 0 root -> 1 joint0 -> 2 joint1; 3 skinned (a root, as glTF wants skinned meshes);
+  // 4 root with two meshes.
   s.nodes.resize(5);
   s.nodes[0].name = "root";
-  s.nodes[0].children = {1, 3};
+  s.nodes[0].children = {1};
   s.nodes[0].local_transform = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 2.5, -1, 0.75, 1};
   s.nodes[1].name = "joint0";
   s.nodes[1].parent = 0;
@@ -114,7 +116,6 @@ Scene MakeRichScene() {
   s.nodes[2].parent = 1;
   s.nodes[2].local_transform = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 1.5, 0, 1};
   s.nodes[3].name = "skinned";
-  s.nodes[3].parent = 0;
   s.nodes[3].meshes = {0};
   s.nodes[3].skin = 0;
   s.nodes[4].name = "multi";
