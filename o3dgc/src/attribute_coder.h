@@ -32,6 +32,7 @@ inline int IntraContext(int64_t r) {
 
 struct ResidualModels {
   SignedModel m[4][3][kMagContexts][kIntraContexts];
+  BitModel side;
 };
 
 inline int MagContext(uint64_t mag) {
@@ -66,10 +67,17 @@ struct NormalGeometry {
   const uint32_t* position_of;   // attribute vertex -> position vertex
 };
 
+// `geometry` (optional, 3 doubles per vertex): with dim == 2 and kParallelogram, texture
+// coordinates are predicted from the shape (PredictTexCoord) instead of parallelograms.
 void EncodeQuantized(ArithmeticEncoder* enc, const MeshAdjacency& adj,
-                     const std::vector<int32_t>& q, int dim, int bits, Prediction mode);
+                     const std::vector<int32_t>& q, int dim, int bits, Prediction mode,
+                     const std::vector<double>* geometry = nullptr);
 Status DecodeQuantized(ArithmeticDecoder* dec, const MeshAdjacency& adj, uint32_t n, int dim,
-                       int bits, Prediction mode, std::vector<int32_t>* q);
+                       int bits, Prediction mode, std::vector<int32_t>* q,
+                       const std::vector<double>* geometry = nullptr);
+
+// Positions of attribute vertices as doubles (quantized value * step), for PredictTexCoord.
+std::vector<double> AttributeGeometry(const NormalGeometry& geo, uint32_t n);
 
 // normals: 3 floats per vertex (any length; zero-length codes as (0,0,1)).
 void EncodeOctNormals(ArithmeticEncoder* enc, const MeshAdjacency& adj, const NormalGeometry& geo,

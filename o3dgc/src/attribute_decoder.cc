@@ -8,7 +8,8 @@ namespace o3dgc {
 namespace {
 
 Status DecodeQuantizedInOrder(ArithmeticDecoder* dec, const MeshAdjacency& adj, uint32_t n, int dim,
-                              int bits, Prediction mode, std::vector<int32_t>* out) {
+                              int bits, Prediction mode, std::vector<int32_t>* out,
+                              const double* geometry) {
   std::vector<int32_t>& q = *out;
   q.assign(size_t(n) * dim, 0);
   const int64_t maxq = (int64_t(1) << bits) - 1;
@@ -25,17 +26,30 @@ Status DecodeQuantizedInOrder(ArithmeticDecoder* dec, const MeshAdjacency& adj, 
     if (dec->failed()) return Status::kTruncated;
     int64_t pred[4];
     PredictionContext pc;
-    if (mode == Prediction::kParallelogram) {
+    bool ambiguous = false;
+    int64_t alt[2] = {0, 0};
+    if (geometry) {
+      pc = PredictTexCoord(adj, c, q.data(), geometry, mags.data(), pred, alt, &ambiguous);
+    } else if (mode == Prediction::kParallelogram) {
       pc = PredictParallelogram(adj, c, q.data(), dim, mags.data(), pred);
     } else {
       for (int k = 0; k < dim; ++k) pred[k] = c > 0 ? q[size_t(c - 1) * dim + k] : 0;
       pc.neighbour_magnitude = c > 0 ? mags[c - 1] : 0;
     }
-    const int mctx = MagContext(pc.neighbour_magnitude);
-    int64_t r[4];
     for (int k = 0; k < dim; ++k) {
       if (pred[k] < 0) pred[k] = 0;
       if (pred[k] > maxq) pred[k] = maxq;
+    }
+    if (ambiguous && dec->Decode(models->side)) {
+      for (int k = 0; k < 2; ++k) {
+        if (alt[k] < 0) alt[k] = 0;
+        if (alt[k] > maxq) alt[k] = maxq;
+        pred[k] = alt[k];
+      }
+    }
+    const int mctx = MagContext(pc.neighbour_magnitude);
+    int64_t r[4];
+    for (int k = 0; k < dim; ++k) {
       r[k] = DecodeSigned(*dec, models->m[k][pc.kind][mctx][k ? IntraContext(r[k - 1]) : 0]);
       const int64_t v = pred[k] + r[k];
       if (v < 0 || v > maxq) return Status::kCorrupt;
@@ -49,16 +63,26 @@ Status DecodeQuantizedInOrder(ArithmeticDecoder* dec, const MeshAdjacency& adj, 
 }  // namespace
 
 Status DecodeQuantized(ArithmeticDecoder* dec, const MeshAdjacency& adj, uint32_t n, int dim,
-                       int bits, Prediction mode, std::vector<int32_t>* out) {
+                       int bits, Prediction mode, std::vector<int32_t>* out,
+                       const std::vector<double>* geometry) {
   if (mode != Prediction::kParallelogram) {
-    return DecodeQuantizedInOrder(dec, adj, n, dim, bits, mode, out);
+    return DecodeQuantizedInOrder(dec, adj, n, dim, bits, mode, out, nullptr);
   }
+  const bool texcoord = geometry && dim == 2;
   const std::vector<uint32_t> order = MaxDegreeOrder(adj);
   const std::vector<uint32_t> renamed_tris = RenameByOrder(adj, order);
   MeshAdjacency renamed;
   renamed.Build(renamed_tris, n);
+  std::vector<double> geo_renamed;
+  if (texcoord) {
+    geo_renamed.resize(size_t(n) * 3);
+    for (uint32_t i = 0; i < n; ++i) {
+      for (int k = 0; k < 3; ++k) geo_renamed[3 * size_t(i) + k] = (*geometry)[3 * size_t(order[i]) + k];
+    }
+  }
   std::vector<int32_t> q;
-  const Status s = DecodeQuantizedInOrder(dec, renamed, n, dim, bits, mode, &q);
+  const Status s = DecodeQuantizedInOrder(dec, renamed, n, dim, bits, mode, &q,
+                                          texcoord ? geo_renamed.data() : nullptr);
   if (s != Status::kOk) return s;
   out->assign(q.size(), 0);
   for (uint32_t i = 0; i < n; ++i) {

@@ -32,8 +32,20 @@ void SurfaceNormal(const MeshAdjacency& adj, uint32_t c, const int32_t* position
   for (int k = 0; k < 3; ++k) n[k] = s[k] / len;
 }
 
+std::vector<double> AttributeGeometry(const NormalGeometry& geo, uint32_t n) {
+  std::vector<double> g(size_t(n) * 3);
+  for (uint32_t v = 0; v < n; ++v) {
+    for (int k = 0; k < 3; ++k) {
+      g[3 * size_t(v) + k] = double(geo.positions[3 * size_t(geo.position_of[v]) + k]) * geo.scale[k];
+    }
+  }
+  return g;
+}
+
 void EncodeQuantized(ArithmeticEncoder* enc, const MeshAdjacency& adj_in,
-                     const std::vector<int32_t>& q_in, int dim, int bits, Prediction mode) {
+                     const std::vector<int32_t>& q_in, int dim, int bits, Prediction mode,
+                     const std::vector<double>* geometry) {
+  const bool texcoord = geometry && dim == 2 && mode == Prediction::kParallelogram;
   const uint32_t n = uint32_t(q_in.size() / size_t(dim));
   if (mode == Prediction::kNone) {
     for (int32_t v : q_in) enc->EncodeBits(uint32_t(v), bits);
@@ -45,6 +57,7 @@ void EncodeQuantized(ArithmeticEncoder* enc, const MeshAdjacency& adj_in,
   MeshAdjacency renamed;
   std::vector<uint32_t> renamed_tris;
   std::vector<int32_t> q_renamed;
+  std::vector<double> geo_renamed;
   if (mode == Prediction::kParallelogram) {
     const std::vector<uint32_t> order = MaxDegreeOrder(adj_in);
     renamed_tris = RenameByOrder(adj_in, order);
@@ -55,6 +68,12 @@ void EncodeQuantized(ArithmeticEncoder* enc, const MeshAdjacency& adj_in,
     }
     adj_ptr = &renamed;
     q_ptr = &q_renamed;
+    if (texcoord) {
+      geo_renamed.resize(size_t(n) * 3);
+      for (uint32_t i = 0; i < n; ++i) {
+        for (int k = 0; k < 3; ++k) geo_renamed[3 * size_t(i) + k] = (*geometry)[3 * size_t(order[i]) + k];
+      }
+    }
   }
   const MeshAdjacency& adj = *adj_ptr;
   const std::vector<int32_t>& q = *q_ptr;
@@ -64,17 +83,38 @@ void EncodeQuantized(ArithmeticEncoder* enc, const MeshAdjacency& adj_in,
   for (uint32_t c = 0; c < n; ++c) {
     int64_t pred[4];
     PredictionContext pc;
-    if (mode == Prediction::kParallelogram) {
+    bool ambiguous = false;
+    int64_t alt[2] = {0, 0};
+    if (texcoord) {
+      pc = PredictTexCoord(adj, c, q.data(), geo_renamed.data(), mags.data(), pred, alt, &ambiguous);
+    } else if (mode == Prediction::kParallelogram) {
       pc = PredictParallelogram(adj, c, q.data(), dim, mags.data(), pred);
     } else {
       for (int k = 0; k < dim; ++k) pred[k] = c > 0 ? q[size_t(c - 1) * dim + k] : 0;
       pc.neighbour_magnitude = c > 0 ? mags[c - 1] : 0;
     }
-    const int mctx = MagContext(pc.neighbour_magnitude);
-    int64_t r[4];
     for (int k = 0; k < dim; ++k) {
       if (pred[k] < 0) pred[k] = 0;
       if (pred[k] > maxq) pred[k] = maxq;
+    }
+    if (ambiguous) {
+      int64_t da = 0, db = 0;
+      for (int k = 0; k < 2; ++k) {
+        if (alt[k] < 0) alt[k] = 0;
+        if (alt[k] > maxq) alt[k] = maxq;
+        const int64_t x = q[size_t(c) * 2 + k];
+        da += x > pred[k] ? x - pred[k] : pred[k] - x;
+        db += x > alt[k] ? x - alt[k] : alt[k] - x;
+      }
+      enc->Encode(db < da, models->side);
+      if (db < da) {
+        pred[0] = alt[0];
+        pred[1] = alt[1];
+      }
+    }
+    const int mctx = MagContext(pc.neighbour_magnitude);
+    int64_t r[4];
+    for (int k = 0; k < dim; ++k) {
       r[k] = int64_t(q[size_t(c) * dim + k]) - pred[k];
       EncodeSigned(*enc, models->m[k][pc.kind][mctx][k ? IntraContext(r[k - 1]) : 0], r[k]);
     }

@@ -157,9 +157,20 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
   }
   MeshAdjacency attr_adj;
   attr_adj.Build(attr_tris, nv);
+  NormalGeometry geo;
+  geo.positions = qpos.data();
+  for (int k = 0; k < 3; ++k) {
+    geo.scale[k] = double(h.position.quant.range[k]) / double(h.position.quant.max_q());
+  }
+  geo.position_of = welded_of.data();
+  std::vector<double> attr_geometry;
   auto decode_float = [&](const AttributeDesc& d, std::vector<float>* values) {
     std::vector<int32_t> q;
-    const Status st = DecodeQuantized(&dec, attr_adj, nv, int(d.dimension), d.bits, d.prediction, &q);
+    const bool texcoord = d.semantic == Semantic::kTexCoord && d.dimension == 2 &&
+                          d.prediction == Prediction::kParallelogram;
+    if (texcoord && attr_geometry.empty()) attr_geometry = AttributeGeometry(geo, nv);
+    const Status st = DecodeQuantized(&dec, attr_adj, nv, int(d.dimension), d.bits, d.prediction,
+                                      &q, texcoord ? &attr_geometry : nullptr);
     if (st != Status::kOk) return st;
     values->resize(q.size());
     for (size_t i = 0; i < q.size(); ++i) {
@@ -170,12 +181,6 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
   mark = dec.BytesConsumed();
   if (h.has_normals) {
     if (h.normal.prediction == Prediction::kSurfaceNormal) {
-      NormalGeometry geo;
-      geo.positions = qpos.data();
-      for (int k = 0; k < 3; ++k) {
-        geo.scale[k] = double(h.position.quant.range[k]) / double(h.position.quant.max_q());
-      }
-      geo.position_of = welded_of.data();
       s = DecodeOctNormals(&dec, attr_adj, geo, nv, h.normal.bits, &m.normals);
     } else {
       s = decode_float(h.normal, &m.normals);

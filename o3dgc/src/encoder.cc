@@ -292,21 +292,26 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
   for (size_t i = 0; i < 3 * nt; ++i) attr_tris[i] = orig_new[corner_vertex[i]];
   MeshAdjacency attr_adj;
   attr_adj.Build(attr_tris, uint32_t(nv));
+  NormalGeometry geo;
+  geo.positions = qpos.data();
+  for (int k = 0; k < 3; ++k) {
+    geo.scale[k] = double(h.position.quant.range[k]) / double(h.position.quant.max_q());
+  }
+  geo.position_of = welded_of_orig.data();
+  std::vector<double> attr_geometry;
   auto code_float = [&](const AttributeDesc& d, const std::vector<float>& values) {
     const std::vector<float> v = Reorder(values, d.dimension, old_of_orig);
     std::vector<int32_t> q(v.size());
     for (size_t i = 0; i < v.size(); ++i) q[i] = d.quant.Quantize(v[i], uint32_t(i % d.dimension));
-    EncodeQuantized(&enc, attr_adj, q, int(d.dimension), d.bits, d.prediction);
+    const bool texcoord = d.semantic == Semantic::kTexCoord && d.dimension == 2 &&
+                          d.prediction == Prediction::kParallelogram;
+    if (texcoord && attr_geometry.empty()) attr_geometry = AttributeGeometry(geo, uint32_t(nv));
+    EncodeQuantized(&enc, attr_adj, q, int(d.dimension), d.bits, d.prediction,
+                    texcoord ? &attr_geometry : nullptr);
   };
   mark = enc.BytesSoFar();
   if (h.has_normals) {
     if (h.normal.prediction == Prediction::kSurfaceNormal) {
-      NormalGeometry geo;
-      geo.positions = qpos.data();
-      for (int k = 0; k < 3; ++k) {
-        geo.scale[k] = double(h.position.quant.range[k]) / double(h.position.quant.max_q());
-      }
-      geo.position_of = welded_of_orig.data();
       EncodeOctNormals(&enc, attr_adj, geo, Reorder(normals, 3, old_of_orig), h.normal.bits);
     } else {
       code_float(h.normal, normals);

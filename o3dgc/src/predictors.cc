@@ -84,6 +84,98 @@ PredictionContext PredictParallelogram(const MeshAdjacency& adj, uint32_t c, con
   return ctx;
 }
 
+PredictionContext PredictTexCoord(const MeshAdjacency& adj, uint32_t c, const int32_t* uv,
+                                  const double* geometry, const uint32_t* magnitudes,
+                                  int64_t pred[2], int64_t alt[2], bool* ambiguous) {
+  *ambiguous = false;
+  double sum[2] = {0, 0}, und_a[2] = {0, 0}, und_b[2] = {0, 0};
+  int n_dec = 0, n_und = 0;
+  const double* pc = geometry + 3 * size_t(c);
+  for (const uint32_t* it = adj.begin(c); it != adj.end(c); ++it) {
+    const uint32_t t = *it;
+    const uint32_t* v = adj.corners(t);
+    const int j = v[0] == c ? 0 : (v[1] == c ? 1 : 2);
+    const uint32_t a = v[(j + 1) % 3], b = v[(j + 2) % 3];
+    if (a >= c || b >= c) continue;
+    const double* pa = geometry + 3 * size_t(a);
+    const double* pb = geometry + 3 * size_t(b);
+    double e[3], d[3];
+    for (int k = 0; k < 3; ++k) {
+      e[k] = pb[k] - pa[k];
+      d[k] = pc[k] - pa[k];
+    }
+    const double ee = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+    if (!(ee > 0)) continue;
+    const double tt = (d[0] * e[0] + d[1] * e[1] + d[2] * e[2]) / ee;
+    double h2 = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double hk = d[k] - tt * e[k];
+      h2 += hk * hk;
+    }
+    const double ratio = std::sqrt(h2 / ee);
+    const double ua[2] = {double(uv[2 * size_t(a)]), double(uv[2 * size_t(a) + 1])};
+    const double ub[2] = {double(uv[2 * size_t(b)]), double(uv[2 * size_t(b) + 1])};
+    const double eu[2] = {ub[0] - ua[0], ub[1] - ua[1]};
+    const double foot[2] = {ua[0] + tt * eu[0], ua[1] + tt * eu[1]};
+    const double perp[2] = {-eu[1] * ratio, eu[0] * ratio};
+    const double cand_a[2] = {foot[0] + perp[0], foot[1] + perp[1]};
+    const double cand_b[2] = {foot[0] - perp[0], foot[1] - perp[1]};
+    // The neighbour across a-b with a decoded third vertex decides the side.
+    int side = 0;
+    for (const uint32_t* it2 = adj.begin(a); it2 != adj.end(a); ++it2) {
+      if (*it2 == t) continue;
+      const uint32_t* o = adj.corners(*it2);
+      int hb = -1;
+      for (int q = 0; q < 3; ++q) {
+        if (o[q] == b) hb = q;
+      }
+      if (hb < 0) continue;
+      const int ia = o[0] == a ? 0 : (o[1] == a ? 1 : 2);
+      const uint32_t x = o[3 - ia - hb];
+      if (x >= c) continue;
+      const double cx = eu[0] * (double(uv[2 * size_t(x) + 1]) - ua[1]) -
+                        eu[1] * (double(uv[2 * size_t(x)]) - ua[0]);
+      // perp points to the positive side (cross(eu, perp) > 0); go away from x.
+      side = cx > 0 ? -1 : 1;
+      break;
+    }
+    if (side == 0) {
+      und_a[0] += cand_a[0];
+      und_a[1] += cand_a[1];
+      und_b[0] += cand_b[0];
+      und_b[1] += cand_b[1];
+      ++n_und;
+    } else {
+      const double* cnd = side > 0 ? cand_a : cand_b;
+      sum[0] += cnd[0];
+      sum[1] += cnd[1];
+      ++n_dec;
+    }
+  }
+  if (n_dec == 0 && n_und == 0) {
+    return PredictParallelogram(adj, c, uv, 2, magnitudes, pred);
+  }
+  PredictionContext ctx;
+  ctx.kind = kPredParallelogram;
+  ctx.neighbour_magnitude = NeighbourMagnitude(adj, c, magnitudes);
+  auto round_to = [](double x) {
+    if (!(x > -1e12)) x = -1e12;
+    if (!(x < 1e12)) x = 1e12;
+    return int64_t(std::floor(x + 0.5));
+  };
+  if (n_dec > 0) {
+    pred[0] = round_to(sum[0] / n_dec);
+    pred[1] = round_to(sum[1] / n_dec);
+  } else {
+    *ambiguous = true;
+    pred[0] = round_to(und_a[0] / n_und);
+    pred[1] = round_to(und_a[1] / n_und);
+    alt[0] = round_to(und_b[0] / n_und);
+    alt[1] = round_to(und_b[1] / n_und);
+  }
+  return ctx;
+}
+
 uint64_t NeighbourMagnitude(const MeshAdjacency& adj, uint32_t c, const uint32_t* magnitudes) {
   uint64_t mag = 0;
   int n = 0;

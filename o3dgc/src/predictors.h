@@ -40,6 +40,16 @@ struct PredictionContext {
 PredictionContext PredictParallelogram(const MeshAdjacency& adj, uint32_t c, const int32_t* values,
                                        int dim, const uint32_t* magnitudes, int64_t* pred);
 
+// Texture coordinate prediction from the 3D shape (positions known for every vertex, 3 doubles
+// per vertex in `geometry`): for every triangle (c, u, v) with u, v decoded, the position of c
+// relative to the edge u-v (foot of the perpendicular and distance) is transferred to uv space,
+// on the side of u-v opposite to the decoded third vertex of the neighbouring triangle. Results of
+// all such triangles are averaged. If no triangle had a neighbour to decide the side, `alt`
+// receives the mirrored prediction and *ambiguous is set (the caller codes the side).
+PredictionContext PredictTexCoord(const MeshAdjacency& adj, uint32_t c, const int32_t* uv,
+                                  const double* geometry, const uint32_t* magnitudes,
+                                  int64_t pred[2], int64_t alt[2], bool* ambiguous);
+
 // Neighbour residual magnitude only (for the differential and surface-normal modes).
 uint64_t NeighbourMagnitude(const MeshAdjacency& adj, uint32_t c, const uint32_t* magnitudes);
 
