@@ -1,0 +1,116 @@
+#include "pipeline/mesh_codec.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace hullpack {
+namespace {
+
+// A torus with every attribute the codec carries.
+Mesh FullTorus(int rings = 24, int sides = 12) {
+  Mesh m;
+  m.name = "torus";
+  m.uv_sets.resize(2);
+  const double pi = 3.14159265358979323846;
+  for (int i = 0; i < rings; ++i) {
+    for (int j = 0; j < sides; ++j) {
+      const double u = 2 * pi * i / rings, v = 2 * pi * j / sides;
+      m.positions.insert(m.positions.end(), {float((1 + 0.3 * std::cos(v)) * std::cos(u)),
+                                             float((1 + 0.3 * std::cos(v)) * std::sin(u)), float(0.3 * std::sin(v))});
+      m.normals.insert(m.normals.end(), {float(std::cos(v) * std::cos(u)), float(std::cos(v) * std::sin(u)), float(std::sin(v))});
+      m.uv_sets[0].insert(m.uv_sets[0].end(), {float(i) / rings, float(j) / sides});
+      m.uv_sets[1].insert(m.uv_sets[1].end(), {float(j) / sides, float(i) / rings});
+      m.colors.insert(m.colors.end(), {float(i) / rings, 0.5f, float(j) / sides, 1});
+      m.joints.insert(m.joints.end(), {uint16_t(i % 3), uint16_t(j % 5), 7, 0});
+      m.weights.insert(m.weights.end(), {0.5f, 0.25f, 0.25f, 0});
+    }
+  }
+  for (int i = 0; i < rings; ++i) {
+    for (int j = 0; j < sides; ++j) {
+      const uint32_t a = i * sides + j, b = ((i + 1) % rings) * sides + j,
+                     c = ((i + 1) % rings) * sides + (j + 1) % sides, d = i * sides + (j + 1) % sides;
+      m.indices.insert(m.indices.end(), {a, b, c, a, c, d});
+    }
+  }
+  return m;
+}
+
+TEST(MeshCodec, RoundTripKeepsEveryAttributeWithinItsBits) {
+  const Mesh in = FullTorus();
+  MeshCodecSettings s;
+  s.keep_order = true;
+  Result<EncodedMesh> enc = EncodeMesh(in, {}, s);
+  ASSERT_TRUE(enc.ok()) << enc.status().ToString();
+  const std::vector<std::pair<std::string, int>> expect = {
+      {"POSITION", 0}, {"NORMAL", 1}, {"TEXCOORD_0", 2}, {"TEXCOORD_1", 3}, {"COLOR_0", 4}, {"WEIGHTS_0", 5}, {"JOINTS_0", 6}};
+  EXPECT_EQ(enc->gltf_attributes, expect);
+  Result<Mesh> dec = DecodeMesh(enc->stream.data(), enc->stream.size(), nullptr, "t");
+  ASSERT_TRUE(dec.ok()) << dec.status().ToString();
+  EXPECT_EQ(dec->indices, in.indices);  // keep_order
+  EXPECT_EQ(dec->joints, in.joints);
+  ASSERT_EQ(dec->uv_sets.size(), 2u);
+  const double step = PositionRange(in) / ((1 << s.position_bits) - 1);
+  for (size_t i = 0; i < in.positions.size(); ++i) EXPECT_LE(std::fabs(dec->positions[i] - in.positions[i]), step / 2 + 1e-6);
+  for (size_t i = 0; i < in.uv_sets[1].size(); ++i) EXPECT_LE(std::fabs(dec->uv_sets[1][i] - in.uv_sets[1][i]), 1.0 / 4095 / 2 + 1e-6);
+  for (size_t i = 0; i < in.colors.size(); ++i) EXPECT_NEAR(dec->colors[i], in.colors[i], 1.0 / 1023);
+  for (size_t i = 0; i < in.weights.size(); ++i) EXPECT_NEAR(dec->weights[i], in.weights[i], 1.0 / 1023);
+  EXPECT_LE(MaxVertexDistance(in, dec.value()), std::sqrt(3.0) * step / 2 + 1e-6);
+}
+
+TEST(MeshCodec, GroupsRoundTripAndExtract) {
+  Mesh in = FullTorus(8, 6);
+  std::vector<uint32_t> groups(in.triangle_count());
+  for (size_t t = 0; t < groups.size(); ++t) groups[t] = t < groups.size() / 2 ? 3 : 9;
+  Result<EncodedMesh> enc = EncodeMesh(in, groups, {});
+  ASSERT_TRUE(enc.ok());
+  std::vector<uint32_t> decoded_groups;
+  Result<Mesh> dec = DecodeMesh(enc->stream.data(), enc->stream.size(), &decoded_groups, "t");
+  ASSERT_TRUE(dec.ok());
+  ASSERT_EQ(decoded_groups.size(), in.triangle_count());
+  const Mesh a = ExtractGroup(dec.value(), decoded_groups, 3);
+  const Mesh b = ExtractGroup(dec.value(), decoded_groups, 9);
+  EXPECT_EQ(a.triangle_count() + b.triangle_count(), in.triangle_count());
+  EXPECT_EQ(a.triangle_count(), in.triangle_count() / 2);
+  for (uint32_t i : a.indices) EXPECT_LT(i, a.vertex_count());
+  EXPECT_EQ(a.joints.size(), a.vertex_count() * 4);
+  EXPECT_EQ(ExtractGroup(dec.value(), decoded_groups, 42).triangle_count(), 0u);
+}
+
+TEST(MeshCodec, BitsForAnErrorBudgetMeetTheBudget) {
+  for (double budget : {0.1, 0.01, 0.0005, 1e-6}) {
+    const int bits = PositionBitsForMaxError(1.0, budget);
+    const double step = 1.0 / ((1 << bits) - 1);
+    EXPECT_LE(std::sqrt(3.0) * step / 2, budget) << budget;
+    if (bits > 1) {  // and one bit fewer would not
+      const double coarser = 1.0 / ((1 << (bits - 1)) - 1);
+      EXPECT_GT(std::sqrt(3.0) * coarser / 2, budget) << budget;
+    }
+  }
+  EXPECT_EQ(PositionBitsForMaxError(0, 0.1), 14);  // degenerate input: the default
+}
+
+TEST(MeshCodec, MaxVertexDistanceIsSymmetricAndOrderFree) {
+  Mesh a;
+  a.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  Mesh b;
+  b.positions = {0, 1, 0, 0, 0, 0.25f, 1, 0, 0};
+  EXPECT_NEAR(MaxVertexDistance(a, b), 0.25, 1e-7);
+  EXPECT_NEAR(MaxVertexDistance(b, a), 0.25, 1e-7);
+  Mesh far = b;
+  far.positions[0] = 1e6f;
+  EXPECT_GT(MaxVertexDistance(a, far), 9e5);
+}
+
+TEST(MeshCodec, BadStreamsGiveErrors) {
+  const Mesh in = FullTorus(6, 4);
+  Result<EncodedMesh> enc = EncodeMesh(in, {}, {});
+  ASSERT_TRUE(enc.ok());
+  for (size_t cut : {size_t(0), size_t(5), enc->stream.size() / 2, enc->stream.size() - 1}) {
+    EXPECT_FALSE(DecodeMesh(enc->stream.data(), cut, nullptr, "cut").ok()) << cut;
+  }
+  EXPECT_FALSE(EncodeMesh(in, std::vector<uint32_t>(3, 0), {}).ok());  // wrong group count
+}
+
+}  // namespace
+}  // namespace hullpack

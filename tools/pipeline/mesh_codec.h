@@ -1,0 +1,67 @@
+// The one place where a scene mesh meets the o3dgc codec: which attribute goes into the stream
+// under which semantic and id, how many bits each gets, and how a decoded stream becomes a mesh again.
+//
+// Stream attribute ids (what HULLPACK_mesh_compression's `attributes` map points at, see
+// docs/packed-gltf.md): positions 0, normals next when present, then the float attributes
+// (UV sets, colours, weights, tangents) in that order, then the int attributes (joints).
+#ifndef HULLPACK_TOOLS_PIPELINE_MESH_CODEC_H_
+#define HULLPACK_TOOLS_PIPELINE_MESH_CODEC_H_
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "common/status.h"
+#include "o3dgc/o3dgc.h"
+#include "scene/scene.h"
+
+namespace hullpack {
+
+struct MeshCodecSettings {
+  o3dgc::StreamType stream_type = o3dgc::StreamType::kBinary;
+  bool keep_order = false;  // true: decoded vertex and triangle order equal the input's
+  int position_bits = 14;
+  int normal_bits = 10;
+  int uv_bits = 12;
+  int color_bits = 10;
+  int weight_bits = 10;
+  int tangent_bits = 10;
+};
+
+struct EncodedMesh {
+  std::vector<uint8_t> stream;
+  // glTF attribute name -> stream attribute id, in stream order.
+  std::vector<std::pair<std::string, int>> gltf_attributes;
+  o3dgc::StreamInfo info;
+};
+
+// Encodes every attribute of `mesh`. `groups` (one per triangle, or empty) are stored as the
+// stream's triangle groups; DecodeMesh returns them.
+Result<EncodedMesh> EncodeMesh(const Mesh& mesh, const std::vector<uint32_t>& groups,
+                               const MeshCodecSettings& settings);
+
+// Decodes a stream into a mesh (name, material ids left empty) and its triangle groups.
+// Safe on untrusted bytes; `name` prefixes error messages.
+Result<Mesh> DecodeMesh(const uint8_t* data, size_t size, std::vector<uint32_t>* groups,
+                        const std::string& name);
+
+// The triangles whose group is `group`, with the vertices they use renumbered in increasing order
+// of their index in `mesh` (the HULLPACK_mesh_compression `group` rule).
+Mesh ExtractGroup(const Mesh& mesh, const std::vector<uint32_t>& groups, uint32_t group);
+
+// Position bits that keep every decoded position within `max_error` (Euclidean) of the original,
+// for uniform quantization of a cube of side `range`. Clamped to 1..30.
+int PositionBitsForMaxError(double range, double max_error);
+
+// Largest extent of the mesh's positions (the side of its quantization cube) and bbox diagonal.
+double PositionRange(const Mesh& mesh);
+double BoundingBoxDiagonal(const Mesh& mesh);
+
+// Symmetric vertex-set distance: the largest distance from a vertex of one mesh to the nearest
+// vertex of the other. After quantization this is the position error, whatever order the codec
+// chose for the vertices.
+double MaxVertexDistance(const Mesh& a, const Mesh& b);
+
+}  // namespace hullpack
+
+#endif  // HULLPACK_TOOLS_PIPELINE_MESH_CODEC_H_
