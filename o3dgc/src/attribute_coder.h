@@ -22,6 +22,9 @@ namespace o3dgc {
 
 constexpr int kMagContexts = 14;
 constexpr int kIntraContexts = 5;
+// Below this many vertices fewer contexts are used (less to learn).
+constexpr uint32_t kSmallMesh = 1500;
+constexpr uint32_t kTinyMesh = 300;
 
 // Context from the residual of the previous component of the same vertex.
 inline int IntraContext(int64_t r) {

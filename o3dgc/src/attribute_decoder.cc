@@ -22,6 +22,7 @@ Status DecodeQuantizedInOrder(ArithmeticDecoder* dec, const MeshAdjacency& adj, 
   }
   std::unique_ptr<ResidualModels> models(new ResidualModels);
   std::vector<uint32_t> mags(n, 0);
+  const int coarse = n < kTinyMesh ? 2 : (n < kSmallMesh ? 1 : 0);
   for (uint32_t c = 0; c < n; ++c) {
     if (dec->failed()) return Status::kTruncated;
     int64_t pred[4];
@@ -47,10 +48,10 @@ Status DecodeQuantizedInOrder(ArithmeticDecoder* dec, const MeshAdjacency& adj, 
         pred[k] = alt[k];
       }
     }
-    const int mctx = MagContext(pc.neighbour_magnitude);
+    const int mctx = MagContext(pc.neighbour_magnitude) >> coarse;
     int64_t r[4];
     for (int k = 0; k < dim; ++k) {
-      r[k] = DecodeSigned(*dec, models->m[k][pc.kind][mctx][k ? IntraContext(r[k - 1]) : 0]);
+      r[k] = DecodeSigned(*dec, models->m[coarse == 2 ? 0 : k][pc.kind][mctx][(k && !coarse) ? IntraContext(r[k - 1]) : 0]);
       const int64_t v = pred[k] + r[k];
       if (v < 0 || v > maxq) return Status::kCorrupt;
       q[size_t(c) * dim + k] = int32_t(v);

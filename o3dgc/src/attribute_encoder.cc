@@ -80,6 +80,7 @@ void EncodeQuantized(ArithmeticEncoder* enc, const MeshAdjacency& adj_in,
   std::unique_ptr<ResidualModels> models(new ResidualModels);
   std::vector<uint32_t> mags(n, 0);
   const int64_t maxq = (int64_t(1) << bits) - 1;
+  const int coarse = n < kTinyMesh ? 2 : (n < kSmallMesh ? 1 : 0);
   for (uint32_t c = 0; c < n; ++c) {
     int64_t pred[4];
     PredictionContext pc;
@@ -112,11 +113,11 @@ void EncodeQuantized(ArithmeticEncoder* enc, const MeshAdjacency& adj_in,
         pred[1] = alt[1];
       }
     }
-    const int mctx = MagContext(pc.neighbour_magnitude);
+    const int mctx = MagContext(pc.neighbour_magnitude) >> coarse;
     int64_t r[4];
     for (int k = 0; k < dim; ++k) {
       r[k] = int64_t(q[size_t(c) * dim + k]) - pred[k];
-      EncodeSigned(*enc, models->m[k][pc.kind][mctx][k ? IntraContext(r[k - 1]) : 0], r[k]);
+      EncodeSigned(*enc, models->m[coarse == 2 ? 0 : k][pc.kind][mctx][(k && !coarse) ? IntraContext(r[k - 1]) : 0], r[k]);
     }
     mags[c] = SaturatingMagnitude(r, dim);
   }

@@ -67,7 +67,7 @@ class Front {
     const int has_r = head_out_[b] >= 0;
     const int has_l = head_in_[a] >= 0;
     const uint32_t d = deg_[b] < 7 ? deg_[b] : 7;
-    const uint32_t da = deg_[a] < 1 ? 0 : 1;
+    const uint32_t da = deg_[a] >= 5 ? 1 : 0;
     return int(((has_r + 2 * has_l) * 2 + da) * 8 + d);
   }
   // Candidate third vertices: the end of the newest gate leaving b, the start of the newest gate
