@@ -1,3 +1,4 @@
+#include <algorithm>
 // Predictors (see predictors.h).
 #include "predictors.h"
 
@@ -29,6 +30,8 @@ void MeshAdjacency::Build(const std::vector<uint32_t>& triangles, uint32_t num_v
 PredictionContext PredictParallelogram(const MeshAdjacency& adj, uint32_t c, const int32_t* values,
                                        int dim, const uint32_t* magnitudes, int64_t* pred) {
   int64_t par[4] = {0, 0, 0, 0}, nb[4] = {0, 0, 0, 0};
+  constexpr int kMaxKept = 16;
+  int64_t kept[kMaxKept][4];
   int n_par = 0, n_nb = 0;
   uint64_t mag = 0;
   for (const uint32_t* it = adj.begin(c); it != adj.end(c); ++it) {
@@ -60,8 +63,10 @@ PredictionContext PredictParallelogram(const MeshAdjacency& adj, uint32_t c, con
         const uint32_t x = o[3 - iu - has];
         if (x >= c) continue;
         for (int k = 0; k < dim; ++k) {
-          par[k] += int64_t(values[size_t(u) * dim + k]) + values[size_t(w2) * dim + k] -
-                    values[size_t(x) * dim + k];
+          const int64_t pk = int64_t(values[size_t(u) * dim + k]) + values[size_t(w2) * dim + k] -
+                             values[size_t(x) * dim + k];
+          par[k] += pk;
+          if (n_par < kMaxKept) kept[n_par][k] = pk;
         }
         ++n_par;
         break;
@@ -73,6 +78,29 @@ PredictionContext PredictParallelogram(const MeshAdjacency& adj, uint32_t c, con
   if (n_par > 0) {
     for (int k = 0; k < dim; ++k) pred[k] = DivRound(par[k], n_par);
     ctx.kind = kPredParallelogram;
+    // Three or more parallelograms: the component-wise median is more robust than the mean.
+    if (n_par >= 3 && n_par <= kMaxKept) {
+      for (int k = 0; k < dim; ++k) {
+        int64_t col[kMaxKept];
+        for (int i = 0; i < n_par; ++i) col[i] = kept[i][k];
+        std::sort(col, col + n_par);
+        pred[k] = (n_par & 1) ? col[n_par / 2] : DivRound(col[n_par / 2 - 1] + col[n_par / 2], 2);
+      }
+    }
+    if (n_par >= 2) {
+      // The context is the disagreement between the parallelograms: twice the mean absolute
+      // deviation, summed over the components.
+      const int m = n_par < kMaxKept ? n_par : kMaxKept;
+      uint64_t dev = 0;
+      for (int i = 0; i < m; ++i) {
+        for (int k = 0; k < dim; ++k) {
+          const int64_t d = kept[i][k] - pred[k];
+          dev += uint64_t(d < 0 ? -d : d);
+        }
+      }
+      dev = dev * 2 / uint64_t(m);
+      ctx.neighbour_magnitude = dev;
+    }
   } else if (n_nb > 0) {
     for (int k = 0; k < dim; ++k) pred[k] = DivRound(nb[k], n_nb);
     ctx.kind = kPredNeighbours;

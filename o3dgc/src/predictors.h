@@ -2,8 +2,9 @@
 //
 // Vertices are predicted in increasing id order (the coding order), so a vertex may only use
 // vertices with smaller ids. Multi-parallelogram prediction averages u + v - w over every triangle
-// (c, u, v) with u, v decoded whose neighbour across u-v has a decoded third vertex w; without such
-// a pair it averages the decoded neighbours, then falls back to the previous vertex.
+// (c, u, v) with u, v decoded whose neighbour across u-v has a decoded third vertex w (component-
+// wise median with three or more; with two or more the residual context is their spread); without
+// such a pair it averages the decoded neighbours, then falls back to the previous vertex.
 #ifndef O3DGC_SRC_PREDICTORS_H_
 #define O3DGC_SRC_PREDICTORS_H_
 
