@@ -11,7 +11,9 @@ JOBS=$(nproc 2>/dev/null || echo 2)
 
 # Debian packages the build and the tests need (keep sorted).
 PACKAGES=(
+  chromium
   cmake
+  emscripten
   g++
   libassimp-dev
   libeigen3-dev
@@ -20,6 +22,7 @@ PACKAGES=(
   make
   ninja-build
   nlohmann-json3-dev
+  node-acorn
   nodejs
   npm
   pkg-config
@@ -46,9 +49,10 @@ install_missing_packages() {
   DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 }
 
-# Node packages pinned in package-lock.json (the glTF-Validator used by tests/tools/gltf).
+# Node packages pinned in package-lock.json (the glTF-Validator used by tests/tools/gltf; three and
+# playwright-core for web/ and tests/web). Re-run when package-lock.json is newer than the install.
 install_node_packages() {
-  [ -d node_modules ] && return 0
+  [ node_modules/.package-lock.json -nt package-lock.json ] && return 0
   command -v npm >/dev/null || { log "npm not found; the glTF-Validator test will be skipped"; return 0; }
   log "installing node packages (npm ci)"
   npm ci --no-audit --no-fund || log "npm ci failed; the glTF-Validator test will be skipped"
@@ -63,6 +67,18 @@ configure_and_build() {
   cmake --build "$BUILD_DIR" -j "$JOBS"
 }
 
+# WebAssembly decoder + viewer sample (web/, samples/web/dist), only when emscripten is there.
+build_web() {
+  command -v emcc >/dev/null || { log "emcc not found; skipping the WebAssembly decoder (web/)"; return 0; }
+  log "building the WebAssembly decoder (web/ -> samples/web/dist)"
+  bash web/build_wasm.sh "$BUILD_DIR/web-wasm" >/dev/null || { log "WebAssembly build failed"; return 0; }
+  local enc="$BUILD_DIR/tools/test_o3dgc/test_o3dgc" ref="$BUILD_DIR/tests/web/web_decode_ref"
+  if [ -x "$enc" ] && [ -x "$ref" ] && command -v node >/dev/null; then
+    node tests/web/make_glb.mjs --encoder "$enc" --ref "$ref" --mesh samples/torus.obj \
+      --out samples/web/dist/torus.glb >&2 || log "could not make samples/web/dist/torus.glb"
+  fi
+}
+
 case "${1:-}" in
   demo)
     install_missing_packages
@@ -74,6 +90,7 @@ case "${1:-}" in
     install_missing_packages
     install_node_packages
     configure_and_build
+    build_web
     ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS"
     ;;
   *)

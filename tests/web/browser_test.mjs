@@ -1,0 +1,157 @@
+// browser_test.mjs: drives headless Chromium (playwright-core + Debian's /usr/bin/chromium) over the
+// viewer page and the WebAssembly decoder, and compares with the C++ decoder's figures.
+//   node tests/web/browser_test.mjs --repo DIR --work DIR [--chromium /usr/bin/chromium]
+// --work holds torus.glb, torus.s3d and torus.glb.ref.json (tests/web/make_glb.mjs) and receives
+// the screenshots. Exit 0 pass, 1 fail, 77 skip.
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { startServer } from './static_server.mjs';
+
+const SKIP = 77;
+const a = {};
+for (let i = 2; i + 1 < process.argv.length; i += 2) a[process.argv[i].replace(/^--/, '')] = process.argv[i + 1];
+const repo = path.resolve(a.repo || '.');
+const work = path.resolve(a.work || '.');
+const chromiumPath = a.chromium || '/usr/bin/chromium';
+
+let failures = 0;
+function check(cond, what) {
+  console.log(`${cond ? 'ok  ' : 'FAIL'} ${what}`);
+  if (!cond) failures += 1;
+}
+const close = (x, y, tol = 1e-5) => Math.abs(x - y) <= tol * Math.max(1, Math.abs(y));
+const closeVec = (u, v) => u.length === v.length && u.every((x, i) => close(x, v[i]));
+
+let playwright;
+try {
+  playwright = await import('playwright-core');
+} catch {
+  console.log('SKIP: playwright-core is not installed (npm ci at the repository root)');
+  process.exit(SKIP);
+}
+if (!fs.existsSync(chromiumPath)) {
+  console.log(`SKIP: ${chromiumPath} not found (apt-get install chromium)`);
+  process.exit(SKIP);
+}
+const ref = JSON.parse(fs.readFileSync(path.join(work, 'torus.glb.ref.json'), 'utf8'));
+
+const { server, url } = await startServer({ root: repo, mounts: { '/__work/': work } });
+const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'hullpack-chromium-'));
+const watchdog = setTimeout(() => {
+  console.log('FAIL: browser test timed out');
+  process.exit(1);
+}, 150000);
+let context;
+try {
+  context = await playwright.chromium.launchPersistentContext(profile, {
+    executablePath: chromiumPath,
+    headless: true,
+    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+      '--disable-background-networking', '--disable-component-update', '--disable-sync',
+      '--enable-unsafe-swiftshader', '--use-angle=swiftshader'],
+    viewport: { width: 800, height: 600 },
+    timeout: 60000,
+  });
+  // Nothing but the local server.
+  await context.route((u) => !u.href.startsWith(url) && !u.href.startsWith('data:') && !u.href.startsWith('blob:'),
+    (route) => route.abort());
+  const page = context.pages()[0] || await context.newPage();
+  page.setDefaultTimeout(60000);
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(String(e)));
+  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+
+  // 1. The viewer on the packed GLB (main-thread decoder, hulls shown).
+  await page.goto(`${url}/samples/web/index.html?glb=/__work/torus.glb&hulls=1`);
+  const info = await page.evaluate(() => window.hullpackViewer.ready);
+  console.log(`glb: ${info.vertices} vertices, ${info.triangles} triangles, decode ${info.decodeMs.toFixed(2)} ms, ${info.hulls.length} hulls`);
+  check(info.vertices === ref.render.vertices, `glb vertices ${info.vertices} == C++ ${ref.render.vertices}`);
+  check(info.triangles === ref.render.triangles, `glb triangles ${info.triangles} == C++ ${ref.render.triangles}`);
+  check(closeVec(info.min, ref.render.min) && closeVec(info.max, ref.render.max),
+    `glb bounds ${JSON.stringify([info.min, info.max])} == C++ ${JSON.stringify([ref.render.min, ref.render.max])}`);
+  check(info.hulls.length === ref.hulls.length, `hulls ${info.hulls.length} == ${ref.hulls.length}`);
+  ref.hulls.forEach((h, i) => {
+    const g = info.hulls[i] || {};
+    check(g.vertices === h.vertices && g.triangles === h.triangles && closeVec(g.min || [], h.min) && closeVec(g.max || [], h.max),
+      `hull ${i}: ${g.vertices}/${g.triangles} == C++ ${h.vertices}/${h.triangles}, bounds match`);
+  });
+  // Something was drawn: count pixels that differ from the background.
+  const drawn = await page.evaluate(() => {
+    const src = window.hullpackViewer.renderer.domElement;
+    const c = document.createElement('canvas');
+    c.width = src.width;
+    c.height = src.height;
+    const ctx = c.getContext('2d');
+    ctx.drawImage(src, 0, 0);
+    const d = ctx.getImageData(0, 0, c.width, c.height).data;
+    let n = 0;
+    for (let i = 0; i < d.length; i += 4) {
+      if (Math.abs(d[i] - 0x20) + Math.abs(d[i + 1] - 0x24) + Math.abs(d[i + 2] - 0x2a) > 24) ++n;
+    }
+    return n / (c.width * c.height);
+  });
+  check(drawn > 0.02, `model visible: ${(100 * drawn).toFixed(1)}% of the canvas drawn`);
+  await page.screenshot({ path: path.join(work, 'viewer_glb.png') });
+  console.log(`screenshot: ${path.join(work, 'viewer_glb.png')}`);
+
+  // 2. The decoder module directly: main thread vs worker vs C++, and errors.
+  const direct = await page.evaluate(async () => {
+    const m = await import('/web/hullpack_decoder.js');
+    const wasmUrl = '/samples/web/dist/hullpack_decoder_wasm.wasm';
+    const bytes = new Uint8Array(await (await fetch('/__work/torus.s3d')).arrayBuffer());
+    const dec = await m.createDecoder({ wasmUrl });
+    const main = dec.decode(bytes);
+    const worker = await m.createWorkerDecoder({ wasmUrl });
+    const w = await worker.decode(bytes);
+    const errorOf = async (fn) => { try { await fn(); return 'no error'; } catch (e) { return `${e.name}:${e.status}`; } };
+    const junk = new Uint8Array(64).map((_, i) => (i * 37) & 255);
+    const errs = {
+      junk: await errorOf(() => dec.decode(junk)),
+      truncated: await errorOf(() => dec.decode(bytes.subarray(0, bytes.length >> 1))),
+      flipped: await errorOf(() => { const b = bytes.slice(); b[b.length - 5] ^= 0x55; return dec.decode(b); }),
+      workerJunk: await errorOf(() => worker.decode(junk)),
+    };
+    const again = dec.decode(bytes); // the decoder still works after errors
+    worker.terminate();
+    const same = (x, y) => x.length === y.length && x.every((v, i) => v === y[i]);
+    return {
+      main: { nv: main.numVertices, nt: main.numTriangles, uvs: main.uvs.length, normals: !!main.normals, ...m.bounds(main.positions) },
+      workerSame: same(w.positions, main.positions) && same(w.indices, main.indices) && same(w.normals, main.normals) && same(w.uvs[0], main.uvs[0]),
+      againSame: same(again.positions, main.positions) && same(again.indices, main.indices),
+      maxIndex: main.indices.reduce((x, y) => Math.max(x, y), 0),
+      errs,
+    };
+  });
+  const r = ref.render;
+  check(direct.main.nv === r.vertices && direct.main.nt === r.triangles, `stream decode ${direct.main.nv}/${direct.main.nt} == C++ ${r.vertices}/${r.triangles}`);
+  check(closeVec(direct.main.min, r.min) && closeVec(direct.main.max, r.max), 'stream bounds == C++');
+  check(direct.main.normals === r.normals && direct.main.uvs === r.float_attributes.filter((f) => f.semantic === 3).length, 'stream attributes == C++');
+  check(direct.maxIndex < direct.main.nv, 'indices in range');
+  check(direct.workerSame, 'worker decode == main-thread decode');
+  check(direct.againSame, 'decoder reusable after errors');
+  check(direct.errs.junk === 'HullpackDecodeError:bad_magic', `junk -> ${direct.errs.junk}`);
+  check(/^HullpackDecodeError:(truncated|corrupt|checksum_mismatch|limit_exceeded)$/.test(direct.errs.truncated), `truncated -> ${direct.errs.truncated}`);
+  check(/^HullpackDecodeError:/.test(direct.errs.flipped), `flipped byte -> ${direct.errs.flipped}`);
+  check(direct.errs.workerJunk === 'HullpackDecodeError:bad_magic', `worker junk -> ${direct.errs.workerJunk}`);
+
+  // 3. The viewer on the bare stream, decoded in a worker.
+  const page2 = await context.newPage();
+  page2.on('pageerror', (e) => errors.push(String(e)));
+  await page2.goto(`${url}/samples/web/index.html?stream=/__work/torus.s3d&worker=1`);
+  const info2 = await page2.evaluate(() => window.hullpackViewer.ready);
+  check(info2.vertices === r.vertices && info2.triangles === r.triangles, `viewer stream+worker ${info2.vertices}/${info2.triangles}`);
+  await page2.screenshot({ path: path.join(work, 'viewer_stream.png') });
+
+  check(errors.length === 0, `no page errors${errors.length ? `: ${errors.join(' | ')}` : ''}`);
+} catch (e) {
+  console.log(`FAIL: ${e && e.stack ? e.stack : e}`);
+  failures += 1;
+} finally {
+  clearTimeout(watchdog);
+  if (context) await context.close().catch(() => {});
+  server.close();
+  fs.rmSync(profile, { recursive: true, force: true });
+}
+console.log(failures ? `${failures} check(s) failed` : 'all browser checks passed');
+process.exit(failures ? 1 : 0);

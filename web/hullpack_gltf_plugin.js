@@ -1,0 +1,192 @@
+// hullpack_gltf_plugin.js: three.js GLTFLoader plugin for hullpack's packed GLB (docs/packed-gltf.md):
+//  - HULLPACK_mesh_compression: primitives whose attributes and indices come from an o3dgc stream;
+//  - OMI_physics_shape / OMI_physics_body: convex collision hulls, exposed as data in
+//    gltf.userData.hullpackHulls and as hidden wireframe meshes under their collider nodes.
+//
+//   import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
+//   import { createDecoder } from './hullpack_decoder.js';
+//   import { HullpackMeshCompressionPlugin, setHullsVisible } from './hullpack_gltf_plugin.js';
+//   const decoder = await createDecoder({ wasmUrl });          // or createWorkerDecoder({wasmUrl})
+//   const loader = new GLTFLoader();
+//   loader.register((parser) => new HullpackMeshCompressionPlugin(parser, decoder));
+//   const gltf = await loader.loadAsync('model.glb');
+//   setHullsVisible(gltf, true);
+//
+// How it plugs in: three's GLTFLoader calls decodePrimitive() only for KHR_draco_mesh_compression,
+// so this plugin decodes every stream in beforeRoot() (each bufferView once, groups cut out per
+// primitive) and answers the parser's accessor requests for the compressed primitives' accessors
+// with the decoded arrays; everything else (materials, skins, bounds from accessor min/max) is
+// three's normal path. decodePrimitive(primitiveDef) is also available and returns a BufferGeometry.
+import {
+  BufferAttribute, BufferGeometry, Mesh, MeshBasicMaterial, Group,
+} from 'three';
+import { selectGroup } from './hullpack_decoder.js';
+
+export const EXTENSION_NAME = 'HULLPACK_mesh_compression';
+
+const COMPONENT_ARRAYS = {
+  5120: Int8Array, 5121: Uint8Array, 5122: Int16Array, 5123: Uint16Array, 5125: Uint32Array, 5126: Float32Array,
+};
+const TYPE_SIZES = { SCALAR: 1, VEC2: 2, VEC3: 3, VEC4: 4, MAT2: 4, MAT3: 9, MAT4: 16 };
+const THREE_NAMES = {
+  POSITION: 'position', NORMAL: 'normal', TANGENT: 'tangent', TEXCOORD_0: 'uv', TEXCOORD_1: 'uv1',
+  TEXCOORD_2: 'uv2', TEXCOORD_3: 'uv3', COLOR_0: 'color', WEIGHTS_0: 'skinWeight', JOINTS_0: 'skinIndex',
+};
+
+// Converts decoded values to the accessor's component type (normalized integers are scaled).
+function toAccessorArray(values, accessorDef) {
+  const Type = COMPONENT_ARRAYS[accessorDef?.componentType] || values.constructor;
+  if (values instanceof Type) return values;
+  const out = new Type(values.length);
+  if (accessorDef?.normalized && Type !== Float32Array && values instanceof Float32Array) {
+    const max = { [Int8Array.name]: 127, [Uint8Array.name]: 255, [Int16Array.name]: 32767, [Uint16Array.name]: 65535 }[Type.name] || 1;
+    for (let i = 0; i < values.length; ++i) out[i] = Math.round(values[i] * max);
+  } else {
+    for (let i = 0; i < values.length; ++i) out[i] = values[i];
+  }
+  return out;
+}
+
+export class HullpackMeshCompressionPlugin {
+  // decoder: {decode(Uint8Array) -> mesh | Promise<mesh>} from createDecoder or createWorkerDecoder.
+  constructor(parser, decoder, { hullColor = 0x00ff88, hullOpacity = 0.35 } = {}) {
+    if (!decoder) throw new Error('HullpackMeshCompressionPlugin: a decoder is required');
+    this.name = EXTENSION_NAME;
+    this.parser = parser;
+    this.decoder = decoder;
+    this.hullColor = hullColor;
+    this.hullOpacity = hullOpacity;
+    this.streams = new Map();     // bufferView index -> Promise<decoded mesh>
+    this.accessors = new Map();   // accessor index -> BufferAttribute from a decoded stream
+    this.stats = { streams: 0, bytes: 0, decodeMs: 0 };
+  }
+
+  decodeBufferView(index) {
+    if (!this.streams.has(index)) {
+      const p = this.parser.getDependency('bufferView', index).then(async (buffer) => {
+        const bytes = new Uint8Array(buffer);
+        const t0 = performance.now();
+        const mesh = await this.decoder.decode(bytes);
+        this.stats.decodeMs += performance.now() - t0;
+        this.stats.streams += 1;
+        this.stats.bytes += bytes.length;
+        return mesh;
+      });
+      this.streams.set(index, p);
+    }
+    return this.streams.get(index);
+  }
+
+  // The decoded mesh of one primitive (its group cut out), as {mesh, attributes: {glTF name: array}}.
+  async decodePrimitiveData(primitiveDef) {
+    const ext = primitiveDef.extensions[EXTENSION_NAME];
+    const whole = await this.decodeBufferView(ext.bufferView);
+    const mesh = ext.group === undefined ? whole : selectGroup(whole, ext.group);
+    const attributes = {};
+    for (const [name, id] of Object.entries(ext.attributes || {})) {
+      const a = mesh.attributes[id];
+      if (!a) throw new Error(`${EXTENSION_NAME}: attribute ${name} -> stream id ${id} is not in the stream`);
+      attributes[name] = a;
+    }
+    return { mesh, attributes };
+  }
+
+  // A BufferGeometry for one primitive (like GLTFDracoMeshCompressionExtension.decodePrimitive).
+  async decodePrimitive(primitiveDef) {
+    const json = this.parser.json;
+    const { mesh, attributes } = await this.decodePrimitiveData(primitiveDef);
+    const geometry = new BufferGeometry();
+    for (const [name, a] of Object.entries(attributes)) {
+      const accessorDef = json.accessors?.[primitiveDef.attributes?.[name]];
+      const array = toAccessorArray(a.array, accessorDef);
+      geometry.setAttribute(THREE_NAMES[name] || name.toLowerCase(),
+        new BufferAttribute(array, a.dimension, accessorDef?.normalized === true));
+    }
+    geometry.setIndex(new BufferAttribute(mesh.indices, 1));
+    return geometry;
+  }
+
+  // Decodes every compressed primitive and routes its accessors to the decoded data.
+  async beforeRoot() {
+    const json = this.parser.json;
+    const jobs = [];
+    (json.meshes || []).forEach((meshDef) => {
+      for (const prim of meshDef.primitives || []) {
+        if (!prim.extensions?.[EXTENSION_NAME]) continue;
+        jobs.push(this.decodePrimitiveData(prim).then(({ mesh, attributes }) => {
+          for (const [name, a] of Object.entries(attributes)) {
+            const accessorIndex = prim.attributes?.[name];
+            if (accessorIndex === undefined || this.accessors.has(accessorIndex)) continue;
+            const accessorDef = json.accessors[accessorIndex];
+            const array = toAccessorArray(a.array, accessorDef);
+            const itemSize = TYPE_SIZES[accessorDef.type] || a.dimension;
+            this.accessors.set(accessorIndex, new BufferAttribute(array, itemSize, accessorDef.normalized === true));
+          }
+          if (prim.indices !== undefined && !this.accessors.has(prim.indices)) {
+            const accessorDef = json.accessors[prim.indices];
+            this.accessors.set(prim.indices, new BufferAttribute(toAccessorArray(mesh.indices, accessorDef), 1));
+          }
+        }));
+      }
+    });
+    await Promise.all(jobs);
+    if (this.accessors.size) {
+      const parser = this.parser;
+      const original = parser.loadAccessor.bind(parser);
+      const decoded = this.accessors;
+      parser.loadAccessor = (index) => (decoded.has(index) ? Promise.resolve(decoded.get(index)) : original(index));
+    }
+  }
+
+  // Collision hulls: gltf.userData.hullpackHulls = [{nodeIndex, node, shapeIndex, meshIndex,
+  // positions: Float32Array, indices: Uint32Array, mesh}], each mesh a hidden wireframe child of its
+  // collider node (toggle with setHullsVisible).
+  async afterRoot(gltf) {
+    const json = this.parser.json;
+    const shapes = json.extensions?.OMI_physics_shape?.shapes || [];
+    const hulls = [];
+    const nodes = json.nodes || [];
+    for (let n = 0; n < nodes.length; ++n) {
+      const collider = nodes[n].extensions?.OMI_physics_body?.collider;
+      if (!collider || collider.shape === undefined) continue;
+      const shape = shapes[collider.shape];
+      const meshIndex = shape?.type === 'convex' ? shape.convex?.mesh : shape?.type === 'trimesh' ? shape.trimesh?.mesh : undefined;
+      const meshDef = json.meshes?.[meshIndex];
+      if (!meshDef || !meshDef.primitives?.length) continue;
+      const prim = meshDef.primitives[0];
+      const pos = await this.parser.getDependency('accessor', prim.attributes.POSITION);
+      let indices;
+      if (prim.indices !== undefined) {
+        indices = Uint32Array.from((await this.parser.getDependency('accessor', prim.indices)).array);
+      } else {
+        indices = Uint32Array.from({ length: pos.count }, (_, i) => i);
+      }
+      const positions = Float32Array.from(pos.array);
+      const node = await this.parser.getDependency('node', n);
+      const geometry = new BufferGeometry();
+      geometry.setAttribute('position', new BufferAttribute(positions, 3));
+      geometry.setIndex(new BufferAttribute(indices, 1));
+      const material = new MeshBasicMaterial({
+        color: this.hullColor, wireframe: true, transparent: true, opacity: Math.min(1, this.hullOpacity * 2),
+        depthWrite: false,
+      });
+      const fill = new MeshBasicMaterial({
+        color: this.hullColor, transparent: true, opacity: this.hullOpacity, depthWrite: false,
+      });
+      const group = new Group();
+      group.name = 'hullpack_hull';
+      group.add(new Mesh(geometry, fill), new Mesh(geometry, material));
+      group.visible = false;
+      group.userData.hullpackHull = true;
+      node.add(group);
+      hulls.push({ nodeIndex: n, node, shapeIndex: collider.shape, meshIndex, type: shape.type, positions, indices, mesh: group });
+    }
+    gltf.userData.hullpackHulls = hulls;
+    gltf.userData.hullpackStats = { ...this.stats };
+  }
+}
+
+// Shows or hides the hull meshes the plugin added.
+export function setHullsVisible(gltf, visible) {
+  for (const h of gltf.userData.hullpackHulls || []) h.mesh.visible = visible;
+}
