@@ -1,9 +1,9 @@
 // Adaptive binary arithmetic (range) coding: the entropy coder of every part of an o3dgc stream.
 //
 // A carry-propagating range coder over 32-bit ranges with 16-bit adaptive probabilities. Each
-// BitModel adapts quickly at first (count-based rate) and then settles to a 1/128 rate; its
-// probability is clamped to [kMinProb, 65536 - kMinProb] so no decision costs less than ~0.0007
-// bits. The decoder treats bytes past the end of its buffer as zeros and counts them; more than
+// BitModel mixes two estimates: a slow one that adapts quickly at first (count-based rate) and
+// then settles to a 1/128 rate, and a fast one (rate 1/8) that follows local runs; probabilities
+// are clamped to [kMinProb, 65536 - kMinProb] so no decision costs less than ~0.001 bits. The decoder treats bytes past the end of its buffer as zeros and counts them; more than
 // kMaxOverrun such bytes marks the decoder as failed (the caller checks failed()).
 #ifndef O3DGC_SRC_ARITHMETIC_CODER_H_
 #define O3DGC_SRC_ARITHMETIC_CODER_H_
@@ -15,24 +15,32 @@
 namespace o3dgc {
 
 struct BitModel {
-  uint16_t p0 = 32768;  // probability of a 0, in 1/65536
+  uint16_t p0 = 32768;  // probability of a 0, in 1/65536 (mix of the two estimates below)
+  uint16_t fast = 32768;
+  uint16_t slow = 32768;
   uint8_t n = 0;        // observations so far (saturating)
 
   static constexpr uint32_t kMinProb = 48;
-  void Update(int bit) {
-    static constexpr uint8_t kShift[] = {2, 2, 3, 3, 3, 4, 4, 4, 4, 4, 5, 5, 5, 5, 5, 5, 5, 5, 5, 5,
-                                         6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6};
-    const int shift = n < sizeof(kShift) ? kShift[n++] : 7;
-    int32_t p = p0;
+  static int32_t Step(int32_t p, int bit, int shift) {
     if (bit) {
-      p -= (p + (1 << shift) - 1) >> shift;  // rounded up: the estimate reaches the clamp
+      p -= (p + (1 << shift) - 1) >> shift;
     } else {
       p += (65536 - p + (1 << shift) - 1) >> shift;
     }
     if (p < int32_t(kMinProb)) p = kMinProb;
     if (p > int32_t(65536 - kMinProb)) p = 65536 - kMinProb;
-    p0 = uint16_t(p);
+    return p;
   }
+  void Update(int bit) {
+    static constexpr uint8_t kShift[] = {2, 2, 3, 3, 3, 4, 4, 4, 4, 4, 5, 5, 5, 5, 5, 5, 5, 5, 5, 5,
+                                         6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6};
+    const int shift = n < sizeof(kShift) ? kShift[n++] : kSlowShift;
+    slow = uint16_t(Step(slow, bit, shift));
+    fast = uint16_t(Step(fast, bit, shift < kFastShift ? shift : kFastShift));
+    p0 = uint16_t((uint32_t(slow) + fast + 1) >> 1);
+  }
+  static constexpr int kSlowShift = 7;
+  static constexpr int kFastShift = 3;
 };
 
 class ArithmeticEncoder {
