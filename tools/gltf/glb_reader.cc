@@ -10,6 +10,8 @@
 #include <set>
 #include <utility>
 
+#include "gltf/node_forest.h"
+
 namespace hullpack {
 namespace {
 
@@ -274,7 +276,7 @@ class Decoder {
   Status GetString(const json& obj, const char* key, const std::string& where, std::string* out) const;
   Status GetBool(const json& obj, const char* key, const std::string& where, bool* out) const;
   // The top-level array `key` (empty when missing); elements must be objects.
-  Status TopLevel(const char* key, const json** out) const;
+  Status TopLevel(const char* key, const json** out);
   size_t TopCount(const char* key) const {
     auto it = root_.find(key);
     return it != root_.end() && it->is_array() ? it->size() : 0;
@@ -310,6 +312,7 @@ class Decoder {
   size_t non_triangle_primitives_ = 0;
   std::set<std::string> dropped_attributes_;
   int default_material_ = -1;
+  std::map<std::string, const json*> top_level_;  // checked top-level arrays (nullptr: absent)
 };
 
 Status Decoder::GetArray(const json& obj, const char* key, const std::string& where,
@@ -397,12 +400,20 @@ Status Decoder::GetBool(const json& obj, const char* key, const std::string& whe
   return Status::Ok();
 }
 
-Status Decoder::TopLevel(const char* key, const json** out) const {
-  HP_RETURN_IF_ERROR(GetArray(root_, key, "glTF", out));
-  if (*out == nullptr) return Status::Ok();
-  for (size_t i = 0; i < (*out)->size(); ++i) {
-    if (!(**out)[i].is_object()) return Error(Item(key, i), "is not an object");
+Status Decoder::TopLevel(const char* key, const json** out) {
+  // Each array is checked once; lookups after that are O(1), so per-accessor calls stay linear.
+  auto cached = top_level_.find(key);
+  if (cached != top_level_.end()) {
+    *out = cached->second;
+    return Status::Ok();
   }
+  HP_RETURN_IF_ERROR(GetArray(root_, key, "glTF", out));
+  if (*out != nullptr) {
+    for (size_t i = 0; i < (*out)->size(); ++i) {
+      if (!(**out)[i].is_object()) return Error(Item(key, i), "is not an object");
+    }
+  }
+  top_level_.emplace(key, *out);
   return Status::Ok();
 }
 
@@ -1003,6 +1014,7 @@ Status Decoder::DecodeMesh(int64_t mesh_index, Scene* scene, Mesh* out) {
   for (size_t u = 0; u < uv_count; ++u) PadTo(out->uv_sets[u], vc, 2, 0.0f);
   if (out->uv_sets.size() > uv_set_limit) out->uv_sets.resize(static_cast<size_t>(uv_set_limit));
 
+  if (out->indices.empty()) Drop(mw + (out->name.empty() ? "" : " '" + out->name + "'") + " has no triangles");
   const bool any_material =
       std::any_of(triangle_material.begin(), triangle_material.end(), [](int m) { return m >= 0; });
   if (any_material) {
@@ -1149,14 +1161,9 @@ Status Decoder::DecodeNodes(Scene* scene) {
       }
     }
   }
-  // Every node reaches a root within n steps, else the children lists form a cycle.
-  for (size_t i = 0; i < n; ++i) {
-    int at = static_cast<int>(i);
-    size_t steps = 0;
-    while (at != -1) {
-      if (++steps > n) return Error(Item("nodes", i), "is part of a cycle in the node hierarchy");
-      at = scene->nodes[static_cast<size_t>(at)].parent;
-    }
+  const int on_cycle = gltf_internal::FirstNodeOnCycle(scene->nodes);
+  if (on_cycle >= 0) {
+    return Error(Item("nodes", static_cast<uint64_t>(on_cycle)), "is part of a cycle in the node hierarchy");
   }
   if (cameras > 0) Drop("dropped " + std::to_string(cameras) + " node cameras");
   if (lights > 0) Drop("dropped " + std::to_string(lights) + " KHR_lights_punctual node lights");

@@ -6,6 +6,8 @@
 #include <map>
 #include <utility>
 
+#include "gltf/node_forest.h"
+
 namespace hullpack {
 namespace {
 
@@ -262,23 +264,21 @@ Status ValidateSceneForGltf(const Scene& scene) {
                         std::to_string(scene.nodes[static_cast<size_t>(c)].parent));
       }
     }
-    if (n.parent >= 0) {
-      const auto& siblings = scene.nodes[static_cast<size_t>(n.parent)].children;
-      if (std::count(siblings.begin(), siblings.end(), static_cast<int>(i)) != 1) {
-        return ArgError(label + " has parent " + std::to_string(n.parent) +
-                        " which does not list it exactly once as a child");
-      }
-    }
   }
-  // Every node reaches a root within node_count steps, else there is a cycle.
+  // Each non-root is listed exactly once, by its parent (children entries were checked above).
+  std::vector<size_t> listed(node_count, 0);
+  for (const Node& n : scene.nodes) {
+    for (int c : n.children) ++listed[static_cast<size_t>(c)];
+  }
   for (size_t i = 0; i < node_count; ++i) {
-    int at = static_cast<int>(i);
-    size_t steps = 0;
-    while (at != -1) {
-      if (++steps > node_count) return ArgError("the node hierarchy has a cycle through node " + std::to_string(i));
-      at = scene.nodes[static_cast<size_t>(at)].parent;
+    const size_t expected = scene.nodes[i].parent >= 0 ? 1 : 0;
+    if (listed[i] != expected) {
+      return ArgError("node " + std::to_string(i) + " has parent " + std::to_string(scene.nodes[i].parent) +
+                      " but is listed as a child " + std::to_string(listed[i]) + " times");
     }
   }
+  const int on_cycle = gltf_internal::FirstNodeOnCycle(scene.nodes);
+  if (on_cycle >= 0) return ArgError("the node hierarchy has a cycle through node " + std::to_string(on_cycle));
   return Status::Ok();
 }
 
