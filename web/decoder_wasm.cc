@@ -36,10 +36,12 @@ const T* DataOrNull(const std::vector<T>& v) {
 
 }  // namespace
 
-HP_EXPORT Result* hp_decode(const uint8_t* data, size_t size) {
+// verify_checksum 0 skips the CRC check (for tests that feed mutated streams to the decoder).
+HP_EXPORT Result* hp_decode_ex(const uint8_t* data, size_t size, int verify_checksum) {
   Result* r = new (std::nothrow) Result;
   if (!r) return nullptr;
   o3dgc::DecodeOptions options;
+  options.verify_checksum = verify_checksum != 0;
   // Bound what a hostile stream may make us allocate in a 32-bit address space.
   options.max_vertices = size_t(1) << 24;
   options.max_triangles = size_t(1) << 25;
@@ -47,6 +49,8 @@ HP_EXPORT Result* hp_decode(const uint8_t* data, size_t size) {
   if (r->status != o3dgc::Status::kOk) r->mesh = o3dgc::DecodedMesh();
   return r;
 }
+
+HP_EXPORT Result* hp_decode(const uint8_t* data, size_t size) { return hp_decode_ex(data, size, 1); }
 
 HP_EXPORT void hp_free(Result* r) { delete r; }
 

@@ -112,7 +112,8 @@ function readResult(M, h) {
 export function decoderFromModule(M) {
   return {
     module: M,
-    decode(bytes) {
+    // options.verifyChecksum (default true): false skips the stream's CRC check.
+    decode(bytes, { verifyChecksum = true } = {}) {
       if (!(bytes instanceof Uint8Array)) {
         if (bytes instanceof ArrayBuffer) bytes = new Uint8Array(bytes);
         else if (ArrayBuffer.isView(bytes)) bytes = new Uint8Array(bytes.buffer, bytes.byteOffset, bytes.byteLength);
@@ -123,7 +124,7 @@ export function decoderFromModule(M) {
       let h = 0;
       try {
         M.HEAPU8.set(bytes, input);
-        h = M._hp_decode(input, bytes.length);
+        h = M._hp_decode_ex(input, bytes.length, verifyChecksum ? 1 : 0);
       } finally {
         M._free(input);
       }

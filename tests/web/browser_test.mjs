@@ -112,6 +112,18 @@ try {
       flipped: await errorOf(() => { const b = bytes.slice(); b[b.length - 5] ^= 0x55; return dec.decode(b); }),
       workerJunk: await errorOf(() => worker.decode(junk)),
     };
+    // Mutated streams (fixed seed, CRC check off so the decoder proper sees them): each must fail
+    // cleanly or decode; anything but HullpackDecodeError is a wasm trap.
+    let seed = 12345;
+    const rnd = () => ((seed = (seed * 1103515245 + 12345) >>> 0) / 4294967296);
+    const traps = [];
+    for (let i = 0; i < 1000; ++i) {
+      const b = bytes.slice(0, 1 + Math.floor(rnd() * bytes.length));
+      for (let k = 0; k < 1 + (i % 4); ++k) b[Math.floor(rnd() * b.length)] = Math.floor(rnd() * 256);
+      try { dec.decode(b, { verifyChecksum: false }); } catch (e) { if (e.name !== 'HullpackDecodeError') traps.push(String(e)); }
+    }
+    errs.traps = traps.slice(0, 3).join(' | ');
+    errs.trapCount = traps.length;
     const again = dec.decode(bytes); // the decoder still works after errors
     worker.terminate();
     const same = (x, y) => x.length === y.length && x.every((v, i) => v === y[i]);
@@ -133,6 +145,7 @@ try {
   check(direct.errs.junk === 'HullpackDecodeError:bad_magic', `junk -> ${direct.errs.junk}`);
   check(/^HullpackDecodeError:(truncated|corrupt|checksum_mismatch|limit_exceeded)$/.test(direct.errs.truncated), `truncated -> ${direct.errs.truncated}`);
   check(/^HullpackDecodeError:/.test(direct.errs.flipped), `flipped byte -> ${direct.errs.flipped}`);
+  check(direct.errs.trapCount === 0, `1000 mutated streams: no wasm trap${direct.errs.trapCount ? `: ${direct.errs.traps}` : ''}`);
   check(direct.errs.workerJunk === 'HullpackDecodeError:bad_magic', `worker junk -> ${direct.errs.workerJunk}`);
 
   // 3. The viewer on the bare stream, decoded in a worker.
@@ -142,6 +155,34 @@ try {
   const info2 = await page2.evaluate(() => window.hullpackViewer.ready);
   check(info2.vertices === r.vertices && info2.triangles === r.triangles, `viewer stream+worker ${info2.vertices}/${info2.triangles}`);
   await page2.screenshot({ path: path.join(work, 'viewer_stream.png') });
+
+  // 4. A GLB written by `hullpack pack` (once it exists): the figures its accessors state (count,
+  // min/max of the decoded data, per docs/packed-gltf.md) must be what the browser decodes.
+  const packed = path.join(work, 'packed.glb');
+  if (fs.existsSync(packed)) {
+    const glb = fs.readFileSync(packed);
+    const doc = JSON.parse(glb.subarray(20, 20 + glb.readUInt32LE(12)).toString('utf8'));
+    const hullMeshes = new Set((doc.extensions?.OMI_physics_shape?.shapes || []).map((s) => s.convex?.mesh ?? s.trimesh?.mesh));
+    let nv = 0;
+    let nt = 0;
+    for (const node of doc.nodes || []) {
+      if (node.mesh === undefined || hullMeshes.has(node.mesh)) continue;
+      for (const prim of doc.meshes[node.mesh].primitives) {
+        nv += doc.accessors[prim.attributes.POSITION].count;
+        nt += prim.indices !== undefined ? doc.accessors[prim.indices].count / 3 : doc.accessors[prim.attributes.POSITION].count / 3;
+      }
+    }
+    const colliders = (doc.nodes || []).filter((n) => n.extensions?.OMI_physics_body?.collider?.shape !== undefined).length;
+    const page3 = await context.newPage();
+    page3.on('pageerror', (e) => errors.push(String(e)));
+    await page3.goto(`${url}/samples/web/index.html?glb=/__work/packed.glb&hulls=1`);
+    const info3 = await page3.evaluate(() => window.hullpackViewer.ready);
+    check(info3.vertices === nv && info3.triangles === nt, `hullpack pack GLB: ${info3.vertices}/${info3.triangles} == accessors ${nv}/${nt}`);
+    check(info3.hulls.length === colliders, `hullpack pack GLB: ${info3.hulls.length} hulls == ${colliders} colliders`);
+    await page3.screenshot({ path: path.join(work, 'viewer_packed.png') });
+  } else {
+    console.log('note: no packed.glb (hullpack pack not available yet); checked the make_glb.mjs GLB only');
+  }
 
   check(errors.length === 0, `no page errors${errors.length ? `: ${errors.join(' | ')}` : ''}`);
 } catch (e) {
