@@ -15,32 +15,29 @@
 namespace o3dgc {
 
 struct BitModel {
-  uint16_t p0 = 32768;  // probability of a 0, in 1/65536 (mix of the two estimates below)
-  uint16_t fast = 32768;
+  uint16_t fast = 32768;  // probabilities of a 0, in 1/65536
   uint16_t slow = 32768;
-  uint8_t n = 0;        // observations so far (saturating)
+  uint8_t n = 0;          // observations so far (saturating at sizeof(kShift))
 
-  static constexpr uint32_t kMinProb = 48;
+  static constexpr int32_t kMinProb = 48;
+  static constexpr int kSlowShift = 7;
+  static constexpr int kFastShift = 3;
+
+  uint32_t p0() const { return (uint32_t(slow) + fast + 1) >> 1; }
   static int32_t Step(int32_t p, int bit, int shift) {
-    if (bit) {
-      p -= (p + (1 << shift) - 1) >> shift;
-    } else {
-      p += (65536 - p + (1 << shift) - 1) >> shift;
-    }
-    if (p < int32_t(kMinProb)) p = kMinProb;
-    if (p > int32_t(65536 - kMinProb)) p = 65536 - kMinProb;
-    return p;
+    const int32_t target = bit ? 0 : 65536;
+    p += (target - p) >> shift;  // arithmetic shift: moves at least one unit towards a 1
+    p = p < kMinProb ? kMinProb : p;
+    return p > 65536 - kMinProb ? 65536 - kMinProb : p;
   }
   void Update(int bit) {
     static constexpr uint8_t kShift[] = {2, 2, 3, 3, 3, 4, 4, 4, 4, 4, 5, 5, 5, 5, 5, 5, 5, 5, 5, 5,
                                          6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6};
-    const int shift = n < sizeof(kShift) ? kShift[n++] : kSlowShift;
+    int shift = kSlowShift;
+    if (n < sizeof(kShift)) shift = kShift[n++];
     slow = uint16_t(Step(slow, bit, shift));
     fast = uint16_t(Step(fast, bit, shift < kFastShift ? shift : kFastShift));
-    p0 = uint16_t((uint32_t(slow) + fast + 1) >> 1);
   }
-  static constexpr int kSlowShift = 7;
-  static constexpr int kFastShift = 3;
 };
 
 class ArithmeticEncoder {
@@ -48,7 +45,7 @@ class ArithmeticEncoder {
   explicit ArithmeticEncoder(std::vector<uint8_t>* out) : out_(out) {}
 
   void Encode(int bit, BitModel& m) {
-    const uint32_t bound = uint32_t((uint64_t(range_) * m.p0) >> 16);
+    const uint32_t bound = uint32_t((uint64_t(range_) * m.p0()) >> 16);
     if (bit) {
       low_ += bound;
       range_ -= bound;
@@ -98,7 +95,7 @@ class ArithmeticDecoder {
   }
 
   int Decode(BitModel& m) {
-    const uint32_t bound = uint32_t((uint64_t(range_) * m.p0) >> 16);
+    const uint32_t bound = uint32_t((uint64_t(range_) * m.p0()) >> 16);
     int bit;
     if (code_ < bound) {
       range_ = bound;
