@@ -287,7 +287,8 @@ class Decoder {
   Status GetBufferView(int64_t index, const std::string& where, const uint8_t** data, size_t* size,
                        size_t* stride);
   Status GetAccessor(int64_t index, const std::string& where, AccessorView* out);
-  // Floats of an accessor with `components` per element ("VEC3" etc. must match one of `types`).
+  // An accessor as floats (normalized integers mapped per the spec); its component count must be one
+  // of `allowed_components`.
   Status ReadFloats(int64_t index, const std::string& where, std::initializer_list<int> allowed_components,
                     std::vector<float>* out, int* components);
   Status ReadIndices(int64_t index, const std::string& where, std::vector<uint32_t>* out);
@@ -755,6 +756,7 @@ Status Decoder::DecodeMaterials(Scene* scene) {
   const json* materials = nullptr;
   HP_RETURN_IF_ERROR(TopLevel("materials", &materials));
   if (materials == nullptr) return Status::Ok();
+  size_t non_opaque_materials = 0;
   for (size_t i = 0; i < materials->size(); ++i) {
     const json& j = (*materials)[i];
     const std::string mw = Item("materials", i);
@@ -779,10 +781,16 @@ Status Decoder::DecodeMaterials(Scene* scene) {
     HP_RETURN_IF_ERROR(GetNumbers(j, "emissiveFactor", mw, 3, emissive));
     for (int c = 0; c < 3; ++c) m.emissive[static_cast<size_t>(c)] = static_cast<float>(emissive[c]);
     HP_RETURN_IF_ERROR(GetBool(j, "doubleSided", mw, &m.double_sided));
+    std::string alpha_mode;
+    HP_RETURN_IF_ERROR(GetString(j, "alphaMode", mw, &alpha_mode));
+    if (!alpha_mode.empty() && alpha_mode != "OPAQUE") ++non_opaque_materials;
     HP_RETURN_IF_ERROR(DecodeTextureRef(j, "normalTexture", mw, false, &m.normal_texture));
     HP_RETURN_IF_ERROR(DecodeTextureRef(j, "occlusionTexture", mw, false, &m.occlusion_texture));
     HP_RETURN_IF_ERROR(DecodeTextureRef(j, "emissiveTexture", mw, false, &m.emissive_texture));
     scene->materials.push_back(std::move(m));
+  }
+  if (non_opaque_materials > 0) {
+    Drop("dropped alphaMode MASK/BLEND of " + std::to_string(non_opaque_materials) + " materials");
   }
   if (TopCount("samplers") > 0) Drop("dropped " + std::to_string(TopCount("samplers")) + " texture samplers");
   return Status::Ok();

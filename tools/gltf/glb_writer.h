@@ -8,6 +8,12 @@
 // material ids gets one primitive without a material. Mesh::collides == false is written as
 // mesh.extras.hullpack.collides = false.
 //
+// Images with a uri are referenced by it (their bytes, if any, are not embedded); others are embedded
+// as a bufferView with their mime type (sniffed from PNG/JPEG/WebP magic when empty). Each image a
+// material uses gets one texture; TextureRef::uv_set becomes texCoord. When a material samples a UV
+// set the mesh lacks, zero-filled TEXCOORD accessors (no bufferView) keep the file valid and
+// extras.hullpack.uv_sets tells the reader to drop them.
+//
 // Nodes keep their scene indices; a node with several meshes gets one extra child node per extra
 // mesh (appended after the scene's nodes, marked extras.hullpack.mesh_of_parent so the reader folds
 // them back). A scene without nodes gets one root node per mesh.

@@ -44,13 +44,25 @@ void AppendU32(std::vector<uint8_t>& out, uint32_t v) {
   for (int i = 0; i < 4; ++i) out.push_back(static_cast<uint8_t>(v >> (8 * i)));
 }
 
+constexpr int kMaxJsonDepth = 256;
+
 Status ParseError(const std::string& name, const std::string& what) {
   return Status(StatusCode::kParseError, name + ": " + what);
 }
 
 Result<nlohmann::json> ParseJsonText(const uint8_t* data, size_t size, const std::string& name) {
   try {
-    nlohmann::json j = nlohmann::json::parse(data, data + size);
+    // Deeply nested values are refused: copying or dumping a json value recurses per level.
+    bool too_deep = false;
+    const nlohmann::json::parser_callback_t limit_depth = [&too_deep](int depth, nlohmann::json::parse_event_t,
+                                                                      nlohmann::json&) {
+      if (depth > kMaxJsonDepth) too_deep = true;
+      return !too_deep;
+    };
+    nlohmann::json j = nlohmann::json::parse(data, data + size, limit_depth);
+    if (too_deep) {
+      return ParseError(name, "the glTF JSON nests deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+    }
     if (!j.is_object()) return ParseError(name, "the glTF JSON is not an object");
     return j;
   } catch (const nlohmann::json::parse_error& e) {

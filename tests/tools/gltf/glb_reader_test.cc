@@ -195,6 +195,7 @@ TEST(GlbReaderTest, ReportsWhatItDrops) {
   j["samplers"] = json::array({json::object()});
   j["extensionsUsed"] = {"KHR_lights_punctual", "KHR_texture_transform"};
   j["nodes"][0]["camera"] = 0;
+  j["materials"][0]["alphaMode"] = "BLEND";
   j["nodes"][0]["extensions"]["KHR_lights_punctual"] = {{"light", 0}};
   j["meshes"][0]["primitives"][0]["targets"] = json::array({{{"POSITION", 0}}});
   j["meshes"][0]["primitives"][0]["attributes"]["COLOR_1"] = 0;
@@ -214,6 +215,7 @@ TEST(GlbReaderTest, ReportsWhatItDrops) {
   EXPECT_TRUE(Contains(d, "_TEMPERATURE"));
   EXPECT_TRUE(Contains(d, "extra scenes"));
   EXPECT_TRUE(Contains(d, "texture samplers"));
+  EXPECT_TRUE(Contains(d, "alphaMode MASK/BLEND of 1 materials"));
   EXPECT_EQ(s->meshes[0].triangle_count(), 5u);
 }
 
