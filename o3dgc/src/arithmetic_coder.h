@@ -25,8 +25,9 @@ struct BitModel {
 
   uint32_t p0() const { return (uint32_t(slow) + fast + 1) >> 1; }
   static int32_t Step(int32_t p, int bit, int shift) {
-    const int32_t target = bit ? 0 : 65536;
-    p += (target - p) >> shift;  // arithmetic shift: moves at least one unit towards a 1
+    // Moves by (target - p) / 2^shift rounded away from p, so the estimate reaches the clamp.
+    const int32_t target = bit ? 0 : 65536 + (1 << shift) - 1;
+    p += (target - p) >> shift;
     p = p < kMinProb ? kMinProb : p;
     return p > 65536 - kMinProb ? 65536 - kMinProb : p;
   }
