@@ -60,24 +60,79 @@ inline uint64_t DecodeEG(ArithmeticDecoder& d, EGModel& m) {
   return v - 1;
 }
 
+// Signed residuals: zero flag, sign, then the bit length k of the magnitude coded relative to a
+// running estimate k0 of it (one "k >= k0" decision, then unary steps up or down), then the
+// suffix as in EncodeEG. Starting from k0 saves most of the unary decisions.
 struct SignedModel {
   BitModel zero;
   BitModel sign;
-  EGModel magnitude;
+  BitModel at_least;
+  BitModel up[kMaxEGPrefix + 1];
+  BitModel down[kMaxEGPrefix + 1];
+  BitModel suffix[kMaxEGPrefix + 1][3];
+  uint16_t k_avg = 0;  // running mean of k, 4 fractional bits
+
+  int Expected() const { return (k_avg + 8) >> 4; }
+  void Observe(int k) { k_avg = uint16_t(k_avg + ((k * 16 - int(k_avg)) >> 3)); }
 };
 
 inline void EncodeSigned(ArithmeticEncoder& e, SignedModel& m, int64_t r) {
   e.Encode(r != 0, m.zero);
   if (r == 0) return;
   e.Encode(r < 0, m.sign);
-  EncodeEG(e, m.magnitude, uint64_t(r < 0 ? -r : r) - 1);
+  const uint64_t v = uint64_t(r < 0 ? -r : r);
+  const int k = FloorLog2(v);
+  const int k0 = m.Expected();
+  if (k0 > 0) e.Encode(k >= k0, m.at_least);
+  if (k >= k0) {
+    for (int i = k0; i < k; ++i) e.Encode(1, m.up[i]);
+    if (k < kMaxEGPrefix) e.Encode(0, m.up[k]);
+  } else {
+    for (int i = k0 - 1; i > k; --i) e.Encode(1, m.down[i]);
+    if (k > 0) e.Encode(0, m.down[k]);
+  }
+  m.Observe(k);
+  if (k == 0) return;
+  const int top = int((v >> (k - 1)) & 1);
+  e.Encode(top, m.suffix[k][0]);
+  if (k == 1) return;
+  e.Encode(int((v >> (k - 2)) & 1), m.suffix[k][1 + top]);
+  int rest = k - 2;
+  while (rest > 0) {
+    const int n = rest > 24 ? 24 : rest;
+    rest -= n;
+    e.EncodeBits(uint32_t((v >> rest) & ((1u << n) - 1)), n);
+  }
 }
 
 inline int64_t DecodeSigned(ArithmeticDecoder& d, SignedModel& m) {
   if (!d.Decode(m.zero)) return 0;
   const int neg = d.Decode(m.sign);
-  const int64_t mag = int64_t(DecodeEG(d, m.magnitude)) + 1;
-  return neg ? -mag : mag;
+  const int k0 = m.Expected();
+  int k;
+  if (k0 == 0 || d.Decode(m.at_least)) {
+    k = k0;
+    while (k < kMaxEGPrefix && d.Decode(m.up[k])) ++k;
+  } else {
+    k = k0 - 1;
+    while (k > 0 && d.Decode(m.down[k])) --k;
+  }
+  m.Observe(k);
+  uint64_t v = 1;
+  if (k > 0) {
+    const int top = d.Decode(m.suffix[k][0]);
+    v = (v << 1) | uint64_t(top);
+    if (k > 1) {
+      v = (v << 1) | uint64_t(d.Decode(m.suffix[k][1 + top]));
+      int rest = k - 2;
+      while (rest > 0) {
+        const int n = rest > 24 ? 24 : rest;
+        rest -= n;
+        v = (v << n) | d.DecodeBits(n);
+      }
+    }
+  }
+  return neg ? -int64_t(v) : int64_t(v);
 }
 
 // Values known to lie in [0, n): fixed-length equiprobable code.
