@@ -7,6 +7,7 @@
 
 #include "connectivity_front.h"
 #include "entropy.h"
+#include "key_table.h"
 
 namespace o3dgc {
 namespace {
@@ -132,8 +133,8 @@ class Encoder {
     kind_.assign(nt_, kPrimary);
     first_copy_.assign(nt_, kNone);
     next_copy_.assign(nt_, kNone);
-    std::vector<std::array<uint32_t, 4>> keys;
-    keys.reserve(nt_);
+    std::vector<uint32_t> last_copy(nt_, kNone);
+    KeyTable table(nt_);
     for (size_t t = 0; t < nt_; ++t) {
       uint32_t a = tris_[3 * t], b = tris_[3 * t + 1], c = tris_[3 * t + 2];
       if (a == b || b == c || a == c) {
@@ -144,25 +145,15 @@ class Encoder {
       if (a > b) std::swap(a, b);
       if (b > c) std::swap(b, c);
       if (a > b) std::swap(a, b);
-      keys.push_back({a, b, c, uint32_t(t)});
-    }
-    std::sort(keys.begin(), keys.end());
-    for (size_t i = 1; i < keys.size(); ++i) {
-      if (keys[i][0] == keys[i - 1][0] && keys[i][1] == keys[i - 1][1] &&
-          keys[i][2] == keys[i - 1][2]) {
-        // keys[i-1] is either the primary or a copy already linked; find the primary.
-        size_t j = i - 1;
-        while (kind_[keys[j][3]] == kCopy) --j;
-        const uint32_t p = keys[j][3], t = keys[i][3];
-        kind_[t] = kCopy;
-        if (first_copy_[p] == kNone) {
-          first_copy_[p] = t;
-        } else {
-          uint32_t q = first_copy_[p];
-          while (next_copy_[q] != kNone) q = next_copy_[q];
-          next_copy_[q] = t;
-        }
+      const uint32_t p = table.FindOrInsert(a, b, c, uint32_t(t));
+      if (p == t) continue;  // first triangle with this vertex set: the primary
+      kind_[t] = kCopy;
+      if (first_copy_[p] == kNone) {
+        first_copy_[p] = uint32_t(t);
+      } else {
+        next_copy_[last_copy[p]] = uint32_t(t);
       }
+      last_copy[p] = uint32_t(t);
     }
   }
 

@@ -11,6 +11,7 @@
 #include "attribute_coder.h"
 #include "connectivity_encoder.h"
 #include "entropy.h"
+#include "key_table.h"
 #include "o3dgc/o3dgc.h"
 #include "payload_header.h"
 #include "predictors.h"
@@ -152,21 +153,13 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
   {
     std::vector<uint8_t> referenced(nv, 0);
     for (size_t i = 0; i < 3 * nt; ++i) referenced[mesh.indices[i]] = 1;
-    std::vector<std::array<uint32_t, 4>> keys;
+    KeyTable table(nv);
     for (size_t v = 0; v < nv; ++v) {
       if (!referenced[v]) continue;
-      std::array<uint32_t, 4> k;
-      std::memcpy(k.data(), &positions[3 * v], 12);
-      k[3] = uint32_t(v);
-      keys.push_back(k);
-    }
-    std::sort(keys.begin(), keys.end());
-    for (size_t i = 0; i < keys.size(); ++i) {
-      if (i == 0 || keys[i][0] != keys[i - 1][0] || keys[i][1] != keys[i - 1][1] ||
-          keys[i][2] != keys[i - 1][2]) {
-        ++num_welded;
-      }
-      weld[keys[i][3]] = num_welded - 1;
+      uint32_t k[3];
+      std::memcpy(k, &positions[3 * v], 12);
+      weld[v] = table.FindOrInsert(k[0], k[1], k[2], num_welded);
+      if (weld[v] == num_welded) ++num_welded;
     }
   }
   std::vector<uint32_t> welded_tris(3 * nt);
