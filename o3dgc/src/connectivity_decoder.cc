@@ -76,7 +76,7 @@ class Decoder {
         const Status s = VertexRef(&v[j]);
         if (s != Status::kOk) return s;
       }
-      out_.insert(out_.end(), {v[0], v[1], v[2]});
+      Push(v[0], v[1], v[2]);
     }
     if (out_.size() != nt_ * 3) return Status::kCorrupt;
     if (dec_.failed()) return Status::kTruncated;
@@ -87,6 +87,11 @@ class Decoder {
 
  private:
   bool Full() const { return out_.size() >= nt_ * 3; }
+  void Push(uint32_t x, uint32_t y, uint32_t z) {
+    out_.push_back(x);
+    out_.push_back(y);
+    out_.push_back(z);
+  }
 
   Status VertexRef(uint32_t* v) {
     if (dec_.Decode(m_->start_new)) {
@@ -101,14 +106,14 @@ class Decoder {
   }
 
   Status Emit(uint32_t x, uint32_t y, uint32_t z) {
-    out_.insert(out_.end(), {x, y, z});
+    Push(x, y, z);
     const uint64_t count = DecodeEG(dec_, m_->copies);
     if (count > nt_ - out_.size() / 3) return Status::kCorrupt;
     for (uint64_t i = 0; i < count; ++i) {
       if (dec_.Decode(m_->copy_flip)) {
-        out_.insert(out_.end(), {x, z, y});
+        Push(x, z, y);
       } else {
-        out_.insert(out_.end(), {x, y, z});
+        Push(x, y, z);
       }
     }
     return Status::kOk;

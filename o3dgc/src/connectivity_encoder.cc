@@ -121,7 +121,7 @@ class Encoder {
       const uint32_t x = CodeVertexRef(tris_[3 * t]);
       const uint32_t y = CodeVertexRef(tris_[3 * t + 1]);
       const uint32_t z = CodeVertexRef(tris_[3 * t + 2]);
-      out_.triangles.insert(out_.triangles.end(), {x, y, z});
+      Push(x, y, z);
       out_.source.push_back(t);
     }
   }
@@ -172,6 +172,12 @@ class Encoder {
     }
   }
 
+  void Push(uint32_t x, uint32_t y, uint32_t z) {
+    out_.triangles.push_back(x);
+    out_.triangles.push_back(y);
+    out_.triangles.push_back(z);
+  }
+
   uint32_t NewVertex(uint32_t old) {
     const uint32_t id = front_.AddVertex();
     new_of_old_[old] = id;
@@ -192,7 +198,7 @@ class Encoder {
 
   // Records a primary triangle and codes its copies.
   void Emit(size_t t, uint32_t x, uint32_t y, uint32_t z) {
-    out_.triangles.insert(out_.triangles.end(), {x, y, z});
+    Push(x, y, z);
     out_.source.push_back(uint32_t(t));
     uint32_t count = 0;
     for (uint32_t q = first_copy_[t]; q != kNone; q = next_copy_[q]) ++count;
@@ -204,9 +210,9 @@ class Encoder {
       const bool same = (nx == x && ny == y) || (nx == y && ny == z) || (nx == z && ny == x);
       enc_.Encode(same ? 0 : 1, m_->copy_flip);
       if (same) {
-        out_.triangles.insert(out_.triangles.end(), {x, y, z});
+        Push(x, y, z);
       } else {
-        out_.triangles.insert(out_.triangles.end(), {x, z, y});
+        Push(x, z, y);
       }
       out_.source.push_back(q);
     }

@@ -82,8 +82,12 @@ PredictionContext PredictParallelogram(const MeshAdjacency& adj, uint32_t c, con
     if (n_par >= 3 && n_par <= kMaxKept) {
       for (int k = 0; k < dim; ++k) {
         int64_t col[kMaxKept];
-        for (int i = 0; i < n_par; ++i) col[i] = kept[i][k];
-        std::sort(col, col + n_par);
+        for (int i = 0; i < n_par; ++i) {  // insertion sort: n_par is small
+          int64_t x = kept[i][k];
+          int j = i;
+          for (; j > 0 && col[j - 1] > x; --j) col[j] = col[j - 1];
+          col[j] = x;
+        }
         pred[k] = (n_par & 1) ? col[n_par / 2] : DivRound(col[n_par / 2 - 1] + col[n_par / 2], 2);
       }
     }
