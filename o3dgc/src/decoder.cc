@@ -156,7 +156,7 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
     }
   }
   MeshAdjacency attr_adj;
-  attr_adj.Build(attr_tris, nv);
+  if (h.has_normals || !h.floats.empty()) attr_adj.Build(attr_tris, nv);
   NormalGeometry geo;
   geo.positions = qpos.data();
   for (int k = 0; k < 3; ++k) {

@@ -284,7 +284,7 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
   std::vector<uint32_t> attr_tris(3 * nt);
   for (size_t i = 0; i < 3 * nt; ++i) attr_tris[i] = orig_new[corner_vertex[i]];
   MeshAdjacency attr_adj;
-  attr_adj.Build(attr_tris, uint32_t(nv));
+  if (h.has_normals || !h.floats.empty()) attr_adj.Build(attr_tris, uint32_t(nv));
   NormalGeometry geo;
   geo.positions = qpos.data();
   for (int k = 0; k < 3; ++k) {
