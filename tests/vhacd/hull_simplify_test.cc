@@ -1,0 +1,53 @@
+#include "hull_simplify.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace vhacd {
+namespace internal {
+namespace {
+
+HullMesh SphereHull(int n) {
+  std::mt19937 rng(11);
+  std::normal_distribution<double> g;
+  std::vector<Vec3> pts;
+  for (int i = 0; i < n; ++i) pts.push_back(Vec3(g(rng), g(rng), g(rng)).normalized());
+  HullMesh h;
+  EXPECT_EQ(ComputeConvexHull(pts, -1.0, &h), HullStatus::kOk);
+  return h;
+}
+
+TEST(HullSimplifyTest, KeepsAtMostMaxVerticesAndMostOfTheVolume) {
+  const HullMesh h = SphereHull(1000);
+  const HullMesh s = SimplifyHull(h, 64, 0.0);
+  EXPECT_LE(s.vertices.size(), 64u);
+  EXPECT_GE(s.vertices.size(), 60u);
+  EXPECT_GT(s.Volume(), 0.85 * h.Volume());
+  EXPECT_LE(s.Volume(), h.Volume() + 1e-12);
+  EXPECT_LE(s.MaxConvexityViolation(), 1e-9);
+  // Every kept vertex is an input vertex.
+  for (const Vec3& p : s.vertices) {
+    bool found = false;
+    for (const Vec3& q : h.vertices) found = found || p == q;
+    EXPECT_TRUE(found);
+  }
+}
+
+TEST(HullSimplifyTest, MinVolumeStopsEarlyAndSmallHullsAreUnchanged) {
+  const HullMesh h = SphereHull(1000);
+  const HullMesh coarse = SimplifyHull(h, 1024, 0.01 * h.Volume());
+  EXPECT_LT(coarse.vertices.size(), 64u);
+  EXPECT_GE(coarse.vertices.size(), 4u);
+  const HullMesh few = SphereHull(20);
+  const HullMesh same = SimplifyHull(few, 64, 0.0);
+  EXPECT_EQ(same.vertices.size(), few.vertices.size());
+  const HullMesh four = SimplifyHull(h, 4, 0.0);
+  EXPECT_EQ(four.vertices.size(), 4u);
+  EXPECT_GT(four.Volume(), 0.0);
+}
+
+}  // namespace
+}  // namespace internal
+}  // namespace vhacd

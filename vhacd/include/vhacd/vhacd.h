@@ -1,0 +1,205 @@
+// vhacd: approximate convex decomposition of triangle meshes (V-HACD 2.0 style).
+//
+// The library depends only on Eigen3 and the C++ standard library (threads included). It never
+// throws across this API, never asserts on user input and never returns NaN or Inf: every failure
+// is reported as a Status value in the Result.
+//
+// Pipeline (see Decompose):
+//   1. validation and normalization (translate to the bounding-box centre, scale to a unit box,
+//      optional PCA rotation);
+//   2. voxelization at about `resolution` voxels: a voxel is a *surface* voxel when a triangle
+//      overlaps its closed box (exact separating-axis test, evaluated only on the voxels of each
+//      triangle's bounding box);
+//   3. interior fill. A non-surface voxel is *inside* when either
+//        (a) it cannot be reached from outside the grid through non-surface voxels (flood fill), or
+//        (b) at least 4 of the 6 axis-aligned rays from its centre (+x,-x,+y,-y,+z,-z) cross the
+//            surface an odd number of times.
+//      Rule (a) is exact for closed surfaces, including overlapping closed components; rule (b)
+//      keeps meshes with small holes (scans such as the Stanford bunny, open at the base) solid,
+//      because a ray only escapes through a hole it is aimed at. A thin open sheet whose opening
+//      is as large as the shape (a single-sheet hemisphere) may be filled; a closed thick bowl's
+//      cavity is kept empty. Crossings are counted with a tie-breaking rule so that a ray through
+//      a shared edge or vertex is counted once.
+//   4. recursive clipping, up to `depth` levels: each part whose concavity
+//      (volume of its hull - its volume) / (volume of the hull of the whole voxel set) exceeds
+//      `concavity` is cut by the axis-aligned plane minimising
+//        concavity(left) + concavity(right) + alpha * balance + beta * revolution-axis penalty,
+//      searched every `plane_downsampling` voxels, with hulls estimated on every
+//      `convexhull_downsampling`-th voxel line, then refined voxel by voxel around the best plane;
+//   5. one convex hull per part, built from the input surface points that lie in the part's
+//      surface voxels plus the corners of its interior voxels (so hulls hug the mesh, not the
+//      voxels);
+//   6. merge: the pair of hulls whose merged hull adds the least volume (relative to the hull of
+//      the whole mesh) is merged while that cost is below `gamma`, then while more than
+//      `max_convex_hulls` hulls remain (when that budget is non-zero);
+//   7. simplification of each hull to at most `max_vertices_per_hull` vertices, greedily keeping
+//      the point with the largest volume increment, and stopping early when the increment falls
+//      below `min_volume_per_hull` times the volume of the hull of the whole mesh;
+//   8. an error report (see Report).
+//
+// Determinism: the output is identical for any `num_threads` and from run to run (work is
+// partitioned into fixed tasks whose results are combined in a fixed order).
+#ifndef VHACD_VHACD_H_
+#define VHACD_VHACD_H_
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace vhacd {
+
+#define VHACD_VERSION 20000  // major * 10000 + minor * 100 + patch
+
+enum class Status {
+  kOk = 0,
+  kInvalidParameter,  // a Parameters field is out of its documented range
+  kEmptyMesh,         // no points or no triangles (after dropping degenerate triangles)
+  kInvalidMesh,       // NaN/Inf coordinate, null pointer, bad stride, zero-size bounding box
+  kIndexOutOfRange,   // a triangle refers to a point that does not exist
+  kUnsupported,       // a valid request this build cannot honour
+  kCancelled,         // Observer::IsCancelled() returned true
+  kOutOfMemory,
+  kInternalError,
+};
+
+// "ok", "invalid parameter", ...
+const char* StatusName(Status status);
+
+enum class Mode : int {
+  kVoxel = 0,        // voxel-based decomposition
+  kTetrahedron = 1,  // tetrahedron-based decomposition (not available in this build: kUnsupported)
+};
+
+// Parameters with the defaults and ranges of V-HACD 2.0. Ranges are inclusive.
+struct Parameters {
+  uint32_t resolution = 100000;         // number of voxels of the grid [10000, 64000000]
+  uint32_t depth = 20;                  // maximum clipping depth [1, 32]
+  double concavity = 0.0025;            // maximum concavity of a part [0, 1]
+  uint32_t plane_downsampling = 4;      // coarse plane search step, in voxels [1, 16]
+  uint32_t convexhull_downsampling = 4; // hull precision during the plane search [1, 16]
+  double alpha = 0.05;                  // weight of the balance term [0, 1]
+  double beta = 0.05;                   // weight of the revolution-axis term [0, 1]
+  double gamma = 0.00125;               // maximum concavity of a merge [0, 1]
+  bool pca = false;                     // align the mesh on its principal axes first
+  Mode mode = Mode::kVoxel;
+  uint32_t max_vertices_per_hull = 64;  // [4, 1024]
+  double min_volume_per_hull = 0.0001;  // adaptive hull sampling [0, 0.01]
+  uint32_t max_convex_hulls = 0;        // hull budget; 0 = no budget [0, 100000]
+  // Extension: largest distance a part's hull may stick out of the input solid, as a fraction of
+  // the bounding-box diagonal; parts are split further and merges refused beyond it (measured on
+  // the voxel grid, so it is only as precise as a voxel). 0 disables it (pure V-HACD 2.0). [0, 1]
+  double max_distance = 0.02;
+  uint32_t num_threads = 0;             // 0 = std::thread::hardware_concurrency() [0, 256]
+  bool compute_report = true;           // fill Result::report's error measures (costs time)
+
+  // The V-HACD 2.0 defaults (same as a default-constructed Parameters).
+  static Parameters Default() { return Parameters(); }
+  // Finer voxels and a lower concavity threshold: tighter hulls, slower.
+  static Parameters High();
+};
+
+// Returns kOk, or kInvalidParameter with the offending field named in *why (when non-null).
+Status ValidateParameters(const Parameters& params, std::string* why);
+
+// A borrowed, read-only triangle mesh. Exactly one of points_f / points_d is non-null. Point i is
+// (p[i*point_stride], p[i*point_stride+1], p[i*point_stride+2]); triangle t is
+// (indices[t*triangle_stride], ... +1, ... +2). Strides are in elements and must be >= 3.
+// Any soup is accepted: open or closed, several components, unoriented, duplicated or two-sided
+// faces; degenerate and duplicate triangles are ignored.
+struct MeshView {
+  const float* points_f = nullptr;
+  const double* points_d = nullptr;
+  size_t point_count = 0;
+  size_t point_stride = 3;
+  const uint32_t* indices = nullptr;
+  size_t triangle_count = 0;
+  size_t triangle_stride = 3;
+
+  static MeshView FromDouble(const double* points, size_t point_count, const uint32_t* indices,
+                             size_t triangle_count) {
+    MeshView m;
+    m.points_d = points;
+    m.point_count = point_count;
+    m.indices = indices;
+    m.triangle_count = triangle_count;
+    return m;
+  }
+  static MeshView FromFloat(const float* points, size_t point_count, const uint32_t* indices,
+                            size_t triangle_count) {
+    MeshView m;
+    m.points_f = points;
+    m.point_count = point_count;
+    m.indices = indices;
+    m.triangle_count = triangle_count;
+    return m;
+  }
+};
+
+// A closed convex polyhedron: counter-clockwise (outward-facing) triangles, every vertex used.
+struct ConvexHull {
+  std::vector<double> points;       // 3 per vertex
+  std::vector<uint32_t> triangles;  // 3 per triangle
+  double volume = 0.0;
+  double center[3] = {0.0, 0.0, 0.0};  // centroid of the solid
+
+  size_t vertex_count() const { return points.size() / 3; }
+  size_t triangle_count() const { return triangles.size() / 3; }
+};
+
+struct HullReport {
+  uint32_t vertex_count = 0;
+  double volume = 0.0;
+  // (hull volume - volume of the input solid inside the hull) / volume of the input's hull,
+  // measured on the voxel centres.
+  double concavity = 0.0;
+};
+
+// Error measures of a decomposition. Distances are fractions of the bounding-box diagonal of the
+// input; -1 means "not measured" (report disabled, or IoU of an open mesh).
+struct Report {
+  std::vector<HullReport> hulls;
+  bool closed_input = false;      // every edge of the input is shared by exactly two triangles
+  double volume_iou = -1.0;       // |solid ∩ hulls| / |solid ∪ hulls| on the voxel centres
+  // One-sided Hausdorff distances on samples of both surfaces. mesh -> hulls counts 0 for a mesh
+  // point inside a hull; hulls -> mesh uses only points of the boundary of the union of hulls.
+  double hausdorff_mesh_to_hulls = -1.0;
+  double hausdorff_hulls_to_mesh = -1.0;
+  double concavity = -1.0;        // max of the two Hausdorff distances
+  uint64_t voxel_count = 0;       // surface + inside voxels
+  uint64_t surface_voxel_count = 0;
+  uint32_t parts_before_merge = 0;
+  // Wall-clock seconds per stage.
+  double seconds_voxelize = 0.0, seconds_fill = 0.0, seconds_clip = 0.0, seconds_hulls = 0.0,
+         seconds_merge = 0.0, seconds_simplify = 0.0, seconds_report = 0.0, seconds_total = 0.0;
+};
+
+struct Result {
+  Status status = Status::kOk;
+  std::string message;               // human-readable detail for a non-ok status
+  std::vector<ConvexHull> hulls;     // empty unless status == kOk
+  Report report;
+
+  bool ok() const { return status == Status::kOk; }
+};
+
+// Progress, logging and cancellation hooks. All methods may be called from any of the library's
+// threads but never concurrently (the library serializes the calls).
+class Observer {
+ public:
+  virtual ~Observer() = default;
+  // Percentages in [0, 100]. A run is a sequence of stages made of operations.
+  virtual void OnProgress(double overall, double stage, double operation, const char* stage_name,
+                          const char* operation_name) {}
+  virtual void OnLog(const char* message) {}
+  // Polled often (about every millisecond of work); return true to stop: Decompose then returns
+  // Status::kCancelled promptly.
+  virtual bool IsCancelled() { return false; }
+};
+
+// Decomposes `mesh` into convex hulls. `observer` may be null.
+Result Decompose(const MeshView& mesh, const Parameters& params, Observer* observer = nullptr);
+
+}  // namespace vhacd
+
+#endif  // VHACD_VHACD_H_

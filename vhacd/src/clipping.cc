@@ -1,0 +1,143 @@
+#include "clipping.h"
+
+#include <algorithm>
+#include <limits>
+#include <string>
+
+#include "thread_pool.h"
+
+namespace vhacd {
+namespace internal {
+
+namespace {
+struct Task {
+  uint32_t part;
+  int axis;
+  int c;
+};
+}  // namespace
+
+bool ClipRecursively(Part root, const ClipParams& params, Context* ctx, ClipOutput* out) {
+  out->parts.clear();
+  out->concavity.clear();
+  root.ComputeBounds();
+  {
+    std::vector<Vec3> pts;
+    PartHullPoints(root, false, &pts);
+    out->volume0 = std::max(ExactHullVolume(pts), root.volume());
+  }
+  CutWeights weights;
+  weights.alpha = params.alpha;
+  weights.beta = params.beta;
+  weights.volume0 = out->volume0;
+
+  std::vector<Part> current;
+  current.push_back(std::move(root));
+  for (int level = 0;; ++level) {
+    out->levels = level;
+    const size_t n = current.size();
+    std::vector<double> conc(n, 0.0), depth(n, 0.0);
+    if (!ParallelFor(ctx, n, [&](size_t i) {
+          std::vector<Vec3> pts;
+          PartHullPoints(current[i], false, &pts);
+          HullMesh h;
+          if (ComputeConvexHull(pts, 0.0, &h) != HullStatus::kOk) return;
+          conc[i] = std::max(0.0, h.Volume() - current[i].volume()) / out->volume0;
+          if (params.field != nullptr && params.max_depth > 0 && level < params.depth)
+            depth[i] = params.field->HullDepth(h);
+        }))
+      return false;
+    std::vector<uint32_t> split;
+    for (size_t i = 0; i < n; ++i) {
+      const Part& p = current[i];
+      const bool thick = p.bmax[0] > p.bmin[0] || p.bmax[1] > p.bmin[1] || p.bmax[2] > p.bmin[2];
+      const bool too_deep = params.max_depth > 0 && depth[i] - 0.5 > params.max_depth;
+      if (level < params.depth && (conc[i] > params.concavity || too_deep) && thick) {
+        split.push_back(static_cast<uint32_t>(i));
+      } else {
+        out->parts.push_back(std::move(current[i]));
+        out->concavity.push_back(conc[i]);
+      }
+    }
+    ctx->Log("clipping level " + std::to_string(level) + ": " + std::to_string(n) + " parts, " +
+             std::to_string(split.size()) + " to split");
+    if (split.empty()) break;
+    const size_t m = split.size();
+    std::vector<AxisLines> lines(m * 3);
+    std::vector<RevolutionHint> hints(m);
+    if (!ParallelFor(ctx, m * 4, [&](size_t i) {
+          if (i < m * 3)
+            lines[i] = BuildAxisLines(current[split[i / 3]], static_cast<int>(i % 3));
+          else
+            hints[i - m * 3] = ComputeRevolutionHint(current[split[i - m * 3]]);
+        }))
+      return false;
+
+    // Coarse search.
+    std::vector<Task> tasks;
+    for (size_t k = 0; k < m; ++k)
+      for (int axis = 0; axis < 3; ++axis)
+        for (int c : CandidatePlanes(current[split[k]], axis, params.plane_downsampling))
+          tasks.push_back({static_cast<uint32_t>(k), axis, c});
+    std::vector<double> cost(tasks.size());
+    auto run = [&](int hull_ds) {
+      return ParallelFor(ctx, tasks.size(), [&](size_t t) {
+        const Task& tk = tasks[t];
+        const uint32_t pi = split[tk.part];
+        cost[t] = CutCost(current[pi], lines[tk.part * 3 + tk.axis], tk.c, hull_ds, weights,
+                          hints[tk.part], conc[pi]);
+      });
+    };
+    if (!run(params.convexhull_downsampling)) return false;
+    std::vector<Task> best(m, Task{0, -1, 0});
+    std::vector<double> best_cost(m, std::numeric_limits<double>::infinity());
+    for (size_t t = 0; t < tasks.size(); ++t)
+      if (cost[t] < best_cost[tasks[t].part]) {
+        best_cost[tasks[t].part] = cost[t];
+        best[tasks[t].part] = tasks[t];
+      }
+    // Exact search around the best coarse plane.
+    if (params.plane_downsampling > 1 || params.convexhull_downsampling > 1) {
+      tasks.clear();
+      for (size_t k = 0; k < m; ++k) {
+        if (best[k].axis < 0) continue;
+        const Part& p = current[split[k]];
+        const int a = best[k].axis;
+        const int lo = std::max(p.bmin[a] + 1, best[k].c - params.plane_downsampling + 1);
+        const int hi = std::min(p.bmax[a], best[k].c + params.plane_downsampling - 1);
+        for (int c = lo; c <= hi; ++c) tasks.push_back({static_cast<uint32_t>(k), a, c});
+      }
+      cost.assign(tasks.size(), 0.0);
+      if (!run(1)) return false;
+      std::fill(best_cost.begin(), best_cost.end(), std::numeric_limits<double>::infinity());
+      for (size_t t = 0; t < tasks.size(); ++t)
+        if (cost[t] < best_cost[tasks[t].part]) {
+          best_cost[tasks[t].part] = cost[t];
+          best[tasks[t].part] = tasks[t];
+        }
+    }
+    // Split.
+    std::vector<Part> next(m * 2);
+    if (!ParallelFor(ctx, m, [&](size_t k) {
+          Part& p = current[split[k]];
+          const int a = best[k].axis, c = best[k].c;
+          if (a < 0) {
+            next[2 * k] = std::move(p);
+            return;
+          }
+          for (const Voxel& v : p.voxels) (v.c[a] < c ? next[2 * k] : next[2 * k + 1]).voxels.push_back(v);
+          std::vector<Voxel>().swap(p.voxels);
+          next[2 * k].ComputeBounds();
+          next[2 * k + 1].ComputeBounds();
+        }))
+      return false;
+    current.clear();
+    for (Part& p : next)
+      if (!p.voxels.empty()) current.push_back(std::move(p));
+    ctx->Progress(100.0 * (level + 1) / std::max(1, params.depth), "clipping");
+  }
+  return true;
+}
+
+}  // namespace internal
+}  // namespace vhacd

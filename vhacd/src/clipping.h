@@ -1,0 +1,44 @@
+// Recursive clipping of the voxel set into parts of low concavity (hierarchical, level by level).
+#ifndef VHACD_SRC_CLIPPING_H_
+#define VHACD_SRC_CLIPPING_H_
+
+#include <vector>
+
+#include "context.h"
+#include "distance_field.h"
+#include "plane_search.h"
+#include "primitive_set.h"
+
+namespace vhacd {
+namespace internal {
+
+struct ClipParams {
+  int depth = 20;
+  double concavity = 0.0025;
+  int plane_downsampling = 4;
+  int convexhull_downsampling = 4;
+  double alpha = 0.05, beta = 0.05;
+  // A part is also split while its voxel hull sticks out of the solid by more than max_depth
+  // voxels (measured on `field`; disabled when field is null or max_depth <= 0).
+  const class DistanceField* field = nullptr;
+  double max_depth = 0.0;
+};
+
+struct ClipOutput {
+  std::vector<Part> parts;
+  std::vector<double> concavity;  // of each part, as measured before it became a leaf (-1: not)
+  double volume0 = 0.0;           // volume of the hull of the whole voxel set (voxel units)
+  int levels = 0;
+};
+
+// Splits `root` level by level: at each level every part whose concavity exceeds the threshold is
+// cut by its best plane (coarse search every plane_downsampling slices with downsampled hulls, then
+// an exact search around the best coarse plane). Parts are processed in a fixed order and each
+// cost is computed by one task, so the result does not depend on the thread count.
+// Returns false when cancelled.
+bool ClipRecursively(Part root, const ClipParams& params, Context* ctx, ClipOutput* out);
+
+}  // namespace internal
+}  // namespace vhacd
+
+#endif  // VHACD_SRC_CLIPPING_H_

@@ -1,0 +1,429 @@
+// vhacd::Decompose: validation, normalization and the pipeline stages (see include/vhacd/vhacd.h).
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <new>
+#include <string>
+#include <thread>
+
+#include "clipping.h"
+#include "context.h"
+#include "convex_hull.h"
+#include "distance_field.h"
+#include "error_metrics.h"
+#include "hull_simplify.h"
+#include "merge.h"
+#include "part_hull.h"
+#include "primitive_set.h"
+#include "thread_pool.h"
+#include "vhacd/vhacd.h"
+#include "voxelizer.h"
+
+namespace vhacd {
+
+const char* StatusName(Status status) {
+  switch (status) {
+    case Status::kOk: return "ok";
+    case Status::kInvalidParameter: return "invalid parameter";
+    case Status::kEmptyMesh: return "empty mesh";
+    case Status::kInvalidMesh: return "invalid mesh";
+    case Status::kIndexOutOfRange: return "index out of range";
+    case Status::kUnsupported: return "unsupported";
+    case Status::kCancelled: return "cancelled";
+    case Status::kOutOfMemory: return "out of memory";
+    case Status::kInternalError: return "internal error";
+  }
+  return "unknown";
+}
+
+Parameters Parameters::High() {
+  Parameters p;
+  p.resolution = 400000;
+  p.concavity = 0.001;
+  p.plane_downsampling = 2;
+  p.convexhull_downsampling = 2;
+  p.gamma = 0.0005;
+  p.max_vertices_per_hull = 128;
+  p.min_volume_per_hull = 0.00001;
+  p.max_distance = 0.012;
+  return p;
+}
+
+Status ValidateParameters(const Parameters& p, std::string* why) {
+  auto bad = [&](const char* msg) {
+    if (why != nullptr) *why = msg;
+    return Status::kInvalidParameter;
+  };
+  auto in01 = [](double v, double hi) { return std::isfinite(v) && v >= 0.0 && v <= hi; };
+  if (p.resolution < 10000 || p.resolution > 64000000) return bad("resolution must be in [10000, 64000000]");
+  if (p.depth < 1 || p.depth > 32) return bad("depth must be in [1, 32]");
+  if (!in01(p.concavity, 1.0)) return bad("concavity must be in [0, 1]");
+  if (p.plane_downsampling < 1 || p.plane_downsampling > 16) return bad("plane_downsampling must be in [1, 16]");
+  if (p.convexhull_downsampling < 1 || p.convexhull_downsampling > 16)
+    return bad("convexhull_downsampling must be in [1, 16]");
+  if (!in01(p.alpha, 1.0)) return bad("alpha must be in [0, 1]");
+  if (!in01(p.beta, 1.0)) return bad("beta must be in [0, 1]");
+  if (!in01(p.gamma, 1.0)) return bad("gamma must be in [0, 1]");
+  if (p.mode != Mode::kVoxel && p.mode != Mode::kTetrahedron) return bad("mode must be 0 or 1");
+  if (p.max_vertices_per_hull < 4 || p.max_vertices_per_hull > 1024)
+    return bad("max_vertices_per_hull must be in [4, 1024]");
+  if (!in01(p.min_volume_per_hull, 0.01)) return bad("min_volume_per_hull must be in [0, 0.01]");
+  if (!in01(p.max_distance, 1.0)) return bad("max_distance must be in [0, 1]");
+  if (p.max_convex_hulls > 100000) return bad("max_convex_hulls must be in [0, 100000]");
+  if (p.num_threads > 256) return bad("num_threads must be in [0, 256]");
+  if (why != nullptr) why->clear();
+  return Status::kOk;
+}
+
+namespace {
+
+using internal::Vec3;
+
+struct Clock {
+  std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
+  double Lap() {
+    const auto t = std::chrono::steady_clock::now();
+    const double s = std::chrono::duration<double>(t - t0).count();
+    t0 = t;
+    return s;
+  }
+};
+
+Result Fail(Status s, std::string message) {
+  Result r;
+  r.status = s;
+  r.message = std::move(message);
+  return r;
+}
+
+struct InputMesh {
+  std::vector<Vec3> points;                          // welded, referenced only
+  std::vector<std::array<uint32_t, 3>> triangles;    // no degenerate, no duplicate
+  bool closed = false;
+};
+
+Status ReadMesh(const MeshView& m, InputMesh* out, std::string* why) {
+  if (m.point_count == 0 || m.triangle_count == 0) {
+    *why = "the mesh has no points or no triangles";
+    return Status::kEmptyMesh;
+  }
+  if ((m.points_f == nullptr) == (m.points_d == nullptr)) {
+    *why = "exactly one of points_f and points_d must be set";
+    return Status::kInvalidMesh;
+  }
+  if (m.indices == nullptr) {
+    *why = "indices is null";
+    return Status::kInvalidMesh;
+  }
+  if (m.point_stride < 3 || m.triangle_stride < 3) {
+    *why = "strides must be at least 3";
+    return Status::kInvalidMesh;
+  }
+  if (m.point_count >= 0xffffffffu || m.triangle_count >= (size_t{1} << 31)) {
+    *why = "the mesh is too large";
+    return Status::kInvalidMesh;
+  }
+  const size_t np = m.point_count;
+  std::vector<Vec3> pts(np);
+  for (size_t i = 0; i < np; ++i) {
+    for (int k = 0; k < 3; ++k)
+      pts[i][k] = m.points_d ? m.points_d[i * m.point_stride + k]
+                             : static_cast<double>(m.points_f[i * m.point_stride + k]);
+  }
+  std::vector<char> used(np, 0);
+  for (size_t t = 0; t < m.triangle_count; ++t)
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t v = m.indices[t * m.triangle_stride + k];
+      if (v >= np) {
+        *why = "triangle " + std::to_string(t) + " refers to point " + std::to_string(v) + " of " +
+               std::to_string(np);
+        return Status::kIndexOutOfRange;
+      }
+      used[v] = 1;
+    }
+  for (size_t i = 0; i < np; ++i)
+    if (used[i] && !pts[i].allFinite()) {
+      *why = "point " + std::to_string(i) + " has a non-finite coordinate";
+      return Status::kInvalidMesh;
+    }
+  // Weld bit-identical positions (deterministic: sorted order).
+  std::vector<uint32_t> order;
+  for (uint32_t i = 0; i < np; ++i)
+    if (used[i]) order.push_back(i);
+  std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+    if (pts[a][0] != pts[b][0]) return pts[a][0] < pts[b][0];
+    if (pts[a][1] != pts[b][1]) return pts[a][1] < pts[b][1];
+    if (pts[a][2] != pts[b][2]) return pts[a][2] < pts[b][2];
+    return a < b;
+  });
+  std::vector<uint32_t> remap(np, 0);
+  for (size_t k = 0; k < order.size(); ++k) {
+    if (k == 0 || pts[order[k]] != pts[order[k - 1]]) out->points.push_back(pts[order[k]]);
+    remap[order[k]] = static_cast<uint32_t>(out->points.size() - 1);
+  }
+  // Triangles: drop degenerate and duplicate (same vertex set) ones, keep the first.
+  std::vector<std::pair<std::array<uint32_t, 3>, uint32_t>> keyed;
+  for (size_t t = 0; t < m.triangle_count; ++t) {
+    std::array<uint32_t, 3> tri;
+    for (int k = 0; k < 3; ++k) tri[k] = remap[m.indices[t * m.triangle_stride + k]];
+    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;
+    std::array<uint32_t, 3> key = tri;
+    std::sort(key.begin(), key.end());
+    keyed.emplace_back(key, static_cast<uint32_t>(t));
+  }
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<uint32_t> keep;
+  for (size_t k = 0; k < keyed.size(); ++k)
+    if (k == 0 || keyed[k].first != keyed[k - 1].first) keep.push_back(keyed[k].second);
+  std::sort(keep.begin(), keep.end());
+  for (uint32_t t : keep) {
+    std::array<uint32_t, 3> tri;
+    for (int k = 0; k < 3; ++k) tri[k] = remap[m.indices[t * m.triangle_stride + k]];
+    out->triangles.push_back(tri);
+  }
+  if (out->triangles.empty()) {
+    *why = "every triangle is degenerate";
+    return Status::kEmptyMesh;
+  }
+  // Closed: every undirected edge used by exactly two triangles.
+  std::vector<uint64_t> edges;
+  edges.reserve(out->triangles.size() * 3);
+  for (const auto& t : out->triangles)
+    for (int k = 0; k < 3; ++k) {
+      const uint64_t a = std::min(t[k], t[(k + 1) % 3]), b = std::max(t[k], t[(k + 1) % 3]);
+      edges.push_back((a << 32) | b);
+    }
+  std::sort(edges.begin(), edges.end());
+  out->closed = true;
+  for (size_t i = 0; i < edges.size();) {
+    size_t j = i;
+    while (j < edges.size() && edges[j] == edges[i]) ++j;
+    if (j - i != 2) out->closed = false;
+    i = j;
+  }
+  return Status::kOk;
+}
+
+double Quantize(double x) {
+  const double q = 1099511627776.0;  // 2^40: makes the normalized mesh scale-invariant
+  return std::nearbyint(x * q) / q;
+}
+
+Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* observer) {
+  std::string why;
+  Status st = ValidateParameters(params, &why);
+  if (st != Status::kOk) return Fail(st, why);
+  if (params.mode == Mode::kTetrahedron)
+    return Fail(Status::kUnsupported, "tetrahedron mode (mode 1) is not available in this build");
+  InputMesh input;
+  st = ReadMesh(view, &input, &why);
+  if (st != Status::kOk) return Fail(st, why);
+
+  const int threads = params.num_threads > 0
+                          ? static_cast<int>(params.num_threads)
+                          : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  internal::Context ctx(observer, threads);
+  Result result;
+  Report& rep = result.report;
+  rep.closed_input = input.closed;
+  Clock clock, total;
+
+  // Normalization.
+  Vec3 lo = input.points[0], hi = input.points[0];
+  for (const Vec3& p : input.points) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const Vec3 center = 0.5 * (lo + hi);
+  const double scale = (hi - lo).maxCoeff();
+  if (!(scale > 0) || !std::isfinite(scale) || !center.allFinite())
+    return Fail(Status::kInvalidMesh, "the mesh has a degenerate or overflowing bounding box");
+  std::vector<Vec3> pn(input.points.size());
+  for (size_t i = 0; i < pn.size(); ++i) {
+    const Vec3 q = (input.points[i] - center) / scale;
+    pn[i] = Vec3(Quantize(q[0]), Quantize(q[1]), Quantize(q[2]));
+  }
+  Eigen::Matrix3d rot = Eigen::Matrix3d::Identity();
+  if (params.pca) {
+    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+    Vec3 mean = Vec3::Zero();
+    double area = 0.0;
+    for (const auto& t : input.triangles) {
+      const double a = 0.5 * (pn[t[1]] - pn[t[0]]).cross(pn[t[2]] - pn[t[0]]).norm();
+      mean += a * (pn[t[0]] + pn[t[1]] + pn[t[2]]) / 3.0;
+      area += a;
+    }
+    if (area > 0) {
+      mean /= area;
+      for (const auto& t : input.triangles) {
+        const double a = 0.5 * (pn[t[1]] - pn[t[0]]).cross(pn[t[2]] - pn[t[0]]).norm();
+        for (int k = 0; k < 3; ++k) {
+          const Vec3 d = pn[t[k]] - mean;
+          cov += (a / 3.0) * d * d.transpose();
+        }
+      }
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
+      if (es.info() == Eigen::Success) {
+        Eigen::Matrix3d ev = es.eigenvectors();
+        for (int c = 0; c < 3; ++c) {  // deterministic sign: largest component positive
+          int arg = 0;
+          for (int r = 1; r < 3; ++r)
+            if (std::fabs(ev(r, c)) > std::fabs(ev(arg, c))) arg = r;
+          if (ev(arg, c) < 0) ev.col(c) = -ev.col(c);
+        }
+        if (ev.determinant() < 0) ev.col(0) = -ev.col(0);
+        rot = ev.transpose();  // rows are the principal axes
+        for (Vec3& p : pn) p = rot * p;
+      }
+    }
+  }
+  Vec3 nlo = pn[0], nhi = pn[0];
+  for (const Vec3& p : pn) {
+    nlo = nlo.cwiseMin(p);
+    nhi = nhi.cwiseMax(p);
+  }
+  const internal::GridPlacement place = internal::ChooseGrid(nlo, nhi, params.resolution);
+  internal::GridMesh gmesh;
+  gmesh.triangles = std::move(input.triangles);
+  gmesh.points.resize(pn.size());
+  for (size_t i = 0; i < pn.size(); ++i) gmesh.points[i] = (pn[i] - place.origin) / place.h;
+  // grid -> world: center + scale * rot^T * (origin + h * g)
+  auto to_world = [&](const Vec3& g) -> Vec3 { return center + scale * (rot.transpose() * (place.origin + place.h * g)); };
+  const double diag_grid = (nhi - nlo).norm() / place.h;
+
+  // Voxelization.
+  ctx.BeginStage("Voxelization", 0, 15);
+  internal::VoxelGrid grid;
+  if (!internal::Voxelize(gmesh, place.dims, &ctx, &grid)) return Fail(Status::kCancelled, "cancelled");
+  rep.seconds_voxelize = clock.Lap();
+  internal::Part root;
+  for (int z = 0; z < grid.dims[2]; ++z)
+    for (int y = 0; y < grid.dims[1]; ++y)
+      for (int x = 0; x < grid.dims[0]; ++x) {
+        const uint8_t c = grid.cell[grid.Index(x, y, z)];
+        if (c == internal::kCellOutside) continue;
+        internal::Voxel v;
+        v.c[0] = static_cast<uint16_t>(x);
+        v.c[1] = static_cast<uint16_t>(y);
+        v.c[2] = static_cast<uint16_t>(z);
+        v.surface = c == internal::kCellSurface;
+        rep.surface_voxel_count += v.surface;
+        root.voxels.push_back(v);
+      }
+  rep.voxel_count = root.voxels.size();
+  ctx.Log("grid " + std::to_string(grid.dims[0]) + "x" + std::to_string(grid.dims[1]) + "x" +
+          std::to_string(grid.dims[2]) + ", " + std::to_string(rep.voxel_count) + " voxels (" +
+          std::to_string(rep.surface_voxel_count) + " on the surface)");
+  if (root.voxels.empty()) return Fail(Status::kInternalError, "voxelization produced no voxel");
+  internal::DistanceField field;
+  if (!field.Build(grid, &ctx)) return Fail(Status::kCancelled, "cancelled");
+  const double max_depth = params.max_distance * diag_grid;
+  rep.seconds_fill = clock.Lap();  // the interior fill itself is timed with the voxelization
+
+  // Clipping.
+  ctx.BeginStage("Clipping", 15, 60);
+  internal::ClipParams cp;
+  cp.depth = static_cast<int>(params.depth);
+  cp.concavity = params.concavity;
+  cp.plane_downsampling = static_cast<int>(params.plane_downsampling);
+  cp.convexhull_downsampling = static_cast<int>(params.convexhull_downsampling);
+  cp.alpha = params.alpha;
+  cp.beta = params.beta;
+  cp.field = &field;
+  cp.max_depth = max_depth;
+  internal::ClipOutput clip;
+  if (!internal::ClipRecursively(std::move(root), cp, &ctx, &clip)) return Fail(Status::kCancelled, "cancelled");
+  rep.parts_before_merge = static_cast<uint32_t>(clip.parts.size());
+  rep.seconds_clip = clock.Lap();
+
+  // One hull per part.
+  ctx.BeginStage("Hull generation", 60, 75);
+  std::vector<internal::HullMesh> hulls(clip.parts.size());
+  {
+    const internal::TriangleIndex index(gmesh, grid.dims, 8);
+    if (!internal::ParallelFor(&ctx, clip.parts.size(),
+                               [&](size_t i) { hulls[i] = internal::BuildPartHull(clip.parts[i], index); }))
+      return Fail(Status::kCancelled, "cancelled");
+  }
+  hulls.erase(std::remove_if(hulls.begin(), hulls.end(), [](const internal::HullMesh& h) { return h.empty(); }),
+              hulls.end());
+  std::vector<internal::Part>().swap(clip.parts);
+  rep.seconds_hulls = clock.Lap();
+
+  // Merge.
+  ctx.BeginStage("Merging", 75, 85);
+  internal::MergeParams mp;
+  mp.gamma = params.gamma;
+  mp.max_hulls = params.max_convex_hulls;
+  mp.volume0 = clip.volume0;
+  mp.adjacency = 1.0;
+  mp.field = &field;
+  mp.max_depth = max_depth;
+  if (!internal::MergeHulls(&hulls, mp, &ctx)) return Fail(Status::kCancelled, "cancelled");
+  rep.seconds_merge = clock.Lap();
+
+  // Simplification.
+  ctx.BeginStage("Simplification", 85, 90);
+  const double min_volume = params.min_volume_per_hull * clip.volume0;
+  if (!internal::ParallelFor(&ctx, hulls.size(), [&](size_t i) {
+        hulls[i] = internal::SimplifyHull(hulls[i], params.max_vertices_per_hull, min_volume);
+      }))
+    return Fail(Status::kCancelled, "cancelled");
+  rep.seconds_simplify = clock.Lap();
+
+  // Report.
+  ctx.BeginStage("Error report", 90, 100);
+  if (params.compute_report) {
+    internal::MetricsInput mi;
+    mi.mesh = &gmesh;
+    mi.grid = &grid;
+    mi.hulls = &hulls;
+    mi.diagonal = diag_grid;
+    mi.volume0 = clip.volume0;
+    mi.closed = input.closed;
+    if (!internal::ComputeErrorReport(mi, &ctx, &rep)) return Fail(Status::kCancelled, "cancelled");
+  }
+  rep.seconds_report = clock.Lap();
+
+  // Output in input coordinates.
+  const double vol_scale = std::pow(scale * place.h, 3);
+  if (rep.hulls.size() != hulls.size()) rep.hulls.assign(hulls.size(), HullReport());
+  for (size_t i = 0; i < hulls.size(); ++i) {
+    ConvexHull out;
+    out.points.reserve(hulls[i].vertices.size() * 3);
+    for (const Vec3& g : hulls[i].vertices) {
+      const Vec3 w = to_world(g);
+      out.points.insert(out.points.end(), {w[0], w[1], w[2]});
+    }
+    for (const auto& t : hulls[i].triangles) out.triangles.insert(out.triangles.end(), {t[0], t[1], t[2]});
+    out.volume = hulls[i].Volume() * vol_scale;
+    const Vec3 c = to_world(hulls[i].Centroid());
+    for (int k = 0; k < 3; ++k) out.center[k] = c[k];
+    bool finite = std::isfinite(out.volume) && c.allFinite();
+    for (double v : out.points) finite = finite && std::isfinite(v);
+    if (!finite) return Fail(Status::kInternalError, "a hull has a non-finite coordinate");
+    rep.hulls[i].vertex_count = static_cast<uint32_t>(hulls[i].vertices.size());
+    rep.hulls[i].volume = out.volume;
+    result.hulls.push_back(std::move(out));
+  }
+  rep.seconds_total = total.Lap();
+  ctx.Progress(100, "done");
+  ctx.Log("done: " + std::to_string(result.hulls.size()) + " hulls from " +
+          std::to_string(rep.parts_before_merge) + " parts");
+  return result;
+}
+
+}  // namespace
+
+Result Decompose(const MeshView& mesh, const Parameters& params, Observer* observer) {
+  try {
+    return DecomposeImpl(mesh, params, observer);
+  } catch (const std::bad_alloc&) {
+    return Fail(Status::kOutOfMemory, "out of memory");
+  } catch (...) {
+    return Fail(Status::kInternalError, "unexpected exception");
+  }
+}
+
+}  // namespace vhacd

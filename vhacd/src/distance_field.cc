@@ -1,0 +1,111 @@
+#include "distance_field.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "thread_pool.h"
+
+namespace vhacd {
+namespace internal {
+
+namespace {
+// 1D squared distance transform of f (lower envelope of parabolas), in place, n samples.
+void Edt1D(const double* f, double* out, int n, int* v, double* z) {
+  const double kInf = std::numeric_limits<double>::infinity();
+  int k = 0;
+  int first = -1;
+  for (int q = 0; q < n; ++q)
+    if (f[q] < kInf) {
+      first = q;
+      break;
+    }
+  if (first < 0) {
+    for (int q = 0; q < n; ++q) out[q] = kInf;
+    return;
+  }
+  v[0] = first;
+  z[0] = -kInf;
+  z[1] = kInf;
+  for (int q = first + 1; q < n; ++q) {
+    if (!(f[q] < kInf)) continue;
+    double s;
+    for (;;) {
+      const int p = v[k];
+      s = ((f[q] + static_cast<double>(q) * q) - (f[p] + static_cast<double>(p) * p)) / (2.0 * (q - p));
+      if (s <= z[k] && k > 0) {
+        --k;
+        continue;
+      }
+      break;
+    }
+    ++k;
+    v[k] = q;
+    z[k] = s;
+    z[k + 1] = kInf;
+  }
+  k = 0;
+  for (int q = 0; q < n; ++q) {
+    while (z[k + 1] < q) ++k;
+    const double dq = q - v[k];
+    out[q] = dq * dq + f[v[k]];
+  }
+}
+}  // namespace
+
+bool DistanceField::Build(const VoxelGrid& grid, Context* ctx) {
+  for (int a = 0; a < 3; ++a) dims_[a] = grid.dims[a];
+  const size_t n = grid.size();
+  const double kInf = std::numeric_limits<double>::infinity();
+  std::vector<double> sq(n);
+  for (size_t i = 0; i < n; ++i) sq[i] = grid.cell[i] == kCellOutside ? kInf : 0.0;
+  const size_t stride[3] = {1, static_cast<size_t>(dims_[0]), static_cast<size_t>(dims_[0]) * dims_[1]};
+  for (int axis = 0; axis < 3; ++axis) {
+    const int u = (axis + 1) % 3, w = (axis + 2) % 3;
+    const size_t nlines = static_cast<size_t>(dims_[u]) * dims_[w];
+    const int len = dims_[axis];
+    const size_t kChunk = 64;
+    if (!ParallelFor(ctx, (nlines + kChunk - 1) / kChunk, [&](size_t c) {
+          std::vector<double> f(len), out(len), z(len + 1);
+          std::vector<int> v(len);
+          for (size_t l = c * kChunk; l < std::min(nlines, (c + 1) * kChunk); ++l) {
+            const size_t iu = l % dims_[u], iw = l / dims_[u];
+            const size_t base = iu * stride[u] + iw * stride[w];
+            for (int q = 0; q < len; ++q) f[q] = sq[base + q * stride[axis]];
+            Edt1D(f.data(), out.data(), len, v.data(), z.data());
+            for (int q = 0; q < len; ++q) sq[base + q * stride[axis]] = out[q];
+          }
+        }))
+      return false;
+  }
+  d_.resize(n);
+  for (size_t i = 0; i < n; ++i) d_[i] = std::isfinite(sq[i]) ? static_cast<float>(std::sqrt(sq[i])) : 1e6f;
+  return true;
+}
+
+double DistanceField::HullDepth(const HullPlanes& hull) const {
+  int lo[3], hi[3];
+  for (int a = 0; a < 3; ++a) {
+    lo[a] = std::clamp(static_cast<int>(std::floor(hull.bmin[a] - 0.5)), 0, dims_[a] - 1);
+    hi[a] = std::clamp(static_cast<int>(std::ceil(hull.bmax[a] - 0.5)), 0, dims_[a] - 1);
+  }
+  double best = 0.0;
+  for (int z = lo[2]; z <= hi[2]; ++z)
+    for (int y = lo[1]; y <= hi[1]; ++y) {
+      const size_t row = (static_cast<size_t>(z) * dims_[1] + y) * dims_[0];
+      for (int x = lo[0]; x <= hi[0]; ++x) {
+        const double d = d_[row + x];
+        if (d <= best) continue;
+        if (hull.SignedDistanceBound(Vec3(x + 0.5, y + 0.5, z + 0.5)) < 0) best = d;
+      }
+    }
+  return best;
+}
+
+double DistanceField::HullDepth(const HullMesh& hull) const {
+  if (hull.empty()) return 0.0;
+  return HullDepth(HullPlanes(hull));
+}
+
+}  // namespace internal
+}  // namespace vhacd

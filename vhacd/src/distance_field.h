@@ -1,0 +1,36 @@
+// Distance from every voxel outside the solid to the nearest solid (surface or inside) voxel, in
+// voxel units (exact Euclidean distance transform between voxel centres). It measures how far a
+// hull sticks out of the input: the "depth" of a hull is the largest distance over the outside
+// voxel centres it contains.
+#ifndef VHACD_SRC_DISTANCE_FIELD_H_
+#define VHACD_SRC_DISTANCE_FIELD_H_
+
+#include <vector>
+
+#include "context.h"
+#include "convex_hull.h"
+#include "voxelizer.h"
+
+namespace vhacd {
+namespace internal {
+
+class DistanceField {
+ public:
+  // False when cancelled.
+  bool Build(const VoxelGrid& grid, Context* ctx);
+  float At(size_t index) const { return d_[index]; }
+
+  // Largest distance over the outside voxel centres strictly inside the hull (0 when none).
+  double HullDepth(const HullPlanes& hull) const;
+  // Same for a hull given by its points, computed exactly when they are voxel corners.
+  double HullDepth(const HullMesh& hull) const;
+
+ private:
+  int dims_[3] = {0, 0, 0};
+  std::vector<float> d_;
+};
+
+}  // namespace internal
+}  // namespace vhacd
+
+#endif  // VHACD_SRC_DISTANCE_FIELD_H_

@@ -1,0 +1,238 @@
+#include "error_metrics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "thread_pool.h"
+
+namespace vhacd {
+namespace internal {
+
+TriangleLocator::TriangleLocator(const GridMesh& mesh, double cell_size) : mesh_(mesh), cell_(cell_size) {
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const auto& t : mesh.triangles)
+    for (uint32_t v : t) {
+      lo = lo.cwiseMin(mesh.points[v]);
+      hi = hi.cwiseMax(mesh.points[v]);
+    }
+  if (mesh.triangles.empty()) lo = hi = Vec3::Zero();
+  origin_ = lo;
+  for (int a = 0; a < 3; ++a) dims_[a] = std::max(1, static_cast<int>(std::ceil((hi[a] - lo[a]) / cell_)) + 1);
+  const size_t ncell = static_cast<size_t>(dims_[0]) * dims_[1] * dims_[2];
+  start_.assign(ncell + 1, 0);
+  auto range = [&](const std::array<uint32_t, 3>& t, int* clo, int* chi) {
+    for (int a = 0; a < 3; ++a) {
+      double mn = mesh.points[t[0]][a], mx = mn;
+      for (uint32_t v : t) {
+        mn = std::min(mn, mesh.points[v][a]);
+        mx = std::max(mx, mesh.points[v][a]);
+      }
+      clo[a] = std::clamp(static_cast<int>(std::floor((mn - origin_[a]) / cell_)), 0, dims_[a] - 1);
+      chi[a] = std::clamp(static_cast<int>(std::floor((mx - origin_[a]) / cell_)), 0, dims_[a] - 1);
+    }
+  };
+  for (int pass = 0; pass < 2; ++pass) {
+    std::vector<uint32_t> fill;
+    if (pass == 1) {
+      for (size_t c = 0; c < ncell; ++c) start_[c + 1] += start_[c];
+      ids_.resize(start_[ncell]);
+      fill.assign(start_.begin(), start_.end() - 1);
+    }
+    for (uint32_t ti = 0; ti < mesh.triangles.size(); ++ti) {
+      int clo[3], chi[3];
+      range(mesh.triangles[ti], clo, chi);
+      for (int z = clo[2]; z <= chi[2]; ++z)
+        for (int y = clo[1]; y <= chi[1]; ++y)
+          for (int x = clo[0]; x <= chi[0]; ++x) {
+            const size_t c = (static_cast<size_t>(z) * dims_[1] + y) * dims_[0] + x;
+            if (pass == 0) ++start_[c + 1];
+            else ids_[fill[c]++] = ti;
+          }
+    }
+  }
+}
+
+double TriangleLocator::Distance(const Vec3& p) const {
+  int c0[3];
+  for (int a = 0; a < 3; ++a)
+    c0[a] = std::clamp(static_cast<int>(std::floor((p[a] - origin_[a]) / cell_)), 0, dims_[a] - 1);
+  double best = std::numeric_limits<double>::infinity();
+  const int rmax = std::max({dims_[0], dims_[1], dims_[2]});
+  for (int r = 0; r <= rmax; ++r) {
+    int lo[3], hi[3];
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::max(0, c0[a] - r);
+      hi[a] = std::min(dims_[a] - 1, c0[a] + r);
+    }
+    for (int z = lo[2]; z <= hi[2]; ++z)
+      for (int y = lo[1]; y <= hi[1]; ++y)
+        for (int x = lo[0]; x <= hi[0]; ++x) {
+          // Only the shell of the block is new.
+          if (r > 0 && std::abs(x - c0[0]) < r && std::abs(y - c0[1]) < r && std::abs(z - c0[2]) < r) continue;
+          const size_t c = (static_cast<size_t>(z) * dims_[1] + y) * dims_[0] + x;
+          for (uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
+            const auto& t = mesh_.triangles[ids_[k]];
+            best = std::min(best, PointTriangleDistance(p, mesh_.points[t[0]], mesh_.points[t[1]], mesh_.points[t[2]]));
+          }
+        }
+    // Distance from p to the space outside the visited block (infinite beyond the grid).
+    double bound = std::numeric_limits<double>::infinity();
+    for (int a = 0; a < 3; ++a) {
+      if (lo[a] > 0) bound = std::min(bound, p[a] - (origin_[a] + lo[a] * cell_));
+      if (hi[a] < dims_[a] - 1) bound = std::min(bound, origin_[a] + (hi[a] + 1) * cell_ - p[a]);
+    }
+    if (best <= std::max(0.0, bound)) break;
+  }
+  return best;
+}
+
+namespace {
+
+// Distance from p to the union of hulls (0 inside one).
+double DistanceToHulls(const Vec3& p, const std::vector<HullMesh>& hulls, const std::vector<HullPlanes>& planes) {
+  double best = std::numeric_limits<double>::infinity();
+  for (size_t h = 0; h < hulls.size(); ++h) {
+    const HullPlanes& hp = planes[h];
+    const Vec3 d = (hp.bmin - p).cwiseMax(p - hp.bmax).cwiseMax(0.0);
+    if (d.norm() >= best) continue;
+    const double s = hp.SignedDistanceBound(p);
+    if (s <= 1e-9) return 0.0;
+    if (s >= best) continue;
+    for (const auto& t : hulls[h].triangles)
+      best = std::min(best, PointTriangleDistance(p, hulls[h].vertices[t[0]], hulls[h].vertices[t[1]],
+                                                  hulls[h].vertices[t[2]]));
+  }
+  return best;
+}
+
+}  // namespace
+
+// Points about `spacing` apart inside the triangle, in rows parallel to its longest edge (linear
+// in the area, and empty for a degenerate triangle).
+void SampleTriangle(Vec3 a, Vec3 b, Vec3 c, double spacing, std::vector<Vec3>* out) {
+  if ((c - b).norm() > (b - a).norm() && (c - b).norm() >= (a - c).norm()) std::swap(a, c);
+  else if ((a - c).norm() > (b - a).norm()) std::swap(b, c);
+  const double ab = (b - a).norm();
+  if (!(ab > 0)) return;
+  const double height = (c - a).cross(b - a).norm() / ab;
+  const int rows = static_cast<int>(std::floor(height / spacing));
+  for (int r = 1; r <= rows; ++r) {
+    const double s = (r - 0.5) / rows;
+    const Vec3 p = a + s * (c - a), q = b + s * (c - b);
+    const int cols = static_cast<int>(std::floor((q - p).norm() / spacing));
+    for (int k = 0; k < cols; ++k) out->push_back(p + ((k + 0.5) / cols) * (q - p));
+  }
+}
+
+std::vector<Vec3> SampleSurface(const GridMesh& mesh, size_t count) {
+  double area = 0.0;
+  for (const auto& t : mesh.triangles)
+    area += 0.5 * (mesh.points[t[1]] - mesh.points[t[0]]).cross(mesh.points[t[2]] - mesh.points[t[0]]).norm();
+  std::vector<Vec3> out;
+  // Vertices (a deterministic stride of them), then rows across each triangle.
+  const size_t vstride = std::max<size_t>(1, mesh.points.size() / (count / 2 + 1));
+  for (size_t i = 0; i < mesh.points.size(); i += vstride) out.push_back(mesh.points[i]);
+  const double spacing = std::max(1e-9, std::sqrt(2.0 * area / std::max<size_t>(1, count / 2)));
+  for (const auto& t : mesh.triangles) SampleTriangle(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], spacing, &out);
+  return out;
+}
+
+bool ComputeErrorReport(const MetricsInput& in, Context* ctx, Report* report) {
+  const std::vector<HullMesh>& hulls = *in.hulls;
+  const VoxelGrid& grid = *in.grid;
+  std::vector<HullPlanes> planes;
+  planes.reserve(hulls.size());
+  for (const HullMesh& h : hulls) planes.emplace_back(h);
+
+  // Voxel centres inside each hull.
+  const size_t nvox = grid.size();
+  std::vector<uint8_t> in_hull(nvox, 0);
+  report->hulls.assign(hulls.size(), HullReport());
+  std::vector<uint64_t> empty_inside(hulls.size(), 0);
+  for (size_t h = 0; h < hulls.size(); ++h) {
+    int lo[3], hi[3];
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::clamp(static_cast<int>(std::floor(planes[h].bmin[a] - 0.5)), 0, grid.dims[a] - 1);
+      hi[a] = std::clamp(static_cast<int>(std::ceil(planes[h].bmax[a] - 0.5)), 0, grid.dims[a] - 1);
+    }
+    for (int z = lo[2]; z <= hi[2]; ++z)
+      for (int y = lo[1]; y <= hi[1]; ++y)
+        for (int x = lo[0]; x <= hi[0]; ++x)
+          if (planes[h].SignedDistanceBound(Vec3(x + 0.5, y + 0.5, z + 0.5)) <= 0) {
+            const size_t i = grid.Index(x, y, z);
+            in_hull[i] = 1;
+            if (!grid.CenterInside(i)) ++empty_inside[h];
+          }
+    report->hulls[h].vertex_count = static_cast<uint32_t>(hulls[h].vertices.size());
+    report->hulls[h].concavity = static_cast<double>(empty_inside[h]) / in.volume0;
+  }
+  if (in.closed) {
+    uint64_t inter = 0, uni = 0;
+    for (size_t i = 0; i < nvox; ++i) {
+      const bool s = grid.CenterInside(i), h = in_hull[i] != 0;
+      inter += (s && h);
+      uni += (s || h);
+    }
+    report->volume_iou = uni > 0 ? static_cast<double>(inter) / uni : 1.0;
+  }
+  if (ctx->Cancelled()) return false;
+
+  // mesh -> hulls.
+  const std::vector<Vec3> ms = SampleSurface(*in.mesh, 20000);
+  const size_t stride = 1;
+  const size_t nms = ms.size();
+  const size_t kChunk = 256;
+  std::vector<double> chunk_max((nms + kChunk - 1) / kChunk, 0.0);
+  if (!ParallelFor(ctx, chunk_max.size(), [&](size_t c) {
+        double m = 0.0;
+        for (size_t k = c * kChunk; k < std::min(nms, (c + 1) * kChunk); ++k)
+          m = std::max(m, DistanceToHulls(ms[k * stride], hulls, planes));
+        chunk_max[c] = m;
+      }))
+    return false;
+  double d_mh = 0.0;
+  for (double m : chunk_max) d_mh = std::max(d_mh, m);
+
+  // hulls -> mesh, on the boundary of the union.
+  double total_area = 0.0;
+  for (const HullMesh& h : hulls)
+    for (const auto& t : h.triangles)
+      total_area += 0.5 * (h.vertices[t[1]] - h.vertices[t[0]]).cross(h.vertices[t[2]] - h.vertices[t[0]]).norm();
+  const double spacing = std::max(0.25, std::sqrt(2.0 * total_area / 30000.0));
+  std::vector<std::pair<uint32_t, Vec3>> hs;  // (hull, point)
+  std::vector<Vec3> tmp;
+  for (uint32_t hi = 0; hi < hulls.size(); ++hi) {
+    const HullMesh& h = hulls[hi];
+    tmp.assign(h.vertices.begin(), h.vertices.end());
+    for (const auto& t : h.triangles) SampleTriangle(h.vertices[t[0]], h.vertices[t[1]], h.vertices[t[2]], spacing, &tmp);
+    for (const Vec3& p : tmp) hs.emplace_back(hi, p);
+  }
+  TriangleLocator locator(*in.mesh, 4.0);
+  chunk_max.assign((hs.size() + kChunk - 1) / kChunk, 0.0);
+  if (!ParallelFor(ctx, chunk_max.size(), [&](size_t c) {
+        double m = 0.0;
+        for (size_t k = c * kChunk; k < std::min(hs.size(), (c + 1) * kChunk); ++k) {
+          const Vec3& p = hs[k].second;
+          bool interior = false;
+          for (size_t h = 0; h < hulls.size() && !interior; ++h)
+            if (h != hs[k].first && planes[h].SignedDistanceBound(p) < 0.5) interior = true;
+          if (!interior) {
+            const double dd = locator.Distance(p);
+            m = std::max(m, dd);
+          }
+        }
+        chunk_max[c] = m;
+      }))
+    return false;
+  double d_hm = 0.0;
+  for (double m : chunk_max) d_hm = std::max(d_hm, m);
+  const double diag = in.diagonal > 0 ? in.diagonal : 1.0;
+  report->hausdorff_mesh_to_hulls = std::isfinite(d_mh) ? d_mh / diag : 1.0;
+  report->hausdorff_hulls_to_mesh = std::isfinite(d_hm) ? d_hm / diag : 1.0;
+  report->concavity = std::max(report->hausdorff_mesh_to_hulls, report->hausdorff_hulls_to_mesh);
+  return true;
+}
+
+}  // namespace internal
+}  // namespace vhacd

@@ -1,0 +1,50 @@
+// Error report of a decomposition: per-hull concavity, volume IoU, two-sided Hausdorff distances.
+// Everything is measured in grid units (a similarity of the input), so fractions of the bounding
+// box diagonal are those of the input.
+#ifndef VHACD_SRC_ERROR_METRICS_H_
+#define VHACD_SRC_ERROR_METRICS_H_
+
+#include <vector>
+
+#include "context.h"
+#include "convex_hull.h"
+#include "voxelizer.h"
+#include "vhacd/vhacd.h"
+
+namespace vhacd {
+namespace internal {
+
+// Nearest-triangle queries on a triangle soup, through a uniform grid of buckets.
+class TriangleLocator {
+ public:
+  TriangleLocator(const GridMesh& mesh, double cell_size);
+  double Distance(const Vec3& p) const;
+
+ private:
+  const GridMesh& mesh_;
+  double cell_;
+  Vec3 origin_;
+  int dims_[3];
+  std::vector<uint32_t> start_, ids_;
+};
+
+struct MetricsInput {
+  const GridMesh* mesh = nullptr;
+  const VoxelGrid* grid = nullptr;
+  const std::vector<HullMesh>* hulls = nullptr;
+  double diagonal = 1.0;   // bounding-box diagonal of the input, grid units
+  double volume0 = 1.0;    // concavity normalization, voxel units
+  bool closed = false;
+};
+
+// About `count` points spread over the surface (vertices first, then a stratified grid on each
+// triangle), deterministic.
+std::vector<Vec3> SampleSurface(const GridMesh& mesh, size_t count);
+
+// Fills report->hulls, volume_iou, the Hausdorff distances and concavity. False when cancelled.
+bool ComputeErrorReport(const MetricsInput& in, Context* ctx, Report* report);
+
+}  // namespace internal
+}  // namespace vhacd
+
+#endif  // VHACD_SRC_ERROR_METRICS_H_

@@ -1,0 +1,100 @@
+#include "part_hull.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vhacd {
+namespace internal {
+
+TriangleIndex::TriangleIndex(const GridMesh& mesh, const int dims[3], int cell) : mesh_(mesh), cell_(cell) {
+  for (int a = 0; a < 3; ++a) dims_[a] = std::max(1, (dims[a] + cell - 1) / cell);
+  const size_t ncell = static_cast<size_t>(dims_[0]) * dims_[1] * dims_[2];
+  const size_t nt = mesh.triangles.size();
+  tlo_.resize(nt);
+  thi_.resize(nt);
+  std::vector<std::array<int, 6>> range(nt);
+  start_.assign(ncell + 1, 0);
+  for (size_t t = 0; t < nt; ++t) {
+    const auto& tr = mesh.triangles[t];
+    tlo_[t] = mesh.points[tr[0]].cwiseMin(mesh.points[tr[1]]).cwiseMin(mesh.points[tr[2]]);
+    thi_[t] = mesh.points[tr[0]].cwiseMax(mesh.points[tr[1]]).cwiseMax(mesh.points[tr[2]]);
+    for (int a = 0; a < 3; ++a) {
+      range[t][a] = std::clamp(static_cast<int>(std::floor(tlo_[t][a])) / cell, 0, dims_[a] - 1);
+      range[t][a + 3] = std::clamp(static_cast<int>(std::floor(thi_[t][a])) / cell, 0, dims_[a] - 1);
+    }
+    for (int z = range[t][2]; z <= range[t][5]; ++z)
+      for (int y = range[t][1]; y <= range[t][4]; ++y)
+        for (int x = range[t][0]; x <= range[t][3]; ++x) ++start_[(static_cast<size_t>(z) * dims_[1] + y) * dims_[0] + x + 1];
+  }
+  for (size_t c = 0; c < ncell; ++c) start_[c + 1] += start_[c];
+  ids_.resize(start_[ncell]);
+  std::vector<uint32_t> fill(start_.begin(), start_.end() - 1);
+  for (size_t t = 0; t < nt; ++t)
+    for (int z = range[t][2]; z <= range[t][5]; ++z)
+      for (int y = range[t][1]; y <= range[t][4]; ++y)
+        for (int x = range[t][0]; x <= range[t][3]; ++x)
+          ids_[fill[(static_cast<size_t>(z) * dims_[1] + y) * dims_[0] + x]++] = static_cast<uint32_t>(t);
+}
+
+void ClipTriangleToBox(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& lo, const Vec3& hi,
+                       std::vector<Vec3>* out) {
+  Vec3 buf0[12], buf1[12];
+  Vec3* poly = buf0;
+  Vec3* next = buf1;
+  int n = 3;
+  poly[0] = a;
+  poly[1] = b;
+  poly[2] = c;
+  for (int plane = 0; plane < 6 && n > 0; ++plane) {
+    const int axis = plane / 2;
+    const bool upper = plane % 2 == 1;
+    const double bound = upper ? hi[axis] : lo[axis];
+    auto inside = [&](const Vec3& p) { return upper ? p[axis] <= bound : p[axis] >= bound; };
+    int m = 0;
+    for (int i = 0; i < n; ++i) {
+      const Vec3& p = poly[i];
+      const Vec3& q = poly[(i + 1) % n];
+      const bool pin = inside(p), qin = inside(q);
+      if (pin) next[m++] = p;
+      if (pin != qin) {
+        const double t = (bound - p[axis]) / (q[axis] - p[axis]);
+        Vec3 x = p + t * (q - p);
+        x[axis] = bound;
+        next[m++] = x;
+      }
+    }
+    std::swap(poly, next);
+    n = m;
+  }
+  for (int i = 0; i < n; ++i) out->push_back(poly[i]);
+}
+
+HullMesh BuildPartHull(const Part& part, const TriangleIndex& index) {
+  std::vector<Vec3> pts;
+  PartHullPoints(part, true, &pts);
+  const Vec3 lo(part.bmin[0], part.bmin[1], part.bmin[2]);
+  const Vec3 hi(part.bmax[0] + 1, part.bmax[1] + 1, part.bmax[2] + 1);
+  const GridMesh& mesh = index.mesh();
+  thread_local std::vector<uint32_t> stamp;
+  thread_local uint32_t mark = 0;
+  if (stamp.size() != mesh.triangles.size()) {
+    stamp.assign(mesh.triangles.size(), 0);
+    mark = 0;
+  }
+  if (++mark == 0) {
+    std::fill(stamp.begin(), stamp.end(), 0);
+    mark = 1;
+  }
+  index.ForEachInBox(lo, hi, &stamp, mark, [&](uint32_t t) {
+    const auto& tr = mesh.triangles[t];
+    ClipTriangleToBox(mesh.points[tr[0]], mesh.points[tr[1]], mesh.points[tr[2]], lo, hi, &pts);
+  });
+  HullMesh h;
+  if (ComputeConvexHull(pts, -1.0, &h) == HullStatus::kOk && h.Volume() > 1e-3) return h;
+  PartHullPoints(part, false, &pts);
+  if (ComputeConvexHull(pts, 0.0, &h) != HullStatus::kOk) h = HullMesh();
+  return h;
+}
+
+}  // namespace internal
+}  // namespace vhacd

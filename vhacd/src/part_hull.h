@@ -1,0 +1,68 @@
+// The convex hull of one part: the input surface clipped to the part's box, plus the corners of
+// the part's interior voxels. Every cut is an axis-aligned plane between voxel slices, so a part is
+// exactly the voxel set inside its bounding box and the surface inside that box is the surface the
+// part holds: the hull hugs the input instead of the voxels.
+#ifndef VHACD_SRC_PART_HULL_H_
+#define VHACD_SRC_PART_HULL_H_
+
+#include <vector>
+
+#include "convex_hull.h"
+#include "primitive_set.h"
+#include "voxelizer.h"
+
+namespace vhacd {
+namespace internal {
+
+// Buckets of triangles on a coarse uniform grid, for box queries.
+class TriangleIndex {
+ public:
+  TriangleIndex(const GridMesh& mesh, const int dims[3], int cell);
+  // Calls fn(t) once for every triangle whose bounding box meets [lo, hi].
+  template <typename Fn>
+  void ForEachInBox(const Vec3& lo, const Vec3& hi, std::vector<uint32_t>* stamp, uint32_t mark, Fn fn) const;
+
+  const GridMesh& mesh() const { return mesh_; }
+
+ private:
+  const GridMesh& mesh_;
+  int cell_;
+  int dims_[3];
+  std::vector<uint32_t> start_, ids_;
+  std::vector<Vec3> tlo_, thi_;
+};
+
+// Appends the vertices of the polygon (triangle abc) intersected with the box [lo, hi].
+void ClipTriangleToBox(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& lo, const Vec3& hi,
+                       std::vector<Vec3>* out);
+
+// The hull of a part (grid units). Falls back to the hull of the part's voxels when the clipped
+// surface is flat (e.g. a single sheet). Empty only when even that fails.
+HullMesh BuildPartHull(const Part& part, const TriangleIndex& index);
+
+template <typename Fn>
+void TriangleIndex::ForEachInBox(const Vec3& lo, const Vec3& hi, std::vector<uint32_t>* stamp, uint32_t mark,
+                                 Fn fn) const {
+  int clo[3], chi[3];
+  for (int a = 0; a < 3; ++a) {
+    clo[a] = std::max(0, std::min(dims_[a] - 1, static_cast<int>(lo[a]) / cell_));
+    chi[a] = std::max(0, std::min(dims_[a] - 1, static_cast<int>(hi[a]) / cell_));
+  }
+  for (int z = clo[2]; z <= chi[2]; ++z)
+    for (int y = clo[1]; y <= chi[1]; ++y)
+      for (int x = clo[0]; x <= chi[0]; ++x) {
+        const size_t c = (static_cast<size_t>(z) * dims_[1] + y) * dims_[0] + x;
+        for (uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
+          const uint32_t t = ids_[k];
+          if ((*stamp)[t] == mark) continue;
+          (*stamp)[t] = mark;
+          if ((tlo_[t].array() > hi.array()).any() || (thi_[t].array() < lo.array()).any()) continue;
+          fn(t);
+        }
+      }
+}
+
+}  // namespace internal
+}  // namespace vhacd
+
+#endif  // VHACD_SRC_PART_HULL_H_

@@ -1,0 +1,22 @@
+// Fixed-partition parallel loops. Each task index writes only its own outputs, so results never
+// depend on which thread ran a task or in which order.
+#ifndef VHACD_SRC_THREAD_POOL_H_
+#define VHACD_SRC_THREAD_POOL_H_
+
+#include <cstddef>
+#include <functional>
+
+#include "context.h"
+
+namespace vhacd {
+namespace internal {
+
+// Runs fn(i) for every i in [0, n) on up to ctx->num_threads() threads (the caller's thread
+// included). Stops handing out tasks once ctx->Cancelled(); returns false in that case.
+// `ctx` may be null (one thread, no cancellation).
+bool ParallelFor(Context* ctx, size_t n, const std::function<void(size_t)>& fn);
+
+}  // namespace internal
+}  // namespace vhacd
+
+#endif  // VHACD_SRC_THREAD_POOL_H_

@@ -1,0 +1,255 @@
+#include "voxelizer.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <memory>
+
+#include "thread_pool.h"
+
+namespace vhacd {
+namespace internal {
+
+GridPlacement ChooseGrid(const Vec3& bmin, const Vec3& bmax, uint32_t resolution) {
+  const Vec3 ext = (bmax - bmin).cwiseMax(0.0);
+  const double res = std::max<double>(1.0, resolution);
+  double h = std::max(ext.maxCoeff(), 1e-300) / std::cbrt(res);
+  for (int it = 0; it < 30; ++it) {
+    const double vol = std::max(ext[0], h) * std::max(ext[1], h) * std::max(ext[2], h);
+    h = std::cbrt(vol / res);
+  }
+  // Voxel coordinates are 16-bit (and the exact hull needs them small): at most 30000 per axis.
+  h = std::max(h, ext.maxCoeff() / 30000.0);
+  GridPlacement g;
+  g.h = h;
+  for (int a = 0; a < 3; ++a) {
+    const int n = std::max(1, static_cast<int>(std::ceil(ext[a] / h - 1e-9)));
+    g.dims[a] = n + 2;
+    const double center = 0.5 * (bmin[a] + bmax[a]);
+    g.origin[a] = center - 0.5 * g.dims[a] * h;
+  }
+  return g;
+}
+
+bool TriangleBoxOverlap(const Vec3& center, double half, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 v0 = a - center, v1 = b - center, v2 = c - center;
+  // Box face normals.
+  for (int k = 0; k < 3; ++k) {
+    const double mn = std::min({v0[k], v1[k], v2[k]}), mx = std::max({v0[k], v1[k], v2[k]});
+    if (mn > half || mx < -half) return false;
+  }
+  const Vec3 e[3] = {v1 - v0, v2 - v1, v0 - v2};
+  // Edge x box-axis cross products.
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) {
+      Vec3 axis = Vec3::Zero();
+      axis[k] = 1.0;
+      axis = axis.cross(e[i]);
+      const double p0 = axis.dot(v0), p1 = axis.dot(v1), p2 = axis.dot(v2);
+      const double r = half * (std::fabs(axis[0]) + std::fabs(axis[1]) + std::fabs(axis[2]));
+      if (std::min({p0, p1, p2}) > r || std::max({p0, p1, p2}) < -r) return false;
+    }
+  // Triangle plane.
+  const Vec3 n = e[0].cross(e[1]);
+  const double d = n.dot(v0);
+  const double r = half * (std::fabs(n[0]) + std::fabs(n[1]) + std::fabs(n[2]));
+  return std::fabs(d) <= r;
+}
+
+namespace {
+
+struct Crossing {
+  uint32_t line;
+  double t;
+  bool operator<(const Crossing& o) const { return line != o.line ? line < o.line : t < o.t; }
+};
+
+inline double Orient2(double ax, double ay, double bx, double by, double px, double py) {
+  return (bx - ax) * (py - ay) - (by - ay) * (px - ax);
+}
+
+// Collects where the lines through voxel centres parallel to `axis` cross the triangles.
+void CollectCrossings(const GridMesh& mesh, const int dims[3], int axis, size_t tri_begin,
+                      size_t tri_end, std::vector<Crossing>* out) {
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  for (size_t t = tri_begin; t < tri_end; ++t) {
+    uint32_t id[3] = {mesh.triangles[t][0], mesh.triangles[t][1], mesh.triangles[t][2]};
+    const Vec3* P[3] = {&mesh.points[id[0]], &mesh.points[id[1]], &mesh.points[id[2]]};
+    double area = Orient2((*P[0])[u], (*P[0])[v], (*P[1])[u], (*P[1])[v], (*P[2])[u], (*P[2])[v]);
+    if (area == 0.0 || !std::isfinite(area)) continue;  // parallel to the rays: never crossed
+    if (area < 0) {
+      std::swap(id[1], id[2]);
+      std::swap(P[1], P[2]);
+      area = -area;
+    }
+    const double umin = std::min({(*P[0])[u], (*P[1])[u], (*P[2])[u]});
+    const double umax = std::max({(*P[0])[u], (*P[1])[u], (*P[2])[u]});
+    const double vmin = std::min({(*P[0])[v], (*P[1])[v], (*P[2])[v]});
+    const double vmax = std::max({(*P[0])[v], (*P[1])[v], (*P[2])[v]});
+    const int iu0 = std::max(0, static_cast<int>(std::ceil(umin - 0.5)));
+    const int iu1 = std::min(dims[u] - 1, static_cast<int>(std::floor(umax - 0.5)));
+    const int iv0 = std::max(0, static_cast<int>(std::ceil(vmin - 0.5)));
+    const int iv1 = std::min(dims[v] - 1, static_cast<int>(std::floor(vmax - 0.5)));
+    for (int iv = iv0; iv <= iv1; ++iv)
+      for (int iu = iu0; iu <= iu1; ++iu) {
+        const double qu = iu + 0.5, qv = iv + 0.5;
+        double w[3];
+        bool inside = true;
+        for (int e = 0; e < 3 && inside; ++e) {
+          const int i = e, j = (e + 1) % 3;
+          // Canonical evaluation: same operands, same order, for both triangles of an edge.
+          double val;
+          if (id[i] < id[j])
+            val = Orient2((*P[i])[u], (*P[i])[v], (*P[j])[u], (*P[j])[v], qu, qv);
+          else
+            val = -Orient2((*P[j])[u], (*P[j])[v], (*P[i])[u], (*P[i])[v], qu, qv);
+          if (val < 0) {
+            inside = false;
+          } else if (val == 0) {
+            const double du = (*P[j])[u] - (*P[i])[u], dv = (*P[j])[v] - (*P[i])[v];
+            if (!(dv > 0 || (dv == 0 && du > 0))) inside = false;  // edge does not own the point
+          }
+          w[(e + 2) % 3] = val;  // weight of the vertex opposite edge e
+        }
+        if (!inside) continue;
+        const double s = w[0] + w[1] + w[2];
+        if (!(s > 0)) continue;
+        const double ta = (w[0] * (*P[0])[axis] + w[1] * (*P[1])[axis] + w[2] * (*P[2])[axis]) / s;
+        out->push_back({static_cast<uint32_t>(static_cast<size_t>(iv) * dims[u] + iu), ta});
+      }
+  }
+}
+
+}  // namespace
+
+bool Voxelize(const GridMesh& mesh, const int dims[3], Context* ctx, VoxelGrid* grid) {
+  for (int a = 0; a < 3; ++a) grid->dims[a] = dims[a];
+  const size_t nvox = static_cast<size_t>(dims[0]) * dims[1] * dims[2];
+  const size_t ntri = mesh.triangles.size();
+  const size_t kChunk = 2048;
+  const size_t nchunks = (ntri + kChunk - 1) / kChunk;
+
+  // 1. Surface voxels.
+  {
+    std::unique_ptr<std::atomic<uint8_t>[]> marks(new std::atomic<uint8_t>[nvox]);
+    for (size_t i = 0; i < nvox; ++i) marks[i].store(0, std::memory_order_relaxed);
+    const double half = 0.5 + 1e-9;
+    bool ok = ParallelFor(ctx, nchunks, [&](size_t c) {
+      const size_t end = std::min(ntri, (c + 1) * kChunk);
+      for (size_t t = c * kChunk; t < end; ++t) {
+        const Vec3& a = mesh.points[mesh.triangles[t][0]];
+        const Vec3& b = mesh.points[mesh.triangles[t][1]];
+        const Vec3& d = mesh.points[mesh.triangles[t][2]];
+        int lo[3], hi[3];
+        for (int k = 0; k < 3; ++k) {
+          lo[k] = std::clamp(static_cast<int>(std::floor(std::min({a[k], b[k], d[k]}) - 1e-9)), 0, dims[k] - 1);
+          hi[k] = std::clamp(static_cast<int>(std::floor(std::max({a[k], b[k], d[k]}) + 1e-9)), 0, dims[k] - 1);
+        }
+        for (int z = lo[2]; z <= hi[2]; ++z)
+          for (int y = lo[1]; y <= hi[1]; ++y)
+            for (int x = lo[0]; x <= hi[0]; ++x) {
+              const size_t idx = grid->Index(x, y, z);
+              if (marks[idx].load(std::memory_order_relaxed)) continue;
+              if (TriangleBoxOverlap(Vec3(x + 0.5, y + 0.5, z + 0.5), half, a, b, d))
+                marks[idx].store(1, std::memory_order_relaxed);
+            }
+      }
+    });
+    if (!ok) return false;
+    grid->cell.assign(nvox, kCellOutside);
+    for (size_t i = 0; i < nvox; ++i) grid->cell[i] = marks[i].load(std::memory_order_relaxed);
+  }
+  ctx->Progress(30, "surface voxels");
+
+  // 2. Flood fill from the grid border through non-surface voxels.
+  grid->enclosed.assign(nvox, 1);
+  {
+    std::vector<size_t> stack;
+    auto push = [&](int x, int y, int z) {
+      const size_t i = grid->Index(x, y, z);
+      if (grid->enclosed[i] && grid->cell[i] != kCellSurface) {
+        grid->enclosed[i] = 0;
+        stack.push_back(i);
+      }
+    };
+    for (int z = 0; z < dims[2]; ++z)
+      for (int y = 0; y < dims[1]; ++y)
+        for (int x = 0; x < dims[0]; ++x)
+          if (x == 0 || y == 0 || z == 0 || x == dims[0] - 1 || y == dims[1] - 1 || z == dims[2] - 1)
+            push(x, y, z);
+    const size_t sx = 1, sy = dims[0], sz = static_cast<size_t>(dims[0]) * dims[1];
+    while (!stack.empty()) {
+      const size_t i = stack.back();
+      stack.pop_back();
+      const int x = static_cast<int>(i % sy), y = static_cast<int>((i / sy) % dims[1]),
+                z = static_cast<int>(i / sz);
+      (void)sx;
+      if (x > 0) push(x - 1, y, z);
+      if (x + 1 < dims[0]) push(x + 1, y, z);
+      if (y > 0) push(x, y - 1, z);
+      if (y + 1 < dims[1]) push(x, y + 1, z);
+      if (z > 0) push(x, y, z - 1);
+      if (z + 1 < dims[2]) push(x, y, z + 1);
+    }
+    for (size_t i = 0; i < nvox; ++i)
+      if (grid->cell[i] == kCellSurface) grid->enclosed[i] = 0;
+  }
+  if (ctx->Cancelled()) return false;
+  ctx->Progress(45, "flood fill");
+
+  // 3. Parity votes along the three axes.
+  grid->votes.assign(nvox, 0);
+  for (int axis = 0; axis < 3; ++axis) {
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    std::vector<std::vector<Crossing>> parts(nchunks);
+    bool ok = ParallelFor(ctx, nchunks, [&](size_t c) {
+      CollectCrossings(mesh, dims, axis, c * kChunk, std::min(ntri, (c + 1) * kChunk), &parts[c]);
+    });
+    if (!ok) return false;
+    std::vector<Crossing> all;
+    size_t total = 0;
+    for (const auto& p : parts) total += p.size();
+    all.reserve(total);
+    for (auto& p : parts) {
+      all.insert(all.end(), p.begin(), p.end());
+      std::vector<Crossing>().swap(p);
+    }
+    std::sort(all.begin(), all.end());
+    const size_t nlines = static_cast<size_t>(dims[u]) * dims[v];
+    std::vector<size_t> start(nlines + 1, 0);
+    for (const Crossing& c : all) ++start[c.line + 1];
+    for (size_t l = 0; l < nlines; ++l) start[l + 1] += start[l];
+    const size_t kLineChunk = 256;
+    ok = ParallelFor(ctx, (nlines + kLineChunk - 1) / kLineChunk, [&](size_t c) {
+      const size_t end = std::min(nlines, (c + 1) * kLineChunk);
+      for (size_t l = c * kLineChunk; l < end; ++l) {
+        const size_t b = start[l], e = start[l + 1];
+        if (b == e) continue;
+        const size_t count = e - b;
+        const int iu = static_cast<int>(l % dims[u]), iv = static_cast<int>(l / dims[u]);
+        size_t below = 0;
+        int g[3];
+        g[u] = iu;
+        g[v] = iv;
+        for (int k = 0; k < dims[axis]; ++k) {
+          const double center = k + 0.5;
+          while (b + below < e && all[b + below].t < center) ++below;
+          g[axis] = k;
+          const size_t idx = grid->Index(g[0], g[1], g[2]);
+          grid->votes[idx] += static_cast<uint8_t>((below & 1) + ((count - below) & 1));
+        }
+      }
+    });
+    if (!ok) return false;
+    ctx->Progress(45 + 18 * (axis + 1), "ray parity");
+  }
+
+  // 4. Classification.
+  for (size_t i = 0; i < nvox; ++i)
+    if (grid->cell[i] != kCellSurface && (grid->enclosed[i] || grid->votes[i] >= 4))
+      grid->cell[i] = kCellInside;
+  return true;
+}
+
+}  // namespace internal
+}  // namespace vhacd

@@ -1,0 +1,58 @@
+// Voxelization of a triangle soup: surface voxels by exact triangle/box overlap, then the interior
+// fill rule documented in include/vhacd/vhacd.h (flood fill from outside + 6-ray parity vote).
+#ifndef VHACD_SRC_VOXELIZER_H_
+#define VHACD_SRC_VOXELIZER_H_
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "context.h"
+#include "convex_hull.h"
+
+namespace vhacd {
+namespace internal {
+
+// A triangle soup in grid units: voxel (x, y, z) is the box [x, x+1] x [y, y+1] x [z, z+1].
+struct GridMesh {
+  std::vector<Vec3> points;
+  std::vector<std::array<uint32_t, 3>> triangles;  // no degenerate or duplicate triangles
+};
+
+// Where the grid sits in the (normalized) input space: p = origin + h * g.
+struct GridPlacement {
+  Vec3 origin = Vec3::Zero();
+  double h = 1.0;
+  int dims[3] = {0, 0, 0};
+};
+
+// Chooses a voxel size giving about `resolution` voxels over the box [bmin, bmax], plus one
+// empty voxel of padding on every side. Works for flat and linear boxes too.
+GridPlacement ChooseGrid(const Vec3& bmin, const Vec3& bmax, uint32_t resolution);
+
+enum : uint8_t { kCellOutside = 0, kCellSurface = 1, kCellInside = 2 };
+
+struct VoxelGrid {
+  int dims[3] = {0, 0, 0};
+  std::vector<uint8_t> cell;   // kCellOutside / kCellSurface / kCellInside
+  std::vector<uint8_t> votes;  // number of the 6 axis rays from the centre with odd crossings
+  std::vector<uint8_t> enclosed;  // 1 when not reachable from outside through non-surface cells
+
+  size_t Index(int x, int y, int z) const {
+    return (static_cast<size_t>(z) * dims[1] + y) * dims[0] + x;
+  }
+  size_t size() const { return cell.size(); }
+  // Whether the centre of voxel i is inside the solid (used by the error report).
+  bool CenterInside(size_t i) const { return votes[i] >= 4 || (cell[i] == kCellInside); }
+};
+
+// Exact separating-axis test between a triangle and the axis-aligned box centre +/- half.
+bool TriangleBoxOverlap(const Vec3& center, double half, const Vec3& a, const Vec3& b, const Vec3& c);
+
+// Marks surface voxels and fills the interior. Returns false when cancelled.
+bool Voxelize(const GridMesh& mesh, const int dims[3], Context* ctx, VoxelGrid* grid);
+
+}  // namespace internal
+}  // namespace vhacd
+
+#endif  // VHACD_SRC_VOXELIZER_H_
