@@ -74,6 +74,7 @@ Status DecodeQuantized(ArithmeticDecoder* dec, const MeshAdjacency& adj, uint32_
   const std::vector<uint32_t> renamed_tris = RenameByOrder(adj, order);
   MeshAdjacency renamed;
   renamed.Build(renamed_tris, n);
+  renamed.SetOpposite(adj.opposite());
   std::vector<double> geo_renamed;
   if (texcoord) {
     geo_renamed.resize(size_t(n) * 3);

@@ -62,6 +62,7 @@ void EncodeQuantized(ArithmeticEncoder* enc, const MeshAdjacency& adj_in,
     const std::vector<uint32_t> order = MaxDegreeOrder(adj_in);
     renamed_tris = RenameByOrder(adj_in, order);
     renamed.Build(renamed_tris, n);
+    renamed.SetOpposite(adj_in.opposite());
     q_renamed.resize(q_in.size());
     for (uint32_t i = 0; i < n; ++i) {
       for (int k = 0; k < dim; ++k) q_renamed[size_t(i) * dim + k] = q_in[size_t(order[i]) * dim + k];

@@ -31,7 +31,7 @@ class Decoder {
         if ((s = VertexRef(&y)) != Status::kOk) return s;
         if ((s = VertexRef(&z)) != Status::kOk) return s;
         if (x == y || y == z || x == z) return Status::kCorrupt;
-        front_.StartTriangle(x, y, z);
+        front_.StartTriangle(uint32_t(out_.size() / 3), x, y, z);
         if ((s = Emit(x, y, z)) != Status::kOk) return s;
         continue;
       }
@@ -63,7 +63,7 @@ class Decoder {
       }
       if (c == a || c == b) return Status::kCorrupt;
       const int flip = dec_.Decode(m_->flip);
-      front_.Attach(g, a, b, c);
+      front_.Attach(g, uint32_t(out_.size() / 3), a, b, c, flip != 0);
       const Status s = flip ? Emit(a, b, c) : Emit(b, a, c);
       if (s != Status::kOk) return s;
     }
@@ -84,6 +84,7 @@ class Decoder {
   }
 
   uint32_t num_vertices() const { return front_.num_vertices(); }
+  std::vector<uint32_t> TakeOpposite() { return front_.TakeOpposite(nt_); }
 
  private:
   bool Full() const { return out_.size() >= nt_ * 3; }
@@ -130,10 +131,12 @@ class Decoder {
 }  // namespace
 
 Status DecodeConnectivity(ArithmeticDecoder* dec, size_t num_triangles, size_t max_vertices,
-                          std::vector<uint32_t>* triangles, uint32_t* num_vertices) {
+                          std::vector<uint32_t>* triangles, uint32_t* num_vertices,
+                          std::vector<uint32_t>* opposite) {
   Decoder d(dec, num_triangles, max_vertices, triangles);
   const Status s = d.Run();
   *num_vertices = d.num_vertices();
+  if (s == Status::kOk && opposite) *opposite = d.TakeOpposite();
   return s;
 }
 

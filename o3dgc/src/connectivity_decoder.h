@@ -11,9 +11,11 @@
 namespace o3dgc {
 
 // Decodes exactly `num_triangles` triangles using at most `max_vertices` vertices. On success
-// `triangles` holds 3 * num_triangles ids < *num_vertices, every vertex referenced.
+// `triangles` holds 3 * num_triangles ids < *num_vertices, every vertex referenced, and
+// `opposite` (if not null) the neighbours found by the traversal (see Front::TakeOpposite).
 Status DecodeConnectivity(ArithmeticDecoder* dec, size_t num_triangles, size_t max_vertices,
-                          std::vector<uint32_t>* triangles, uint32_t* num_vertices);
+                          std::vector<uint32_t>* triangles, uint32_t* num_vertices,
+                          std::vector<uint32_t>* opposite = nullptr);
 
 }  // namespace o3dgc
 

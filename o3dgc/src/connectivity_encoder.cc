@@ -44,7 +44,7 @@ class Encoder {
         const uint32_t x = CodeVertexRef(tris_[3 * t]);
         const uint32_t y = CodeVertexRef(tris_[3 * t + 1]);
         const uint32_t z = CodeVertexRef(tris_[3 * t + 2]);
-        front_.StartTriangle(x, y, z);
+        front_.StartTriangle(uint32_t(out_.source.size()), x, y, z);
         Emit(t, x, y, z);
         continue;
       }
@@ -108,7 +108,7 @@ class Encoder {
       }
       enc_.Encode(flip, m_->flip);
       visited_[found] = 1;
-      front_.Attach(g, a, b, c);
+      front_.Attach(g, uint32_t(out_.source.size()), a, b, c, flip != 0);
       if (flip) {
         Emit(found, a, b, c);
       } else {
@@ -124,6 +124,7 @@ class Encoder {
       Push(x, y, z);
       out_.source.push_back(t);
     }
+    out_.opposite = front_.TakeOpposite(nt_);
   }
 
  private:

@@ -38,8 +38,10 @@ class Front {
   struct Gate {
     uint32_t a, b;
     int32_t next_out, prev_out, next_in, prev_in;
+    uint32_t edge;  // triangle * 4 + slot of the decoded triangle this gate is an edge of
     bool open;
   };
+  static constexpr uint32_t kNoEdge = 0xFFFFFFFFu;
 
   void Reserve(size_t vertices, size_t triangles) {
     head_out_.reserve(vertices);
@@ -88,16 +90,19 @@ class Front {
     if (x.next_in >= 0) gates_[x.next_in].prev_in = x.prev_in;
   }
 
-  // A new triangle edge u->v: closes the open gate v->u if there is one, else opens u->v.
-  void AddHalfEdge(uint32_t u, uint32_t v) {
+  // A new triangle edge u->v (edge = triangle * 4 + slot, the slot being the corner opposite the
+  // edge): closes the open gate v->u if there is one (the two triangles become neighbours), else
+  // opens u->v.
+  void AddHalfEdge(uint32_t u, uint32_t v, uint32_t edge) {
     for (int32_t g = head_out_[v]; g >= 0; g = gates_[g].next_out) {
       if (gates_[g].b == u) {
+        Link(edge, gates_[g].edge);
         Close(g);
         return;
       }
     }
     const int32_t id = int32_t(gates_.size());
-    gates_.push_back(Gate{u, v, head_out_[u], -1, head_in_[v], -1, true});
+    gates_.push_back(Gate{u, v, head_out_[u], -1, head_in_[v], -1, edge, true});
     if (head_out_[u] >= 0) gates_[head_out_[u]].prev_out = id;
     head_out_[u] = id;
     if (head_in_[v] >= 0) gates_[head_in_[v]].prev_in = id;
@@ -105,26 +110,43 @@ class Front {
     stack_.push_back(id);
   }
 
-  void StartTriangle(uint32_t x, uint32_t y, uint32_t z) {
+  // Triangle `tri` = (x, y, z) starts a new part.
+  void StartTriangle(uint32_t tri, uint32_t x, uint32_t y, uint32_t z) {
     ++deg_[x];
     ++deg_[y];
     ++deg_[z];
-    AddHalfEdge(x, y);
-    AddHalfEdge(y, z);
-    AddHalfEdge(z, x);
+    AddHalfEdge(x, y, tri * 4 + 2);
+    AddHalfEdge(y, z, tri * 4 + 0);
+    AddHalfEdge(z, x, tri * 4 + 1);
   }
-  // Attaches the triangle (b, a, c) across the gate g = a->b.
-  void Attach(int32_t g, uint32_t a, uint32_t b, uint32_t c) {
+  // Attaches triangle `tri` across the gate g = a->b; it is emitted as (b, a, c), or as (a, b, c)
+  // when `flipped`.
+  void Attach(int32_t g, uint32_t tri, uint32_t a, uint32_t b, uint32_t c, bool flipped) {
+    Link(tri * 4 + 2, gates_[g].edge);
     Close(g);
     ++deg_[a];
     ++deg_[b];
     ++deg_[c];
-    AddHalfEdge(a, c);
-    AddHalfEdge(c, b);
+    AddHalfEdge(a, c, tri * 4 + (flipped ? 1 : 0));
+    AddHalfEdge(c, b, tri * 4 + (flipped ? 0 : 1));
+  }
+  // Neighbour relation found while coding: for triangle t and slot k (the edge opposite corner k),
+  // opposite()[3t+k] is the neighbour's triangle * 4 + slot, or kNoEdge. Sized for `triangles`.
+  std::vector<uint32_t> TakeOpposite(size_t triangles) {
+    opp_.resize(3 * triangles, kNoEdge);
+    return std::move(opp_);
   }
 
  private:
+  void Link(uint32_t e1, uint32_t e2) {
+    const size_t need = 3 * size_t((e1 > e2 ? e1 : e2) / 4 + 1);
+    if (opp_.size() < need) opp_.resize(need, kNoEdge);
+    opp_[3 * size_t(e1 / 4) + e1 % 4] = e2;
+    opp_[3 * size_t(e2 / 4) + e2 % 4] = e1;
+  }
+
   std::vector<Gate> gates_;
+  std::vector<uint32_t> opp_;
   std::vector<int32_t> head_out_, head_in_;
   std::vector<uint32_t> deg_;
   std::vector<int32_t> stack_;

@@ -51,9 +51,9 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
   size_t mark = dec.BytesConsumed();
 
   // Connectivity.
-  std::vector<uint32_t> tris;
+  std::vector<uint32_t> tris, opposite;
   uint32_t nc = 0;
-  if ((s = DecodeConnectivity(&dec, nt, nv, &tris, &nc)) != Status::kOk) return s;
+  if ((s = DecodeConnectivity(&dec, nt, nv, &tris, &nc, &opposite)) != Status::kOk) return s;
 
   // Seams.
   std::unique_ptr<SideModels> sm(new SideModels);
@@ -140,6 +140,7 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
   {
     MeshAdjacency adj;
     adj.Build(tris, nw);
+    adj.SetOpposite(&opposite);
     if ((s = DecodeQuantized(&dec, adj, nw, 3, h.position.bits, h.position.prediction, &qpos)) !=
         Status::kOk) {
       return s;
@@ -157,6 +158,7 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
   }
   MeshAdjacency attr_adj;
   if (h.has_normals || !h.floats.empty()) attr_adj.Build(attr_tris, nv);
+  attr_adj.SetOpposite(&opposite);
   NormalGeometry geo;
   geo.positions = qpos.data();
   for (int k = 0; k < 3; ++k) {

@@ -275,6 +275,7 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
   {
     MeshAdjacency adj;
     adj.Build(conn.triangles, nw);
+    adj.SetOpposite(&conn.opposite);
     EncodeQuantized(&enc, adj, qpos, 3, h.position.bits, h.position.prediction);
   }
   si.positions = enc.BytesSoFar() - mark;
@@ -285,6 +286,7 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
   for (size_t i = 0; i < 3 * nt; ++i) attr_tris[i] = orig_new[corner_vertex[i]];
   MeshAdjacency attr_adj;
   if (h.has_normals || !h.floats.empty()) attr_adj.Build(attr_tris, uint32_t(nv));
+  attr_adj.SetOpposite(&conn.opposite);
   NormalGeometry geo;
   geo.positions = qpos.data();
   for (int k = 0; k < 3; ++k) {

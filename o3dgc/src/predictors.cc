@@ -51,17 +51,25 @@ PredictionContext PredictParallelogram(const MeshAdjacency& adj, uint32_t c, con
     }
     if (u < c && w2 < c) {
       // The triangle across u-w2.
-      for (const uint32_t* it2 = adj.begin(u); it2 != adj.end(u); ++it2) {
-        if (*it2 == t) continue;
-        const uint32_t* o = adj.corners(*it2);
-        int has = -1;
-        for (int q = 0; q < 3; ++q) {
-          if (o[q] == w2) has = q;
+      uint32_t x = 0xFFFFFFFFu;
+      if (adj.has_opposite()) {
+        x = adj.OppositeVertex(t, j);
+      } else {
+        for (const uint32_t* it2 = adj.begin(u); it2 != adj.end(u); ++it2) {
+          if (*it2 == t) continue;
+          const uint32_t* o = adj.corners(*it2);
+          int has = -1;
+          for (int q = 0; q < 3; ++q) {
+            if (o[q] == w2) has = q;
+          }
+          if (has < 0) continue;
+          const int iu = o[0] == u ? 0 : (o[1] == u ? 1 : 2);
+          if (o[3 - iu - has] >= c) continue;
+          x = o[3 - iu - has];
+          break;
         }
-        if (has < 0) continue;
-        const int iu = o[0] == u ? 0 : (o[1] == u ? 1 : 2);
-        const uint32_t x = o[3 - iu - has];
-        if (x >= c) continue;
+      }
+      if (x < c) {
         for (int k = 0; k < dim; ++k) {
           const int64_t pk = int64_t(values[size_t(u) * dim + k]) + values[size_t(w2) * dim + k] -
                              values[size_t(x) * dim + k];
@@ -69,7 +77,6 @@ PredictionContext PredictParallelogram(const MeshAdjacency& adj, uint32_t c, con
           if (n_par < kMaxKept) kept[n_par][k] = pk;
         }
         ++n_par;
-        break;
       }
     }
   }
@@ -154,22 +161,29 @@ PredictionContext PredictTexCoord(const MeshAdjacency& adj, uint32_t c, const in
     const double cand_b[2] = {foot[0] - perp[0], foot[1] - perp[1]};
     // The neighbour across a-b with a decoded third vertex decides the side.
     int side = 0;
-    for (const uint32_t* it2 = adj.begin(a); it2 != adj.end(a); ++it2) {
-      if (*it2 == t) continue;
-      const uint32_t* o = adj.corners(*it2);
-      int hb = -1;
-      for (int q = 0; q < 3; ++q) {
-        if (o[q] == b) hb = q;
+    uint32_t x = 0xFFFFFFFFu;
+    if (adj.has_opposite()) {
+      x = adj.OppositeVertex(t, j);
+    } else {
+      for (const uint32_t* it2 = adj.begin(a); it2 != adj.end(a); ++it2) {
+        if (*it2 == t) continue;
+        const uint32_t* o = adj.corners(*it2);
+        int hb = -1;
+        for (int q = 0; q < 3; ++q) {
+          if (o[q] == b) hb = q;
+        }
+        if (hb < 0) continue;
+        const int ia = o[0] == a ? 0 : (o[1] == a ? 1 : 2);
+        if (o[3 - ia - hb] >= c) continue;
+        x = o[3 - ia - hb];
+        break;
       }
-      if (hb < 0) continue;
-      const int ia = o[0] == a ? 0 : (o[1] == a ? 1 : 2);
-      const uint32_t x = o[3 - ia - hb];
-      if (x >= c) continue;
+    }
+    if (x < c) {
       const double cx = eu[0] * (double(uv[2 * size_t(x) + 1]) - ua[1]) -
                         eu[1] * (double(uv[2 * size_t(x)]) - ua[0]);
       // perp points to the positive side (cross(eu, perp) > 0); go away from x.
       side = cx > 0 ? -1 : 1;
-      break;
     }
     if (side == 0) {
       und_a[0] += cand_a[0];

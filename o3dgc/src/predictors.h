@@ -23,9 +23,29 @@ class MeshAdjacency {
   const uint32_t* corners(uint32_t t) const { return tris_->data() + 3 * size_t(t); }
   uint32_t num_vertices() const { return uint32_t(start_.size() - 1); }
   const std::vector<uint32_t>& triangles() const { return *tris_; }
+  // Optional neighbour table (3 per triangle: neighbour triangle * 4 + its slot, or 0xFFFFFFFF),
+  // as found by the connectivity coder. With it, predictors look neighbours up instead of
+  // searching; neighbours whose shared edge does not have the same two vertices are ignored.
+  void SetOpposite(const std::vector<uint32_t>* opposite) { opp_ = opposite; }
+  // The third vertex of the neighbour across the edge opposite corner `slot` of triangle t, if
+  // that neighbour shares the edge's two vertices; else 0xFFFFFFFF.
+  uint32_t OppositeVertex(uint32_t t, int slot) const {
+    const uint32_t e = (*opp_)[3 * size_t(t) + slot];
+    if (e == 0xFFFFFFFFu) return e;
+    const uint32_t* v = corners(t);
+    const uint32_t* o = corners(e / 4);
+    const int s = int(e % 4);
+    const uint32_t p = v[(slot + 1) % 3], q = v[(slot + 2) % 3];
+    const uint32_t op = o[(s + 1) % 3], oq = o[(s + 2) % 3];
+    if (!((op == p && oq == q) || (op == q && oq == p))) return 0xFFFFFFFFu;
+    return o[s];
+  }
+  bool has_opposite() const { return opp_ != nullptr; }
+  const std::vector<uint32_t>* opposite() const { return opp_; }
 
  private:
   const std::vector<uint32_t>* tris_ = nullptr;
+  const std::vector<uint32_t>* opp_ = nullptr;
   std::vector<uint32_t> start_, tri_;
 };
 
