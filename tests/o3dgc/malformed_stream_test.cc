@@ -17,6 +17,9 @@ using namespace o3dgc;
 std::vector<uint8_t> SmallStream(bool keep_order, StreamType type = StreamType::kBinary) {
   o3dgc_test::TestMesh t = o3dgc_test::Awkward();
   t.joints.assign(t.nv() * 4, 3);
+  t.joints[5] = -100000;
+  t.colors.assign(t.nv() * 4, 0.25f);
+  t.colors[7] = 0.75f;
   t.normals.assign(t.nv() * 3, 0.0f);
   for (size_t i = 0; i < t.nv(); ++i) t.normals[3 * i + (i % 3)] = 1.0f;
   EncodeParams p;
@@ -75,6 +78,50 @@ TEST(Malformed, RandomByteFlipsNeverCrash) {
     }
   }
   SUCCEED() << accepted << " corrupted streams decoded to valid meshes";
+}
+
+TEST(Malformed, RandomByteFlipsOnLargerMeshes) {
+  std::mt19937 rng(4242);
+  std::vector<std::vector<uint8_t>> streams;
+  for (bool keep : {false, true}) {
+    o3dgc_test::TestMesh t = o3dgc_test::Torus(12, 8);
+    EncodeParams p;
+    p.keep_order = keep;
+    std::vector<uint8_t> s;
+    ASSERT_EQ(Encode(t.View(), p, &s), Status::kOk);
+    streams.push_back(s);
+    o3dgc_test::TestMesh g = o3dgc_test::Grid(9, 7);
+    ASSERT_EQ(Encode(g.View(), p, &s), Status::kOk);
+    streams.push_back(s);
+  }
+  for (const auto& s : streams) {
+    for (int iter = 0; iter < 800; ++iter) {
+      auto c = s;
+      // Flip bits mostly in the payload, where the parser is exercised.
+      const int flips = 1 + int(rng() % 3);
+      for (int f = 0; f < flips; ++f) c[12 + rng() % (c.size() - 12)] ^= uint8_t(1u << (rng() % 8));
+      DecodeOptions o;
+      o.verify_checksum = false;
+      DecodedMesh m;
+      if (Decode(c.data(), c.size(), o, &m) == Status::kOk) ExpectSane(m);
+      // Truncated and flipped at once.
+      const size_t n = 1 + rng() % c.size();
+      EXPECT_NE(Decode(c.data(), n - (n == c.size() ? 1 : 0), o, &m), Status::kOk);
+    }
+  }
+}
+
+TEST(Malformed, AsciiStreamByteFlips) {
+  std::mt19937 rng(77);
+  const auto s = SmallStream(false, StreamType::kAscii);
+  for (int iter = 0; iter < 1000; ++iter) {
+    auto c = s;
+    c[4 + rng() % (c.size() - 4)] ^= uint8_t(1 + rng() % 255);
+    DecodedMesh m;
+    DecodeOptions o;
+    o.verify_checksum = false;
+    if (Decode(c.data(), c.size(), o, &m) == Status::kOk) ExpectSane(m);
+  }
 }
 
 TEST(Malformed, RandomGarbageAfterHeader) {

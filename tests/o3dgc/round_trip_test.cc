@@ -346,6 +346,58 @@ TEST(RoundTrip, CancelFromProgress) {
   EXPECT_EQ(Encode(t.View(), p, &s), Status::kCancelled);
 }
 
+TEST(RoundTrip, TwoSidedMeshCostsLittleMore) {
+  // Every face twice with opposite winding, as in two-sided CAD exports.
+  TestMesh one = o3dgc_test::Sphere(24, 16);
+  one.normals.clear();
+  TestMesh two = one;
+  for (size_t i = 0; i < one.indices.size(); i += 3) {
+    two.indices.insert(two.indices.end(), {one.indices[i], one.indices[i + 2], one.indices[i + 1]});
+  }
+  const auto a = EncodeOk(one, EncodeParams());
+  const auto b = EncodeOk(two, EncodeParams());
+  EXPECT_LT(b.size(), a.size() + a.size() / 20 + 16);
+  CheckTriangleSet(two, DecodeOk(b), 14);
+  EncodeParams keep;
+  keep.keep_order = true;
+  CheckExact(two, DecodeOk(EncodeOk(two, keep)), 14, 10, 12);
+}
+
+TEST(RoundTrip, SeamsShareWeldedPositions) {
+  // A grid whose right half uses its own copies of the middle column (a UV seam): the copies share
+  // positions, so the stream must barely grow, and the round trip keeps both sides.
+  TestMesh g = o3dgc_test::Grid(16, 16);
+  g.normals.clear();
+  StreamInfo base_info, seamed_info;
+  const auto base = EncodeOk(g, EncodeParams(), &base_info);
+  TestMesh s = g;
+  const uint32_t n = 16;
+  std::vector<uint32_t> copy_of(g.nv(), 0xFFFFFFFFu);
+  for (uint32_t j = 0; j <= n; ++j) {
+    const uint32_t v = j * (n + 1) + n / 2;
+    copy_of[v] = uint32_t(s.nv());
+    s.positions.insert(s.positions.end(), {g.positions[3 * v], g.positions[3 * v + 1], g.positions[3 * v + 2]});
+    s.uvs.insert(s.uvs.end(), {g.uvs[2 * v] + 0.5f, g.uvs[2 * v + 1]});
+  }
+  for (size_t t = 0; t < s.nt(); ++t) {
+    bool right = false;
+    for (int k = 0; k < 3; ++k) right |= (s.indices[3 * t + k] % (n + 1)) > n / 2;
+    if (!right) continue;
+    for (int k = 0; k < 3; ++k) {
+      uint32_t& v = s.indices[3 * t + k];
+      if (copy_of[v] != 0xFFFFFFFFu) v = copy_of[v];
+    }
+  }
+  const auto seamed = EncodeOk(s, EncodeParams(), &seamed_info);
+  // Positions are coded once per welded vertex: the 17 copies add (almost) nothing there.
+  EXPECT_LE(seamed_info.positions, base_info.positions + 4);
+  EXPECT_GT(seamed.size(), base.size());
+  EncodeParams keep;
+  keep.keep_order = true;
+  CheckExact(s, DecodeOk(EncodeOk(s, keep)), 14, 10, 12);
+  CheckTriangleSet(s, DecodeOk(seamed), 14);
+}
+
 TEST(RoundTrip, CompressesARegularSphereWell) {
   // 14-bit positions + 10-bit normals of a smooth closed mesh: well under 4 bytes per vertex.
   const TestMesh t = o3dgc_test::Sphere(64, 48);
