@@ -356,6 +356,12 @@ double PointSegmentDistance(const Vec3& p, const Vec3& a, const Vec3& b) {
 }
 }  // namespace
 
+bool HullPlanes::Contains(const Vec3& p, double margin) const {
+  for (size_t i = 0; i < normals.size(); ++i)
+    if (!(normals[i].dot(p) - offsets[i] < margin)) return false;
+  return true;
+}
+
 double PointTriangleDistance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 ab = b - a, ac = c - a, ap = p - a;
   // Degenerate (collinear) triangles: distance to the three segments.

@@ -55,6 +55,8 @@ struct HullPlanes {
   explicit HullPlanes(const HullMesh& hull);
   // Max over faces of n.p - d: <= 0 inside, > 0 outside (a lower bound of the distance).
   double SignedDistanceBound(const Vec3& p) const;
+  // True when n.p - d < margin for every face (early exit).
+  bool Contains(const Vec3& p, double margin = 0.0) const;
 };
 
 // Exact Euclidean distance from p to triangle (a, b, c).

@@ -351,6 +351,13 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   std::vector<internal::Part>().swap(clip.parts);
   rep.seconds_hulls = clock.Lap();
 
+  // Simplify before merging (cheaper merges; the merged hulls are simplified again below).
+  const double min_volume = params.min_volume_per_hull * clip.volume0;
+  if (!internal::ParallelFor(&ctx, hulls.size(), [&](size_t i) {
+        hulls[i] = internal::SimplifyHull(hulls[i], params.max_vertices_per_hull, min_volume);
+      }))
+    return Fail(Status::kCancelled, "cancelled");
+
   // Merge.
   ctx.BeginStage("Merging", 75, 85);
   internal::MergeParams mp;
@@ -365,7 +372,6 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
 
   // Simplification.
   ctx.BeginStage("Simplification", 85, 90);
-  const double min_volume = params.min_volume_per_hull * clip.volume0;
   if (!internal::ParallelFor(&ctx, hulls.size(), [&](size_t i) {
         hulls[i] = internal::SimplifyHull(hulls[i], params.max_vertices_per_hull, min_volume);
       }))

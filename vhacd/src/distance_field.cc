@@ -83,7 +83,7 @@ bool DistanceField::Build(const VoxelGrid& grid, Context* ctx) {
   return true;
 }
 
-double DistanceField::HullDepth(const HullPlanes& hull) const {
+double DistanceField::HullDepth(const HullPlanes& hull, double limit) const {
   int lo[3], hi[3];
   for (int a = 0; a < 3; ++a) {
     lo[a] = std::clamp(static_cast<int>(std::floor(hull.bmin[a] - 0.5)), 0, dims_[a] - 1);
@@ -96,15 +96,18 @@ double DistanceField::HullDepth(const HullPlanes& hull) const {
       for (int x = lo[0]; x <= hi[0]; ++x) {
         const double d = d_[row + x];
         if (d <= best) continue;
-        if (hull.SignedDistanceBound(Vec3(x + 0.5, y + 0.5, z + 0.5)) < 0) best = d;
+        if (hull.Contains(Vec3(x + 0.5, y + 0.5, z + 0.5))) {
+          best = d;
+          if (best > limit) return best;
+        }
       }
     }
   return best;
 }
 
-double DistanceField::HullDepth(const HullMesh& hull) const {
+double DistanceField::HullDepth(const HullMesh& hull, double limit) const {
   if (hull.empty()) return 0.0;
-  return HullDepth(HullPlanes(hull));
+  return HullDepth(HullPlanes(hull), limit);
 }
 
 }  // namespace internal

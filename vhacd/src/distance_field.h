@@ -20,10 +20,10 @@ class DistanceField {
   bool Build(const VoxelGrid& grid, Context* ctx);
   float At(size_t index) const { return d_[index]; }
 
-  // Largest distance over the outside voxel centres strictly inside the hull (0 when none).
-  double HullDepth(const HullPlanes& hull) const;
-  // Same for a hull given by its points, computed exactly when they are voxel corners.
-  double HullDepth(const HullMesh& hull) const;
+  // Largest distance over the outside voxel centres strictly inside the hull (0 when none). Stops
+  // early, returning a value > limit, as soon as the depth is known to exceed `limit`.
+  double HullDepth(const HullPlanes& hull, double limit = 1e30) const;
+  double HullDepth(const HullMesh& hull, double limit = 1e30) const;
 
  private:
   int dims_[3] = {0, 0, 0};

@@ -55,8 +55,13 @@ bool MergeHulls(std::vector<HullMesh>* hulls_io, const MergeParams& params, Cont
     return ParallelFor(ctx, pairs.size(), [&](size_t k) {
       const uint32_t i = pairs[k].first, j = pairs[k].second;
       const HullMesh m = MergedHull(hulls[i], hulls[j]);
-      cost[i * n + j] = std::max(0.0, m.Volume() - vol[i] - vol[j]) / params.volume0;
-      depth[i * n + j] = use_depth ? params.field->HullDepth(m) : 0.0;
+      const double c = std::max(0.0, m.Volume() - vol[i] - vol[j]) / params.volume0;
+      cost[i * n + j] = c;
+      // The exact depth only matters for the budget; otherwise whether it exceeds the limit.
+      if (!use_depth) depth[i * n + j] = 0.0;
+      else if (params.max_hulls > 0) depth[i * n + j] = params.field->HullDepth(m);
+      else if (c < params.gamma) depth[i * n + j] = params.field->HullDepth(m, params.max_depth + 0.5);
+      else depth[i * n + j] = kInf;
     });
   };
   auto pairs_for = [&](bool everything) {
