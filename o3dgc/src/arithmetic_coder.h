@@ -126,6 +126,7 @@ class ArithmeticDecoder {
   }
   bool failed() const { return pos_ > size_ + kMaxOverrun; }
   size_t BytesConsumed() const { return pos_ < size_ ? pos_ : size_; }
+  size_t size() const { return size_; }
 
  private:
   uint8_t NextByte() { return pos_ < size_ ? data_[pos_++] : (++pos_, uint8_t(0)); }

@@ -18,8 +18,12 @@ class Decoder {
 
   Status Run() {
     out_.clear();
-    out_.reserve(nt_ * 3);
-    front_.Reserve(max_vertices_ < nt_ + 3 ? max_vertices_ : nt_ + 3, nt_ * 2);
+    // Reserve for what real streams need (well over one bit per triangle); a stream that codes
+    // more grows the vectors as it actually decodes, so a lying header allocates nothing.
+    size_t expect = dec_.size() * 8 + 1024;
+    if (expect > nt_) expect = nt_;
+    out_.reserve(expect * 3);
+    front_.Reserve(max_vertices_ < expect + 3 ? max_vertices_ : expect + 3, expect * 2);
     for (;;) {
       if (dec_.failed()) return Status::kTruncated;
       if (front_.empty()) {

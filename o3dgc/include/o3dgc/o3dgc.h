@@ -9,10 +9,29 @@
 //   o3dgc::DecodedMesh out;
 //   s = o3dgc::Decode(stream.data(), stream.size(), o3dgc::DecodeOptions(), &out);
 //
+// How it codes (details in src/*.h):
+//  - positions are welded (bitwise-equal positions of referenced vertices share one "position
+//    vertex"); connectivity is coded over position vertices by region growing over gates (a
+//    cut-border traversal: per gate "boundary / new vertex / right / left / back reference",
+//    flip bits for inconsistent winding, copy counts for repeated triangles, explicit references
+//    for degenerate triangles and new parts), so open, non-manifold, non-oriented and
+//    multi-component meshes and isolated vertices all code losslessly;
+//  - seams: per position vertex its number of attribute vertices and, per corner, which one;
+//  - attributes are quantized, predicted (parallelogram mode: multi-parallelogram in
+//    max-prediction-degree order; texture coordinates (Semantic::kTexCoord, 2 components) are
+//    predicted from the 3D shape instead; surface-normal mode: octahedral coordinates against the
+//    normal of the decoded surface) and the residuals are coded with context-adaptive binary
+//    arithmetic coding;
+//  - stream: "O3DG", version, flags, CRC32, payload length, one arithmetic-coded payload. The
+//    ASCII form ("O3DA") is the same stream repacked 7 bits per byte.
+//
 // Trust model: Encode trusts nothing it cannot check cheaply but expects the pointers of a
-// MeshView to be valid for the sizes stated below. Decode is safe on untrusted input: it validates
-// every count, size and value, bounds its allocations by what the stream can hold, returns a
-// Status for any malformed or truncated stream and never reads outside [data, data + size).
+// MeshView to be valid for the sizes stated below (it is not hardened against hostile callers).
+// Decode is safe on untrusted input: it validates every count, size and value, bounds its
+// allocations by what the stream can hold (a valid stream pays at least one byte per 64
+// vertices/triangles/components, so a short stream claiming 2^32 vertices is rejected before
+// anything is allocated), returns a Status for any malformed or truncated stream, always
+// terminates, and never reads outside [data, data + size).
 // Neither function ever produces NaN or infinite values.
 #ifndef O3DGC_O3DGC_H_
 #define O3DGC_O3DGC_H_
@@ -51,7 +70,8 @@ enum class StreamType : uint8_t {
 enum class Prediction : uint8_t {
   kNone = 0,           // values coded as they are
   kDifferential = 1,   // residual against the previous vertex in coding order
-  kParallelogram = 2,  // multi-parallelogram over the mesh, falling back to neighbour averages
+  kParallelogram = 2,  // multi-parallelogram over the mesh, falling back to neighbour averages;
+                       // 2-component kTexCoord attributes are predicted from the 3D shape
   kSurfaceNormal = 3,  // normals only: predicted from the decoded surface; output is unit length
   kDefault = 255,      // per-semantic default (see Semantic)
 };
