@@ -1,0 +1,44 @@
+// The collision stage: which meshes get convex hulls, and the decomposition itself.
+#ifndef HULLPACK_TOOLS_PIPELINE_COLLISION_H_
+#define HULLPACK_TOOLS_PIPELINE_COLLISION_H_
+
+#include <string>
+#include <vector>
+
+#include "common/status.h"
+#include "scene/scene.h"
+#include "vhacd/vhacd.h"
+
+namespace hullpack {
+
+enum class HullPolicy {
+  kAll,   // every mesh
+  kNone,  // no hulls
+  kAuto,  // every mesh except those marked or named non-colliding, and skinned ones unless asked
+};
+
+struct CollisionSettings {
+  HullPolicy policy = HullPolicy::kAuto;
+  bool skinned_meshes = false;  // under kAuto: decompose skinned meshes (in their bind pose) too
+  vhacd::Parameters parameters;
+};
+
+// Why a mesh gets no hulls ("" when it gets them): "--hulls none", "marked non-colliding", ...
+std::string WhyNoHulls(const Mesh& mesh, const CollisionSettings& settings);
+
+// True for names that conventionally mark render-only geometry: they contain "nocol", "no_col",
+// "no-col", "nocollision" or "-noimp" (case-insensitive).
+bool NameMarksNonColliding(const std::string& name);
+
+struct HullSet {
+  std::vector<Mesh> hulls;  // closed convex meshes, in the source mesh's coordinates
+  vhacd::Report report;
+};
+
+// Decomposes `mesh` with the settings' parameters. `observer` (may be null) gets progress and
+// can cancel.
+Result<HullSet> DecomposeMesh(const Mesh& mesh, const vhacd::Parameters& parameters, vhacd::Observer* observer);
+
+}  // namespace hullpack
+
+#endif  // HULLPACK_TOOLS_PIPELINE_COLLISION_H_
