@@ -208,7 +208,14 @@ bool ComputeErrorReport(const MetricsInput& in, Context* ctx, Report* report) {
     for (const auto& t : h.triangles) SampleTriangle(h.vertices[t[0]], h.vertices[t[1]], h.vertices[t[2]], spacing, &tmp);
     for (const Vec3& p : tmp) hs.emplace_back(hi, p);
   }
-  TriangleLocator locator(*in.mesh, 4.0);
+  // Buckets of a few triangles each: about 3 mean triangle sizes, at most 4 voxels.
+  double mesh_area = 0.0;
+  for (const auto& t : in.mesh->triangles)
+    mesh_area += 0.5 * (in.mesh->points[t[1]] - in.mesh->points[t[0]]).cross(in.mesh->points[t[2]] - in.mesh->points[t[0]]).norm();
+  double cell = 3.0 * std::sqrt(2.0 * mesh_area / std::max<size_t>(1, in.mesh->triangles.size()));
+  const double cells_at_one = static_cast<double>(grid.dims[0]) * grid.dims[1] * grid.dims[2];
+  cell = std::clamp(cell, std::cbrt(cells_at_one / 8e6), 4.0);
+  TriangleLocator locator(*in.mesh, cell);
   chunk_max.assign((hs.size() + kChunk - 1) / kChunk, 0.0);
   if (!ParallelFor(ctx, chunk_max.size(), [&](size_t c) {
         double m = 0.0;

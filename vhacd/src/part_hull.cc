@@ -85,8 +85,21 @@ HullMesh BuildPartHull(const Part& part, const TriangleIndex& index) {
     std::fill(stamp.begin(), stamp.end(), 0);
     mark = 1;
   }
+  // Triangles inside the box contribute their vertices (each once), the others their clipped polygon.
+  thread_local std::vector<uint32_t> vstamp;
+  if (vstamp.size() != mesh.points.size()) vstamp.assign(mesh.points.size(), 0);
+  if (mark == 1) std::fill(vstamp.begin(), vstamp.end(), 0);
+  auto inside = [&](const Vec3& q) { return (q.array() >= lo.array()).all() && (q.array() <= hi.array()).all(); };
   index.ForEachInBox(lo, hi, &stamp, mark, [&](uint32_t t) {
     const auto& tr = mesh.triangles[t];
+    if (inside(mesh.points[tr[0]]) && inside(mesh.points[tr[1]]) && inside(mesh.points[tr[2]])) {
+      for (uint32_t v : tr)
+        if (vstamp[v] != mark) {
+          vstamp[v] = mark;
+          pts.push_back(mesh.points[v]);
+        }
+      return;
+    }
     ClipTriangleToBox(mesh.points[tr[0]], mesh.points[tr[1]], mesh.points[tr[2]], lo, hi, &pts);
   });
   HullMesh h;
