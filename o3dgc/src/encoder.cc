@@ -146,6 +146,14 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
   fit(&h.position, positions);
   if (h.has_normals && h.normal.prediction != Prediction::kSurfaceNormal) fit(&h.normal, normals);
   for (size_t i = 0; i < h.floats.size(); ++i) fit(&h.floats[i], floats[i]);
+  // Values near FLT_MAX can give a range whose end overflows: not representable in a stream.
+  if (!h.position.quant.Valid()) return Status::kUnsupported;
+  if (h.has_normals && h.normal.prediction != Prediction::kSurfaceNormal && !h.normal.quant.Valid()) {
+    return Status::kUnsupported;
+  }
+  for (const AttributeDesc& d : h.floats) {
+    if (!d.quant.Valid()) return Status::kUnsupported;
+  }
 
   // Weld referenced vertices with bitwise equal positions.
   std::vector<uint32_t> weld(nv, kNone);

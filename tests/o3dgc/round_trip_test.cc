@@ -338,6 +338,22 @@ TEST(RoundTrip, RejectsInvalidInput) {
   (void)v;
 }
 
+TEST(RoundTrip, ExtremeCoordinates) {
+  TestMesh t;
+  t.positions = {-3e38f, 0, 1, 3e38f, 0, 1, 0, 1e-30f, 1};
+  t.indices = {0, 1, 2};
+  std::vector<uint8_t> s;
+  // The range end overflows a float: refused, not a stream the decoder would reject.
+  EXPECT_EQ(Encode(t.View(), EncodeParams(), &s), Status::kUnsupported);
+  t.positions = {-1e37f, 5e36f, 1, 1e37f, 0, -1e37f, 1e-30f, 1e-30f, 1e-30f};
+  EncodeParams p;
+  p.keep_order = true;
+  p.position_bits = 30;
+  ASSERT_EQ(Encode(t.View(), p, &s), Status::kOk);
+  DecodedMesh m = DecodeOk(s);
+  CheckExact(t, m, 30, 10, 12);
+}
+
 TEST(RoundTrip, CancelFromProgress) {
   const TestMesh t = o3dgc_test::Sphere(10, 6);
   EncodeParams p;
