@@ -50,19 +50,38 @@ Status ParseError(const std::string& name, const std::string& what) {
   return Status(StatusCode::kParseError, name + ": " + what);
 }
 
+// True when brackets outside strings nest deeper than `limit` (exact for valid JSON).
+bool NestsDeeperThan(const uint8_t* data, size_t size, int limit) {
+  int depth = 0;
+  bool in_string = false;
+  for (size_t i = 0; i < size; ++i) {
+    const uint8_t c = data[i];
+    if (in_string) {
+      if (c == '\\') {
+        ++i;
+      } else if (c == '"') {
+        in_string = false;
+      }
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > limit) return true;
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+  return false;
+}
+
 Result<nlohmann::json> ParseJsonText(const uint8_t* data, size_t size, const std::string& name) {
   try {
-    // Deeply nested values are refused: copying or dumping a json value recurses per level.
-    bool too_deep = false;
-    const nlohmann::json::parser_callback_t limit_depth = [&too_deep](int depth, nlohmann::json::parse_event_t,
-                                                                      nlohmann::json&) {
-      if (depth > kMaxJsonDepth) too_deep = true;
-      return !too_deep;
-    };
-    nlohmann::json j = nlohmann::json::parse(data, data + size, limit_depth);
-    if (too_deep) {
+    // Deeply nested values are refused before parsing: copying or dumping a json value recurses
+    // per level. (nlohmann's parser callback could count depth too, but it is quadratic on large
+    // arrays, so the text is scanned instead.)
+    if (NestsDeeperThan(data, size, kMaxJsonDepth)) {
       return ParseError(name, "the glTF JSON nests deeper than " + std::to_string(kMaxJsonDepth) + " levels");
     }
+    nlohmann::json j = nlohmann::json::parse(data, data + size);
     if (!j.is_object()) return ParseError(name, "the glTF JSON is not an object");
     return j;
   } catch (const nlohmann::json::parse_error& e) {
