@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <map>
 #include <utility>
@@ -112,6 +113,27 @@ json TextureInfo(const TextureRef& ref, std::map<int, int>* texture_of_image, Gl
   json info = {{"index", texture}};
   if (ref.uv_set != 0) info["texCoord"] = ref.uv_set;
   return info;
+}
+
+// Makes an image reference a valid URI without changing one that already is: backslashes become '/',
+// and bytes that may never appear in a URI (controls, space, "<>\^`{|}, non-ASCII) are
+// percent-encoded. '%' is left alone, so an already encoded URI passes through unchanged.
+std::string EscapeUri(const std::string& uri) {
+  static const char* kHex = "0123456789ABCDEF";
+  std::string out;
+  for (char ch : uri) {
+    const unsigned char c = static_cast<unsigned char>(ch);
+    if (c == '\\') {
+      out.push_back('/');
+    } else if (c <= 0x20 || c >= 0x7F || std::strchr("\"<>^`{|}", c) != nullptr) {
+      out.push_back('%');
+      out.push_back(kHex[c >> 4]);
+      out.push_back(kHex[c & 15]);
+    } else {
+      out.push_back(static_cast<char>(c));
+    }
+  }
+  return out;
 }
 
 // UV sets the materials used by `m` sample (the highest texCoord + 1), at least m.uv_sets.size().
@@ -298,7 +320,7 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
     json j = json::object();
     if (!img.name.empty()) j["name"] = img.name;
     if (!img.uri.empty()) {
-      j["uri"] = img.uri;
+      j["uri"] = EscapeUri(img.uri);
       if (!img.mime_type.empty()) j["mimeType"] = img.mime_type;
     } else {
       j["bufferView"] = doc->AddBufferView(img.bytes, 4);

@@ -235,6 +235,24 @@ TEST(GlbWriterTest, RejectsInconsistentScenes) {
   }
 }
 
+TEST(GlbWriterTest, ImageUrisAreMadeValidWithoutDoubleEncoding) {
+  Scene s;
+  s.meshes.push_back(testing_gltf::MakeGrid(1, 1, 1, 0.0f));
+  for (const char* uri : {"tex\\my wood.png", "a%20b.png", "caf\xC3\xA9|{x}.jpg", "plain/ok-_.~!$&'()*+,;=:@.png"}) {
+    Image img;
+    img.uri = uri;
+    s.images.push_back(img);
+  }
+  Result<std::vector<uint8_t>> glb = EncodeGlb(s);
+  ASSERT_TRUE(glb.ok());
+  const GltfDocument doc = Parse(glb.value());
+  const json& images = doc.json()["images"];
+  EXPECT_EQ(images[0]["uri"], "tex/my%20wood.png");
+  EXPECT_EQ(images[1]["uri"], "a%20b.png");
+  EXPECT_EQ(images[2]["uri"], "caf%C3%A9%7C%7Bx%7D.jpg");
+  EXPECT_EQ(images[3]["uri"], "plain/ok-_.~!$&'()*+,;=:@.png");
+}
+
 TEST(GlbWriterTest, OptionsChangeGeneratorAndJointType) {
   GlbWriteOptions options;
   options.generator = "hullpack test 1.2";
