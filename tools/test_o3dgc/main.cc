@@ -4,6 +4,8 @@
 //       writes bunny.s3d next to the input
 //   test_o3dgc -d -i bunny.s3d
 //       writes bunny_dec.obj next to the input
+// Material names (the stream keeps only per-triangle group ids) go to a side file bunny.mat, one
+// name per line in id order, which -d reads back when it exists.
 // Every mesh of the input is merged into one (material ids become triangle groups, written back
 // as usemtl groups). Prints mesh info, timings, stream size and the size of each part.
 #include <chrono>
@@ -154,6 +156,10 @@ int Compress(const std::string& input, o3dgc::EncodeParams params, int uv_bits) 
     std::fprintf(stderr, "cannot write %s\n", out.c_str());
     return 1;
   }
+  if (materials) {
+    std::ofstream mat(Stem(input) + ".mat");
+    for (const hullpack::Material& m : scene->materials) mat << m.name << "\n";
+  }
   std::printf("Encode time %.2f ms\nStream %s (%s), %zu bytes\n", Ms(t0, t1), out.c_str(),
               params.stream_type == o3dgc::StreamType::kAscii ? "ascii" : "binary", stream.size());
   PrintParts(info, view.num_vertices);
@@ -196,11 +202,14 @@ int Decompress(const std::string& input) {
     uint32_t max_id = 0;
     for (uint32_t g : mesh.triangle_groups) max_id = g > max_id ? g : max_id;
     if (max_id < 65536) {
+      std::vector<std::string> names;
+      std::ifstream mat(Stem(input) + ".mat");
+      for (std::string line; std::getline(mat, line);) names.push_back(line);
       m.material_ids = mesh.triangle_groups;
       for (uint32_t g = 0; g <= max_id; ++g) {
-        hullpack::Material mat;
-        mat.name = "group_" + std::to_string(g);
-        scene.materials.push_back(mat);
+        hullpack::Material material;
+        material.name = g < names.size() && !names[g].empty() ? names[g] : "group_" + std::to_string(g);
+        scene.materials.push_back(material);
       }
     }
   }
