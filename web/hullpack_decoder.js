@@ -152,8 +152,23 @@ export async function createDecoder(options = {}) {
 // The triangles of `mesh` whose group id equals `group`, with the vertices they use renumbered
 // in increasing order of their stream index (HULLPACK_mesh_compression `group`). Returns a mesh of
 // the same shape (attributes sliced accordingly).
-export function selectGroup(mesh, group) {
+// The triangles of one group (docs/packed-gltf.md). With compactVertices the vertices are only those
+// the triangles use, renumbered in increasing order; otherwise all vertices are kept, so the
+// primitives of one mesh share them.
+export function selectGroup(mesh, group, compactVertices = false) {
   if (group === undefined || group === null) return mesh;
+  if (!compactVertices) {
+    const groups = mesh.groups;
+    let tris = 0;
+    for (let t = 0; t < mesh.numTriangles; ++t) if ((groups ? groups[t] : 0) === group) ++tris;
+    const indices = new Uint32Array(3 * tris);
+    let k = 0;
+    for (let t = 0; t < mesh.numTriangles; ++t) {
+      if ((groups ? groups[t] : 0) !== group) continue;
+      for (let c = 0; c < 3; ++c) indices[k++] = mesh.indices[3 * t + c];
+    }
+    return { ...mesh, numTriangles: tris, indices, groups: new Uint32Array(tris).fill(group) };
+  }
   const groups = mesh.groups;
   const nt = mesh.numTriangles;
   const used = new Uint8Array(mesh.numVertices);

@@ -81,7 +81,7 @@ export class HullpackMeshCompressionPlugin {
   async decodePrimitiveData(primitiveDef) {
     const ext = primitiveDef.extensions[EXTENSION_NAME];
     const whole = await this.decodeBufferView(ext.bufferView);
-    const mesh = ext.group === undefined ? whole : selectGroup(whole, ext.group);
+    const mesh = ext.group === undefined ? whole : selectGroup(whole, ext.group, ext.compactVertices === true);
     const attributes = {};
     for (const [name, id] of Object.entries(ext.attributes || {})) {
       const a = mesh.attributes[id];

@@ -116,7 +116,7 @@ function main() {
         primitives: [{
           attributes: { POSITION: acc({ componentType: 5126, count: g.vertices, type: 'VEC3', min: g.min, max: g.max }) },
           indices: acc({ componentType: 5125, count: 3 * g.triangles, type: 'SCALAR' }),
-          extensions: { HULLPACK_mesh_compression: { bufferView: 1, attributes: { POSITION: 0 }, group: g.id } },
+          extensions: { HULLPACK_mesh_compression: { bufferView: 1, attributes: { POSITION: 0 }, group: g.id, compactVertices: true } },
         }],
       }) - 1;
       const s = shapes.push({ type: 'convex', convex: { mesh: m } }) - 1;
