@@ -167,14 +167,16 @@ bool ComputeErrorReport(const MetricsInput& in, Context* ctx, Report* report) {
     report->hulls[h].vertex_count = static_cast<uint32_t>(hulls[h].vertices.size());
     report->hulls[h].concavity = static_cast<double>(empty_inside[h]) / in.volume0;
   }
-  if (in.closed) {
-    uint64_t inter = 0, uni = 0;
+  {
+    uint64_t inter = 0, uni = 0, solid = 0;
     for (size_t i = 0; i < nvox; ++i) {
       const bool s = grid.CenterInside(i), h = in_hull[i] != 0;
       inter += (s && h);
       uni += (s || h);
+      solid += s;
     }
-    report->volume_iou = uni > 0 ? static_cast<double>(inter) / uni : 1.0;
+    if (in.closed) report->volume_iou = uni > 0 ? static_cast<double>(inter) / uni : 1.0;
+    report->solid_coverage = solid > 0 ? static_cast<double>(inter) / solid : 1.0;
   }
   if (ctx->Cancelled()) return false;
 

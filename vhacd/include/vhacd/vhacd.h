@@ -161,6 +161,9 @@ struct Report {
   std::vector<HullReport> hulls;
   bool closed_input = false;      // every edge of the input is shared by exactly two triangles
   double volume_iou = -1.0;       // |solid ∩ hulls| / |solid ∪ hulls| on the voxel centres
+  // |solid ∩ hulls| / |solid| on the voxel centres, where the solid is the filled voxel set (see the
+  // fill rule above); measured for open meshes too.
+  double solid_coverage = -1.0;
   // One-sided Hausdorff distances on samples of both surfaces. mesh -> hulls counts 0 for a mesh
   // point inside a hull; hulls -> mesh uses only points of the boundary of the union of hulls.
   double hausdorff_mesh_to_hulls = -1.0;
