@@ -39,7 +39,6 @@ class Front {
     uint32_t a, b;
     int32_t next_out, prev_out, next_in, prev_in;
     uint32_t edge;  // triangle * 4 + slot of the decoded triangle this gate is an edge of
-    bool open;
   };
   static constexpr uint32_t kNoEdge = 0xFFFFFFFFu;
 
@@ -48,6 +47,7 @@ class Front {
     head_in_.reserve(vertices);
     deg_.reserve(vertices);
     gates_.reserve(triangles + 16);
+    open_.reserve(triangles + 16);
   }
   uint32_t AddVertex() {
     head_out_.push_back(-1);
@@ -61,7 +61,7 @@ class Front {
   int32_t Pop() {
     const int32_t g = stack_.back();
     stack_.pop_back();
-    return gates_[g].open ? g : -1;
+    return open_[g] ? g : -1;  // a compact array: the popped gate is often cold
   }
   const Gate& gate(int32_t g) const { return gates_[g]; }
 
@@ -83,7 +83,7 @@ class Front {
 
   void Close(int32_t g) {
     Gate& x = gates_[g];
-    x.open = false;
+    open_[g] = 0;
     if (x.prev_out >= 0) gates_[x.prev_out].next_out = x.next_out; else head_out_[x.a] = x.next_out;
     if (x.next_out >= 0) gates_[x.next_out].prev_out = x.prev_out;
     if (x.prev_in >= 0) gates_[x.prev_in].next_in = x.next_in; else head_in_[x.b] = x.next_in;
@@ -102,7 +102,8 @@ class Front {
       }
     }
     const int32_t id = int32_t(gates_.size());
-    gates_.push_back(Gate{u, v, head_out_[u], -1, head_in_[v], -1, edge, true});
+    gates_.push_back(Gate{u, v, head_out_[u], -1, head_in_[v], -1, edge});
+    open_.push_back(1);
     if (head_out_[u] >= 0) gates_[head_out_[u]].prev_out = id;
     head_out_[u] = id;
     if (head_in_[v] >= 0) gates_[head_in_[v]].prev_in = id;
@@ -146,6 +147,7 @@ class Front {
   }
 
   std::vector<Gate> gates_;
+  std::vector<uint8_t> open_;
   std::vector<uint32_t> opp_;
   std::vector<int32_t> head_out_, head_in_;
   std::vector<uint32_t> deg_;
