@@ -148,6 +148,32 @@ TEST(DecomposeTest, OpenAndNonManifoldMeshesGiveValidHulls) {
   EXPECT_EQ(vhacd_test::CheckHulls(r2.hulls, 1e-6), "");
 }
 
+TEST(DecomposeTest, RandomTriangleSoupsGiveValidHulls) {
+  uint32_t seed = 12345;
+  auto next = [&]() {
+    seed = seed * 1664525u + 1013904223u;
+    return (seed >> 8) / 16777216.0;
+  };
+  for (int trial = 0; trial < 4; ++trial) {
+    Mesh m;
+    for (int t = 0; t < 60; ++t) {
+      const double cx = next(), cy = next(), cz = next() * (trial == 3 ? 1e-3 : 1.0);
+      const uint32_t a = m.AddPoint(cx, cy, cz);
+      const uint32_t b = m.AddPoint(cx + 0.2 * next(), cy + 0.2 * next(), cz + 0.2 * next());
+      const uint32_t c = m.AddPoint(cx + 0.2 * next(), cy + 0.2 * next(), cz + 0.2 * next());
+      m.AddTriangle(a, b, c);
+      if (t % 7 == 0) m.AddTriangle(a, c, b);  // two-sided
+    }
+    vhacd::Parameters p = Fast();
+    p.resolution = 10000;
+    const vhacd::Result r = vhacd::Decompose(m.View(), p);
+    ASSERT_TRUE(r.ok()) << trial << " " << r.message;
+    EXPECT_GE(r.hulls.size(), 1u);
+    EXPECT_EQ(vhacd_test::CheckHulls(r.hulls, 1e-6 * 2), "") << trial;
+    EXPECT_TRUE(std::isfinite(r.report.concavity));
+  }
+}
+
 bool SameHulls(const std::vector<vhacd::ConvexHull>& a, const std::vector<vhacd::ConvexHull>& b) {
   if (a.size() != b.size()) return false;
   for (size_t i = 0; i < a.size(); ++i)
