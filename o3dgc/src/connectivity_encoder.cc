@@ -56,7 +56,10 @@ class Encoder {
       size_t found = kNone;
       int flip = 0;
       uint32_t oc = kNone;
-      for (uint32_t k = vt_start_[oa]; k < vt_start_[oa + 1]; ++k) {
+      // Search the shorter of the two vertices' triangle lists (a fan apex can have many).
+      const uint32_t os =
+          (vt_start_[oa + 1] - vt_start_[oa] <= vt_start_[ob + 1] - vt_start_[ob]) ? oa : ob;
+      for (uint32_t k = vt_start_[os]; k < vt_start_[os + 1]; ++k) {
         const uint32_t t = vt_[k];
         if (visited_[t]) continue;
         const uint32_t* v = &tris_[3 * t];
@@ -65,7 +68,7 @@ class Encoder {
           if (v[j] == oa) ia = j;
           if (v[j] == ob) ib = j;
         }
-        if (ib < 0) continue;
+        if (ia < 0 || ib < 0) continue;
         const int third = 3 - ia - ib;
         const bool consistent = ((ib + 1) % 3) == ia;  // the triangle holds b->a
         if (consistent) {

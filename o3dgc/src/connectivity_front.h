@@ -41,6 +41,7 @@ class Front {
     uint32_t edge;  // triangle * 4 + slot of the decoded triangle this gate is an edge of
   };
   static constexpr uint32_t kNoEdge = 0xFFFFFFFFu;
+  static constexpr int kMaxScan = 64;
 
   void Reserve(size_t vertices, size_t triangles) {
     head_out_.reserve(vertices);
@@ -93,8 +94,13 @@ class Front {
   // A new triangle edge u->v (edge = triangle * 4 + slot, the slot being the corner opposite the
   // edge): closes the open gate v->u if there is one (the two triangles become neighbours), else
   // opens u->v.
+  // Only the kMaxScan newest gates leaving v are searched, so a vertex with very many open gates
+  // (hostile streams, pathological meshes) cannot make coding quadratic; the encoder and the
+  // decoder apply the same rule.
   void AddHalfEdge(uint32_t u, uint32_t v, uint32_t edge) {
-    for (int32_t g = head_out_[v]; g >= 0; g = gates_[g].next_out) {
+    int scanned = 0;
+    for (int32_t g = head_out_[v]; g >= 0 && scanned < kMaxScan;
+         g = gates_[g].next_out, ++scanned) {
       if (gates_[g].b == u) {
         Link(edge, gates_[g].edge);
         Close(g);

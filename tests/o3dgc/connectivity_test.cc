@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <random>
 
 #include "connectivity_decoder.h"
@@ -96,6 +97,23 @@ TEST(Connectivity, RandomTriangleSoups) {
     for (auto& v : tris) v = map[v];
     RoundTrip(tris, n);
   }
+}
+
+}  // namespace
+
+namespace {
+
+TEST(Connectivity, HighValenceVerticesStayFast) {
+  // A fan of 20000 triangles around one apex, plus 20000 separate triangles that all share
+  // vertex 0: neither may make coding quadratic.
+  std::vector<uint32_t> tris;
+  const uint32_t n = 20000;
+  for (uint32_t i = 0; i < n; ++i) tris.insert(tris.end(), {0, 1 + i, 2 + i});
+  const uint32_t base = n + 2;
+  for (uint32_t i = 0; i < n; ++i) tris.insert(tris.end(), {0, base + 2 * i, base + 2 * i + 1});
+  const auto t0 = std::chrono::steady_clock::now();
+  RoundTrip(tris, base + 2 * n);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 5.0);
 }
 
 }  // namespace
