@@ -378,6 +378,21 @@ TEST(GlbHostileTest, LargeHierarchiesAndManyAccessorsStayLinear) {
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(30));
 }
 
+TEST(GlbHostileTest, ExpansionLimitIsAnOption) {
+  Result<std::vector<uint8_t>> glb = EncodeGlb(testing_gltf::MakeLargeScene());
+  ASSERT_TRUE(glb.ok());
+  Result<GltfDocument> doc = DecodeGlbDocument(glb->data(), glb->size(), "large.glb");
+  ASSERT_TRUE(doc.ok());
+  EXPECT_TRUE(DecodeGltfDocument(doc.value(), "large.glb").ok());
+  GltfReadOptions tight;
+  tight.max_expansion = 1;  // decoded floats + 32-bit indices exceed the 16-bit-index file plus 1 MiB
+  Result<Scene> s = DecodeGltfDocument(doc.value(), "large.glb", tight);
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.status().code(), StatusCode::kUnsupported);
+  EXPECT_NE(s.status().message().find("exceed the limit of 1 bytes per input byte"), std::string::npos)
+      << s.status().ToString();
+}
+
 TEST(GlbHostileTest, DeeplyNestedJsonIsAnErrorNotAStackOverflow) {
   std::string text = R"({"asset":{"version":"2.0"},"extras":)";
   text += std::string(200000, '[') + std::string(200000, ']') + "}";

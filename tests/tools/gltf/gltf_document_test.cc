@@ -91,6 +91,24 @@ TEST(GltfDocumentTest, SerializeWritesAPaddedGlb) {
   EXPECT_EQ(back->source_size(), b.size());
 }
 
+TEST(GltfDocumentTest, ParseGlbSkipsUnknownChunks) {
+  GltfDocument doc;
+  const uint8_t four[4] = {9, 8, 7, 6};
+  doc.AddBufferView(four, 4, 4);
+  Result<std::vector<uint8_t>> glb = doc.Serialize();
+  ASSERT_TRUE(glb.ok());
+  // Insert an unknown 4-byte chunk between JSON and BIN.
+  std::vector<uint8_t> b = glb.value();
+  const size_t bin_at = 20 + U32(b, 12);
+  const std::vector<uint8_t> extra = {4, 0, 0, 0, 'X', 'T', 'R', 'A', 1, 2, 3, 4};
+  b.insert(b.begin() + static_cast<std::ptrdiff_t>(bin_at), extra.begin(), extra.end());
+  const uint32_t total = static_cast<uint32_t>(b.size());
+  for (int i = 0; i < 4; ++i) b[8 + static_cast<size_t>(i)] = static_cast<uint8_t>(total >> (8 * i));
+  Result<GltfDocument> back = ParseGlb(b.data(), b.size(), "chunks.glb");
+  ASSERT_TRUE(back.ok()) << back.status().ToString();
+  EXPECT_EQ(back->binary(), std::vector<uint8_t>({9, 8, 7, 6}));
+}
+
 TEST(GltfDocumentTest, SerializeWithoutBinaryHasNoBinChunk) {
   GltfDocument doc;
   Result<std::vector<uint8_t>> glb = doc.Serialize();

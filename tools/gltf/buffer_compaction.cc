@@ -1,0 +1,75 @@
+#include "gltf/buffer_compaction.h"
+
+#include <cstring>
+#include <functional>
+
+namespace hullpack {
+namespace {
+
+// Calls `visit` on every integer "bufferView" member of the tree.
+void ForEachBufferViewRef(nlohmann::json& node, const std::function<void(nlohmann::json&)>& visit) {
+  if (node.is_object()) {
+    for (auto it = node.begin(); it != node.end(); ++it) {
+      if (it.key() == "bufferView" && it.value().is_number_integer()) {
+        visit(it.value());
+      } else {
+        ForEachBufferViewRef(it.value(), visit);
+      }
+    }
+  } else if (node.is_array()) {
+    for (nlohmann::json& child : node) ForEachBufferViewRef(child, visit);
+  }
+}
+
+}  // namespace
+
+Status CompactBufferViews(GltfDocument& doc) {
+  nlohmann::json& json = doc.json();
+  if (!json.contains("bufferViews") || !json["bufferViews"].is_array()) return Status::Ok();
+  nlohmann::json& views = json["bufferViews"];
+  const std::vector<uint8_t>& bin = doc.binary();
+  for (size_t i = 0; i < views.size(); ++i) {
+    const nlohmann::json& v = views[i];
+    if (!v.is_object() || v.value("buffer", -1) != 0) {
+      return Status(StatusCode::kUnsupported, "bufferViews[" + std::to_string(i) + "] is not on the GLB binary chunk");
+    }
+    const uint64_t offset = v.value("byteOffset", uint64_t(0));
+    const uint64_t length = v.value("byteLength", uint64_t(0));
+    if (offset > bin.size() || length > bin.size() - offset) {
+      return Status(StatusCode::kParseError, "bufferViews[" + std::to_string(i) + "] lies outside the binary chunk");
+    }
+  }
+  std::vector<int64_t> new_index(views.size(), -1);
+  ForEachBufferViewRef(json, [&](nlohmann::json& ref) {
+    const int64_t i = ref.get<int64_t>();
+    if (i >= 0 && static_cast<size_t>(i) < new_index.size()) new_index[i] = 0;
+  });
+  nlohmann::json kept = nlohmann::json::array();
+  std::vector<uint8_t> packed;
+  for (size_t i = 0; i < views.size(); ++i) {
+    if (new_index[i] < 0) continue;
+    nlohmann::json v = views[i];
+    const uint64_t offset = v.value("byteOffset", uint64_t(0));
+    const uint64_t length = v.value("byteLength", uint64_t(0));
+    size_t alignment = 4;
+    while (alignment < 16 && offset % (alignment * 2) == 0) alignment *= 2;
+    packed.resize((packed.size() + alignment - 1) / alignment * alignment, 0);
+    v["byteOffset"] = packed.size();
+    packed.insert(packed.end(), bin.begin() + static_cast<ptrdiff_t>(offset), bin.begin() + static_cast<ptrdiff_t>(offset + length));
+    new_index[i] = static_cast<int64_t>(kept.size());
+    kept.push_back(std::move(v));
+  }
+  ForEachBufferViewRef(json, [&](nlohmann::json& ref) {
+    const int64_t i = ref.get<int64_t>();
+    if (i >= 0 && static_cast<size_t>(i) < new_index.size()) ref = new_index[i];
+  });
+  if (kept.empty()) {
+    json.erase("bufferViews");
+  } else {
+    views = std::move(kept);
+  }
+  doc.binary() = std::move(packed);
+  return Status::Ok();
+}
+
+}  // namespace hullpack

@@ -1,0 +1,304 @@
+#include "gltf/packed_glb_reader.h"
+
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <optional>
+#include <set>
+
+#include "gltf/buffer_compaction.h"
+#include "gltf/glb_reader.h"
+#include "o3dgc/o3dgc.h"
+
+namespace hullpack {
+namespace {
+
+// One attribute of a decoded stream in stream-id order: floats or ints, `dimension` per vertex.
+struct StreamAttribute {
+  uint32_t dimension = 0;
+  const std::vector<float>* floats = nullptr;
+  const std::vector<int32_t>* ints = nullptr;
+};
+
+struct DecodedStream {
+  o3dgc::DecodedMesh mesh;
+  std::vector<StreamAttribute> attributes;  // by stream attribute id
+};
+
+// The primitive's share of a stream: its vertices (stream indices) and its triangles (indices into
+// those vertices).
+struct Selection {
+  std::vector<uint32_t> vertices;  // empty = all of the stream's vertices, in order
+  std::vector<uint32_t> indices;
+  size_t vertex_count = 0;
+};
+
+class Inflater {
+ public:
+  Inflater(GltfDocument& doc, const std::string& name) : doc_(doc), json_(doc.json()), name_(name) {}
+
+  Status Run() {
+    if (!json_.contains("meshes") || !json_["meshes"].is_array()) return Finish();
+    nlohmann::json& meshes = json_["meshes"];
+    for (size_t m = 0; m < meshes.size(); ++m) {
+      if (!meshes[m].is_object() || !meshes[m].contains("primitives") || !meshes[m]["primitives"].is_array()) continue;
+      nlohmann::json& prims = meshes[m]["primitives"];
+      for (size_t p = 0; p < prims.size(); ++p) {
+        if (!prims[p].is_object() || !prims[p].contains("extensions") || !prims[p]["extensions"].is_object() ||
+            !prims[p]["extensions"].contains(kMeshCompressionExtension)) {
+          continue;
+        }
+        where_ = "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) + "]";
+        Status s = InflatePrimitive(prims[p]);
+        if (!s.ok()) return s;
+        prims[p]["extensions"].erase(kMeshCompressionExtension);
+        if (prims[p]["extensions"].empty()) prims[p].erase("extensions");
+      }
+    }
+    return Finish();
+  }
+
+ private:
+  Status Error(const std::string& what) const {
+    return Status(StatusCode::kParseError, name_ + ": " + where_ + ": " + kMeshCompressionExtension + ": " + what);
+  }
+
+  // An integer member in [0, limit), or -1.
+  static int64_t Index(const nlohmann::json& obj, const char* key, size_t limit) {
+    if (!obj.is_object() || !obj.contains(key) || !obj[key].is_number_integer()) return -1;
+    const int64_t v = obj[key].get<int64_t>();
+    return v >= 0 && static_cast<uint64_t>(v) < limit ? v : -1;
+  }
+
+  size_t ArraySize(const char* key) const { return json_.contains(key) && json_[key].is_array() ? json_[key].size() : 0; }
+
+  Result<const DecodedStream*> Stream(int64_t view) {
+    auto it = streams_.find(view);
+    if (it != streams_.end()) return static_cast<const DecodedStream*>(&it->second);
+    const nlohmann::json& v = json_["bufferViews"][view];
+    if (Index(v, "buffer", 1) != 0) return Error("stream bufferView is not on the GLB binary chunk");
+    const uint64_t offset = v.value("byteOffset", uint64_t(0));
+    const uint64_t length = v.value("byteLength", uint64_t(0));
+    const std::vector<uint8_t>& bin = doc_.binary();
+    if (offset > bin.size() || length > bin.size() - offset) return Error("stream bufferView lies outside the binary chunk");
+    DecodedStream d;
+    const o3dgc::Status st = o3dgc::Decode(bin.data() + offset, length, o3dgc::DecodeOptions(), &d.mesh);
+    if (st != o3dgc::Status::kOk) return Error(std::string("stream: ") + o3dgc::StatusName(st));
+    // The attribute table points into the map node, which stays put.
+    DecodedStream& s = streams_.emplace(view, std::move(d)).first->second;
+    s.attributes.push_back({3, &s.mesh.positions, nullptr});
+    if (!s.mesh.normals.empty()) s.attributes.push_back({3, &s.mesh.normals, nullptr});
+    for (const auto& a : s.mesh.float_attributes) s.attributes.push_back({a.dimension, &a.values, nullptr});
+    for (const auto& a : s.mesh.int_attributes) s.attributes.push_back({a.dimension, nullptr, &a.values});
+    return static_cast<const DecodedStream*>(&s);
+  }
+
+  Result<Selection> Select(const DecodedStream& s, const nlohmann::json& ext) {
+    Selection sel;
+    const o3dgc::DecodedMesh& m = s.mesh;
+    sel.vertex_count = m.num_vertices();
+    if (!ext.contains("group")) {
+      sel.indices = m.indices;
+      return sel;
+    }
+    if (!ext["group"].is_number_unsigned()) return Error("group must be a non-negative integer");
+    const uint64_t group = ext["group"].get<uint64_t>();
+    const bool compact = ext.value("compactVertices", false);
+    std::vector<uint32_t> remap;
+    if (compact) remap.assign(m.num_vertices(), UINT32_MAX);
+    for (size_t t = 0; t < m.num_triangles(); ++t) {
+      const uint32_t g = t < m.triangle_groups.size() ? m.triangle_groups[t] : 0;
+      if (g != group) continue;
+      for (int k = 0; k < 3; ++k) {
+        const uint32_t v = m.indices[t * 3 + k];
+        if (compact && remap[v] == UINT32_MAX) remap[v] = 0;
+        sel.indices.push_back(v);
+      }
+    }
+    if (compact) {
+      uint32_t next = 0;
+      for (uint32_t v = 0; v < remap.size(); ++v) {
+        if (remap[v] == UINT32_MAX) continue;
+        remap[v] = next++;
+        sel.vertices.push_back(v);
+      }
+      for (uint32_t& i : sel.indices) i = remap[i];
+      sel.vertex_count = sel.vertices.size();
+    }
+    return sel;
+  }
+
+  // Writes `count` x `dims` values, converted to the accessor's component type, into a new
+  // bufferView and points the accessor at it.
+  Status Fill(int64_t accessor_index, const Selection& sel, const StreamAttribute* attribute, bool is_indices) {
+    if (filled_.count(accessor_index)) return Status::Ok();  // shared by the mesh's primitives
+    nlohmann::json& acc = json_["accessors"][accessor_index];
+    const std::string type = acc.value("type", std::string());
+    const int dims = gltf::ComponentCount(type);
+    const int ctype = acc.value("componentType", 0);
+    const size_t csize = gltf::ComponentSize(ctype);
+    const bool normalized = acc.value("normalized", false);
+    const size_t count = is_indices ? sel.indices.size() : sel.vertex_count;
+    if (dims == 0 || csize == 0) return Error("accessors[" + std::to_string(accessor_index) + "] has a bad type");
+    if (!acc.contains("count") || !acc["count"].is_number_unsigned() || acc["count"].get<uint64_t>() != count) {
+      return Error("accessors[" + std::to_string(accessor_index) + "] count does not match the stream (" + std::to_string(count) + ")");
+    }
+    if (!is_indices && static_cast<uint32_t>(dims) != attribute->dimension) {
+      return Error("accessors[" + std::to_string(accessor_index) + "] is " + type + " but the stream attribute has " +
+                   std::to_string(attribute->dimension) + " components");
+    }
+    if (is_indices && dims != 1) return Error("index accessor must be SCALAR");
+    std::vector<uint8_t> bytes(count * dims * csize);
+    for (size_t i = 0; i < count; ++i) {
+      for (int c = 0; c < dims; ++c) {
+        double value;
+        if (is_indices) {
+          value = sel.indices[i];
+        } else {
+          const size_t v = sel.vertices.empty() ? i : sel.vertices[i];
+          const size_t at = v * attribute->dimension + c;
+          value = attribute->floats ? (*attribute->floats)[at] : (*attribute->ints)[at];
+        }
+        uint8_t* out = &bytes[(i * dims + c) * csize];
+        if (!Store(value, ctype, normalized, out)) {
+          return Error("accessors[" + std::to_string(accessor_index) + "]: value " + std::to_string(value) +
+                       " does not fit its component type");
+        }
+      }
+    }
+    const size_t alignment = csize < 4 ? 4 : csize;
+    acc["bufferView"] = doc_.AddBufferView(bytes, alignment);
+    acc["byteOffset"] = 0;
+    filled_.insert(accessor_index);
+    return Status::Ok();
+  }
+
+  static bool Store(double value, int ctype, bool normalized, uint8_t* out) {
+    if (!std::isfinite(value)) return false;
+    auto integer = [&](double lo, double hi, double scale) -> std::optional<int64_t> {
+      const double v = normalized ? std::round(value * scale) : value;
+      if (v < lo || v > hi || (!normalized && v != std::floor(v))) return std::nullopt;
+      return static_cast<int64_t>(v);
+    };
+    switch (ctype) {
+      case gltf::kFloat: {
+        const float f = static_cast<float>(value);
+        std::memcpy(out, &f, 4);
+        return true;
+      }
+      case gltf::kUnsignedInt: {
+        auto v = integer(0, 4294967295.0, 4294967295.0);
+        if (!v) return false;
+        const uint32_t u = static_cast<uint32_t>(*v);
+        std::memcpy(out, &u, 4);
+        return true;
+      }
+      case gltf::kUnsignedShort: {
+        auto v = integer(0, 65535, 65535);
+        if (!v) return false;
+        const uint16_t u = static_cast<uint16_t>(*v);
+        std::memcpy(out, &u, 2);
+        return true;
+      }
+      case gltf::kUnsignedByte: {
+        auto v = integer(0, 255, 255);
+        if (!v) return false;
+        *out = static_cast<uint8_t>(*v);
+        return true;
+      }
+      case gltf::kShort: {
+        auto v = integer(-32768, 32767, 32767);
+        if (!v) return false;
+        const int16_t s = static_cast<int16_t>(*v);
+        std::memcpy(out, &s, 2);
+        return true;
+      }
+      case gltf::kByte: {
+        auto v = integer(-128, 127, 127);
+        if (!v) return false;
+        const int8_t s = static_cast<int8_t>(*v);
+        std::memcpy(out, &s, 1);
+        return true;
+      }
+      default: return false;
+    }
+  }
+
+  Status InflatePrimitive(nlohmann::json& prim) {
+    const nlohmann::json& ext = prim["extensions"][kMeshCompressionExtension];
+    if (!ext.is_object()) return Error("not an object");
+    const int64_t view = Index(ext, "bufferView", ArraySize("bufferViews"));
+    if (view < 0) return Error("bufferView missing or out of range");
+    Result<const DecodedStream*> stream = Stream(view);
+    if (!stream.ok()) return stream.status();
+    Result<Selection> sel = Select(*stream.value(), ext);
+    if (!sel.ok()) return sel.status();
+    const size_t accessors = ArraySize("accessors");
+    if (!ext.contains("attributes") || !ext["attributes"].is_object()) return Error("attributes missing");
+    if (!prim.contains("attributes") || !prim["attributes"].is_object()) return Error("primitive has no attributes");
+    for (auto it = ext["attributes"].begin(); it != ext["attributes"].end(); ++it) {
+      const int64_t id = it.value().is_number_integer() ? it.value().get<int64_t>() : -1;
+      if (id < 0 || static_cast<size_t>(id) >= stream.value()->attributes.size()) {
+        return Error("attribute " + it.key() + " names stream attribute " + it.value().dump() + ", which the stream lacks");
+      }
+      const int64_t accessor = Index(prim["attributes"], it.key().c_str(), accessors);
+      if (accessor < 0) return Error("attribute " + it.key() + " has no accessor in the primitive");
+      Status s = Fill(accessor, sel.value(), &stream.value()->attributes[id], false);
+      if (!s.ok()) return s;
+    }
+    if (prim.contains("indices")) {
+      const int64_t accessor = Index(prim, "indices", accessors);
+      if (accessor < 0) return Error("indices accessor out of range");
+      Status s = Fill(accessor, sel.value(), nullptr, true);
+      if (!s.ok()) return s;
+    } else if (sel->indices.size() != sel->vertex_count || !sel->vertices.empty()) {
+      return Error("a non-indexed primitive cannot hold an indexed stream");
+    }
+    return Status::Ok();
+  }
+
+  Status Finish() {
+    for (const char* list : {"extensionsUsed", "extensionsRequired"}) {
+      if (!json_.contains(list) || !json_[list].is_array()) continue;
+      nlohmann::json kept = nlohmann::json::array();
+      for (const auto& e : json_[list]) {
+        if (!(e.is_string() && e.get<std::string>() == kMeshCompressionExtension)) kept.push_back(e);
+      }
+      if (kept.empty()) {
+        json_.erase(list);
+      } else {
+        json_[list] = std::move(kept);
+      }
+    }
+    if (streams_.empty()) return Status::Ok();
+    Status s = CompactBufferViews(doc_);
+    if (!s.ok()) return Status(s.code(), name_ + ": " + s.message());
+    return Status::Ok();
+  }
+
+  GltfDocument& doc_;
+  nlohmann::json& json_;
+  const std::string& name_;
+  std::string where_;
+  std::map<int64_t, DecodedStream> streams_;
+  std::set<int64_t> filled_;
+};
+
+}  // namespace
+
+Status InflatePackedDocument(GltfDocument& doc, const std::string& name) { return Inflater(doc, name).Run(); }
+
+Result<Scene> ReadPackedGltf(const uint8_t* data, size_t size, const std::string& name, const std::string& base_dir,
+                             GltfDocument* inflated) {
+  Result<GltfDocument> doc = DecodeGlbDocument(data, size, name);
+  if (!doc.ok()) return doc.status();
+  Status s = InflatePackedDocument(doc.value(), name);
+  if (!s.ok()) return s;
+  GltfReadOptions options;
+  options.base_dir = base_dir;
+  Result<Scene> scene = DecodeGltfDocument(doc.value(), name, options);
+  if (scene.ok() && inflated) *inflated = std::move(doc.value());
+  return scene;
+}
+
+}  // namespace hullpack
