@@ -1,7 +1,7 @@
 // Reading and writing whole scenes, dispatched by file extension (and, for reading, by content).
 //
-// Readers: OBJ (+MTL), OFF and VRML .wrl use the project's own parsers; glTF/GLB, FBX, DAE, PLY and
-// STL go through assimp. Every reader triangulates polygons, keeps what the scene model can hold and
+// Readers: OBJ (+MTL), OFF, VRML .wrl and glTF/GLB use the project's own parsers (GLB files packed by
+// `hullpack pack` are decoded on the way in); FBX, DAE, PLY and STL go through assimp. Every reader triangulates polygons, keeps what the scene model can hold and
 // lists in Scene::dropped what it could not keep. Errors name the file and the problem.
 //
 // Writers: .obj (one `o` group per mesh, `usemtl` per material id), .off, .wrl (one Shape per mesh),

@@ -48,7 +48,9 @@ TEST(SceneIo, FormatsThroughAssimp) {
     ASSERT_TRUE(out.ok()) << c.ext << ": " << out.status().ToString();
     EXPECT_EQ(out->triangle_count(), in.triangle_count()) << c.ext;
     // STL has no index buffer: the reader welds identical corners back into shared vertices.
-    if (std::string(c.ext) == "stl") EXPECT_EQ(out->meshes[0].vertex_count(), in.meshes[0].vertex_count());
+    if (std::string(c.ext) == "stl") {
+      EXPECT_EQ(out->meshes[0].vertex_count(), in.meshes[0].vertex_count());
+    }
   }
 }
 
@@ -94,7 +96,9 @@ TEST(SceneIo, EmptyRandomAndTruncatedFilesGiveErrorsInEveryFormat) {
       testing::WriteBytes(path, noise.data(), noise.size());
       r = ReadScene(path);
       EXPECT_FALSE(r.ok()) << c.ext << " random seed " << seed;
-      if (!r.ok()) EXPECT_EQ(r.status().message().rfind(path, 0), 0u) << r.status().message();
+      if (!r.ok()) {
+        EXPECT_EQ(r.status().message().rfind(path, 0), 0u) << r.status().message();
+      }
     }
     // Truncated to a third: every format either errors or, at worst, holds fewer triangles.
     testing::WriteBytes(path, c.valid.data(), c.valid.size() / 3);

@@ -1,0 +1,46 @@
+// Assembles the packed GLB (docs/packed-gltf.md): the plain glTF of the DECODED scene, each
+// primitive pointing at its compressed stream through HULLPACK_mesh_compression, collision hulls as
+// OMI_physics_shape convex shapes on collider child nodes (or the KHR_physics_rigid_bodies draft).
+// The mirror image is packed_glb_reader.h.
+#ifndef HULLPACK_TOOLS_PIPELINE_PACKED_GLB_WRITER_H_
+#define HULLPACK_TOOLS_PIPELINE_PACKED_GLB_WRITER_H_
+
+#include <cstdint>
+#include <vector>
+
+#include "common/status.h"
+#include "gltf/packed_glb_reader.h"
+#include "pipeline/mesh_codec.h"
+#include "scene/scene.h"
+
+namespace hullpack {
+
+enum class PhysicsForm { kOmi, kKhr };
+
+// Where each mesh of the decoded scene comes from.
+struct MeshSource {
+  int stream = -1;          // index into PackedStreams::streams
+  bool grouped = false;     // the stream has triangle groups: primitives select theirs
+  bool hull = false;        // a collision hull: group = hull_group, compactVertices
+  uint32_t hull_group = 0;
+};
+
+struct PackedStreams {
+  std::vector<EncodedMesh> streams;
+  std::vector<MeshSource> sources;        // one per decoded-scene mesh
+  std::vector<std::vector<int>> hulls_of; // per decoded-scene mesh: indices of its hull meshes
+};
+
+struct PackedGlbOptions {
+  bool fallback = false;  // also keep the decoded data as plain accessors
+  PhysicsForm physics = PhysicsForm::kOmi;
+};
+
+// `decoded` holds the render meshes as their streams decode (vertex and triangle order, values,
+// material ids = stream groups) followed by the hull meshes; no node shows a hull mesh.
+Result<std::vector<uint8_t>> WritePackedGlb(const Scene& decoded, const PackedStreams& streams,
+                                            const PackedGlbOptions& options);
+
+}  // namespace hullpack
+
+#endif  // HULLPACK_TOOLS_PIPELINE_PACKED_GLB_WRITER_H_
