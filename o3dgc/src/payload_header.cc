@@ -28,9 +28,9 @@ void EncodeDesc(ArithmeticEncoder* enc, const AttributeDesc& d, bool is_int) {
   if (is_int) return;
   enc->EncodeBits(uint32_t(d.bits - 1), 5);
   if (!HasQuantizer(d, is_int)) return;
-  enc->EncodeBits(uint32_t(d.range), 1);
+  enc->EncodeBits(uint32_t(d.range), 2);
   for (uint32_t c = 0; c < d.dimension; ++c) enc->EncodeBits(FloatBits(d.quant.min[c]), 32);
-  const uint32_t nr = d.range == RangeMode::kUniform ? 1 : d.dimension;
+  const uint32_t nr = d.range == RangeMode::kPerAxis ? d.dimension : 1;
   for (uint32_t c = 0; c < nr; ++c) enc->EncodeBits(FloatBits(d.quant.range[c]), 32);
 }
 
@@ -54,12 +54,14 @@ Status DecodeDesc(ArithmeticDecoder* dec, AttributeDesc* d, bool is_int) {
     return Status::kCorrupt;
   }
   if (!HasQuantizer(*d, is_int)) return Status::kOk;
-  d->range = RangeMode(dec->DecodeBits(1));
+  const uint32_t range_mode = dec->DecodeBits(2);
+  if (range_mode > uint32_t(RangeMode::kDiagonal)) return Status::kCorrupt;
+  d->range = RangeMode(range_mode);
   d->quant.dimension = d->dimension;
   d->quant.bits = d->bits;
   d->quant.mode = d->range;
   for (uint32_t c = 0; c < d->dimension; ++c) d->quant.min[c] = BitsFloat(dec->DecodeBits(32));
-  if (d->range == RangeMode::kUniform) {
+  if (d->range != RangeMode::kPerAxis) {
     const float r = BitsFloat(dec->DecodeBits(32));
     for (uint32_t c = 0; c < d->dimension; ++c) d->quant.range[c] = r;
   } else {

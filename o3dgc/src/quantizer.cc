@@ -18,13 +18,25 @@ void Quantizer::Fit(const float* data, size_t stride, size_t count) {
       if (i == 0 || v[c] > hi[c]) hi[c] = v[c];
     }
   }
-  double extent = 0;
+  double extent = 0, diagonal2 = 0;
   for (uint32_t c = 0; c < dimension; ++c) {
     min[c] = float(lo[c]);  // exact: lo is a float value
     if (hi[c] - lo[c] > extent) extent = hi[c] - lo[c];
+    diagonal2 += (hi[c] - lo[c]) * (hi[c] - lo[c]);
+  }
+  const double shared = mode == RangeMode::kDiagonal ? std::sqrt(diagonal2) : extent;
+  float shared_range = float(shared);
+  for (uint32_t c = 0; c < dimension; ++c) {
+    while (double(min[c]) + double(shared_range) < hi[c]) {
+      shared_range = std::nextafter(shared_range, INFINITY);
+    }
   }
   for (uint32_t c = 0; c < dimension; ++c) {
-    double e = mode == RangeMode::kUniform ? extent : hi[c] - lo[c];
+    if (mode != RangeMode::kPerAxis) {
+      range[c] = shared_range;
+      continue;
+    }
+    double e = hi[c] - lo[c];
     float r = float(e);
     // Round up so that every value lies within [min, min + range].
     while (double(min[c]) + double(r) < hi[c]) r = std::nextafter(r, INFINITY);

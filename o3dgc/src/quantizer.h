@@ -2,7 +2,8 @@
 //
 // A component x in [min, min + range] maps to q = round((x - min) / range * (2^bits - 1)); the
 // reconstruction min + q * range / (2^bits - 1) is within half a step of x. `range` is one value
-// for all components (RangeMode::kUniform, cubic cells) or one per component (kPerAxis).
+// for all components (RangeMode::kUniform: the largest extent, cubic cells; kDiagonal: the
+// bounding-box diagonal) or one per component (kPerAxis).
 #ifndef O3DGC_SRC_QUANTIZER_H_
 #define O3DGC_SRC_QUANTIZER_H_
 

@@ -17,13 +17,17 @@ TEST(Quantizer, HalfStepBoundAllBitDepths) {
   std::vector<float> v(3 * 500);
   for (auto& x : v) x = u(rng);
   for (int bits = 1; bits <= 30; ++bits) {
-    for (RangeMode mode : {RangeMode::kUniform, RangeMode::kPerAxis}) {
+    for (RangeMode mode : {RangeMode::kUniform, RangeMode::kPerAxis, RangeMode::kDiagonal}) {
       Quantizer q;
       q.dimension = 3;
       q.bits = bits;
       q.mode = mode;
       q.Fit(v.data(), 12, 500);
       ASSERT_TRUE(q.Valid());
+      if (mode != RangeMode::kPerAxis) {
+        EXPECT_EQ(q.range[0], q.range[1]);
+        EXPECT_EQ(q.range[1], q.range[2]);
+      }
       for (size_t i = 0; i < v.size(); ++i) {
         const uint32_t c = uint32_t(i % 3);
         const int32_t k = q.Quantize(v[i], c);

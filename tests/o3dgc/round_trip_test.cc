@@ -215,7 +215,7 @@ TEST(RoundTrip, FloatAttributeModesDimensionsAndRanges) {
   for (size_t i = 0; i < attr.size(); ++i) attr[i] = float(std::sin(double(i) * 0.37) * 100.0);
   for (uint32_t dim = 1; dim <= 4; ++dim) {
     for (Prediction pr : {Prediction::kNone, Prediction::kDifferential, Prediction::kParallelogram}) {
-      for (RangeMode rm : {RangeMode::kUniform, RangeMode::kPerAxis}) {
+      for (RangeMode rm : {RangeMode::kUniform, RangeMode::kPerAxis, RangeMode::kDiagonal}) {
         MeshView v = t.View();
         v.float_attributes.clear();
         FloatAttributeView a;
@@ -235,17 +235,20 @@ TEST(RoundTrip, FloatAttributeModesDimensionsAndRanges) {
         ASSERT_EQ(m.float_attributes.size(), 1u);
         ASSERT_EQ(m.float_attributes[0].dimension, dim);
         EXPECT_EQ(m.float_attributes[0].semantic, Semantic::kWeight);
-        double ext = 0;
+        double ext = 0, diag2 = 0;
         for (uint32_t k = 0; k < dim; ++k) {
           std::vector<float> c;
           for (size_t i = 0; i < t.nv(); ++i) c.push_back(attr[4 * i + k]);
           ext = std::max(ext, StepOf(c, 1, 0, 11));
+          diag2 += StepOf(c, 1, 0, 11) * StepOf(c, 1, 0, 11);
         }
         for (size_t i = 0; i < t.nv(); ++i) {
           for (uint32_t k = 0; k < dim; ++k) {
             std::vector<float> c;
             for (size_t j = 0; j < t.nv(); ++j) c.push_back(attr[4 * j + k]);
-            const double step = rm == RangeMode::kUniform ? ext : StepOf(c, 1, 0, 11);
+            const double step = rm == RangeMode::kUniform
+                                    ? ext
+                                    : (rm == RangeMode::kDiagonal ? std::sqrt(diag2) : StepOf(c, 1, 0, 11));
             EXPECT_LE(std::fabs(double(m.float_attributes[0].values[i * dim + k]) - attr[4 * i + k]),
                       step * 0.5 * (1 + 1e-6) + 1e-5);
           }

@@ -91,8 +91,9 @@ enum class Semantic : uint8_t {
 
 // How the quantization range of a float attribute is chosen.
 enum class RangeMode : uint8_t {
-  kUniform = 0,  // one range for all components (largest extent): cubic cells
-  kPerAxis = 1,  // one range per component
+  kUniform = 0,   // one range for all components (largest extent): cubic cells
+  kPerAxis = 1,   // one range per component
+  kDiagonal = 2,  // one range for all components: the length of the bounding-box diagonal
 };
 
 // A per-vertex float attribute: `dimension` floats per vertex, vertex i at
