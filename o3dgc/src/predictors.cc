@@ -29,60 +29,46 @@ void MeshAdjacency::Build(const std::vector<uint32_t>& triangles, uint32_t num_v
 
 PredictionContext PredictParallelogram(const MeshAdjacency& adj, uint32_t c, const int32_t* values,
                                        int dim, const uint32_t* magnitudes, int64_t* pred) {
-  int64_t par[4] = {0, 0, 0, 0}, nb[4] = {0, 0, 0, 0};
+  int64_t par[4] = {0, 0, 0, 0};
   constexpr int kMaxKept = 16;
   int64_t kept[kMaxKept][4];
-  int n_par = 0, n_nb = 0;
-  uint64_t mag = 0;
+  int n_par = 0;
   for (const uint32_t* it = adj.begin(c); it != adj.end(c); ++it) {
     const uint32_t t = *it;
     const uint32_t* v = adj.corners(t);
     const int j = v[0] == c ? 0 : (v[1] == c ? 1 : 2);
     const uint32_t u = v[(j + 1) % 3], w2 = v[(j + 2) % 3];
-    if (u < c) {
-      for (int k = 0; k < dim; ++k) nb[k] += values[size_t(u) * dim + k];
-      if (magnitudes) mag += magnitudes[u];
-      ++n_nb;
-    }
-    if (w2 < c) {
-      for (int k = 0; k < dim; ++k) nb[k] += values[size_t(w2) * dim + k];
-      if (magnitudes) mag += magnitudes[w2];
-      ++n_nb;
-    }
-    if (u < c && w2 < c) {
-      // The triangle across u-w2.
-      uint32_t x = 0xFFFFFFFFu;
-      if (adj.has_opposite()) {
-        x = adj.OppositeVertex(t, j);
-      } else {
-        for (const uint32_t* it2 = adj.begin(u); it2 != adj.end(u); ++it2) {
-          if (*it2 == t) continue;
-          const uint32_t* o = adj.corners(*it2);
-          int has = -1;
-          for (int q = 0; q < 3; ++q) {
-            if (o[q] == w2) has = q;
-          }
-          if (has < 0) continue;
-          const int iu = o[0] == u ? 0 : (o[1] == u ? 1 : 2);
-          if (o[3 - iu - has] >= c) continue;
-          x = o[3 - iu - has];
-          break;
+    if (u >= c || w2 >= c) continue;
+    // The triangle across u-w2.
+    uint32_t x = 0xFFFFFFFFu;
+    if (adj.has_opposite()) {
+      x = adj.OppositeVertex(t, j);
+    } else {
+      for (const uint32_t* it2 = adj.begin(u); it2 != adj.end(u); ++it2) {
+        if (*it2 == t) continue;
+        const uint32_t* o = adj.corners(*it2);
+        int has = -1;
+        for (int q = 0; q < 3; ++q) {
+          if (o[q] == w2) has = q;
         }
-      }
-      if (x < c) {
-        for (int k = 0; k < dim; ++k) {
-          const int64_t pk = int64_t(values[size_t(u) * dim + k]) + values[size_t(w2) * dim + k] -
-                             values[size_t(x) * dim + k];
-          par[k] += pk;
-          if (n_par < kMaxKept) kept[n_par][k] = pk;
-        }
-        ++n_par;
+        if (has < 0) continue;
+        const int iu = o[0] == u ? 0 : (o[1] == u ? 1 : 2);
+        if (o[3 - iu - has] >= c) continue;
+        x = o[3 - iu - has];
+        break;
       }
     }
+    if (x >= c) continue;
+    for (int k = 0; k < dim; ++k) {
+      const int64_t pk = int64_t(values[size_t(u) * dim + k]) + values[size_t(w2) * dim + k] -
+                         values[size_t(x) * dim + k];
+      par[k] += pk;
+      if (n_par < kMaxKept) kept[n_par][k] = pk;
+    }
+    ++n_par;
   }
   PredictionContext ctx;
-  ctx.neighbour_magnitude = n_nb ? mag / uint64_t(n_nb) : 0;
-  if (n_par > 0) {
+  if (n_par >= 2) {
     for (int k = 0; k < dim; ++k) pred[k] = DivRound(par[k], n_par);
     ctx.kind = kPredParallelogram;
     // Three or more parallelograms: the component-wise median is more robust than the mean.
@@ -90,28 +76,45 @@ PredictionContext PredictParallelogram(const MeshAdjacency& adj, uint32_t c, con
       for (int k = 0; k < dim; ++k) {
         int64_t col[kMaxKept];
         for (int i = 0; i < n_par; ++i) {  // insertion sort: n_par is small
-          int64_t x = kept[i][k];
-          int j = i;
-          for (; j > 0 && col[j - 1] > x; --j) col[j] = col[j - 1];
-          col[j] = x;
+          int64_t xv = kept[i][k];
+          int q = i;
+          for (; q > 0 && col[q - 1] > xv; --q) col[q] = col[q - 1];
+          col[q] = xv;
         }
         pred[k] = (n_par & 1) ? col[n_par / 2] : DivRound(col[n_par / 2 - 1] + col[n_par / 2], 2);
       }
     }
-    if (n_par >= 2) {
-      // The context is the disagreement between the parallelograms: twice the mean absolute
-      // deviation, summed over the components.
-      const int m = n_par < kMaxKept ? n_par : kMaxKept;
-      uint64_t dev = 0;
-      for (int i = 0; i < m; ++i) {
-        for (int k = 0; k < dim; ++k) {
-          const int64_t d = kept[i][k] - pred[k];
-          dev += uint64_t(d < 0 ? -d : d);
-        }
+    // The context is the disagreement between the parallelograms: twice the mean absolute
+    // deviation, summed over the components.
+    const int m = n_par < kMaxKept ? n_par : kMaxKept;
+    uint64_t dev = 0;
+    for (int i = 0; i < m; ++i) {
+      for (int k = 0; k < dim; ++k) {
+        const int64_t d = kept[i][k] - pred[k];
+        dev += uint64_t(d < 0 ? -d : d);
       }
-      dev = dev * 2 / uint64_t(m);
-      ctx.neighbour_magnitude = dev;
     }
+    ctx.neighbour_magnitude = dev * 2 / uint64_t(m);
+    return ctx;
+  }
+  // One parallelogram or none: the context (and the fallback) come from the decoded neighbours.
+  int64_t nb[4] = {0, 0, 0, 0};
+  int n_nb = 0;
+  uint64_t mag = 0;
+  for (const uint32_t* it = adj.begin(c); it != adj.end(c); ++it) {
+    const uint32_t* v = adj.corners(*it);
+    for (int q = 0; q < 3; ++q) {
+      const uint32_t u = v[q];
+      if (u >= c) continue;
+      for (int k = 0; k < dim; ++k) nb[k] += values[size_t(u) * dim + k];
+      if (magnitudes) mag += magnitudes[u];
+      ++n_nb;
+    }
+  }
+  ctx.neighbour_magnitude = n_nb ? mag / uint64_t(n_nb) : 0;
+  if (n_par == 1) {
+    for (int k = 0; k < dim; ++k) pred[k] = par[k];
+    ctx.kind = kPredParallelogram;
   } else if (n_nb > 0) {
     for (int k = 0; k < dim; ++k) pred[k] = DivRound(nb[k], n_nb);
     ctx.kind = kPredNeighbours;
