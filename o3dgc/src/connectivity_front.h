@@ -47,8 +47,7 @@ class Front {
     head_out_.reserve(vertices);
     head_in_.reserve(vertices);
     deg_.reserve(vertices);
-    gates_.reserve(triangles + 16);
-    open_.reserve(triangles + 16);
+    stack_.reserve(triangles + 16);
   }
   uint32_t AddVertex() {
     head_out_.push_back(-1);
@@ -58,11 +57,13 @@ class Front {
   }
   uint32_t num_vertices() const { return uint32_t(deg_.size()); }
   bool empty() const { return stack_.empty(); }
-  // Pops the next gate; returns -1 if it was closed meanwhile.
+  // Pops the next gate; returns -1 if it was closed meanwhile. Closed gates' slots are reused,
+  // so the gate storage stays as small (and as cache-resident) as the front; a stack entry is
+  // valid only while its slot's generation is unchanged.
   int32_t Pop() {
-    const int32_t g = stack_.back();
+    const StackEntry e = stack_.back();
     stack_.pop_back();
-    return open_[g] ? g : -1;  // a compact array: the popped gate is often cold
+    return (open_[e.gate] && generation_[e.gate] == e.generation) ? e.gate : -1;
   }
   const Gate& gate(int32_t g) const { return gates_[g]; }
 
@@ -85,6 +86,7 @@ class Front {
   void Close(int32_t g) {
     Gate& x = gates_[g];
     open_[g] = 0;
+    free_.push_back(g);
     if (x.prev_out >= 0) gates_[x.prev_out].next_out = x.next_out; else head_out_[x.a] = x.next_out;
     if (x.next_out >= 0) gates_[x.next_out].prev_out = x.prev_out;
     if (x.prev_in >= 0) gates_[x.prev_in].next_in = x.next_in; else head_in_[x.b] = x.next_in;
@@ -107,14 +109,24 @@ class Front {
         return;
       }
     }
-    const int32_t id = int32_t(gates_.size());
-    gates_.push_back(Gate{u, v, head_out_[u], -1, head_in_[v], -1, edge});
-    open_.push_back(1);
+    int32_t id;
+    if (free_.empty()) {
+      id = int32_t(gates_.size());
+      gates_.emplace_back();
+      open_.push_back(0);
+      generation_.push_back(0);
+    } else {
+      id = free_.back();
+      free_.pop_back();
+      ++generation_[id];
+    }
+    gates_[id] = Gate{u, v, head_out_[u], -1, head_in_[v], -1, edge};
+    open_[id] = 1;
     if (head_out_[u] >= 0) gates_[head_out_[u]].prev_out = id;
     head_out_[u] = id;
     if (head_in_[v] >= 0) gates_[head_in_[v]].prev_in = id;
     head_in_[v] = id;
-    stack_.push_back(id);
+    stack_.push_back(StackEntry{id, generation_[id]});
   }
 
   // Triangle `tri` = (x, y, z) starts a new part.
@@ -152,12 +164,18 @@ class Front {
     opp_[3 * size_t(e2 / 4) + e2 % 4] = e1;
   }
 
+  struct StackEntry {
+    int32_t gate;
+    uint32_t generation;
+  };
   std::vector<Gate> gates_;
   std::vector<uint8_t> open_;
+  std::vector<uint32_t> generation_;
+  std::vector<int32_t> free_;
   std::vector<uint32_t> opp_;
   std::vector<int32_t> head_out_, head_in_;
   std::vector<uint32_t> deg_;
-  std::vector<int32_t> stack_;
+  std::vector<StackEntry> stack_;
 };
 
 }  // namespace o3dgc
