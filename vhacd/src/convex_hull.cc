@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <unordered_map>
+#include <cstdint>
 
 namespace vhacd {
 namespace internal {
@@ -45,7 +45,9 @@ class QuickHull {
     }
     std::vector<int32_t> visible;
     std::vector<std::pair<int32_t, int>> horizon;
-    std::unordered_map<uint32_t, int32_t> start_at;
+    // start_at[v]: the new face whose horizon edge starts at v (valid when stamp_at[v] == stamp).
+    std::vector<int32_t> start_at(p_.size(), -1);
+    std::vector<uint32_t> stamp_at(p_.size(), 0);
     std::vector<uint32_t> orphans;
     uint32_t stamp = 0;
     for (size_t fi = 0; fi < faces_.size(); ++fi) {
@@ -84,7 +86,6 @@ class QuickHull {
         }
       }
       // New faces over the horizon.
-      start_at.clear();
       const size_t first_new = faces_.size();
       for (const auto& he : horizon) {
         const Face& f = faces_[he.first];
@@ -97,13 +98,15 @@ class QuickHull {
         while (k < 3 && !(fg.v[k] == vb && fg.v[(k + 1) % 3] == va)) ++k;
         if (k == 3) return Attempt::kRetry;
         fg.nb[k] = nf;
-        if (!start_at.emplace(va, nf).second) return Attempt::kRetry;
+        if (stamp_at[va] == stamp) return Attempt::kRetry;  // the horizon is not a simple loop
+        stamp_at[va] = stamp;
+        start_at[va] = nf;
       }
       for (size_t nf = first_new; nf < faces_.size(); ++nf) {
-        auto it = start_at.find(faces_[nf].v[1]);
-        if (it == start_at.end()) return Attempt::kRetry;
-        faces_[nf].nb[1] = it->second;
-        faces_[it->second].nb[2] = static_cast<int32_t>(nf);
+        const uint32_t vb = faces_[nf].v[1];
+        if (stamp_at[vb] != stamp) return Attempt::kRetry;
+        faces_[nf].nb[1] = start_at[vb];
+        faces_[start_at[vb]].nb[2] = static_cast<int32_t>(nf);
       }
       // Redistribute the outside points of the visible faces.
       orphans.clear();
@@ -119,17 +122,16 @@ class QuickHull {
     // Compact.
     out->vertices.clear();
     out->triangles.clear();
-    std::unordered_map<uint32_t, uint32_t> remap;
+    std::vector<uint32_t> remap(p_.size(), UINT32_MAX);
     for (const Face& f : faces_) {
       if (!f.alive) continue;
       std::array<uint32_t, 3> t;
       for (int i = 0; i < 3; ++i) {
-        auto it = remap.find(f.v[i]);
-        if (it == remap.end()) {
-          it = remap.emplace(f.v[i], static_cast<uint32_t>(out->vertices.size())).first;
+        if (remap[f.v[i]] == UINT32_MAX) {
+          remap[f.v[i]] = static_cast<uint32_t>(out->vertices.size());
           out->vertices.push_back(p_[f.v[i]]);
         }
-        t[i] = it->second;
+        t[i] = remap[f.v[i]];
       }
       out->triangles.push_back(t);
     }

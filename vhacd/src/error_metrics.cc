@@ -159,7 +159,7 @@ bool ComputeErrorReport(const MetricsInput& in, Context* ctx, Report* report) {
     for (int z = lo[2]; z <= hi[2]; ++z)
       for (int y = lo[1]; y <= hi[1]; ++y)
         for (int x = lo[0]; x <= hi[0]; ++x)
-          if (planes[h].SignedDistanceBound(Vec3(x + 0.5, y + 0.5, z + 0.5)) <= 0) {
+          if (planes[h].Contains(Vec3(x + 0.5, y + 0.5, z + 0.5), 1e-12)) {
             const size_t i = grid.Index(x, y, z);
             in_hull[i] = 1;
             if (!grid.CenterInside(i)) ++empty_inside[h];

@@ -37,6 +37,51 @@ inline void AddFace(int axis, int along, int u, int v, std::vector<Vec3>* out, i
   out->push_back(MakePoint(axis, along, u, v + width));
   out->push_back(MakePoint(axis, along, u + width, v + width));
 }
+// The corners of the line faces, keyed by their (u, v) grid position: only the lowest and the
+// highest face along the axis at each position can be a hull vertex, so each position yields at
+// most two points (instead of up to eight from the four lines sharing it).
+class CornerSet {
+ public:
+  CornerSet(int axis, int umin, int umax, int vmin, int vmax, int step) : axis_(axis), step_(step) {
+    u0_ = umin - ((umin % step) + step) % step;
+    v0_ = vmin - ((vmin % step) + step) % step;
+    nu_ = (umax - u0_) / step + 2;
+    nv_ = (vmax - v0_) / step + 2;
+    const size_t n = static_cast<size_t>(nu_) * nv_;
+    thread_local std::vector<int> lo_buf, hi_buf;
+    lo_buf.assign(n, kNone);
+    hi_buf.assign(n, -kNone);
+    lo_ = lo_buf.data();
+    hi_ = hi_buf.data();
+  }
+  // A line at (u, v) whose faces are at `lo` and `hi` along the axis.
+  void Add(int u, int v, int lo, int hi) {
+    const int iu = (u - u0_) / step_, iv = (v - v0_) / step_;
+    for (int dv = 0; dv < 2; ++dv)
+      for (int du = 0; du < 2; ++du) {
+        const size_t k = static_cast<size_t>(iv + dv) * nu_ + iu + du;
+        lo_[k] = std::min(lo_[k], lo);
+        hi_[k] = std::max(hi_[k], hi);
+      }
+  }
+  void Emit(std::vector<Vec3>* out) const {
+    for (int iv = 0; iv < nv_; ++iv)
+      for (int iu = 0; iu < nu_; ++iu) {
+        const size_t k = static_cast<size_t>(iv) * nu_ + iu;
+        if (lo_[k] == kNone) continue;
+        const double u = u0_ + iu * step_, v = v0_ + iv * step_;
+        out->push_back(MakePoint(axis_, lo_[k], u, v));
+        if (hi_[k] != lo_[k]) out->push_back(MakePoint(axis_, hi_[k], u, v));
+      }
+  }
+
+ private:
+  static constexpr int kNone = 1 << 30;
+  int axis_, step_, u0_, v0_, nu_, nv_;
+  int* lo_;
+  int* hi_;
+};
+
 }  // namespace
 
 AxisLines BuildAxisLines(const Part& part, int axis) {
@@ -58,6 +103,10 @@ AxisLines BuildAxisLines(const Part& part, int axis) {
     L.coords[i] = static_cast<uint16_t>(keys[i] & 0xffff);
   }
   L.start.push_back(static_cast<uint32_t>(keys.size()));
+  L.umin = part.bmin[(axis + 1) % 3];
+  L.umax = part.bmax[(axis + 1) % 3];
+  L.vmin = part.bmin[(axis + 2) % 3];
+  L.vmax = part.bmax[(axis + 2) % 3];
   const int lo = part.bmin[axis], hi = part.bmax[axis];
   L.slice_count.assign(hi >= lo ? hi - lo + 1 : 0, 0);
   for (const Voxel& v : part.voxels) ++L.slice_count[v.c[axis] - lo];
@@ -69,6 +118,7 @@ void SideHullPoints(const AxisLines& L, int c, bool left, int downsample, std::v
   out->clear();
   double count = 0.0;
   const int ds = std::max(1, downsample);
+  CornerSet corners(L.axis, L.umin, L.umax, L.vmin, L.vmax, ds);
   for (size_t l = 0; l < L.line_count(); ++l) {
     if (ds > 1 && (L.lu[l] % ds != 0 || L.lv[l] % ds != 0)) continue;
     const uint16_t* b = L.coords.data() + L.start[l];
@@ -84,10 +134,10 @@ void SideHullPoints(const AxisLines& L, int c, bool left, int downsample, std::v
       lo = *split;
       hi = *(e - 1);
     }
-    AddFace(L.axis, lo, L.lu[l], L.lv[l], out, ds);
-    AddFace(L.axis, hi + 1, L.lu[l], L.lv[l], out, ds);
+    corners.Add(L.lu[l], L.lv[l], lo, hi + 1);
     count += left ? static_cast<double>(split - b) : static_cast<double>(e - split);
   }
+  corners.Emit(out);
   if (volume != nullptr) *volume = count * ds * ds;
 }
 
@@ -97,15 +147,17 @@ void PartHullPoints(const Part& part, bool interior_only, std::vector<Vec3>* out
   keys.reserve(part.voxels.size());
   for (const Voxel& v : part.voxels)
     if (!interior_only || !v.surface) keys.push_back(LineKey(v, 0));
+  if (keys.empty()) return;
   std::sort(keys.begin(), keys.end());
+  CornerSet corners(0, part.bmin[1], part.bmax[1], part.bmin[2], part.bmax[2], 1);
   for (size_t i = 0; i < keys.size();) {
     size_t j = i;
     while (j + 1 < keys.size() && (keys[j + 1] >> 16) == (keys[i] >> 16)) ++j;
     const int u = static_cast<int>((keys[i] >> 16) & 0xffff), v = static_cast<int>(keys[i] >> 32);
-    AddFace(0, static_cast<int>(keys[i] & 0xffff), u, v, out);
-    AddFace(0, static_cast<int>(keys[j] & 0xffff) + 1, u, v, out);
+    corners.Add(u, v, static_cast<int>(keys[i] & 0xffff), static_cast<int>(keys[j] & 0xffff) + 1);
     i = j + 1;
   }
+  corners.Emit(out);
 }
 
 double ExactHullVolume(const std::vector<Vec3>& points) {

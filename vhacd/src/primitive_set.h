@@ -34,6 +34,7 @@ struct AxisLines {
   std::vector<uint16_t> coords;    // sorted coordinates along `axis`
   std::vector<uint16_t> lu, lv;    // the line's coordinates on the two other axes
   std::vector<uint32_t> slice_count;  // voxels per slice, from bmin[axis] to bmax[axis]
+  int umin = 0, umax = 0, vmin = 0, vmax = 0;  // bounds of lu and lv
 
   size_t line_count() const { return lu.size(); }
 };
