@@ -112,7 +112,8 @@ Status DecodeOctNormals(ArithmeticDecoder* dec, const MeshAdjacency& adj, const 
     int64_t r[2];
     int32_t qa[2];
     for (int k = 0; k < 2; ++k) {
-      r[k] = DecodeSigned(*dec, models->m[k][0][mctx][0]);
+      const int intra = (k && n >= kSmallMesh) ? IntraContext(r[0]) : 0;
+      r[k] = DecodeSigned(*dec, models->m[k][0][mctx][intra]);
       const int64_t v = qp[k] + r[k];
       if (v < 0 || v > int64_t(maxq)) return Status::kCorrupt;
       qa[k] = int32_t(v);

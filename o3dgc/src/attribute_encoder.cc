@@ -154,7 +154,8 @@ void EncodeOctNormals(ArithmeticEncoder* enc, const MeshAdjacency& adj, const No
     int64_t r[2];
     for (int k = 0; k < 2; ++k) {
       r[k] = int64_t(qa[k]) - qp[k];
-      EncodeSigned(*enc, models->m[k][0][mctx][0], r[k]);
+      const int intra = (k && n >= kSmallMesh) ? IntraContext(r[0]) : 0;
+      EncodeSigned(*enc, models->m[k][0][mctx][intra], r[k]);
     }
     mags[c] = SaturatingMagnitude(r, 2);
   }
