@@ -69,6 +69,10 @@ Status CompactBufferViews(GltfDocument& doc) {
     views = std::move(kept);
   }
   doc.binary() = std::move(packed);
+  // Readers check views against the declared length, so it must follow the repacked chunk.
+  if (json.contains("buffers") && json["buffers"].is_array() && !json["buffers"].empty() && json["buffers"][0].is_object()) {
+    json["buffers"][0]["byteLength"] = doc.binary().size();
+  }
   return Status::Ok();
 }
 

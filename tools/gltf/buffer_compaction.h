@@ -2,7 +2,7 @@
 // at an offset aligned as before (4 bytes, or more when the original offset was more aligned).
 // A reference is any JSON member named "bufferView" whose value is an integer, wherever it sits
 // (accessors, images, sparse accessors, extensions such as HULLPACK_mesh_compression), so views
-// named by extensions stay.
+// named by extensions stay. buffers[0].byteLength follows the new chunk size.
 #ifndef HULLPACK_TOOLS_GLTF_BUFFER_COMPACTION_H_
 #define HULLPACK_TOOLS_GLTF_BUFFER_COMPACTION_H_
 

@@ -167,7 +167,7 @@ class Inflater {
       }
     }
     const size_t alignment = csize < 4 ? 4 : csize;
-    acc["bufferView"] = doc_.AddBufferView(bytes, alignment);
+    acc["bufferView"] = doc_.AddBufferView(bytes, alignment, is_indices ? gltf::kElementArrayBuffer : gltf::kArrayBuffer);
     acc["byteOffset"] = 0;
     filled_.insert(accessor_index);
     return Status::Ok();

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "common/file_util.h"
+#include "hullpack/cli_util.h"
 #include "hullpack/scene_summary.h"
 #include "io/scene_io.h"
 #include "mesh/validate.h"
@@ -18,17 +19,17 @@ int RunInfoCommand(const std::vector<std::string>& args) {
       json = true;
     } else if (!a.empty() && a[0] == '-') {
       std::fprintf(stderr, "hullpack info: unknown option '%s'\n", a.c_str());
-      return 2;
+      return kExitUsage;
     } else if (path.empty()) {
       path = a;
     } else {
       std::fprintf(stderr, "hullpack info: one file at a time ('%s' and '%s')\n", path.c_str(), a.c_str());
-      return 2;
+      return kExitUsage;
     }
   }
   if (path.empty()) {
     std::fprintf(stderr, "usage: hullpack info FILE [--json]\n");
-    return 2;
+    return kExitUsage;
   }
   Result<Scene> scene = ReadScene(path);
   if (!scene.ok()) {

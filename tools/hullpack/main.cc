@@ -4,7 +4,10 @@
 #include <string>
 #include <vector>
 
+#include "hullpack/cli_util.h"
 #include "hullpack/info_command.h"
+#include "hullpack/pack_command.h"
+#include "hullpack/unpack_command.h"
 
 namespace {
 
@@ -12,6 +15,8 @@ void PrintUsage(FILE* out) {
   std::fprintf(out,
                "usage: hullpack COMMAND [options]\n"
                "commands:\n"
+               "  pack IN... -o OUT    compressed meshes + convex collision hulls in one GLB per input\n"
+               "  unpack IN.glb -o OUT decode a packed GLB back to plain glTF, OBJ, ...\n"
                "  info FILE [--json]   counts, attributes, bounds and topology of a mesh or scene file\n"
                "run 'hullpack COMMAND --help' for a command's options\n");
 }
@@ -21,12 +26,14 @@ void PrintUsage(FILE* out) {
 int main(int argc, char** argv) {
   if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
     PrintUsage(argc < 2 ? stderr : stdout);
-    return argc < 2 ? 2 : 0;
+    return argc < 2 ? hullpack::kExitUsage : 0;
   }
   const std::string command = argv[1];
   const std::vector<std::string> args(argv + 2, argv + argc);
   if (command == "info") return hullpack::RunInfoCommand(args);
+  if (command == "pack") return hullpack::RunPackCommand(args);
+  if (command == "unpack") return hullpack::RunUnpackCommand(args);
   std::fprintf(stderr, "hullpack: unknown command '%s'\n", command.c_str());
   PrintUsage(stderr);
-  return 2;
+  return hullpack::kExitUsage;
 }

@@ -35,7 +35,7 @@ check() {  # check NAME EXPECTED_EXIT STDERR_PATTERN -- command...
 
 check sample 0 "closed, manifold, 1 component, genus 1" -- "$bin" info "$src/samples/torus.obj"
 check sample-json 0 '"genus": 1' -- "$bin" info --json "$src/samples/torus.obj"
-check no-args 2 "usage" -- "$bin" info
+check no-args 64 "usage" -- "$bin" info
 check missing 1 "$tmp/missing.obj: No such file" -- "$bin" info "$tmp/missing.obj"
 touch "$tmp/model.xyz"
 check unknown-format 1 "$tmp/model.xyz: unknown format '.xyz'" -- "$bin" info "$tmp/model.xyz"
