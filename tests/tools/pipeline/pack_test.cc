@@ -1,0 +1,266 @@
+// PackScene end to end on generated scenes: unpack(pack(x)) against x.
+#include "pipeline/pack.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "gltf/glb_reader.h"
+#include "gltf/packed_glb_reader.h"
+#include "mesh/topology.h"
+
+namespace hullpack {
+namespace {
+
+Mesh Torus(int rings, int sides, float cx) {
+  Mesh m;
+  m.name = "torus";
+  const double pi = 3.14159265358979323846;
+  for (int i = 0; i < rings; ++i) {
+    for (int j = 0; j < sides; ++j) {
+      const double u = 2 * pi * i / rings, v = 2 * pi * j / sides;
+      m.positions.insert(m.positions.end(), {float(cx + (1 + 0.3 * std::cos(v)) * std::cos(u)),
+                                             float((1 + 0.3 * std::cos(v)) * std::sin(u)), float(0.3 * std::sin(v))});
+      m.normals.insert(m.normals.end(), {float(std::cos(v) * std::cos(u)), float(std::cos(v) * std::sin(u)), float(std::sin(v))});
+    }
+  }
+  for (int i = 0; i < rings; ++i) {
+    for (int j = 0; j < sides; ++j) {
+      const uint32_t a = i * sides + j, b = ((i + 1) % rings) * sides + j,
+                     c = ((i + 1) % rings) * sides + (j + 1) % sides, d = i * sides + (j + 1) % sides;
+      m.indices.insert(m.indices.end(), {a, b, c, a, c, d});
+    }
+  }
+  return m;
+}
+
+// A textured two-material torus under a transformed parent, and a skinned torus.
+Scene TestScene() {
+  Scene s;
+  Mesh textured = Torus(32, 12, 0);
+  textured.name = "wheel";
+  textured.uv_sets.emplace_back();
+  for (size_t v = 0; v < textured.vertex_count(); ++v) {
+    textured.uv_sets[0].insert(textured.uv_sets[0].end(), {float(v % 32) / 32, float(v / 32) / 12});
+  }
+  for (size_t t = 0; t < textured.triangle_count(); ++t) textured.material_ids.push_back(t % 7 == 0 ? 1 : 0);
+  Mesh skinned = Torus(16, 8, 4);
+  skinned.name = "arm";
+  for (size_t v = 0; v < skinned.vertex_count(); ++v) {
+    skinned.joints.insert(skinned.joints.end(), {uint16_t(v % 2), uint16_t(1 - v % 2), 0, 0});
+    skinned.weights.insert(skinned.weights.end(), {0.75f, 0.25f, 0, 0});
+  }
+  s.meshes = {textured, skinned};
+  s.images.resize(1);
+  s.images[0].name = "checker";
+  s.images[0].mime_type = "image/png";
+  s.images[0].bytes = {0x89, 'P', 'N', 'G', 13, 10, 26, 10};
+  s.materials.resize(2);
+  s.materials[0].name = "rubber";
+  s.materials[0].base_color_texture.image = 0;
+  s.materials[1].name = "rim";
+  Node root, wheel, arm, bone0, bone1;
+  root.name = "root";
+  root.local_transform[12] = 10;  // translate x
+  root.children = {1, 2};
+  wheel.name = "wheel";
+  wheel.parent = 0;
+  wheel.meshes = {0};
+  arm.name = "arm";
+  arm.parent = 0;
+  arm.meshes = {1};
+  arm.skin = 0;
+  arm.children = {3, 4};
+  bone0.name = "bone0";
+  bone0.parent = 2;
+  bone1.name = "bone1";
+  bone1.parent = 2;
+  s.nodes = {root, wheel, arm, bone0, bone1};
+  Skin skin;
+  skin.joints = {3, 4};
+  for (int j = 0; j < 2; ++j) skin.inverse_bind_matrices.insert(skin.inverse_bind_matrices.end(), kIdentity.begin(), kIdentity.end());
+  s.skins = {skin};
+  return s;
+}
+
+PackOptions FastOptions() {
+  PackOptions o;
+  o.collision.parameters.resolution = 20000;
+  return o;
+}
+
+// Index of the vertex of `m` nearest to `p`.
+size_t Nearest(const Mesh& m, const float* p) {
+  size_t best = 0;
+  double best_d = 1e300;
+  for (size_t i = 0; i < m.vertex_count(); ++i) {
+    double d = 0;
+    for (int k = 0; k < 3; ++k) d += (double(m.positions[i * 3 + k]) - p[k]) * (double(m.positions[i * 3 + k]) - p[k]);
+    if (d < best_d) best_d = d, best = i;
+  }
+  return best;
+}
+
+TEST(Pack, RoundTripKeepsGeometryWithinTheBudgetMaterialsSkinAndHierarchy) {
+  const Scene in = TestScene();
+  const PackOptions options = FastOptions();
+  Result<PackResult> packed = PackScene(in, options);
+  ASSERT_TRUE(packed.ok()) << packed.status().ToString();
+  const PackReport& r = packed->report;
+  ASSERT_EQ(r.meshes.size(), 2u);
+  EXPECT_GT(r.meshes[0].hull_count, 1u);                    // the wheel collides
+  EXPECT_EQ(r.meshes[1].hull_count, 0u);                    // the skinned arm does not, under auto
+  EXPECT_NE(r.meshes[1].no_hulls_reason.find("skinned"), std::string::npos);
+  for (const MeshPackReport& m : r.meshes) {
+    EXPECT_LE(m.max_error_fraction, options.max_error) << m.name;
+    EXPECT_LT(m.bytes_after, m.bytes_before / 4) << m.name;
+  }
+
+  GltfDocument doc;
+  Result<Scene> out = ReadPackedGltf(packed->glb.data(), packed->glb.size(), "packed.glb", "", &doc);
+  ASSERT_TRUE(out.ok()) << out.status().ToString();
+  ASSERT_EQ(out->meshes.size(), 2 + r.meshes[0].hull_count);
+  for (size_t i = 0; i < 2; ++i) {
+    const Mesh& a = in.meshes[i];
+    const Mesh& b = out->meshes[i];
+    EXPECT_EQ(b.triangle_count(), a.triangle_count());
+    EXPECT_EQ(b.vertex_count(), a.vertex_count());
+    double worst = 0;
+    for (size_t v = 0; v < b.vertex_count(); ++v) {
+      const size_t o = Nearest(a, &b.positions[v * 3]);
+      double d = 0;
+      for (int k = 0; k < 3; ++k) d += std::pow(double(b.positions[v * 3 + k]) - a.positions[o * 3 + k], 2);
+      worst = std::max(worst, std::sqrt(d));
+      if (!a.joints.empty()) {  // skin data travels with its vertex, exactly for joints
+        for (int k = 0; k < 4; ++k) {
+          EXPECT_EQ(b.joints[v * 4 + k], a.joints[o * 4 + k]);
+          EXPECT_NEAR(b.weights[v * 4 + k], a.weights[o * 4 + k], 1.0 / 1023);
+        }
+      }
+    }
+    const double diagonal = std::sqrt(2 * 2.6 * 2.6 + 0.6 * 0.6);
+    EXPECT_LE(worst, options.max_error * diagonal * 1.0001) << a.name;
+  }
+  // Materials per triangle: the same counts.
+  std::map<std::string, size_t> before, after;
+  for (uint32_t id : in.meshes[0].material_ids) ++before[in.materials[id].name];
+  for (uint32_t id : out->meshes[0].material_ids) ++after[out->materials[id].name];
+  EXPECT_EQ(before, after);
+  ASSERT_EQ(out->images.size(), 1u);
+  EXPECT_EQ(out->images[0].bytes, in.images[0].bytes);
+  ASSERT_EQ(out->skins.size(), 1u);
+  EXPECT_EQ(out->nodes[0].local_transform[12], 10);
+
+  // Colliders: OMI shapes, one per hull, each a convex mesh, on children of the wheel's node.
+  const nlohmann::json& json = doc.json();
+  ASSERT_TRUE(json.contains("extensions"));
+  const nlohmann::json& shapes = json["extensions"]["OMI_physics_shape"]["shapes"];
+  ASSERT_EQ(shapes.size(), r.meshes[0].hull_count);
+  size_t colliders = 0;
+  for (int child : json["nodes"][1]["children"]) {
+    const int shape = json["nodes"][child]["extensions"]["OMI_physics_body"]["collider"]["shape"];
+    EXPECT_EQ(shapes[shape]["type"], "convex");
+    const int mesh = shapes[shape]["convex"]["mesh"];
+    EXPECT_TRUE(AnalyzeTopology(out->meshes[mesh]).closed);
+    ++colliders;
+  }
+  EXPECT_EQ(colliders, r.meshes[0].hull_count);
+}
+
+TEST(Pack, WithoutFallbackTheExtensionIsRequiredAndAccessorsHoldNoData) {
+  PackOptions options = FastOptions();
+  options.collision.policy = HullPolicy::kNone;
+  Result<PackResult> packed = PackScene(TestScene(), options);
+  ASSERT_TRUE(packed.ok());
+  Result<GltfDocument> doc = DecodeGlbDocument(packed->glb.data(), packed->glb.size(), "p.glb");
+  ASSERT_TRUE(doc.ok());
+  EXPECT_EQ(doc->json()["extensionsRequired"], nlohmann::json::array({kMeshCompressionExtension}));
+  for (const auto& accessor : doc->json()["accessors"]) {
+    if (accessor.value("type", "") != "MAT4") {  // inverse bind matrices are not mesh data
+      EXPECT_FALSE(accessor.contains("bufferView"));
+    }
+  }
+  // A plain reader cannot read it: the extension is required.
+  EXPECT_FALSE(DecodeGltfDocument(doc.value(), "p.glb").ok());
+}
+
+TEST(Pack, FallbackFilesReadWithoutTheExtension) {
+  PackOptions options = FastOptions();
+  options.glb.fallback = true;
+  options.collision.policy = HullPolicy::kNone;
+  Result<PackResult> packed = PackScene(TestScene(), options);
+  ASSERT_TRUE(packed.ok());
+  Result<GltfDocument> doc = DecodeGlbDocument(packed->glb.data(), packed->glb.size(), "p.glb");
+  ASSERT_TRUE(doc.ok());
+  EXPECT_FALSE(doc->json().contains("extensionsRequired"));
+  // The plain reader ignores the extension and reads the fallback: the decoded data.
+  Result<Scene> plain = DecodeGltfDocument(doc.value(), "p.glb");
+  ASSERT_TRUE(plain.ok()) << plain.status().ToString();
+  Result<Scene> decoded = ReadPackedGltf(packed->glb.data(), packed->glb.size(), "p.glb", "", nullptr);
+  ASSERT_TRUE(decoded.ok());
+  EXPECT_EQ(plain->meshes[0].positions, decoded->meshes[0].positions);
+  EXPECT_EQ(plain->meshes[0].indices, decoded->meshes[0].indices);
+}
+
+TEST(Pack, KhrPhysicsForm) {
+  PackOptions options = FastOptions();
+  options.glb.physics = PhysicsForm::kKhr;
+  Result<PackResult> packed = PackScene(TestScene(), options);
+  ASSERT_TRUE(packed.ok());
+  Result<GltfDocument> doc = DecodeGlbDocument(packed->glb.data(), packed->glb.size(), "p.glb");
+  ASSERT_TRUE(doc.ok());
+  const nlohmann::json& json = doc->json();
+  EXPECT_FALSE(json.contains("extensions") && json["extensions"].contains("OMI_physics_shape"));
+  const int child = json["nodes"][1]["children"][0];
+  const nlohmann::json& geometry = json["nodes"][child]["extensions"]["KHR_physics_rigid_bodies"]["collider"]["geometry"];
+  EXPECT_TRUE(geometry["convexHull"].get<bool>());
+  EXPECT_GE(geometry["mesh"].get<int>(), 2);
+}
+
+TEST(Pack, KeepOrderAndExplicitBits) {
+  PackOptions options = FastOptions();
+  options.keep_order = true;
+  options.position_bits = 16;
+  options.collision.policy = HullPolicy::kNone;
+  const Scene in = TestScene();
+  Result<PackResult> packed = PackScene(in, options);
+  ASSERT_TRUE(packed.ok());
+  EXPECT_EQ(packed->report.meshes[0].position_bits, 16);
+  Result<Scene> out = ReadPackedGltf(packed->glb.data(), packed->glb.size(), "p.glb", "", nullptr);
+  ASSERT_TRUE(out.ok());
+  // Order kept: the same index buffer, primitive after primitive (material 0 then 1).
+  std::vector<uint32_t> expected;
+  for (uint32_t m : {0u, 1u}) {
+    for (size_t t = 0; t < in.meshes[0].triangle_count(); ++t) {
+      if (in.meshes[0].material_ids[t] != m) continue;
+      expected.insert(expected.end(), in.meshes[0].indices.begin() + t * 3, in.meshes[0].indices.begin() + t * 3 + 3);
+    }
+  }
+  EXPECT_EQ(out->meshes[0].indices, expected);
+  EXPECT_EQ(out->meshes[1].joints, in.meshes[1].joints);
+}
+
+TEST(Pack, InvalidMeshesAreErrors) {
+  Scene s = TestScene();
+  s.meshes[0].positions[4] = std::nanf("");
+  Result<PackResult> r = PackScene(s, FastOptions());
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.status().code(), StatusCode::kInvalidMesh);
+  PackOptions bad = FastOptions();
+  bad.max_error = 0;
+  EXPECT_FALSE(PackScene(TestScene(), bad).ok());
+}
+
+TEST(Pack, CancelStopsIt) {
+  struct Cancel : PackObserver {
+    bool IsCancelled() override { return true; }
+  } cancel;
+  Result<PackResult> r = PackScene(TestScene(), FastOptions(), &cancel);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.status().code(), StatusCode::kCancelled);
+}
+
+}  // namespace
+}  // namespace hullpack
