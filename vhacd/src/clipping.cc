@@ -51,7 +51,7 @@ bool ClipRecursively(Part root, const ClipParams& params, Context* ctx, ClipOutp
     for (size_t i = 0; i < n; ++i) {
       const Part& p = current[i];
       const bool thick = p.bmax[0] > p.bmin[0] || p.bmax[1] > p.bmin[1] || p.bmax[2] > p.bmin[2];
-      const bool too_deep = params.max_depth > 0 && depth[i] - 0.5 > params.max_depth;
+      const bool too_deep = params.max_depth > 0 && depth[i] > params.max_depth;
       if (level < params.depth && (conc[i] > params.concavity || too_deep) && thick) {
         split.push_back(static_cast<uint32_t>(i));
       } else {

@@ -46,7 +46,7 @@ Parameters Parameters::High() {
   p.gamma = 0.0005;
   p.max_vertices_per_hull = 128;
   p.min_volume_per_hull = 0.00001;
-  p.max_distance = 0.012;
+  p.max_distance = 0.018;
   return p;
 }
 
@@ -318,7 +318,9 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   if (root.voxels.empty()) return Fail(Status::kInternalError, "voxelization produced no voxel");
   internal::DistanceField field;
   if (!field.Build(grid, &ctx)) return Fail(Status::kCancelled, "cancelled");
-  const double max_depth = params.max_distance * diag_grid;
+  // A hull surface point is at most ~half a voxel farther from the input than the deepest outside
+  // voxel centre the hull contains: compare depths with that margin taken off.
+  const double max_depth = params.max_distance > 0 ? std::max(0.25, params.max_distance * diag_grid - 0.5) : 0.0;
   rep.seconds_fill = clock.Lap();  // the interior fill itself is timed with the voxelization
 
   // Clipping.
@@ -352,9 +354,14 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   rep.seconds_hulls = clock.Lap();
 
   // Simplify before merging (cheaper merges; the merged hulls are simplified again below).
+  // Adaptive sampling: a vertex adding less than min_volume_per_hull of the whole hull's volume is
+  // dropped, but never one adding more than kMaxRelativeLoss of its own hull (small hulls would
+  // shrink away from their neighbours and open gaps).
   const double min_volume = params.min_volume_per_hull * clip.volume0;
+  constexpr double kMaxRelativeLoss = 0.002;
   if (!internal::ParallelFor(&ctx, hulls.size(), [&](size_t i) {
-        hulls[i] = internal::SimplifyHull(hulls[i], params.max_vertices_per_hull, min_volume);
+        hulls[i] = internal::SimplifyHull(hulls[i], params.max_vertices_per_hull,
+                                          std::min(min_volume, kMaxRelativeLoss * hulls[i].Volume()));
       }))
     return Fail(Status::kCancelled, "cancelled");
 
@@ -373,7 +380,8 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   // Simplification.
   ctx.BeginStage("Simplification", 85, 90);
   if (!internal::ParallelFor(&ctx, hulls.size(), [&](size_t i) {
-        hulls[i] = internal::SimplifyHull(hulls[i], params.max_vertices_per_hull, min_volume);
+        hulls[i] = internal::SimplifyHull(hulls[i], params.max_vertices_per_hull,
+                                          std::min(min_volume, kMaxRelativeLoss * hulls[i].Volume()));
       }))
     return Fail(Status::kCancelled, "cancelled");
   rep.seconds_simplify = clock.Lap();

@@ -110,5 +110,39 @@ double DistanceField::HullDepth(const HullMesh& hull, double limit) const {
   return HullDepth(HullPlanes(hull), limit);
 }
 
+double DistanceField::Interpolate(const Vec3& p) const {
+  int i0[3];
+  double f[3];
+  for (int a = 0; a < 3; ++a) {
+    const double x = std::clamp(p[a] - 0.5, 0.0, static_cast<double>(dims_[a] - 1));
+    i0[a] = std::min(static_cast<int>(x), std::max(0, dims_[a] - 2));
+    f[a] = dims_[a] > 1 ? x - i0[a] : 0.0;
+  }
+  double acc = 0.0;
+  for (int k = 0; k < 8; ++k) {
+    const int x = std::min(i0[0] + (k & 1), dims_[0] - 1), y = std::min(i0[1] + ((k >> 1) & 1), dims_[1] - 1),
+              z = std::min(i0[2] + ((k >> 2) & 1), dims_[2] - 1);
+    const double w = ((k & 1) ? f[0] : 1 - f[0]) * (((k >> 1) & 1) ? f[1] : 1 - f[1]) * (((k >> 2) & 1) ? f[2] : 1 - f[2]);
+    acc += w * d_[(static_cast<size_t>(z) * dims_[1] + y) * dims_[0] + x];
+  }
+  return acc;
+}
+
+double DistanceField::SurfaceDepth(const HullMesh& hull, double limit) const {
+  double best = 0.0;
+  for (const auto& t : hull.triangles) {
+    const Vec3 &a = hull.vertices[t[0]], &b = hull.vertices[t[1]], &c = hull.vertices[t[2]];
+    const double len = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+    const int n = std::clamp(static_cast<int>(std::ceil(len)), 1, 64);
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; i + j <= n; ++j) {
+        const double u = static_cast<double>(i) / n, v = static_cast<double>(j) / n;
+        best = std::max(best, Interpolate(a + u * (b - a) + v * (c - a)));
+        if (best > limit) return best;
+      }
+  }
+  return best;
+}
+
 }  // namespace internal
 }  // namespace vhacd

@@ -24,6 +24,11 @@ class DistanceField {
   // early, returning a value > limit, as soon as the depth is known to exceed `limit`.
   double HullDepth(const HullPlanes& hull, double limit = 1e30) const;
   double HullDepth(const HullMesh& hull, double limit = 1e30) const;
+  // The field interpolated (trilinearly between voxel centres) at points spread over the hull's
+  // surface about a voxel apart: catches protrusions thinner than a voxel, which hold no voxel
+  // centre. Early exit as above.
+  double SurfaceDepth(const HullMesh& hull, double limit = 1e30) const;
+  double Interpolate(const Vec3& p) const;
 
  private:
   int dims_[3] = {0, 0, 0};

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <limits>
+#include <queue>
+#include <functional>
 
 #include "thread_pool.h"
 
@@ -41,95 +43,110 @@ bool MergeHulls(std::vector<HullMesh>* hulls_io, const MergeParams& params, Cont
   if (n < 2) return true;
   const double kInf = std::numeric_limits<double>::infinity();
   const bool use_depth = params.field != nullptr && params.max_depth > 0;
+  const bool budget = params.max_hulls > 0 && n > params.max_hulls;
   std::vector<double> vol(n);
   std::vector<Box> box(n);
   std::vector<char> alive(n, 1);
+  std::vector<uint32_t> version(n, 0);
   for (size_t i = 0; i < n; ++i) {
     vol[i] = hulls[i].Volume();
     box[i] = BoxOf(hulls[i]);
   }
-  // cost/depth[i * n + j] for i < j; kInf when not computed (far apart).
-  std::vector<double> cost(n * n, kInf), depth(n * n, kInf);
-  bool all_pairs = false;
-  auto compute_pairs = [&](const std::vector<std::pair<uint32_t, uint32_t>>& pairs) {
-    return ParallelFor(ctx, pairs.size(), [&](size_t k) {
-      const uint32_t i = pairs[k].first, j = pairs[k].second;
-      const HullMesh m = MergedHull(hulls[i], hulls[j]);
-      const double c = std::max(0.0, m.Volume() - vol[i] - vol[j]) / params.volume0;
-      cost[i * n + j] = c;
-      // The exact depth only matters for the budget; otherwise whether it exceeds the limit.
-      if (!use_depth) depth[i * n + j] = 0.0;
-      else if (params.max_hulls > 0) depth[i * n + j] = params.field->HullDepth(m);
-      else if (c < params.gamma) depth[i * n + j] = params.field->HullDepth(m, params.max_depth + 0.5);
-      else depth[i * n + j] = kInf;
-    });
+  // Candidate pairs, ordered by (key1, key2, i, j); stale entries (an older version of a hull, or
+  // a merged-away hull) are skipped when popped. `under` holds the merges allowed under gamma,
+  // `over` every evaluated pair for the hull budget.
+  struct Cand {
+    double key1, key2;
+    uint32_t i, j, vi, vj;
+    bool operator>(const Cand& o) const {
+      if (key1 != o.key1) return key1 > o.key1;
+      if (key2 != o.key2) return key2 > o.key2;
+      if (i != o.i) return i > o.i;
+      return j > o.j;
+    }
   };
-  auto pairs_for = [&](bool everything) {
+  std::priority_queue<Cand, std::vector<Cand>, std::greater<Cand>> under, over;
+  auto evaluate = [&](const std::vector<std::pair<uint32_t, uint32_t>>& pairs) {
+    std::vector<double> cost(pairs.size()), depth(pairs.size());
+    if (!ParallelFor(ctx, pairs.size(), [&](size_t k) {
+          const uint32_t i = pairs[k].first, j = pairs[k].second;
+          const HullMesh m = MergedHull(hulls[i], hulls[j]);
+          const double c = std::max(0.0, m.Volume() - vol[i] - vol[j]) / params.volume0;
+          cost[k] = c;
+          // The exact depth only matters for the budget; otherwise whether it exceeds the limit.
+          if (!use_depth) depth[k] = 0.0;
+          else if (budget) depth[k] = std::max(params.field->SurfaceDepth(m), params.field->HullDepth(m));
+          else if (c < params.gamma) {
+            depth[k] = params.field->SurfaceDepth(m, params.max_depth);
+            if (depth[k] <= params.max_depth) depth[k] = std::max(depth[k], params.field->HullDepth(m, params.max_depth));
+          }
+          else depth[k] = kInf;
+        }))
+      return false;
+    for (size_t k = 0; k < pairs.size(); ++k) {
+      const uint32_t i = pairs[k].first, j = pairs[k].second;
+      if (cost[k] < params.gamma && (!use_depth || depth[k] <= params.max_depth))
+        under.push({cost[k], 0.0, i, j, version[i], version[j]});
+      if (budget) over.push({use_depth ? depth[k] : cost[k], cost[k], i, j, version[i], version[j]});
+    }
+    return true;
+  };
+  auto pairs_with = [&](uint32_t h, bool everything) {
+    std::vector<std::pair<uint32_t, uint32_t>> pairs;
+    for (uint32_t k = 0; k < n; ++k)
+      if (k != h && alive[k] && (everything || BoxGap(box[h], box[k]) <= params.adjacency))
+        pairs.emplace_back(std::min(h, k), std::max(h, k));
+    return pairs;
+  };
+  {
     std::vector<std::pair<uint32_t, uint32_t>> pairs;
     for (uint32_t i = 0; i < n; ++i)
       for (uint32_t j = i + 1; j < n; ++j)
-        if (alive[i] && alive[j] && cost[i * n + j] == kInf &&
-            (everything || BoxGap(box[i], box[j]) <= params.adjacency))
-          pairs.emplace_back(i, j);
-    return pairs;
+        if (BoxGap(box[i], box[j]) <= params.adjacency) pairs.emplace_back(i, j);
+    if (!evaluate(pairs)) return false;
+  }
+  auto valid = [&](const Cand& c) {
+    return alive[c.i] && alive[c.j] && version[c.i] == c.vi && version[c.j] == c.vj;
   };
-  if (!compute_pairs(pairs_for(false))) return false;
   size_t count = n;
+  bool all_pairs = false;
   for (;;) {
-    const bool over_budget = params.max_hulls > 0 && count > params.max_hulls;
-    double best = kInf;
-    uint32_t bi = 0, bj = 0;
-    // Merges under gamma (and the depth limit), cheapest first.
-    for (uint32_t i = 0; i < n; ++i) {
-      if (!alive[i]) continue;
-      for (uint32_t j = i + 1; j < n; ++j) {
-        const size_t k = static_cast<size_t>(i) * n + j;
-        if (alive[j] && cost[k] < params.gamma && depth[k] <= params.max_depth + 0.5 && cost[k] < best) {
-          best = cost[k];
-          bi = i;
-          bj = j;
-        }
-      }
-    }
-    if (best == kInf && over_budget) {
-      // Over the budget: the pair whose merged hull sticks out least (then the cheapest).
-      double best_depth = kInf;
-      for (uint32_t i = 0; i < n; ++i) {
-        if (!alive[i]) continue;
-        for (uint32_t j = i + 1; j < n; ++j) {
-          const size_t k = static_cast<size_t>(i) * n + j;
-          if (!alive[j] || cost[k] == kInf) continue;
-          const double d = use_depth ? depth[k] : cost[k];
-          if (d < best_depth || (d == best_depth && cost[k] < best)) {
-            best_depth = d;
-            best = cost[k];
-            bi = i;
-            bj = j;
-          }
-        }
-      }
-      if (best == kInf && !all_pairs) {
+    while (!under.empty() && !valid(under.top())) under.pop();
+    const bool over_budget = budget && count > params.max_hulls;
+    Cand pick{};
+    bool have = false;
+    if (!under.empty()) {
+      pick = under.top();
+      under.pop();
+      have = true;
+    } else if (over_budget) {
+      while (!over.empty() && !valid(over.top())) over.pop();
+      if (over.empty() && !all_pairs) {
+        // Only far-apart hulls remain: evaluate every pair once, then keep going.
         all_pairs = true;
-        if (!compute_pairs(pairs_for(true))) return false;
+        std::vector<std::pair<uint32_t, uint32_t>> pairs;
+        for (uint32_t i = 0; i < n; ++i)
+          for (uint32_t j = i + 1; j < n; ++j)
+            if (alive[i] && alive[j] && BoxGap(box[i], box[j]) > params.adjacency) pairs.emplace_back(i, j);
+        if (!evaluate(pairs)) return false;
         continue;
       }
+      if (!over.empty()) {
+        pick = over.top();
+        over.pop();
+        have = true;
+      }
     }
-    if (best == kInf) break;
+    if (!have) break;
+    const uint32_t bi = pick.i, bj = pick.j;
     hulls[bi] = MergedHull(hulls[bi], hulls[bj]);
     vol[bi] = hulls[bi].Volume();
     box[bi] = BoxOf(hulls[bi]);
+    ++version[bi];
     alive[bj] = 0;
     hulls[bj] = HullMesh();
     --count;
-    std::vector<std::pair<uint32_t, uint32_t>> pairs;
-    for (uint32_t k = 0; k < n; ++k) {
-      if (!alive[k] || k == bi) continue;
-      const uint32_t i = std::min(k, bi), j = std::max(k, bi);
-      cost[i * n + j] = kInf;
-      depth[i * n + j] = kInf;
-      if (all_pairs || BoxGap(box[i], box[j]) <= params.adjacency) pairs.emplace_back(i, j);
-    }
-    if (!compute_pairs(pairs)) return false;
+    if (!evaluate(pairs_with(bi, all_pairs))) return false;
     ctx->Progress(100.0 * (n - count) / n, "merging");
   }
   std::vector<HullMesh> out;
