@@ -73,7 +73,7 @@ Status DecodeQuantized(ArithmeticDecoder* dec, const MeshAdjacency& adj, uint32_
   const std::vector<uint32_t> order = MaxDegreeOrder(adj);
   const std::vector<uint32_t> renamed_tris = RenameByOrder(adj, order);
   MeshAdjacency renamed;
-  renamed.Build(renamed_tris, n);
+  renamed.BuildPermuted(adj, order, renamed_tris);
   renamed.SetOpposite(adj.opposite());
   std::vector<double> geo_renamed;
   if (texcoord) {

@@ -61,7 +61,7 @@ void EncodeQuantized(ArithmeticEncoder* enc, const MeshAdjacency& adj_in,
   if (mode == Prediction::kParallelogram) {
     const std::vector<uint32_t> order = MaxDegreeOrder(adj_in);
     renamed_tris = RenameByOrder(adj_in, order);
-    renamed.Build(renamed_tris, n);
+    renamed.BuildPermuted(adj_in, order, renamed_tris);
     renamed.SetOpposite(adj_in.opposite());
     q_renamed.resize(q_in.size());
     for (uint32_t i = 0; i < n; ++i) {

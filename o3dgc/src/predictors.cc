@@ -1,7 +1,7 @@
-#include <algorithm>
 // Predictors (see predictors.h).
 #include "predictors.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace o3dgc {
@@ -24,6 +24,21 @@ void MeshAdjacency::Build(const std::vector<uint32_t>& triangles, uint32_t num_v
   for (size_t t = 0; t < nt; ++t) {
     if (!ok(t)) continue;
     for (int j = 0; j < 3; ++j) tri_[fill[triangles[3 * t + j]]++] = uint32_t(t);
+  }
+}
+
+void MeshAdjacency::BuildPermuted(const MeshAdjacency& source, const std::vector<uint32_t>& order,
+                                  const std::vector<uint32_t>& renamed) {
+  tris_ = &renamed;
+  const uint32_t n = uint32_t(order.size());
+  start_.resize(size_t(n) + 1);
+  tri_.resize(source.tri_.size());
+  start_[0] = 0;
+  for (uint32_t i = 0; i < n; ++i) {
+    const uint32_t v = order[i];
+    const uint32_t b = source.start_[v], e = source.start_[v + 1];
+    std::copy(source.tri_.begin() + b, source.tri_.begin() + e, tri_.begin() + start_[i]);
+    start_[i + 1] = start_[i] + (e - b);
   }
 }
 

@@ -18,6 +18,10 @@ namespace o3dgc {
 class MeshAdjacency {
  public:
   void Build(const std::vector<uint32_t>& triangles, uint32_t num_vertices);
+  // The adjacency of `renamed` = RenameByOrder(source, order), built by permuting source's lists
+  // (same result as Build(renamed, n), without a pass over the triangles).
+  void BuildPermuted(const MeshAdjacency& source, const std::vector<uint32_t>& order,
+                     const std::vector<uint32_t>& renamed);
   const uint32_t* begin(uint32_t v) const { return tri_.data() + start_[v]; }
   const uint32_t* end(uint32_t v) const { return tri_.data() + start_[v + 1]; }
   const uint32_t* corners(uint32_t t) const { return tris_->data() + 3 * size_t(t); }
