@@ -58,8 +58,10 @@ struct GltfSceneLayout {
   std::vector<std::vector<int>> mesh_nodes; // scene mesh -> glTF nodes that reference it
 };
 
-// Checks what the writer relies on: array sizes, index and material bounds, texture/skin/node
-// references, a node hierarchy that is a forest. kInvalidMesh / kInvalidArgument otherwise.
+// Checks what the writer relies on: every mesh has vertices and triangles (glTF has no empty meshes),
+// consistent array sizes, finite values, index and material bounds, texture/skin/node references,
+// joint indices within the skin of each node that skins the mesh, and a node hierarchy that is a
+// forest. kInvalidMesh / kInvalidArgument otherwise, naming the mesh, material, skin or node.
 Status ValidateSceneForGltf(const Scene& scene);
 
 // Writes `scene` into `doc` (which should be fresh). `layout` may be null.
