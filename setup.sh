@@ -83,8 +83,13 @@ case "${1:-}" in
   demo)
     install_missing_packages
     configure_and_build
-    log "running: hullpack info samples/torus.obj"
-    "$BUILD_DIR/tools/hullpack/hullpack" info samples/torus.obj
+    # The main job on the embedded sample: compressed mesh + convex collision hulls in one GLB.
+    out="$BUILD_DIR/demo"
+    mkdir -p "$out"
+    log "running: hullpack pack samples/torus.obj -o $out/torus.packed.glb --report $out/torus.report.json --force"
+    "$BUILD_DIR/tools/hullpack/hullpack" pack samples/torus.obj -o "$out/torus.packed.glb" \
+      --report "$out/torus.report.json" --force
+    "$BUILD_DIR/tools/hullpack/hullpack" info "$out/torus.packed.glb"
     ;;
   test)
     install_missing_packages

@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# End-to-end checks of `hullpack pack` and `hullpack unpack`: outputs that validate, reports, batch
+# mode, exit status = failures, no overwriting without --force, never an input.
+# usage: pack_cli_test.sh HULLPACK_BINARY SOURCE_DIR [NODE]
+set -u
+bin=$1
+src=$2
+node=${3:-}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+failures=0
+passes=0
+fail() { echo "FAIL $1"; failures=$((failures + 1)); }
+pass() { passes=$((passes + 1)); }
+
+run() {  # run EXPECTED_EXIT NAME -- command...
+  local want=$1 name=$2
+  shift 3
+  "$@" >"$tmp/out" 2>"$tmp/err"
+  local rc=$?
+  if [ "$rc" -ge 128 ]; then fail "$name: crashed ($rc)"; return 1; fi
+  if [ "$rc" -ne "$want" ]; then fail "$name: exit $rc, expected $want: $(head -c 400 "$tmp/err")"; return 1; fi
+  pass
+}
+
+sample=$src/samples/torus.obj
+run 0 pack -- "$bin" pack "$sample" -o "$tmp/t.glb" --report "$tmp/t.json" --quiet
+[ -s "$tmp/t.glb" ] && pass || fail "pack wrote nothing"
+grep -q '"hull_count"' "$tmp/t.json" && grep -q '"max_error_fraction"' "$tmp/t.json" && pass || fail "report lacks fields"
+run 0 info-packed -- "$bin" info "$tmp/t.glb"
+run 1 refuse-existing -- "$bin" pack "$sample" -o "$tmp/t.glb" --quiet
+grep -q "exists (use --force" "$tmp/err" && pass || fail "refusal message: $(cat "$tmp/err")"
+run 0 force -- "$bin" pack "$sample" -o "$tmp/t.glb" --force --quiet --hulls none
+cp "$sample" "$tmp/in.obj"
+cp "$tmp/t.glb" "$tmp/in.glb"
+run 1 never-the-input -- "$bin" pack "$tmp/in.glb" -o "$tmp/in.glb" --force --quiet
+cmp -s "$tmp/t.glb" "$tmp/in.glb" && pass || fail "the input was changed"
+run 0 unpack-glb -- "$bin" unpack "$tmp/t.glb" -o "$tmp/plain.glb"
+run 0 unpack-obj -- "$bin" unpack "$tmp/t.glb" -o "$tmp/plain.obj"
+run 0 info-unpacked -- "$bin" info "$tmp/plain.obj"
+grep -q "triangles 1024" "$tmp/out" && pass || fail "unpacked OBJ: $(cat "$tmp/out")"
+
+# Batch into a folder: one bad input among good ones.
+mkdir "$tmp/batch"
+printf 'not a mesh\n' >"$tmp/bad.obj"
+cp "$sample" "$tmp/second.obj"
+run 1 batch-one-failure -- "$bin" pack "$tmp/in.obj" "$tmp/bad.obj" "$tmp/second.obj" -o "$tmp/batch/" --quiet --hulls none
+[ -s "$tmp/batch/in.packed.glb" ] && [ -s "$tmp/batch/second.packed.glb" ] && [ ! -e "$tmp/batch/bad.packed.glb" ] && pass ||
+  fail "batch outputs: $(ls "$tmp/batch")"
+grep -q "$tmp/bad.obj" "$tmp/err" && pass || fail "batch error does not name the file"
+ls "$tmp/batch" | grep -q tmp && fail "temporary file left behind" || pass
+run 64 usage -- "$bin" pack "$sample"
+run 64 bad-option -- "$bin" pack "$sample" -o "$tmp/x.glb" --max-error -1
+
+# The Khronos validator on the packed and unpacked files (skipped without node + gltf-validator).
+if [ -n "$node" ] && [ -f "$src/node_modules/gltf-validator/package.json" ]; then
+  run 0 pack-khr -- "$bin" pack "$sample" -o "$tmp/khr.glb" --physics khr --fallback --quiet
+  for f in t.glb plain.glb khr.glb batch/in.packed.glb; do
+    run 0 "validate-$f" -- "$node" "$src/tests/tools/gltf/validate_gltf.mjs" "$tmp/$f"
+  done
+else
+  echo "validator checks skipped: node or the gltf-validator package is missing"
+fi
+
+echo "$passes passed, $failures failed"
+[ "$failures" -eq 0 ]
