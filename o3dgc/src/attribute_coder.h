@@ -33,9 +33,20 @@ inline int IntraContext(int64_t r) {
   return b < kIntraContexts ? b : kIntraContexts - 1;
 }
 
-struct ResidualModels {
-  SignedModel m[4][3][kMagContexts][kIntraContexts];
+// Residual models indexed by (component, prediction kind, magnitude context, intra context);
+// only the components and kinds a coder uses are allocated.
+class ResidualModels {
+ public:
+  ResidualModels(int components, int kinds)
+      : kinds_(kinds), models_(size_t(components) * kinds * kMagContexts * kIntraContexts) {}
+  SignedModel& at(int component, int kind, int mag, int intra) {
+    return models_[((size_t(component) * kinds_ + kind) * kMagContexts + mag) * kIntraContexts + intra];
+  }
   BitModel side;
+
+ private:
+  int kinds_;
+  std::vector<SignedModel> models_;
 };
 
 inline int MagContext(uint64_t mag) {

@@ -20,7 +20,7 @@ Status DecodeQuantizedInOrder(ArithmeticDecoder* dec, const MeshAdjacency& adj, 
     }
     return dec->failed() ? Status::kTruncated : Status::kOk;
   }
-  std::unique_ptr<ResidualModels> models(new ResidualModels);
+  std::unique_ptr<ResidualModels> models(new ResidualModels(dim, 3));
   std::vector<uint32_t> mags(n, 0);
   const int coarse = n < kTinyMesh ? 2 : (n < kSmallMesh ? 1 : 0);
   for (uint32_t c = 0; c < n; ++c) {
@@ -51,7 +51,7 @@ Status DecodeQuantizedInOrder(ArithmeticDecoder* dec, const MeshAdjacency& adj, 
     const int mctx = MagContext(pc.neighbour_magnitude) >> coarse;
     int64_t r[4];
     for (int k = 0; k < dim; ++k) {
-      r[k] = DecodeSigned(*dec, models->m[coarse == 2 ? 0 : k][pc.kind][mctx][(k && !coarse) ? IntraContext(r[k - 1]) : 0]);
+      r[k] = DecodeSigned(*dec, models->at(coarse == 2 ? 0 : k, pc.kind, mctx, (k && !coarse) ? IntraContext(r[k - 1]) : 0));
       const int64_t v = pred[k] + r[k];
       if (v < 0 || v > maxq) return Status::kCorrupt;
       q[size_t(c) * dim + k] = int32_t(v);
@@ -96,7 +96,7 @@ Status DecodeQuantized(ArithmeticDecoder* dec, const MeshAdjacency& adj, uint32_
 Status DecodeOctNormals(ArithmeticDecoder* dec, const MeshAdjacency& adj, const NormalGeometry& geo,
                         uint32_t n, int bits, std::vector<float>* normals) {
   const uint32_t maxq = uint32_t((uint64_t(1) << bits) - 1);
-  std::unique_ptr<ResidualModels> models(new ResidualModels);
+  std::unique_ptr<ResidualModels> models(new ResidualModels(2, 1));
   std::vector<uint32_t> mags(n, 0);
   normals->assign(size_t(n) * 3, 0.0f);
   for (uint32_t c = 0; c < n; ++c) {
@@ -113,7 +113,7 @@ Status DecodeOctNormals(ArithmeticDecoder* dec, const MeshAdjacency& adj, const 
     int32_t qa[2];
     for (int k = 0; k < 2; ++k) {
       const int intra = (k && n >= kSmallMesh) ? IntraContext(r[0]) : 0;
-      r[k] = DecodeSigned(*dec, models->m[k][0][mctx][intra]);
+      r[k] = DecodeSigned(*dec, models->at(k, 0, mctx, intra));
       const int64_t v = qp[k] + r[k];
       if (v < 0 || v > int64_t(maxq)) return Status::kCorrupt;
       qa[k] = int32_t(v);
@@ -129,14 +129,14 @@ Status DecodeOctNormals(ArithmeticDecoder* dec, const MeshAdjacency& adj, const 
 
 Status DecodeInts(ArithmeticDecoder* dec, uint32_t n, int dim, Prediction mode,
                   std::vector<int32_t>* values) {
-  std::unique_ptr<ResidualModels> models(new ResidualModels);
+  std::vector<SignedModel> models(static_cast<size_t>(dim));  // one per component
   values->assign(size_t(n) * dim, 0);
   for (size_t c = 0; c < n; ++c) {
     if (dec->failed()) return Status::kTruncated;
     for (int k = 0; k < dim; ++k) {
       const int64_t pred =
           (mode == Prediction::kDifferential && c > 0) ? (*values)[(c - 1) * dim + k] : 0;
-      const int64_t v = pred + DecodeSigned(*dec, models->m[k][0][0][0]);
+      const int64_t v = pred + DecodeSigned(*dec, models[size_t(k)]);
       if (v < INT32_MIN || v > INT32_MAX) return Status::kCorrupt;
       (*values)[c * dim + k] = int32_t(v);
     }

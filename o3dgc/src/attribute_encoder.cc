@@ -78,7 +78,7 @@ void EncodeQuantized(ArithmeticEncoder* enc, const MeshAdjacency& adj_in,
   }
   const MeshAdjacency& adj = *adj_ptr;
   const std::vector<int32_t>& q = *q_ptr;
-  std::unique_ptr<ResidualModels> models(new ResidualModels);
+  std::unique_ptr<ResidualModels> models(new ResidualModels(dim, 3));
   std::vector<uint32_t> mags(n, 0);
   const int64_t maxq = (int64_t(1) << bits) - 1;
   const int coarse = n < kTinyMesh ? 2 : (n < kSmallMesh ? 1 : 0);
@@ -118,7 +118,7 @@ void EncodeQuantized(ArithmeticEncoder* enc, const MeshAdjacency& adj_in,
     int64_t r[4];
     for (int k = 0; k < dim; ++k) {
       r[k] = int64_t(q[size_t(c) * dim + k]) - pred[k];
-      EncodeSigned(*enc, models->m[coarse == 2 ? 0 : k][pc.kind][mctx][(k && !coarse) ? IntraContext(r[k - 1]) : 0], r[k]);
+      EncodeSigned(*enc, models->at(coarse == 2 ? 0 : k, pc.kind, mctx, (k && !coarse) ? IntraContext(r[k - 1]) : 0), r[k]);
     }
     mags[c] = SaturatingMagnitude(r, dim);
   }
@@ -128,7 +128,7 @@ void EncodeOctNormals(ArithmeticEncoder* enc, const MeshAdjacency& adj, const No
                       const std::vector<float>& normals, int bits) {
   const uint32_t n = uint32_t(normals.size() / 3);
   const uint32_t maxq = uint32_t((uint64_t(1) << bits) - 1);
-  std::unique_ptr<ResidualModels> models(new ResidualModels);
+  std::unique_ptr<ResidualModels> models(new ResidualModels(2, 1));
   std::vector<uint32_t> mags(n, 0);
   for (uint32_t c = 0; c < n; ++c) {
     double p[3];
@@ -155,7 +155,7 @@ void EncodeOctNormals(ArithmeticEncoder* enc, const MeshAdjacency& adj, const No
     for (int k = 0; k < 2; ++k) {
       r[k] = int64_t(qa[k]) - qp[k];
       const int intra = (k && n >= kSmallMesh) ? IntraContext(r[0]) : 0;
-      EncodeSigned(*enc, models->m[k][0][mctx][intra], r[k]);
+      EncodeSigned(*enc, models->at(k, 0, mctx, intra), r[k]);
     }
     mags[c] = SaturatingMagnitude(r, 2);
   }
@@ -163,13 +163,13 @@ void EncodeOctNormals(ArithmeticEncoder* enc, const MeshAdjacency& adj, const No
 
 void EncodeInts(ArithmeticEncoder* enc, const std::vector<int32_t>& values, int dim,
                 Prediction mode) {
-  std::unique_ptr<ResidualModels> models(new ResidualModels);
+  std::vector<SignedModel> models(static_cast<size_t>(dim));  // one per component
   const size_t n = values.size() / size_t(dim);
   for (size_t c = 0; c < n; ++c) {
     for (int k = 0; k < dim; ++k) {
       const int64_t pred =
           (mode == Prediction::kDifferential && c > 0) ? values[(c - 1) * dim + k] : 0;
-      EncodeSigned(*enc, models->m[k][0][0][0], int64_t(values[c * dim + k]) - pred);
+      EncodeSigned(*enc, models[size_t(k)], int64_t(values[c * dim + k]) - pred);
     }
   }
 }
