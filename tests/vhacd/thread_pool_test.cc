@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <stdexcept>
 #include <vector>
 
 namespace vhacd {
@@ -18,6 +19,15 @@ TEST(ThreadPoolTest, RunsEveryIndexOnce) {
     for (auto& h : hits) EXPECT_EQ(h.load(), 1);
   }
   EXPECT_TRUE(ParallelFor(nullptr, 3, [](size_t) {}));
+}
+
+TEST(ThreadPoolTest, ExceptionsReachTheCaller) {
+  Context ctx(nullptr, 3);
+  EXPECT_THROW(ParallelFor(&ctx, 1000,
+                           [](size_t i) {
+                             if (i == 500) throw std::runtime_error("boom");
+                           }),
+               std::runtime_error);
 }
 
 class StopNow : public Observer {

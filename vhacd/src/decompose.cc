@@ -295,8 +295,9 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   // Voxelization.
   ctx.BeginStage("Voxelization", 0, 15);
   internal::VoxelGrid grid;
-  if (!internal::Voxelize(gmesh, place.dims, &ctx, &grid)) return Fail(Status::kCancelled, "cancelled");
-  rep.seconds_voxelize = clock.Lap();
+  if (!internal::Voxelize(gmesh, place.dims, &ctx, &grid, &rep.seconds_fill))
+    return Fail(Status::kCancelled, "cancelled");
+  rep.seconds_voxelize = clock.Lap() - rep.seconds_fill;
   internal::Part root;
   for (int z = 0; z < grid.dims[2]; ++z)
     for (int y = 0; y < grid.dims[1]; ++y)
@@ -321,7 +322,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   // A hull surface point is at most ~half a voxel farther from the input than the deepest outside
   // voxel centre the hull contains: compare depths with that margin taken off.
   const double max_depth = params.max_distance > 0 ? std::max(0.25, params.max_distance * diag_grid - 0.5) : 0.0;
-  rep.seconds_fill = clock.Lap();  // the interior fill itself is timed with the voxelization
+  rep.seconds_distance = clock.Lap();
 
   // Clipping.
   ctx.BeginStage("Clipping", 15, 60);

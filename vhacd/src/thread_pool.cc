@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <exception>
+#include <mutex>
 #include <thread>
 #include <vector>
 
@@ -14,6 +16,8 @@ bool ParallelFor(Context* ctx, size_t n, const std::function<void(size_t)>& fn) 
       std::min<size_t>(n, ctx != nullptr ? static_cast<size_t>(std::max(1, ctx->num_threads())) : 1);
   std::atomic<size_t> next{0};
   std::atomic<bool> stop{false};
+  std::exception_ptr error;
+  std::mutex error_mutex;
   auto worker = [&]() {
     for (;;) {
       if (stop.load(std::memory_order_relaxed)) return;
@@ -23,7 +27,14 @@ bool ParallelFor(Context* ctx, size_t n, const std::function<void(size_t)>& fn) 
       }
       const size_t i = next.fetch_add(1);
       if (i >= n) return;
-      fn(i);
+      try {
+        fn(i);
+      } catch (...) {  // e.g. std::bad_alloc: stop everyone and rethrow on the calling thread
+        std::lock_guard<std::mutex> lock(error_mutex);
+        if (!error) error = std::current_exception();
+        stop.store(true);
+        return;
+      }
     }
   };
   if (threads <= 1) {
@@ -35,6 +46,7 @@ bool ParallelFor(Context* ctx, size_t n, const std::function<void(size_t)>& fn) 
     worker();
     for (auto& th : pool) th.join();
   }
+  if (error) std::rethrow_exception(error);
   return !(ctx != nullptr && ctx->Cancelled());
 }
 

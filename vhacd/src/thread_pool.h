@@ -13,7 +13,8 @@ namespace internal {
 
 // Runs fn(i) for every i in [0, n) on up to ctx->num_threads() threads (the caller's thread
 // included). Stops handing out tasks once ctx->Cancelled(); returns false in that case.
-// `ctx` may be null (one thread, no cancellation).
+// `ctx` may be null (one thread, no cancellation). An exception thrown by fn stops the loop and
+// is rethrown on the calling thread once every worker has joined.
 bool ParallelFor(Context* ctx, size_t n, const std::function<void(size_t)>& fn);
 
 }  // namespace internal

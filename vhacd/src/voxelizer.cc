@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <memory>
 
@@ -122,7 +123,7 @@ void CollectCrossings(const GridMesh& mesh, const int dims[3], int axis, size_t 
 
 }  // namespace
 
-bool Voxelize(const GridMesh& mesh, const int dims[3], Context* ctx, VoxelGrid* grid) {
+bool Voxelize(const GridMesh& mesh, const int dims[3], Context* ctx, VoxelGrid* grid, double* fill_seconds) {
   for (int a = 0; a < 3; ++a) grid->dims[a] = dims[a];
   const size_t nvox = static_cast<size_t>(dims[0]) * dims[1] * dims[2];
   const size_t ntri = mesh.triangles.size();
@@ -161,6 +162,7 @@ bool Voxelize(const GridMesh& mesh, const int dims[3], Context* ctx, VoxelGrid* 
   }
   ctx->Progress(30, "surface voxels");
 
+  const auto fill_start = std::chrono::steady_clock::now();
   // 2. Flood fill from the grid border through non-surface voxels.
   grid->enclosed.assign(nvox, 1);
   {
@@ -248,6 +250,8 @@ bool Voxelize(const GridMesh& mesh, const int dims[3], Context* ctx, VoxelGrid* 
   for (size_t i = 0; i < nvox; ++i)
     if (grid->cell[i] != kCellSurface && (grid->enclosed[i] || grid->votes[i] >= 4))
       grid->cell[i] = kCellInside;
+  if (fill_seconds != nullptr)
+    *fill_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - fill_start).count();
   return true;
 }
 

@@ -49,8 +49,10 @@ struct VoxelGrid {
 // Exact separating-axis test between a triangle and the axis-aligned box centre +/- half.
 bool TriangleBoxOverlap(const Vec3& center, double half, const Vec3& a, const Vec3& b, const Vec3& c);
 
-// Marks surface voxels and fills the interior. Returns false when cancelled.
-bool Voxelize(const GridMesh& mesh, const int dims[3], Context* ctx, VoxelGrid* grid);
+// Marks surface voxels and fills the interior. Returns false when cancelled. *fill_seconds (when
+// non-null) receives the time spent on the interior fill.
+bool Voxelize(const GridMesh& mesh, const int dims[3], Context* ctx, VoxelGrid* grid,
+              double* fill_seconds = nullptr);
 
 }  // namespace internal
 }  // namespace vhacd

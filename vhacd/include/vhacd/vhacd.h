@@ -181,8 +181,8 @@ struct Report {
   uint64_t voxel_count = 0;       // surface + inside voxels
   uint64_t surface_voxel_count = 0;
   uint32_t parts_before_merge = 0;
-  // Wall-clock seconds per stage.
-  double seconds_voxelize = 0.0, seconds_fill = 0.0, seconds_clip = 0.0, seconds_hulls = 0.0,
+  // Wall-clock seconds per stage (distance: the distance transform used by max_distance).
+  double seconds_voxelize = 0.0, seconds_fill = 0.0, seconds_distance = 0.0, seconds_clip = 0.0, seconds_hulls = 0.0,
          seconds_merge = 0.0, seconds_simplify = 0.0, seconds_report = 0.0, seconds_total = 0.0;
 };
 
