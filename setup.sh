@@ -16,6 +16,7 @@ PACKAGES=(
   emscripten
   g++
   libassimp-dev
+  libbullet-dev
   libeigen3-dev
   libgmock-dev
   libgtest-dev

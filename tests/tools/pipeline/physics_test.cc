@@ -1,0 +1,137 @@
+// A real physics engine accepts the hulls: Bullet builds a compound of convex hull shapes from
+// them, drops the body on a plane, and it comes to rest where the mesh says it should.
+#include <btBulletDynamicsCommon.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+#include "pipeline/collision.h"
+
+namespace hullpack {
+namespace {
+
+// A torus lying in the xy plane (radius 1, tube 0.3), or an L-block extruded along z.
+Mesh Torus() {
+  Mesh m;
+  m.name = "torus";
+  const int rings = 40, sides = 16;
+  const double pi = 3.14159265358979323846;
+  for (int i = 0; i < rings; ++i) {
+    for (int j = 0; j < sides; ++j) {
+      const double u = 2 * pi * i / rings, v = 2 * pi * j / sides;
+      m.positions.insert(m.positions.end(), {float((1 + 0.3 * std::cos(v)) * std::cos(u)),
+                                             float((1 + 0.3 * std::cos(v)) * std::sin(u)), float(0.3 * std::sin(v))});
+    }
+  }
+  for (int i = 0; i < rings; ++i) {
+    for (int j = 0; j < sides; ++j) {
+      const uint32_t a = i * sides + j, b = ((i + 1) % rings) * sides + j,
+                     c = ((i + 1) % rings) * sides + (j + 1) % sides, d = i * sides + (j + 1) % sides;
+      m.indices.insert(m.indices.end(), {a, b, c, a, c, d});
+    }
+  }
+  return m;
+}
+
+struct Drop {
+  double lowest_mesh_z = 0;  // of the input mesh, moved by the body's final transform
+  double speed = 0;          // linear speed at the end
+  double tilt = 0;           // angle (radians) between the body's z axis and the world's
+};
+
+// Drops the hull compound of `mesh` from `height` onto the plane z = 0 and simulates `seconds`.
+Drop DropOnPlane(const Mesh& mesh, const HullSet& hulls, double height, double seconds) {
+  btDefaultCollisionConfiguration config;
+  btCollisionDispatcher dispatcher(&config);
+  btDbvtBroadphase broadphase;
+  btSequentialImpulseConstraintSolver solver;
+  btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &config);
+  world.setGravity(btVector3(0, 0, -9.81));
+
+  btStaticPlaneShape plane(btVector3(0, 0, 1), 0);
+  btRigidBody ground(btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &plane));
+  world.addRigidBody(&ground);
+
+  btCompoundShape compound;
+  std::vector<std::unique_ptr<btConvexHullShape>> parts;
+  for (const Mesh& hull : hulls.hulls) {
+    auto shape = std::make_unique<btConvexHullShape>();
+    for (size_t v = 0; v < hull.vertex_count(); ++v) {
+      shape->addPoint(btVector3(hull.positions[v * 3], hull.positions[v * 3 + 1], hull.positions[v * 3 + 2]), false);
+    }
+    shape->recalcLocalAabb();
+    shape->setMargin(0.001f);
+    btTransform identity;
+    identity.setIdentity();
+    compound.addChildShape(identity, shape.get());
+    parts.push_back(std::move(shape));
+  }
+  const btScalar mass = 1;
+  btVector3 inertia;
+  compound.calculateLocalInertia(mass, inertia);
+  btTransform start;
+  start.setIdentity();
+  start.setOrigin(btVector3(0, 0, height));
+  btDefaultMotionState motion(start);
+  btRigidBody body(btRigidBody::btRigidBodyConstructionInfo(mass, &motion, &compound, inertia));
+  world.addRigidBody(&body);
+  for (int step = 0; step < static_cast<int>(seconds * 240); ++step) world.stepSimulation(1.0 / 240, 1, 1.0 / 240);
+
+  Drop d;
+  btTransform end;
+  motion.getWorldTransform(end);
+  d.lowest_mesh_z = 1e300;
+  for (size_t v = 0; v < mesh.vertex_count(); ++v) {
+    const btVector3 p = end * btVector3(mesh.positions[v * 3], mesh.positions[v * 3 + 1], mesh.positions[v * 3 + 2]);
+    d.lowest_mesh_z = std::min<double>(d.lowest_mesh_z, p.z());
+  }
+  d.speed = body.getLinearVelocity().length();
+  const btVector3 up = end.getBasis() * btVector3(0, 0, 1);
+  d.tilt = std::acos(std::min<btScalar>(1, std::max<btScalar>(-1, up.z())));
+  world.removeRigidBody(&body);
+  world.removeRigidBody(&ground);
+  return d;
+}
+
+TEST(Physics, BulletRestsTheTorusFlatOnThePlane) {
+  const Mesh mesh = Torus();
+  vhacd::Parameters p;
+  p.resolution = 50000;
+  Result<HullSet> hulls = DecomposeMesh(mesh, p, nullptr);
+  ASSERT_TRUE(hulls.ok()) << hulls.status().ToString();
+  ASSERT_GT(hulls->hulls.size(), 2u);
+  const Drop d = DropOnPlane(mesh, hulls.value(), 2.0, 4.0);
+  // The mesh's lowest point touches the plane: hulls may stick out by their concavity (a few
+  // thousandths of the 2.6 diagonal) and the collision margin is 0.001.
+  EXPECT_NEAR(d.lowest_mesh_z, 0.0, 0.02);
+  EXPECT_LT(d.speed, 0.01);  // at rest
+  EXPECT_LT(d.tilt, 0.05);   // lying flat, not on its rim
+}
+
+TEST(Physics, BulletDoesNotLetTheTorusFallThroughItsHole) {
+  // The same body dropped onto a thin post under its hole would fall through a solid-disc hull;
+  // with the hole kept empty it comes to rest lower than the post only if it slides off, which a
+  // centred drop does not do. Here we simply check no hull covers the centre.
+  const Mesh mesh = Torus();
+  vhacd::Parameters p;
+  p.resolution = 50000;
+  Result<HullSet> hulls = DecomposeMesh(mesh, p, nullptr);
+  ASSERT_TRUE(hulls.ok());
+  for (const Mesh& hull : hulls->hulls) {
+    btConvexHullShape shape;
+    for (size_t v = 0; v < hull.vertex_count(); ++v) {
+      shape.addPoint(btVector3(hull.positions[v * 3], hull.positions[v * 3 + 1], hull.positions[v * 3 + 2]), false);
+    }
+    shape.recalcLocalAabb();
+    btVector3 lo, hi;
+    btTransform identity;
+    identity.setIdentity();
+    shape.getAabb(identity, lo, hi);
+    const bool covers_centre = lo.x() < -0.05 && hi.x() > 0.05 && lo.y() < -0.05 && hi.y() > 0.05;
+    EXPECT_FALSE(covers_centre);
+  }
+}
+
+}  // namespace
+}  // namespace hullpack
