@@ -24,6 +24,8 @@ class Decoder {
     if (expect > nt_) expect = nt_;
     out_.reserve(expect * 3);
     front_.Reserve(max_vertices_ < expect + 3 ? max_vertices_ : expect + 3, expect * 2);
+    has_flips_ = dec_.DecodeBits(1) != 0;
+    has_copies_ = dec_.DecodeBits(1) != 0;
     for (;;) {
       if (dec_.failed()) return Status::kTruncated;
       if (front_.empty()) {
@@ -66,7 +68,7 @@ class Decoder {
         c = uint32_t(chosen);
       }
       if (c == a || c == b) return Status::kCorrupt;
-      const int flip = dec_.Decode(m_->flip);
+      const int flip = has_flips_ ? dec_.Decode(m_->flip) : 0;
       front_.Attach(g, uint32_t(out_.size() / 3), a, b, c, flip != 0);
       const Status s = flip ? Emit(a, b, c) : Emit(b, a, c);
       if (s != Status::kOk) return s;
@@ -112,6 +114,7 @@ class Decoder {
 
   Status Emit(uint32_t x, uint32_t y, uint32_t z) {
     Push(x, y, z);
+    if (!has_copies_) return Status::kOk;
     const uint64_t count = DecodeEG(dec_, m_->copies);
     if (count > nt_ - out_.size() / 3) return Status::kCorrupt;
     for (uint64_t i = 0; i < count; ++i) {
@@ -130,6 +133,7 @@ class Decoder {
   std::vector<uint32_t>& out_;
   std::unique_ptr<ConnectivityModels> m_;
   Front front_;
+  bool has_flips_ = false, has_copies_ = false;
 };
 
 }  // namespace

@@ -24,6 +24,25 @@ class Encoder {
   void Run() {
     Classify();
     BuildVertexTriangles();
+    // Two flags spare the per-triangle flip and copy decisions when they cannot occur: a triangle
+    // found across a gate a->b can only need a flip if some directed edge is used by two primary
+    // triangles (two incident triangles of a vertex with the same successor).
+    has_copies_ = false;
+    for (size_t t = 0; t < nt_ && !has_copies_; ++t) has_copies_ = kind_[t] == kCopy;
+    has_flips_ = false;
+    std::vector<uint32_t> successors;
+    for (uint32_t a = 0; a < nv_in_ && !has_flips_; ++a) {
+      successors.clear();
+      for (uint32_t k = vt_start_[a]; k < vt_start_[a + 1]; ++k) {
+        const uint32_t* v = &tris_[3 * size_t(vt_[k])];
+        const int j = v[0] == a ? 0 : (v[1] == a ? 1 : 2);
+        successors.push_back(v[(j + 1) % 3]);
+      }
+      std::sort(successors.begin(), successors.end());
+      has_flips_ = std::adjacent_find(successors.begin(), successors.end()) != successors.end();
+    }
+    enc_.EncodeBits(has_flips_ ? 1 : 0, 1);
+    enc_.EncodeBits(has_copies_ ? 1 : 0, 1);
     new_of_old_.assign(nv_in_, kNone);
     visited_.assign(nt_, 0);
     out_.triangles.reserve(nt_ * 3);
@@ -109,7 +128,7 @@ class Encoder {
         }
         if (!done) EncodeEG(enc_, m_->other_ref, front_.num_vertices() - 1 - c);
       }
-      enc_.Encode(flip, m_->flip);
+      if (has_flips_) enc_.Encode(flip, m_->flip);
       visited_[found] = 1;
       front_.Attach(g, uint32_t(out_.source.size()), a, b, c, flip != 0);
       if (flip) {
@@ -204,6 +223,7 @@ class Encoder {
   void Emit(size_t t, uint32_t x, uint32_t y, uint32_t z) {
     Push(x, y, z);
     out_.source.push_back(uint32_t(t));
+    if (!has_copies_) return;
     uint32_t count = 0;
     for (uint32_t q = first_copy_[t]; q != kNone; q = next_copy_[q]) ++count;
     EncodeEG(enc_, m_->copies, count);
@@ -233,6 +253,7 @@ class Encoder {
   std::vector<uint32_t> first_copy_, next_copy_, degenerate_;
   std::vector<uint32_t> vt_start_, vt_;
   std::vector<uint32_t> new_of_old_;
+  bool has_flips_ = false, has_copies_ = false;
 };
 
 }  // namespace
