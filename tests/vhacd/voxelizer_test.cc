@@ -35,6 +35,12 @@ TEST(VoxelizerTest, ChooseGridGivesAboutTheResolution) {
   const GridPlacement flat = ChooseGrid(Vec3(0, 0, 0), Vec3(1, 1, 0), 10000);
   EXPECT_EQ(flat.dims[2], 3);
   EXPECT_GT(flat.dims[0], 50);
+  // Padding included, a flat box stays within twice the resolution.
+  const GridPlacement big = ChooseGrid(Vec3(0, 0, 0), Vec3(1, 1, 0), 64000000);
+  EXPECT_LE(static_cast<double>(big.dims[0]) * big.dims[1] * big.dims[2], 2.0 * 64000000);
+  const GridPlacement line = ChooseGrid(Vec3(0, 0, 0), Vec3(1, 0, 0), 64000000);
+  EXPECT_LE(line.dims[0], 30002);
+  EXPECT_LE(static_cast<double>(line.dims[0]) * line.dims[1] * line.dims[2], 2.0 * 64000000);
 }
 
 TEST(VoxelizerTest, ClosedBoxIsFilled) {

@@ -22,12 +22,20 @@ GridPlacement ChooseGrid(const Vec3& bmin, const Vec3& bmax, uint32_t resolution
   // Voxel coordinates are 16-bit (and the exact hull needs them small): at most 30000 per axis.
   h = std::max(h, ext.maxCoeff() / 30000.0);
   GridPlacement g;
-  g.h = h;
-  for (int a = 0; a < 3; ++a) {
-    const int n = std::max(1, static_cast<int>(std::ceil(ext[a] / h - 1e-9)));
-    g.dims[a] = n + 2;
-    const double center = 0.5 * (bmin[a] + bmax[a]);
-    g.origin[a] = center - 0.5 * g.dims[a] * h;
+  for (int attempt = 0; attempt < 20; ++attempt) {
+    g.h = h;
+    double total = 1.0;
+    for (int a = 0; a < 3; ++a) {
+      const int n = std::max(1, static_cast<int>(std::ceil(ext[a] / h - 1e-9)));
+      g.dims[a] = n + 2;
+      const double center = 0.5 * (bmin[a] + bmax[a]);
+      g.origin[a] = center - 0.5 * g.dims[a] * h;
+      total *= g.dims[a];
+    }
+    // Flat or thin boxes: the padding layers would multiply the voxel count; coarsen until the
+    // grid, padding included, stays within twice the requested resolution.
+    if (total <= 2.0 * res) break;
+    h *= std::sqrt(total / (2.0 * res));
   }
   return g;
 }
