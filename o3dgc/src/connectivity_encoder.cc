@@ -2,7 +2,6 @@
 #include "connectivity_encoder.h"
 
 #include <algorithm>
-#include <array>
 #include <memory>
 
 #include "connectivity_front.h"

@@ -1,7 +1,6 @@
 // Top-level encoder: validation, position welding, and the sequence of payload parts
 // (see payload_header.h for the layout; decoder.cc mirrors every step).
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstring>
 #include <memory>

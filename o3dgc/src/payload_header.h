@@ -24,7 +24,7 @@ namespace o3dgc {
 struct AttributeDesc {
   Semantic semantic = Semantic::kGeneric;
   uint32_t dimension = 0;
-  int bits = 0;            // 0 for int attributes and octahedral normals use `bits` too
+  int bits = 0;            // quantization bits (octahedral bits for surface-normal normals; 0 for ints)
   Prediction prediction = Prediction::kNone;
   RangeMode range = RangeMode::kPerAxis;
   Quantizer quant;         // unused for ints and surface-normal normals
