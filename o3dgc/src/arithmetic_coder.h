@@ -23,21 +23,27 @@ struct BitModel {
   static constexpr int kSlowShift = 7;
   static constexpr int kFastShift = 3;
 
-  uint32_t p0() const { return (uint32_t(slow) + fast + 1) >> 1; }
-  static int32_t Step(int32_t p, int bit, int shift) {
-    // Moves by (target - p) / 2^shift rounded away from p, so the estimate reaches the clamp.
-    const int32_t target = bit ? 0 : 65536 + (1 << shift) - 1;
-    p += (target - p) >> shift;
-    p = p < kMinProb ? kMinProb : p;
-    return p > 65536 - kMinProb ? 65536 - kMinProb : p;
+  // The mixed estimate, clamped so that no decision costs less than ~0.001 bits.
+  uint32_t p0() const {
+    const uint32_t p = (uint32_t(slow) + fast + 1) >> 1;
+    return p < uint32_t(kMinProb) ? uint32_t(kMinProb)
+                                  : (p > uint32_t(65536 - kMinProb) ? uint32_t(65536 - kMinProb) : p);
+  }
+  // Moves p by (target - p) / 2^shift rounded towards the target; stays within [0, 65535].
+  static uint32_t Step(uint32_t p, int bit, int shift) {
+    return bit ? p - ((p + (1u << shift) - 1) >> shift) : p + ((65535 - p + (1u << shift) - 1) >> shift);
   }
   void Update(int bit) {
     static constexpr uint8_t kShift[] = {2, 2, 3, 3, 3, 4, 4, 4, 4, 4, 5, 5, 5, 5, 5, 5, 5, 5, 5, 5,
                                          6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6};
-    int shift = kSlowShift;
-    if (n < sizeof(kShift)) shift = kShift[n++];
-    slow = uint16_t(Step(slow, bit, shift));
-    fast = uint16_t(Step(fast, bit, shift < kFastShift ? shift : kFastShift));
+    if (n < sizeof(kShift)) {
+      const int shift = kShift[n++];
+      slow = uint16_t(Step(slow, bit, shift));
+      fast = uint16_t(Step(fast, bit, shift < kFastShift ? shift : kFastShift));
+    } else {
+      slow = uint16_t(Step(slow, bit, kSlowShift));
+      fast = uint16_t(Step(fast, bit, kFastShift));
+    }
   }
 };
 
