@@ -152,14 +152,14 @@ class Front {
   // Neighbour relation found while coding: for triangle t and slot k (the edge opposite corner k),
   // opposite()[3t+k] is the neighbour's triangle * 4 + slot, or kNoEdge. Sized for `triangles`.
   std::vector<uint32_t> TakeOpposite(size_t triangles) {
-    opp_.resize(3 * triangles, kNoEdge);
+    opp_.resize(3 * triangles, kNoEdge);  // grows with kNoEdge, or drops the spare capacity
     return std::move(opp_);
   }
 
  private:
   void Link(uint32_t e1, uint32_t e2) {
     const size_t need = 3 * size_t((e1 > e2 ? e1 : e2) / 4 + 1);
-    if (opp_.size() < need) opp_.resize(need, kNoEdge);
+    if (opp_.size() < need) opp_.resize(need > 2 * opp_.size() ? need : 2 * opp_.size(), kNoEdge);
     opp_[3 * size_t(e1 / 4) + e1 % 4] = e2;
     opp_[3 * size_t(e2 / 4) + e2 % 4] = e1;
   }

@@ -58,8 +58,9 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
   // Seams.
   std::unique_ptr<SideModels> sm(new SideModels);
   std::vector<uint32_t> split_count(nc), split_base(size_t(nc) + 1, 0);
+  const bool has_seams = dec.DecodeBits(1) != 0;
   for (uint32_t w = 0; w < nc; ++w) {
-    const uint64_t k = DecodeEG(dec, sm->seam_count) + 1;
+    const uint64_t k = has_seams ? DecodeEG(dec, sm->seam_count) + 1 : 1;
     if (k > nv || split_base[w] + k > nv) return Status::kCorrupt;
     split_count[w] = uint32_t(k);
     split_base[w + 1] = split_base[w] + uint32_t(k);

@@ -212,7 +212,12 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
   for (size_t v = 0; v < nv; ++v) {
     if (weld[v] != kNone) ++split_count[welded_new[weld[v]]];
   }
-  for (uint32_t w = 0; w < nc; ++w) EncodeEG(enc, sm->seam_count, split_count[w] - 1);
+  bool has_seams = false;
+  for (uint32_t w = 0; w < nc && !has_seams; ++w) has_seams = split_count[w] > 1;
+  enc.EncodeBits(has_seams ? 1 : 0, 1);
+  if (has_seams) {
+    for (uint32_t w = 0; w < nc; ++w) EncodeEG(enc, sm->seam_count, split_count[w] - 1);
+  }
   std::vector<uint32_t> orig_new(nv, kNone), split_index(nv, kNone);
   std::vector<uint32_t> seen(nc, 0), last(nc, 0);
   std::vector<uint32_t> old_of_orig;  // original vertex of each new vertex id

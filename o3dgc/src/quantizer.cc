@@ -54,11 +54,6 @@ int32_t Quantizer::Quantize(float x, uint32_t c) const {
 }
 
 
-float Quantizer::Dequantize(int32_t q, uint32_t c) const {
-  if (!(range[c] > 0)) return min[c];
-  return float(double(min[c]) + double(q) * (double(range[c]) / double(max_q())));
-}
-
 bool Quantizer::Valid() const {
   for (uint32_t c = 0; c < dimension; ++c) {
     if (!std::isfinite(min[c]) || !std::isfinite(range[c]) || range[c] < 0) return false;

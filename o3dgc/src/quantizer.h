@@ -25,7 +25,11 @@ struct Quantizer {
   // Sets min/range from `count` vectors of `dimension` floats at data + i * stride bytes.
   void Fit(const float* data, size_t stride, size_t count);
   int32_t Quantize(float x, uint32_t component) const;
-  float Dequantize(int32_t q, uint32_t component) const;
+  float Dequantize(int32_t q, uint32_t component) const {
+    if (!(range[component] > 0)) return min[component];
+    return float(double(min[component]) +
+                 double(q) * (double(range[component]) / double(max_q())));
+  }
   // True if min/range are finite, range >= 0 and min + range is finite (decoder-side check).
   bool Valid() const;
 };
