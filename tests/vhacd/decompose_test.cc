@@ -351,6 +351,26 @@ TEST(DecomposeTest, HullBudgetAndVertexLimitAreHonoured) {
   EXPECT_EQ(vhacd_test::CheckHulls(r.hulls, 1e-6 * 2.7), "");
 }
 
+TEST(DecomposeTest, PresetsAndPureVolumeCriterion) {
+  const Mesh torus = vhacd_test::Torus(1.0, 0.3, 32, 16);
+  vhacd::Parameters p = Fast();
+  const vhacd::Result def = vhacd::Decompose(torus.View(), p);
+  p.max_distance = 0.0;  // V-HACD 2.0 behaviour: volume concavity only
+  const vhacd::Result pure = vhacd::Decompose(torus.View(), p);
+  vhacd::Parameters high = vhacd::Parameters::High();
+  high.resolution = 100000;
+  high.num_threads = 2;
+  const vhacd::Result hi = vhacd::Decompose(torus.View(), high);
+  ASSERT_TRUE(def.ok() && pure.ok() && hi.ok());
+  for (const vhacd::Result* r : {&def, &pure, &hi}) {
+    EXPECT_EQ(vhacd_test::CheckHulls(r->hulls, 1e-6 * 2.7), "");
+    EXPECT_FALSE(vhacd_test::InsideAnyHull(r->hulls, 0, 0, 0, 0.0));
+  }
+  // The distance criterion bounds how far hulls stick out; the finer preset does better.
+  EXPECT_LE(def.report.hausdorff_hulls_to_mesh, 0.03 + 0.02);
+  EXPECT_LE(hi.report.concavity, def.report.concavity + 1e-9);
+}
+
 TEST(DecomposeTest, FloatInputAndStridesAndPca) {
   const Mesh l = vhacd_test::LBlock();
   std::vector<float> pf;
