@@ -315,6 +315,7 @@ TEST(RoundTrip, DeterministicAndStreamInfoAddsUp) {
   EXPECT_GT(info.positions, 0u);
   EXPECT_GT(info.normals, 0u);
   ASSERT_EQ(info.float_attributes.size(), 0u);
+  EXPECT_EQ(info.groups, 0u);  // no groups in this mesh
   const size_t sum = info.header + info.connectivity + info.positions + info.normals + info.groups;
   EXPECT_LE(sum, a.size() + 8);
   EXPECT_GE(sum + 8, a.size());
