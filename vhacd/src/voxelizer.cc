@@ -143,26 +143,56 @@ bool Voxelize(const GridMesh& mesh, const int dims[3], Context* ctx, VoxelGrid* 
     std::unique_ptr<std::atomic<uint8_t>[]> marks(new std::atomic<uint8_t>[nvox]);
     for (size_t i = 0; i < nvox; ++i) marks[i].store(0, std::memory_order_relaxed);
     const double half = 0.5 + 1e-9;
+    // Triangles whose box spans many voxels are done later, in parallel slabs of z.
+    const double kBig = 65536.0;
+    std::vector<std::vector<uint32_t>> big(nchunks);
+    // Marks the voxels of triangle t's box, restricted to [slo, shi] on the box's longest axis
+    // (slo = -1: the whole box, deferring big triangles to the slab pass).
+    auto mark_range = [&](size_t t, int slo, int shi, size_t chunk) {
+      const Vec3& a = mesh.points[mesh.triangles[t][0]];
+      const Vec3& b = mesh.points[mesh.triangles[t][1]];
+      const Vec3& d = mesh.points[mesh.triangles[t][2]];
+      int lo[3], hi[3];
+      for (int k = 0; k < 3; ++k) {
+        lo[k] = std::clamp(static_cast<int>(std::floor(std::min({a[k], b[k], d[k]}) - 1e-9)), 0, dims[k] - 1);
+        hi[k] = std::clamp(static_cast<int>(std::floor(std::max({a[k], b[k], d[k]}) + 1e-9)), 0, dims[k] - 1);
+      }
+      if (slo < 0) {
+        if (static_cast<double>(hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1) > kBig) {
+          big[chunk].push_back(static_cast<uint32_t>(t));
+          return;
+        }
+      } else {
+        int axis = 0;
+        for (int k = 1; k < 3; ++k)
+          if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
+        const int base = lo[axis];
+        lo[axis] = base + slo;
+        hi[axis] = std::min(hi[axis], base + shi);
+      }
+      for (int z = lo[2]; z <= hi[2]; ++z)
+        for (int y = lo[1]; y <= hi[1]; ++y)
+          for (int x = lo[0]; x <= hi[0]; ++x) {
+            const size_t idx = grid->Index(x, y, z);
+            if (marks[idx].load(std::memory_order_relaxed)) continue;
+            if (TriangleBoxOverlap(Vec3(x + 0.5, y + 0.5, z + 0.5), half, a, b, d))
+              marks[idx].store(1, std::memory_order_relaxed);
+          }
+    };
     bool ok = ParallelFor(ctx, nchunks, [&](size_t c) {
       const size_t end = std::min(ntri, (c + 1) * kChunk);
-      for (size_t t = c * kChunk; t < end; ++t) {
-        const Vec3& a = mesh.points[mesh.triangles[t][0]];
-        const Vec3& b = mesh.points[mesh.triangles[t][1]];
-        const Vec3& d = mesh.points[mesh.triangles[t][2]];
-        int lo[3], hi[3];
-        for (int k = 0; k < 3; ++k) {
-          lo[k] = std::clamp(static_cast<int>(std::floor(std::min({a[k], b[k], d[k]}) - 1e-9)), 0, dims[k] - 1);
-          hi[k] = std::clamp(static_cast<int>(std::floor(std::max({a[k], b[k], d[k]}) + 1e-9)), 0, dims[k] - 1);
-        }
-        for (int z = lo[2]; z <= hi[2]; ++z)
-          for (int y = lo[1]; y <= hi[1]; ++y)
-            for (int x = lo[0]; x <= hi[0]; ++x) {
-              const size_t idx = grid->Index(x, y, z);
-              if (marks[idx].load(std::memory_order_relaxed)) continue;
-              if (TriangleBoxOverlap(Vec3(x + 0.5, y + 0.5, z + 0.5), half, a, b, d))
-                marks[idx].store(1, std::memory_order_relaxed);
-            }
-      }
+      for (size_t t = c * kChunk; t < end; ++t) mark_range(t, -1, -1, c);
+    });
+    if (!ok) return false;
+    std::vector<uint32_t> big_all;
+    for (const auto& b : big) big_all.insert(big_all.end(), b.begin(), b.end());
+    // Slabs of kSlab layers along each big triangle's longest box axis (offsets from its box).
+    const int kSlab = 8;
+    const int longest = std::max({dims[0], dims[1], dims[2]});
+    const size_t slabs = static_cast<size_t>((longest + kSlab - 1) / kSlab);
+    ok = ParallelFor(ctx, big_all.size() * slabs, [&](size_t task) {
+      const int s = static_cast<int>(task % slabs);
+      mark_range(big_all[task / slabs], s * kSlab, s * kSlab + kSlab - 1, 0);
     });
     if (!ok) return false;
     grid->cell.assign(nvox, kCellOutside);
@@ -188,7 +218,9 @@ bool Voxelize(const GridMesh& mesh, const int dims[3], Context* ctx, VoxelGrid* 
           if (x == 0 || y == 0 || z == 0 || x == dims[0] - 1 || y == dims[1] - 1 || z == dims[2] - 1)
             push(x, y, z);
     const size_t sx = 1, sy = dims[0], sz = static_cast<size_t>(dims[0]) * dims[1];
+    size_t popped = 0;
     while (!stack.empty()) {
+      if ((++popped & 0xfffff) == 0 && ctx->Cancelled()) return false;
       const size_t i = stack.back();
       stack.pop_back();
       const int x = static_cast<int>(i % sy), y = static_cast<int>((i / sy) % dims[1]),
@@ -216,25 +248,27 @@ bool Voxelize(const GridMesh& mesh, const int dims[3], Context* ctx, VoxelGrid* 
       CollectCrossings(mesh, dims, axis, c * kChunk, std::min(ntri, (c + 1) * kChunk), &parts[c]);
     });
     if (!ok) return false;
-    std::vector<Crossing> all;
-    size_t total = 0;
-    for (const auto& p : parts) total += p.size();
-    all.reserve(total);
-    for (auto& p : parts) {
-      all.insert(all.end(), p.begin(), p.end());
-      std::vector<Crossing>().swap(p);
-    }
-    std::sort(all.begin(), all.end());
+    // Bucket the crossings by line (counting sort), then sort each line's few crossings.
     const size_t nlines = static_cast<size_t>(dims[u]) * dims[v];
     std::vector<size_t> start(nlines + 1, 0);
-    for (const Crossing& c : all) ++start[c.line + 1];
+    for (const auto& p : parts)
+      for (const Crossing& c : p) ++start[c.line + 1];
     for (size_t l = 0; l < nlines; ++l) start[l + 1] += start[l];
+    std::vector<Crossing> all(start[nlines]);
+    {
+      std::vector<size_t> fill(start.begin(), start.end() - 1);
+      for (auto& p : parts) {
+        for (const Crossing& c : p) all[fill[c.line]++] = c;
+        std::vector<Crossing>().swap(p);
+      }
+    }
     const size_t kLineChunk = 256;
     ok = ParallelFor(ctx, (nlines + kLineChunk - 1) / kLineChunk, [&](size_t c) {
       const size_t end = std::min(nlines, (c + 1) * kLineChunk);
       for (size_t l = c * kLineChunk; l < end; ++l) {
         const size_t b = start[l], e = start[l + 1];
         if (b == e) continue;
+        std::sort(all.begin() + b, all.begin() + e);
         const size_t count = e - b;
         const int iu = static_cast<int>(l % dims[u]), iv = static_cast<int>(l / dims[u]);
         size_t below = 0;

@@ -8,7 +8,8 @@
 //   v->Release();
 //
 // Compute() returns false on any error (see GetStatus()/GetMessage() for why) and on cancellation.
-// Cancel() may be called from any thread while Compute() runs. Strides are in elements (>= 3).
+// Cancel() may be called from any thread while Compute() runs (a Cancel() before Compute() starts
+// is forgotten: Compute() clears the flag). Strides are in elements (>= 3).
 #ifndef VHACD_IVHACD_H_
 #define VHACD_IVHACD_H_
 
