@@ -12,11 +12,13 @@ JOBS=$(nproc 2>/dev/null || echo 2)
 # Debian packages the build and the tests need (keep sorted).
 PACKAGES=(
   chromium
+  clang
   cmake
   emscripten
   g++
   libassimp-dev
   libbullet-dev
+  libclang-rt-14-dev
   libeigen3-dev
   libgmock-dev
   libgtest-dev
@@ -98,6 +100,11 @@ case "${1:-}" in
     configure_and_build
     build_web
     ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS"
+    # A short libFuzzer run of every decoder and parser (clang, ASan+UBSan); HULLPACK_FUZZ_SECONDS
+    # per target (0 skips it).
+    if [ "${HULLPACK_FUZZ_SECONDS:-30}" != 0 ]; then
+      tests/fuzz/run_fuzzers.sh "${HULLPACK_FUZZ_SECONDS:-30}"
+    fi
     ;;
   *)
     echo "usage: ./setup.sh demo|test" >&2

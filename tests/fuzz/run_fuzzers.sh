@@ -17,13 +17,22 @@ if [ ! -f "$build/CMakeCache.txt" ]; then
 fi
 cmake --build "$build" -j "$(nproc)" >/dev/null
 mkdir -p "$build/artifacts"
+# Seeds for the binary formats come from this build's own encoder, so they follow the stream format.
+gen=$build/generated-seeds
+mkdir -p "$gen/o3dgc_decoder_fuzzer" "$gen/packed_glb_fuzzer"
+cp samples/torus.obj "$gen/torus.obj"
+"$build/tools/test_o3dgc/test_o3dgc" -c -i "$gen/torus.obj" -st binary -qc 8 >/dev/null && mv "$gen/torus.s3d" "$gen/o3dgc_decoder_fuzzer/binary.s3d"
+"$build/tools/test_o3dgc/test_o3dgc" -c -i "$gen/torus.obj" -st ascii -qc 8 >/dev/null && mv "$gen/torus.s3d" "$gen/o3dgc_decoder_fuzzer/ascii.s3d"
+"$build/tools/hullpack/hullpack" pack "$gen/torus.obj" -o "$gen/packed_glb_fuzzer/hulls.glb" --force --quiet --max-error 0.01 --resolution 10000 >/dev/null
+"$build/tools/hullpack/hullpack" pack "$gen/torus.obj" -o "$gen/packed_glb_fuzzer/fallback.glb" --force --quiet --hulls none --fallback --max-error 0.01 >/dev/null
 status=0
 for target in $(ls "$build/tools/fuzz/" | grep '_fuzzer$'); do
-  seeds=tests/fuzz/seeds/$target
+  seeds=()
+  for dir in "tests/fuzz/seeds/$target" "$gen/$target"; do [ -d "$dir" ] && seeds+=("$dir"); done
   corpus=$build/corpus/$target
   mkdir -p "$corpus"
   log=$build/$target.log
-  if "$build/tools/fuzz/$target" "$corpus" "$seeds" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+  if "$build/tools/fuzz/$target" "$corpus" "${seeds[@]}" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
       -artifact_prefix="$build/artifacts/$target-" -print_final_stats=1 >"$log" 2>&1; then
     runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo '?')
     echo "fuzz $target: ok, $runs executions in ${seconds}s"
