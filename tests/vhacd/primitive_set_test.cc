@@ -50,6 +50,24 @@ TEST(PrimitiveSetTest, SideHullsSplitAtThePlane) {
   EXPECT_LE(ExactHullVolume(pts), 4.0 * 4 * 3);
 }
 
+TEST(PrimitiveSetTest, SparseWidePartsUseDirectEmission) {
+  Part p;
+  Voxel a, b;
+  a.c[0] = a.c[1] = a.c[2] = 1;
+  b.c[0] = b.c[1] = 2000;
+  b.c[2] = 1;
+  a.surface = b.surface = 1;
+  p.voxels = {a, b};
+  p.ComputeBounds();
+  // Hull of two unit cubes 1999 apart along (1, 1, 0): 1 + sqrt(2) * 1999 * sqrt(2).
+  const AxisLines lines = BuildAxisLines(p, 2);
+  std::vector<Vec3> pts;
+  SideHullPoints(lines, 2, true, 1, &pts);
+  EXPECT_DOUBLE_EQ(ExactHullVolume(pts), 3999.0);
+  PartHullPoints(p, false, &pts);
+  EXPECT_DOUBLE_EQ(ExactHullVolume(pts), 3999.0);
+}
+
 }  // namespace
 }  // namespace internal
 }  // namespace vhacd

@@ -78,8 +78,8 @@ bool DistanceField::Build(const VoxelGrid& grid, Context* ctx) {
         }))
       return false;
   }
-  d_.resize(n);
-  for (size_t i = 0; i < n; ++i) d_[i] = std::isfinite(sq[i]) ? std::sqrt(sq[i]) : 1e6f;
+  for (float& s : sq) s = std::isfinite(s) ? std::sqrt(s) : 1e6f;  // in place: no second array
+  d_ = std::move(sq);
   return true;
 }
 

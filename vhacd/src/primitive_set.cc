@@ -31,23 +31,22 @@ inline Vec3 MakePoint(int axis, double along, double pu, double pv) {
   return p;
 }
 
-inline void AddFace(int axis, int along, int u, int v, std::vector<Vec3>* out, int width = 1) {
-  out->push_back(MakePoint(axis, along, u, v));
-  out->push_back(MakePoint(axis, along, u + width, v));
-  out->push_back(MakePoint(axis, along, u, v + width));
-  out->push_back(MakePoint(axis, along, u + width, v + width));
-}
 // The corners of the line faces, keyed by their (u, v) grid position: only the lowest and the
 // highest face along the axis at each position can be a hull vertex, so each position yields at
 // most two points (instead of up to eight from the four lines sharing it).
 class CornerSet {
  public:
-  CornerSet(int axis, int umin, int umax, int vmin, int vmax, int step) : axis_(axis), step_(step) {
+  // `lines` bounds the number of Add() calls: when the (u, v) grid would be much larger than the
+  // lines it holds (a sparse, wide part), faces are emitted directly instead.
+  CornerSet(int axis, int umin, int umax, int vmin, int vmax, int step, size_t lines, std::vector<Vec3>* out)
+      : axis_(axis), step_(step), out_(out) {
     u0_ = umin - ((umin % step) + step) % step;
     v0_ = vmin - ((vmin % step) + step) % step;
     nu_ = (umax - u0_) / step + 2;
     nv_ = (vmax - v0_) / step + 2;
     const size_t n = static_cast<size_t>(nu_) * nv_;
+    direct_ = n > 16 * lines + 4096;
+    if (direct_) return;
     thread_local std::vector<int> lo_buf, hi_buf;
     lo_buf.assign(n, kNone);
     hi_buf.assign(n, -kNone);
@@ -56,6 +55,12 @@ class CornerSet {
   }
   // A line at (u, v) whose faces are at `lo` and `hi` along the axis.
   void Add(int u, int v, int lo, int hi) {
+    if (direct_) {
+      for (int along : {lo, hi})
+        for (int dv = 0; dv <= step_; dv += step_)
+          for (int du = 0; du <= step_; du += step_) out_->push_back(MakePoint(axis_, along, u + du, v + dv));
+      return;
+    }
     const int iu = (u - u0_) / step_, iv = (v - v0_) / step_;
     for (int dv = 0; dv < 2; ++dv)
       for (int du = 0; du < 2; ++du) {
@@ -64,7 +69,9 @@ class CornerSet {
         hi_[k] = std::max(hi_[k], hi);
       }
   }
-  void Emit(std::vector<Vec3>* out) const {
+  void Emit() const {
+    if (direct_) return;
+    std::vector<Vec3>* out = out_;
     for (int iv = 0; iv < nv_; ++iv)
       for (int iu = 0; iu < nu_; ++iu) {
         const size_t k = static_cast<size_t>(iv) * nu_ + iu;
@@ -78,8 +85,10 @@ class CornerSet {
  private:
   static constexpr int kNone = 1 << 30;
   int axis_, step_, u0_, v0_, nu_, nv_;
-  int* lo_;
-  int* hi_;
+  std::vector<Vec3>* out_;
+  bool direct_ = false;
+  int* lo_ = nullptr;
+  int* hi_ = nullptr;
 };
 
 }  // namespace
@@ -118,7 +127,7 @@ void SideHullPoints(const AxisLines& L, int c, bool left, int downsample, std::v
   out->clear();
   double count = 0.0;
   const int ds = std::max(1, downsample);
-  CornerSet corners(L.axis, L.umin, L.umax, L.vmin, L.vmax, ds);
+  CornerSet corners(L.axis, L.umin, L.umax, L.vmin, L.vmax, ds, L.line_count(), out);
   for (size_t l = 0; l < L.line_count(); ++l) {
     if (ds > 1 && (L.lu[l] % ds != 0 || L.lv[l] % ds != 0)) continue;
     const uint16_t* b = L.coords.data() + L.start[l];
@@ -137,7 +146,7 @@ void SideHullPoints(const AxisLines& L, int c, bool left, int downsample, std::v
     corners.Add(L.lu[l], L.lv[l], lo, hi + 1);
     count += left ? static_cast<double>(split - b) : static_cast<double>(e - split);
   }
-  corners.Emit(out);
+  corners.Emit();
   if (volume != nullptr) *volume = count * ds * ds;
 }
 
@@ -149,7 +158,7 @@ void PartHullPoints(const Part& part, bool interior_only, std::vector<Vec3>* out
     if (!interior_only || !v.surface) keys.push_back(LineKey(v, 0));
   if (keys.empty()) return;
   std::sort(keys.begin(), keys.end());
-  CornerSet corners(0, part.bmin[1], part.bmax[1], part.bmin[2], part.bmax[2], 1);
+  CornerSet corners(0, part.bmin[1], part.bmax[1], part.bmin[2], part.bmax[2], 1, keys.size(), out);
   for (size_t i = 0; i < keys.size();) {
     size_t j = i;
     while (j + 1 < keys.size() && (keys[j + 1] >> 16) == (keys[i] >> 16)) ++j;
@@ -157,7 +166,7 @@ void PartHullPoints(const Part& part, bool interior_only, std::vector<Vec3>* out
     corners.Add(u, v, static_cast<int>(keys[i] & 0xffff), static_cast<int>(keys[j] & 0xffff) + 1);
     i = j + 1;
   }
-  corners.Emit(out);
+  corners.Emit();
 }
 
 double ExactHullVolume(const std::vector<Vec3>& points) {

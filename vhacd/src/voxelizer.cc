@@ -250,18 +250,17 @@ bool Voxelize(const GridMesh& mesh, const int dims[3], Context* ctx, VoxelGrid* 
     if (!ok) return false;
     // Bucket the crossings by line (counting sort), then sort each line's few crossings.
     const size_t nlines = static_cast<size_t>(dims[u]) * dims[v];
-    std::vector<size_t> start(nlines + 1, 0);
+    std::vector<uint32_t> start(nlines + 1, 0);  // fewer than 2^32 crossings: one per line and triangle pair
     for (const auto& p : parts)
       for (const Crossing& c : p) ++start[c.line + 1];
     for (size_t l = 0; l < nlines; ++l) start[l + 1] += start[l];
     std::vector<Crossing> all(start[nlines]);
-    {
-      std::vector<size_t> fill(start.begin(), start.end() - 1);
-      for (auto& p : parts) {
-        for (const Crossing& c : p) all[fill[c.line]++] = c;
-        std::vector<Crossing>().swap(p);
-      }
+    for (auto& p : parts) {  // start[l] serves as line l's write cursor, then is shifted back
+      for (const Crossing& c : p) all[start[c.line]++] = c;
+      std::vector<Crossing>().swap(p);
     }
+    for (size_t l = nlines; l > 0; --l) start[l] = start[l - 1];
+    start[0] = 0;
     const size_t kLineChunk = 256;
     ok = ParallelFor(ctx, (nlines + kLineChunk - 1) / kLineChunk, [&](size_t c) {
       const size_t end = std::min(nlines, (c + 1) * kLineChunk);
