@@ -103,7 +103,7 @@ struct InputMesh {
   bool closed = false;
 };
 
-Status ReadMesh(const MeshView& m, InputMesh* out, std::string* why) {
+Status ReadMesh(const MeshView& m, internal::Context* ctx, InputMesh* out, std::string* why) {
   if (m.point_count == 0 || m.triangle_count == 0) {
     *why = "the mesh has no points or no triangles";
     return Status::kEmptyMesh;
@@ -147,6 +147,12 @@ Status ReadMesh(const MeshView& m, InputMesh* out, std::string* why) {
       *why = "point " + std::to_string(i) + " has a non-finite coordinate";
       return Status::kInvalidMesh;
     }
+  auto cancelled = [&]() {
+    if (!ctx->Cancelled()) return false;
+    *why = "cancelled";
+    return true;
+  };
+  if (cancelled()) return Status::kCancelled;
   // Weld bit-identical positions (deterministic: sorted order).
   std::vector<uint32_t> order;
   for (uint32_t i = 0; i < np; ++i)
@@ -162,6 +168,7 @@ Status ReadMesh(const MeshView& m, InputMesh* out, std::string* why) {
     if (k == 0 || pts[order[k]] != pts[order[k - 1]]) out->points.push_back(pts[order[k]]);
     remap[order[k]] = static_cast<uint32_t>(out->points.size() - 1);
   }
+  if (cancelled()) return Status::kCancelled;
   // Triangles: drop degenerate and duplicate (same vertex set) ones, keep the first.
   std::vector<std::pair<std::array<uint32_t, 3>, uint32_t>> keyed;
   for (size_t t = 0; t < m.triangle_count; ++t) {
@@ -186,6 +193,7 @@ Status ReadMesh(const MeshView& m, InputMesh* out, std::string* why) {
     *why = "every triangle is degenerate";
     return Status::kEmptyMesh;
   }
+  if (cancelled()) return Status::kCancelled;
   // Closed: every undirected edge used by exactly two triangles.
   std::vector<uint64_t> edges;
   edges.reserve(out->triangles.size() * 3);
@@ -216,14 +224,13 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   if (st != Status::kOk) return Fail(st, why);
   if (params.mode == Mode::kTetrahedron)
     return Fail(Status::kUnsupported, "tetrahedron mode (mode 1) is not available in this build");
-  InputMesh input;
-  st = ReadMesh(view, &input, &why);
-  if (st != Status::kOk) return Fail(st, why);
-
   const int threads = params.num_threads > 0
                           ? static_cast<int>(params.num_threads)
                           : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   internal::Context ctx(observer, threads);
+  InputMesh input;
+  st = ReadMesh(view, &ctx, &input, &why);
+  if (st != Status::kOk) return Fail(st, why);
   Result result;
   Report& rep = result.report;
   rep.closed_input = input.closed;
