@@ -167,26 +167,30 @@ int PositionBitsForMaxError(double range, double max_error) {
   return std::clamp(bits, 1, 30);
 }
 
-double PositionRange(const Mesh& mesh) {
-  if (mesh.positions.empty()) return 0;
+namespace {
+
+// Per-axis extent of the positions (zero for an empty mesh).
+std::array<double, 3> Extent(const Mesh& mesh) {
+  if (mesh.positions.empty()) return {0, 0, 0};
   double lo[3], hi[3];
   for (int k = 0; k < 3; ++k) lo[k] = hi[k] = mesh.positions[k];
   for (size_t i = 0; i < mesh.positions.size(); ++i) {
     lo[i % 3] = std::min<double>(lo[i % 3], mesh.positions[i]);
     hi[i % 3] = std::max<double>(hi[i % 3], mesh.positions[i]);
   }
-  return std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+  return {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
+}
+
+}  // namespace
+
+double PositionRange(const Mesh& mesh) {
+  const std::array<double, 3> e = Extent(mesh);
+  return std::max({e[0], e[1], e[2]});
 }
 
 double BoundingBoxDiagonal(const Mesh& mesh) {
-  if (mesh.positions.empty()) return 0;
-  double lo[3], hi[3];
-  for (int k = 0; k < 3; ++k) lo[k] = hi[k] = mesh.positions[k];
-  for (size_t i = 0; i < mesh.positions.size(); ++i) {
-    lo[i % 3] = std::min<double>(lo[i % 3], mesh.positions[i]);
-    hi[i % 3] = std::max<double>(hi[i % 3], mesh.positions[i]);
-  }
-  return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  const std::array<double, 3> e = Extent(mesh);
+  return std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
 }
 
 namespace {

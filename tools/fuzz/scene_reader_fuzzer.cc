@@ -1,5 +1,6 @@
-// libFuzzer target: the project's own OFF parser must survive any bytes (no crash, no hang, no
-// sanitizer report) and whatever it accepts must be a consistent mesh.
+// libFuzzer target for the project's own text parsers, built once per format
+// (HULLPACK_FUZZ_FORMAT = kObj, kOff or kWrl): any bytes must give a Status or a mesh whose indices
+// are in range; never a crash, hang or sanitizer report.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -9,13 +10,13 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   hullpack::Result<hullpack::Scene> scene =
-      hullpack::ReadSceneFromMemory(data, size, hullpack::FileFormat::kOff, "fuzz.off");
+      hullpack::ReadSceneFromMemory(data, size, hullpack::FileFormat::HULLPACK_FUZZ_FORMAT, "fuzz");
   if (!scene.ok()) return 0;
   for (const hullpack::Mesh& mesh : scene.value().meshes) {
-    // Indices must be in range; non-finite coordinates are the validator's to report, not a bug.
     for (uint32_t index : mesh.indices) {
       if (index >= mesh.vertex_count()) std::abort();
     }
+    // Non-finite coordinates are the validator's to report, not a parser bug.
     (void)hullpack::ValidateMesh(mesh);
   }
   return 0;
