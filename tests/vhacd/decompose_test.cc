@@ -40,6 +40,23 @@ TEST(DecomposeTest, CubeGivesOneHullEqualToTheCube) {
   EXPECT_LT(r.report.concavity, 0.01);
 }
 
+TEST(DecomposeTest, SeparateComponentsAndTwoSidedFaces) {
+  // Two cubes far apart, every face also present with the opposite winding.
+  Mesh m = vhacd_test::Box(0, 0, 0, 1, 1, 1);
+  m.Append(vhacd_test::Box(3, 0.5, 0, 4, 1.5, 1));
+  const size_t n = m.triangle_count();
+  for (size_t t = 0; t < n; ++t) m.AddTriangle(m.indices[3 * t], m.indices[3 * t + 2], m.indices[3 * t + 1]);
+  const vhacd::Result r = vhacd::Decompose(m.View(), Fast());
+  ASSERT_TRUE(r.ok()) << r.message;
+  EXPECT_TRUE(r.report.closed_input);  // duplicates are dropped before the topology check
+  ASSERT_EQ(r.hulls.size(), 2u);
+  for (const auto& h : r.hulls) {
+    EXPECT_EQ(h.vertex_count(), 8u);
+    EXPECT_NEAR(h.volume, 1.0, 1e-9);
+  }
+  EXPECT_EQ(vhacd_test::CheckHulls(r.hulls, 1e-9), "");
+}
+
 double LBlockIoU(const std::vector<vhacd::ConvexHull>& hulls, double scale) {
   int inter = 0, uni = 0;
   const int n = 60;
