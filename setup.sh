@@ -19,6 +19,7 @@ PACKAGES=(
   libassimp-dev
   libbullet-dev
   libclang-rt-14-dev
+  libdraco-dev
   libeigen3-dev
   libgmock-dev
   libgtest-dev
