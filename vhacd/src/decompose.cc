@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <new>
 #include <string>
 #include <thread>
@@ -419,7 +420,8 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
       out.points.insert(out.points.end(), {w[0], w[1], w[2]});
     }
     for (const auto& t : hulls[i].triangles) out.triangles.insert(out.triangles.end(), {t[0], t[1], t[2]});
-    out.volume = hulls[i].Volume() * vol_scale;
+    // Volumes of extreme-scale inputs may leave the double range: clamp, never return Inf.
+    out.volume = std::min(hulls[i].Volume() * vol_scale, std::numeric_limits<double>::max());
     const Vec3 c = to_world(hulls[i].Centroid());
     for (int k = 0; k < 3; ++k) out.center[k] = c[k];
     bool finite = std::isfinite(out.volume) && c.allFinite();

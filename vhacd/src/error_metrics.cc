@@ -216,7 +216,7 @@ bool ComputeErrorReport(const MetricsInput& in, Context* ctx, Report* report) {
     mesh_area += 0.5 * (in.mesh->points[t[1]] - in.mesh->points[t[0]]).cross(in.mesh->points[t[2]] - in.mesh->points[t[0]]).norm();
   double cell = 3.0 * std::sqrt(2.0 * mesh_area / std::max<size_t>(1, in.mesh->triangles.size()));
   const double cells_at_one = static_cast<double>(grid.dims[0]) * grid.dims[1] * grid.dims[2];
-  cell = std::clamp(cell, std::cbrt(cells_at_one / 8e6), 4.0);
+  cell = std::clamp(cell, std::max(0.5, std::cbrt(cells_at_one / 8e6)), 4.0);
   TriangleLocator locator(*in.mesh, cell);
   chunk_max.assign((hs.size() + kChunk - 1) / kChunk, 0.0);
   if (!ParallelFor(ctx, chunk_max.size(), [&](size_t c) {
