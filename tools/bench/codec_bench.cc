@@ -4,20 +4,16 @@
 // error. Prints a table and writes CSV.
 //
 //   codec_bench FOLDER [--repeats 5] [--csv out.csv] [--qp 14] [--qn 10] [--qt 12]
-#include <draco/compression/decode.h>
-#include <draco/compression/encode.h>
-#include <draco/mesh/triangle_soup_mesh_builder.h>
-
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <dirent.h>
 #include <string>
 #include <vector>
 
+#include "bench/bench_util.h"
+#include "bench/draco_bridge.h"
 #include "common/file_util.h"
 #include "io/scene_io.h"
 #include "pipeline/mesh_codec.h"
@@ -25,24 +21,11 @@
 namespace {
 
 using hullpack::Mesh;
-using Clock = std::chrono::steady_clock;
 
 struct Settings {
   int repeats = 5, qp = 14, qn = 10, qt = 12;
   std::string csv;
 };
-
-template <typename F>
-double MedianMs(int repeats, F&& run) {
-  std::vector<double> ms;
-  for (int i = 0; i < repeats; ++i) {
-    const auto t0 = Clock::now();
-    run();
-    ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
-  }
-  std::sort(ms.begin(), ms.end());
-  return ms[ms.size() / 2];
-}
 
 // Every mesh of the file as one: the codecs compress one mesh at a time.
 Mesh Merge(const hullpack::Scene& scene) {
@@ -63,34 +46,6 @@ Mesh Merge(const hullpack::Scene& scene) {
   return out;
 }
 
-std::unique_ptr<draco::Mesh> ToDraco(const Mesh& m) {
-  draco::TriangleSoupMeshBuilder b;
-  b.Start(static_cast<int>(m.triangle_count()));
-  const int pos = b.AddAttribute(draco::GeometryAttribute::POSITION, 3, draco::DT_FLOAT32);
-  const int nrm = m.normals.empty() ? -1 : b.AddAttribute(draco::GeometryAttribute::NORMAL, 3, draco::DT_FLOAT32);
-  const int tex = m.uv_sets.empty() ? -1 : b.AddAttribute(draco::GeometryAttribute::TEX_COORD, 2, draco::DT_FLOAT32);
-  for (size_t t = 0; t < m.triangle_count(); ++t) {
-    const uint32_t* c = &m.indices[t * 3];
-    const draco::FaceIndex f(static_cast<uint32_t>(t));
-    b.SetAttributeValuesForFace(pos, f, &m.positions[c[0] * 3], &m.positions[c[1] * 3], &m.positions[c[2] * 3]);
-    if (nrm >= 0) b.SetAttributeValuesForFace(nrm, f, &m.normals[c[0] * 3], &m.normals[c[1] * 3], &m.normals[c[2] * 3]);
-    if (tex >= 0) {
-      const std::vector<float>& uv = m.uv_sets[0];
-      b.SetAttributeValuesForFace(tex, f, &uv[c[0] * 2], &uv[c[1] * 2], &uv[c[2] * 2]);
-    }
-  }
-  return b.Finalize();
-}
-
-Mesh PositionsOf(const draco::Mesh& d) {
-  Mesh m;
-  const draco::PointAttribute* att = d.GetNamedAttribute(draco::GeometryAttribute::POSITION);
-  if (!att) return m;
-  m.positions.resize(d.num_points() * 3);
-  for (uint32_t i = 0; i < d.num_points(); ++i) att->GetMappedValue(draco::PointIndex(i), &m.positions[i * 3]);
-  return m;
-}
-
 struct Row {
   std::string name;
   size_t triangles = 0, vertices = 0;
@@ -99,31 +54,16 @@ struct Row {
 };
 
 bool RunDraco(const Mesh& mesh, const Settings& s, int level, Row& row, int slot) {
-  std::unique_ptr<draco::Mesh> d = ToDraco(mesh);
+  std::unique_ptr<draco::Mesh> d = hullpack::ToDracoMesh(mesh);
   if (!d) return false;
-  draco::Encoder enc;
-  enc.SetAttributeQuantization(draco::GeometryAttribute::POSITION, s.qp);
-  enc.SetAttributeQuantization(draco::GeometryAttribute::NORMAL, s.qn);
-  enc.SetAttributeQuantization(draco::GeometryAttribute::TEX_COORD, s.qt);
-  enc.SetSpeedOptions(10 - level, 10 - level);
-  draco::EncoderBuffer buffer;
-  bool ok = true;
-  row.encode_ms[slot] = MedianMs(s.repeats, [&] {
-    buffer.Clear();
-    ok = ok && enc.EncodeMeshToBuffer(*d, &buffer).ok();
-  });
-  if (!ok) return false;
-  row.bytes[slot] = buffer.size();
-  std::unique_ptr<draco::Mesh> decoded;
-  row.decode_ms[slot] = MedianMs(s.repeats, [&] {
-    draco::DecoderBuffer in;
-    in.Init(buffer.data(), buffer.size());
-    draco::Decoder dec;
-    auto r = dec.DecodeMeshFromBuffer(&in);
-    if (r.ok()) decoded = std::move(r).value();
-  });
-  if (!decoded) return false;
-  row.error[slot] = hullpack::MaxVertexDistance(mesh, PositionsOf(*decoded));
+  std::vector<uint8_t> bytes;
+  row.encode_ms[slot] = hullpack::MedianMs(s.repeats, [&] { bytes = hullpack::DracoEncode(*d, s.qp, s.qn, s.qt, level); });
+  if (bytes.empty()) return false;
+  row.bytes[slot] = bytes.size();
+  Mesh decoded;
+  row.decode_ms[slot] = hullpack::MedianMs(s.repeats, [&] { decoded = hullpack::DracoDecodePositions(bytes); });
+  if (decoded.positions.empty()) return false;
+  row.error[slot] = hullpack::MaxVertexDistance(mesh, decoded);
   return true;
 }
 
@@ -133,11 +73,11 @@ bool RunOurs(const Mesh& mesh, const Settings& s, Row& row) {
   cs.normal_bits = s.qn;
   cs.uv_bits = s.qt;
   hullpack::Result<hullpack::EncodedMesh> encoded = hullpack::Status(hullpack::StatusCode::kInternal, "");
-  row.encode_ms[0] = MedianMs(s.repeats, [&] { encoded = hullpack::EncodeMesh(mesh, {}, cs); });
+  row.encode_ms[0] = hullpack::MedianMs(s.repeats, [&] { encoded = hullpack::EncodeMesh(mesh, {}, cs); });
   if (!encoded.ok()) return false;
   row.bytes[0] = encoded->stream.size();
   hullpack::Result<Mesh> decoded = hullpack::Status(hullpack::StatusCode::kInternal, "");
-  row.decode_ms[0] = MedianMs(s.repeats, [&] {
+  row.decode_ms[0] = hullpack::MedianMs(s.repeats, [&] {
     decoded = hullpack::DecodeMesh(encoded->stream.data(), encoded->stream.size(), nullptr, row.name);
   });
   if (!decoded.ok()) return false;
@@ -167,17 +107,10 @@ int main(int argc, char** argv) {
     }
   }
   std::vector<std::string> files;
-  if (DIR* dir = opendir(folder.c_str())) {
-    while (dirent* e = readdir(dir)) {
-      const std::string name = e->d_name;
-      if (hullpack::LowerExtension(name) == "obj") files.push_back(name);
-    }
-    closedir(dir);
-  } else {
+  if (!hullpack::ListFiles(folder, {"obj"}, &files)) {
     std::fprintf(stderr, "codec_bench: %s: cannot open folder\n", folder.c_str());
     return 1;
   }
-  std::sort(files.begin(), files.end());
   std::vector<Row> rows;
   std::printf("%-18s %8s %8s | %8s %8s %8s | %6s %6s | %6s %6s %6s | %6s %6s %6s | %9s %9s\n", "mesh", "tris", "verts",
               "ours B", "cl7 B", "cl10 B", "/cl7", "/cl10", "enc", "cl7", "cl10", "dec", "cl7", "cl10", "err ours",
