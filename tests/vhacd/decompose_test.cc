@@ -324,6 +324,21 @@ TEST(DecomposeTest, ScaledMeshGivesScaledHulls) {
   }
 }
 
+TEST(DecomposeTest, ExtremeScalesStayFinite) {
+  const Mesh l = vhacd_test::LBlock();
+  for (double s : {1e-150, 1e200}) {
+    const Mesh ls = l.Scaled(s);
+    const vhacd::Result r = vhacd::Decompose(ls.View(), Fast());
+    ASSERT_TRUE(r.ok()) << s << " " << r.message;
+    EXPECT_EQ(r.hulls.size(), 2u);
+    for (const auto& h : r.hulls) {
+      EXPECT_TRUE(std::isfinite(h.volume));
+      for (double v : h.points) EXPECT_TRUE(std::isfinite(v));
+    }
+    EXPECT_TRUE(std::isfinite(r.report.concavity));
+  }
+}
+
 class Recorder : public vhacd::Observer {
  public:
   std::vector<double> overall;

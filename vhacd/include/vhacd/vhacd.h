@@ -149,7 +149,7 @@ struct MeshView {
 struct ConvexHull {
   std::vector<double> points;       // 3 per vertex
   std::vector<uint32_t> triangles;  // 3 per triangle
-  double volume = 0.0;
+  double volume = 0.0;  // clamped to DBL_MAX; underflows to 0 for inputs smaller than ~1e-100
   double center[3] = {0.0, 0.0, 0.0};  // centroid of the solid
 
   size_t vertex_count() const { return points.size() / 3; }
