@@ -81,9 +81,10 @@ Result<EncodedMesh> EncodeMesh(const Mesh& mesh, const std::vector<uint32_t>& gr
   return out;
 }
 
-Result<Mesh> DecodeMesh(const uint8_t* data, size_t size, std::vector<uint32_t>* groups, const std::string& name) {
+Result<Mesh> DecodeMesh(const uint8_t* data, size_t size, std::vector<uint32_t>* groups, const std::string& name,
+                        o3dgc::StreamInfo* info) {
   o3dgc::DecodedMesh d;
-  const o3dgc::Status st = o3dgc::Decode(data, size, o3dgc::DecodeOptions(), &d);
+  const o3dgc::Status st = o3dgc::Decode(data, size, o3dgc::DecodeOptions(), &d, info);
   if (st != o3dgc::Status::kOk) {
     return Status(StatusCode::kParseError, name + ": compressed mesh stream: " + o3dgc::StatusName(st));
   }

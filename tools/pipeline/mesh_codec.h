@@ -41,9 +41,9 @@ Result<EncodedMesh> EncodeMesh(const Mesh& mesh, const std::vector<uint32_t>& gr
                                const MeshCodecSettings& settings);
 
 // Decodes a stream into a mesh (name, material ids left empty) and its triangle groups.
-// Safe on untrusted bytes; `name` prefixes error messages.
+// Safe on untrusted bytes; `name` prefixes error messages. `info` (may be null) gets the part sizes.
 Result<Mesh> DecodeMesh(const uint8_t* data, size_t size, std::vector<uint32_t>* groups,
-                        const std::string& name);
+                        const std::string& name, o3dgc::StreamInfo* info = nullptr);
 
 // The triangles whose group is `group`, with the vertices they use renumbered in increasing order
 // of their index in `mesh` (the HULLPACK_mesh_compression `group` rule).

@@ -11,12 +11,12 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <string>
 #include <vector>
 
+#include "common/file_util.h"
 #include "io/scene_io.h"
+#include "pipeline/mesh_codec.h"
 #include "o3dgc/o3dgc.h"
 #include "scene/scene.h"
 
@@ -63,25 +63,20 @@ void PrintParts(const o3dgc::StreamInfo& info, size_t nv) {
   line("total", info.total);
 }
 
-int Compress(const std::string& input, o3dgc::EncodeParams params, int uv_bits) {
-  hullpack::Result<hullpack::Scene> scene = hullpack::ReadScene(input);
-  if (!scene.ok()) {
-    std::fprintf(stderr, "%s\n", scene.status().ToString().c_str());
-    return 1;
-  }
-  // Merge every mesh into one; keep an attribute only if every mesh has it.
+// Every mesh of the scene as one; an attribute is kept only when every mesh has it, and material
+// ids become triangle groups.
+hullpack::Mesh MergeMeshes(const hullpack::Scene& scene) {
   hullpack::Mesh all;
-  bool normals = true, uvs = true, colors = true, skin = true, materials = false;
-  for (const hullpack::Mesh& m : scene->meshes) {
+  bool normals = !scene.meshes.empty(), uvs = normals, colors = normals, skin = normals, materials = false;
+  for (const hullpack::Mesh& m : scene.meshes) {
     normals = normals && !m.normals.empty();
     uvs = uvs && !m.uv_sets.empty();
     colors = colors && !m.colors.empty();
     skin = skin && m.has_skin();
     materials = materials || !m.material_ids.empty();
   }
-  if (scene->meshes.empty()) normals = uvs = colors = skin = false;
   all.uv_sets.resize(uvs ? 1 : 0);
-  for (const hullpack::Mesh& m : scene->meshes) {
+  for (const hullpack::Mesh& m : scene.meshes) {
     const uint32_t base = uint32_t(all.vertex_count());
     all.positions.insert(all.positions.end(), m.positions.begin(), m.positions.end());
     for (uint32_t i : m.indices) all.indices.push_back(base + i);
@@ -93,119 +88,85 @@ int Compress(const std::string& input, o3dgc::EncodeParams params, int uv_bits) 
       all.weights.insert(all.weights.end(), m.weights.begin(), m.weights.end());
     }
     if (materials) {
-      for (size_t t = 0; t < m.triangle_count(); ++t) {
-        all.material_ids.push_back(m.material_ids.empty() ? 0 : m.material_ids[t]);
-      }
+      for (size_t t = 0; t < m.triangle_count(); ++t) all.material_ids.push_back(m.material_ids.empty() ? 0 : m.material_ids[t]);
     }
   }
-  o3dgc::MeshView view;
-  view.positions = all.positions.data();
-  view.num_vertices = all.vertex_count();
-  view.indices = all.indices.data();
-  view.num_triangles = all.triangle_count();
-  if (normals) view.normals = all.normals.data();
-  if (uvs) {
-    o3dgc::FloatAttributeView a;
-    a.data = all.uv_sets[0].data();
-    a.dimension = 2;
-    a.semantic = o3dgc::Semantic::kTexCoord;
-    a.bits = uv_bits;
-    view.float_attributes.push_back(a);
-  }
-  if (colors) {
-    o3dgc::FloatAttributeView a;
-    a.data = all.colors.data();
-    a.dimension = 4;
-    a.semantic = o3dgc::Semantic::kColor;
-    a.bits = 8;
-    view.float_attributes.push_back(a);
-  }
-  std::vector<int32_t> joints(all.joints.begin(), all.joints.end());
-  if (skin) {
-    o3dgc::FloatAttributeView w;
-    w.data = all.weights.data();
-    w.dimension = 4;
-    w.semantic = o3dgc::Semantic::kWeight;
-    w.bits = 10;
-    view.float_attributes.push_back(w);
-    o3dgc::IntAttributeView j;
-    j.data = joints.data();
-    j.dimension = 4;
-    j.semantic = o3dgc::Semantic::kJointId;
-    view.int_attributes.push_back(j);
-  }
-  if (materials) view.triangle_groups = all.material_ids.data();
+  return all;
+}
 
+int Compress(const std::string& input, const hullpack::MeshCodecSettings& settings) {
+  hullpack::Result<hullpack::Scene> scene = hullpack::ReadScene(input);
+  if (!scene.ok()) {
+    std::fprintf(stderr, "%s\n", scene.status().ToString().c_str());
+    return 1;
+  }
+  const hullpack::Mesh all = MergeMeshes(scene.value());
   std::printf("Mesh info\n  vertices %zu\n  triangles %zu\n  normals %s\n  uv %s\n  colors %s\n"
               "  skin %s\n  groups %s\n",
-              view.num_vertices, view.num_triangles, normals ? "yes" : "no", uvs ? "yes" : "no",
-              colors ? "yes" : "no", skin ? "yes" : "no", materials ? "yes" : "no");
-  std::vector<uint8_t> stream;
-  o3dgc::StreamInfo info;
+              all.vertex_count(), all.triangle_count(), all.normals.empty() ? "no" : "yes",
+              all.uv_sets.empty() ? "no" : "yes", all.colors.empty() ? "no" : "yes", all.has_skin() ? "yes" : "no",
+              all.material_ids.empty() ? "no" : "yes");
   const auto t0 = Clock::now();
-  const o3dgc::Status s = o3dgc::Encode(view, params, &stream, &info);
+  hullpack::Result<hullpack::EncodedMesh> encoded = hullpack::EncodeMesh(all, all.material_ids, settings);
   const auto t1 = Clock::now();
-  if (s != o3dgc::Status::kOk) {
-    std::fprintf(stderr, "encode failed: %s\n", o3dgc::StatusName(s));
+  if (!encoded.ok()) {
+    std::fprintf(stderr, "%s: %s\n", input.c_str(), encoded.status().message().c_str());
     return 1;
   }
   const std::string out = Stem(input) + ".s3d";
-  std::ofstream f(out, std::ios::binary);
-  f.write(reinterpret_cast<const char*>(stream.data()), std::streamsize(stream.size()));
-  if (!f) {
-    std::fprintf(stderr, "cannot write %s\n", out.c_str());
+  hullpack::Status written = hullpack::WriteFileAtomically(out, encoded->stream);
+  if (written.ok() && !all.material_ids.empty()) {  // material names, one per group id
+    std::string names;
+    for (const hullpack::Material& m : scene->materials) names += m.name + "\n";
+    written = hullpack::WriteFileAtomically(Stem(input) + ".mat", names.data(), names.size());
+  }
+  if (!written.ok()) {
+    std::fprintf(stderr, "%s\n", written.message().c_str());
     return 1;
   }
-  if (materials) {
-    std::ofstream mat(Stem(input) + ".mat");
-    for (const hullpack::Material& m : scene->materials) mat << m.name << "\n";
-  }
   std::printf("Encode time %.2f ms\nStream %s (%s), %zu bytes\n", Ms(t0, t1), out.c_str(),
-              params.stream_type == o3dgc::StreamType::kAscii ? "ascii" : "binary", stream.size());
-  PrintParts(info, view.num_vertices);
+              settings.stream_type == o3dgc::StreamType::kAscii ? "ascii" : "binary", encoded->stream.size());
+  PrintParts(encoded->info, all.vertex_count());
   return 0;
 }
 
 int Decompress(const std::string& input) {
-  std::ifstream f(input, std::ios::binary);
-  if (!f) {
-    std::fprintf(stderr, "cannot read %s\n", input.c_str());
+  hullpack::Result<std::vector<uint8_t>> stream = hullpack::ReadFileBytes(input);
+  if (!stream.ok()) {
+    std::fprintf(stderr, "%s\n", stream.status().message().c_str());
     return 1;
   }
-  const std::vector<uint8_t> stream((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
-  o3dgc::DecodedMesh mesh;
   o3dgc::StreamInfo info;
+  std::vector<uint32_t> groups;
   const auto t0 = Clock::now();
-  const o3dgc::Status s = o3dgc::Decode(stream.data(), stream.size(), o3dgc::DecodeOptions(), &mesh, &info);
+  hullpack::Result<hullpack::Mesh> mesh =
+      hullpack::DecodeMesh(stream.value().data(), stream.value().size(), &groups, input, &info);
   const auto t1 = Clock::now();
-  if (s != o3dgc::Status::kOk) {
-    std::fprintf(stderr, "decode failed: %s\n", o3dgc::StatusName(s));
+  if (!mesh.ok()) {
+    std::fprintf(stderr, "decode failed: %s\n", mesh.status().message().c_str());
     return 1;
   }
   hullpack::Scene scene;
-  hullpack::Mesh m;
+  hullpack::Mesh& m = mesh.value();
   m.name = "decoded";
-  m.positions = mesh.positions;
-  m.indices = mesh.indices;
-  m.normals = mesh.normals;
-  for (const auto& a : mesh.float_attributes) {
-    if (a.semantic == o3dgc::Semantic::kTexCoord && a.dimension == 2) m.uv_sets.push_back(a.values);
-    if (a.semantic == o3dgc::Semantic::kColor && a.dimension == 4) m.colors = a.values;
-    if (a.semantic == o3dgc::Semantic::kWeight && a.dimension == 4) m.weights = a.values;
-  }
-  for (const auto& a : mesh.int_attributes) {
-    if (a.semantic == o3dgc::Semantic::kJointId && a.dimension == 4) {
-      m.joints.assign(a.values.begin(), a.values.end());
-    }
-  }
-  if (!mesh.triangle_groups.empty()) {
+  if (!groups.empty()) {
     uint32_t max_id = 0;
-    for (uint32_t g : mesh.triangle_groups) max_id = g > max_id ? g : max_id;
+    for (uint32_t g : groups) max_id = g > max_id ? g : max_id;
     if (max_id < 65536) {
       std::vector<std::string> names;
-      std::ifstream mat(Stem(input) + ".mat");
-      for (std::string line; std::getline(mat, line);) names.push_back(line);
-      m.material_ids = mesh.triangle_groups;
+      hullpack::Result<std::vector<uint8_t>> mat = hullpack::ReadFileBytes(Stem(input) + ".mat");
+      if (mat.ok()) {
+        std::string line;
+        for (uint8_t c : mat.value()) {
+          if (c == '\n') {
+            names.push_back(line);
+            line.clear();
+          } else {
+            line.push_back(static_cast<char>(c));
+          }
+        }
+      }
+      m.material_ids = groups;
       for (uint32_t g = 0; g <= max_id; ++g) {
         hullpack::Material material;
         material.name = g < names.size() && !names[g].empty() ? names[g] : "group_" + std::to_string(g);
@@ -213,6 +174,7 @@ int Decompress(const std::string& input) {
       }
     }
   }
+  const size_t vertices = m.vertex_count(), triangles = m.triangle_count();
   scene.meshes.push_back(std::move(m));
   hullpack::AddRootNodeForAllMeshes(scene, "decoded");
   const std::string out = Stem(input) + "_dec.obj";
@@ -221,9 +183,9 @@ int Decompress(const std::string& input) {
     std::fprintf(stderr, "%s\n", w.ToString().c_str());
     return 1;
   }
-  std::printf("Mesh info\n  vertices %zu\n  triangles %zu\nDecode time %.2f ms\nWrote %s\n",
-              mesh.num_vertices(), mesh.num_triangles(), Ms(t0, t1), out.c_str());
-  PrintParts(info, mesh.num_vertices());
+  std::printf("Mesh info\n  vertices %zu\n  triangles %zu\nDecode time %.2f ms\nWrote %s\n", vertices, triangles,
+              Ms(t0, t1), out.c_str());
+  PrintParts(info, vertices);
   return 0;
 }
 
@@ -232,9 +194,8 @@ int Decompress(const std::string& input) {
 int main(int argc, char** argv) {
   bool compress = false, decompress = false;
   std::string input;
-  o3dgc::EncodeParams params;
-  int uv_bits = 12;
-  params.position_bits = 14;
+  hullpack::MeshCodecSettings settings;
+  settings.color_bits = 8;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto next_int = [&](int* v) {
@@ -251,25 +212,25 @@ int main(int argc, char** argv) {
     } else if (a == "-st" && i + 1 < argc) {
       const std::string t = argv[++i];
       if (t == "ascii") {
-        params.stream_type = o3dgc::StreamType::kAscii;
+        settings.stream_type = o3dgc::StreamType::kAscii;
       } else if (t == "binary") {
-        params.stream_type = o3dgc::StreamType::kBinary;
+        settings.stream_type = o3dgc::StreamType::kBinary;
       } else {
         return Usage();
       }
     } else if (a == "-qc") {
-      if (!next_int(&params.position_bits)) return Usage();
+      if (!next_int(&settings.position_bits)) return Usage();
     } else if (a == "-qn") {
-      if (!next_int(&params.normal_bits)) return Usage();
+      if (!next_int(&settings.normal_bits)) return Usage();
     } else if (a == "-qt") {
-      if (!next_int(&uv_bits)) return Usage();
+      if (!next_int(&settings.uv_bits)) return Usage();
     } else if (a == "-keep") {
-      params.keep_order = true;
+      settings.keep_order = true;
     } else {
       return Usage();
     }
   }
   if (input.empty() || compress == decompress) return Usage();
-  if (uv_bits < 1 || uv_bits > 30) return Usage();
-  return compress ? Compress(input, params, uv_bits) : Decompress(input);
+  if (settings.uv_bits < 1 || settings.uv_bits > 30) return Usage();
+  return compress ? Compress(input, settings) : Decompress(input);
 }
