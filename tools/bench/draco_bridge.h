@@ -1,5 +1,6 @@
 // The benchmarks' way into Debian's libdraco: a scene mesh as a draco::Mesh (positions, normals,
-// first UV set; points deduplicated as draco_encoder does), encoding at given bits and level, and
+// first UV set, colours, joints and weights as generic attributes; points deduplicated as
+// draco_encoder does), encoding at given bits and level, and
 // the decoded positions.
 #ifndef HULLPACK_TOOLS_BENCH_DRACO_BRIDGE_H_
 #define HULLPACK_TOOLS_BENCH_DRACO_BRIDGE_H_
