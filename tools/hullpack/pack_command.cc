@@ -21,6 +21,7 @@ const char kUsage[] =
     "options:\n"
     "  --max-error F      largest position error, fraction of each mesh's bbox diagonal (0.0005)\n"
     "  --qp N --qn N --qt N   explicit position / normal / UV bits instead (positions 1-30)\n"
+    "  --hull-error F     largest hull vertex error, fraction of the mesh's bbox diagonal (0.002)\n"
     "  --ascii            7-bit ASCII streams (serve gzip'd) instead of binary\n"
     "  --keep-order       keep vertex and triangle order exactly (larger)\n"
     "  --fallback         also write plain accessors (readers without the extension still work)\n"
@@ -144,6 +145,8 @@ int RunPackCommand(const std::vector<std::string>& args) {
       if (!value(&report_path)) return kExitUsage;
     } else if (a == "--max-error") {
       if (!value(&v) || !ParseDouble(a, v, 1e-9, 0.5, &options.max_error)) return kExitUsage;
+    } else if (a == "--hull-error") {
+      if (!value(&v) || !ParseDouble(a, v, 1e-9, 0.5, &options.hull_error)) return kExitUsage;
     } else if (a == "--qp" || a == "--qn" || a == "--qt") {
       if (!value(&v) || !ParseInt(a, v, 1, 30, &n)) return kExitUsage;
       (a == "--qp" ? options.position_bits : a == "--qn" ? options.normal_bits : options.uv_bits) = static_cast<int>(n);

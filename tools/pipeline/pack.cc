@@ -85,10 +85,8 @@ Status PackHulls(const Mesh& mesh, const PackOptions& options, PackObserver* obs
     groups.insert(groups.end(), hull.triangle_count(), static_cast<uint32_t>(h));
   }
   report.hull_vertices = all.vertex_count();
-  MeshCodecSettings s = SettingsFor(mesh, options);  // the render mesh's quantization cube
-  s.position_bits = options.position_bits > 0
-                        ? options.position_bits
-                        : PositionBitsForMaxError(PositionRange(all), options.max_error * BoundingBoxDiagonal(mesh));
+  MeshCodecSettings s = SettingsFor(mesh, options);
+  s.position_bits = PositionBitsForMaxError(PositionRange(all), options.hull_error * BoundingBoxDiagonal(mesh));
   Result<EncodedMesh> encoded = EncodeMesh(all, groups, s);
   if (!encoded.ok()) return encoded.status();
   std::vector<uint32_t> decoded_groups;
@@ -119,6 +117,7 @@ Result<PackResult> PackScene(Scene scene, const PackOptions& options, PackObserv
   if (!(options.max_error > 0) && options.position_bits <= 0) {
     return Status(StatusCode::kInvalidArgument, "--max-error must be positive (or give --qp)");
   }
+  if (!(options.hull_error > 0)) return Status(StatusCode::kInvalidArgument, "--hull-error must be positive");
   for (size_t i = 0; i < scene.meshes.size(); ++i) {
     Status valid = ValidateMesh(scene.meshes[i]);
     if (!valid.ok()) return Status(valid.code(), "mesh " + std::to_string(i) + ": " + valid.message());

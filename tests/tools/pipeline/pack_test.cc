@@ -113,6 +113,8 @@ TEST(Pack, RoundTripKeepsGeometryWithinTheBudgetMaterialsSkinAndHierarchy) {
   EXPECT_GT(r.meshes[0].hull_count, 1u);                    // the wheel collides
   EXPECT_EQ(r.meshes[1].hull_count, 0u);                    // the skinned arm does not, under auto
   EXPECT_NE(r.meshes[1].no_hulls_reason.find("skinned"), std::string::npos);
+  EXPECT_GT(r.meshes[0].hull_quantization_error, 0);
+  EXPECT_LE(r.meshes[0].hull_quantization_error, options.hull_error);
   for (const MeshPackReport& m : r.meshes) {
     EXPECT_LE(m.max_error_fraction, options.max_error) << m.name;
     EXPECT_LT(m.bytes_after, m.bytes_before / 4) << m.name;
