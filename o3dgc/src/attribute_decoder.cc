@@ -26,27 +26,13 @@ Status DecodeQuantizedInOrder(ArithmeticDecoder* dec, const MeshAdjacency& adj, 
   for (uint32_t c = 0; c < n; ++c) {
     if (dec->failed()) return Status::kTruncated;
     int64_t pred[4];
-    PredictionContext pc;
-    bool ambiguous = false;
-    int64_t alt[2] = {0, 0};
-    if (geometry) {
-      pc = PredictTexCoord(adj, c, q.data(), geometry, mags.data(), pred, alt, &ambiguous);
-    } else if (mode == Prediction::kParallelogram) {
-      pc = PredictParallelogram(adj, c, q.data(), dim, mags.data(), pred);
-    } else {
-      for (int k = 0; k < dim; ++k) pred[k] = c > 0 ? q[size_t(c - 1) * dim + k] : 0;
-      pc.neighbour_magnitude = c > 0 ? mags[c - 1] : 0;
-    }
-    for (int k = 0; k < dim; ++k) {
-      if (pred[k] < 0) pred[k] = 0;
-      if (pred[k] > maxq) pred[k] = maxq;
-    }
+    int64_t alt[2];
+    bool ambiguous;
+    const PredictionContext pc = PredictAttributeVertex(adj, c, q.data(), dim, geometry, mode == Prediction::kParallelogram,
+                                                        mags.data(), maxq, pred, alt, &ambiguous);
     if (ambiguous && dec->Decode(models->side)) {
-      for (int k = 0; k < 2; ++k) {
-        if (alt[k] < 0) alt[k] = 0;
-        if (alt[k] > maxq) alt[k] = maxq;
-        pred[k] = alt[k];
-      }
+      pred[0] = alt[0];
+      pred[1] = alt[1];
     }
     const int mctx = MagContext(pc.neighbour_magnitude) >> coarse;
     int64_t r[4];

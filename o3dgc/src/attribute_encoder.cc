@@ -84,26 +84,14 @@ void EncodeQuantized(ArithmeticEncoder* enc, const MeshAdjacency& adj_in,
   const int coarse = n < kTinyMesh ? 2 : (n < kSmallMesh ? 1 : 0);
   for (uint32_t c = 0; c < n; ++c) {
     int64_t pred[4];
-    PredictionContext pc;
-    bool ambiguous = false;
-    int64_t alt[2] = {0, 0};
-    if (texcoord) {
-      pc = PredictTexCoord(adj, c, q.data(), geo_renamed.data(), mags.data(), pred, alt, &ambiguous);
-    } else if (mode == Prediction::kParallelogram) {
-      pc = PredictParallelogram(adj, c, q.data(), dim, mags.data(), pred);
-    } else {
-      for (int k = 0; k < dim; ++k) pred[k] = c > 0 ? q[size_t(c - 1) * dim + k] : 0;
-      pc.neighbour_magnitude = c > 0 ? mags[c - 1] : 0;
-    }
-    for (int k = 0; k < dim; ++k) {
-      if (pred[k] < 0) pred[k] = 0;
-      if (pred[k] > maxq) pred[k] = maxq;
-    }
+    int64_t alt[2];
+    bool ambiguous;
+    const PredictionContext pc =
+        PredictAttributeVertex(adj, c, q.data(), dim, texcoord ? geo_renamed.data() : nullptr,
+                               mode == Prediction::kParallelogram, mags.data(), maxq, pred, alt, &ambiguous);
     if (ambiguous) {
       int64_t da = 0, db = 0;
       for (int k = 0; k < 2; ++k) {
-        if (alt[k] < 0) alt[k] = 0;
-        if (alt[k] > maxq) alt[k] = maxq;
         const int64_t x = q[size_t(c) * 2 + k];
         da += x > pred[k] ? x - pred[k] : pred[k] - x;
         db += x > alt[k] ? x - alt[k] : alt[k] - x;

@@ -228,22 +228,7 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
     }
   }
   if (dec.failed()) return Status::kTruncated;
-  {
-    // The bytes after the last part (the coder's final bytes) count for the groups when there
-    // are groups, else for the last part that was coded.
-    const size_t tail = sh.payload_size > mark ? sh.payload_size - mark : 0;
-    if (h.has_groups) {
-      si.groups = tail;
-    } else if (!si.int_attributes.empty()) {
-      si.int_attributes.back() += tail;
-    } else if (!si.float_attributes.empty()) {
-      si.float_attributes.back() += tail;
-    } else if (h.has_normals) {
-      si.normals += tail;
-    } else {
-      si.positions += tail;
-    }
-  }
+  AddTailBytes(h, sh.payload_size > mark ? sh.payload_size - mark : 0, &si);
   m.indices = std::move(attr_tris);
 
   if (sh.keep_order) {

@@ -354,22 +354,7 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
     }
   }
   enc.Finish();
-  {
-    // The bytes after the last part (the coder's final bytes) count for the groups when there
-    // are groups, else for the last part that was coded.
-    const size_t tail = payload.size() > mark ? payload.size() - mark : 0;
-    if (h.has_groups) {
-      si.groups = tail;
-    } else if (!si.int_attributes.empty()) {
-      si.int_attributes.back() += tail;
-    } else if (!si.float_attributes.empty()) {
-      si.float_attributes.back() += tail;
-    } else if (h.has_normals) {
-      si.normals += tail;
-    } else {
-      si.positions += tail;
-    }
-  }
+  AddTailBytes(h, payload.size() > mark ? payload.size() - mark : 0, &si);
 
   // Pad so that the decoder's size check holds (only pathological meshes need it).
   const uint64_t budget = h.Budget();

@@ -23,16 +23,14 @@ struct EGModel {
 
 inline int FloorLog2(uint64_t v) { return 63 - __builtin_clzll(v); }
 
-inline void EncodeEG(ArithmeticEncoder& e, EGModel& m, uint64_t u) {
-  const uint64_t v = u + 1;
-  const int k = FloorLog2(v);
-  for (int i = 0; i < k; ++i) e.Encode(1, m.prefix[i]);
-  if (k < kMaxEGPrefix) e.Encode(0, m.prefix[k]);
+// The k bits of v below its leading one (v >= 1, k = FloorLog2(v)): the top two through adaptive
+// models (the second conditioned on the first), the rest raw. Shared by EG and signed residuals.
+inline void EncodeMantissa(ArithmeticEncoder& e, BitModel (&suffix)[3], uint64_t v, int k) {
   if (k == 0) return;
-  int top = int((v >> (k - 1)) & 1);
-  e.Encode(top, m.suffix[k][0]);
+  const int top = int((v >> (k - 1)) & 1);
+  e.Encode(top, suffix[0]);
   if (k == 1) return;
-  e.Encode(int((v >> (k - 2)) & 1), m.suffix[k][1 + top]);
+  e.Encode(int((v >> (k - 2)) & 1), suffix[1 + top]);
   int rest = k - 2;
   while (rest > 0) {
     const int n = rest > 24 ? 24 : rest;
@@ -41,23 +39,36 @@ inline void EncodeEG(ArithmeticEncoder& e, EGModel& m, uint64_t u) {
   }
 }
 
+// Inverse of EncodeMantissa: returns v (leading one included).
+inline uint64_t DecodeMantissa(ArithmeticDecoder& d, BitModel (&suffix)[3], int k) {
+  uint64_t v = 1;
+  if (k == 0) return v;
+  const int top = d.Decode(suffix[0]);
+  v = (v << 1) | uint64_t(top);
+  if (k == 1) return v;
+  v = (v << 1) | uint64_t(d.Decode(suffix[1 + top]));
+  int rest = k - 2;
+  while (rest > 0) {
+    const int n = rest > 24 ? 24 : rest;
+    rest -= n;
+    v = (v << n) | d.DecodeBits(n);
+  }
+  return v;
+}
+
+inline void EncodeEG(ArithmeticEncoder& e, EGModel& m, uint64_t u) {
+  const uint64_t v = u + 1;
+  const int k = FloorLog2(v);
+  for (int i = 0; i < k; ++i) e.Encode(1, m.prefix[i]);
+  if (k < kMaxEGPrefix) e.Encode(0, m.prefix[k]);
+  EncodeMantissa(e, m.suffix[k], v, k);
+}
+
 inline uint64_t DecodeEG(ArithmeticDecoder& d, EGModel& m) {
   int k = 0;
   while (k < kMaxEGPrefix && d.Decode(m.prefix[k])) ++k;
   if (k == 0) return 0;
-  uint64_t v = 1;
-  const int top = d.Decode(m.suffix[k][0]);
-  v = (v << 1) | uint64_t(top);
-  if (k > 1) {
-    v = (v << 1) | uint64_t(d.Decode(m.suffix[k][1 + top]));
-    int rest = k - 2;
-    while (rest > 0) {
-      const int n = rest > 24 ? 24 : rest;
-      rest -= n;
-      v = (v << n) | d.DecodeBits(n);
-    }
-  }
-  return v - 1;
+  return DecodeMantissa(d, m.suffix[k], k) - 1;
 }
 
 // Signed residuals: zero flag, sign, then the bit length k of the magnitude coded relative to a
@@ -92,17 +103,7 @@ inline void EncodeSigned(ArithmeticEncoder& e, SignedModel& m, int64_t r) {
     if (k > 0) e.Encode(0, m.down[k]);
   }
   m.Observe(k);
-  if (k == 0) return;
-  const int top = int((v >> (k - 1)) & 1);
-  e.Encode(top, m.suffix[k][0]);
-  if (k == 1) return;
-  e.Encode(int((v >> (k - 2)) & 1), m.suffix[k][1 + top]);
-  int rest = k - 2;
-  while (rest > 0) {
-    const int n = rest > 24 ? 24 : rest;
-    rest -= n;
-    e.EncodeBits(uint32_t((v >> rest) & ((1u << n) - 1)), n);
-  }
+  EncodeMantissa(e, m.suffix[k], v, k);
 }
 
 inline int64_t DecodeSigned(ArithmeticDecoder& d, SignedModel& m) {
@@ -118,20 +119,7 @@ inline int64_t DecodeSigned(ArithmeticDecoder& d, SignedModel& m) {
     while (k > 0 && d.Decode(m.down[k])) --k;
   }
   m.Observe(k);
-  uint64_t v = 1;
-  if (k > 0) {
-    const int top = d.Decode(m.suffix[k][0]);
-    v = (v << 1) | uint64_t(top);
-    if (k > 1) {
-      v = (v << 1) | uint64_t(d.Decode(m.suffix[k][1 + top]));
-      int rest = k - 2;
-      while (rest > 0) {
-        const int n = rest > 24 ? 24 : rest;
-        rest -= n;
-        v = (v << n) | d.DecodeBits(n);
-      }
-    }
-  }
+  const uint64_t v = DecodeMantissa(d, m.suffix[k], k);
   return neg ? -int64_t(v) : int64_t(v);
 }
 

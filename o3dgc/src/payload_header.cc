@@ -126,4 +126,18 @@ Status DecodePayloadHeader(ArithmeticDecoder* dec, PayloadHeader* h) {
   return Status::kOk;
 }
 
+void AddTailBytes(const PayloadHeader& h, size_t tail, StreamInfo* si) {
+  if (h.has_groups) {
+    si->groups = tail;
+  } else if (!si->int_attributes.empty()) {
+    si->int_attributes.back() += tail;
+  } else if (!si->float_attributes.empty()) {
+    si->float_attributes.back() += tail;
+  } else if (h.has_normals) {
+    si->normals += tail;
+  } else {
+    si->positions += tail;
+  }
+}
+
 }  // namespace o3dgc

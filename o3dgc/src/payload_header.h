@@ -52,6 +52,10 @@ constexpr uint64_t kBudgetSlackBytes = 64;
 void EncodePayloadHeader(ArithmeticEncoder* enc, const PayloadHeader& h);
 Status DecodePayloadHeader(ArithmeticDecoder* dec, PayloadHeader* h);
 
+// The bytes after the last coded part (the coder's final bytes) count for the groups when there
+// are groups, else for the last part that was coded. Encoder and decoder report the same split.
+void AddTailBytes(const PayloadHeader& h, size_t tail, StreamInfo* si);
+
 struct SideModels {
   EGModel seam_count;
   BitModel seam_same;

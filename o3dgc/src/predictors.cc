@@ -335,4 +335,25 @@ void OctDecode(double u, double v, double n[3]) {
   n[2] = z / len;
 }
 
+PredictionContext PredictAttributeVertex(const MeshAdjacency& adj, uint32_t c, const int32_t* values, int dim,
+                                         const double* geometry, bool parallelogram, const uint32_t* magnitudes,
+                                         int64_t maxq, int64_t pred[4], int64_t alt[2], bool* ambiguous) {
+  PredictionContext pc;
+  *ambiguous = false;
+  alt[0] = alt[1] = 0;
+  if (geometry) {
+    pc = PredictTexCoord(adj, c, values, geometry, magnitudes, pred, alt, ambiguous);
+  } else if (parallelogram) {
+    pc = PredictParallelogram(adj, c, values, dim, magnitudes, pred);
+  } else {
+    for (int k = 0; k < dim; ++k) pred[k] = c > 0 ? values[size_t(c - 1) * dim + k] : 0;
+    pc.neighbour_magnitude = c > 0 ? magnitudes[c - 1] : 0;
+  }
+  for (int k = 0; k < dim; ++k) pred[k] = pred[k] < 0 ? 0 : (pred[k] > maxq ? maxq : pred[k]);
+  if (*ambiguous) {
+    for (int k = 0; k < 2; ++k) alt[k] = alt[k] < 0 ? 0 : (alt[k] > maxq ? maxq : alt[k]);
+  }
+  return pc;
+}
+
 }  // namespace o3dgc

@@ -75,6 +75,13 @@ PredictionContext PredictTexCoord(const MeshAdjacency& adj, uint32_t c, const in
                                   const double* geometry, const uint32_t* magnitudes,
                                   int64_t pred[2], int64_t alt[2], bool* ambiguous);
 
+// One attribute vertex's prediction, identical in the encoder and the decoder: texture
+// coordinates from the 3D shape when `geometry` is given, else parallelogram or the previous
+// vertex by `parallelogram`; pred (and alt, when *ambiguous) clamped to [0, maxq].
+PredictionContext PredictAttributeVertex(const MeshAdjacency& adj, uint32_t c, const int32_t* values, int dim,
+                                         const double* geometry, bool parallelogram, const uint32_t* magnitudes,
+                                         int64_t maxq, int64_t pred[4], int64_t alt[2], bool* ambiguous);
+
 // Neighbour residual magnitude only (for the differential and surface-normal modes).
 uint64_t NeighbourMagnitude(const MeshAdjacency& adj, uint32_t c, const uint32_t* magnitudes);
 
