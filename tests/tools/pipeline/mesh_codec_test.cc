@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_torus.h"
+
 #include <cmath>
 
 namespace hullpack {
@@ -9,28 +11,15 @@ namespace {
 
 // A torus with every attribute the codec carries.
 Mesh FullTorus(int rings = 24, int sides = 12) {
-  Mesh m;
-  m.name = "torus";
+  Mesh m = testing::TorusMesh(rings, sides);
   m.uv_sets.resize(2);
-  const double pi = 3.14159265358979323846;
   for (int i = 0; i < rings; ++i) {
     for (int j = 0; j < sides; ++j) {
-      const double u = 2 * pi * i / rings, v = 2 * pi * j / sides;
-      m.positions.insert(m.positions.end(), {float((1 + 0.3 * std::cos(v)) * std::cos(u)),
-                                             float((1 + 0.3 * std::cos(v)) * std::sin(u)), float(0.3 * std::sin(v))});
-      m.normals.insert(m.normals.end(), {float(std::cos(v) * std::cos(u)), float(std::cos(v) * std::sin(u)), float(std::sin(v))});
       m.uv_sets[0].insert(m.uv_sets[0].end(), {float(i) / rings, float(j) / sides});
       m.uv_sets[1].insert(m.uv_sets[1].end(), {float(j) / sides, float(i) / rings});
       m.colors.insert(m.colors.end(), {float(i) / rings, 0.5f, float(j) / sides, 1});
       m.joints.insert(m.joints.end(), {uint16_t(i % 3), uint16_t(j % 5), 7, 0});
       m.weights.insert(m.weights.end(), {0.5f, 0.25f, 0.25f, 0});
-    }
-  }
-  for (int i = 0; i < rings; ++i) {
-    for (int j = 0; j < sides; ++j) {
-      const uint32_t a = i * sides + j, b = ((i + 1) % rings) * sides + j,
-                     c = ((i + 1) % rings) * sides + (j + 1) % sides, d = i * sides + (j + 1) % sides;
-      m.indices.insert(m.indices.end(), {a, b, c, a, c, d});
     }
   }
   return m;

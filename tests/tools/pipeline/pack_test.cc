@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_torus.h"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -14,27 +16,7 @@
 namespace hullpack {
 namespace {
 
-Mesh Torus(int rings, int sides, float cx) {
-  Mesh m;
-  m.name = "torus";
-  const double pi = 3.14159265358979323846;
-  for (int i = 0; i < rings; ++i) {
-    for (int j = 0; j < sides; ++j) {
-      const double u = 2 * pi * i / rings, v = 2 * pi * j / sides;
-      m.positions.insert(m.positions.end(), {float(cx + (1 + 0.3 * std::cos(v)) * std::cos(u)),
-                                             float((1 + 0.3 * std::cos(v)) * std::sin(u)), float(0.3 * std::sin(v))});
-      m.normals.insert(m.normals.end(), {float(std::cos(v) * std::cos(u)), float(std::cos(v) * std::sin(u)), float(std::sin(v))});
-    }
-  }
-  for (int i = 0; i < rings; ++i) {
-    for (int j = 0; j < sides; ++j) {
-      const uint32_t a = i * sides + j, b = ((i + 1) % rings) * sides + j,
-                     c = ((i + 1) % rings) * sides + (j + 1) % sides, d = i * sides + (j + 1) % sides;
-      m.indices.insert(m.indices.end(), {a, b, c, a, c, d});
-    }
-  }
-  return m;
-}
+Mesh Torus(int rings, int sides, float cx) { return testing::TorusMesh(rings, sides, cx); }
 
 // A textured two-material torus under a transformed parent, and a skinned torus.
 Scene TestScene() {

@@ -3,6 +3,8 @@
 #include <btBulletDynamicsCommon.h>
 #include <gtest/gtest.h>
 
+#include "test_torus.h"
+
 #include <cmath>
 #include <memory>
 
@@ -11,28 +13,8 @@
 namespace hullpack {
 namespace {
 
-// A torus lying in the xy plane (radius 1, tube 0.3), or an L-block extruded along z.
-Mesh Torus() {
-  Mesh m;
-  m.name = "torus";
-  const int rings = 40, sides = 16;
-  const double pi = 3.14159265358979323846;
-  for (int i = 0; i < rings; ++i) {
-    for (int j = 0; j < sides; ++j) {
-      const double u = 2 * pi * i / rings, v = 2 * pi * j / sides;
-      m.positions.insert(m.positions.end(), {float((1 + 0.3 * std::cos(v)) * std::cos(u)),
-                                             float((1 + 0.3 * std::cos(v)) * std::sin(u)), float(0.3 * std::sin(v))});
-    }
-  }
-  for (int i = 0; i < rings; ++i) {
-    for (int j = 0; j < sides; ++j) {
-      const uint32_t a = i * sides + j, b = ((i + 1) % rings) * sides + j,
-                     c = ((i + 1) % rings) * sides + (j + 1) % sides, d = i * sides + (j + 1) % sides;
-      m.indices.insert(m.indices.end(), {a, b, c, a, c, d});
-    }
-  }
-  return m;
-}
+// A torus lying in the xy plane (radius 1, tube 0.3).
+Mesh Torus() { return testing::TorusMesh(40, 16); }
 
 struct Drop {
   double lowest_mesh_z = 0;  // of the input mesh, moved by the body's final transform
