@@ -7,92 +7,12 @@
 #include <vector>
 
 #include "legacy_arithmetic_decoder.h"
+#include "legacy_test_encoder.h"
 
 namespace {
 
 using namespace o3dgc;
-
-// The encoding half of the coder, as the original encoder ran it (carry into written bytes,
-// 1 or 2 final bytes).
-class TestEncoder {
- public:
-  void Encode(uint32_t bit, LegacyAdaptiveBitModel& m) {
-    const uint32_t x = m.bit_0_prob * (length_ >> 13);
-    if (bit == 0) {
-      length_ = x;
-      ++m.bit_0_count;
-    } else {
-      Move(x, length_ - x);
-    }
-    if (length_ < (1u << 24)) Renormalize();
-    if (--m.bits_until_update == 0) m.Update();
-  }
-  void Encode(uint32_t bit, LegacyStaticBitModel& m) {
-    const uint32_t x = m.bit_0_prob * (length_ >> 13);
-    if (bit == 0) {
-      length_ = x;
-    } else {
-      Move(x, length_ - x);
-    }
-    if (length_ < (1u << 24)) Renormalize();
-  }
-  void Encode(uint32_t s, LegacyAdaptiveDataModel& m) {
-    if (s + 1 == m.symbols()) {
-      const uint32_t x = m.Low(s) * (length_ >> 15);
-      Move(x, length_ - x);
-    } else {
-      length_ >>= 15;
-      const uint32_t x = m.Low(s) * length_;
-      Move(x, m.Low(s + 1) * length_ - x);
-    }
-    if (length_ < (1u << 24)) Renormalize();
-    m.Count(s);
-  }
-  void EncodeExpGolomb(uint32_t v, uint32_t k, LegacyStaticBitModel& bits,
-                       LegacyAdaptiveBitModel& prefix) {
-    while (v >= (1u << k)) {
-      Encode(1, prefix);
-      v -= 1u << k;
-      ++k;
-    }
-    Encode(0, prefix);
-    while (k--) Encode((v >> k) & 1, bits);
-  }
-  std::vector<uint8_t> Finish() {
-    const uint32_t before = base_;
-    if (length_ > 2 * (1u << 24)) {
-      base_ += 1u << 24;
-      length_ = 1u << 23;
-    } else {
-      base_ += 1u << 23;
-      length_ = 1u << 15;
-    }
-    if (before > base_) Carry();
-    Renormalize();
-    return out_;
-  }
-
- private:
-  void Move(uint32_t x, uint32_t length) {
-    const uint32_t before = base_;
-    base_ += x;
-    length_ = length;
-    if (before > base_) Carry();
-  }
-  void Carry() {
-    size_t p = out_.size();
-    while (out_[--p] == 0xFF) out_[p] = 0;
-    ++out_[p];
-  }
-  void Renormalize() {
-    do {
-      out_.push_back(uint8_t(base_ >> 24));
-      base_ <<= 8;
-    } while ((length_ <<= 8) < (1u << 24));
-  }
-  std::vector<uint8_t> out_;
-  uint32_t base_ = 0, length_ = 0xFFFFFFFFu;
-};
+using legacy_test::TestEncoder;
 
 TEST(LegacyArithmeticDecoder, BitModelUpdateFollowsTheCounts) {
   // Four zeros, then the first re-estimate: p0 = 5/6 in 1/8192, computed as the original does

@@ -7,29 +7,12 @@
 #include <vector>
 
 #include "legacy_stream_reader.h"
+#include "legacy_test_encoder.h"
 
 namespace {
 
 using namespace o3dgc;
-
-// Writes header fields the way the original encoder did.
-struct Writer {
-  LegacyEncoding enc;
-  std::vector<uint8_t> out;
-  void U32(uint32_t v) {
-    if (enc == LegacyEncoding::kBinary) {
-      for (int i = 0; i < 4; ++i) out.push_back(uint8_t(v >> (8 * i)));
-    } else {
-      for (int i = 0; i < 5; ++i) out.push_back(uint8_t((v >> (7 * i)) & 127));
-    }
-  }
-  void F32(float f) {
-    uint32_t bits;
-    std::memcpy(&bits, &f, 4);
-    U32(bits);
-  }
-  void U8(uint8_t v) { out.push_back(v); }
-};
+using legacy_test::Writer;
 
 // A header: 3 coords, 1 triangle, one 2D texcoord attribute, one 4D int attribute.
 std::vector<uint8_t> Header(LegacyEncoding enc, float nan_at_max = 0) {
@@ -64,11 +47,7 @@ std::vector<uint8_t> Header(LegacyEncoding enc, float nan_at_max = 0) {
   w.U8(4);
   w.U8(1);
   w.U8(2);
-  const uint32_t size = uint32_t(w.out.size());
-  Writer s{enc, {}};
-  s.U32(size);
-  const size_t at = enc == LegacyEncoding::kBinary ? 4 : 5;
-  std::copy(s.out.begin(), s.out.end(), w.out.begin() + at);
+  w.PatchU32(enc == LegacyEncoding::kBinary ? 4 : 5, uint32_t(w.out.size()));
   return w.out;
 }
 
