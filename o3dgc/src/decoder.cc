@@ -8,6 +8,7 @@
 #include "attribute_coder.h"
 #include "connectivity_decoder.h"
 #include "entropy.h"
+#include "legacy_decoder.h"
 #include "o3dgc/o3dgc.h"
 #include "payload_header.h"
 #include "predictors.h"
@@ -280,6 +281,7 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
 Status Decode(const uint8_t* data, size_t size, const DecodeOptions& options, DecodedMesh* out,
               StreamInfo* info) {
   if (!out || (!data && size > 0)) return Status::kInvalidArgument;
+  if (IsLegacyStream(data, size)) return DecodeLegacy(data, size, options, out, info);
   if (IsAsciiStream(data, size)) {
     std::vector<uint8_t> binary;
     const Status s = UnpackAscii(data, size, &binary);
@@ -296,6 +298,7 @@ Status Decode(const uint8_t* data, size_t size, const DecodeOptions& options, De
 
 Status ReadStreamInfo(const uint8_t* data, size_t size, StreamInfo* info) {
   if (!info || (!data && size > 0)) return Status::kInvalidArgument;
+  if (IsLegacyStream(data, size)) return ReadLegacyStreamInfo(data, size, info);
   std::vector<uint8_t> binary;
   StreamType type = StreamType::kBinary;
   if (IsAsciiStream(data, size)) {

@@ -184,8 +184,17 @@ struct DecodedMesh {
   size_t num_triangles() const { return indices.size() / 3; }
 };
 
+// Which encoder wrote a stream. Decode reads both; Encode writes only kNative.
+enum class StreamFormat : uint8_t {
+  kNative = 0,        // this library ("O3DG" / "O3DA")
+  kOpen3dgc2013 = 1,  // the original Open3DGC SC3DMC encoder (amd/rest3d, 2013), binary or ASCII
+};
+
 // Byte sizes of the parts of a stream (binary form; for an ASCII stream `total` is the ASCII size).
+// For kOpen3dgc2013 streams the sizes are those of the stream as it is (either form), version is 0
+// and keep_order false.
 struct StreamInfo {
+  StreamFormat format = StreamFormat::kNative;
   StreamType stream_type = StreamType::kBinary;
   uint32_t version = 0;
   bool keep_order = false;
@@ -208,12 +217,17 @@ struct StreamInfo {
 Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint8_t>* out,
               StreamInfo* info = nullptr);
 
-// Decodes `size` bytes at `data` (binary or ASCII stream, detected from the magic). Safe on
+// Decodes `size` bytes at `data` (binary or ASCII stream, detected from the magic). Streams written
+// by the original Open3DGC encoder (2013; binary or ASCII, recognised by their start code) are
+// decoded too: values as stored, triangles in the encoder's input order when the stream keeps it
+// (see src/legacy_decoder.h); verify_checksum does not apply to them (they have none), and as they
+// are not padded the allocation guard allows them 256 elements per byte instead of 64. Safe on
 // untrusted input. On success `*out` is replaced by the mesh; on failure its content is unspecified.
 Status Decode(const uint8_t* data, size_t size, const DecodeOptions& options, DecodedMesh* out,
               StreamInfo* info = nullptr);
 
-// Parses only the header and section table of a stream (no checksum check, no decoding).
+// Parses only the header and section table of a stream (no checksum check, no decoding); for an
+// original Open3DGC stream, its header (info->format says which).
 Status ReadStreamInfo(const uint8_t* data, size_t size, StreamInfo* info);
 
 }  // namespace o3dgc
