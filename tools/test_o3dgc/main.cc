@@ -3,7 +3,8 @@
 //   test_o3dgc -c -i bunny.obj [-st binary|ascii] [-qc 14] [-qn 10] [-qt 12] [-keep]
 //       writes bunny.s3d next to the input
 //   test_o3dgc -d -i bunny.s3d
-//       writes bunny_dec.obj next to the input
+//       writes bunny_dec.obj next to the input; also reads streams of the original Open3DGC tool
+//       (2013), written out in that tool's OBJ layout
 // Material names (the stream keeps only per-triangle group ids) go to a side file bunny.mat, one
 // name per line in id order, which -d reads back when it exists.
 // Every mesh of the input is merged into one (material ids become triangle groups, written back
@@ -11,6 +12,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -130,11 +132,114 @@ int Compress(const std::string& input, const hullpack::MeshCodecSettings& settin
   return 0;
 }
 
+// The original tool's material side file: "MaterialLib <lib>", "Materials <n>", then n lines
+// "<id> <triangle count> <name>"; triangles come in runs, one run per line.
+struct LegacyMaterials {
+  std::string library;
+  std::vector<uint32_t> ids, counts;
+  std::vector<std::string> names;
+};
+
+bool ReadLegacyMaterials(const std::string& path, LegacyMaterials* m) {
+  hullpack::Result<std::vector<uint8_t>> bytes = hullpack::ReadFileBytes(path);
+  if (!bytes.ok()) return false;
+  std::istringstream in(std::string(bytes->begin(), bytes->end()));
+  std::string tag;
+  size_t n = 0;
+  if (!(in >> tag) || tag != "MaterialLib" || !(in >> m->library >> tag) || tag != "Materials" || !(in >> n)) {
+    return false;
+  }
+  for (size_t i = 0; i < n; ++i) {
+    uint32_t id, count;
+    std::string name;
+    if (!(in >> id >> count >> name)) return false;
+    m->ids.push_back(id);
+    m->counts.push_back(count);
+    m->names.push_back(name);
+  }
+  return true;
+}
+
+// Streams of the original Open3DGC tool decode to the OBJ layout that tool wrote (one index per
+// corner for v, vt and vn; texture coordinates as stored, without this project's glTF v flip),
+// with full float precision, and its material side file (<stem>.mat) when there is one.
+int DecompressLegacy(const std::string& input, const std::vector<uint8_t>& stream) {
+  o3dgc::DecodedMesh m;
+  o3dgc::StreamInfo info;
+  const auto t0 = Clock::now();
+  const o3dgc::Status st = o3dgc::Decode(stream.data(), stream.size(), o3dgc::DecodeOptions(), &m, &info);
+  const auto t1 = Clock::now();
+  if (st != o3dgc::Status::kOk) {
+    std::fprintf(stderr, "decode failed: %s: original Open3DGC stream: %s\n", input.c_str(), o3dgc::StatusName(st));
+    return 1;
+  }
+  const std::vector<float>* uv = nullptr;
+  for (const o3dgc::DecodedFloatAttribute& a : m.float_attributes) {
+    if (a.semantic == o3dgc::Semantic::kTexCoord && a.dimension == 2 && !uv) uv = &a.values;
+  }
+  LegacyMaterials mat;
+  const bool materials = ReadLegacyMaterials(Stem(input) + ".mat", &mat);
+  std::string obj = "# decoded by hullpack test_o3dgc from " + input + " (original Open3DGC stream)\n";
+  char line[160];
+  auto add = [&](const char* tag, const std::vector<float>& v, size_t dim) {
+    for (size_t i = 0; i + dim <= v.size(); i += dim) {
+      int n = std::snprintf(line, sizeof line, "%s", tag);
+      for (size_t k = 0; k < dim; ++k) n += std::snprintf(line + n, sizeof line - size_t(n), " %.9g", double(v[i + k]));
+      obj.append(line).push_back('\n');
+    }
+  };
+  add("v", m.positions, 3);
+  add("vn", m.normals, 3);
+  if (uv) add("vt", *uv, 2);
+  if (materials && !mat.library.empty()) obj += "mtllib " + mat.library + "\n";
+  std::vector<uint32_t> material_of;  // per triangle, from the runs (the original's name lookup: by id)
+  for (size_t i = 0; materials && i < mat.counts.size(); ++i) {
+    for (uint32_t c = 0; c < mat.counts[i] && material_of.size() < m.num_triangles(); ++c) material_of.push_back(mat.ids[i]);
+  }
+  for (size_t t = 0; t < m.num_triangles(); ++t) {
+    if (t < material_of.size() && (t == 0 || material_of[t] != material_of[t - 1]) && material_of[t] < mat.names.size()) {
+      obj += "usemtl " + mat.names[material_of[t]] + "\n";
+    }
+    obj += "f";
+    for (int k = 0; k < 3; ++k) {
+      const unsigned i = m.indices[3 * t + size_t(k)] + 1;
+      if (uv && !m.normals.empty()) {
+        std::snprintf(line, sizeof line, " %u/%u/%u", i, i, i);
+      } else if (!m.normals.empty()) {
+        std::snprintf(line, sizeof line, " %u//%u", i, i);
+      } else if (uv) {
+        std::snprintf(line, sizeof line, " %u/%u", i, i);
+      } else {
+        std::snprintf(line, sizeof line, " %u", i);
+      }
+      obj += line;
+    }
+    obj += "\n";
+  }
+  const std::string out = Stem(input) + "_dec.obj";
+  const hullpack::Status w = hullpack::WriteFileAtomically(out, obj.data(), obj.size());
+  if (!w.ok()) {
+    std::fprintf(stderr, "%s\n", w.message().c_str());
+    return 1;
+  }
+  std::printf("Original Open3DGC stream (%s)\nMesh info\n  vertices %zu\n  triangles %zu\n  normals %s\n  uv %s\n"
+              "Decode time %.2f ms\nWrote %s\n",
+              info.stream_type == o3dgc::StreamType::kAscii ? "ascii" : "binary", m.num_vertices(),
+              m.num_triangles(), m.normals.empty() ? "no" : "yes", uv ? "yes" : "no", Ms(t0, t1), out.c_str());
+  PrintParts(info, m.num_vertices());
+  return 0;
+}
+
 int Decompress(const std::string& input) {
   hullpack::Result<std::vector<uint8_t>> stream = hullpack::ReadFileBytes(input);
   if (!stream.ok()) {
     std::fprintf(stderr, "%s\n", stream.status().message().c_str());
     return 1;
+  }
+  o3dgc::StreamInfo probe;
+  if (o3dgc::ReadStreamInfo(stream->data(), stream->size(), &probe) == o3dgc::Status::kOk &&
+      probe.format == o3dgc::StreamFormat::kOpen3dgc2013) {
+    return DecompressLegacy(input, stream.value());
   }
   o3dgc::StreamInfo info;
   std::vector<uint32_t> groups;
