@@ -23,6 +23,7 @@
 
 #include "io/scene_io.h"
 #include "scene/scene.h"
+#include "scene_soup.h"
 #include "vhacd/vhacd.h"
 
 namespace {
@@ -79,53 +80,6 @@ class Progress : public vhacd::Observer {
   int last_ = -1;
   std::string last_stage_;
 };
-
-using Mat4 = hullpack::Matrix4;
-
-Mat4 Multiply(const Mat4& a, const Mat4& b) {
-  Mat4 r{};
-  for (int c = 0; c < 4; ++c)
-    for (int rr = 0; rr < 4; ++rr) {
-      double s = 0;
-      for (int k = 0; k < 4; ++k) s += a[k * 4 + rr] * b[c * 4 + k];
-      r[c * 4 + rr] = s;
-    }
-  return r;
-}
-
-// Every mesh instance in world space, merged into one soup.
-void Flatten(const hullpack::Scene& scene, std::vector<double>* points, std::vector<uint32_t>* indices) {
-  std::vector<Mat4> world(scene.nodes.size(), hullpack::kIdentity);
-  std::vector<int> done(scene.nodes.size(), 0);
-  for (size_t i = 0; i < scene.nodes.size(); ++i) {
-    // Walk up to the root (bounded by the node count, in case of a malformed cycle).
-    std::vector<int> chain;
-    for (int n = static_cast<int>(i); n >= 0 && n < static_cast<int>(scene.nodes.size()) &&
-                                      chain.size() <= scene.nodes.size();
-         n = scene.nodes[n].parent)
-      chain.push_back(n);
-    Mat4 m = hullpack::kIdentity;
-    for (auto it = chain.rbegin(); it != chain.rend(); ++it) m = Multiply(m, scene.nodes[*it].local_transform);
-    world[i] = m;
-  }
-  std::vector<int> instanced(scene.meshes.size(), 0);
-  auto add = [&](const hullpack::Mesh& mesh, const Mat4& m) {
-    const uint32_t base = static_cast<uint32_t>(points->size() / 3);
-    for (size_t v = 0; v < mesh.vertex_count(); ++v) {
-      const double x = mesh.positions[3 * v], y = mesh.positions[3 * v + 1], z = mesh.positions[3 * v + 2];
-      for (int r = 0; r < 3; ++r) points->push_back(m[r] * x + m[4 + r] * y + m[8 + r] * z + m[12 + r]);
-    }
-    for (uint32_t i : mesh.indices) indices->push_back(base + i);
-  };
-  for (size_t n = 0; n < scene.nodes.size(); ++n)
-    for (int mi : scene.nodes[n].meshes)
-      if (mi >= 0 && mi < static_cast<int>(scene.meshes.size())) {
-        add(scene.meshes[mi], world[n]);
-        instanced[mi] = 1;
-      }
-  for (size_t mi = 0; mi < scene.meshes.size(); ++mi)
-    if (!instanced[mi]) add(scene.meshes[mi], hullpack::kIdentity);
-}
 
 std::string JsonNumber(double v) {
   if (!std::isfinite(v)) return "null";
@@ -235,7 +189,7 @@ int main(int argc, char** argv) {
   }
   std::vector<double> points;
   std::vector<uint32_t> indices;
-  Flatten(scene.value(), &points, &indices);
+  hullpack::FlattenScene(scene.value(), &points, &indices);
   std::printf("input: %s, %zu points, %zu triangles\n", input.c_str(), points.size() / 3, indices.size() / 3);
 
   Progress progress(log_path);
