@@ -97,6 +97,8 @@ const Case kCases[] = {
     {"test_nm.ascii.s3d", "test_nm.binary_dec.obj", 97, 0},
     {"vertex_color_test.binary.s3d", "vertex_color_test.binary_dec.obj", 72, 72},
     {"vertex_color_test.ascii.s3d", "vertex_color_test.binary_dec.obj", 72, 72},
+    {"foxmat.binary.s3d", "foxmat.binary_dec.obj", 0, 434},  // coded triangle order
+    {"foxmat.ascii.s3d", "foxmat.binary_dec.obj", 0, 434},
 };
 
 TEST(LegacyDecoder, MatchesTheOriginalDecoder) {
