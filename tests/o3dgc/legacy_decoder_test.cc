@@ -126,6 +126,49 @@ TEST(LegacyDecoder, MatchesTheOriginalDecoder) {
   }
 }
 
+// The original decoder's dump of its arrays: "* <name>\t<index>\t<type>\t<count>\t<dim>", then
+// one line "[i]\tv0\tv1..." per element.
+std::vector<std::string> DumpedArray(const std::string& file, const std::string& name) {
+  std::ifstream in(VectorPath(file));
+  EXPECT_TRUE(in.good()) << file;
+  std::vector<std::string> values;
+  std::string line;
+  bool inside = false;
+  while (std::getline(in, line)) {
+    if (line[0] == '*') {
+      inside = line.compare(0, name.size() + 2, "* " + name) == 0 && line[name.size() + 2] == '\t';
+      continue;
+    }
+    if (!inside) continue;
+    std::istringstream s(line);
+    std::string tok;
+    s >> tok;  // [i]
+    while (s >> tok) values.push_back(tok);
+  }
+  return values;
+}
+
+TEST(LegacyDecoder, WeightsAndJointIds) {
+  const std::string dump = "test_nm_weights.binary_dec_ifs.txt";
+  for (const char* name : {"test_nm_weights.binary.s3d", "test_nm_weights.ascii.s3d"}) {
+    SCOPED_TRACE(name);
+    const DecodedMesh m = DecodeVector(name);
+    ASSERT_EQ(m.float_attributes.size(), 1u);
+    ASSERT_EQ(m.int_attributes.size(), 1u);
+    EXPECT_EQ(m.float_attributes[0].semantic, Semantic::kWeight);
+    EXPECT_EQ(m.float_attributes[0].dimension, 4u);
+    EXPECT_EQ(m.int_attributes[0].semantic, Semantic::kJointId);
+    EXPECT_EQ(m.int_attributes[0].dimension, 4u);
+    EXPECT_EQ(Printed(m.float_attributes[0].values), DumpedArray(dump, "FloatAttribute"));
+    std::vector<std::string> joints;
+    for (int32_t j : m.int_attributes[0].values) joints.push_back(std::to_string(j));
+    EXPECT_EQ(joints, DumpedArray(dump, "IntAttribute"));
+    EXPECT_EQ(Printed(m.positions), DumpedArray(dump, "Coord"));
+    EXPECT_EQ(Printed(m.normals), DumpedArray(dump, "Normal"));
+    ASSERT_EQ(m.float_attributes[0].values.size(), 4 * m.num_vertices());
+  }
+}
+
 TEST(LegacyDecoder, BinaryAndAsciiDecodeAlike) {
   for (const char* name : {"knot", "fox", "vertex_color_test"}) {
     SCOPED_TRACE(name);
