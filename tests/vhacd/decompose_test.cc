@@ -14,14 +14,21 @@ namespace {
 
 using vhacd_test::Mesh;
 
-vhacd::Parameters Fast() {
+vhacd::Parameters Fast(vhacd::Mode mode = vhacd::Mode::kVoxel) {
   vhacd::Parameters p;
   p.resolution = 30000;
   p.num_threads = 2;
+  p.mode = mode;
   return p;
 }
 
-TEST(DecomposeTest, CubeGivesOneHullEqualToTheCube) {
+// The tests both modes must pass: voxels (0) and tetrahedra (1).
+class ModeTest : public ::testing::TestWithParam<vhacd::Mode> {
+ protected:
+  vhacd::Parameters Fast() const { return ::Fast(GetParam()); }
+};
+
+TEST_P(ModeTest, CubeGivesOneHullEqualToTheCube) {
   const Mesh cube = vhacd_test::Box(-1, -2, -3, 1, 2, 3);
   const vhacd::Result r = vhacd::Decompose(cube.View(), Fast());
   ASSERT_TRUE(r.ok()) << r.message;
@@ -40,7 +47,7 @@ TEST(DecomposeTest, CubeGivesOneHullEqualToTheCube) {
   EXPECT_LT(r.report.concavity, 0.01);
 }
 
-TEST(DecomposeTest, SeparateComponentsAndTwoSidedFaces) {
+TEST_P(ModeTest, SeparateComponentsAndTwoSidedFaces) {
   // Two cubes far apart, every face also present with the opposite winding.
   Mesh m = vhacd_test::Box(0, 0, 0, 1, 1, 1);
   m.Append(vhacd_test::Box(3, 0.5, 0, 4, 1.5, 1));
@@ -72,7 +79,7 @@ double LBlockIoU(const std::vector<vhacd::ConvexHull>& hulls, double scale) {
   return static_cast<double>(inter) / uni;
 }
 
-TEST(DecomposeTest, LBlockGivesTwoHullsWithHighIoU) {
+TEST_P(ModeTest, LBlockGivesTwoHullsWithHighIoU) {
   const Mesh l = vhacd_test::LBlock();
   const vhacd::Result r = vhacd::Decompose(l.View(), Fast());
   ASSERT_TRUE(r.ok()) << r.message;
@@ -82,7 +89,7 @@ TEST(DecomposeTest, LBlockGivesTwoHullsWithHighIoU) {
   EXPECT_GT(r.report.volume_iou, 0.95);
 }
 
-TEST(DecomposeTest, TorusCentreIsOutsideEveryHull) {
+TEST_P(ModeTest, TorusCentreIsOutsideEveryHull) {
   const Mesh torus = vhacd_test::Torus(1.0, 0.3);
   const vhacd::Result r = vhacd::Decompose(torus.View(), Fast());
   ASSERT_TRUE(r.ok()) << r.message;
@@ -101,7 +108,7 @@ TEST(DecomposeTest, TorusCentreIsOutsideEveryHull) {
   EXPECT_LT(inside, total / 10);
 }
 
-TEST(DecomposeTest, ThickBowlCavityStaysMostlyEmpty) {
+TEST_P(ModeTest, ThickBowlCavityStaysMostlyEmpty) {
   const Mesh bowl = vhacd_test::ThickBowl(1.0, 1.0, 0.1);
   const vhacd::Result r = vhacd::Decompose(bowl.View(), Fast());
   ASSERT_TRUE(r.ok()) << r.message;
@@ -122,7 +129,7 @@ TEST(DecomposeTest, ThickBowlCavityStaysMostlyEmpty) {
   EXPECT_TRUE(vhacd_test::InsideAnyHull(r.hulls, 0, 0, 0.05, 1e-3));
 }
 
-TEST(DecomposeTest, SphereWithHolesIsNotHollowedOut) {
+TEST_P(ModeTest, SphereWithHolesIsNotHollowedOut) {
   const Mesh sphere = vhacd_test::Sphere(1.0, 48, 24, /*holes=*/true);
   const vhacd::Result r = vhacd::Decompose(sphere.View(), Fast());
   ASSERT_TRUE(r.ok()) << r.message;
@@ -140,7 +147,27 @@ TEST(DecomposeTest, SphereWithHolesIsNotHollowedOut) {
   EXPECT_GE(inside, total * 9 / 10) << inside << " of " << total;
 }
 
-TEST(DecomposeTest, OpenAndNonManifoldMeshesGiveValidHulls) {
+TEST_P(ModeTest, OpenBottomShapeIsFilled) {
+  // Open at its base (the bunny's case): the hulls must fill the inside, not only line the wall.
+  const Mesh cyl = vhacd_test::OpenBottomCylinder(1.0, 1.5);
+  const vhacd::Result r = vhacd::Decompose(cyl.View(), Fast());
+  ASSERT_TRUE(r.ok()) << r.message;
+  EXPECT_FALSE(r.report.closed_input);
+  EXPECT_EQ(vhacd_test::CheckHulls(r.hulls, 1e-6 * 3), "");
+  int inside = 0, total = 0;
+  for (int i = -10; i <= 10; ++i)
+    for (int j = -10; j <= 10; ++j)
+      for (int k = 0; k < 15; ++k) {
+        const double x = 0.095 * i, y = 0.095 * j, z = 0.05 + 0.1 * k;
+        if (x * x + y * y > 0.95 * 0.95) continue;
+        ++total;
+        inside += vhacd_test::InsideAnyHull(r.hulls, x, y, z, 1e-9);
+      }
+  EXPECT_GE(inside, total * 9 / 10) << inside << " of " << total;
+  EXPECT_GE(r.report.solid_coverage, 0.9);
+}
+
+TEST_P(ModeTest, OpenAndNonManifoldMeshesGiveValidHulls) {
   // An open box (no top), a second box sharing an edge with it, a dangling triangle, a
   // duplicated face with the opposite orientation and a degenerate triangle.
   Mesh m = vhacd_test::Box(0, 0, 0, 1, 1, 1);
@@ -165,7 +192,7 @@ TEST(DecomposeTest, OpenAndNonManifoldMeshesGiveValidHulls) {
   EXPECT_EQ(vhacd_test::CheckHulls(r2.hulls, 1e-6), "");
 }
 
-TEST(DecomposeTest, RandomTriangleSoupsGiveValidHulls) {
+TEST_P(ModeTest, RandomTriangleSoupsGiveValidHulls) {
   uint32_t seed = 12345;
   auto next = [&]() {
     seed = seed * 1664525u + 1013904223u;
@@ -198,7 +225,7 @@ bool SameHulls(const std::vector<vhacd::ConvexHull>& a, const std::vector<vhacd:
   return true;
 }
 
-TEST(DecomposeTest, IdenticalOutputForAnyThreadCountAndRun) {
+TEST_P(ModeTest, IdenticalOutputForAnyThreadCountAndRun) {
   const Mesh torus = vhacd_test::Torus(1.0, 0.35, 40, 20);
   vhacd::Parameters p = Fast();
   p.num_threads = 1;
@@ -219,9 +246,10 @@ class CancelAfter : public vhacd::Observer {
   bool IsCancelled() override { return flag.load(); }
 };
 
-TEST(DecomposeTest, CancelFromAnotherThreadReturnsPromptly) {
+TEST_P(ModeTest, CancelFromAnotherThreadReturnsPromptly) {
   const Mesh torus = vhacd_test::Torus(1.0, 0.3, 96, 48);
   vhacd::Parameters p;
+  p.mode = GetParam();
   p.resolution = 3000000;
   p.concavity = 0.0001;
   p.num_threads = 2;
@@ -240,7 +268,7 @@ TEST(DecomposeTest, CancelFromAnotherThreadReturnsPromptly) {
   EXPECT_LT(std::chrono::duration<double>(returned_at - cancelled_at).count(), 1.0);
 }
 
-TEST(DecomposeTest, InvalidInputsGiveErrors) {
+TEST_P(ModeTest, InvalidInputsGiveErrors) {
   const Mesh cube = vhacd_test::Box(0, 0, 0, 1, 1, 1);
   vhacd::MeshView empty;
   EXPECT_EQ(vhacd::Decompose(empty, Fast()).status, vhacd::Status::kEmptyMesh);
@@ -298,13 +326,12 @@ TEST(DecomposeTest, OutOfRangeParametersAreRejected) {
   EXPECT_EQ(status([](vhacd::Parameters& p) { p.max_vertices_per_hull = 3; }), vhacd::Status::kInvalidParameter);
   EXPECT_EQ(status([](vhacd::Parameters& p) { p.min_volume_per_hull = 0.5; }), vhacd::Status::kInvalidParameter);
   EXPECT_EQ(status([](vhacd::Parameters& p) { p.mode = static_cast<vhacd::Mode>(7); }), vhacd::Status::kInvalidParameter);
-  EXPECT_EQ(status([](vhacd::Parameters& p) { p.mode = vhacd::Mode::kTetrahedron; }), vhacd::Status::kUnsupported);
   std::string why;
   EXPECT_EQ(vhacd::ValidateParameters(vhacd::Parameters(), &why), vhacd::Status::kOk);
   EXPECT_EQ(vhacd::ValidateParameters(vhacd::Parameters::High(), &why), vhacd::Status::kOk);
 }
 
-TEST(DecomposeTest, ScaledMeshGivesScaledHulls) {
+TEST_P(ModeTest, ScaledMeshGivesScaledHulls) {
   const Mesh l = vhacd_test::LBlock();
   const vhacd::Result r = vhacd::Decompose(l.View(), Fast());
   ASSERT_TRUE(r.ok());
@@ -324,7 +351,7 @@ TEST(DecomposeTest, ScaledMeshGivesScaledHulls) {
   }
 }
 
-TEST(DecomposeTest, ExtremeScalesStayFinite) {
+TEST_P(ModeTest, ExtremeScalesStayFinite) {
   const Mesh l = vhacd_test::LBlock();
   for (double s : {1e-150, 1e200}) {
     const Mesh ls = l.Scaled(s);
@@ -371,7 +398,7 @@ TEST(DecomposeTest, ProgressAndLogAreReported) {
   EXPECT_GE(r.report.hausdorff_hulls_to_mesh, 0.0);
 }
 
-TEST(DecomposeTest, HullBudgetAndVertexLimitAreHonoured) {
+TEST_P(ModeTest, HullBudgetAndVertexLimitAreHonoured) {
   const Mesh torus = vhacd_test::Torus(1.0, 0.3);
   vhacd::Parameters p = Fast();
   p.max_convex_hulls = 3;
@@ -430,5 +457,10 @@ TEST(DecomposeTest, FloatInputAndStridesAndPca) {
   EXPECT_EQ(vhacd_test::CheckHulls(rp.hulls, 1e-6 * 3), "");
   EXPECT_GT(LBlockIoU(rp.hulls, 1.0), 0.9);
 }
+
+INSTANTIATE_TEST_SUITE_P(Modes, ModeTest, ::testing::Values(vhacd::Mode::kVoxel, vhacd::Mode::kTetrahedron),
+                         [](const ::testing::TestParamInfo<vhacd::Mode>& param) {
+                           return param.param == vhacd::Mode::kVoxel ? std::string("Voxel") : std::string("Tetrahedron");
+                         });
 
 }  // namespace

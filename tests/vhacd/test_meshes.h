@@ -147,6 +147,25 @@ inline Mesh ThickBowl(double R, double H, double t, int n = 48) {
   return m;  // the axis points (r = 0) are repeated per slice; welding makes the mesh closed
 }
 
+// A cylinder about z (radius R, height H) with its top disc and no bottom at all: open at its
+// base like a scan standing on a table.
+inline Mesh OpenBottomCylinder(double R, double H, int n = 48, int rows = 8) {
+  Mesh m;
+  for (int j = 0; j <= rows; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double a = 2 * M_PI * i / n;
+      m.AddPoint(R * std::cos(a), R * std::sin(a), H * j / rows);
+    }
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < n; ++i) {
+      const uint32_t a = j * n + i, b = j * n + (i + 1) % n;
+      m.AddQuad(a, b, b + n, a + n);
+    }
+  const uint32_t top = m.AddPoint(0, 0, H);
+  for (int i = 0; i < n; ++i) m.AddTriangle(rows * n + i, rows * n + (i + 1) % n, top);
+  return m;
+}
+
 inline bool InsideHull(const vhacd::ConvexHull& h, double x, double y, double z, double tol) {
   for (size_t t = 0; t < h.triangle_count(); ++t) {
     const double* a = &h.points[3 * h.triangles[3 * t]];

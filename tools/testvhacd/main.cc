@@ -6,9 +6,9 @@
 //   e.g. testVHACD input.obj 100000 20 0.0025 4 4 0.05 0.05 0.00125 0 0 64 0.0 output.wrl log.txt
 // Named flags:
 //   testVHACD input.obj [-o hulls.obj|.wrl|.glb|.off|.ply] [--report report.json] [--log log.txt]
-//             [--preset default|high] [--resolution N] [--depth N] [--concavity X]
+//             [--preset|--quality default|high] [--resolution N] [--depth N] [--concavity X]
 //             [--plane-downsampling N] [--convexhull-downsampling N] [--alpha X] [--beta X]
-//             [--gamma X] [--pca 0|1] [--mode 0|1] [--max-vertices N] [--min-volume X]
+//             [--gamma X] [--pca 0|1] [--mode 0|1|voxel|tetra] [--max-vertices N] [--min-volume X]
 //             [--max-hulls N] [--max-distance X] [--threads N]
 // Every mesh of the input (with its node transforms) is decomposed as one soup. The hulls are
 // written as a scene with one mesh per hull. Progress goes to stderr; a summary to stdout.
@@ -34,9 +34,9 @@ int Usage(const char* why) {
                "usage: testVHACD input resolution depth concavity planeDownsampling convexhullDownsampling "
                "alpha beta gamma pca mode maxNumVerticesPerCH minVolumePerCH output log\n"
                "       testVHACD input [-o hulls.obj|.wrl|.glb] [--report report.json] [--log log.txt]\n"
-               "                 [--preset default|high] [--resolution N] [--depth N] [--concavity X]\n"
+               "                 [--preset|--quality default|high] [--resolution N] [--depth N] [--concavity X]\n"
                "                 [--plane-downsampling N] [--convexhull-downsampling N] [--alpha X]\n"
-               "                 [--beta X] [--gamma X] [--pca 0|1] [--mode 0|1] [--max-vertices N]\n"
+               "                 [--beta X] [--gamma X] [--pca 0|1] [--mode 0|1|voxel|tetra] [--max-vertices N]\n"
                "                 [--min-volume X] [--max-hulls N] [--max-distance X] [--threads N]\n");
   return 2;
 }
@@ -105,6 +105,7 @@ bool WriteReport(const std::string& path, const std::string& input, const vhacd:
   f << "  \"hausdorff_hulls_to_mesh\": " << JsonNumber(rep.hausdorff_hulls_to_mesh) << ",\n";
   f << "  \"concavity\": " << JsonNumber(rep.concavity) << ",\n";
   f << "  \"voxel_count\": " << rep.voxel_count << ",\n";
+  f << "  \"tetrahedron_count\": " << rep.tetrahedron_count << ",\n";
   f << "  \"parts_before_merge\": " << rep.parts_before_merge << ",\n";
   f << "  \"seconds\": {\"voxelize\": " << JsonNumber(rep.seconds_voxelize) << ", \"fill\": " << JsonNumber(rep.seconds_fill)
     << ", \"distance\": " << JsonNumber(rep.seconds_distance) << ", \"clip\": " << JsonNumber(rep.seconds_clip) << ", \"hulls\": " << JsonNumber(rep.seconds_hulls)
@@ -146,6 +147,14 @@ int main(int argc, char** argv) {
     output = argv[14];
     log_path = argv[15];
   } else {
+    // The preset first, so that the other flags change it whatever their order.
+    for (int i = 2; i + 1 < argc; i += 2) {
+      const std::string a = argv[i];
+      if (a != "--preset" && a != "--quality") continue;
+      if (std::strcmp(argv[i + 1], "high") == 0) p = vhacd::Parameters::High();
+      else if (std::strcmp(argv[i + 1], "default") == 0) p = vhacd::Parameters();
+      else return Usage(("bad value for " + a).c_str());
+    }
     for (int i = 2; i < argc; ++i) {
       const std::string a = argv[i];
       if (i + 1 >= argc) return Usage(("missing value after " + a).c_str());
@@ -156,11 +165,8 @@ int main(int argc, char** argv) {
       if (a == "-o" || a == "--output") output = v;
       else if (a == "--report") report_path = v;
       else if (a == "--log") log_path = v;
-      else if (a == "--preset") {
-        if (std::strcmp(v, "high") == 0) p = vhacd::Parameters::High();
-        else if (std::strcmp(v, "default") == 0) p = vhacd::Parameters();
-        else ok = false;
-      } else if (a == "--resolution") ok = ParseUint(v, &p.resolution);
+      else if (a == "--preset" || a == "--quality") continue;  // applied above
+      else if (a == "--resolution") ok = ParseUint(v, &p.resolution);
       else if (a == "--depth") ok = ParseUint(v, &p.depth);
       else if (a == "--concavity") ok = ParseDouble(v, &p.concavity);
       else if (a == "--plane-downsampling") ok = ParseUint(v, &p.plane_downsampling);
@@ -169,7 +175,12 @@ int main(int argc, char** argv) {
       else if (a == "--beta") ok = ParseDouble(v, &p.beta);
       else if (a == "--gamma") ok = ParseDouble(v, &p.gamma);
       else if (a == "--pca") { ok = ParseUint(v, &u) && u <= 1; p.pca = u == 1; }
-      else if (a == "--mode") { ok = ParseUint(v, &u) && u <= 1; p.mode = static_cast<vhacd::Mode>(u); }
+      else if (a == "--mode") {
+        if (std::strcmp(v, "tetra") == 0 || std::strcmp(v, "tetrahedron") == 0) u = 1;
+        else if (std::strcmp(v, "voxel") == 0) u = 0;
+        else ok = ParseUint(v, &u) && u <= 1;
+        p.mode = static_cast<vhacd::Mode>(u);
+      }
       else if (a == "--max-vertices") ok = ParseUint(v, &p.max_vertices_per_hull);
       else if (a == "--min-volume") ok = ParseDouble(v, &p.min_volume_per_hull);
       else if (a == "--max-hulls") ok = ParseUint(v, &p.max_convex_hulls);

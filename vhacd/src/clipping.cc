@@ -21,10 +21,12 @@ bool ClipRecursively(Part root, const ClipParams& params, Context* ctx, ClipOutp
   out->parts.clear();
   out->concavity.clear();
   root.ComputeBounds();
+  if (root.tetra) root.ComputeCellVolume();
   {
     std::vector<Vec3> pts;
-    PartHullPoints(root, false, &pts);
-    out->volume0 = std::max(ExactHullVolume(pts), root.volume());
+    PrimitiveHullPoints(root, &pts);
+    HullMesh h;
+    out->volume0 = std::max(PrimitiveHull(root, pts, &h) ? h.Volume() : 0.0, root.volume());
   }
   CutWeights weights;
   weights.alpha = params.alpha;
@@ -39,9 +41,9 @@ bool ClipRecursively(Part root, const ClipParams& params, Context* ctx, ClipOutp
     std::vector<double> conc(n, 0.0), depth(n, 0.0);
     if (!ParallelFor(ctx, n, [&](size_t i) {
           std::vector<Vec3> pts;
-          PartHullPoints(current[i], false, &pts);
+          PrimitiveHullPoints(current[i], &pts);
           HullMesh h;
-          if (ComputeConvexHull(pts, 0.0, &h) != HullStatus::kOk) return;
+          if (!PrimitiveHull(current[i], pts, &h)) return;
           conc[i] = std::max(0.0, h.Volume() - current[i].volume()) / out->volume0;
           if (params.field != nullptr && params.max_depth > 0 && level < params.depth)
             depth[i] = params.field->HullDepth(h);
@@ -64,12 +66,16 @@ bool ClipRecursively(Part root, const ClipParams& params, Context* ctx, ClipOutp
     if (split.empty()) break;
     const size_t m = split.size();
     std::vector<AxisLines> lines(m * 3);
+    std::vector<TetraAxis> tetra(m * 3);  // mode 1 only
     std::vector<RevolutionHint> hints(m);
     if (!ParallelFor(ctx, m * 4, [&](size_t i) {
-          if (i < m * 3)
-            lines[i] = BuildAxisLines(current[split[i / 3]], static_cast<int>(i % 3));
-          else
+          if (i < m * 3) {
+            const Part& p = current[split[i / 3]];
+            lines[i] = BuildAxisLines(p, static_cast<int>(i % 3));
+            if (p.tetra) tetra[i] = BuildTetraAxis(p, static_cast<int>(i % 3));
+          } else {
             hints[i - m * 3] = ComputeRevolutionHint(current[split[i - m * 3]]);
+          }
         }))
       return false;
 
@@ -84,8 +90,9 @@ bool ClipRecursively(Part root, const ClipParams& params, Context* ctx, ClipOutp
       return ParallelFor(ctx, tasks.size(), [&](size_t t) {
         const Task& tk = tasks[t];
         const uint32_t pi = split[tk.part];
-        cost[t] = CutCost(current[pi], lines[tk.part * 3 + tk.axis], tk.c, hull_ds, weights,
-                          hints[tk.part], conc[pi]);
+        const size_t li = tk.part * 3 + tk.axis;
+        cost[t] = CutCost(current[pi], lines[li], tk.c, hull_ds, weights, hints[tk.part], conc[pi],
+                          current[pi].tetra ? &tetra[li] : nullptr);
       });
     };
     if (!run(params.convexhull_downsampling)) return false;
@@ -127,8 +134,16 @@ bool ClipRecursively(Part root, const ClipParams& params, Context* ctx, ClipOutp
           }
           for (const Voxel& v : p.voxels) (v.c[a] < c ? next[2 * k] : next[2 * k + 1]).voxels.push_back(v);
           std::vector<Voxel>().swap(p.voxels);
-          next[2 * k].ComputeBounds();
-          next[2 * k + 1].ComputeBounds();
+          for (int side = 0; side < 2; ++side) {
+            next[2 * k + side].ComputeBounds();
+            next[2 * k + side].tetra = p.tetra;
+          }
+          if (p.tetra) {
+            for (const SurfaceCell& cell : p.cells) (cell.c[a] < c ? next[2 * k] : next[2 * k + 1]).cells.push_back(cell);
+            std::vector<SurfaceCell>().swap(p.cells);
+            next[2 * k].ComputeCellVolume();
+            next[2 * k + 1].ComputeCellVolume();
+          }
         }))
       return false;
     current.clear();

@@ -223,8 +223,6 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   std::string why;
   Status st = ValidateParameters(params, &why);
   if (st != Status::kOk) return Fail(st, why);
-  if (params.mode == Mode::kTetrahedron)
-    return Fail(Status::kUnsupported, "tetrahedron mode (mode 1) is not available in this build");
   const int threads = params.num_threads > 0
                           ? static_cast<int>(params.num_threads)
                           : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
@@ -321,6 +319,39 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
         root.voxels.push_back(v);
       }
   rep.voxel_count = root.voxels.size();
+  if (params.mode == Mode::kTetrahedron) {
+    // Mode 1: the surface voxels become trimmed tetrahedra (see tetrahedron_set.h).
+    if (!internal::BuildSurfaceCells(gmesh, grid, &ctx, &root.cells)) return Fail(Status::kCancelled, "cancelled");
+    if (root.cells.size() != rep.surface_voxel_count)
+      return Fail(Status::kInternalError, "surface cells do not match the surface voxels");
+    root.tetra = true;
+    // A surface voxel trimmed to nothing (the surface lies on its face) holds no solid: drop it, or
+    // its face would be counted on the wrong side of a cut there.
+    internal::Part kept;
+    kept.tetra = true;
+    size_t k = 0;
+    for (const internal::Voxel& v : root.voxels) {
+      if (!v.surface) {
+        kept.voxels.push_back(v);
+        continue;
+      }
+      const internal::SurfaceCell& c = root.cells[k++];
+      if (c.volume > 1e-6f) {
+        kept.voxels.push_back(v);
+        kept.cells.push_back(c);
+      }
+    }
+    if (!kept.voxels.empty()) root = std::move(kept);
+    rep.tetrahedron_count = 5 * (root.voxels.size() - root.cells.size());
+    uint64_t trimmed = 0;
+    for (const internal::SurfaceCell& c : root.cells) {
+      rep.tetrahedron_count += c.tetrahedra;
+      trimmed += c.volume < 1.0f;
+    }
+    ctx.Log(std::to_string(rep.tetrahedron_count) + " tetrahedra, " + std::to_string(trimmed) + " of " +
+            std::to_string(root.cells.size()) + " surface voxels trimmed to the surface, " +
+            std::to_string(rep.surface_voxel_count - root.cells.size()) + " left empty");
+  }
   ctx.Log("grid " + std::to_string(grid.dims[0]) + "x" + std::to_string(grid.dims[1]) + "x" +
           std::to_string(grid.dims[2]) + ", " + std::to_string(rep.voxel_count) + " voxels (" +
           std::to_string(rep.surface_voxel_count) + " on the surface)");

@@ -39,11 +39,23 @@ RevolutionHint ComputeRevolutionHint(const Part& part) {
 }
 
 double CutCost(const Part& part, const AxisLines& lines, int c, int hull_downsample,
-               const CutWeights& w, const RevolutionHint& hint, double part_concavity) {
+               const CutWeights& w, const RevolutionHint& hint, double part_concavity, const TetraAxis* tetra) {
   const int a = lines.axis;
+  const double symmetry = w.beta * hint.weight * std::fabs(hint.axis[a]) * part_concavity;
+  if (tetra != nullptr && hull_downsample <= 1) {
+    std::vector<Vec3> pts;
+    double vl = 0.0, vr = 0.0;
+    HullMesh h;
+    TetraSideHullPoints(part, *tetra, c, true, &pts, &vl);
+    const double hl = PrimitiveHull(part, pts, &h) ? h.Volume() : 0.0;
+    TetraSideHullPoints(part, *tetra, c, false, &pts, &vr);
+    const double hr = PrimitiveHull(part, pts, &h) ? h.Volume() : 0.0;
+    const double concavity = (std::max(0.0, hl - vl) + std::max(0.0, hr - vr)) / w.volume0;
+    return concavity + w.alpha * std::fabs(vl - vr) / w.volume0 + symmetry;
+  }
   double vl = 0.0;
   for (int s = part.bmin[a]; s < c; ++s) vl += lines.slice_count[s - part.bmin[a]];
-  const double vr = part.volume() - vl;
+  const double vr = static_cast<double>(part.voxels.size()) - vl;  // voxel count in both modes
   std::vector<Vec3> pts;
   double cvl = 0.0, cvr = 0.0;  // volumes of the (possibly coarse) shapes the hulls describe
   SideHullPoints(lines, c, true, hull_downsample, &pts, &cvl);
@@ -52,7 +64,6 @@ double CutCost(const Part& part, const AxisLines& lines, int c, int hull_downsam
   const double hr = ExactHullVolume(pts);
   const double concavity = (std::max(0.0, hl - cvl) + std::max(0.0, hr - cvr)) / w.volume0;
   const double balance = w.alpha * std::fabs(vl - vr) / w.volume0;
-  const double symmetry = w.beta * hint.weight * std::fabs(hint.axis[a]) * part_concavity;
   return concavity + balance + symmetry;
 }
 

@@ -27,9 +27,12 @@ RevolutionHint ComputeRevolutionHint(const Part& part);
 //   cost = (|CH(left)| - |left| + |CH(right)| - |right|) / volume0      (concavity)
 //        + alpha * | |left| - |right| | / volume0                        (balance)
 //        + beta * weight * |axis . n| * concavity(part)                  (revolution axis)
-// Hulls use every `hull_downsample`-th line of voxels (1 = exact).
+// Hulls use every `hull_downsample`-th line of voxels (1 = exact). In mode 1 (`tetra` non-null)
+// the exact cost (hull_downsample 1) is taken on the primitives: interior voxels and trimmed cells,
+// with their volumes; the downsampled estimate stays on the voxel lines.
 double CutCost(const Part& part, const AxisLines& lines, int c, int hull_downsample,
-               const CutWeights& w, const RevolutionHint& hint, double part_concavity);
+               const CutWeights& w, const RevolutionHint& hint, double part_concavity,
+               const TetraAxis* tetra = nullptr);
 
 // Planes c in [bmin+1, bmax] on `axis` every `step` slices (always at least one when the part is
 // at least two slices thick).

@@ -17,6 +17,11 @@ void Part::ComputeBounds() {
     }
 }
 
+void Part::ComputeCellVolume() {
+  cell_volume = 0.0;
+  for (const SurfaceCell& c : cells) cell_volume += c.volume;
+}
+
 namespace {
 inline uint64_t LineKey(const Voxel& v, int axis) {
   const int u = (axis + 1) % 3, w = (axis + 2) % 3;
@@ -93,11 +98,14 @@ class CornerSet {
 
 }  // namespace
 
-AxisLines BuildAxisLines(const Part& part, int axis) {
+namespace {
+AxisLines BuildLines(const Part& part, int axis, bool interior_only) {
   AxisLines L;
   L.axis = axis;
-  std::vector<uint64_t> keys(part.voxels.size());
-  for (size_t i = 0; i < part.voxels.size(); ++i) keys[i] = LineKey(part.voxels[i], axis);
+  std::vector<uint64_t> keys;
+  keys.reserve(part.voxels.size());
+  for (const Voxel& v : part.voxels)
+    if (!interior_only || !v.surface) keys.push_back(LineKey(v, axis));
   std::sort(keys.begin(), keys.end());
   L.coords.resize(keys.size());
   uint64_t prev_line = ~uint64_t{0};
@@ -118,8 +126,51 @@ AxisLines BuildAxisLines(const Part& part, int axis) {
   L.vmax = part.bmax[(axis + 2) % 3];
   const int lo = part.bmin[axis], hi = part.bmax[axis];
   L.slice_count.assign(hi >= lo ? hi - lo + 1 : 0, 0);
-  for (const Voxel& v : part.voxels) ++L.slice_count[v.c[axis] - lo];
+  for (const Voxel& v : part.voxels)
+    if (!interior_only || !v.surface) ++L.slice_count[v.c[axis] - lo];
   return L;
+}
+}  // namespace
+
+AxisLines BuildAxisLines(const Part& part, int axis) { return BuildLines(part, axis, false); }
+
+TetraAxis BuildTetraAxis(const Part& part, int axis) {
+  TetraAxis T;
+  T.interior = BuildLines(part, axis, true);
+  const int lo = part.bmin[axis], hi = part.bmax[axis];
+  const size_t slices = hi >= lo ? static_cast<size_t>(hi - lo + 1) : 0;
+  T.order.resize(part.cells.size());
+  for (size_t i = 0; i < T.order.size(); ++i) T.order[i] = static_cast<uint32_t>(i);
+  std::stable_sort(T.order.begin(), T.order.end(),
+                   [&](uint32_t a, uint32_t b) { return part.cells[a].c[axis] < part.cells[b].c[axis]; });
+  T.slice_start.assign(slices + 1, 0);
+  std::vector<double> volume(slices, 0.0);
+  for (const SurfaceCell& c : part.cells) {
+    ++T.slice_start[c.c[axis] - lo + 1];
+    volume[c.c[axis] - lo] += c.volume;
+  }
+  for (size_t s = 0; s < slices; ++s) T.slice_start[s + 1] += T.slice_start[s];
+  T.prefix_volume.assign(slices + 1, 0.0);
+  for (size_t s = 0; s < slices; ++s)
+    T.prefix_volume[s + 1] = T.prefix_volume[s] + volume[s] + T.interior.slice_count[s];
+  return T;
+}
+
+void TetraSideHullPoints(const Part& part, const TetraAxis& ta, int c, bool left, std::vector<Vec3>* out,
+                         double* volume) {
+  SideHullPoints(ta.interior, c, left, 1, out);
+  const int axis = ta.interior.axis;
+  const int lo = part.bmin[axis];
+  const int slices = static_cast<int>(ta.prefix_volume.size()) - 1;
+  const int split = std::clamp(c - lo, 0, slices);  // first slice on the right
+  const uint32_t b = left ? 0 : ta.slice_start[split];
+  const uint32_t e = left ? ta.slice_start[split] : ta.slice_start[slices];
+  for (uint32_t k = b; k < e; ++k) {
+    const SurfaceCell& cell = part.cells[ta.order[k]];
+    for (int i = 0; i < cell.point_count; ++i) out->emplace_back(cell.p[i][0], cell.p[i][1], cell.p[i][2]);
+  }
+  if (volume != nullptr)
+    *volume = left ? ta.prefix_volume[split] : ta.prefix_volume[slices] - ta.prefix_volume[split];
 }
 
 void SideHullPoints(const AxisLines& L, int c, bool left, int downsample, std::vector<Vec3>* out,
@@ -167,6 +218,20 @@ void PartHullPoints(const Part& part, bool interior_only, std::vector<Vec3>* out
     i = j + 1;
   }
   corners.Emit();
+}
+
+void PrimitiveHullPoints(const Part& part, std::vector<Vec3>* out) {
+  if (!part.tetra) {
+    PartHullPoints(part, false, out);
+    return;
+  }
+  PartHullPoints(part, true, out);
+  for (const SurfaceCell& cell : part.cells)
+    for (int i = 0; i < cell.point_count; ++i) out->emplace_back(cell.p[i][0], cell.p[i][1], cell.p[i][2]);
+}
+
+bool PrimitiveHull(const Part& part, const std::vector<Vec3>& points, HullMesh* out) {
+  return ComputeConvexHull(points, part.tetra ? -1.0 : 0.0, out) == HullStatus::kOk;
 }
 
 double ExactHullVolume(const std::vector<Vec3>& points) {

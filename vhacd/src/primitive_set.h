@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "convex_hull.h"
+#include "tetrahedron_set.h"
 
 namespace vhacd {
 namespace internal {
@@ -23,8 +24,18 @@ struct Voxel {
 struct Part {
   std::vector<Voxel> voxels;
   int bmin[3] = {0, 0, 0}, bmax[3] = {0, 0, 0};  // inclusive voxel bounds
-  double volume() const { return static_cast<double>(voxels.size()); }
+  // Mode 1 (tetrahedra): one cell per surface voxel of `voxels` (same order). The part is then its
+  // non-surface voxels (whole cubes, 5 tetrahedra each) plus the cells' trimmed tetrahedra.
+  bool tetra = false;
+  std::vector<SurfaceCell> cells;
+  double cell_volume = 0.0;  // sum of the cells' volumes
+
+  double volume() const {
+    const double n = static_cast<double>(voxels.size());
+    return tetra ? n - static_cast<double>(cells.size()) + cell_volume : n;
+  }
   void ComputeBounds();
+  void ComputeCellVolume();
 };
 
 // The voxels of one part sorted into lines parallel to `axis`.
@@ -51,6 +62,25 @@ void SideHullPoints(const AxisLines& lines, int c, bool left, int downsample, st
 
 // Exact hull of a part's voxels (of only its non-surface voxels when interior_only).
 void PartHullPoints(const Part& part, bool interior_only, std::vector<Vec3>* out);
+
+// Points whose hull is the hull of the part's primitives: its voxels (mode 0), or its interior
+// voxels and its cells' vertices (mode 1).
+void PrimitiveHullPoints(const Part& part, std::vector<Vec3>* out);
+// Hull of points from PrimitiveHullPoints/SideHullPoints of `part`: exact on voxel coordinates
+// (mode 0), tolerant otherwise. False when degenerate.
+bool PrimitiveHull(const Part& part, const std::vector<Vec3>& points, HullMesh* out);
+
+// Mode 1, per axis: the part's non-surface voxels as lines, and its cells sorted along the axis.
+struct TetraAxis {
+  AxisLines interior;
+  std::vector<uint32_t> order;        // cell indices sorted by their coordinate along the axis
+  std::vector<uint32_t> slice_start;  // order[slice_start[s] ..] are the cells of slice bmin + s
+  std::vector<double> prefix_volume;  // primitive volume of the slices below bmin + s
+};
+TetraAxis BuildTetraAxis(const Part& part, int axis);
+// Hull points and volume of the part's primitives below (left) or at/above the plane c.
+void TetraSideHullPoints(const Part& part, const TetraAxis& ta, int c, bool left, std::vector<Vec3>* out,
+                         double* volume);
 
 // Volume of the exact hull of the points (0 when degenerate).
 double ExactHullVolume(const std::vector<Vec3>& points);

@@ -76,7 +76,10 @@ const char* StatusName(Status status);
 
 enum class Mode : int {
   kVoxel = 0,        // voxel-based decomposition
-  kTetrahedron = 1,  // tetrahedron-based decomposition (not available in this build: kUnsupported)
+  // Tetrahedron-based decomposition: every voxel is split into 5 tetrahedra and those of the surface
+  // voxels are trimmed to the input surface, so the clipping stage measures volumes and hulls on a
+  // solid that follows the surface within a voxel (slower than kVoxel).
+  kTetrahedron = 1,
 };
 
 // Parameters with the defaults and ranges of V-HACD 2.0. Ranges are inclusive.
@@ -180,6 +183,7 @@ struct Report {
   double concavity = -1.0;        // max of the two Hausdorff distances
   uint64_t voxel_count = 0;       // surface + inside voxels
   uint64_t surface_voxel_count = 0;
+  uint64_t tetrahedron_count = 0;  // mode 1: 5 per interior voxel + the surface voxels' trimmed ones
   uint32_t parts_before_merge = 0;
   // Wall-clock seconds per stage (distance: the distance transform used by max_distance).
   double seconds_voxelize = 0.0, seconds_fill = 0.0, seconds_distance = 0.0, seconds_clip = 0.0, seconds_hulls = 0.0,
