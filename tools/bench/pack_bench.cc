@@ -1,9 +1,14 @@
 // pack_bench: `hullpack pack` against Draco at equal error, on every .obj/.glb of a folder, in one run.
 // For each file: the packed GLB's geometry bytes (mesh streams + hull streams) at --max-error, the
-// error reached, and the same pruned meshes compressed by Draco (-cl 7) at the same position bits,
-// without hulls. The bar: packed-with-hulls <= Draco-without-hulls in median.
+// error reached, and the same pruned meshes compressed by Draco (-cl 7) without hulls, each mesh at
+// the fewest position bits whose measured error stays within the same budget (Draco's usual
+// quantization: a cube of the largest extent). The bar: packed-with-hulls <= Draco-without-hulls in
+// median. Also per file: the GLB's JSON bytes (the hulls' meshes, accessors, shapes and collider
+// nodes add to it; not geometry) and seconds per stage.
 //
-//   pack_bench FOLDER [--max-error 0.0005] [--csv out.csv]
+//   pack_bench FOLDER [--max-error 0.0005] [--hull-error F] [--max-hulls N] [--max-vertices N]
+//              [--gamma F] [--csv out.csv]
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -15,9 +20,19 @@
 #include "io/scene_io.h"
 #include "pipeline/pack.h"
 
+namespace {
+
+// Length of a GLB's JSON chunk (0 when the header is not a GLB's).
+size_t JsonChunkBytes(const std::vector<uint8_t>& glb) {
+  if (glb.size() < 20) return 0;
+  return size_t(glb[12]) | size_t(glb[13]) << 8 | size_t(glb[14]) << 16 | size_t(glb[15]) << 24;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: pack_bench FOLDER [--max-error F] [--csv FILE]\n");
+    std::fprintf(stderr, "usage: pack_bench FOLDER [--max-error F] [--hull-error F] [--max-hulls N] [--max-vertices N] [--gamma F] [--csv FILE]\n");
     return 64;
   }
   const std::string folder = argv[1];
@@ -27,6 +42,14 @@ int main(int argc, char** argv) {
     const std::string flag = argv[i];
     if (flag == "--max-error") {
       options.max_error = std::atof(argv[i + 1]);
+    } else if (flag == "--hull-error") {
+      options.hull_error = std::atof(argv[i + 1]);
+    } else if (flag == "--max-hulls") {
+      options.collision.parameters.max_convex_hulls = static_cast<uint32_t>(std::atoi(argv[i + 1]));
+    } else if (flag == "--max-vertices") {
+      options.collision.parameters.max_vertices_per_hull = static_cast<uint32_t>(std::atoi(argv[i + 1]));
+    } else if (flag == "--gamma") {
+      options.collision.parameters.gamma = std::atof(argv[i + 1]);
     } else if (flag == "--csv") {
       csv = argv[i + 1];
     } else {
@@ -39,9 +62,13 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "pack_bench: %s: cannot open folder\n", folder.c_str());
     return 1;
   }
-  std::printf("%-22s %8s | %9s %9s %9s %5s | %9s | %6s | %9s %7s\n", "file", "tris", "mesh B", "hulls B", "packed B",
-              "hulls", "draco B", "ratio", "max err", "seconds");
-  std::string text = "file,triangles,mesh_bytes,hull_bytes,packed_geometry_bytes,hulls,draco_bytes,ratio,max_error_fraction,seconds,glb_bytes\n";
+  std::printf("%-22s %7s %5s | %8s %7s %8s | %8s %2s | %6s | %9s %9s | %6s %6s | %6s %6s %6s %6s\n", "file", "tris",
+              "hulls", "mesh B", "hulls B", "packed B", "draco B", "qp", "ratio", "max err", "draco err", "json B",
+              "glb B", "enc s", "dec s", "vhacd s", "hull s");
+  std::string text =
+      "file,triangles,hulls,mesh_bytes,hull_bytes,packed_geometry_bytes,draco_bytes,draco_position_bits,ratio,"
+      "max_error_fraction,draco_max_error_fraction,glb_bytes,json_bytes,seconds_prune,seconds_encode,seconds_decode,"
+      "seconds_decompose,seconds_hull_encode,seconds_write,seconds_total\n";
   std::vector<double> ratios;
   int failures = 0;
   for (const std::string& file : files) {
@@ -62,28 +89,52 @@ int main(int argc, char** argv) {
     hullpack::Scene pruned = scene.value();
     hullpack::LeaveOutUnused(pruned, options.prune);
     size_t mesh_bytes = 0, hull_bytes = 0, hulls = 0, draco_bytes = 0, triangles = 0;
-    double worst = 0;
+    double worst = 0, draco_worst = 0, s_encode = 0, s_decode = 0, s_decompose = 0, s_hulls = 0;
+    int draco_bits_max = 0;
     for (size_t m = 0; m < pruned.meshes.size(); ++m) {
       const hullpack::MeshPackReport& r = packed->report.meshes[m];
+      const hullpack::Mesh& mesh = pruned.meshes[m];
       mesh_bytes += r.bytes_after;
       hull_bytes += r.hull_bytes;
       hulls += r.hull_count;
       triangles += r.triangles;
       worst = std::max(worst, r.max_error_fraction);
-      std::unique_ptr<draco::Mesh> d = hullpack::ToDracoMesh(pruned.meshes[m]);
-      const std::vector<uint8_t> bytes = d ? hullpack::DracoEncode(*d, r.position_bits, options.normal_bits, options.uv_bits, 7)
-                                           : std::vector<uint8_t>();
+      s_encode += r.seconds_encode;
+      s_decode += r.seconds_decode;
+      s_decompose += r.seconds_decompose;
+      s_hulls += r.seconds_hull_encode;
+      std::unique_ptr<draco::Mesh> d = hullpack::ToDracoMesh(mesh);
+      if (!d) continue;
+      // Draco at equal error: from one bit below the uniform grid's guarantee up, the first
+      // position bits whose decoded positions stay within the budget (or --qp when given).
+      const double diagonal = hullpack::BoundingBoxDiagonal(mesh);
+      const double budget = options.max_error * diagonal;
+      int bits = options.position_bits > 0 ? options.position_bits
+                                           : std::max(1, hullpack::PositionBitsForMaxError(hullpack::PositionRange(mesh), budget) - 1);
+      std::vector<uint8_t> bytes;
+      double error = 0;
+      for (; bits <= 30; ++bits) {
+        bytes = hullpack::DracoEncode(*d, bits, options.normal_bits, options.uv_bits, 7);
+        error = hullpack::MaxVertexDistance(mesh, hullpack::DracoDecodePositions(bytes));
+        if (options.position_bits > 0 || error <= budget) break;
+      }
       draco_bytes += bytes.size();
+      draco_worst = std::max(draco_worst, diagonal > 0 ? error / diagonal : 0);
+      draco_bits_max = std::max(draco_bits_max, bits);
     }
     const size_t packed_bytes = mesh_bytes + hull_bytes;
     const double ratio = draco_bytes ? double(packed_bytes) / draco_bytes : 0;
     ratios.push_back(ratio);
-    std::printf("%-22s %8zu | %9zu %9zu %9zu %5zu | %9zu | %6.3f | %9.6f %7.2f\n", file.c_str(), triangles, mesh_bytes,
-                hull_bytes, packed_bytes, hulls, draco_bytes, ratio, worst, ms / 1000);
-    char line[512];
-    std::snprintf(line, sizeof(line), "%s,%zu,%zu,%zu,%zu,%zu,%zu,%.4f,%.6g,%.3f,%zu\n", file.c_str(), triangles,
-                  mesh_bytes, hull_bytes, packed_bytes, hulls, draco_bytes, ratio, worst, ms / 1000,
-                  packed->glb.size());
+    const size_t json_bytes = JsonChunkBytes(packed->glb);
+    const hullpack::PackReport& pr = packed->report;
+    std::printf("%-22s %7zu %5zu | %8zu %7zu %8zu | %8zu %2d | %6.3f | %9.6f %9.6f | %6zu %6zu | %6.2f %6.2f %6.2f %6.2f\n",
+                file.c_str(), triangles, hulls, mesh_bytes, hull_bytes, packed_bytes, draco_bytes, draco_bits_max, ratio,
+                worst, draco_worst, json_bytes, packed->glb.size(), s_encode, s_decode, s_decompose, s_hulls);
+    char line[768];
+    std::snprintf(line, sizeof(line), "%s,%zu,%zu,%zu,%zu,%zu,%zu,%d,%.4f,%.6g,%.6g,%zu,%zu,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f\n",
+                  file.c_str(), triangles, hulls, mesh_bytes, hull_bytes, packed_bytes, draco_bytes, draco_bits_max, ratio,
+                  worst, draco_worst, packed->glb.size(), json_bytes, pr.seconds_prune, s_encode, s_decode, s_decompose,
+                  s_hulls, pr.seconds_write, ms / 1000);
     text += line;
   }
   if (!ratios.empty()) {

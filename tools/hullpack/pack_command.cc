@@ -66,15 +66,22 @@ nlohmann::json ReportJson(const PackReport& r) {
                         {"bytes_after", m.bytes_after},
                         {"bits_per_vertex", m.bits_per_vertex},
                         {"position_bits", m.position_bits},
+                        {"position_range", m.position_range},
                         {"max_error", m.max_error},
                         {"max_error_fraction", m.max_error_fraction},
                         {"hull_count", m.hull_count},
                         {"hull_vertices", m.hull_vertices},
                         {"hull_bytes", m.hull_bytes},
-                        {"seconds", {{"encode", m.seconds_encode}, {"decode", m.seconds_decode}, {"decompose", m.seconds_decompose}}}};
+                        {"seconds",
+                         {{"encode", m.seconds_encode},
+                          {"decode", m.seconds_decode},
+                          {"decompose", m.seconds_decompose},
+                          {"hull_encode", m.seconds_hull_encode}}}};
     if (!m.no_hulls_reason.empty()) j["no_hulls"] = m.no_hulls_reason;
     if (m.hull_count) {
       j["hull_error"] = {{"concavity", m.hull_concavity}, {"volume_iou", m.hull_iou}, {"quantization", m.hull_quantization_error}};
+      j["hull_position_bits"] = m.hull_position_bits;
+      j["hull_position_range"] = m.hull_position_range;
     }
     meshes.push_back(std::move(j));
   }

@@ -5,6 +5,13 @@
 
 namespace hullpack {
 
+vhacd::Parameters PackCollisionParameters() {
+  vhacd::Parameters p;
+  p.gamma = 0.02;
+  p.max_vertices_per_hull = 24;
+  return p;
+}
+
 bool NameMarksNonColliding(const std::string& name) {
   std::string lower(name);
   std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });

@@ -17,10 +17,19 @@ enum class HullPolicy {
   kAuto,  // every mesh except those marked or named non-colliding, and skinned ones unless asked
 };
 
+// The decomposition `hullpack pack` runs by default: V-HACD 2.0's defaults (same voxels, same
+// splitting, same 3 % stick-out bound max_distance) with
+//  - merging driven by that bound: hulls are merged while the merged hull sticks out of the mesh by
+//    no more than max_distance and adds at most 2 % of the whole hull volume (gamma 0.02 instead of
+//    0.00125), so a shape gets the fewest hulls that stay within the stick-out bound;
+//  - at most 24 vertices per hull (instead of 64): what physics engines handle fastest, and plenty
+//    for parts whose stick-out is bounded anyway.
+vhacd::Parameters PackCollisionParameters();
+
 struct CollisionSettings {
   HullPolicy policy = HullPolicy::kAuto;
   bool skinned_meshes = false;  // under kAuto: decompose skinned meshes (in their bind pose) too
-  vhacd::Parameters parameters;
+  vhacd::Parameters parameters = PackCollisionParameters();
 };
 
 // Why a mesh gets no hulls ("" when it gets them): "--hulls none", "marked non-colliding", ...

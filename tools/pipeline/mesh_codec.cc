@@ -46,7 +46,12 @@ Result<EncodedMesh> EncodeMesh(const Mesh& mesh, const std::vector<uint32_t>& gr
     out.gltf_attributes.emplace_back("COLOR_0", id++);
   }
   if (!mesh.weights.empty()) {
-    view.float_attributes.push_back(FloatView(mesh.weights, 4, o3dgc::Semantic::kWeight, s.weight_bits));
+    // Skin weights are constant over large regions: the previous vertex predicts them better than
+    // a parallelogram does. One range for the four (all in [0, 1]), as glTF's Draco extension has.
+    o3dgc::FloatAttributeView w = FloatView(mesh.weights, 4, o3dgc::Semantic::kWeight, s.weight_bits);
+    w.prediction = o3dgc::Prediction::kDifferential;
+    w.range = o3dgc::RangeMode::kUniform;
+    view.float_attributes.push_back(w);
     out.gltf_attributes.emplace_back("WEIGHTS_0", id++);
   }
   if (!mesh.tangents.empty()) {
@@ -73,6 +78,7 @@ Result<EncodedMesh> EncodeMesh(const Mesh& mesh, const std::vector<uint32_t>& gr
   params.stream_type = s.stream_type;
   params.keep_order = s.keep_order;
   params.position_bits = s.position_bits;
+  params.position_range = s.position_range;
   params.normal_bits = s.normal_bits;
   const o3dgc::Status st = o3dgc::Encode(view, params, &out.stream, &out.info);
   if (st != o3dgc::Status::kOk) {
@@ -168,10 +174,7 @@ int PositionBitsForMaxError(double range, double max_error) {
   return std::clamp(bits, 1, 30);
 }
 
-namespace {
-
-// Per-axis extent of the positions (zero for an empty mesh).
-std::array<double, 3> Extent(const Mesh& mesh) {
+std::array<double, 3> PositionExtent(const Mesh& mesh) {
   if (mesh.positions.empty()) return {0, 0, 0};
   double lo[3], hi[3];
   for (int k = 0; k < 3; ++k) lo[k] = hi[k] = mesh.positions[k];
@@ -182,15 +185,13 @@ std::array<double, 3> Extent(const Mesh& mesh) {
   return {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
 }
 
-}  // namespace
-
 double PositionRange(const Mesh& mesh) {
-  const std::array<double, 3> e = Extent(mesh);
+  const std::array<double, 3> e = PositionExtent(mesh);
   return std::max({e[0], e[1], e[2]});
 }
 
 double BoundingBoxDiagonal(const Mesh& mesh) {
-  const std::array<double, 3> e = Extent(mesh);
+  const std::array<double, 3> e = PositionExtent(mesh);
   return std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
 }
 

@@ -7,6 +7,7 @@
 #ifndef HULLPACK_TOOLS_PIPELINE_MESH_CODEC_H_
 #define HULLPACK_TOOLS_PIPELINE_MESH_CODEC_H_
 
+#include <array>
 #include <string>
 #include <utility>
 #include <vector>
@@ -21,6 +22,9 @@ struct MeshCodecSettings {
   o3dgc::StreamType stream_type = o3dgc::StreamType::kBinary;
   bool keep_order = false;  // true: decoded vertex and triangle order equal the input's
   int position_bits = 14;
+  // How the position quantization cube is sized: kUniform (largest extent) or kDiagonal (the
+  // bounding-box diagonal: coarser cells at the same bits, for budgets that kUniform overshoots).
+  o3dgc::RangeMode position_range = o3dgc::RangeMode::kUniform;
   int normal_bits = 10;
   int uv_bits = 12;
   int color_bits = 10;
@@ -52,6 +56,9 @@ Mesh ExtractGroup(const Mesh& mesh, const std::vector<uint32_t>& groups, uint32_
 // Position bits that keep every decoded position within `max_error` (Euclidean) of the original,
 // for uniform quantization of a cube of side `range`. Clamped to 1..30.
 int PositionBitsForMaxError(double range, double max_error);
+
+// Per-axis extent of the positions (zero for an empty mesh).
+std::array<double, 3> PositionExtent(const Mesh& mesh);
 
 // Largest extent of the mesh's positions (the side of its quantization cube) and bbox diagonal.
 double PositionRange(const Mesh& mesh);

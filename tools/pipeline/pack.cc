@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "mesh/validate.h"
+#include "pipeline/error_budget.h"
+#include "pipeline/hull_stream.h"
 
 namespace hullpack {
 namespace {
@@ -45,16 +47,39 @@ class DecomposeProgress : public vhacd::Observer {
   int last_percent_ = -1;
 };
 
-MeshCodecSettings SettingsFor(const Mesh& mesh, const PackOptions& options) {
+MeshCodecSettings SettingsFor(const PackOptions& options) {
   MeshCodecSettings s;
   s.stream_type = options.stream_type;
   s.keep_order = options.keep_order;
   s.normal_bits = options.normal_bits;
   s.uv_bits = options.uv_bits;
-  s.position_bits = options.position_bits > 0
-                        ? options.position_bits
-                        : PositionBitsForMaxError(PositionRange(mesh), options.max_error * BoundingBoxDiagonal(mesh));
   return s;
+}
+
+// The render mesh's stream: explicit bits (uniform grid, as given), or the smallest stream within
+// the error budget.
+Result<BudgetedEncoding> EncodeRenderMesh(const Mesh& mesh, const PackOptions& options) {
+  MeshCodecSettings s = SettingsFor(options);
+  if (options.position_bits <= 0) {
+    return EncodeWithinError(mesh, mesh.material_ids, s, options.max_error * BoundingBoxDiagonal(mesh));
+  }
+  BudgetedEncoding out;
+  s.position_bits = options.position_bits;
+  auto t = Clock::now();
+  Result<EncodedMesh> encoded = EncodeMesh(mesh, mesh.material_ids, s);
+  if (!encoded.ok()) return encoded.status();
+  out.seconds_encode = Seconds(t);
+  t = Clock::now();
+  Result<Mesh> decoded = DecodeMesh(encoded->stream.data(), encoded->stream.size(), &out.groups, mesh.name);
+  if (!decoded.ok()) return Status(StatusCode::kInternal, "mesh '" + mesh.name + "' does not decode: " + decoded.status().message());
+  out.seconds_decode = Seconds(t);
+  out.encoded = std::move(encoded.value());
+  out.decoded = std::move(decoded.value());
+  out.position_bits = s.position_bits;
+  out.position_range = s.position_range;
+  out.max_error = MaxVertexDistance(mesh, out.decoded);
+  out.streams_tried = 1;
+  return out;
 }
 
 struct PackedMesh {
@@ -73,32 +98,21 @@ Status PackHulls(const Mesh& mesh, const PackOptions& options, PackObserver* obs
   report.hull_concavity = set->report.concavity;
   report.hull_iou = set->report.volume_iou;
   if (set->hulls.empty()) return Status::Ok();
-  // All hulls of the mesh in one stream, one group per hull.
-  Mesh all;
-  all.name = mesh.name + "_hulls";
-  std::vector<uint32_t> groups;
-  for (size_t h = 0; h < set->hulls.size(); ++h) {
-    const Mesh& hull = set->hulls[h];
-    const uint32_t base = static_cast<uint32_t>(all.vertex_count());
-    all.positions.insert(all.positions.end(), hull.positions.begin(), hull.positions.end());
-    for (uint32_t i : hull.indices) all.indices.push_back(base + i);
-    groups.insert(groups.end(), hull.triangle_count(), static_cast<uint32_t>(h));
-  }
-  report.hull_vertices = all.vertex_count();
-  MeshCodecSettings s = SettingsFor(mesh, options);
-  s.position_bits = PositionBitsForMaxError(PositionRange(all), options.hull_error * BoundingBoxDiagonal(mesh));
-  Result<EncodedMesh> encoded = EncodeMesh(all, groups, s);
-  if (!encoded.ok()) return encoded.status();
-  std::vector<uint32_t> decoded_groups;
-  Result<Mesh> decoded = DecodeMesh(encoded->stream.data(), encoded->stream.size(), &decoded_groups, all.name);
-  if (!decoded.ok()) return Status(StatusCode::kInternal, "hull stream does not decode: " + decoded.status().message());
+  // All hulls of the mesh in one stream, one group per hull, quantized to the hull budget.
+  for (const Mesh& hull : set->hulls) report.hull_vertices += hull.vertex_count();
   const double diagonal = BoundingBoxDiagonal(mesh);
-  report.hull_quantization_error = diagonal > 0 ? MaxVertexDistance(all, decoded.value()) / diagonal : 0;
-  report.hull_bytes = encoded->stream.size();
+  const auto t1 = Clock::now();
+  Result<EncodedHulls> encoded = EncodeHulls(set->hulls, SettingsFor(options), options.hull_error * diagonal);
+  if (!encoded.ok()) return Status(encoded.status().code(), "mesh '" + mesh.name + "': hulls: " + encoded.status().message());
+  report.seconds_hull_encode = Seconds(t1);
+  report.hull_quantization_error = diagonal > 0 ? encoded->max_error / diagonal : 0;
+  report.hull_position_bits = encoded->position_bits;
+  report.hull_position_range = RangeModeName(encoded->position_range);
+  report.hull_bytes = encoded->encoded.stream.size();
   const int stream = static_cast<int>(streams.streams.size());
-  streams.streams.push_back(std::move(encoded.value()));
+  streams.streams.push_back(std::move(encoded->encoded));
   for (size_t h = 0; h < set->hulls.size(); ++h) {
-    Mesh hull = ExtractGroup(decoded.value(), decoded_groups, static_cast<uint32_t>(h));
+    Mesh hull = std::move(encoded->decoded[h]);
     hull.name = mesh.name + "_hull_" + std::to_string(h);
     hull.material_ids.clear();
     packed.hulls.push_back(std::move(hull));
@@ -146,31 +160,26 @@ Result<PackResult> PackScene(Scene scene, const PackOptions& options, PackObserv
     r.vertices = mesh.vertex_count();
     r.bytes_before = PlainGeometryBytes(mesh);
     if (observer) observer->OnProgress(from, prefix + "encode");
-    const MeshCodecSettings settings = SettingsFor(mesh, options);
-    r.position_bits = settings.position_bits;
-    auto t = Clock::now();
-    Result<EncodedMesh> encoded = EncodeMesh(mesh, mesh.material_ids, settings);
+    Result<BudgetedEncoding> encoded = EncodeRenderMesh(mesh, options);
     if (!encoded.ok()) return encoded.status();
-    r.seconds_encode = Seconds(t);
-    t = Clock::now();
-    std::vector<uint32_t> groups;
-    Result<Mesh> decoded = DecodeMesh(encoded->stream.data(), encoded->stream.size(), &groups, mesh.name);
-    if (!decoded.ok()) return Status(StatusCode::kInternal, "mesh '" + mesh.name + "' does not decode: " + decoded.status().message());
-    r.seconds_decode = Seconds(t);
+    r.position_bits = encoded->position_bits;
+    r.position_range = RangeModeName(encoded->position_range);
+    r.seconds_encode = encoded->seconds_encode;
+    r.seconds_decode = encoded->seconds_decode;
     Mesh& out = packed[i].decoded;
-    out = std::move(decoded.value());
+    out = std::move(encoded->decoded);
     out.name = mesh.name;
     out.collides = mesh.collides;
-    out.material_ids = mesh.material_ids.empty() ? std::vector<uint32_t>() : std::move(groups);
-    r.max_error = MaxVertexDistance(mesh, out);
+    out.material_ids = mesh.material_ids.empty() ? std::vector<uint32_t>() : std::move(encoded->groups);
+    r.max_error = encoded->max_error;
     const double diagonal = BoundingBoxDiagonal(mesh);
     r.max_error_fraction = diagonal > 0 ? r.max_error / diagonal : 0;
-    r.bytes_after = encoded->stream.size();
+    r.bytes_after = encoded->encoded.stream.size();
     r.bits_per_vertex = r.vertices ? 8.0 * r.bytes_after / r.vertices : 0;
     MeshSource source;
     source.stream = static_cast<int>(render_streams.streams.size());
     source.grouped = !mesh.material_ids.empty();
-    render_streams.streams.push_back(std::move(encoded.value()));
+    render_streams.streams.push_back(std::move(encoded->encoded));
     render_streams.sources.push_back(source);
 
     r.no_hulls_reason = WhyNoHulls(mesh, options.collision);

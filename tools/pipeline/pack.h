@@ -42,16 +42,21 @@ struct MeshPackReport {
   size_t bytes_after = 0;         // its compressed stream
   double bits_per_vertex = 0;     // bytes_after * 8 / vertices
   int position_bits = 0;
+  std::string position_range;     // the quantization grid: "uniform", "per-axis" or "diagonal"
   double max_error = 0;           // largest position error reached, in model units
   double max_error_fraction = 0;  // ... as a fraction of the bounding-box diagonal
   std::string no_hulls_reason;    // why the mesh has no hulls, "" when it has some
   size_t hull_count = 0;
   size_t hull_vertices = 0;
   size_t hull_bytes = 0;          // the hull stream
+  int hull_position_bits = 0;
+  std::string hull_position_range;
   double hull_concavity = -1;     // vhacd's report (fractions of the diagonal); -1 = not measured
   double hull_iou = -1;
   double hull_quantization_error = 0;  // hull vertex error after quantization, fraction of diagonal
-  double seconds_encode = 0, seconds_decode = 0, seconds_decompose = 0;
+  // encode: the render stream, every quantization grid tried; decode: the chosen stream once;
+  // hull_encode: quantizing, welding and encoding the hulls.
+  double seconds_encode = 0, seconds_decode = 0, seconds_decompose = 0, seconds_hull_encode = 0;
 };
 
 struct PackReport {

@@ -28,6 +28,8 @@ run 0 pack -- "$bin" pack "$sample" -o "$tmp/t.glb" --report "$tmp/t.json" --qui
 [ -s "$tmp/t.glb" ] && pass || fail "pack wrote nothing"
 grep -q '"hull_count"' "$tmp/t.json" && grep -q '"max_error_fraction"' "$tmp/t.json" && pass || fail "report lacks fields"
 run 0 info-packed -- "$bin" info "$tmp/t.glb"
+cp "$tmp/t.glb" "$tmp/hulls.glb"  # compressed mesh + OMI hulls, no fallback (validated below)
+grep -q '"hull_position_bits"' "$tmp/t.json" && grep -q '"hull_encode"' "$tmp/t.json" && pass || fail "report lacks hull fields"
 run 1 refuse-existing -- "$bin" pack "$sample" -o "$tmp/t.glb" --quiet
 grep -q "exists (use --force" "$tmp/err" && pass || fail "refusal message: $(cat "$tmp/err")"
 run 0 force -- "$bin" pack "$sample" -o "$tmp/t.glb" --force --quiet --hulls none
@@ -55,7 +57,7 @@ run 64 bad-option -- "$bin" pack "$sample" -o "$tmp/x.glb" --max-error -1
 # The Khronos validator on the packed and unpacked files (skipped without node + gltf-validator).
 if [ -n "$node" ] && [ -f "$src/node_modules/gltf-validator/package.json" ]; then
   run 0 pack-khr -- "$bin" pack "$sample" -o "$tmp/khr.glb" --physics khr --fallback --quiet
-  for f in t.glb plain.glb khr.glb batch/in.packed.glb; do
+  for f in hulls.glb t.glb plain.glb khr.glb batch/in.packed.glb; do
     run 0 "validate-$f" -- "$node" "$src/tests/tools/gltf/validate_gltf.mjs" "$tmp/$f"
   done
 else

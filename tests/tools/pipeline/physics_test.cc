@@ -1,5 +1,6 @@
-// A real physics engine accepts the hulls: Bullet builds a compound of convex hull shapes from
-// them, drops the body on a plane, and it comes to rest where the mesh says it should.
+// A real physics engine accepts the hulls as a packed file carries them: Bullet builds a compound of
+// convex hull shapes from them, drops the body on a plane, and it comes to rest where the mesh says
+// it should.
 #include <btBulletDynamicsCommon.h>
 #include <gtest/gtest.h>
 
@@ -8,7 +9,9 @@
 #include <cmath>
 #include <memory>
 
+#include "gltf/packed_glb_reader.h"
 #include "pipeline/collision.h"
+#include "pipeline/pack.h"
 
 namespace hullpack {
 namespace {
@@ -23,7 +26,7 @@ struct Drop {
 };
 
 // Drops the hull compound of `mesh` from `height` onto the plane z = 0 and simulates `seconds`.
-Drop DropOnPlane(const Mesh& mesh, const HullSet& hulls, double height, double seconds) {
+Drop DropOnPlane(const Mesh& mesh, const std::vector<Mesh>& hulls, double height, double seconds) {
   btDefaultCollisionConfiguration config;
   btCollisionDispatcher dispatcher(&config);
   btDbvtBroadphase broadphase;
@@ -37,7 +40,7 @@ Drop DropOnPlane(const Mesh& mesh, const HullSet& hulls, double height, double s
 
   btCompoundShape compound;
   std::vector<std::unique_ptr<btConvexHullShape>> parts;
-  for (const Mesh& hull : hulls.hulls) {
+  for (const Mesh& hull : hulls) {
     auto shape = std::make_unique<btConvexHullShape>();
     for (size_t v = 0; v < hull.vertex_count(); ++v) {
       shape->addPoint(btVector3(hull.positions[v * 3], hull.positions[v * 3 + 1], hull.positions[v * 3 + 2]), false);
@@ -76,14 +79,27 @@ Drop DropOnPlane(const Mesh& mesh, const HullSet& hulls, double height, double s
   return d;
 }
 
+// The hulls as a packed file carries them: decomposed with pack's defaults, quantized to the hull
+// budget, welded, compressed, and read back from the GLB.
+std::vector<Mesh> PackedHulls(const Mesh& mesh) {
+  Scene scene;
+  scene.meshes = {mesh};
+  AddRootNodeForAllMeshes(scene, "torus");
+  PackOptions options;
+  options.collision.parameters.resolution = 50000;
+  Result<PackResult> packed = PackScene(scene, options);
+  if (!packed.ok()) return {};
+  GltfDocument doc;
+  Result<Scene> read = ReadPackedGltf(packed->glb.data(), packed->glb.size(), "torus.glb", "", &doc);
+  if (!read.ok()) return {};
+  return std::vector<Mesh>(read->meshes.begin() + 1, read->meshes.end());
+}
+
 TEST(Physics, BulletRestsTheTorusFlatOnThePlane) {
   const Mesh mesh = Torus();
-  vhacd::Parameters p;
-  p.resolution = 50000;
-  Result<HullSet> hulls = DecomposeMesh(mesh, p, nullptr);
-  ASSERT_TRUE(hulls.ok()) << hulls.status().ToString();
-  ASSERT_GT(hulls->hulls.size(), 2u);
-  const Drop d = DropOnPlane(mesh, hulls.value(), 2.0, 4.0);
+  const std::vector<Mesh> hulls = PackedHulls(mesh);
+  ASSERT_GT(hulls.size(), 2u);
+  const Drop d = DropOnPlane(mesh, hulls, 2.0, 4.0);
   // The mesh's lowest point touches the plane: hulls may stick out by their concavity (a few
   // thousandths of the 2.6 diagonal) and the collision margin is 0.001.
   EXPECT_NEAR(d.lowest_mesh_z, 0.0, 0.02);
@@ -96,11 +112,9 @@ TEST(Physics, BulletDoesNotLetTheTorusFallThroughItsHole) {
   // with the hole kept empty it comes to rest lower than the post only if it slides off, which a
   // centred drop does not do. Here we simply check no hull covers the centre.
   const Mesh mesh = Torus();
-  vhacd::Parameters p;
-  p.resolution = 50000;
-  Result<HullSet> hulls = DecomposeMesh(mesh, p, nullptr);
-  ASSERT_TRUE(hulls.ok());
-  for (const Mesh& hull : hulls->hulls) {
+  const std::vector<Mesh> hulls = PackedHulls(mesh);
+  ASSERT_GT(hulls.size(), 2u);
+  for (const Mesh& hull : hulls) {
     btConvexHullShape shape;
     for (size_t v = 0; v < hull.vertex_count(); ++v) {
       shape.addPoint(btVector3(hull.positions[v * 3], hull.positions[v * 3 + 1], hull.positions[v * 3 + 2]), false);

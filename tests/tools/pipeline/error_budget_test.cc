@@ -1,0 +1,110 @@
+#include "pipeline/error_budget.h"
+
+#include <gtest/gtest.h>
+
+#include "test_torus.h"
+
+#include <cmath>
+#include <cstdint>
+#include <algorithm>
+
+namespace hullpack {
+namespace {
+
+// A long thin torus (x stretched 6x, z squashed): extents far from a cube, so the three grids differ.
+Mesh Elongated() {
+  Mesh m = testing::TorusMesh(48, 16);
+  for (size_t v = 0; v < m.vertex_count(); ++v) {
+    m.positions[v * 3] *= 6;
+    m.positions[v * 3 + 2] *= 0.5f;
+  }
+  m.normals.clear();
+  return m;
+}
+
+// Largest distance between vertex i of `a` and vertex i of `b` (same order: keep_order).
+double PerVertexError(const Mesh& a, const Mesh& b) {
+  double worst = 0;
+  for (size_t v = 0; v < a.vertex_count(); ++v) {
+    double d = 0;
+    for (int k = 0; k < 3; ++k) d += std::pow(double(a.positions[v * 3 + k]) - b.positions[v * 3 + k], 2);
+    worst = std::max(worst, std::sqrt(d));
+  }
+  return worst;
+}
+
+TEST(ErrorBudget, GuaranteedBitsFollowTheBoundOfEachGrid) {
+  const std::array<double, 3> extent = {1, 0.1, 0.1};
+  // uniform: sqrt(3)/2 * 1 / 0.0005 = 1732 cells -> 11 bits; per-axis: |e|/2 / 0.0005 = 1010 -> 10;
+  // diagonal: sqrt(3)/2 * |e| / 0.0005 = 1749 -> 11.
+  EXPECT_EQ(GuaranteedPositionBits(o3dgc::RangeMode::kUniform, extent, 0.0005), 11);
+  EXPECT_EQ(GuaranteedPositionBits(o3dgc::RangeMode::kPerAxis, extent, 0.0005), 10);
+  EXPECT_EQ(GuaranteedPositionBits(o3dgc::RangeMode::kDiagonal, extent, 0.0005), 11);
+  EXPECT_EQ(GuaranteedPositionBits(o3dgc::RangeMode::kUniform, {0, 0, 0}, 0.0005), 1);
+  EXPECT_EQ(GuaranteedPositionBits(o3dgc::RangeMode::kUniform, extent, 1e-12), 30);
+  EXPECT_STREQ(RangeModeName(o3dgc::RangeMode::kPerAxis), "per-axis");
+}
+
+TEST(ErrorBudget, EveryGridKeepsItsGuarantee) {
+  const Mesh mesh = Elongated();
+  const double budget = 0.0005 * BoundingBoxDiagonal(mesh);
+  for (o3dgc::RangeMode mode : {o3dgc::RangeMode::kUniform, o3dgc::RangeMode::kPerAxis, o3dgc::RangeMode::kDiagonal}) {
+    MeshCodecSettings s;
+    s.keep_order = true;
+    s.position_range = mode;
+    s.position_bits = GuaranteedPositionBits(mode, PositionExtent(mesh), budget);
+    Result<EncodedMesh> e = EncodeMesh(mesh, {}, s);
+    ASSERT_TRUE(e.ok());
+    Result<Mesh> d = DecodeMesh(e->stream.data(), e->stream.size(), nullptr, "t");
+    ASSERT_TRUE(d.ok());
+    EXPECT_LE(PerVertexError(mesh, d.value()), budget) << RangeModeName(mode);
+  }
+}
+
+TEST(ErrorBudget, ChoosesTheSmallestStreamWithinTheBudget) {
+  const Mesh mesh = Elongated();
+  const double budget = 0.0005 * BoundingBoxDiagonal(mesh);
+  MeshCodecSettings s;
+  s.keep_order = true;
+  Result<BudgetedEncoding> chosen = EncodeWithinError(mesh, {}, s, budget);
+  ASSERT_TRUE(chosen.ok()) << chosen.status().ToString();
+  EXPECT_GE(chosen->streams_tried, 2);
+  EXPECT_LE(chosen->max_error, budget);
+  EXPECT_LE(PerVertexError(mesh, chosen->decoded), budget);  // per vertex, not only as point sets
+  // The decoded mesh is the stream's.
+  Result<Mesh> again = DecodeMesh(chosen->encoded.stream.data(), chosen->encoded.stream.size(), nullptr, "t");
+  ASSERT_TRUE(again.ok());
+  EXPECT_EQ(again->positions, chosen->decoded.positions);
+  // Never larger than the plain uniform grid at its guaranteed bits (what a fixed rule would pick).
+  s.position_bits = GuaranteedPositionBits(o3dgc::RangeMode::kUniform, PositionExtent(mesh), budget);
+  Result<EncodedMesh> uniform = EncodeMesh(mesh, {}, s);
+  ASSERT_TRUE(uniform.ok());
+  EXPECT_LE(chosen->encoded.stream.size(), uniform->stream.size());
+  // On this stretched shape the per-axis grid needs fewer bits than the cube of the largest extent.
+  EXPECT_LT(GuaranteedPositionBits(o3dgc::RangeMode::kPerAxis, PositionExtent(mesh), budget), s.position_bits);
+}
+
+TEST(ErrorBudget, TriesFewerBitsWhenTheMeasuredErrorLeavesRoom) {
+  // A box's corners are the ends of every grid's range, so they decode exactly at any bit count:
+  // the measured error stays 0 and the search walks down to 1 bit, far below the guarantee.
+  Mesh box;
+  for (int c = 0; c < 8; ++c) box.positions.insert(box.positions.end(), {c & 1 ? 7.0f : 0.0f, c & 2 ? 3.0f : 0.0f, c & 4 ? 5.0f : 0.0f});
+  box.indices = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4, 2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
+  Result<BudgetedEncoding> chosen = EncodeWithinError(box, {}, MeshCodecSettings(), 0.01);
+  ASSERT_TRUE(chosen.ok()) << chosen.status().ToString();
+  EXPECT_EQ(chosen->max_error, 0);
+  EXPECT_EQ(chosen->position_bits, 1);
+  EXPECT_GT(GuaranteedPositionBits(chosen->position_range, PositionExtent(box), 0.01), 8);
+}
+
+TEST(ErrorBudget, BadBudgetsAreErrors) {
+  const Mesh mesh = Elongated();
+  for (double bad : {0.0, -1.0, std::nan(""), double(INFINITY)}) {
+    Result<BudgetedEncoding> r = EncodeWithinError(mesh, {}, MeshCodecSettings(), bad);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.status().code(), StatusCode::kInvalidArgument);
+  }
+}
+
+}  // namespace
+}  // namespace hullpack
