@@ -106,6 +106,17 @@ double DistanceToHulls(const Vec3& p, const std::vector<HullMesh>& hulls, const 
   return best;
 }
 
+// Distance from p to the surface of `hull`, or any value >= limit once known to be at least limit.
+double HullSurfaceDistance(const Vec3& p, const HullMesh& hull, double limit) {
+  double best = limit;
+  for (const auto& t : hull.triangles)
+    best = std::min(best, PointTriangleDistance(p, hull.vertices[t[0]], hull.vertices[t[1]], hull.vertices[t[2]]));
+  return best;
+}
+
+// Cracks between hulls narrower than this fraction of the diagonal do not count as boundary.
+constexpr double kGap = 0.002;
+
 }  // namespace
 
 // Points about `spacing` apart inside the triangle, in rows parallel to its longest edge (linear
@@ -218,14 +229,21 @@ bool ComputeErrorReport(const MetricsInput& in, Context* ctx, Report* report) {
   const double cells_at_one = static_cast<double>(grid.dims[0]) * grid.dims[1] * grid.dims[2];
   cell = std::clamp(cell, std::max(0.5, std::cbrt(cells_at_one / 8e6)), 4.0);
   TriangleLocator locator(*in.mesh, cell);
+  const double gap = kGap * in.diagonal;
   chunk_max.assign((hs.size() + kChunk - 1) / kChunk, 0.0);
   if (!ParallelFor(ctx, chunk_max.size(), [&](size_t c) {
         double m = 0.0;
         for (size_t k = c * kChunk; k < std::min(hs.size(), (c + 1) * kChunk); ++k) {
           const Vec3& p = hs[k].second;
+          // On the union's boundary unless inside another hull or across a crack narrower than
+          // kGap (exact distance: the plane bound alone reaches much farther near sharp edges).
           bool interior = false;
-          for (size_t h = 0; h < hulls.size() && !interior; ++h)
-            if (h != hs[k].first && planes[h].SignedDistanceBound(p) < 0.5) interior = true;
+          for (size_t h = 0; h < hulls.size() && !interior; ++h) {
+            if (h == hs[k].first) continue;
+            const double s = planes[h].SignedDistanceBound(p);
+            if (s <= 0) interior = true;
+            else if (s < gap) interior = HullSurfaceDistance(p, hulls[h], gap) < gap;
+          }
           if (!interior) {
             const double dd = locator.Distance(p);
             m = std::max(m, dd);

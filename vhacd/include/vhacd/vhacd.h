@@ -177,7 +177,9 @@ struct Report {
   // fill rule above); measured for open meshes too.
   double solid_coverage = -1.0;
   // One-sided Hausdorff distances on samples of both surfaces. mesh -> hulls counts 0 for a mesh
-  // point inside a hull; hulls -> mesh uses only points of the boundary of the union of hulls.
+  // point inside a hull; hulls -> mesh uses only points of the boundary of the union of hulls (a
+  // hull surface point within 0.2 % of the diagonal of another hull counts as interior: cracks
+  // narrower than that between hulls are ignored).
   double hausdorff_mesh_to_hulls = -1.0;
   double hausdorff_hulls_to_mesh = -1.0;
   double concavity = -1.0;        // max of the two Hausdorff distances
