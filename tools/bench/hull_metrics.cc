@@ -418,15 +418,19 @@ MeshMeasure::MeshMeasure(Soup mesh, const MetricsOptions& options) : mesh_(std::
 
   // Inside lattice (flat boxes get a minimum thickness so the lattice stays finite).
   V3 ext = (hi_ - lo_).cwiseMax(std::max(diagonal_, 1e-300) * 1e-3);
-  step_ = std::cbrt(ext[0] * ext[1] * ext[2] / static_cast<double>(std::max<size_t>(1, options_.solid_points)));
-  for (int a = 0; a < 3; ++a) dims_[a] = std::max(1, static_cast<int>(std::ceil(ext[a] / step_)));
-  origin_ = 0.5 * (lo_ + hi_) - 0.5 * step_ * V3(dims_[0], dims_[1], dims_[2]);
+  // Cells tile the box exactly (a lattice point per cell centre), so counts are volumes.
+  const double cube = std::cbrt(ext[0] * ext[1] * ext[2] / static_cast<double>(std::max<size_t>(1, options_.solid_points)));
+  for (int a = 0; a < 3; ++a) {
+    dims_[a] = std::max(1, static_cast<int>(std::lround(ext[a] / cube)));
+    step_[a] = ext[a] / dims_[a];
+  }
+  origin_ = 0.5 * (lo_ + hi_) - 0.5 * step_.cwiseProduct(V3(dims_[0], dims_[1], dims_[2]));
   const size_t nl = static_cast<size_t>(dims_[0]) * dims_[1] * dims_[2];
   solid_.assign(nl, 0);
   ParallelFor(static_cast<size_t>(dims_[2]) * dims_[1], options_.threads, [&](size_t row) {
     const int k = static_cast<int>(row / dims_[1]), j = static_cast<int>(row % dims_[1]);
     for (int i = 0; i < dims_[0]; ++i) {
-      const V3 p = origin_ + step_ * V3(i + 0.5, j + 0.5, k + 0.5);
+      const V3 p = CellPoint(i, j, k);
       solid_[row * dims_[0] + i] = std::fabs(bvh_->Winding(p)) >= 0.5;
     }
   });
@@ -434,6 +438,16 @@ MeshMeasure::MeshMeasure(Soup mesh, const MetricsOptions& options) : mesh_(std::
 }
 
 MeshMeasure::~MeshMeasure() = default;
+
+V3 MeshMeasure::CellPoint(int i, int j, int k) const {
+  // A random point of the cell, the same for every query (the hash of the cell and the seed): an
+  // unbiased volume estimate whatever the shapes' alignment with the lattice.
+  Rng rng{options_.seed ^ (static_cast<uint64_t>(static_cast<uint32_t>(i)) * 0x9e3779b97f4a7c15ull) ^
+          (static_cast<uint64_t>(static_cast<uint32_t>(j)) * 0xc2b2ae3d27d4eb4full) ^
+          (static_cast<uint64_t>(static_cast<uint32_t>(k)) * 0x165667b19e3779f9ull)};
+  const double u = rng.Uniform(), v = rng.Uniform(), w = rng.Uniform();
+  return origin_ + step_.cwiseProduct(V3(i + u, j + v, k + w));
+}
 
 HullMetrics MeshMeasure::Measure(const std::vector<Soup>& hulls) const {
   HullMetrics m;
@@ -525,8 +539,8 @@ HullMetrics MeshMeasure::Measure(const std::vector<Soup>& hulls) const {
   std::vector<std::array<int, 6>> range(shapes.size());
   for (size_t h = 0; h < shapes.size(); ++h)
     for (int a = 0; a < 3; ++a) {
-      const double l = std::ceil((shapes[h].lo[a] - origin_[a]) / step_ - 0.5);
-      const double u = std::floor((shapes[h].hi[a] - origin_[a]) / step_ - 0.5);
+      const double l = std::floor((shapes[h].lo[a] - origin_[a]) / step_[a]);
+      const double u = std::floor((shapes[h].hi[a] - origin_[a]) / step_[a]);
       range[h][a] = static_cast<int>(std::clamp(l, -1.0 * dims_[a], 2.0 * dims_[a] - 1));
       range[h][a + 3] = static_cast<int>(std::clamp(u, -1.0 * dims_[a] - 1, 2.0 * dims_[a] - 1));
       elo[a] = std::min(elo[a], range[h][a]);
@@ -542,7 +556,7 @@ HullMetrics MeshMeasure::Measure(const std::vector<Soup>& hulls) const {
       for (int j = range[h][1]; j <= range[h][4]; ++j)
         for (int i = range[h][0]; i <= range[h][3]; ++i) {
           uint8_t& mk = mark[static_cast<size_t>(j - elo[1]) * ed[0] + (i - elo[0])];
-          if (!mk && shapes[h].Signed(origin_ + step_ * V3(i + 0.5, j + 0.5, k + 0.5)) <= 0) mk = 1;
+          if (!mk && shapes[h].Signed(CellPoint(i, j, k)) <= 0) mk = 1;
         }
     }
     uint64_t nh = 0, ni = 0;

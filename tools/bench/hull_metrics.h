@@ -13,8 +13,9 @@
 //                   cracks narrower than `gap` between hulls, are interior; this changes the
 //                   distance on the outer boundary by at most `gap`);
 //   concavity       the larger of the two;
-//   solid           lattice points whose generalized winding number has magnitude >= 1/2 (exact
-//                   inside for closed meshes, the usual robust extension for open ones);
+//   solid           lattice points (one random point per cell of a grid over the bounding box)
+//                   whose generalized winding number has magnitude >= 1/2 (exact inside for
+//                   closed meshes, the usual robust extension for open ones);
 //   IoU             |solid ∩ hulls| / |solid ∪ hulls| on the lattice, closed meshes only;
 //   coverage        |solid ∩ hulls| / |solid| on the lattice, every mesh.
 #ifndef HULLPACK_TOOLS_BENCH_HULL_METRICS_H_
@@ -123,9 +124,11 @@ class MeshMeasure {
   V3 lo_, hi_;
   std::unique_ptr<TriangleBvh> bvh_;
   std::vector<V3> samples_;
-  // Lattice: point (i, j, k) at origin_ + (i + 1/2, j + 1/2, k + 1/2) * step_, 0 <= i < dims_[0], ...
+  // Lattice of cells tiling the mesh's bounding box: cell (i, j, k) is origin_ + [i, i+1] x ...
+  // times step_ (per axis), 0 <= i < dims_[0], ...; each holds one fixed random point.
+  V3 CellPoint(int i, int j, int k) const;
   V3 origin_;
-  double step_ = 1.0;
+  V3 step_ = V3::Ones();
   int dims_[3] = {1, 1, 1};
   std::vector<uint8_t> solid_;
   size_t solid_count_ = 0;

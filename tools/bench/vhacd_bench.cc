@@ -4,6 +4,8 @@
 //               [--ours LIST] [--preset|--quality default|high] [--mode 0|1|tetra]
 //               [--csv FILE] [--work DIR] [--timeout SECONDS] [--only NAME,NAME] [--samples N]
 //               [--gap X] [--threads N]
+//   vhacd_bench --measure MESH HULLS.obj [--gap X] [--samples N]   (the metrics of one hull file)
+//   vhacd_bench --subdivide IN OUT.obj MIN_TRIANGLES              (a dense test mesh)
 //
 // Every mesh of FOLDER (a non-OBJ file whose name also exists as .obj is skipped) is flattened to
 // a plain OBJ (v/f lines) that both programs read. Each program runs in its own process, `repeats`
@@ -29,6 +31,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -350,8 +353,79 @@ int MeasureOne(int argc, char** argv) {
   return 0;
 }
 
+// vhacd_bench --subdivide IN OUT.obj MIN_TRIANGLES: a dense test mesh. Each round splits every
+// triangle in 4 at its edge midpoints while that stays under MIN_TRIANGLES, then splits each at its
+// centroid in 3 until there are at least MIN_TRIANGLES (both keep a closed mesh closed).
+int Subdivide(int argc, char** argv) {
+  if (argc != 5) return Usage("--subdivide needs IN OUT.obj MIN_TRIANGLES");
+  const size_t target = static_cast<size_t>(std::atoll(argv[4]));
+  hullpack::Result<hullpack::Scene> scene = hullpack::ReadScene(argv[2]);
+  if (!scene.ok()) {
+    std::fprintf(stderr, "%s\n", scene.status().ToString().c_str());
+    return 1;
+  }
+  std::vector<double> pts;
+  std::vector<uint32_t> idx;
+  hullpack::FlattenScene(scene.value(), &pts, &idx);
+  Soup s;
+  for (size_t i = 0; i < pts.size(); i += 3) s.points.emplace_back(pts[i], pts[i + 1], pts[i + 2]);
+  // Weld identical positions so that shared edges get one midpoint.
+  {
+    std::map<std::array<double, 3>, uint32_t> at;
+    std::vector<V3> welded;
+    std::vector<uint32_t> remap(s.points.size());
+    for (size_t i = 0; i < s.points.size(); ++i) {
+      auto it = at.emplace(std::array<double, 3>{s.points[i][0], s.points[i][1], s.points[i][2]},
+                           static_cast<uint32_t>(welded.size()));
+      if (it.second) welded.push_back(s.points[i]);
+      remap[i] = it.first->second;
+    }
+    s.points.swap(welded);
+    for (size_t i = 0; i + 2 < idx.size(); i += 3) s.triangles.push_back({remap[idx[i]], remap[idx[i + 1]], remap[idx[i + 2]]});
+  }
+  while (s.triangles.size() * 4 <= target) {
+    std::map<std::pair<uint32_t, uint32_t>, uint32_t> mid;
+    auto midpoint = [&](uint32_t a, uint32_t b) {
+      const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+      auto it = mid.find(key);
+      if (it != mid.end()) return it->second;
+      s.points.push_back(0.5 * (s.points[a] + s.points[b]));
+      return mid[key] = static_cast<uint32_t>(s.points.size() - 1);
+    };
+    std::vector<std::array<uint32_t, 3>> next;
+    next.reserve(s.triangles.size() * 4);
+    for (const auto& t : s.triangles) {
+      const uint32_t ab = midpoint(t[0], t[1]), bc = midpoint(t[1], t[2]), ca = midpoint(t[2], t[0]);
+      next.push_back({t[0], ab, ca});
+      next.push_back({ab, t[1], bc});
+      next.push_back({ca, bc, t[2]});
+      next.push_back({ab, bc, ca});
+    }
+    s.triangles.swap(next);
+  }
+  while (s.triangles.size() < target) {
+    std::vector<std::array<uint32_t, 3>> next;
+    next.reserve(s.triangles.size() * 3);
+    for (const auto& t : s.triangles) {
+      s.points.push_back((s.points[t[0]] + s.points[t[1]] + s.points[t[2]]) / 3.0);
+      const uint32_t m = static_cast<uint32_t>(s.points.size() - 1);
+      next.push_back({t[0], t[1], m});
+      next.push_back({t[1], t[2], m});
+      next.push_back({t[2], t[0], m});
+    }
+    s.triangles.swap(next);
+  }
+  if (!WriteObjParts(argv[3], {s})) {
+    std::fprintf(stderr, "cannot write %s\n", argv[3]);
+    return 1;
+  }
+  std::printf("%s: %zu points, %zu triangles\n", argv[3], s.points.size(), s.triangles.size());
+  return 0;
+}
+
 int main(int argc, char** argv) {
   if (argc >= 2 && std::strcmp(argv[1], "--run-ours") == 0) return RunOurs(argc, argv);
+  if (argc >= 2 && std::strcmp(argv[1], "--subdivide") == 0) return Subdivide(argc, argv);
   if (argc >= 2 && std::strcmp(argv[1], "--measure") == 0) return MeasureOne(argc, argv);
   if (argc < 2) return Usage(nullptr);
   std::string folder = argv[1], ref_bin, ref_cmd, csv, work, ours_list, preset = "default";
