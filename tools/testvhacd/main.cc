@@ -108,7 +108,7 @@ bool WriteReport(const std::string& path, const std::string& input, const vhacd:
   f << "  \"tetrahedron_count\": " << rep.tetrahedron_count << ",\n";
   f << "  \"parts_before_merge\": " << rep.parts_before_merge << ",\n";
   f << "  \"seconds\": {\"voxelize\": " << JsonNumber(rep.seconds_voxelize) << ", \"fill\": " << JsonNumber(rep.seconds_fill)
-    << ", \"distance\": " << JsonNumber(rep.seconds_distance) << ", \"clip\": " << JsonNumber(rep.seconds_clip) << ", \"hulls\": " << JsonNumber(rep.seconds_hulls)
+    << ", \"tetrahedra\": " << JsonNumber(rep.seconds_tetrahedra) << ", \"distance\": " << JsonNumber(rep.seconds_distance) << ", \"clip\": " << JsonNumber(rep.seconds_clip) << ", \"hulls\": " << JsonNumber(rep.seconds_hulls)
     << ", \"merge\": " << JsonNumber(rep.seconds_merge) << ", \"simplify\": " << JsonNumber(rep.seconds_simplify)
     << ", \"report\": " << JsonNumber(rep.seconds_report) << ", \"total\": " << JsonNumber(rep.seconds_total) << "},\n";
   f << "  \"hulls\": [";

@@ -319,6 +319,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
         root.voxels.push_back(v);
       }
   rep.voxel_count = root.voxels.size();
+  clock.Lap();
   if (params.mode == Mode::kTetrahedron) {
     // Mode 1: the surface voxels become trimmed tetrahedra (see tetrahedron_set.h).
     if (!internal::BuildSurfaceCells(gmesh, grid, &ctx, &root.cells)) return Fail(Status::kCancelled, "cancelled");
@@ -352,6 +353,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
             std::to_string(root.cells.size()) + " surface voxels trimmed to the surface, " +
             std::to_string(rep.surface_voxel_count - root.cells.size()) + " left empty");
   }
+  rep.seconds_tetrahedra = clock.Lap();
   ctx.Log("grid " + std::to_string(grid.dims[0]) + "x" + std::to_string(grid.dims[1]) + "x" +
           std::to_string(grid.dims[2]) + ", " + std::to_string(rep.voxel_count) + " voxels (" +
           std::to_string(rep.surface_voxel_count) + " on the surface)");

@@ -276,9 +276,11 @@ bool BuildSurfaceCells(const GridMesh& mesh, const VoxelGrid& grid, Context* ctx
     const auto& tr = mesh.triangles[t];
     const Vec3 lo = mesh.points[tr[0]].cwiseMin(mesh.points[tr[1]]).cwiseMin(mesh.points[tr[2]]);
     const Vec3 hi = mesh.points[tr[0]].cwiseMax(mesh.points[tr[1]]).cwiseMax(mesh.points[tr[2]]);
+    // The voxels whose closed box meets the triangle's box (a bound on an integer coordinate
+    // touches the voxels on both sides).
     for (int a = 0; a < 3; ++a) {
-      range[t][a] = std::clamp(static_cast<int>(std::floor(lo[a])) - 1, 0, dims[a] - 1);
-      range[t][a + 3] = std::clamp(static_cast<int>(std::floor(hi[a])) + 1, 0, dims[a] - 1);
+      range[t][a] = std::clamp(static_cast<int>(std::ceil(lo[a])) - 1, 0, dims[a] - 1);
+      range[t][a + 3] = std::clamp(static_cast<int>(std::floor(hi[a])), 0, dims[a] - 1);
     }
     for (int s = range[t][2] / kSlab; s <= range[t][5] / kSlab; ++s) by_slab[s].push_back(static_cast<uint32_t>(t));
   }

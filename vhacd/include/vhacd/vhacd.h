@@ -188,7 +188,8 @@ struct Report {
   uint64_t tetrahedron_count = 0;  // mode 1: 5 per interior voxel + the surface voxels' trimmed ones
   uint32_t parts_before_merge = 0;
   // Wall-clock seconds per stage (distance: the distance transform used by max_distance).
-  double seconds_voxelize = 0.0, seconds_fill = 0.0, seconds_distance = 0.0, seconds_clip = 0.0, seconds_hulls = 0.0,
+  // tetrahedra: mode 1's trimmed tetrahedra of the surface voxels.
+  double seconds_voxelize = 0.0, seconds_fill = 0.0, seconds_tetrahedra = 0.0, seconds_distance = 0.0, seconds_clip = 0.0, seconds_hulls = 0.0,
          seconds_merge = 0.0, seconds_simplify = 0.0, seconds_report = 0.0, seconds_total = 0.0;
 };
 
