@@ -1,5 +1,8 @@
 #include "gltf/gltf_document.h"
 
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <limits>
@@ -119,6 +122,30 @@ int GltfDocument::AddBufferView(const void* data, size_t size, size_t alignment,
   return Append("bufferViews", std::move(view));
 }
 
+namespace {
+
+// The shortest decimal that reads back as the same float. Bounds of float accessors need no more
+// digits: the 17 of a double would double their share of the JSON (a collision hull's accessors
+// are most of its JSON). Values that are not floats are left alone.
+double ShortestFloatDecimal(double v) {
+  const float f = static_cast<float>(v);
+  if (!std::isfinite(f) || static_cast<double>(f) != v) return v;
+  char text[32];
+  for (int digits = 1; digits <= 9; ++digits) {
+    std::snprintf(text, sizeof(text), "%.*g", digits, static_cast<double>(f));
+    if (std::strtof(text, nullptr) == f) return std::strtod(text, nullptr);
+  }
+  return v;
+}
+
+nlohmann::json Bounds(const std::vector<double>& values, int component_type) {
+  nlohmann::json out = nlohmann::json::array();
+  for (double v : values) out.push_back(component_type == gltf::kFloat ? ShortestFloatDecimal(v) : v);
+  return out;
+}
+
+}  // namespace
+
 int GltfDocument::AddAccessor(const AccessorDesc& desc) {
   nlohmann::json a = nlohmann::json::object();
   if (desc.buffer_view >= 0) {
@@ -129,8 +156,8 @@ int GltfDocument::AddAccessor(const AccessorDesc& desc) {
   if (desc.normalized) a["normalized"] = true;
   a["count"] = desc.count;
   a["type"] = desc.type;
-  if (!desc.min.empty()) a["min"] = desc.min;
-  if (!desc.max.empty()) a["max"] = desc.max;
+  if (!desc.min.empty()) a["min"] = Bounds(desc.min, desc.component_type);
+  if (!desc.max.empty()) a["max"] = Bounds(desc.max, desc.component_type);
   return Append("accessors", std::move(a));
 }
 

@@ -60,6 +60,30 @@ TEST(GltfDocumentTest, AlignedAppendsAndAccessors) {
   EXPECT_EQ(acc[1]["normalized"], true);
 }
 
+TEST(GltfDocumentTest, FloatBoundsAreWrittenWithTheDigitsAFloatNeeds) {
+  GltfDocument doc;
+  AccessorDesc a;
+  a.count = 1;
+  a.type = "VEC3";
+  const float x = 0.1f, y = -1234.5678f, z = 3.0e-8f;
+  a.min = {double(x), double(y), double(z)};
+  a.max = {0.1, 1.0 / 3.0, 16777217.0};  // not float values: written as they are
+  doc.AddAccessor(a);
+  AccessorDesc indices;
+  indices.component_type = gltf::kUnsignedInt;
+  indices.count = 1;
+  indices.min = {4294967295.0};
+  indices.max = {4294967295.0};
+  doc.AddAccessor(indices);
+  const json& acc = doc.json()["accessors"];
+  EXPECT_EQ(acc[0]["min"][0].dump(), "0.1");
+  EXPECT_EQ(acc[0]["min"][1].dump(), "-1234.5677");
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(float(acc[0]["min"][k].get<double>()), float(a.min[k])) << k;
+  EXPECT_EQ(acc[0]["max"][1].get<double>(), 1.0 / 3.0);
+  EXPECT_EQ(acc[0]["max"][2].get<double>(), 16777217.0);
+  EXPECT_EQ(acc[1]["max"][0].get<double>(), 4294967295.0);
+}
+
 TEST(GltfDocumentTest, SerializeWritesAPaddedGlb) {
   GltfDocument doc;
   const uint8_t five[5] = {1, 2, 3, 4, 5};
