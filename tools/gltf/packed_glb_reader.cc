@@ -8,6 +8,7 @@
 
 #include "gltf/buffer_compaction.h"
 #include "gltf/glb_reader.h"
+#include "gltf/skin_weights.h"
 #include "o3dgc/o3dgc.h"
 
 namespace hullpack {
@@ -84,6 +85,9 @@ class Inflater {
     DecodedStream d;
     const o3dgc::Status st = o3dgc::Decode(bin.data() + offset, length, o3dgc::DecodeOptions(), &d.mesh);
     if (st != o3dgc::Status::kOk) return Error(std::string("stream: ") + o3dgc::StatusName(st));
+    for (o3dgc::DecodedFloatAttribute& a : d.mesh.float_attributes) {  // the format's one decode rule
+      if (a.semantic == o3dgc::Semantic::kWeight && a.dimension == 4) NormalizeSkinWeights(a.values.data(), a.values.size() / 4);
+    }
     // The attribute table points into the map node, which stays put.
     DecodedStream& s = streams_.emplace(view, std::move(d)).first->second;
     s.attributes.push_back({3, &s.mesh.positions, nullptr});

@@ -6,6 +6,8 @@
 #include <limits>
 #include <unordered_map>
 
+#include "gltf/skin_weights.h"
+
 namespace hullpack {
 namespace {
 
@@ -107,6 +109,7 @@ Result<Mesh> DecodeMesh(const uint8_t* data, size_t size, std::vector<uint32_t>*
       m.colors = std::move(a.values);
     } else if (a.semantic == o3dgc::Semantic::kWeight && a.dimension == 4) {
       m.weights = std::move(a.values);
+      NormalizeSkinWeights(m.weights.data(), n);  // as every decoder of packed files does
     } else if (a.semantic == o3dgc::Semantic::kGeneric && a.dimension == 4) {
       m.tangents = std::move(a.values);
     }

@@ -44,7 +44,8 @@ struct EncodedMesh {
 Result<EncodedMesh> EncodeMesh(const Mesh& mesh, const std::vector<uint32_t>& groups,
                                const MeshCodecSettings& settings);
 
-// Decodes a stream into a mesh (name, material ids left empty) and its triangle groups.
+// Decodes a stream into a mesh (name, material ids left empty) and its triangle groups. Skin weights
+// are normalized (NormalizeSkinWeights), as every decoder of packed files does.
 // Safe on untrusted bytes; `name` prefixes error messages. `info` (may be null) gets the part sizes.
 Result<Mesh> DecodeMesh(const uint8_t* data, size_t size, std::vector<uint32_t>* groups,
                         const std::string& name, o3dgc::StreamInfo* info = nullptr);

@@ -4,6 +4,8 @@
 #include <array>
 #include <set>
 
+#include "gltf/skin_weights.h"
+
 namespace hullpack {
 namespace {
 
@@ -174,6 +176,9 @@ PruneReport LeaveOutUnused(Scene& scene, const PruneOptions& options) {
     if (options.unused_uv_sets) RemoveUnusedUvSets(scene, mesh, report);
     if (options.unused_tangents) RemoveUnusedTangents(scene, mesh, report);
     if (options.unused_skin_data) RemoveUnusedSkinData(scene, i, mesh, report);
+    if (options.normalize_skin_weights && mesh.weights.size() == mesh.vertex_count() * 4) {
+      report.skin_weights_normalized += NormalizeSkinWeights(mesh.weights.data(), mesh.vertex_count());
+    }
     Sum(report.repairs, RepairMesh(mesh, options.repairs));
   }
   if (options.unreferenced_materials) RemoveUnreferencedMaterials(scene, report);
@@ -190,6 +195,10 @@ PruneReport LeaveOutUnused(Scene& scene, const PruneOptions& options) {
   line(report.materials_removed, "materials no triangle uses");
   line(report.images_removed, "images no material uses");
   if (report.repairs.changed()) report.lines.push_back(DescribeRepairs(report.repairs));
+  if (report.skin_weights_normalized) {
+    report.lines.push_back("renormalized the skin weights of " + std::to_string(report.skin_weights_normalized) +
+                           " vertices (their sum was not 1)");
+  }
   return report;
 }
 

@@ -107,6 +107,23 @@ TEST(Prune, SkinDataWithoutASkinnedNodeGoes) {
   EXPECT_FALSE(skinned.meshes[0].joints.empty());
 }
 
+TEST(Prune, SkinWeightsThatDoNotSumToOneAreRenormalized) {
+  Scene s = OneQuadScene();
+  s.skins.resize(1);
+  s.nodes[0].skin = 0;
+  s.meshes[0].joints.assign(16, 0);
+  s.meshes[0].weights = {1, 0, 0, 0, 0.5f, 0.5f, 0, 0, 0.1f, 0.1f, 0, 0, 0.6f, 0.3f, 0.3f, 0};
+  const PruneReport r = LeaveOutUnused(s);
+  EXPECT_EQ(r.skin_weights_normalized, 2u);
+  const std::vector<float>& w = s.meshes[0].weights;
+  EXPECT_FLOAT_EQ(w[8], 0.5f);
+  EXPECT_FLOAT_EQ(w[12], 0.5f);
+  EXPECT_FLOAT_EQ(w[13], 0.25f);
+  bool reported = false;
+  for (const std::string& line : r.lines) reported |= line.find("renormalized the skin weights of 2 vertices") != std::string::npos;
+  EXPECT_TRUE(reported);
+}
+
 TEST(Prune, RepairsRemoveDegenerateAndDuplicateTrianglesAndUnusedVertices) {
   Scene s = OneQuadScene();
   Mesh& m = s.meshes[0];
