@@ -43,10 +43,23 @@ bool ClipRecursively(Part root, const ClipParams& params, Context* ctx, ClipOutp
           std::vector<Vec3> pts;
           PrimitiveHullPoints(current[i], &pts);
           HullMesh h;
-          if (!PrimitiveHull(current[i], pts, &h)) return;
-          conc[i] = std::max(0.0, h.Volume() - current[i].volume()) / out->volume0;
-          if (params.field != nullptr && params.max_depth > 0 && level < params.depth)
+          double volume = current[i].volume();
+          if (!PrimitiveHull(current[i], pts, &h)) {
+            // Mode 1: the trimmed cells of a flat part (a thin sheet) can be coplanar; measure
+            // it on its voxels then, or a large flat L-shaped part would never be split.
+            if (!current[i].tetra) return;
+            PartHullPoints(current[i], false, &pts);
+            if (ComputeConvexHull(pts, 0.0, &h) != HullStatus::kOk) return;
+            volume = static_cast<double>(current[i].voxels.size());
+          }
+          conc[i] = std::max(0.0, h.Volume() - volume) / out->volume0;
+          if (params.field != nullptr && params.max_depth > 0 && level < params.depth) {
             depth[i] = params.field->HullDepth(h);
+            // Mode 1 hulls follow the surface within a voxel and can be thinner than a voxel
+            // (a bar bridging a gap holds no voxel centre): also sample the hull's surface.
+            if (current[i].tetra && depth[i] <= params.max_depth)
+              depth[i] = std::max(depth[i], params.field->SurfaceDepth(h, params.max_depth));
+          }
         }))
       return false;
     std::vector<uint32_t> split;

@@ -44,14 +44,20 @@ double CutCost(const Part& part, const AxisLines& lines, int c, int hull_downsam
   const double symmetry = w.beta * hint.weight * std::fabs(hint.axis[a]) * part_concavity;
   if (tetra != nullptr && hull_downsample <= 1) {
     std::vector<Vec3> pts;
-    double vl = 0.0, vr = 0.0;
+    double vol[2] = {0.0, 0.0}, concavity = 0.0;
     HullMesh h;
-    TetraSideHullPoints(part, *tetra, c, true, &pts, &vl);
-    const double hl = PrimitiveHull(part, pts, &h) ? h.Volume() : 0.0;
-    TetraSideHullPoints(part, *tetra, c, false, &pts, &vr);
-    const double hr = PrimitiveHull(part, pts, &h) ? h.Volume() : 0.0;
-    const double concavity = (std::max(0.0, hl - vl) + std::max(0.0, hr - vr)) / w.volume0;
-    return concavity + w.alpha * std::fabs(vl - vr) / w.volume0 + symmetry;
+    for (int side = 0; side < 2; ++side) {
+      TetraSideHullPoints(part, *tetra, c, side == 0, &pts, &vol[side]);
+      if (PrimitiveHull(part, pts, &h)) {
+        concavity += std::max(0.0, h.Volume() - vol[side]);
+      } else {
+        // Flat cells (a thin sheet): that side is measured on its voxels, as in mode 0.
+        double voxels = 0.0;
+        SideHullPoints(lines, c, side == 0, 1, &pts, &voxels);
+        concavity += std::max(0.0, ExactHullVolume(pts) - voxels);
+      }
+    }
+    return concavity / w.volume0 + w.alpha * std::fabs(vol[0] - vol[1]) / w.volume0 + symmetry;
   }
   double vl = 0.0;
   for (int s = part.bmin[a]; s < c; ++s) vl += lines.slice_count[s - part.bmin[a]];
