@@ -179,6 +179,15 @@ PruneReport LeaveOutUnused(Scene& scene, const PruneOptions& options) {
     if (options.normalize_skin_weights && mesh.weights.size() == mesh.vertex_count() * 4) {
       report.skin_weights_normalized += NormalizeSkinWeights(mesh.weights.data(), mesh.vertex_count());
     }
+    if (options.clear_unweighted_joints && mesh.has_skin() && mesh.joints.size() == mesh.weights.size()) {
+      // glTF validators warn about them, and zeros code smaller.
+      for (size_t k = 0; k < mesh.joints.size(); ++k) {
+        if (mesh.weights[k] == 0 && mesh.joints[k] != 0) {
+          mesh.joints[k] = 0;
+          ++report.unweighted_joints_cleared;
+        }
+      }
+    }
     Sum(report.repairs, RepairMesh(mesh, options.repairs));
   }
   if (options.unreferenced_materials) RemoveUnreferencedMaterials(scene, report);
@@ -195,6 +204,10 @@ PruneReport LeaveOutUnused(Scene& scene, const PruneOptions& options) {
   line(report.materials_removed, "materials no triangle uses");
   line(report.images_removed, "images no material uses");
   if (report.repairs.changed()) report.lines.push_back(DescribeRepairs(report.repairs));
+  if (report.unweighted_joints_cleared) {
+    report.lines.push_back("cleared " + std::to_string(report.unweighted_joints_cleared) +
+                           " joint indices that carry no weight");
+  }
   if (report.skin_weights_normalized) {
     report.lines.push_back("renormalized the skin weights of " + std::to_string(report.skin_weights_normalized) +
                            " vertices (their sum was not 1)");

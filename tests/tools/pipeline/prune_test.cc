@@ -107,14 +107,16 @@ TEST(Prune, SkinDataWithoutASkinnedNodeGoes) {
   EXPECT_FALSE(skinned.meshes[0].joints.empty());
 }
 
-TEST(Prune, SkinWeightsThatDoNotSumToOneAreRenormalized) {
+TEST(Prune, SkinWeightsSumToOneAndJointsWithoutWeightAreCleared) {
   Scene s = OneQuadScene();
   s.skins.resize(1);
   s.nodes[0].skin = 0;
-  s.meshes[0].joints.assign(16, 0);
   s.meshes[0].weights = {1, 0, 0, 0, 0.5f, 0.5f, 0, 0, 0.1f, 0.1f, 0, 0, 0.6f, 0.3f, 0.3f, 0};
+  s.meshes[0].joints = {3, 7, 0, 5, 1, 2, 0, 0, 1, 2, 0, 0, 1, 2, 3, 4};
   const PruneReport r = LeaveOutUnused(s);
   EXPECT_EQ(r.skin_weights_normalized, 2u);
+  EXPECT_EQ(r.unweighted_joints_cleared, 3u);  // joints 7 and 5 of vertex 0, 4 of vertex 3
+  EXPECT_EQ(s.meshes[0].joints, std::vector<uint16_t>({3, 0, 0, 0, 1, 2, 0, 0, 1, 2, 0, 0, 1, 2, 3, 0}));
   const std::vector<float>& w = s.meshes[0].weights;
   EXPECT_FLOAT_EQ(w[8], 0.5f);
   EXPECT_FLOAT_EQ(w[12], 0.5f);
