@@ -1,23 +1,36 @@
-// Adaptive binary arithmetic (range) coding: the entropy coder of every part of an o3dgc stream.
+// Adaptive arithmetic (range) coding: the entropy coder of every part of an o3dgc stream.
 //
-// A carry-propagating range coder over 32-bit ranges with 16-bit adaptive probabilities. Each
-// BitModel mixes two estimates: a slow one that adapts quickly at first (count-based rate) and
-// then settles to a 1/128 rate, and a fast one (rate 1/8) that follows local runs; probabilities
-// are clamped to [kMinProb, 65536 - kMinProb] so no decision costs less than ~0.001 bits. The decoder treats bytes past the end of its buffer as zeros and counts them; more than
-// kMaxOverrun such bytes marks the decoder as failed (the caller checks failed()).
+// A carry-propagating range coder over 32-bit ranges with two kinds of adaptive models:
+//  - BitModel, binary: 16-bit probabilities mixing two estimates, a slow one that adapts quickly at
+//    first (count-based rate) and then settles to a 1/128 rate, and a fast one (rate 1/8) that
+//    follows local runs; probabilities are clamped to [kMinProb, 65536 - kMinProb] so no decision
+//    costs less than ~0.001 bits;
+//  - SymbolModel, 16 symbols in one decision (the magnitude classes of residuals): the same two-rate
+//    idea on cumulative frequencies. One multi-symbol decision replaces the 3-6 dependent binary
+//    decisions of a unary or tree binarization, which is what bounds decoding speed.
+// Raw (equiprobable) bits of the residuals go to a separate bit stream stored after the range code
+// and read backwards from the end of the payload, so reading them costs a shift instead of a coder
+// step. The range code is terminated so that whatever follows it decodes the same. The decoder
+// treats bytes past the end of its buffer as zeros and counts them; more than kMaxOverrun such
+// bytes, on either stream, marks it as failed (the caller checks failed()).
 #ifndef O3DGC_SRC_ARITHMETIC_CODER_H_
 #define O3DGC_SRC_ARITHMETIC_CODER_H_
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <vector>
+
+#if defined(__SSE2__) && !defined(O3DGC_NO_SIMD)
+#include <emmintrin.h>
+#endif
 
 namespace o3dgc {
 
 struct BitModel {
   uint16_t fast = 32768;  // probabilities of a 0, in 1/65536
   uint16_t slow = 32768;
-  uint8_t n = 0;          // observations so far (saturating at sizeof(kShift))
+  uint8_t n = 0;          // observations so far (saturating at kWarmUp)
 
   static constexpr int32_t kMinProb = 48;
   static constexpr int kSlowShift = 7;
@@ -29,23 +42,134 @@ struct BitModel {
     return p < uint32_t(kMinProb) ? uint32_t(kMinProb)
                                   : (p > uint32_t(65536 - kMinProb) ? uint32_t(65536 - kMinProb) : p);
   }
-  // Moves p by (target - p) / 2^shift rounded towards the target; stays within [0, 65535].
-  static uint32_t Step(uint32_t p, int bit, int shift) {
-    return bit ? p - ((p + (1u << shift) - 1) >> shift) : p + ((65535 - p + (1u << shift) - 1) >> shift);
+  // Moves p by (target - p) / 2^shift rounded towards the target (target 65535 for a 0, 0 for a 1);
+  // stays within [0, 65535]. Branch-free: `zero` is all ones for a 0; an arithmetic shift floors,
+  // which rounds a negative step towards 0, and adding 2^shift - 1 first makes a positive step
+  // round up.
+  static uint32_t Step(uint32_t p, int32_t zero, int shift) {
+    const int32_t d = (65535 & zero) - int32_t(p) + (((1 << shift) - 1) & zero);
+    return uint32_t(int32_t(p) + (d >> shift));
   }
+  // Adaptation: the slow estimate starts fast (count-based rate, kWarmUp observations) and settles
+  // at 1/2^kSlowShift; the fast one uses min(rate, 1/2^kFastShift). Settled models (the hot ones)
+  // take the constant-shift path.
+  static constexpr int kWarmUp = 40;
   void Update(int bit) {
-    static constexpr uint8_t kShift[] = {2, 2, 3, 3, 3, 4, 4, 4, 4, 4, 5, 5, 5, 5, 5, 5, 5, 5, 5, 5,
-                                         6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6};
-    if (n < sizeof(kShift)) {
-      const int shift = kShift[n++];
-      slow = uint16_t(Step(slow, bit, shift));
-      fast = uint16_t(Step(fast, bit, shift < kFastShift ? shift : kFastShift));
-    } else {
-      slow = uint16_t(Step(slow, bit, kSlowShift));
-      fast = uint16_t(Step(fast, bit, kFastShift));
+    const int32_t zero = bit - 1;
+    if (n >= kWarmUp) {
+      slow = uint16_t(Step(slow, zero, kSlowShift));
+      fast = uint16_t(Step(fast, zero, kFastShift));
+      return;
     }
+    static constexpr uint8_t kSlow[kWarmUp] = {2, 2, 3, 3, 3, 4, 4, 4, 4, 4, 5, 5, 5, 5, 5, 5, 5, 5, 5, 5,
+                                               6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6};
+    const int s = kSlow[n++];
+    slow = uint16_t(Step(slow, zero, s));
+    fast = uint16_t(Step(fast, zero, s < kFastShift ? s : kFastShift));
   }
 };
+
+// An adaptive distribution over kSymbols symbols. Two cumulative frequency tables (total 2^15
+// each; entry i is the frequency of the symbols <= i) move towards the observed symbol, the slow
+// one at a count-based rate settling at 1/2^kSlowShift, the fast one at min(that, 1/2^kFastShift);
+// the coder uses their sum (total 2^16). Every symbol keeps at least kMinFreq in each table (the
+// targets keep it and rounding cannot lose it), so every symbol stays codable. The tables are
+// updated 16 lanes at a time (SSE2 where available; the scalar code computes the same values).
+struct alignas(32) SymbolModel {
+  static constexpr int kSymbols = 16;
+  static constexpr int kMinFreq = 4;
+  static constexpr int kSlowShift = 8;
+  static constexpr int kFastShift = 3;
+  static constexpr int kTotal = 1 << 15;
+
+  uint16_t slow[kSymbols];  // entry kSymbols - 1 is the total and never changes
+  uint16_t fast[kSymbols];
+  uint8_t n = 0;            // observations so far (saturating)
+
+  SymbolModel() {
+    for (int i = 0; i < kSymbols; ++i) slow[i] = fast[i] = uint16_t((i + 1) * (kTotal / kSymbols));
+  }
+  // Frequency of the symbols <= i (i < kSymbols) in 1/2^16.
+  uint32_t cumulative(int i) const { return uint32_t(slow[i]) + fast[i]; }
+  void Update(int symbol);
+  // The symbol whose interval holds `code` (< range) for a range r * 2^16: the number of entries
+  // with r * cumulative(i) <= code.
+  int Find(uint32_t r, uint32_t code) const;
+};
+
+#if defined(__SSE2__) && !defined(O3DGC_NO_SIMD)
+inline void SymbolModel::Update(int symbol) {
+  static constexpr uint8_t kThresholds[] = {2, 6, 14, 30, 62, 126};
+  int rate = 2;
+  for (uint8_t t : kThresholds) rate += n > t;
+  n = uint8_t(n + (n < 255));
+  const int fast_rate = rate < kFastShift ? rate : kFastShift;
+  // Targets: (i + 1) * kMinFreq below the symbol, kTotal - (15 - i) * kMinFreq from it on (lane
+  // 15: kTotal, which keeps the total). 16-bit lanes: differences stay within +-2^15.
+  const __m128i idx0 = _mm_setr_epi16(0, 1, 2, 3, 4, 5, 6, 7);
+  const __m128i idx1 = _mm_setr_epi16(8, 9, 10, 11, 12, 13, 14, 15);
+  const __m128i low0 = _mm_setr_epi16(4, 8, 12, 16, 20, 24, 28, 32);
+  const __m128i low1 = _mm_setr_epi16(36, 40, 44, 48, 52, 56, 60, 64);
+  const __m128i high0 = _mm_setr_epi16(short(kTotal - 60), short(kTotal - 56), short(kTotal - 52), short(kTotal - 48),
+                                       short(kTotal - 44), short(kTotal - 40), short(kTotal - 36), short(kTotal - 32));
+  const __m128i high1 = _mm_setr_epi16(short(kTotal - 28), short(kTotal - 24), short(kTotal - 20), short(kTotal - 16),
+                                       short(kTotal - 12), short(kTotal - 8), short(kTotal - 4), short(kTotal));
+  const __m128i sym = _mm_set1_epi16(short(symbol));
+  const __m128i below0 = _mm_cmplt_epi16(idx0, sym), below1 = _mm_cmplt_epi16(idx1, sym);
+  const __m128i t0 = _mm_or_si128(_mm_and_si128(below0, low0), _mm_andnot_si128(below0, high0));
+  const __m128i t1 = _mm_or_si128(_mm_and_si128(below1, low1), _mm_andnot_si128(below1, high1));
+  const __m128i rs = _mm_cvtsi32_si128(rate), rf = _mm_cvtsi32_si128(fast_rate);
+  __m128i* sp = reinterpret_cast<__m128i*>(slow);
+  __m128i* fp = reinterpret_cast<__m128i*>(fast);
+  const __m128i s0 = _mm_load_si128(sp), s1 = _mm_load_si128(sp + 1);
+  const __m128i f0 = _mm_load_si128(fp), f1 = _mm_load_si128(fp + 1);
+  _mm_store_si128(sp, _mm_add_epi16(s0, _mm_sra_epi16(_mm_sub_epi16(t0, s0), rs)));
+  _mm_store_si128(sp + 1, _mm_add_epi16(s1, _mm_sra_epi16(_mm_sub_epi16(t1, s1), rs)));
+  _mm_store_si128(fp, _mm_add_epi16(f0, _mm_sra_epi16(_mm_sub_epi16(t0, f0), rf)));
+  _mm_store_si128(fp + 1, _mm_add_epi16(f1, _mm_sra_epi16(_mm_sub_epi16(t1, f1), rf)));
+}
+
+inline int SymbolModel::Find(uint32_t r, uint32_t code) const {
+  // 16-bit cumulative sums (lane 15 wraps to 0 but is never compared) times r < 2^16: 32-bit
+  // products from the low and high halves; a boundary above the code sets its lane. Boundaries
+  // increase, so the lanes above the code form a suffix and the symbol is the first of them.
+  const __m128i* sp = reinterpret_cast<const __m128i*>(slow);
+  const __m128i* fp = reinterpret_cast<const __m128i*>(fast);
+  const __m128i c0 = _mm_add_epi16(_mm_load_si128(sp), _mm_load_si128(fp));
+  const __m128i c1 = _mm_add_epi16(_mm_load_si128(sp + 1), _mm_load_si128(fp + 1));
+  const __m128i rv = _mm_set1_epi16(short(r));
+  const __m128i lo0 = _mm_mullo_epi16(c0, rv), hi0 = _mm_mulhi_epu16(c0, rv);
+  const __m128i lo1 = _mm_mullo_epi16(c1, rv), hi1 = _mm_mulhi_epu16(c1, rv);
+  const __m128i bias = _mm_set1_epi32(int(0x80000000u));
+  const __m128i cv = _mm_set1_epi32(int(code ^ 0x80000000u));
+  const __m128i g0 = _mm_cmpgt_epi32(_mm_xor_si128(_mm_unpacklo_epi16(lo0, hi0), bias), cv);
+  const __m128i g1 = _mm_cmpgt_epi32(_mm_xor_si128(_mm_unpackhi_epi16(lo0, hi0), bias), cv);
+  const __m128i g2 = _mm_cmpgt_epi32(_mm_xor_si128(_mm_unpacklo_epi16(lo1, hi1), bias), cv);
+  const __m128i g3 = _mm_cmpgt_epi32(_mm_xor_si128(_mm_unpackhi_epi16(lo1, hi1), bias), cv);
+  const __m128i g = _mm_packs_epi16(_mm_packs_epi32(g0, g1), _mm_packs_epi32(g2, g3));
+  const uint32_t above = uint32_t(_mm_movemask_epi8(g)) | 0x8000u;
+  return __builtin_ctz(above);
+}
+#else
+inline void SymbolModel::Update(int symbol) {
+  static constexpr uint8_t kThresholds[] = {2, 6, 14, 30, 62, 126};
+  int rate = 2;
+  for (uint8_t t : kThresholds) rate += n > t;
+  n = uint8_t(n + (n < 255));
+  const int fast_rate = rate < kFastShift ? rate : kFastShift;
+  for (int i = 0; i < kSymbols - 1; ++i) {
+    const int32_t target = i < symbol ? (i + 1) * kMinFreq : kTotal - (kSymbols - 1 - i) * kMinFreq;
+    slow[i] = uint16_t(slow[i] + ((target - slow[i]) >> rate));
+    fast[i] = uint16_t(fast[i] + ((target - fast[i]) >> fast_rate));
+  }
+}
+
+inline int SymbolModel::Find(uint32_t r, uint32_t code) const {
+  int symbol = 0;
+  for (int i = 0; i < kSymbols - 1; ++i) symbol += r * cumulative(i) <= code;
+  return symbol;
+}
+#endif
 
 class ArithmeticEncoder {
  public:
@@ -62,7 +186,16 @@ class ArithmeticEncoder {
     m.Update(bit);
     Normalize();
   }
-  // Equiprobable bits, most significant first; count <= 32.
+  void Encode(int symbol, SymbolModel& m) {
+    const uint32_t r = range_ >> 16;
+    const uint32_t lo = symbol ? r * m.cumulative(symbol - 1) : 0;
+    const uint32_t hi = r * m.cumulative(symbol);
+    low_ += lo;
+    range_ = hi - lo;
+    m.Update(symbol);
+    Normalize();
+  }
+  // Equiprobable bits in the range code, most significant first; count <= 32.
   void EncodeBits(uint32_t value, int count) {
     for (int i = count - 1; i >= 0; --i) {
       range_ >>= 1;
@@ -70,10 +203,24 @@ class ArithmeticEncoder {
       Normalize();
     }
   }
-  // Terminates the code: after this the output holds every byte needed by the decoder.
-  void Finish();
+  // Equiprobable bits in the raw bit stream, most significant first; 0 <= count <= 32.
+  void EncodeRaw(uint32_t value, int count) {
+    if (count == 0) return;
+    raw_acc_ = (raw_acc_ << count) | (value & (0xFFFFFFFFu >> (32 - count)));
+    raw_bits_ += count;
+    while (raw_bits_ >= 8) {
+      raw_bits_ -= 8;
+      raw_.push_back(uint8_t(raw_acc_ >> raw_bits_));
+    }
+  }
+  // Terminates the code and appends the raw bit stream; zero bytes are inserted between the two so
+  // that the payload (the bytes written since construction) is at least `min_size` bytes long.
+  // After this the output holds every byte needed by the decoder.
+  void Finish(size_t min_size = 0);
   // Bytes produced so far, counting the pending ones (an estimate of the position while coding).
-  size_t BytesSoFar() const { return out_->size() - start_ + cache_size_; }
+  size_t BytesSoFar() const {
+    return out_->size() - start_ + cache_size_ + raw_.size() + (raw_bits_ + 7) / 8;
+  }
 
  private:
   void Normalize() {
@@ -91,47 +238,69 @@ class ArithmeticEncoder {
   uint8_t cache_ = 0;
   uint64_t cache_size_ = 1;
   bool first_ = true;
+  std::vector<uint8_t> raw_;
+  uint64_t raw_acc_ = 0;
+  int raw_bits_ = 0;
 };
 
 class ArithmeticDecoder {
  public:
   static constexpr size_t kMaxOverrun = 8;
 
-  ArithmeticDecoder(const uint8_t* data, size_t size) : data_(data), size_(size) {
+  ArithmeticDecoder(const uint8_t* data, size_t size)
+      : data_(data), size_(size), raw_next_(data + size) {
     for (int i = 0; i < 4; ++i) code_ = (code_ << 8) | NextByte();
   }
 
   int Decode(BitModel& m) {
     const uint32_t bound = uint32_t((uint64_t(range_) * m.p0()) >> 16);
-    int bit;
-    if (code_ < bound) {
-      range_ = bound;
-      bit = 0;
-    } else {
-      code_ -= bound;
-      range_ -= bound;
-      bit = 1;
-    }
+    // Masks instead of a branch or a select (which compilers may turn into a branch): decoded bits
+    // of a well-compressed stream are unpredictable.
+    const int bit = code_ >= bound;
+    const uint32_t mask = 0u - uint32_t(bit);
+    code_ -= bound & mask;
+    range_ = bound ^ ((bound ^ (range_ - bound)) & mask);  // range - bound for a 1, else bound
     m.Update(bit);
     Normalize();
     return bit;
+  }
+  int Decode(SymbolModel& m) {
+    const uint32_t r = range_ >> 16;
+    const int symbol = m.Find(r, code_);
+    const uint32_t lo = r * (symbol ? m.cumulative(symbol - 1) : 0);
+    code_ -= lo;
+    range_ = r * m.cumulative(symbol) - lo;
+    m.Update(symbol);
+    Normalize();
+    return symbol;
   }
   uint32_t DecodeBits(int count) {
     uint32_t v = 0;
     for (int i = 0; i < count; ++i) {
       range_ >>= 1;
-      int bit = 0;
-      if (code_ >= range_) {
-        code_ -= range_;
-        bit = 1;
-      }
-      v = (v << 1) | uint32_t(bit);
+      const uint32_t bit = code_ >= range_;
+      code_ -= range_ & (0u - bit);
+      v = (v << 1) | bit;
       Normalize();
     }
     return v;
   }
-  bool failed() const { return pos_ > size_ + kMaxOverrun; }
-  size_t BytesConsumed() const { return pos_ < size_ ? pos_ : size_; }
+  // Bits of the raw stream (see ArithmeticEncoder::EncodeRaw); 0 <= count <= 32.
+  uint32_t DecodeRaw(int count) {
+    if (count == 0) return 0;
+    if (raw_avail_ < count) RefillRaw();
+    const uint32_t v = uint32_t(raw_acc_ >> (64 - count));
+    raw_acc_ <<= count;
+    raw_avail_ -= count;
+    return v;
+  }
+  bool failed() const { return pos_ > size_ + kMaxOverrun || raw_overrun_ > kMaxOverrun; }
+  // Bytes of both streams read so far (an estimate of the position, for StreamInfo).
+  size_t BytesConsumed() const {
+    const size_t raw = size_t(data_ + size_ - raw_next_) + raw_overrun_ - size_t(raw_avail_ / 8);
+    const size_t n = (pos_ < size_ ? pos_ : size_) + raw;
+    return n < size_ ? n : size_;
+  }
   size_t size() const { return size_; }
 
  private:
@@ -142,12 +311,65 @@ class ArithmeticDecoder {
       code_ = (code_ << 8) | NextByte();
     }
   }
+  // Tops the raw bit buffer up to at least 57 bits; the raw stream is read from the end of the
+  // payload backwards, bytes before the payload read as zeros.
+  void RefillRaw() {
+    if (raw_next_ - data_ >= 8) {
+      uint64_t w;
+      std::memcpy(&w, raw_next_ - 8, 8);
+      w = FromLittleEndian(w);  // the byte just below raw_next_ is the most significant
+      const int bytes = (64 - raw_avail_) >> 3;
+      const uint64_t keep = raw_avail_ ? ~(~uint64_t(0) >> raw_avail_) : 0;
+      raw_acc_ = (raw_acc_ & keep) | ((w >> raw_avail_) & ~keep);
+      raw_avail_ += 8 * bytes;
+      raw_next_ -= bytes;
+      return;
+    }
+    while (raw_avail_ <= 56) {
+      uint8_t b = 0;
+      if (raw_next_ > data_) {
+        b = *--raw_next_;
+      } else {
+        ++raw_overrun_;
+      }
+      raw_acc_ |= uint64_t(b) << (56 - raw_avail_);
+      raw_avail_ += 8;
+    }
+  }
+  static uint64_t FromLittleEndian(uint64_t w) {
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__
+    return __builtin_bswap64(w);
+#else
+    return w;
+#endif
+  }
 
   const uint8_t* data_;
   size_t size_;
   size_t pos_ = 0;
   uint32_t code_ = 0;
   uint32_t range_ = 0xFFFFFFFFu;
+  const uint8_t* raw_next_;  // raw bytes below this one are not read yet
+  uint64_t raw_acc_ = 0;     // next raw bits, most significant first
+  int raw_avail_ = 0;        // valid bits at the top of raw_acc_
+  size_t raw_overrun_ = 0;   // raw bytes read before the start of the payload
+};
+
+// A working copy of a decoder for a hot loop, written back when it goes out of scope. Through a
+// pointer, the decoder's state must go to memory after every decision (stores to the decoded
+// arrays might alias it); a local copy can stay in registers.
+class ScopedDecoder {
+ public:
+  explicit ScopedDecoder(ArithmeticDecoder* target) : target_(target), local_(*target) {}
+  ~ScopedDecoder() { *target_ = local_; }
+  ScopedDecoder(const ScopedDecoder&) = delete;
+  ScopedDecoder& operator=(const ScopedDecoder&) = delete;
+  ArithmeticDecoder* operator->() { return &local_; }
+  ArithmeticDecoder& operator*() { return local_; }
+
+ private:
+  ArithmeticDecoder* target_;
+  ArithmeticDecoder local_;
 };
 
 }  // namespace o3dgc

@@ -34,20 +34,25 @@ inline int IntraContext(int64_t r) {
 }
 
 // Residual models indexed by (component, prediction kind, magnitude context, intra context);
-// only the components and kinds a coder uses are allocated.
-class ResidualModels {
+// only the components and kinds a coder uses are allocated. Quantized attributes use
+// ResidualModel (one multi-symbol decision per magnitude: fast to decode), surface-normal residuals
+// SignedModel (binary decisions, which learn the few normals of small meshes faster).
+template <typename Model>
+class ContextModels {
  public:
-  ResidualModels(int components, int kinds)
+  ContextModels(int components, int kinds)
       : kinds_(kinds), models_(size_t(components) * kinds * kMagContexts * kIntraContexts) {}
-  SignedModel& at(int component, int kind, int mag, int intra) {
+  Model& at(int component, int kind, int mag, int intra) {
     return models_[((size_t(component) * kinds_ + kind) * kMagContexts + mag) * kIntraContexts + intra];
   }
   BitModel side;
 
  private:
   int kinds_;
-  std::vector<SignedModel> models_;
+  std::vector<Model> models_;
 };
+using ResidualModels = ContextModels<ResidualModel>;
+using NormalModels = ContextModels<SignedModel>;
 
 inline int MagContext(uint64_t mag) {
   const int b = mag == 0 ? 0 : FloorLog2(mag) + 1;
@@ -81,12 +86,14 @@ struct NormalGeometry {
   const uint32_t* position_of;   // attribute vertex -> position vertex
 };
 
-// `geometry` (optional, 3 doubles per vertex): with dim == 2 and kParallelogram, texture
-// coordinates are predicted from the shape (PredictTexCoord) instead of parallelograms.
-void EncodeQuantized(ArithmeticEncoder* enc, const MeshAdjacency& adj,
+// `wedges` (needed for kParallelogram) gives the coding order and the predictions; other modes code
+// the vertices in id order. `geometry` (optional, 3 doubles per vertex): with dim == 2 and
+// kParallelogram, texture coordinates are predicted from the shape (PredictTexCoord) instead of
+// parallelograms.
+void EncodeQuantized(ArithmeticEncoder* enc, const WedgeTable* wedges,
                      const std::vector<int32_t>& q, int dim, int bits, Prediction mode,
                      const std::vector<double>* geometry = nullptr);
-Status DecodeQuantized(ArithmeticDecoder* dec, const MeshAdjacency& adj, uint32_t n, int dim,
+Status DecodeQuantized(ArithmeticDecoder* dec, const WedgeTable* wedges, uint32_t n, int dim,
                        int bits, Prediction mode, std::vector<int32_t>* q,
                        const std::vector<double>* geometry = nullptr);
 

@@ -5,11 +5,10 @@
 
 namespace o3dgc {
 
-namespace {
-
-Status DecodeQuantizedInOrder(ArithmeticDecoder* dec, const MeshAdjacency& adj, uint32_t n, int dim,
-                              int bits, Prediction mode, std::vector<int32_t>* out,
-                              const double* geometry) {
+Status DecodeQuantized(ArithmeticDecoder* dec_in, const WedgeTable* wedges, uint32_t n, int dim,
+                       int bits, Prediction mode, std::vector<int32_t>* out,
+                       const std::vector<double>* geometry) {
+  ScopedDecoder dec(dec_in);
   std::vector<int32_t>& q = *out;
   q.assign(size_t(n) * dim, 0);
   const int64_t maxq = (int64_t(1) << bits) - 1;
@@ -23,66 +22,56 @@ Status DecodeQuantizedInOrder(ArithmeticDecoder* dec, const MeshAdjacency& adj, 
   std::unique_ptr<ResidualModels> models(new ResidualModels(dim, 3));
   std::vector<uint32_t> mags(n, 0);
   const int coarse = n < kTinyMesh ? 2 : (n < kSmallMesh ? 1 : 0);
-  for (uint32_t c = 0; c < n; ++c) {
+  // Residuals against `pred` for vertex c, with the context of `pc`.
+  auto decode_vertex = [&](uint32_t c, const PredictionContext& pc, const int64_t* pred) {
+    const int mctx = MagContext(pc.neighbour_magnitude) >> coarse;
+    int64_t r[4];
+    for (int k = 0; k < dim; ++k) {
+      r[k] = DecodeResidual(*dec, models->at(coarse == 2 ? 0 : k, pc.kind, mctx, (k && !coarse) ? IntraContext(r[k - 1]) : 0));
+      const int64_t v = pred[k] + r[k];
+      if (v < 0 || v > maxq) return false;
+      q[size_t(c) * dim + k] = int32_t(v);
+    }
+    mags[c] = SaturatingMagnitude(r, dim);
+    return true;
+  };
+  if (mode != Prediction::kParallelogram) {
+    // Differential: against the previous vertex in id order.
+    for (uint32_t c = 0; c < n; ++c) {
+      if (dec->failed()) return Status::kTruncated;
+      int64_t pred[4];
+      PredictionContext pc;
+      for (int k = 0; k < dim; ++k) pred[k] = c > 0 ? q[size_t(c - 1) * dim + k] : 0;
+      pc.neighbour_magnitude = c > 0 ? mags[c - 1] : 0;
+      if (!decode_vertex(c, pc, pred)) return Status::kCorrupt;
+    }
+    return dec->failed() ? Status::kTruncated : Status::kOk;
+  }
+  const double* geo = (geometry && dim == 2) ? geometry->data() : nullptr;
+  DegreeTraversal order(*wedges);
+  for (uint32_t c; (c = order.Next()) != kNoVertex;) {
     if (dec->failed()) return Status::kTruncated;
     int64_t pred[4];
     int64_t alt[2];
     bool ambiguous;
-    const PredictionContext pc = PredictAttributeVertex(adj, c, q.data(), dim, geometry, mode == Prediction::kParallelogram,
-                                                        mags.data(), maxq, pred, alt, &ambiguous);
+    const PredictionContext pc = PredictAttributeVertex(*wedges, order.done(), c, order.previous(),
+                                                        q.data(), dim, geo, mags.data(), maxq, pred,
+                                                        alt, &ambiguous);
     if (ambiguous && dec->Decode(models->side)) {
       pred[0] = alt[0];
       pred[1] = alt[1];
     }
-    const int mctx = MagContext(pc.neighbour_magnitude) >> coarse;
-    int64_t r[4];
-    for (int k = 0; k < dim; ++k) {
-      r[k] = DecodeSigned(*dec, models->at(coarse == 2 ? 0 : k, pc.kind, mctx, (k && !coarse) ? IntraContext(r[k - 1]) : 0));
-      const int64_t v = pred[k] + r[k];
-      if (v < 0 || v > maxq) return Status::kCorrupt;
-      q[size_t(c) * dim + k] = int32_t(v);
-    }
-    mags[c] = SaturatingMagnitude(r, dim);
+    if (!decode_vertex(c, pc, pred)) return Status::kCorrupt;
+    order.Visit(c);
   }
   return dec->failed() ? Status::kTruncated : Status::kOk;
 }
 
-}  // namespace
-
-Status DecodeQuantized(ArithmeticDecoder* dec, const MeshAdjacency& adj, uint32_t n, int dim,
-                       int bits, Prediction mode, std::vector<int32_t>* out,
-                       const std::vector<double>* geometry) {
-  if (mode != Prediction::kParallelogram) {
-    return DecodeQuantizedInOrder(dec, adj, n, dim, bits, mode, out, nullptr);
-  }
-  const bool texcoord = geometry && dim == 2;
-  const std::vector<uint32_t> order = MaxDegreeOrder(adj);
-  const std::vector<uint32_t> renamed_tris = RenameByOrder(adj, order);
-  MeshAdjacency renamed;
-  renamed.BuildPermuted(adj, order, renamed_tris);
-  renamed.SetOpposite(adj.opposite());
-  std::vector<double> geo_renamed;
-  if (texcoord) {
-    geo_renamed.resize(size_t(n) * 3);
-    for (uint32_t i = 0; i < n; ++i) {
-      for (int k = 0; k < 3; ++k) geo_renamed[3 * size_t(i) + k] = (*geometry)[3 * size_t(order[i]) + k];
-    }
-  }
-  std::vector<int32_t> q;
-  const Status s = DecodeQuantizedInOrder(dec, renamed, n, dim, bits, mode, &q,
-                                          texcoord ? geo_renamed.data() : nullptr);
-  if (s != Status::kOk) return s;
-  out->assign(q.size(), 0);
-  for (uint32_t i = 0; i < n; ++i) {
-    for (int k = 0; k < dim; ++k) (*out)[size_t(order[i]) * dim + k] = q[size_t(i) * dim + k];
-  }
-  return Status::kOk;
-}
-
-Status DecodeOctNormals(ArithmeticDecoder* dec, const MeshAdjacency& adj, const NormalGeometry& geo,
+Status DecodeOctNormals(ArithmeticDecoder* dec_in, const MeshAdjacency& adj, const NormalGeometry& geo,
                         uint32_t n, int bits, std::vector<float>* normals) {
+  ScopedDecoder dec(dec_in);
   const uint32_t maxq = uint32_t((uint64_t(1) << bits) - 1);
-  std::unique_ptr<ResidualModels> models(new ResidualModels(2, 1));
+  std::unique_ptr<NormalModels> models(new NormalModels(2, 1));
   std::vector<uint32_t> mags(n, 0);
   normals->assign(size_t(n) * 3, 0.0f);
   for (uint32_t c = 0; c < n; ++c) {
@@ -113,8 +102,9 @@ Status DecodeOctNormals(ArithmeticDecoder* dec, const MeshAdjacency& adj, const 
   return dec->failed() ? Status::kTruncated : Status::kOk;
 }
 
-Status DecodeInts(ArithmeticDecoder* dec, uint32_t n, int dim, Prediction mode,
+Status DecodeInts(ArithmeticDecoder* dec_in, uint32_t n, int dim, Prediction mode,
                   std::vector<int32_t>* values) {
+  ScopedDecoder dec(dec_in);
   std::vector<SignedModel> models(static_cast<size_t>(dim));  // one per component
   values->assign(size_t(n) * dim, 0);
   for (size_t c = 0; c < n; ++c) {

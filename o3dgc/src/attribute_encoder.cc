@@ -42,53 +42,47 @@ std::vector<double> AttributeGeometry(const NormalGeometry& geo, uint32_t n) {
   return g;
 }
 
-void EncodeQuantized(ArithmeticEncoder* enc, const MeshAdjacency& adj_in,
-                     const std::vector<int32_t>& q_in, int dim, int bits, Prediction mode,
+void EncodeQuantized(ArithmeticEncoder* enc, const WedgeTable* wedges,
+                     const std::vector<int32_t>& q, int dim, int bits, Prediction mode,
                      const std::vector<double>* geometry) {
-  const bool texcoord = geometry && dim == 2 && mode == Prediction::kParallelogram;
-  const uint32_t n = uint32_t(q_in.size() / size_t(dim));
+  const uint32_t n = uint32_t(q.size() / size_t(dim));
   if (mode == Prediction::kNone) {
-    for (int32_t v : q_in) enc->EncodeBits(uint32_t(v), bits);
+    for (int32_t v : q) enc->EncodeBits(uint32_t(v), bits);
     return;
   }
-  // Parallelogram prediction codes the vertices in max-prediction-degree order.
-  const MeshAdjacency* adj_ptr = &adj_in;
-  const std::vector<int32_t>* q_ptr = &q_in;
-  MeshAdjacency renamed;
-  std::vector<uint32_t> renamed_tris;
-  std::vector<int32_t> q_renamed;
-  std::vector<double> geo_renamed;
-  if (mode == Prediction::kParallelogram) {
-    const std::vector<uint32_t> order = MaxDegreeOrder(adj_in);
-    renamed_tris = RenameByOrder(adj_in, order);
-    renamed.BuildPermuted(adj_in, order, renamed_tris);
-    renamed.SetOpposite(adj_in.opposite());
-    q_renamed.resize(q_in.size());
-    for (uint32_t i = 0; i < n; ++i) {
-      for (int k = 0; k < dim; ++k) q_renamed[size_t(i) * dim + k] = q_in[size_t(order[i]) * dim + k];
-    }
-    adj_ptr = &renamed;
-    q_ptr = &q_renamed;
-    if (texcoord) {
-      geo_renamed.resize(size_t(n) * 3);
-      for (uint32_t i = 0; i < n; ++i) {
-        for (int k = 0; k < 3; ++k) geo_renamed[3 * size_t(i) + k] = (*geometry)[3 * size_t(order[i]) + k];
-      }
-    }
-  }
-  const MeshAdjacency& adj = *adj_ptr;
-  const std::vector<int32_t>& q = *q_ptr;
   std::unique_ptr<ResidualModels> models(new ResidualModels(dim, 3));
   std::vector<uint32_t> mags(n, 0);
   const int64_t maxq = (int64_t(1) << bits) - 1;
   const int coarse = n < kTinyMesh ? 2 : (n < kSmallMesh ? 1 : 0);
-  for (uint32_t c = 0; c < n; ++c) {
+  auto encode_vertex = [&](uint32_t c, const PredictionContext& pc, const int64_t* pred) {
+    const int mctx = MagContext(pc.neighbour_magnitude) >> coarse;
+    int64_t r[4];
+    for (int k = 0; k < dim; ++k) {
+      r[k] = int64_t(q[size_t(c) * dim + k]) - pred[k];
+      EncodeResidual(*enc, models->at(coarse == 2 ? 0 : k, pc.kind, mctx, (k && !coarse) ? IntraContext(r[k - 1]) : 0), r[k]);
+    }
+    mags[c] = SaturatingMagnitude(r, dim);
+  };
+  if (mode != Prediction::kParallelogram) {
+    // Differential: against the previous vertex in id order.
+    for (uint32_t c = 0; c < n; ++c) {
+      int64_t pred[4];
+      PredictionContext pc;
+      for (int k = 0; k < dim; ++k) pred[k] = c > 0 ? q[size_t(c - 1) * dim + k] : 0;
+      pc.neighbour_magnitude = c > 0 ? mags[c - 1] : 0;
+      encode_vertex(c, pc, pred);
+    }
+    return;
+  }
+  const double* geo = (geometry && dim == 2) ? geometry->data() : nullptr;
+  DegreeTraversal order(*wedges);
+  for (uint32_t c; (c = order.Next()) != kNoVertex;) {
     int64_t pred[4];
     int64_t alt[2];
     bool ambiguous;
-    const PredictionContext pc =
-        PredictAttributeVertex(adj, c, q.data(), dim, texcoord ? geo_renamed.data() : nullptr,
-                               mode == Prediction::kParallelogram, mags.data(), maxq, pred, alt, &ambiguous);
+    const PredictionContext pc = PredictAttributeVertex(*wedges, order.done(), c, order.previous(),
+                                                        q.data(), dim, geo, mags.data(), maxq, pred,
+                                                        alt, &ambiguous);
     if (ambiguous) {
       int64_t da = 0, db = 0;
       for (int k = 0; k < 2; ++k) {
@@ -102,13 +96,8 @@ void EncodeQuantized(ArithmeticEncoder* enc, const MeshAdjacency& adj_in,
         pred[1] = alt[1];
       }
     }
-    const int mctx = MagContext(pc.neighbour_magnitude) >> coarse;
-    int64_t r[4];
-    for (int k = 0; k < dim; ++k) {
-      r[k] = int64_t(q[size_t(c) * dim + k]) - pred[k];
-      EncodeSigned(*enc, models->at(coarse == 2 ? 0 : k, pc.kind, mctx, (k && !coarse) ? IntraContext(r[k - 1]) : 0), r[k]);
-    }
-    mags[c] = SaturatingMagnitude(r, dim);
+    encode_vertex(c, pc, pred);
+    order.Visit(c);
   }
 }
 
@@ -116,7 +105,7 @@ void EncodeOctNormals(ArithmeticEncoder* enc, const MeshAdjacency& adj, const No
                       const std::vector<float>& normals, int bits) {
   const uint32_t n = uint32_t(normals.size() / 3);
   const uint32_t maxq = uint32_t((uint64_t(1) << bits) - 1);
-  std::unique_ptr<ResidualModels> models(new ResidualModels(2, 1));
+  std::unique_ptr<NormalModels> models(new NormalModels(2, 1));
   std::vector<uint32_t> mags(n, 0);
   for (uint32_t c = 0; c < n; ++c) {
     double p[3];

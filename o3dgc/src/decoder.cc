@@ -140,10 +140,9 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
   mark = dec.BytesConsumed();
   std::vector<int32_t> qpos;
   {
-    MeshAdjacency adj;
-    adj.Build(tris, nw);
-    adj.SetOpposite(&opposite);
-    if ((s = DecodeQuantized(&dec, adj, nw, 3, h.position.bits, h.position.prediction, &qpos)) !=
+    WedgeTable wedges;
+    if (h.position.prediction == Prediction::kParallelogram) wedges.Build(tris, nw, opposite);
+    if ((s = DecodeQuantized(&dec, &wedges, nw, 3, h.position.bits, h.position.prediction, &qpos)) !=
         Status::kOk) {
       return s;
     }
@@ -159,8 +158,9 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
     }
   }
   MeshAdjacency attr_adj;
-  if (h.has_normals || !h.floats.empty()) attr_adj.Build(attr_tris, nv);
-  attr_adj.SetOpposite(&opposite);
+  if (h.has_normals && h.normal.prediction == Prediction::kSurfaceNormal) attr_adj.Build(attr_tris, nv);
+  WedgeTable attr_wedges;
+  bool attr_wedges_built = false;
   NormalGeometry geo;
   geo.positions = qpos.data();
   for (int k = 0; k < 3; ++k) {
@@ -173,7 +173,11 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
     const bool texcoord = d.semantic == Semantic::kTexCoord && d.dimension == 2 &&
                           d.prediction == Prediction::kParallelogram;
     if (texcoord && attr_geometry.empty()) attr_geometry = AttributeGeometry(geo, nv);
-    const Status st = DecodeQuantized(&dec, attr_adj, nv, int(d.dimension), d.bits, d.prediction,
+    if (d.prediction == Prediction::kParallelogram && !attr_wedges_built) {
+      attr_wedges.Build(attr_tris, nv, opposite);
+      attr_wedges_built = true;
+    }
+    const Status st = DecodeQuantized(&dec, &attr_wedges, nv, int(d.dimension), d.bits, d.prediction,
                                       &q, texcoord ? &attr_geometry : nullptr);
     if (st != Status::kOk) return st;
     values->resize(q.size());

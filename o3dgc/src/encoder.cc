@@ -285,10 +285,11 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
     }
   }
   {
-    MeshAdjacency adj;
-    adj.Build(conn.triangles, nw);
-    adj.SetOpposite(&conn.opposite);
-    EncodeQuantized(&enc, adj, qpos, 3, h.position.bits, h.position.prediction);
+    WedgeTable wedges;
+    if (h.position.prediction == Prediction::kParallelogram) {
+      wedges.Build(conn.triangles, nw, conn.opposite);
+    }
+    EncodeQuantized(&enc, &wedges, qpos, 3, h.position.bits, h.position.prediction);
   }
   si.positions = enc.BytesSoFar() - mark;
   if (!progress(0.6f)) return Status::kCancelled;
@@ -297,8 +298,11 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
   std::vector<uint32_t> attr_tris(3 * nt);
   for (size_t i = 0; i < 3 * nt; ++i) attr_tris[i] = orig_new[corner_vertex[i]];
   MeshAdjacency attr_adj;
-  if (h.has_normals || !h.floats.empty()) attr_adj.Build(attr_tris, uint32_t(nv));
-  attr_adj.SetOpposite(&conn.opposite);
+  if (h.has_normals && h.normal.prediction == Prediction::kSurfaceNormal) {
+    attr_adj.Build(attr_tris, uint32_t(nv));
+  }
+  WedgeTable attr_wedges;
+  bool attr_wedges_built = false;
   NormalGeometry geo;
   geo.positions = qpos.data();
   for (int k = 0; k < 3; ++k) {
@@ -313,7 +317,11 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
     const bool texcoord = d.semantic == Semantic::kTexCoord && d.dimension == 2 &&
                           d.prediction == Prediction::kParallelogram;
     if (texcoord && attr_geometry.empty()) attr_geometry = AttributeGeometry(geo, uint32_t(nv));
-    EncodeQuantized(&enc, attr_adj, q, int(d.dimension), d.bits, d.prediction,
+    if (d.prediction == Prediction::kParallelogram && !attr_wedges_built) {
+      attr_wedges.Build(attr_tris, uint32_t(nv), conn.opposite);
+      attr_wedges_built = true;
+    }
+    EncodeQuantized(&enc, &attr_wedges, q, int(d.dimension), d.bits, d.prediction,
                     texcoord ? &attr_geometry : nullptr);
   };
   mark = enc.BytesSoFar();
@@ -353,12 +361,11 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
       prev = g;
     }
   }
-  enc.Finish();
-  AddTailBytes(h, payload.size() > mark ? payload.size() - mark : 0, &si);
-
   // Pad so that the decoder's size check holds (only pathological meshes need it).
   const uint64_t budget = h.Budget();
-  while (kElementsPerByte * (payload.size() + kBudgetSlackBytes) < budget) payload.push_back(0);
+  const uint64_t min_payload = (budget + kElementsPerByte - 1) / kElementsPerByte;
+  enc.Finish(min_payload > kBudgetSlackBytes ? size_t(min_payload - kBudgetSlackBytes) : 0);
+  AddTailBytes(h, payload.size() > mark ? payload.size() - mark : 0, &si);
 
   out->clear();
   WriteHeader(params.keep_order, payload.size(), out);

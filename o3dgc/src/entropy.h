@@ -1,10 +1,12 @@
-// Binarizations of integers on top of the adaptive binary arithmetic coder (encoder and decoder
-// side by side so that the two stay mirror images).
+// Binarizations of integers on top of the adaptive arithmetic coder (encoder and decoder side by
+// side so that the two stay mirror images).
 //
 // Unsigned values use an adaptive Exp-Golomb code: the prefix (bit length) is coded bit by bit
 // with one model per position, the two most significant suffix bits with models conditioned on
-// the length, the remaining suffix bits as equiprobable bits. Signed residuals add a zero flag and
-// a sign. Callers pick the model set (the context) per value.
+// the length, the remaining suffix bits as equiprobable bits. Signed values add a zero flag and
+// a sign (SignedModel); attribute residuals, the bulk of a stream, code their magnitude class in
+// one multi-symbol decision instead (ResidualModel). Callers pick the model set (the context) per
+// value.
 #ifndef O3DGC_SRC_ENTROPY_H_
 #define O3DGC_SRC_ENTROPY_H_
 
@@ -120,6 +122,74 @@ inline int64_t DecodeSigned(ArithmeticDecoder& d, SignedModel& m) {
   }
   m.Observe(k);
   const uint64_t v = DecodeMantissa(d, m.suffix[k], k);
+  return neg ? -int64_t(v) : int64_t(v);
+}
+
+// Residuals of the attribute coders: the magnitude class in one multi-symbol decision (0: zero;
+// 1 + k: |r| in [2^k, 2^(k+1)) for k < kDirectClasses; the last symbol: k >= kDirectClasses, then
+// k - kDirectClasses in a unary code), then the sign and the two bits below the leading one
+// through adaptive models (the second conditioned on the first), the remaining bits raw.
+constexpr int kDirectClasses = SymbolModel::kSymbols - 2;
+
+struct ResidualModel {
+  SymbolModel magnitude;
+  BitModel sign;
+  BitModel mantissa[kDirectClasses + 1][3];  // by k (larger classes share the last)
+  BitModel escape[kMaxEGPrefix - kDirectClasses + 1];
+};
+
+inline void EncodeResidual(ArithmeticEncoder& e, ResidualModel& m, int64_t r) {
+  if (r == 0) {
+    e.Encode(0, m.magnitude);
+    return;
+  }
+  const uint64_t v = uint64_t(r < 0 ? -r : r);
+  const int k = FloorLog2(v);
+  if (k < kDirectClasses) {
+    e.Encode(1 + k, m.magnitude);
+  } else {
+    e.Encode(SymbolModel::kSymbols - 1, m.magnitude);
+    for (int i = kDirectClasses; i < k; ++i) e.Encode(1, m.escape[i - kDirectClasses]);
+    if (k < kMaxEGPrefix) e.Encode(0, m.escape[k - kDirectClasses]);
+  }
+  e.Encode(r < 0, m.sign);
+  if (k == 0) return;
+  BitModel (&mm)[3] = m.mantissa[k < kDirectClasses ? k : kDirectClasses];
+  const int top = int((v >> (k - 1)) & 1);
+  e.Encode(top, mm[0]);
+  if (k == 1) return;
+  e.Encode(int((v >> (k - 2)) & 1), mm[1 + top]);
+  int rest = k - 2;
+  while (rest > 0) {
+    const int n = rest > 24 ? 24 : rest;
+    rest -= n;
+    e.EncodeRaw(uint32_t((v >> rest) & ((1u << n) - 1)), n);
+  }
+}
+
+inline int64_t DecodeResidual(ArithmeticDecoder& d, ResidualModel& m) {
+  const int symbol = d.Decode(m.magnitude);
+  if (symbol == 0) return 0;
+  int k = symbol - 1;
+  if (symbol == SymbolModel::kSymbols - 1) {
+    while (k < kMaxEGPrefix && d.Decode(m.escape[k - kDirectClasses])) ++k;
+  }
+  const int neg = d.Decode(m.sign);
+  uint64_t v = 1;
+  if (k > 0) {
+    BitModel (&mm)[3] = m.mantissa[k < kDirectClasses ? k : kDirectClasses];
+    const int top = d.Decode(mm[0]);
+    v = 2 | uint64_t(top);
+    if (k > 1) {
+      v = (v << 1) | uint64_t(d.Decode(mm[1 + top]));
+      int rest = k - 2;
+      while (rest > 0) {
+        const int n = rest > 24 ? 24 : rest;
+        rest -= n;
+        v = (v << n) | d.DecodeRaw(n);
+      }
+    }
+  }
   return neg ? -int64_t(v) : int64_t(v);
 }
 

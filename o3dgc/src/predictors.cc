@@ -27,53 +27,98 @@ void MeshAdjacency::Build(const std::vector<uint32_t>& triangles, uint32_t num_v
   }
 }
 
-void MeshAdjacency::BuildPermuted(const MeshAdjacency& source, const std::vector<uint32_t>& order,
-                                  const std::vector<uint32_t>& renamed) {
-  tris_ = &renamed;
-  const uint32_t n = uint32_t(order.size());
-  start_.resize(size_t(n) + 1);
-  tri_.resize(source.tri_.size());
-  start_[0] = 0;
-  for (uint32_t i = 0; i < n; ++i) {
-    const uint32_t v = order[i];
-    const uint32_t b = source.start_[v], e = source.start_[v + 1];
-    std::copy(source.tri_.begin() + b, source.tri_.begin() + e, tri_.begin() + start_[i]);
-    start_[i + 1] = start_[i] + (e - b);
+void WedgeTable::Build(const std::vector<uint32_t>& triangles, uint32_t num_vertices,
+                       const std::vector<uint32_t>& opposite) {
+  start_.assign(size_t(num_vertices) + 1, 0);
+  const size_t nt = triangles.size() / 3;
+  const uint32_t* tri = triangles.data();
+  auto ok = [&](size_t t) {
+    const uint32_t* v = tri + 3 * t;
+    return v[0] != v[1] && v[1] != v[2] && v[0] != v[2];
+  };
+  for (size_t t = 0; t < nt; ++t) {
+    if (!ok(t)) continue;
+    for (int j = 0; j < 3; ++j) ++start_[tri[3 * t + j] + 1];
+  }
+  for (uint32_t v = 0; v < num_vertices; ++v) start_[v + 1] += start_[v];
+  wedges_.resize(start_[num_vertices]);
+  std::vector<uint32_t> fill(start_.begin(), start_.end() - 1);
+  const bool has_opposite = opposite.size() >= 3 * nt;
+  for (size_t t = 0; t < nt; ++t) {
+    if (!ok(t)) continue;
+    const uint32_t* v = tri + 3 * t;
+    for (int j = 0; j < 3; ++j) {
+      const uint32_t p = v[j == 2 ? 0 : j + 1], q = v[j == 0 ? 2 : j - 1];
+      uint32_t x = kNoVertex;
+      const uint32_t e = has_opposite ? opposite[3 * t + j] : 0xFFFFFFFFu;
+      if (e != 0xFFFFFFFFu) {
+        // The neighbour counts only if its edge has the same two vertices (attribute seams can
+        // split a position edge).
+        const uint32_t* o = tri + 3 * size_t(e / 4);
+        const int s = int(e % 4);
+        const uint32_t op = o[s == 2 ? 0 : s + 1], oq = o[s == 0 ? 2 : s - 1];
+        if ((op == p && oq == q) || (op == q && oq == p)) x = o[s];
+      }
+      wedges_[fill[v[j]]++] = Wedge{p, q, x};
+    }
   }
 }
 
-PredictionContext PredictParallelogram(const MeshAdjacency& adj, uint32_t c, const int32_t* values,
-                                       int dim, const uint32_t* magnitudes, int64_t* pred) {
+DegreeTraversal::DegreeTraversal(const WedgeTable& wedges)
+    : wedges_(wedges), done_(wedges.num_vertices(), 0), degree_(wedges.num_vertices(), 0) {
+  for (auto& s : stacks_) s.reserve(64);
+}
+
+uint32_t DegreeTraversal::Next() {
+  const uint32_t n = wedges_.num_vertices();
+  if (visited_ >= n) return kNoVertex;
+  for (;;) {
+    int level = kLevels - 1;
+    while (level >= 0 && stacks_[level].empty()) --level;
+    if (level < 0) {
+      while (done_[next_start_]) ++next_start_;
+      return next_start_;
+    }
+    const uint32_t c = stacks_[level].back();
+    stacks_[level].pop_back();
+    if (done_[c]) continue;
+    const int cur = degree_[c] < kLevels ? int(degree_[c]) : kLevels - 1;
+    if (cur != level) continue;  // stale entry: a newer one sits at its current level
+    return c;
+  }
+}
+
+void DegreeTraversal::Visit(uint32_t c) {
+  done_[c] = 1;
+  ++visited_;
+  previous_ = c;
+  for (const Wedge* it = wedges_.begin(c); it != wedges_.end(c); ++it) {
+    const uint32_t u = it->u, w = it->w;
+    if (!done_[u] && done_[w]) {
+      ++degree_[u];
+      Push(degree_[u] < kLevels ? int(degree_[u]) : kLevels - 1, u);
+    } else if (done_[u] && !done_[w]) {
+      ++degree_[w];
+      Push(degree_[w] < kLevels ? int(degree_[w]) : kLevels - 1, w);
+    } else if (!done_[u] && !done_[w]) {
+      Push(0, w);
+      Push(0, u);
+    }
+  }
+}
+
+PredictionContext PredictParallelogram(const WedgeTable& wedges, const uint8_t* done, uint32_t c,
+                                       uint32_t previous, const int32_t* values, int dim,
+                                       const uint32_t* magnitudes, int64_t* pred) {
   int64_t par[4] = {0, 0, 0, 0};
   constexpr int kMaxKept = 16;
   int64_t kept[kMaxKept][4];
   int n_par = 0;
-  for (const uint32_t* it = adj.begin(c); it != adj.end(c); ++it) {
-    const uint32_t t = *it;
-    const uint32_t* v = adj.corners(t);
-    const int j = v[0] == c ? 0 : (v[1] == c ? 1 : 2);
-    const uint32_t u = v[(j + 1) % 3], w2 = v[(j + 2) % 3];
-    if (u >= c || w2 >= c) continue;
-    // The triangle across u-w2.
-    uint32_t x = 0xFFFFFFFFu;
-    if (adj.has_opposite()) {
-      x = adj.OppositeVertex(t, j);
-    } else {
-      for (const uint32_t* it2 = adj.begin(u); it2 != adj.end(u); ++it2) {
-        if (*it2 == t) continue;
-        const uint32_t* o = adj.corners(*it2);
-        int has = -1;
-        for (int q = 0; q < 3; ++q) {
-          if (o[q] == w2) has = q;
-        }
-        if (has < 0) continue;
-        const int iu = o[0] == u ? 0 : (o[1] == u ? 1 : 2);
-        if (o[3 - iu - has] >= c) continue;
-        x = o[3 - iu - has];
-        break;
-      }
-    }
-    if (x >= c) continue;
+  const Wedge* const first = wedges.begin(c);
+  const Wedge* const last = wedges.end(c);
+  for (const Wedge* it = first; it != last; ++it) {
+    const uint32_t u = it->u, w2 = it->w, x = it->x;
+    if (!done[u] || !done[w2] || x == kNoVertex || !done[x]) continue;
     for (int k = 0; k < dim; ++k) {
       const int64_t pk = int64_t(values[size_t(u) * dim + k]) + values[size_t(w2) * dim + k] -
                          values[size_t(x) * dim + k];
@@ -112,15 +157,13 @@ PredictionContext PredictParallelogram(const MeshAdjacency& adj, uint32_t c, con
     ctx.neighbour_magnitude = dev * 2 / uint64_t(m);
     return ctx;
   }
-  // One parallelogram or none: the context (and the fallback) come from the decoded neighbours.
+  // One parallelogram or none: the context (and the fallback) come from the coded neighbours.
   int64_t nb[4] = {0, 0, 0, 0};
   int n_nb = 0;
   uint64_t mag = 0;
-  for (const uint32_t* it = adj.begin(c); it != adj.end(c); ++it) {
-    const uint32_t* v = adj.corners(*it);
-    for (int q = 0; q < 3; ++q) {
-      const uint32_t u = v[q];
-      if (u >= c) continue;
+  for (const Wedge* it = first; it != last; ++it) {
+    for (const uint32_t u : {it->u, it->w}) {
+      if (!done[u]) continue;
       for (int k = 0; k < dim; ++k) nb[k] += values[size_t(u) * dim + k];
       if (magnitudes) mag += magnitudes[u];
       ++n_nb;
@@ -134,26 +177,26 @@ PredictionContext PredictParallelogram(const MeshAdjacency& adj, uint32_t c, con
     for (int k = 0; k < dim; ++k) pred[k] = DivRound(nb[k], n_nb);
     ctx.kind = kPredNeighbours;
   } else {
-    for (int k = 0; k < dim; ++k) pred[k] = c > 0 ? values[size_t(c - 1) * dim + k] : 0;
+    for (int k = 0; k < dim; ++k) {
+      pred[k] = previous != kNoVertex ? values[size_t(previous) * dim + k] : 0;
+    }
     ctx.kind = kPredPrevious;
-    if (magnitudes && c > 0) ctx.neighbour_magnitude = magnitudes[c - 1];
+    if (magnitudes && previous != kNoVertex) ctx.neighbour_magnitude = magnitudes[previous];
   }
   return ctx;
 }
 
-PredictionContext PredictTexCoord(const MeshAdjacency& adj, uint32_t c, const int32_t* uv,
-                                  const double* geometry, const uint32_t* magnitudes,
-                                  int64_t pred[2], int64_t alt[2], bool* ambiguous) {
+PredictionContext PredictTexCoord(const WedgeTable& wedges, const uint8_t* done, uint32_t c,
+                                  uint32_t previous, const int32_t* uv, const double* geometry,
+                                  const uint32_t* magnitudes, int64_t pred[2], int64_t alt[2],
+                                  bool* ambiguous) {
   *ambiguous = false;
   double sum[2] = {0, 0}, und_a[2] = {0, 0}, und_b[2] = {0, 0};
   int n_dec = 0, n_und = 0;
   const double* pc = geometry + 3 * size_t(c);
-  for (const uint32_t* it = adj.begin(c); it != adj.end(c); ++it) {
-    const uint32_t t = *it;
-    const uint32_t* v = adj.corners(t);
-    const int j = v[0] == c ? 0 : (v[1] == c ? 1 : 2);
-    const uint32_t a = v[(j + 1) % 3], b = v[(j + 2) % 3];
-    if (a >= c || b >= c) continue;
+  for (const Wedge* it = wedges.begin(c); it != wedges.end(c); ++it) {
+    const uint32_t a = it->u, b = it->w;
+    if (!done[a] || !done[b]) continue;
     const double* pa = geometry + 3 * size_t(a);
     const double* pb = geometry + 3 * size_t(b);
     double e[3], d[3];
@@ -179,25 +222,8 @@ PredictionContext PredictTexCoord(const MeshAdjacency& adj, uint32_t c, const in
     const double cand_b[2] = {foot[0] - perp[0], foot[1] - perp[1]};
     // The neighbour across a-b with a decoded third vertex decides the side.
     int side = 0;
-    uint32_t x = 0xFFFFFFFFu;
-    if (adj.has_opposite()) {
-      x = adj.OppositeVertex(t, j);
-    } else {
-      for (const uint32_t* it2 = adj.begin(a); it2 != adj.end(a); ++it2) {
-        if (*it2 == t) continue;
-        const uint32_t* o = adj.corners(*it2);
-        int hb = -1;
-        for (int q = 0; q < 3; ++q) {
-          if (o[q] == b) hb = q;
-        }
-        if (hb < 0) continue;
-        const int ia = o[0] == a ? 0 : (o[1] == a ? 1 : 2);
-        if (o[3 - ia - hb] >= c) continue;
-        x = o[3 - ia - hb];
-        break;
-      }
-    }
-    if (x < c) {
+    const uint32_t x = it->x;
+    if (x != kNoVertex && done[x]) {
       const double cx = eu[0] * (double(uv[2 * size_t(x) + 1]) - ua[1]) -
                         eu[1] * (double(uv[2 * size_t(x)]) - ua[0]);
       // perp points to the positive side (cross(eu, perp) > 0); go away from x.
@@ -217,11 +243,21 @@ PredictionContext PredictTexCoord(const MeshAdjacency& adj, uint32_t c, const in
     }
   }
   if (n_dec == 0 && n_und == 0) {
-    return PredictParallelogram(adj, c, uv, 2, magnitudes, pred);
+    return PredictParallelogram(wedges, done, c, previous, uv, 2, magnitudes, pred);
   }
   PredictionContext ctx;
   ctx.kind = kPredParallelogram;
-  ctx.neighbour_magnitude = NeighbourMagnitude(adj, c, magnitudes);
+  uint64_t mag = 0;
+  int n_mag = 0;
+  for (const Wedge* it = wedges.begin(c); it != wedges.end(c); ++it) {
+    for (const uint32_t u : {it->u, it->w}) {
+      if (!done[u]) continue;
+      mag += magnitudes[u];
+      ++n_mag;
+    }
+  }
+  ctx.neighbour_magnitude = n_mag ? mag / uint64_t(n_mag)
+                                  : (previous != kNoVertex ? magnitudes[previous] : 0);
   auto round_to = [](double x) {
     if (!(x > -1e12)) x = -1e12;
     if (!(x < 1e12)) x = 1e12;
@@ -256,60 +292,6 @@ uint64_t NeighbourMagnitude(const MeshAdjacency& adj, uint32_t c, const uint32_t
   return mag / uint64_t(n);
 }
 
-std::vector<uint32_t> MaxDegreeOrder(const MeshAdjacency& adj) {
-  const uint32_t n = adj.num_vertices();
-  constexpr int kLevels = 4;
-  std::vector<uint32_t> order;
-  order.reserve(n);
-  std::vector<uint8_t> done(n, 0);
-  std::vector<uint32_t> degree(n, 0);
-  std::vector<uint32_t> stacks[kLevels];
-  uint32_t next_start = 0;
-  auto visit = [&](uint32_t c) {
-    done[c] = 1;
-    order.push_back(c);
-    for (const uint32_t* it = adj.begin(c); it != adj.end(c); ++it) {
-      const uint32_t* v = adj.corners(*it);
-      const int j = v[0] == c ? 0 : (v[1] == c ? 1 : 2);
-      const uint32_t u = v[(j + 1) % 3], w = v[(j + 2) % 3];
-      if (!done[u] && done[w]) {
-        ++degree[u];
-        stacks[degree[u] < kLevels ? degree[u] : kLevels - 1].push_back(u);
-      } else if (done[u] && !done[w]) {
-        ++degree[w];
-        stacks[degree[w] < kLevels ? degree[w] : kLevels - 1].push_back(w);
-      } else if (!done[u] && !done[w]) {
-        stacks[0].push_back(w);
-        stacks[0].push_back(u);
-      }
-    }
-  };
-  while (order.size() < n) {
-    int level = kLevels - 1;
-    while (level >= 0 && stacks[level].empty()) --level;
-    if (level < 0) {
-      while (done[next_start]) ++next_start;
-      visit(next_start);
-      continue;
-    }
-    const uint32_t c = stacks[level].back();
-    stacks[level].pop_back();
-    if (done[c]) continue;
-    const int cur = degree[c] < kLevels ? int(degree[c]) : kLevels - 1;
-    if (cur != level) continue;  // stale entry: a newer one sits at its current level
-    visit(c);
-  }
-  return order;
-}
-
-std::vector<uint32_t> RenameByOrder(const MeshAdjacency& adj, const std::vector<uint32_t>& order) {
-  std::vector<uint32_t> rank(order.size());
-  for (uint32_t i = 0; i < order.size(); ++i) rank[order[i]] = i;
-  std::vector<uint32_t> out(adj.triangles().size());
-  for (size_t i = 0; i < out.size(); ++i) out[i] = rank[adj.triangles()[i]];
-  return out;
-}
-
 void OctEncode(const double n[3], double* u, double* v) {
   const double s = std::fabs(n[0]) + std::fabs(n[1]) + std::fabs(n[2]);
   double x = n[0] / s, y = n[1] / s;
@@ -335,19 +317,17 @@ void OctDecode(double u, double v, double n[3]) {
   n[2] = z / len;
 }
 
-PredictionContext PredictAttributeVertex(const MeshAdjacency& adj, uint32_t c, const int32_t* values, int dim,
-                                         const double* geometry, bool parallelogram, const uint32_t* magnitudes,
+PredictionContext PredictAttributeVertex(const WedgeTable& wedges, const uint8_t* done, uint32_t c,
+                                         uint32_t previous, const int32_t* values, int dim,
+                                         const double* geometry, const uint32_t* magnitudes,
                                          int64_t maxq, int64_t pred[4], int64_t alt[2], bool* ambiguous) {
   PredictionContext pc;
   *ambiguous = false;
   alt[0] = alt[1] = 0;
   if (geometry) {
-    pc = PredictTexCoord(adj, c, values, geometry, magnitudes, pred, alt, ambiguous);
-  } else if (parallelogram) {
-    pc = PredictParallelogram(adj, c, values, dim, magnitudes, pred);
+    pc = PredictTexCoord(wedges, done, c, previous, values, geometry, magnitudes, pred, alt, ambiguous);
   } else {
-    for (int k = 0; k < dim; ++k) pred[k] = c > 0 ? values[size_t(c - 1) * dim + k] : 0;
-    pc.neighbour_magnitude = c > 0 ? magnitudes[c - 1] : 0;
+    pc = PredictParallelogram(wedges, done, c, previous, values, dim, magnitudes, pred);
   }
   for (int k = 0; k < dim; ++k) pred[k] = pred[k] < 0 ? 0 : (pred[k] > maxq ? maxq : pred[k]);
   if (*ambiguous) {
