@@ -103,64 +103,6 @@ bool ParseDataUri(const std::string& uri, DataUri* out, std::string* error) {
 
 bool IsDataUri(const std::string& uri) { return uri.compare(0, 5, "data:") == 0; }
 
-// Percent-decodes a relative URI and rejects anything that could leave `base_dir`.
-bool RelativePathFromUri(const std::string& uri, std::string* path, std::string* error) {
-  std::string decoded;
-  for (size_t i = 0; i < uri.size(); ++i) {
-    if (uri[i] == '%') {
-      if (i + 2 >= uri.size()) {
-        *error = "truncated percent escape";
-        return false;
-      }
-      auto hex = [](char c) -> int {
-        if (c >= '0' && c <= '9') return c - '0';
-        if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-        if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-        return -1;
-      };
-      const int hi = hex(uri[i + 1]);
-      const int lo = hex(uri[i + 2]);
-      if (hi < 0 || lo < 0) {
-        *error = "bad percent escape";
-        return false;
-      }
-      decoded.push_back(static_cast<char>(hi * 16 + lo));
-      i += 2;
-    } else {
-      decoded.push_back(uri[i]);
-    }
-  }
-  if (decoded.empty()) {
-    *error = "empty URI";
-    return false;
-  }
-  if (decoded.find('\0') != std::string::npos || decoded.find('\\') != std::string::npos) {
-    *error = "URI contains a NUL or backslash";
-    return false;
-  }
-  if (decoded[0] == '/') {
-    *error = "absolute URIs are not followed";
-    return false;
-  }
-  const size_t colon = decoded.find(':');
-  if (colon != std::string::npos && decoded.find('/') > colon) {
-    *error = "URIs with a scheme are not followed";
-    return false;
-  }
-  size_t start = 0;
-  while (start <= decoded.size()) {
-    size_t end = decoded.find('/', start);
-    if (end == std::string::npos) end = decoded.size();
-    if (decoded.compare(start, end - start, "..") == 0 && end - start == 2) {
-      *error = "URIs containing '..' are not followed";
-      return false;
-    }
-    start = end + 1;
-  }
-  *path = decoded;
-  return true;
-}
-
 Status ReadWholeFile(const std::string& path, std::vector<uint8_t>* out) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return Status(StatusCode::kIoError, path + ": cannot open");
@@ -1281,6 +1223,63 @@ Result<Scene> Decoder::Run() {
 }
 
 }  // namespace
+
+bool RelativePathFromUri(const std::string& uri, std::string* path, std::string* error) {
+  std::string decoded;
+  for (size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] == '%') {
+      if (i + 2 >= uri.size()) {
+        *error = "truncated percent escape";
+        return false;
+      }
+      auto hex = [](char c) -> int {
+        if (c >= '0' && c <= '9') return c - '0';
+        if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+        if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+        return -1;
+      };
+      const int hi = hex(uri[i + 1]);
+      const int lo = hex(uri[i + 2]);
+      if (hi < 0 || lo < 0) {
+        *error = "bad percent escape";
+        return false;
+      }
+      decoded.push_back(static_cast<char>(hi * 16 + lo));
+      i += 2;
+    } else {
+      decoded.push_back(uri[i]);
+    }
+  }
+  if (decoded.empty()) {
+    *error = "empty URI";
+    return false;
+  }
+  if (decoded.find('\0') != std::string::npos || decoded.find('\\') != std::string::npos) {
+    *error = "URI contains a NUL or backslash";
+    return false;
+  }
+  if (decoded[0] == '/') {
+    *error = "absolute URIs are not followed";
+    return false;
+  }
+  const size_t colon = decoded.find(':');
+  if (colon != std::string::npos && decoded.find('/') > colon) {
+    *error = "URIs with a scheme are not followed";
+    return false;
+  }
+  size_t start = 0;
+  while (start <= decoded.size()) {
+    size_t end = decoded.find('/', start);
+    if (end == std::string::npos) end = decoded.size();
+    if (decoded.compare(start, end - start, "..") == 0 && end - start == 2) {
+      *error = "URIs containing '..' are not followed";
+      return false;
+    }
+    start = end + 1;
+  }
+  *path = decoded;
+  return true;
+}
 
 Result<GltfDocument> DecodeGlbDocument(const uint8_t* data, size_t size, const std::string& name) {
   return ParseGltfBytes(data, size, name);

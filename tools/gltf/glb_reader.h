@@ -59,6 +59,10 @@ Result<Scene> DecodeGlb(const uint8_t* data, size_t size, const std::string& nam
 // Reads a .glb or .gltf file (detected by content); relative buffer URIs resolve next to it.
 Result<Scene> ReadGltfFile(const std::string& path);
 
+// Percent-decodes a relative URI into a path; false (with *error) for anything that could leave
+// the folder it is relative to (absolute paths, schemes, "..", backslashes, NUL).
+bool RelativePathFromUri(const std::string& uri, std::string* path, std::string* error);
+
 // Reads the file into a document without converting it.
 Result<GltfDocument> ReadGltfDocumentFile(const std::string& path);
 

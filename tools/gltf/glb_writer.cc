@@ -39,17 +39,6 @@ bool AllFiniteArray(const Array& v) {
   return true;
 }
 
-// "image/png" / "image/jpeg" from the first bytes, or "" when unrecognised.
-std::string SniffImageMime(const std::vector<uint8_t>& b) {
-  static const uint8_t kPng[8] = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A};
-  if (b.size() >= 8 && std::equal(kPng, kPng + 8, b.begin())) return "image/png";
-  if (b.size() >= 3 && b[0] == 0xFF && b[1] == 0xD8 && b[2] == 0xFF) return "image/jpeg";
-  if (b.size() >= 12 && std::equal(b.begin(), b.begin() + 4, "RIFF") &&
-      std::equal(b.begin() + 8, b.begin() + 12, "WEBP")) {
-    return "image/webp";
-  }
-  return "";
-}
 
 Status CheckPerVertex(size_t mesh_index, const Mesh& mesh, size_t got, size_t width,
                       const char* what) {
@@ -153,6 +142,17 @@ size_t UvSetsNeeded(const Scene& scene, const Mesh& m) {
 }
 
 }  // namespace
+
+std::string SniffImageMime(const std::vector<uint8_t>& b) {
+  static const uint8_t kPng[8] = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A};
+  if (b.size() >= 8 && std::equal(kPng, kPng + 8, b.begin())) return "image/png";
+  if (b.size() >= 3 && b[0] == 0xFF && b[1] == 0xD8 && b[2] == 0xFF) return "image/jpeg";
+  if (b.size() >= 12 && std::equal(b.begin(), b.begin() + 4, "RIFF") &&
+      std::equal(b.begin() + 8, b.begin() + 12, "WEBP")) {
+    return "image/webp";
+  }
+  return "";
+}
 
 Status ValidateSceneForGltf(const Scene& scene) {
   for (size_t mi = 0; mi < scene.meshes.size(); ++mi) {

@@ -71,6 +71,9 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
 // BuildGltfDocument + Serialize.
 Result<std::vector<uint8_t>> EncodeGlb(const Scene& scene, const GlbWriteOptions& options = {});
 
+// "image/png", "image/jpeg" or "image/webp" from the first bytes, or "" when unrecognised.
+std::string SniffImageMime(const std::vector<uint8_t>& bytes);
+
 }  // namespace hullpack
 
 #endif  // HULLPACK_TOOLS_GLTF_GLB_WRITER_H_

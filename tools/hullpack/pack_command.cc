@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "common/file_util.h"
+#include "gltf/external_images.h"
 #include "hullpack/cli_util.h"
 #include "io/scene_io.h"
 #include "pipeline/pack.h"
@@ -41,6 +42,12 @@ struct Job {
   std::string error;
   nlohmann::json report;
 };
+
+std::string FolderOf(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  if (slash == std::string::npos) return ".";
+  return slash == 0 ? "/" : path.substr(0, slash);
+}
 
 class ProgressForwarder : public PackObserver {
  public:
@@ -103,6 +110,8 @@ void PackOne(Job& job, const std::vector<std::string>& inputs, const PackOptions
     job.error = writable.message();
     return;
   }
+  // One GLB for web delivery: textures beside the input go inside it.
+  const EmbedReport images = EmbedExternalImages(scene.value(), FolderOf(job.input));
   ProgressForwarder observer(progress, FileStem(job.input));
   Result<PackResult> packed = PackScene(std::move(scene.value()), options, &observer);
   if (!packed.ok()) {
@@ -115,6 +124,8 @@ void PackOne(Job& job, const std::vector<std::string>& inputs, const PackOptions
     return;
   }
   job.report = ReportJson(packed->report);
+  job.report["images_embedded"] = images.embedded;
+  job.report["images_kept_as_references"] = images.kept_as_references;
   job.report["input"] = job.input;
   job.report["output"] = job.output;
   job.ok = true;
@@ -279,6 +290,10 @@ int RunPackCommand(const std::vector<std::string>& args) {
     std::printf("%s -> %s: %zu bytes (geometry %zu -> %zu bytes), %zu meshes, %zu hulls\n", job.input.c_str(),
                 job.output.c_str(), job.report["output_bytes"].get<size_t>(), before, after, job.report["meshes"].size(), hulls);
     for (const auto& line : job.report["left_out"]) std::printf("  left out: %s\n", line.get<std::string>().c_str());
+    if (job.report["images_embedded"].get<size_t>()) {
+      std::printf("  embedded %zu external images\n", job.report["images_embedded"].get<size_t>());
+    }
+    for (const auto& line : job.report["images_kept_as_references"]) std::printf("  %s\n", line.get<std::string>().c_str());
   }
   if (!report_path.empty()) {
     const nlohmann::json doc = work.size() == 1 ? reports[0] : nlohmann::json{{"files", reports}};
