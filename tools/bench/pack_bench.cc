@@ -3,7 +3,8 @@
 // error reached, and the same pruned meshes compressed by Draco (-cl 7) without hulls, each mesh at
 // the fewest position bits whose measured error stays within the same budget (Draco's usual
 // quantization: a cube of the largest extent). The bar: packed-with-hulls <= Draco-without-hulls in
-// median. Also per file: the GLB's JSON bytes (the hulls' meshes, accessors, shapes and collider
+// median. Every file is also read back (unpack(pack(x))) and checked against x: same triangle,
+// vertex and skin counts, position error within the budget. Also per file: the GLB's JSON bytes (the hulls' meshes, accessors, shapes and collider
 // nodes add to it; not geometry) and seconds per stage.
 //
 //   pack_bench FOLDER [--max-error 0.0005] [--hull-error F] [--max-hulls N] [--max-vertices N]
@@ -17,6 +18,7 @@
 
 #include "bench/bench_util.h"
 #include "bench/draco_bridge.h"
+#include "gltf/packed_glb_reader.h"
 #include "io/scene_io.h"
 #include "pipeline/pack.h"
 
@@ -63,11 +65,11 @@ int main(int argc, char** argv) {
     return 1;
   }
   std::printf("%-22s %7s %5s | %8s %7s %8s | %8s %2s | %6s | %9s %9s | %6s %6s | %6s %6s %6s %6s\n", "file", "tris",
-              "hulls", "mesh B", "hulls B", "packed B", "draco B", "qp", "ratio", "max err", "draco err", "json B",
+              "hulls", "mesh B", "hulls B", "packed B", "draco B", "qp", "ratio", "rt err", "draco err", "json B",
               "glb B", "enc s", "dec s", "vhacd s", "hull s");
   std::string text =
       "file,triangles,hulls,mesh_bytes,hull_bytes,packed_geometry_bytes,draco_bytes,draco_position_bits,ratio,"
-      "max_error_fraction,draco_max_error_fraction,glb_bytes,json_bytes,seconds_prune,seconds_encode,seconds_decode,"
+      "max_error_fraction,round_trip_error_fraction,draco_max_error_fraction,glb_bytes,json_bytes,seconds_prune,seconds_encode,seconds_decode,"
       "seconds_decompose,seconds_hull_encode,seconds_write,seconds_total\n";
   std::vector<double> ratios;
   int failures = 0;
@@ -88,6 +90,26 @@ int main(int argc, char** argv) {
     // Draco gets the same meshes the packer encoded (after leaving out what is unused).
     hullpack::Scene pruned = scene.value();
     hullpack::LeaveOutUnused(pruned, options.prune);
+    // unpack(pack(x)) against x: the GLB read back as any user reads it; same triangle and vertex
+    // counts (connectivity kept), skin attributes present, worst position error.
+    hullpack::GltfDocument inflated;
+    hullpack::Result<hullpack::Scene> unpacked =
+        hullpack::ReadPackedGltf(packed->glb.data(), packed->glb.size(), file, "", &inflated);
+    double round_trip = 0;
+    bool kept = unpacked.ok() && unpacked->meshes.size() >= pruned.meshes.size();
+    for (size_t m = 0; kept && m < pruned.meshes.size(); ++m) {
+      const hullpack::Mesh& a = pruned.meshes[m];
+      const hullpack::Mesh& b = unpacked->meshes[m];
+      kept = a.triangle_count() == b.triangle_count() && a.vertex_count() == b.vertex_count() &&
+             a.joints.size() == b.joints.size() && a.weights.size() == b.weights.size();
+      const double diagonal = hullpack::BoundingBoxDiagonal(a);
+      if (diagonal > 0) round_trip = std::max(round_trip, hullpack::MaxVertexDistance(a, b) / diagonal);
+    }
+    if (!kept) {
+      std::fprintf(stderr, "pack_bench: %s: the unpacked file lost data: %s\n", file.c_str(),
+                   unpacked.ok() ? "mesh, triangle, vertex or skin counts differ" : unpacked.status().message().c_str());
+      ++failures;
+    }
     size_t mesh_bytes = 0, hull_bytes = 0, hulls = 0, draco_bytes = 0, triangles = 0;
     double worst = 0, draco_worst = 0, s_encode = 0, s_decode = 0, s_decompose = 0, s_hulls = 0;
     int draco_bits_max = 0;
@@ -124,16 +146,20 @@ int main(int argc, char** argv) {
     }
     const size_t packed_bytes = mesh_bytes + hull_bytes;
     const double ratio = draco_bytes ? double(packed_bytes) / draco_bytes : 0;
+    if (round_trip > options.max_error && options.position_bits <= 0) {
+      std::fprintf(stderr, "pack_bench: %s: round-trip error %g over the budget\n", file.c_str(), round_trip);
+      ++failures;
+    }
     ratios.push_back(ratio);
     const size_t json_bytes = JsonChunkBytes(packed->glb);
     const hullpack::PackReport& pr = packed->report;
     std::printf("%-22s %7zu %5zu | %8zu %7zu %8zu | %8zu %2d | %6.3f | %9.6f %9.6f | %6zu %6zu | %6.2f %6.2f %6.2f %6.2f\n",
                 file.c_str(), triangles, hulls, mesh_bytes, hull_bytes, packed_bytes, draco_bytes, draco_bits_max, ratio,
-                worst, draco_worst, json_bytes, packed->glb.size(), s_encode, s_decode, s_decompose, s_hulls);
+                round_trip, draco_worst, json_bytes, packed->glb.size(), s_encode, s_decode, s_decompose, s_hulls);
     char line[768];
-    std::snprintf(line, sizeof(line), "%s,%zu,%zu,%zu,%zu,%zu,%zu,%d,%.4f,%.6g,%.6g,%zu,%zu,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f\n",
+    std::snprintf(line, sizeof(line), "%s,%zu,%zu,%zu,%zu,%zu,%zu,%d,%.4f,%.6g,%.6g,%.6g,%zu,%zu,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f\n",
                   file.c_str(), triangles, hulls, mesh_bytes, hull_bytes, packed_bytes, draco_bytes, draco_bits_max, ratio,
-                  worst, draco_worst, packed->glb.size(), json_bytes, pr.seconds_prune, s_encode, s_decode, s_decompose,
+                  worst, round_trip, draco_worst, packed->glb.size(), json_bytes, pr.seconds_prune, s_encode, s_decode, s_decompose,
                   s_hulls, pr.seconds_write, ms / 1000);
     text += line;
   }
