@@ -1,5 +1,6 @@
 #include "gltf/packed_glb_reader.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <map>
@@ -26,6 +27,14 @@ struct DecodedStream {
   std::vector<StreamAttribute> attributes;  // by stream attribute id
 };
 
+// Bytes of every array of a decoded stream.
+uint64_t DecodedBytes(const o3dgc::DecodedMesh& m) {
+  uint64_t n = (m.positions.size() + m.normals.size() + m.indices.size() + m.triangle_groups.size()) * 4;
+  for (const auto& a : m.float_attributes) n += a.values.size() * 4;
+  for (const auto& a : m.int_attributes) n += a.values.size() * 4;
+  return n;
+}
+
 // The primitive's share of a stream: its vertices (stream indices) and its triangles (indices into
 // those vertices).
 struct Selection {
@@ -36,7 +45,13 @@ struct Selection {
 
 class Inflater {
  public:
-  Inflater(GltfDocument& doc, const std::string& name) : doc_(doc), json_(doc.json()), name_(name) {}
+  // The bytes written into new bufferViews are bounded like any reader allocation: 64 per file byte
+  // (GltfReadOptions::max_expansion), plus each decoded stream's own size once (the codec already
+  // bounded that by the stream), so a small file cannot inflate one stream many times over.
+  Inflater(GltfDocument& doc, const std::string& name) : doc_(doc), json_(doc.json()), name_(name) {
+    const uint64_t input = doc.source_size() != 0 ? doc.source_size() : doc.binary().size();
+    budget_ = input * GltfReadOptions().max_expansion + (1u << 20);
+  }
 
   Status Run() {
     if (!json_.contains("meshes") || !json_["meshes"].is_array()) return Finish();
@@ -89,6 +104,7 @@ class Inflater {
       if (a.semantic == o3dgc::Semantic::kWeight && a.dimension == 4) NormalizeSkinWeights(a.values.data(), a.values.size() / 4);
     }
     // The attribute table points into the map node, which stays put.
+    budget_ += DecodedBytes(d.mesh);
     DecodedStream& s = streams_.emplace(view, std::move(d)).first->second;
     s.attributes.push_back({3, &s.mesh.positions, nullptr});
     if (!s.mesh.normals.empty()) s.attributes.push_back({3, &s.mesh.normals, nullptr});
@@ -152,7 +168,13 @@ class Inflater {
                    std::to_string(attribute->dimension) + " components");
     }
     if (is_indices && dims != 1) return Error("index accessor must be SCALAR");
-    std::vector<uint8_t> bytes(count * dims * csize);
+    const uint64_t size = uint64_t(count) * dims * csize;
+    if (size > budget_) {
+      return Status(StatusCode::kUnsupported, name_ + ": " + where_ + ": accessors[" + std::to_string(accessor_index) +
+                                                  "]: the decoded streams would be copied out more often than the file can justify");
+    }
+    budget_ -= size;
+    std::vector<uint8_t> bytes(size);
     for (size_t i = 0; i < count; ++i) {
       for (int c = 0; c < dims; ++c) {
         double value;
@@ -286,6 +308,7 @@ class Inflater {
   std::string where_;
   std::map<int64_t, DecodedStream> streams_;
   std::set<int64_t> filled_;
+  uint64_t budget_ = 0;  // bytes the remaining Fill calls may still allocate
 };
 
 }  // namespace
@@ -300,6 +323,11 @@ Result<Scene> ReadPackedGltf(const uint8_t* data, size_t size, const std::string
   if (!s.ok()) return s;
   GltfReadOptions options;
   options.base_dir = base_dir;
+  // The inflated arrays are part of the input now (the inflater bounded them): the file may hold
+  // far more than 64 bytes of decoded data per byte when its streams compress that well. Up to 4x
+  // for index and attribute types the scene widens to 32 bits.
+  const uint64_t file = std::max<uint64_t>(doc->source_size(), 1);
+  options.max_expansion += static_cast<size_t>((4 * uint64_t(doc->binary().size()) + file - 1) / file);
   Result<Scene> scene = DecodeGltfDocument(doc.value(), name, options);
   if (scene.ok() && inflated) *inflated = std::move(doc.value());
   return scene;
