@@ -18,6 +18,11 @@ const char* const kPalette[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#94
                                 "#b5cf6b", "#843c39", "#e7969c", "#000000"};
 constexpr size_t kPaletteSize = sizeof(kPalette) / sizeof(kPalette[0]);
 
+std::string Colour(const PlotSeries& s, size_t position) {
+  const size_t k = s.colour >= 0 ? static_cast<size_t>(s.colour) : position;
+  return kPalette[k % kPaletteSize];
+}
+
 std::string Num(double v) {
   char buf[32];
   std::snprintf(buf, sizeof(buf), "%.2f", v);
@@ -147,7 +152,7 @@ std::string RenderSvg(const Plot& plot, size_t* drawn) {
   svg += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + Num(kWidth) + "\" height=\"" + Num(kHeight) +
          "\" viewBox=\"0 0 " + Num(kWidth) + " " + Num(kHeight) + "\" font-family=\"sans-serif\" font-size=\"12\">\n";
   svg += "<rect x=\"0\" y=\"0\" width=\"" + Num(kWidth) + "\" height=\"" + Num(kHeight) + "\" fill=\"white\"/>\n";
-  svg += "<text x=\"" + Num((kLeft + kRight) / 2) + "\" y=\"24\" text-anchor=\"middle\" font-size=\"15\">" +
+  svg += "<text x=\"" + Num(kWidth / 2) + "\" y=\"24\" text-anchor=\"middle\" font-size=\"15\">" +
          XmlEscape(plot.title) + "</text>\n";
 
   // Grid and tick labels.
@@ -184,7 +189,7 @@ std::string RenderSvg(const Plot& plot, size_t* drawn) {
   size_t markers = 0;
   for (size_t i = 0; i < plot.series.size(); ++i) {
     const PlotSeries& s = plot.series[i];
-    const std::string colour = kPalette[i % kPaletteSize];
+    const std::string colour = Colour(s, i);
     std::string line, dots;
     for (const auto& [x, y] : s.points) {
       if (!Drawable(x, plot.x.log) || !Drawable(y, plot.y.log)) continue;
@@ -208,7 +213,7 @@ std::string RenderSvg(const Plot& plot, size_t* drawn) {
   double ly = kTop + 6;
   for (size_t i = 0; i < plot.series.size(); ++i) {
     const PlotSeries& s = plot.series[i];
-    const std::string colour = kPalette[i % kPaletteSize];
+    const std::string colour = Colour(s, i);
     const double lx = kRight + 16;
     svg += "<line x1=\"" + Num(lx) + "\" y1=\"" + Num(ly) + "\" x2=\"" + Num(lx + 22) + "\" y2=\"" + Num(ly) +
            "\" stroke=\"" + colour + "\" stroke-width=\"1.5\"" + (s.dashed ? " stroke-dasharray=\"6 4\"" : "") + "/>\n";
@@ -219,9 +224,23 @@ std::string RenderSvg(const Plot& plot, size_t* drawn) {
     svg += "<text x=\"" + Num(lx + 28) + "\" y=\"" + Num(ly + 4) + "\">" + XmlEscape(name) + "</text>\n";
     ly += 17;
   }
-  if (!plot.note.empty()) {
-    svg += "<text x=\"" + Num(kLeft) + "\" y=\"" + Num(kHeight - 14) + "\" font-size=\"11\" fill=\"#555\">" +
-           XmlEscape(plot.note) + "</text>\n";
+  // The note, wrapped at word boundaries into at most two lines.
+  std::vector<std::string> note_lines;
+  std::string rest = plot.note;
+  while (!rest.empty()) {
+    constexpr size_t kLine = 118;
+    size_t cut = rest.size();
+    if (cut > kLine && note_lines.empty()) {
+      const size_t space = rest.rfind(' ', kLine);
+      cut = space == std::string::npos || space == 0 ? kLine : space;
+    }
+    note_lines.push_back(rest.substr(0, cut));
+    rest = cut < rest.size() ? rest.substr(cut + (rest[cut] == ' ' ? 1 : 0)) : "";
+  }
+  for (size_t i = 0; i < note_lines.size(); ++i) {
+    const double y = kHeight - 12 - 14 * double(note_lines.size() - 1 - i);
+    svg += "<text x=\"" + Num(kLeft) + "\" y=\"" + Num(y) + "\" font-size=\"11\" fill=\"#555\">" +
+           XmlEscape(note_lines[i]) + "</text>\n";
   }
   svg += "</svg>\n";
   if (drawn) *drawn = markers;

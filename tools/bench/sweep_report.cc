@@ -89,7 +89,7 @@ double SweepKey(const SweepRow& r, const std::string& sweep) {
 std::string SweepValue(const SweepRow& r, const std::string& sweep) {
   if (sweep == "max_hulls" && r.max_hulls == 0) return "no limit";
   char buf[32];
-  std::snprintf(buf, sizeof(buf), "%g", sweep == "concavity" ? r.concavity : std::fabs(SweepKey(r, sweep)));
+  std::snprintf(buf, sizeof(buf), "%.10g", sweep == "concavity" ? r.concavity : std::fabs(SweepKey(r, sweep)));
   return buf;
 }
 
@@ -133,8 +133,15 @@ Plot PerMeshPlot(const SweepResult& result, const std::string& stage, const std:
   for (const auto& [mesh, rows] : ByMesh(result, stage, sweep)) {
     PlotSeries s;
     s.name = mesh;
-    for (const SweepRow* r : rows) s.points.push_back({x(*r), y(*r)});
-    p.series.push_back(s);
+    // One colour per mesh in every plot.
+    for (size_t m = 0; m < result.meshes.size(); ++m) {
+      if (result.meshes[m].name == mesh) s.colour = static_cast<int>(m);
+    }
+    // Every plotted quantity is >= 0; -1 is "not measured" (a mesh without normals, ...).
+    for (const SweepRow* r : rows) {
+      if (x(*r) >= 0 && y(*r) >= 0) s.points.push_back({x(*r), y(*r)});
+    }
+    if (!s.points.empty()) p.series.push_back(s);
   }
   return p;
 }
@@ -156,7 +163,7 @@ std::string GridText(const std::vector<double>& values) {
   std::string s;
   for (double v : values) {
     char buf[32];
-    std::snprintf(buf, sizeof(buf), "%g", v);
+    std::snprintf(buf, sizeof(buf), "%.10g", v);
     s += (s.empty() ? "" : ", ") + std::string(buf);
   }
   return s;
@@ -223,23 +230,23 @@ std::vector<std::pair<std::string, std::string>> SweepPlots(const SweepResult& r
 
   {
     Plot p = PerMeshPlot(result, "decompose", "resolution", cpu_s, HausdorffMax);
-    p.title = "Decomposition: error against run time, resolution sweep (" + GridText(AsDoubles(o.grid.resolutions)) + ")";
+    p.title = "Decomposition: error against run time over the voxel resolution";
     p.x = {time_label, true};
     p.y = {hausdorff_label, true};
-    p.note = std::string("one point per resolution, one curve per mesh; ") + base;
+    p.note = "one point per resolution (" + GridText(AsDoubles(o.grid.resolutions)) + "), one curve per mesh; " + base;
     add("decompose_resolution.svg", p);
   }
   {
     Plot p = PerMeshPlot(result, "decompose", "concavity", cpu_s, HausdorffMax);
-    p.title = "Decomposition: error against run time, concavity sweep (" + GridText(o.grid.concavities) + ")";
+    p.title = "Decomposition: error against run time over the concavity threshold";
     p.x = {time_label, true};
     p.y = {hausdorff_label, true};
-    p.note = std::string("one point per concavity threshold, one curve per mesh; ") + base;
+    p.note = "one point per concavity (" + GridText(o.grid.concavities) + "), one curve per mesh; " + base;
     add("decompose_concavity.svg", p);
   }
   {
     Plot p = PerMeshPlot(result, "decompose", "max_hulls", HausdorffMax, [](const SweepRow& r) { return r.bytes; });
-    p.title = "Decomposition: hull bytes against error, hull budget sweep";
+    p.title = "Decomposition: hull bytes against error over the hull budget";
     p.x = {hausdorff_label, true};
     p.y = {"hull stream bytes (as hullpack pack stores them)", true};
     p.note = "one point per max hull count (" + GridText(AsDoubles(o.grid.max_hulls)) + "; 0 = no limit); " + base;
@@ -268,10 +275,11 @@ std::vector<std::pair<std::string, std::string>> SweepPlots(const SweepResult& r
                 o.base_normal_bits, o.base_uv_bits);
   {
     Plot p = PerMeshPlot(result, "codec", "position_bits", position_error, bpv);
-    p.title = "Codec: size against position error, position bits " + GridText(AsDoubles(o.grid.position_bits));
+    p.title = "Codec: size against position error over the position bits";
     p.x = {"max position error (fraction of bbox diagonal)", true};
     p.y = {"stream size (bits per vertex)", false};
-    p.note = std::string("one point per position bit count, one curve per mesh; ") + codec_base;
+    p.note = "one point per position bit count (" + GridText(AsDoubles(o.grid.position_bits)) +
+             "), one curve per mesh; " + codec_base;
     add("codec_position_size.svg", p);
   }
   {
@@ -302,18 +310,19 @@ std::vector<std::pair<std::string, std::string>> SweepPlots(const SweepResult& r
   }
   {
     Plot p = PerMeshPlot(result, "codec", "normal_bits", [](const SweepRow& r) { return r.normal_max_deg; }, bpv);
-    p.title = "Codec: size against normal error, normal bits " + GridText(AsDoubles(o.grid.normal_bits));
+    p.title = "Codec: size against normal error over the normal bits";
     p.x = {"max normal angle error (degrees)", true};
     p.y = {"stream size (bits per vertex)", false};
-    p.note = "meshes with normals; one point per normal bit count; " + std::string(codec_base);
+    p.note = "meshes with normals; one point per normal bit count (" + GridText(AsDoubles(o.grid.normal_bits)) + "); " +
+             codec_base;
     add("codec_normal_size.svg", p);
   }
   {
     Plot p = PerMeshPlot(result, "codec", "uv_bits", [](const SweepRow& r) { return r.uv_max_error; }, bpv);
-    p.title = "Codec: size against UV error, UV bits " + GridText(AsDoubles(o.grid.uv_bits));
+    p.title = "Codec: size against UV error over the UV bits";
     p.x = {"max UV error (UV units)", true};
     p.y = {"stream size (bits per vertex)", false};
-    p.note = "meshes with UVs; one point per UV bit count; " + std::string(codec_base);
+    p.note = "meshes with UVs; one point per UV bit count (" + GridText(AsDoubles(o.grid.uv_bits)) + "); " + codec_base;
     add("codec_uv_size.svg", p);
   }
   return out;

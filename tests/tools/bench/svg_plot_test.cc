@@ -210,6 +210,19 @@ TEST(SvgPlot, TheCheckerRejectsBrokenXml) {
   EXPECT_EQ(XmlProblem("<svg a=\"1\"><g/>x &amp; y</svg>"), "");
 }
 
+TEST(SvgPlot, SeriesKeepTheirColourAndLongNotesWrap) {
+  Plot p = TwoSeries();
+  p.series[0].colour = 1;
+  p.series[1].colour = 1;
+  p.note = std::string(100, 'a') + " " + std::string(60, 'b');
+  const std::string svg = RenderSvg(p);
+  EXPECT_EQ(XmlProblem(svg), "");
+  // Both series (and their legend lines) in palette colour 1; the note on two lines.
+  EXPECT_EQ(Count(svg, "stroke=\"#d62728\""), 4u);
+  EXPECT_EQ(Count(svg, std::string(100, 'a') + "</text>"), 1u);
+  EXPECT_EQ(Count(svg, ">" + std::string(60, 'b') + "</text>"), 1u);
+}
+
 TEST(SvgPlot, XmlEscape) { EXPECT_EQ(XmlEscape("a<b>&\"c'"), "a&lt;b&gt;&amp;&quot;c&apos;"); }
 
 }  // namespace
