@@ -46,7 +46,10 @@ int GuaranteedPositionBits(o3dgc::RangeMode mode, const std::array<double, 3>& e
 
 Result<BudgetedEncoding> EncodeWithinError(const Mesh& mesh, const std::vector<uint32_t>& groups,
                                            const MeshCodecSettings& settings, double max_error) {
-  if (!(max_error > 0) || !std::isfinite(max_error)) {
+  // Every grid keeps a mesh of zero size (empty, or all positions equal) exactly, so such a mesh
+  // meets even a zero budget (max_error x its diagonal of 0).
+  const bool zero_size = PositionRange(mesh) == 0;
+  if (!(max_error > 0 || (max_error == 0 && zero_size)) || !std::isfinite(max_error)) {
     return Status(StatusCode::kInvalidArgument, "error budget must be positive");
   }
   double seconds_encode = 0;

@@ -41,7 +41,8 @@ struct BudgetedEncoding {
   double seconds_decode = 0;     // the chosen stream
 };
 
-// `settings` gives everything but the position grid. `max_error` > 0, model units.
+// `settings` gives everything but the position grid. `max_error` > 0, model units (or 0 for a
+// mesh of zero size, which every grid keeps exactly).
 Result<BudgetedEncoding> EncodeWithinError(const Mesh& mesh, const std::vector<uint32_t>& groups,
                                            const MeshCodecSettings& settings, double max_error);
 

@@ -106,5 +106,19 @@ TEST(ErrorBudget, BadBudgetsAreErrors) {
   }
 }
 
+TEST(ErrorBudget, ZeroSizeMeshesMeetAZeroBudget) {
+  // What PackScene asks for a mesh whose diagonal is 0: max_error x 0 (found by tests/stability).
+  Mesh point;
+  point.positions = {1, 2, 3, 1, 2, 3, 1, 2, 3};
+  point.indices = {0, 1, 2};
+  for (const Mesh& mesh : {point, Mesh()}) {
+    Result<BudgetedEncoding> r = EncodeWithinError(mesh, {}, MeshCodecSettings(), 0.0);
+    ASSERT_TRUE(r.ok()) << r.status().ToString();
+    EXPECT_EQ(r->max_error, 0);
+    EXPECT_EQ(r->decoded.triangle_count(), mesh.triangle_count());
+    for (size_t i = 0; i < r->decoded.positions.size(); ++i) EXPECT_EQ(r->decoded.positions[i], point.positions[i % 3]);
+  }
+}
+
 }  // namespace
 }  // namespace hullpack
