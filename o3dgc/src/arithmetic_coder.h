@@ -25,36 +25,39 @@
 #include <emmintrin.h>
 #endif
 
+// Hot coder paths must inline into the coding loops, so that the coder's state can stay in
+// registers there.
+#if defined(__GNUC__) || defined(__clang__)
+#define O3DGC_INLINE inline __attribute__((always_inline))
+#else
+#define O3DGC_INLINE inline
+#endif
+
 namespace o3dgc {
 
 struct BitModel {
-  uint16_t fast = 32768;  // probabilities of a 0, in 1/65536
+  uint16_t fast = 32768;  // probabilities of a 0, in 1/65536, within [kMinProb, 65536 - kMinProb]
   uint16_t slow = 32768;
   uint8_t n = 0;          // observations so far (saturating at kWarmUp)
 
-  static constexpr int32_t kMinProb = 48;
+  static constexpr int32_t kMinProb = 48;  // no decision costs less than ~0.001 bits
   static constexpr int kSlowShift = 7;
   static constexpr int kFastShift = 3;
 
-  // The mixed estimate, clamped so that no decision costs less than ~0.001 bits.
-  uint32_t p0() const {
-    const uint32_t p = (uint32_t(slow) + fast + 1) >> 1;
-    return p < uint32_t(kMinProb) ? uint32_t(kMinProb)
-                                  : (p > uint32_t(65536 - kMinProb) ? uint32_t(65536 - kMinProb) : p);
-  }
-  // Moves p by (target - p) / 2^shift rounded towards the target (target 65535 for a 0, 0 for a 1);
-  // stays within [0, 65535]. Branch-free: `zero` is all ones for a 0; an arithmetic shift floors,
-  // which rounds a negative step towards 0, and adding 2^shift - 1 first makes a positive step
-  // round up.
+  // The mixed estimate; within [kMinProb, 65536 - kMinProb] since both estimates are.
+  uint32_t p0() const { return (uint32_t(slow) + fast + 1) >> 1; }
+  // Moves p by 1/2^shift of the way to 65536 - kMinProb after a 0 (`zero` all ones) or to
+  // kMinProb after a 1, rounded away from p (an arithmetic shift floors; adding 2^shift - 1 first
+  // makes the upward step round up), so p never leaves [kMinProb, 65536 - kMinProb]. Branch-free.
   static uint32_t Step(uint32_t p, int32_t zero, int shift) {
-    const int32_t d = (65535 & zero) - int32_t(p) + (((1 << shift) - 1) & zero);
+    const int32_t d = kMinProb + ((65536 - 2 * kMinProb + (1 << shift) - 1) & zero) - int32_t(p);
     return uint32_t(int32_t(p) + (d >> shift));
   }
   // Adaptation: the slow estimate starts fast (count-based rate, kWarmUp observations) and settles
   // at 1/2^kSlowShift; the fast one uses min(rate, 1/2^kFastShift). Settled models (the hot ones)
   // take the constant-shift path.
   static constexpr int kWarmUp = 40;
-  void Update(int bit) {
+  O3DGC_INLINE void Update(int bit) {
     const int32_t zero = bit - 1;
     if (n >= kWarmUp) {
       slow = uint16_t(Step(slow, zero, kSlowShift));
@@ -84,7 +87,7 @@ struct alignas(32) SymbolModel {
 
   uint16_t slow[kSymbols];  // entry kSymbols - 1 is the total and never changes
   uint16_t fast[kSymbols];
-  uint8_t n = 0;            // observations so far (saturating)
+  uint8_t n = 0;            // observations so far (saturating at kRates - 1)
 
   SymbolModel() {
     for (int i = 0; i < kSymbols; ++i) slow[i] = fast[i] = uint16_t((i + 1) * (kTotal / kSymbols));
@@ -93,31 +96,44 @@ struct alignas(32) SymbolModel {
   uint32_t cumulative(int i) const { return uint32_t(slow[i]) + fast[i]; }
   void Update(int symbol);
   // The symbol whose interval holds `code` (< range) for a range r * 2^16: the number of entries
-  // with r * cumulative(i) <= code.
+  // i < kSymbols - 1 with r * cumulative(i) <= code, i.e. with cumulative(i) <= code / r.
   int Find(uint32_t r, uint32_t code) const;
+
+  // Slow rate by observation count: 1/4 at first, then 1/8, 1/16, ... down to 1/2^kSlowShift
+  // after 126 observations.
+  static constexpr int kRates = 128;
+  static constexpr uint8_t Rate(int n) {
+    return uint8_t(2 + (n > 2) + (n > 6) + (n > 14) + (n > 30) + (n > 62) + (n > 126));
+  }
+  // Targets after observing s: entry i moves to (i + 1) * kMinFreq below s and to
+  // kTotal - (15 - i) * kMinFreq from s on (entry 15, the total, stays).
+  static constexpr uint16_t Target(int s, int i) {
+    return uint16_t(i < s ? (i + 1) * kMinFreq : kTotal - (kSymbols - 1 - i) * kMinFreq);
+  }
 };
 
+namespace symbol_tables {
+struct Tables {
+  uint8_t rate[SymbolModel::kRates];
+  alignas(16) uint16_t target[SymbolModel::kSymbols][SymbolModel::kSymbols];
+  constexpr Tables() : rate(), target() {
+    for (int n = 0; n < SymbolModel::kRates; ++n) rate[n] = SymbolModel::Rate(n);
+    for (int s = 0; s < SymbolModel::kSymbols; ++s) {
+      for (int i = 0; i < SymbolModel::kSymbols; ++i) target[s][i] = SymbolModel::Target(s, i);
+    }
+  }
+};
+inline constexpr Tables kTables{};
+}  // namespace symbol_tables
+
 #if defined(__SSE2__) && !defined(O3DGC_NO_SIMD)
-inline void SymbolModel::Update(int symbol) {
-  static constexpr uint8_t kThresholds[] = {2, 6, 14, 30, 62, 126};
-  int rate = 2;
-  for (uint8_t t : kThresholds) rate += n > t;
-  n = uint8_t(n + (n < 255));
+O3DGC_INLINE void SymbolModel::Update(int symbol) {
+  const int rate = symbol_tables::kTables.rate[n];
+  n = uint8_t(n + (n < kRates - 1));
   const int fast_rate = rate < kFastShift ? rate : kFastShift;
-  // Targets: (i + 1) * kMinFreq below the symbol, kTotal - (15 - i) * kMinFreq from it on (lane
-  // 15: kTotal, which keeps the total). 16-bit lanes: differences stay within +-2^15.
-  const __m128i idx0 = _mm_setr_epi16(0, 1, 2, 3, 4, 5, 6, 7);
-  const __m128i idx1 = _mm_setr_epi16(8, 9, 10, 11, 12, 13, 14, 15);
-  const __m128i low0 = _mm_setr_epi16(4, 8, 12, 16, 20, 24, 28, 32);
-  const __m128i low1 = _mm_setr_epi16(36, 40, 44, 48, 52, 56, 60, 64);
-  const __m128i high0 = _mm_setr_epi16(short(kTotal - 60), short(kTotal - 56), short(kTotal - 52), short(kTotal - 48),
-                                       short(kTotal - 44), short(kTotal - 40), short(kTotal - 36), short(kTotal - 32));
-  const __m128i high1 = _mm_setr_epi16(short(kTotal - 28), short(kTotal - 24), short(kTotal - 20), short(kTotal - 16),
-                                       short(kTotal - 12), short(kTotal - 8), short(kTotal - 4), short(kTotal));
-  const __m128i sym = _mm_set1_epi16(short(symbol));
-  const __m128i below0 = _mm_cmplt_epi16(idx0, sym), below1 = _mm_cmplt_epi16(idx1, sym);
-  const __m128i t0 = _mm_or_si128(_mm_and_si128(below0, low0), _mm_andnot_si128(below0, high0));
-  const __m128i t1 = _mm_or_si128(_mm_and_si128(below1, low1), _mm_andnot_si128(below1, high1));
+  // 16-bit lanes: differences to the targets stay within +-2^15.
+  const __m128i* t = reinterpret_cast<const __m128i*>(symbol_tables::kTables.target[symbol]);
+  const __m128i t0 = _mm_load_si128(t), t1 = _mm_load_si128(t + 1);
   const __m128i rs = _mm_cvtsi32_si128(rate), rf = _mm_cvtsi32_si128(fast_rate);
   __m128i* sp = reinterpret_cast<__m128i*>(slow);
   __m128i* fp = reinterpret_cast<__m128i*>(fast);
@@ -129,44 +145,38 @@ inline void SymbolModel::Update(int symbol) {
   _mm_store_si128(fp + 1, _mm_add_epi16(f1, _mm_sra_epi16(_mm_sub_epi16(t1, f1), rf)));
 }
 
-inline int SymbolModel::Find(uint32_t r, uint32_t code) const {
-  // 16-bit cumulative sums (lane 15 wraps to 0 but is never compared) times r < 2^16: 32-bit
-  // products from the low and high halves; a boundary above the code sets its lane. Boundaries
-  // increase, so the lanes above the code form a suffix and the symbol is the first of them.
+O3DGC_INLINE int SymbolModel::Find(uint32_t r, uint32_t code) const {
+  // Compare the 16-bit cumulative sums (lane 15 wraps to 0 and is masked off) with code / r: the
+  // lanes at or below it form a prefix, whose length is the symbol.
+  uint32_t q = code / r;
+  q = q < 0xFFFFu ? q : 0xFFFFu;  // larger only in a corrupt stream
   const __m128i* sp = reinterpret_cast<const __m128i*>(slow);
   const __m128i* fp = reinterpret_cast<const __m128i*>(fast);
   const __m128i c0 = _mm_add_epi16(_mm_load_si128(sp), _mm_load_si128(fp));
   const __m128i c1 = _mm_add_epi16(_mm_load_si128(sp + 1), _mm_load_si128(fp + 1));
-  const __m128i rv = _mm_set1_epi16(short(r));
-  const __m128i lo0 = _mm_mullo_epi16(c0, rv), hi0 = _mm_mulhi_epu16(c0, rv);
-  const __m128i lo1 = _mm_mullo_epi16(c1, rv), hi1 = _mm_mulhi_epu16(c1, rv);
-  const __m128i bias = _mm_set1_epi32(int(0x80000000u));
-  const __m128i cv = _mm_set1_epi32(int(code ^ 0x80000000u));
-  const __m128i g0 = _mm_cmpgt_epi32(_mm_xor_si128(_mm_unpacklo_epi16(lo0, hi0), bias), cv);
-  const __m128i g1 = _mm_cmpgt_epi32(_mm_xor_si128(_mm_unpackhi_epi16(lo0, hi0), bias), cv);
-  const __m128i g2 = _mm_cmpgt_epi32(_mm_xor_si128(_mm_unpacklo_epi16(lo1, hi1), bias), cv);
-  const __m128i g3 = _mm_cmpgt_epi32(_mm_xor_si128(_mm_unpackhi_epi16(lo1, hi1), bias), cv);
-  const __m128i g = _mm_packs_epi16(_mm_packs_epi32(g0, g1), _mm_packs_epi32(g2, g3));
-  const uint32_t above = uint32_t(_mm_movemask_epi8(g)) | 0x8000u;
-  return __builtin_ctz(above);
+  const __m128i qv = _mm_set1_epi16(short(q)), zero = _mm_setzero_si128();
+  const __m128i le0 = _mm_cmpeq_epi16(_mm_subs_epu16(c0, qv), zero);
+  const __m128i le1 = _mm_cmpeq_epi16(_mm_subs_epu16(c1, qv), zero);
+  const uint32_t at_or_below = uint32_t(_mm_movemask_epi8(_mm_packs_epi16(le0, le1))) & 0x7FFFu;
+  return __builtin_ctz(~at_or_below);
 }
 #else
-inline void SymbolModel::Update(int symbol) {
-  static constexpr uint8_t kThresholds[] = {2, 6, 14, 30, 62, 126};
-  int rate = 2;
-  for (uint8_t t : kThresholds) rate += n > t;
-  n = uint8_t(n + (n < 255));
+O3DGC_INLINE void SymbolModel::Update(int symbol) {
+  const int rate = symbol_tables::kTables.rate[n];
+  n = uint8_t(n + (n < kRates - 1));
   const int fast_rate = rate < kFastShift ? rate : kFastShift;
+  const uint16_t* t = symbol_tables::kTables.target[symbol];
   for (int i = 0; i < kSymbols - 1; ++i) {
-    const int32_t target = i < symbol ? (i + 1) * kMinFreq : kTotal - (kSymbols - 1 - i) * kMinFreq;
-    slow[i] = uint16_t(slow[i] + ((target - slow[i]) >> rate));
-    fast[i] = uint16_t(fast[i] + ((target - fast[i]) >> fast_rate));
+    slow[i] = uint16_t(slow[i] + ((int32_t(t[i]) - slow[i]) >> rate));
+    fast[i] = uint16_t(fast[i] + ((int32_t(t[i]) - fast[i]) >> fast_rate));
   }
 }
 
-inline int SymbolModel::Find(uint32_t r, uint32_t code) const {
+O3DGC_INLINE int SymbolModel::Find(uint32_t r, uint32_t code) const {
+  uint32_t q = code / r;
+  q = q < 0xFFFFu ? q : 0xFFFFu;
   int symbol = 0;
-  for (int i = 0; i < kSymbols - 1; ++i) symbol += r * cumulative(i) <= code;
+  for (int i = 0; i < kSymbols - 1; ++i) symbol += cumulative(i) <= q;
   return symbol;
 }
 #endif
@@ -175,7 +185,7 @@ class ArithmeticEncoder {
  public:
   explicit ArithmeticEncoder(std::vector<uint8_t>* out) : out_(out) {}
 
-  void Encode(int bit, BitModel& m) {
+  O3DGC_INLINE void Encode(int bit, BitModel& m) {
     const uint32_t bound = uint32_t((uint64_t(range_) * m.p0()) >> 16);
     if (bit) {
       low_ += bound;
@@ -186,7 +196,7 @@ class ArithmeticEncoder {
     m.Update(bit);
     Normalize();
   }
-  void Encode(int symbol, SymbolModel& m) {
+  O3DGC_INLINE void Encode(int symbol, SymbolModel& m) {
     const uint32_t r = range_ >> 16;
     const uint32_t lo = symbol ? r * m.cumulative(symbol - 1) : 0;
     const uint32_t hi = r * m.cumulative(symbol);
@@ -204,7 +214,7 @@ class ArithmeticEncoder {
     }
   }
   // Equiprobable bits in the raw bit stream, most significant first; 0 <= count <= 32.
-  void EncodeRaw(uint32_t value, int count) {
+  O3DGC_INLINE void EncodeRaw(uint32_t value, int count) {
     if (count == 0) return;
     raw_acc_ = (raw_acc_ << count) | (value & (0xFFFFFFFFu >> (32 - count)));
     raw_bits_ += count;
@@ -252,22 +262,29 @@ class ArithmeticDecoder {
     for (int i = 0; i < 4; ++i) code_ = (code_ << 8) | NextByte();
   }
 
-  int Decode(BitModel& m) {
-    const uint32_t bound = uint32_t((uint64_t(range_) * m.p0()) >> 16);
+  O3DGC_INLINE int Decode(BitModel& m) {
+    const uint32_t slow = m.slow, fast = m.fast;
+    const uint32_t bound = uint32_t((uint64_t(range_) * ((slow + fast + 1) >> 1)) >> 16);
     // Masks instead of a branch or a select (which compilers may turn into a branch): decoded bits
     // of a well-compressed stream are unpredictable.
-    const int bit = code_ >= bound;
-    const uint32_t mask = 0u - uint32_t(bit);
-    code_ -= bound & mask;
-    range_ = bound ^ ((bound ^ (range_ - bound)) & mask);  // range - bound for a 1, else bound
-    m.Update(bit);
+    const uint32_t one = 0u - uint32_t(code_ >= bound);  // all ones for a 1
+    code_ -= bound & one;
+    range_ = bound ^ ((bound ^ (range_ - bound)) & one);  // range - bound for a 1, else bound
+    if (m.n >= BitModel::kWarmUp) {
+      const int32_t zero = int32_t(~one);
+      m.slow = uint16_t(BitModel::Step(slow, zero, BitModel::kSlowShift));
+      m.fast = uint16_t(BitModel::Step(fast, zero, BitModel::kFastShift));
+    } else {
+      m.Update(int(one & 1));
+    }
     Normalize();
-    return bit;
+    return int(one & 1);
   }
-  int Decode(SymbolModel& m) {
+  O3DGC_INLINE int Decode(SymbolModel& m) {
     const uint32_t r = range_ >> 16;
     const int symbol = m.Find(r, code_);
-    const uint32_t lo = r * (symbol ? m.cumulative(symbol - 1) : 0);
+    const int below = symbol - 1 + (symbol == 0);  // any valid index: masked for symbol 0
+    const uint32_t lo = r * (m.cumulative(below) & (0u - uint32_t(symbol != 0)));
     code_ -= lo;
     range_ = r * m.cumulative(symbol) - lo;
     m.Update(symbol);
@@ -286,7 +303,7 @@ class ArithmeticDecoder {
     return v;
   }
   // Bits of the raw stream (see ArithmeticEncoder::EncodeRaw); 0 <= count <= 32.
-  uint32_t DecodeRaw(int count) {
+  O3DGC_INLINE uint32_t DecodeRaw(int count) {
     if (count == 0) return 0;
     if (raw_avail_ < count) RefillRaw();
     const uint32_t v = uint32_t(raw_acc_ >> (64 - count));
@@ -305,7 +322,8 @@ class ArithmeticDecoder {
 
  private:
   uint8_t NextByte() { return pos_ < size_ ? data_[pos_++] : (++pos_, uint8_t(0)); }
-  void Normalize() {
+  // Every coding step keeps at least 2^-13 of a range >= 2^24: at most two bytes come in.
+  O3DGC_INLINE void Normalize() {
     while (range_ < (1u << 24)) {
       range_ <<= 8;
       code_ = (code_ << 8) | NextByte();

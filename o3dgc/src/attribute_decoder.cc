@@ -4,6 +4,50 @@
 #include "attribute_coder.h"
 
 namespace o3dgc {
+namespace {
+
+// The multi-parallelogram loop for kDim components, in one function so that the decoder's state
+// (a local copy) stays in registers.
+template <int kDim>
+Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges, int64_t maxq,
+                           int coarse, ResidualModels& models, int32_t* q, uint32_t* mags) {
+  ArithmeticDecoder dec = *dec_in;
+  Status status = Status::kOk;
+  DegreeTraversal order(wedges);
+  for (uint32_t c; (c = order.Next()) != kNoVertex;) {
+    if (dec.failed()) {
+      status = Status::kTruncated;
+      break;
+    }
+    int64_t pred[kDim];
+    const uint32_t previous = order.previous();
+    const int n_par = order.Visit(c);
+    const PredictionContext pc =
+        PredictFromParallelograms<kDim>(order.parallelograms(), n_par, wedges, order.done(), c,
+                                        previous, q, mags, pred);
+    const int mctx = MagContext(pc.neighbour_magnitude) >> coarse;
+    int64_t r[kDim];
+    bool ok = true;
+    for (int k = 0; k < kDim; ++k) {
+      const int64_t p = pred[k] < 0 ? 0 : (pred[k] > maxq ? maxq : pred[k]);
+      r[k] = DecodeResidual(dec, models.at(coarse == 2 ? 0 : k, pc.kind, mctx,
+                                           (k && !coarse) ? IntraContext(r[k - 1]) : 0));
+      const int64_t v = p + r[k];
+      ok &= v >= 0 && v <= maxq;
+      q[size_t(c) * kDim + k] = int32_t(v);
+    }
+    if (!ok) {
+      status = Status::kCorrupt;
+      break;
+    }
+    mags[c] = SaturatingMagnitude(r, kDim);
+  }
+  *dec_in = dec;
+  if (status == Status::kOk && dec.failed()) status = Status::kTruncated;
+  return status;
+}
+
+}  // namespace
 
 Status DecodeQuantized(ArithmeticDecoder* dec_in, const WedgeTable* wedges, uint32_t n, int dim,
                        int bits, Prediction mode, std::vector<int32_t>* out,
@@ -48,6 +92,14 @@ Status DecodeQuantized(ArithmeticDecoder* dec_in, const WedgeTable* wedges, uint
     return dec->failed() ? Status::kTruncated : Status::kOk;
   }
   const double* geo = (geometry && dim == 2) ? geometry->data() : nullptr;
+  if (!geo) {
+    switch (dim) {
+      case 1: return DecodeParallelogram<1>(&*dec, *wedges, maxq, coarse, *models, q.data(), mags.data());
+      case 2: return DecodeParallelogram<2>(&*dec, *wedges, maxq, coarse, *models, q.data(), mags.data());
+      case 3: return DecodeParallelogram<3>(&*dec, *wedges, maxq, coarse, *models, q.data(), mags.data());
+      default: return DecodeParallelogram<4>(&*dec, *wedges, maxq, coarse, *models, q.data(), mags.data());
+    }
+  }
   DegreeTraversal order(*wedges);
   for (uint32_t c; (c = order.Next()) != kNoVertex;) {
     if (dec->failed()) return Status::kTruncated;

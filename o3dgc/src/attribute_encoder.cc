@@ -42,6 +42,34 @@ std::vector<double> AttributeGeometry(const NormalGeometry& geo, uint32_t n) {
   return g;
 }
 
+namespace {
+
+// The multi-parallelogram loop for kDim components (mirror of DecodeParallelogram).
+template <int kDim>
+void EncodeParallelogram(ArithmeticEncoder* enc, const WedgeTable& wedges, int64_t maxq, int coarse,
+                         ResidualModels& models, const int32_t* q, uint32_t* mags) {
+  DegreeTraversal order(wedges);
+  for (uint32_t c; (c = order.Next()) != kNoVertex;) {
+    int64_t pred[kDim];
+    const uint32_t previous = order.previous();
+    const int n_par = order.Visit(c);
+    const PredictionContext pc =
+        PredictFromParallelograms<kDim>(order.parallelograms(), n_par, wedges, order.done(), c,
+                                        previous, q, mags, pred);
+    const int mctx = MagContext(pc.neighbour_magnitude) >> coarse;
+    int64_t r[kDim];
+    for (int k = 0; k < kDim; ++k) {
+      const int64_t p = pred[k] < 0 ? 0 : (pred[k] > maxq ? maxq : pred[k]);
+      r[k] = int64_t(q[size_t(c) * kDim + k]) - p;
+      EncodeResidual(*enc, models.at(coarse == 2 ? 0 : k, pc.kind, mctx,
+                                     (k && !coarse) ? IntraContext(r[k - 1]) : 0), r[k]);
+    }
+    mags[c] = SaturatingMagnitude(r, kDim);
+  }
+}
+
+}  // namespace
+
 void EncodeQuantized(ArithmeticEncoder* enc, const WedgeTable* wedges,
                      const std::vector<int32_t>& q, int dim, int bits, Prediction mode,
                      const std::vector<double>* geometry) {
@@ -75,6 +103,14 @@ void EncodeQuantized(ArithmeticEncoder* enc, const WedgeTable* wedges,
     return;
   }
   const double* geo = (geometry && dim == 2) ? geometry->data() : nullptr;
+  if (!geo) {
+    switch (dim) {
+      case 1: return EncodeParallelogram<1>(enc, *wedges, maxq, coarse, *models, q.data(), mags.data());
+      case 2: return EncodeParallelogram<2>(enc, *wedges, maxq, coarse, *models, q.data(), mags.data());
+      case 3: return EncodeParallelogram<3>(enc, *wedges, maxq, coarse, *models, q.data(), mags.data());
+      default: return EncodeParallelogram<4>(enc, *wedges, maxq, coarse, *models, q.data(), mags.data());
+    }
+  }
   DegreeTraversal order(*wedges);
   for (uint32_t c; (c = order.Next()) != kNoVertex;) {
     int64_t pred[4];

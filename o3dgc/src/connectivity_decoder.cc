@@ -17,108 +17,112 @@ class Decoder {
         m_(new ConnectivityModels) {}
 
   Status Run() {
-    out_.clear();
-    // Reserve for what real streams need (well over one bit per triangle); a stream that codes
-    // more grows the vectors as it actually decodes, so a lying header allocates nothing.
-    size_t expect = dec_.size() * 8 + 1024;
-    if (expect > nt_) expect = nt_;
-    out_.reserve(expect * 3);
-    front_.Reserve(max_vertices_ < expect + 3 ? max_vertices_ : expect + 3, expect * 2);
-    has_flips_ = dec_.DecodeBits(1) != 0;
-    has_copies_ = dec_.DecodeBits(1) != 0;
+    ScopedDecoder scoped(&dec_);  // the state in registers for the loop
+    ArithmeticDecoder& dec = *scoped;
+    // The caller checked the counts against what the payload can hold, so sizing the output and
+    // the front for them is bounded by the stream's size.
+    out_.resize(nt_ * 3);
+    tri_ = out_.data();
+    front_.Reserve(max_vertices_ < nt_ + 3 ? max_vertices_ : nt_ + 3, nt_);
+    has_flips_ = dec.DecodeBits(1) != 0;
+    has_copies_ = dec.DecodeBits(1) != 0;
     for (;;) {
-      if (dec_.failed()) return Status::kTruncated;
+      if (dec.failed()) return Status::kTruncated;
       if (front_.empty()) {
-        if (!dec_.Decode(m_->more_components)) break;
+        if (!dec.Decode(m_->more_components)) break;
         if (Full()) return Status::kCorrupt;
         uint32_t x, y, z;
         Status s;
-        if ((s = VertexRef(&x)) != Status::kOk) return s;
-        if ((s = VertexRef(&y)) != Status::kOk) return s;
-        if ((s = VertexRef(&z)) != Status::kOk) return s;
+        if ((s = VertexRef(dec, &x)) != Status::kOk) return s;
+        if ((s = VertexRef(dec, &y)) != Status::kOk) return s;
+        if ((s = VertexRef(dec, &z)) != Status::kOk) return s;
         if (x == y || y == z || x == z) return Status::kCorrupt;
-        front_.StartTriangle(uint32_t(out_.size() / 3), x, y, z);
-        if ((s = Emit(x, y, z)) != Status::kOk) return s;
+        front_.StartTriangle(uint32_t(count_), x, y, z);
+        if ((s = Emit(dec, x, y, z)) != Status::kOk) return s;
         continue;
       }
       const int32_t g = front_.Pop();
       if (g < 0) continue;
       const uint32_t a = front_.gate(g).a, b = front_.gate(g).b;
-      const int ctx = front_.Context(a, b);
-      if (!dec_.Decode(m_->attach[ctx])) {
+      const Front::Candidates cand = front_.Look(a, b);
+      const int ctx = cand.context;
+      if (!dec.Decode(m_->attach[ctx])) {
         front_.Close(g);
         continue;
       }
       if (Full()) return Status::kCorrupt;
       uint32_t c;
-      if (dec_.Decode(m_->is_new[ctx])) {
+      if (dec.Decode(m_->is_new[ctx])) {
         if (front_.num_vertices() >= max_vertices_) return Status::kCorrupt;
         c = front_.AddVertex();
       } else {
-        const int64_t r = front_.RightCandidate(b);
-        const int64_t l = front_.LeftCandidate(a);
+        const int64_t r = cand.right;
+        const int64_t l = cand.left;
         int64_t chosen = -1;
-        if (r >= 0 && dec_.Decode(m_->is_right[ctx])) chosen = r;
-        if (chosen < 0 && l >= 0 && l != r && dec_.Decode(m_->is_left[ctx])) chosen = l;
+        if (r >= 0 && dec.Decode(m_->is_right[ctx])) chosen = r;
+        if (chosen < 0 && l >= 0 && l != r && dec.Decode(m_->is_left[ctx])) chosen = l;
         if (chosen < 0) {
-          const uint64_t d = DecodeEG(dec_, m_->other_ref);
+          const uint64_t d = DecodeEG(dec, m_->other_ref);
           if (d >= front_.num_vertices()) return Status::kCorrupt;
           chosen = int64_t(front_.num_vertices() - 1 - d);
         }
         c = uint32_t(chosen);
       }
       if (c == a || c == b) return Status::kCorrupt;
-      const int flip = has_flips_ ? dec_.Decode(m_->flip) : 0;
-      front_.Attach(g, uint32_t(out_.size() / 3), a, b, c, flip != 0);
-      const Status s = flip ? Emit(a, b, c) : Emit(b, a, c);
+      const int flip = has_flips_ ? dec.Decode(m_->flip) : 0;
+      front_.Attach(g, uint32_t(count_), a, b, c, flip != 0);
+      const Status s = flip ? Emit(dec, a, b, c) : Emit(dec, b, a, c);
       if (s != Status::kOk) return s;
     }
-    const uint64_t extras = DecodeEG(dec_, m_->extra_count);
-    if (extras > nt_ - out_.size() / 3) return Status::kCorrupt;
+    const uint64_t extras = DecodeEG(dec, m_->extra_count);
+    if (extras > nt_ - count_) return Status::kCorrupt;
     for (uint64_t i = 0; i < extras; ++i) {
-      if (dec_.failed()) return Status::kTruncated;
+      if (dec.failed()) return Status::kTruncated;
       uint32_t v[3];
       for (int j = 0; j < 3; ++j) {
-        const Status s = VertexRef(&v[j]);
+        const Status s = VertexRef(dec, &v[j]);
         if (s != Status::kOk) return s;
       }
       Push(v[0], v[1], v[2]);
     }
-    if (out_.size() != nt_ * 3) return Status::kCorrupt;
-    if (dec_.failed()) return Status::kTruncated;
+    if (count_ != nt_) return Status::kCorrupt;
+    if (dec.failed()) return Status::kTruncated;
     return Status::kOk;
   }
 
   uint32_t num_vertices() const { return front_.num_vertices(); }
   std::vector<uint32_t> TakeOpposite() { return front_.TakeOpposite(nt_); }
+  const ArithmeticDecoder& decoder() const { return dec_; }
 
  private:
-  bool Full() const { return out_.size() >= nt_ * 3; }
+  bool Full() const { return count_ >= nt_; }
+  // Callers check Full() (or the copy count) first.
   void Push(uint32_t x, uint32_t y, uint32_t z) {
-    out_.push_back(x);
-    out_.push_back(y);
-    out_.push_back(z);
+    uint32_t* t = tri_ + 3 * count_++;
+    t[0] = x;
+    t[1] = y;
+    t[2] = z;
   }
 
-  Status VertexRef(uint32_t* v) {
-    if (dec_.Decode(m_->start_new)) {
+  O3DGC_INLINE Status VertexRef(ArithmeticDecoder& dec, uint32_t* v) {
+    if (dec.Decode(m_->start_new)) {
       if (front_.num_vertices() >= max_vertices_) return Status::kCorrupt;
       *v = front_.AddVertex();
       return Status::kOk;
     }
-    const uint64_t d = DecodeEG(dec_, m_->start_ref);
+    const uint64_t d = DecodeEG(dec, m_->start_ref);
     if (d >= front_.num_vertices()) return Status::kCorrupt;
     *v = uint32_t(front_.num_vertices() - 1 - d);
     return Status::kOk;
   }
 
-  Status Emit(uint32_t x, uint32_t y, uint32_t z) {
+  O3DGC_INLINE Status Emit(ArithmeticDecoder& dec, uint32_t x, uint32_t y, uint32_t z) {
     Push(x, y, z);
     if (!has_copies_) return Status::kOk;
-    const uint64_t count = DecodeEG(dec_, m_->copies);
-    if (count > nt_ - out_.size() / 3) return Status::kCorrupt;
+    const uint64_t count = DecodeEG(dec, m_->copies);
+    if (count > nt_ - count_) return Status::kCorrupt;
     for (uint64_t i = 0; i < count; ++i) {
-      if (dec_.Decode(m_->copy_flip)) {
+      if (dec.Decode(m_->copy_flip)) {
         Push(x, z, y);
       } else {
         Push(x, y, z);
@@ -127,10 +131,12 @@ class Decoder {
     return Status::kOk;
   }
 
-  ArithmeticDecoder& dec_;
+  ArithmeticDecoder dec_;
   const size_t nt_;
   const size_t max_vertices_;
   std::vector<uint32_t>& out_;
+  uint32_t* tri_ = nullptr;
+  size_t count_ = 0;  // triangles decoded so far
   std::unique_ptr<ConnectivityModels> m_;
   Front front_;
   bool has_flips_ = false, has_copies_ = false;
@@ -143,6 +149,7 @@ Status DecodeConnectivity(ArithmeticDecoder* dec, size_t num_triangles, size_t m
                           std::vector<uint32_t>* opposite) {
   Decoder d(dec, num_triangles, max_vertices, triangles);
   const Status s = d.Run();
+  *dec = d.decoder();
   *num_vertices = d.num_vertices();
   if (s == Status::kOk && opposite) *opposite = d.TakeOpposite();
   return s;

@@ -46,7 +46,7 @@ class Encoder {
     visited_.assign(nt_, 0);
     out_.triangles.reserve(nt_ * 3);
     out_.source.reserve(nt_);
-    front_.Reserve(nv_in_, nt_ * 2);
+    front_.Reserve(nv_in_, nt_);
 
     size_t scan = 0;
     for (;;) {
@@ -101,7 +101,8 @@ class Encoder {
           oc = v[third];
         }
       }
-      const int ctx = front_.Context(a, b);
+      const Front::Candidates cand = front_.Look(a, b);
+      const int ctx = cand.context;
       if (found == kNone) {
         enc_.Encode(0, m_->attach[ctx]);
         front_.Close(g);
@@ -114,8 +115,8 @@ class Encoder {
         c = NewVertex(oc);
       } else {
         enc_.Encode(0, m_->is_new[ctx]);
-        const int64_t r = front_.RightCandidate(b);
-        const int64_t l = front_.LeftCandidate(a);
+        const int64_t r = cand.right;
+        const int64_t l = cand.left;
         bool done = false;
         if (r >= 0) {
           enc_.Encode(c == r, m_->is_right[ctx]);

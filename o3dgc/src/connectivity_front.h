@@ -1,14 +1,19 @@
 // The state shared by the connectivity encoder and decoder: the "front" of open gates.
 //
 // The coder grows the decoded region triangle by triangle. A gate is a directed edge a->b of a
-// decoded triangle whose other side has not been visited. Gates are kept in per-vertex intrusive
-// lists (gates leaving / entering each vertex) and on a stack that fixes the traversal order. The
-// encoder and the decoder drive this structure with the same operations in the same order, so their
-// states stay identical and every coded symbol can use it as context.
+// decoded triangle whose other side has not been visited. Gates are kept in per-vertex lists
+// (gates leaving / entering each vertex, newest first) and on a stack that fixes the traversal
+// order. The encoder and the decoder drive this structure with the same operations in the same
+// order, so their states stay identical and every coded symbol can use it as context.
+//
+// Gates are never reused: closing one only clears its flag, and the lists drop closed gates when
+// they are next walked (each gate leaves each list once), so opening and closing cost a few stores.
 #ifndef O3DGC_SRC_CONNECTIVITY_FRONT_H_
 #define O3DGC_SRC_CONNECTIVITY_FRONT_H_
 
+#include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "arithmetic_coder.h"
@@ -37,96 +42,103 @@ class Front {
  public:
   struct Gate {
     uint32_t a, b;
-    int32_t next_out, prev_out, next_in, prev_in;
     uint32_t edge;  // triangle * 4 + slot of the decoded triangle this gate is an edge of
+    int32_t next_out, next_in;
   };
   static constexpr uint32_t kNoEdge = 0xFFFFFFFFu;
   static constexpr int kMaxScan = 64;
 
+  // Capacities for a mesh of this size: each triangle opens at most 3 gates. The arrays still
+  // grow if a stream codes more.
   void Reserve(size_t vertices, size_t triangles) {
-    head_out_.reserve(vertices);
-    head_in_.reserve(vertices);
-    deg_.reserve(vertices);
-    stack_.reserve(triangles + 16);
+    GrowVertices(vertices < 16 ? 16 : vertices);
+    GrowGates(3 * triangles + 3);
+    opp_.assign(3 * triangles, kNoEdge);
   }
   uint32_t AddVertex() {
-    head_out_.push_back(-1);
-    head_in_.push_back(-1);
-    deg_.push_back(0);
-    return uint32_t(deg_.size() - 1);
+    if (num_vertices_ == vertex_capacity_) GrowVertices(2 * vertex_capacity_ + 16);
+    head_out_[num_vertices_] = -1;
+    head_in_[num_vertices_] = -1;
+    deg_[num_vertices_] = 0;
+    return num_vertices_++;
   }
-  uint32_t num_vertices() const { return uint32_t(deg_.size()); }
-  bool empty() const { return stack_.empty(); }
-  // Pops the next gate; returns -1 if it was closed meanwhile. Closed gates' slots are reused,
-  // so the gate storage stays as small (and as cache-resident) as the front; a stack entry is
-  // valid only while its slot's generation is unchanged.
+  uint32_t num_vertices() const { return num_vertices_; }
+  bool empty() const { return stack_top_ == 0; }
+  // Pops the next gate; returns -1 if it was closed meanwhile.
   int32_t Pop() {
-    const StackEntry e = stack_.back();
-    stack_.pop_back();
-    return (open_[e.gate] && generation_[e.gate] == e.generation) ? e.gate : -1;
+    const int32_t g = stack_[--stack_top_];
+    return open_[g] ? g : -1;
   }
   const Gate& gate(int32_t g) const { return gates_[g]; }
 
-  int Context(uint32_t a, uint32_t b) const {
-    const int has_r = head_out_[b] >= 0;
-    const int has_l = head_in_[a] >= 0;
-    const uint32_t d = deg_[b] < 7 ? deg_[b] : 7;
-    const uint32_t da = deg_[a] >= 5 ? 1 : 0;
-    return int(((has_r + 2 * has_l) * 2 + da) * 8 + d);
+  // The newest open gate leaving v / entering v, or -1 (closed gates at the head are dropped).
+  int32_t HeadOut(uint32_t v) {
+    int32_t g = head_out_[v];
+    while (g >= 0 && !open_[g]) g = gates_[g].next_out;
+    head_out_[v] = g;
+    return g;
   }
-  // Candidate third vertices: the end of the newest gate leaving b, the start of the newest gate
-  // entering a (-1 if none).
-  int64_t RightCandidate(uint32_t b) const {
-    return head_out_[b] >= 0 ? int64_t(gates_[head_out_[b]].b) : -1;
-  }
-  int64_t LeftCandidate(uint32_t a) const {
-    return head_in_[a] >= 0 ? int64_t(gates_[head_in_[a]].a) : -1;
+  int32_t HeadIn(uint32_t v) {
+    int32_t g = head_in_[v];
+    while (g >= 0 && !open_[g]) g = gates_[g].next_in;
+    head_in_[v] = g;
+    return g;
   }
 
-  void Close(int32_t g) {
-    Gate& x = gates_[g];
-    open_[g] = 0;
-    free_.push_back(g);
-    if (x.prev_out >= 0) gates_[x.prev_out].next_out = x.next_out; else head_out_[x.a] = x.next_out;
-    if (x.next_out >= 0) gates_[x.next_out].prev_out = x.prev_out;
-    if (x.prev_in >= 0) gates_[x.prev_in].next_in = x.next_in; else head_in_[x.b] = x.next_in;
-    if (x.next_in >= 0) gates_[x.next_in].prev_in = x.prev_in;
+  // The context of gate a->b and the candidate third vertices: the end of the newest gate leaving
+  // b ("right"), the start of the newest gate entering a ("left"), -1 if none.
+  struct Candidates {
+    int context;
+    int64_t right, left;
+  };
+  Candidates Look(uint32_t a, uint32_t b) {
+    const int32_t r = HeadOut(b), l = HeadIn(a);
+    const uint32_t d = deg_[b] < 7 ? deg_[b] : 7;
+    const uint32_t da = deg_[a] >= 5 ? 1 : 0;
+    Candidates c;
+    c.context = int((((r >= 0) + 2 * (l >= 0)) * 2 + da) * 8 + d);
+    c.right = r >= 0 ? int64_t(gates_[r].b) : -1;
+    c.left = l >= 0 ? int64_t(gates_[l].a) : -1;
+    return c;
   }
+
+  void Close(int32_t g) { open_[g] = 0; }
 
   // A new triangle edge u->v (edge = triangle * 4 + slot, the slot being the corner opposite the
   // edge): closes the open gate v->u if there is one (the two triangles become neighbours), else
   // opens u->v.
-  // Only the kMaxScan newest gates leaving v are searched, so a vertex with very many open gates
-  // (hostile streams, pathological meshes) cannot make coding quadratic; the encoder and the
+  // Only the kMaxScan newest open gates leaving v are searched, so a vertex with very many open
+  // gates (hostile streams, pathological meshes) cannot make coding quadratic; the encoder and the
   // decoder apply the same rule.
   void AddHalfEdge(uint32_t u, uint32_t v, uint32_t edge) {
+    int32_t prev = -1;
     int scanned = 0;
-    for (int32_t g = head_out_[v]; g >= 0 && scanned < kMaxScan;
-         g = gates_[g].next_out, ++scanned) {
-      if (gates_[g].b == u) {
-        Link(edge, gates_[g].edge);
-        Close(g);
+    for (int32_t g = head_out_[v]; g >= 0 && scanned < kMaxScan;) {
+      Gate& x = gates_[g];
+      const int32_t next = x.next_out;
+      if (!open_[g]) {  // drop a closed gate from v's list on the way
+        if (prev < 0) {
+          head_out_[v] = next;
+        } else {
+          gates_[prev].next_out = next;
+        }
+      } else if (x.b == u) {
+        Link(edge, x.edge);
+        open_[g] = 0;
         return;
+      } else {
+        prev = g;
+        ++scanned;
       }
+      g = next;
     }
-    int32_t id;
-    if (free_.empty()) {
-      id = int32_t(gates_.size());
-      gates_.emplace_back();
-      open_.push_back(0);
-      generation_.push_back(0);
-    } else {
-      id = free_.back();
-      free_.pop_back();
-      ++generation_[id];
-    }
-    gates_[id] = Gate{u, v, head_out_[u], -1, head_in_[v], -1, edge};
+    if (num_gates_ == gate_capacity_) GrowGates(2 * gate_capacity_ + 16);
+    const int32_t id = int32_t(num_gates_++);
+    gates_[id] = Gate{u, v, edge, head_out_[u], head_in_[v]};
     open_[id] = 1;
-    if (head_out_[u] >= 0) gates_[head_out_[u]].prev_out = id;
     head_out_[u] = id;
-    if (head_in_[v] >= 0) gates_[head_in_[v]].prev_in = id;
     head_in_[v] = id;
-    stack_.push_back(StackEntry{id, generation_[id]});
+    stack_[stack_top_++] = id;
   }
 
   // Triangle `tri` = (x, y, z) starts a new part.
@@ -142,7 +154,7 @@ class Front {
   // when `flipped`.
   void Attach(int32_t g, uint32_t tri, uint32_t a, uint32_t b, uint32_t c, bool flipped) {
     Link(tri * 4 + 2, gates_[g].edge);
-    Close(g);
+    open_[g] = 0;
     ++deg_[a];
     ++deg_[b];
     ++deg_[c];
@@ -152,7 +164,7 @@ class Front {
   // Neighbour relation found while coding: for triangle t and slot k (the edge opposite corner k),
   // opposite()[3t+k] is the neighbour's triangle * 4 + slot, or kNoEdge. Sized for `triangles`.
   std::vector<uint32_t> TakeOpposite(size_t triangles) {
-    opp_.resize(3 * triangles, kNoEdge);  // grows with kNoEdge, or drops the spare capacity
+    opp_.resize(3 * triangles, kNoEdge);
     return std::move(opp_);
   }
 
@@ -163,19 +175,35 @@ class Front {
     opp_[3 * size_t(e1 / 4) + e1 % 4] = e2;
     opp_[3 * size_t(e2 / 4) + e2 % 4] = e1;
   }
+  template <typename T>
+  static void Grow(std::unique_ptr<T[]>* a, size_t used, size_t capacity) {
+    std::unique_ptr<T[]> b(new T[capacity]);  // left uninitialized: entries are written first
+    std::copy(a->get(), a->get() + used, b.get());
+    *a = std::move(b);
+  }
+  void GrowVertices(size_t capacity) {
+    Grow(&head_out_, num_vertices_, capacity);
+    Grow(&head_in_, num_vertices_, capacity);
+    Grow(&deg_, num_vertices_, capacity);
+    vertex_capacity_ = capacity;
+  }
+  void GrowGates(size_t capacity) {
+    Grow(&gates_, num_gates_, capacity);
+    Grow(&open_, num_gates_, capacity);
+    Grow(&stack_, stack_top_, capacity);  // never more entries than gates
+    gate_capacity_ = capacity;
+  }
 
-  struct StackEntry {
-    int32_t gate;
-    uint32_t generation;
-  };
-  std::vector<Gate> gates_;
-  std::vector<uint8_t> open_;
-  std::vector<uint32_t> generation_;
-  std::vector<int32_t> free_;
+  // Gates are never reused: at most one per AddHalfEdge, each on the stack once.
+  std::unique_ptr<Gate[]> gates_;
+  std::unique_ptr<uint8_t[]> open_;
+  std::unique_ptr<int32_t[]> stack_;
+  size_t num_gates_ = 0, gate_capacity_ = 0, stack_top_ = 0;
+  std::unique_ptr<int32_t[]> head_out_, head_in_;
+  std::unique_ptr<uint32_t[]> deg_;
+  uint32_t num_vertices_ = 0;
+  size_t vertex_capacity_ = 0;
   std::vector<uint32_t> opp_;
-  std::vector<int32_t> head_out_, head_in_;
-  std::vector<uint32_t> deg_;
-  std::vector<StackEntry> stack_;
 };
 
 }  // namespace o3dgc

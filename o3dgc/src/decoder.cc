@@ -58,49 +58,58 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
 
   // Seams.
   std::unique_ptr<SideModels> sm(new SideModels);
-  std::vector<uint32_t> split_count(nc), split_base(size_t(nc) + 1, 0);
   const bool has_seams = dec.DecodeBits(1) != 0;
-  for (uint32_t w = 0; w < nc; ++w) {
-    const uint64_t k = has_seams ? DecodeEG(dec, sm->seam_count) + 1 : 1;
-    if (k > nv || split_base[w] + k > nv) return Status::kCorrupt;
-    split_count[w] = uint32_t(k);
-    split_base[w + 1] = split_base[w] + uint32_t(k);
-    if (dec.failed()) return Status::kTruncated;
-  }
-  const uint32_t referenced = split_base[nc];
-  std::vector<uint32_t> split_vertex(referenced, kNone);
-  std::vector<uint32_t> seen(nc, 0), last(nc, 0);
-  std::vector<uint32_t> welded_of(nv, kNone);
-  uint32_t next_vertex = 0;
-  std::vector<uint32_t> attr_tris(3 * nt);
-  for (size_t i = 0; i < 3 * nt; ++i) {
-    const uint32_t w = tris[i];
-    uint32_t sidx;
-    if (seen[w] == 0) {
-      sidx = kNone;
-    } else if (split_count[w] == 1 || dec.Decode(sm->seam_same)) {
-      sidx = last[w];
-    } else if (seen[w] < split_count[w] && dec.Decode(sm->seam_new)) {
-      sidx = kNone;
-    } else {
-      if (seen[w] < 2) return Status::kCorrupt;
-      const uint32_t idx = dec.DecodeBits(BitsFor(seen[w] - 1));
-      if (idx >= seen[w] - 1) return Status::kCorrupt;
-      sidx = idx < last[w] ? idx : idx + 1;
-    }
-    if (sidx == kNone) {
-      sidx = seen[w]++;
-      split_vertex[split_base[w] + sidx] = next_vertex;
-      welded_of[next_vertex] = w;
-      ++next_vertex;
-    }
-    last[w] = sidx;
-    attr_tris[i] = split_vertex[split_base[w] + sidx];
-    if ((i & 4095) == 0 && dec.failed()) return Status::kTruncated;
-  }
-  if (next_vertex != referenced) return Status::kCorrupt;
+  std::vector<uint32_t> welded_of(nv);
+  std::vector<uint32_t> seam_tris;  // the attribute mesh, when seams make it differ
   uint32_t nw = nc;
-  for (uint32_t v = referenced; v < nv; ++v) welded_of[v] = nw++;
+  if (!has_seams) {
+    // One attribute vertex per welded vertex. Both numberings follow first use in the triangle
+    // list, so the attribute mesh is the welded one; unreferenced vertices follow in order.
+    for (uint32_t v = 0; v < nv; ++v) welded_of[v] = v;
+    nw = nv;
+  } else {
+    std::vector<uint32_t> split_count(nc), split_base(size_t(nc) + 1, 0);
+    for (uint32_t w = 0; w < nc; ++w) {
+      const uint64_t k = DecodeEG(dec, sm->seam_count) + 1;
+      if (k > nv || split_base[w] + k > nv) return Status::kCorrupt;
+      split_count[w] = uint32_t(k);
+      split_base[w + 1] = split_base[w] + uint32_t(k);
+      if (dec.failed()) return Status::kTruncated;
+    }
+    const uint32_t referenced = split_base[nc];
+    std::vector<uint32_t> split_vertex(referenced, kNone);
+    std::vector<uint32_t> seen(nc, 0), last(nc, 0);
+    uint32_t next_vertex = 0;
+    seam_tris.resize(3 * nt);
+    for (size_t i = 0; i < 3 * nt; ++i) {
+      const uint32_t w = tris[i];
+      uint32_t sidx;
+      if (seen[w] == 0) {
+        sidx = kNone;
+      } else if (split_count[w] == 1 || dec.Decode(sm->seam_same)) {
+        sidx = last[w];
+      } else if (seen[w] < split_count[w] && dec.Decode(sm->seam_new)) {
+        sidx = kNone;
+      } else {
+        if (seen[w] < 2) return Status::kCorrupt;
+        const uint32_t idx = dec.DecodeBits(BitsFor(seen[w] - 1));
+        if (idx >= seen[w] - 1) return Status::kCorrupt;
+        sidx = idx < last[w] ? idx : idx + 1;
+      }
+      if (sidx == kNone) {
+        sidx = seen[w]++;
+        split_vertex[split_base[w] + sidx] = next_vertex;
+        welded_of[next_vertex] = w;
+        ++next_vertex;
+      }
+      last[w] = sidx;
+      seam_tris[i] = split_vertex[split_base[w] + sidx];
+      if ((i & 4095) == 0 && dec.failed()) return Status::kTruncated;
+    }
+    if (next_vertex != referenced) return Status::kCorrupt;
+    for (uint32_t v = referenced; v < nv; ++v) welded_of[v] = nw++;
+  }
+  const std::vector<uint32_t>& attr_tris = has_seams ? seam_tris : tris;
 
   // Exact order.
   std::vector<uint32_t> vertex_perm, triangle_perm;
@@ -141,7 +150,7 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
   std::vector<int32_t> qpos;
   {
     WedgeTable wedges;
-    if (h.position.prediction == Prediction::kParallelogram) wedges.Build(tris, nw, opposite);
+    if (h.position.prediction == Prediction::kParallelogram) wedges.Build(tris, nw, opposite, false);
     if ((s = DecodeQuantized(&dec, &wedges, nw, 3, h.position.bits, h.position.prediction, &qpos)) !=
         Status::kOk) {
       return s;
@@ -174,7 +183,7 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
                           d.prediction == Prediction::kParallelogram;
     if (texcoord && attr_geometry.empty()) attr_geometry = AttributeGeometry(geo, nv);
     if (d.prediction == Prediction::kParallelogram && !attr_wedges_built) {
-      attr_wedges.Build(attr_tris, nv, opposite);
+      attr_wedges.Build(attr_tris, nv, opposite, has_seams);
       attr_wedges_built = true;
     }
     const Status st = DecodeQuantized(&dec, &attr_wedges, nv, int(d.dimension), d.bits, d.prediction,
@@ -234,7 +243,7 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
   }
   if (dec.failed()) return Status::kTruncated;
   AddTailBytes(h, sh.payload_size > mark ? sh.payload_size - mark : 0, &si);
-  m.indices = std::move(attr_tris);
+  m.indices = has_seams ? std::move(seam_tris) : std::move(tris);
 
   if (sh.keep_order) {
     // New vertex i is input vertex vertex_perm[i]; decoded triangle j is input triangle

@@ -287,7 +287,7 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
   {
     WedgeTable wedges;
     if (h.position.prediction == Prediction::kParallelogram) {
-      wedges.Build(conn.triangles, nw, conn.opposite);
+      wedges.Build(conn.triangles, nw, conn.opposite, false);
     }
     EncodeQuantized(&enc, &wedges, qpos, 3, h.position.bits, h.position.prediction);
   }
@@ -318,7 +318,7 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
                           d.prediction == Prediction::kParallelogram;
     if (texcoord && attr_geometry.empty()) attr_geometry = AttributeGeometry(geo, uint32_t(nv));
     if (d.prediction == Prediction::kParallelogram && !attr_wedges_built) {
-      attr_wedges.Build(attr_tris, uint32_t(nv), conn.opposite);
+      attr_wedges.Build(attr_tris, uint32_t(nv), conn.opposite, true);
       attr_wedges_built = true;
     }
     EncodeQuantized(&enc, &attr_wedges, q, int(d.dimension), d.bits, d.prediction,

@@ -138,7 +138,7 @@ struct ResidualModel {
   BitModel escape[kMaxEGPrefix - kDirectClasses + 1];
 };
 
-inline void EncodeResidual(ArithmeticEncoder& e, ResidualModel& m, int64_t r) {
+O3DGC_INLINE void EncodeResidual(ArithmeticEncoder& e, ResidualModel& m, int64_t r) {
   if (r == 0) {
     e.Encode(0, m.magnitude);
     return;
@@ -167,7 +167,7 @@ inline void EncodeResidual(ArithmeticEncoder& e, ResidualModel& m, int64_t r) {
   }
 }
 
-inline int64_t DecodeResidual(ArithmeticDecoder& d, ResidualModel& m) {
+O3DGC_INLINE int64_t DecodeResidual(ArithmeticDecoder& d, ResidualModel& m) {
   const int symbol = d.Decode(m.magnitude);
   if (symbol == 0) return 0;
   int k = symbol - 1;
@@ -190,7 +190,8 @@ inline int64_t DecodeResidual(ArithmeticDecoder& d, ResidualModel& m) {
       }
     }
   }
-  return neg ? -int64_t(v) : int64_t(v);
+  const int64_t sign = -int64_t(neg);  // all ones for a negative value
+  return (int64_t(v) ^ sign) - sign;
 }
 
 // Values known to lie in [0, n): fixed-length equiprobable code.

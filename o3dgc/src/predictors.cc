@@ -28,162 +28,61 @@ void MeshAdjacency::Build(const std::vector<uint32_t>& triangles, uint32_t num_v
 }
 
 void WedgeTable::Build(const std::vector<uint32_t>& triangles, uint32_t num_vertices,
-                       const std::vector<uint32_t>& opposite) {
-  start_.assign(size_t(num_vertices) + 1, 0);
+                       const std::vector<uint32_t>& opposite, bool verify) {
   const size_t nt = triangles.size() / 3;
   const uint32_t* tri = triangles.data();
-  auto ok = [&](size_t t) {
-    const uint32_t* v = tri + 3 * t;
-    return v[0] != v[1] && v[1] != v[2] && v[0] != v[2];
-  };
+  const uint32_t* opp = opposite.size() >= 3 * nt ? opposite.data() : nullptr;
+  start_.assign(size_t(num_vertices) + 2, 0);
+  uint32_t* start = start_.data() + 1;  // counts at start[v + 1], then fill positions at start[v]
   for (size_t t = 0; t < nt; ++t) {
-    if (!ok(t)) continue;
-    for (int j = 0; j < 3; ++j) ++start_[tri[3 * t + j] + 1];
+    const uint32_t* v = tri + 3 * t;
+    const uint32_t ok = v[0] != v[1] && v[1] != v[2] && v[0] != v[2];
+    start[v[0] + 1] += ok;
+    start[v[1] + 1] += ok;
+    start[v[2] + 1] += ok;
   }
-  for (uint32_t v = 0; v < num_vertices; ++v) start_[v + 1] += start_[v];
-  wedges_.resize(start_[num_vertices]);
-  std::vector<uint32_t> fill(start_.begin(), start_.end() - 1);
-  const bool has_opposite = opposite.size() >= 3 * nt;
+  for (uint32_t v = 0; v < num_vertices; ++v) start[v + 1] += start[v];
+  wedges_.resize(start[num_vertices]);
+  Wedge* out = wedges_.data();
+  static constexpr uint8_t kNext[3] = {1, 2, 0}, kPrev[3] = {2, 0, 1};
   for (size_t t = 0; t < nt; ++t) {
-    if (!ok(t)) continue;
     const uint32_t* v = tri + 3 * t;
+    if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) continue;
     for (int j = 0; j < 3; ++j) {
-      const uint32_t p = v[j == 2 ? 0 : j + 1], q = v[j == 0 ? 2 : j - 1];
-      uint32_t x = kNoVertex;
-      const uint32_t e = has_opposite ? opposite[3 * t + j] : 0xFFFFFFFFu;
+      const uint32_t p = v[kNext[j]], q = v[kPrev[j]];
+      uint32_t x = v[j];  // no neighbour: the vertex itself, never coded before itself
+      const uint32_t e = opp ? opp[3 * t + j] : 0xFFFFFFFFu;
       if (e != 0xFFFFFFFFu) {
-        // The neighbour counts only if its edge has the same two vertices (attribute seams can
-        // split a position edge).
-        const uint32_t* o = tri + 3 * size_t(e / 4);
-        const int s = int(e % 4);
-        const uint32_t op = o[s == 2 ? 0 : s + 1], oq = o[s == 0 ? 2 : s - 1];
-        if ((op == p && oq == q) || (op == q && oq == p)) x = o[s];
+        const uint32_t* o = tri + 3 * size_t(e >> 2);
+        const uint32_t s = e & 3;
+        x = o[s];
+        // With attribute seams a neighbour across the position edge may not share the attribute
+        // edge; then it does not count.
+        if (verify) {
+          const uint32_t op = o[kNext[s]], oq = o[kPrev[s]];
+          if (!((op == p && oq == q) || (op == q && oq == p))) x = v[j];
+        }
       }
-      wedges_[fill[v[j]]++] = Wedge{p, q, x};
+      out[start[v[j]]++] = Wedge{p, q, x};
     }
   }
+  start_.pop_back();  // start[v] advanced to the end of v's wedges: start_[v + 1] now
 }
 
 DegreeTraversal::DegreeTraversal(const WedgeTable& wedges)
     : wedges_(wedges), done_(wedges.num_vertices(), 0), degree_(wedges.num_vertices(), 0) {
-  for (auto& s : stacks_) s.reserve(64);
-}
-
-uint32_t DegreeTraversal::Next() {
-  const uint32_t n = wedges_.num_vertices();
-  if (visited_ >= n) return kNoVertex;
-  for (;;) {
-    int level = kLevels - 1;
-    while (level >= 0 && stacks_[level].empty()) --level;
-    if (level < 0) {
-      while (done_[next_start_]) ++next_start_;
-      return next_start_;
-    }
-    const uint32_t c = stacks_[level].back();
-    stacks_[level].pop_back();
-    if (done_[c]) continue;
-    const int cur = degree_[c] < kLevels ? int(degree_[c]) : kLevels - 1;
-    if (cur != level) continue;  // stale entry: a newer one sits at its current level
-    return c;
-  }
-}
-
-void DegreeTraversal::Visit(uint32_t c) {
-  done_[c] = 1;
-  ++visited_;
-  previous_ = c;
-  for (const Wedge* it = wedges_.begin(c); it != wedges_.end(c); ++it) {
-    const uint32_t u = it->u, w = it->w;
-    if (!done_[u] && done_[w]) {
-      ++degree_[u];
-      Push(degree_[u] < kLevels ? int(degree_[u]) : kLevels - 1, u);
-    } else if (done_[u] && !done_[w]) {
-      ++degree_[w];
-      Push(degree_[w] < kLevels ? int(degree_[w]) : kLevels - 1, w);
-    } else if (!done_[u] && !done_[w]) {
-      Push(0, w);
-      Push(0, u);
-    }
-  }
+  for (int l = 0; l < kLevels; ++l) stacks_[l].resize(256);
 }
 
 PredictionContext PredictParallelogram(const WedgeTable& wedges, const uint8_t* done, uint32_t c,
                                        uint32_t previous, const int32_t* values, int dim,
                                        const uint32_t* magnitudes, int64_t* pred) {
-  int64_t par[4] = {0, 0, 0, 0};
-  constexpr int kMaxKept = 16;
-  int64_t kept[kMaxKept][4];
-  int n_par = 0;
-  const Wedge* const first = wedges.begin(c);
-  const Wedge* const last = wedges.end(c);
-  for (const Wedge* it = first; it != last; ++it) {
-    const uint32_t u = it->u, w2 = it->w, x = it->x;
-    if (!done[u] || !done[w2] || x == kNoVertex || !done[x]) continue;
-    for (int k = 0; k < dim; ++k) {
-      const int64_t pk = int64_t(values[size_t(u) * dim + k]) + values[size_t(w2) * dim + k] -
-                         values[size_t(x) * dim + k];
-      par[k] += pk;
-      if (n_par < kMaxKept) kept[n_par][k] = pk;
-    }
-    ++n_par;
+  switch (dim) {
+    case 1: return PredictParallelogramT<1>(wedges, done, c, previous, values, magnitudes, pred);
+    case 2: return PredictParallelogramT<2>(wedges, done, c, previous, values, magnitudes, pred);
+    case 3: return PredictParallelogramT<3>(wedges, done, c, previous, values, magnitudes, pred);
+    default: return PredictParallelogramT<4>(wedges, done, c, previous, values, magnitudes, pred);
   }
-  PredictionContext ctx;
-  if (n_par >= 2) {
-    for (int k = 0; k < dim; ++k) pred[k] = DivRound(par[k], n_par);
-    ctx.kind = kPredParallelogram;
-    // Three or more parallelograms: the component-wise median is more robust than the mean.
-    if (n_par >= 3 && n_par <= kMaxKept) {
-      for (int k = 0; k < dim; ++k) {
-        int64_t col[kMaxKept];
-        for (int i = 0; i < n_par; ++i) {  // insertion sort: n_par is small
-          int64_t xv = kept[i][k];
-          int q = i;
-          for (; q > 0 && col[q - 1] > xv; --q) col[q] = col[q - 1];
-          col[q] = xv;
-        }
-        pred[k] = (n_par & 1) ? col[n_par / 2] : DivRound(col[n_par / 2 - 1] + col[n_par / 2], 2);
-      }
-    }
-    // The context is the disagreement between the parallelograms: twice the mean absolute
-    // deviation, summed over the components.
-    const int m = n_par < kMaxKept ? n_par : kMaxKept;
-    uint64_t dev = 0;
-    for (int i = 0; i < m; ++i) {
-      for (int k = 0; k < dim; ++k) {
-        const int64_t d = kept[i][k] - pred[k];
-        dev += uint64_t(d < 0 ? -d : d);
-      }
-    }
-    ctx.neighbour_magnitude = dev * 2 / uint64_t(m);
-    return ctx;
-  }
-  // One parallelogram or none: the context (and the fallback) come from the coded neighbours.
-  int64_t nb[4] = {0, 0, 0, 0};
-  int n_nb = 0;
-  uint64_t mag = 0;
-  for (const Wedge* it = first; it != last; ++it) {
-    for (const uint32_t u : {it->u, it->w}) {
-      if (!done[u]) continue;
-      for (int k = 0; k < dim; ++k) nb[k] += values[size_t(u) * dim + k];
-      if (magnitudes) mag += magnitudes[u];
-      ++n_nb;
-    }
-  }
-  ctx.neighbour_magnitude = n_nb ? mag / uint64_t(n_nb) : 0;
-  if (n_par == 1) {
-    for (int k = 0; k < dim; ++k) pred[k] = par[k];
-    ctx.kind = kPredParallelogram;
-  } else if (n_nb > 0) {
-    for (int k = 0; k < dim; ++k) pred[k] = DivRound(nb[k], n_nb);
-    ctx.kind = kPredNeighbours;
-  } else {
-    for (int k = 0; k < dim; ++k) {
-      pred[k] = previous != kNoVertex ? values[size_t(previous) * dim + k] : 0;
-    }
-    ctx.kind = kPredPrevious;
-    if (magnitudes && previous != kNoVertex) ctx.neighbour_magnitude = magnitudes[previous];
-  }
-  return ctx;
 }
 
 PredictionContext PredictTexCoord(const WedgeTable& wedges, const uint8_t* done, uint32_t c,
@@ -223,7 +122,7 @@ PredictionContext PredictTexCoord(const WedgeTable& wedges, const uint8_t* done,
     // The neighbour across a-b with a decoded third vertex decides the side.
     int side = 0;
     const uint32_t x = it->x;
-    if (x != kNoVertex && done[x]) {
+    if (done[x]) {
       const double cx = eu[0] * (double(uv[2 * size_t(x) + 1]) - ua[1]) -
                         eu[1] * (double(uv[2 * size_t(x)]) - ua[0]);
       // perp points to the positive side (cross(eu, perp) > 0); go away from x.

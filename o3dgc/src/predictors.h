@@ -29,7 +29,8 @@ class MeshAdjacency {
 
 // One incident triangle of a vertex c, as the predictors need it: the triangle is (c, u, w) in
 // cyclic order, and x is the third vertex of its neighbour across u-w (from the connectivity
-// coder's neighbour table) when that neighbour shares both u and w, else kNoVertex.
+// coder's neighbour table) when that neighbour shares both u and w, else c itself (a vertex is
+// never coded before itself, so "x coded" is the whole test).
 struct Wedge {
   uint32_t u, w, x;
 };
@@ -38,9 +39,10 @@ struct Wedge {
 class WedgeTable {
  public:
   // `opposite`: 3 per triangle, neighbour triangle * 4 + its slot or 0xFFFFFFFF (see
-  // Front::TakeOpposite).
+  // Front::TakeOpposite). `verify`: check that a neighbour shares the edge's two vertices (needed
+  // when attribute seams split edges; the connectivity coder's neighbours always share them).
   void Build(const std::vector<uint32_t>& triangles, uint32_t num_vertices,
-             const std::vector<uint32_t>& opposite);
+             const std::vector<uint32_t>& opposite, bool verify);
   const Wedge* begin(uint32_t v) const { return wedges_.data() + start_[v]; }
   const Wedge* end(uint32_t v) const { return wedges_.data() + start_[v + 1]; }
   uint32_t num_vertices() const { return uint32_t(start_.size() - 1); }
@@ -55,22 +57,32 @@ class WedgeTable {
 // that most vertices have several parallelograms; levels 0..3, 3 meaning three or more), ties
 // broken last-in first-out; a new component starts at the lowest uncoded id. Deterministic in the
 // triangle list. Run incrementally, so the coder predicts each vertex when it is reached:
-//   for (uint32_t c; (c = t.Next()) != kNoVertex;) { predict and code c; t.Visit(c); }
+//   for (uint32_t c; (c = t.Next()) != kNoVertex;) {
+//     const uint32_t previous = t.previous();
+//     const int n = t.Visit(c);  // t.parallelograms() lists c's n parallelograms
+//     predict and code c;
+//   }
+// (A coder may also predict first and Visit after: Visit only changes what Next returns.)
 class DegreeTraversal {
  public:
   explicit DegreeTraversal(const WedgeTable& wedges);
   uint32_t Next();
-  void Visit(uint32_t c);
+  // Marks c coded and makes its uncoded neighbours candidates. Returns the number of c's
+  // parallelograms: its wedges whose u, w and x were coded before c, listed in wedge order by
+  // parallelograms().
+  int Visit(uint32_t c);
+  const Wedge* const* parallelograms() const { return par_.data(); }
   const uint8_t* done() const { return done_.data(); }
   uint32_t previous() const { return previous_; }  // the last visited vertex, kNoVertex at first
 
  private:
   static constexpr int kLevels = 4;
-  void Push(int level, uint32_t v) { stacks_[level].push_back(v); }
   const WedgeTable& wedges_;
   std::vector<uint8_t> done_;
   std::vector<uint32_t> degree_;
-  std::vector<uint32_t> stacks_[kLevels];
+  std::vector<uint32_t> stacks_[kLevels];  // candidates per level; top_ entries are in use
+  size_t top_[kLevels] = {0, 0, 0, 0};
+  std::vector<const Wedge*> par_;
   uint32_t visited_ = 0, next_start_ = 0, previous_ = kNoVertex;
 };
 
@@ -114,6 +126,7 @@ PredictionContext PredictAttributeVertex(const WedgeTable& wedges, const uint8_t
 // the mean over the incident triangles' corners with smaller ids, else that of vertex c - 1.
 uint64_t NeighbourMagnitude(const MeshAdjacency& adj, uint32_t c, const uint32_t* magnitudes);
 
+
 // Rounded division for possibly negative numerators, n > 0.
 inline int64_t DivRound(int64_t s, int64_t n) {
   return s >= 0 ? (2 * s + n) / (2 * n) : -((-2 * s + n) / (2 * n));
@@ -122,6 +135,179 @@ inline int64_t DivRound(int64_t s, int64_t n) {
 // Octahedral mapping of unit vectors to [-1,1]^2 and back.
 void OctEncode(const double n[3], double* u, double* v);
 void OctDecode(double u, double v, double n[3]);
+
+inline uint32_t DegreeTraversal::Next() {
+  const uint32_t n = wedges_.num_vertices();
+  if (visited_ >= n) return kNoVertex;
+  for (;;) {
+    int level = kLevels - 1;
+    while (level >= 0 && top_[level] == 0) --level;
+    if (level < 0) {
+      while (done_[next_start_]) ++next_start_;
+      return next_start_;
+    }
+    const uint32_t c = stacks_[level][--top_[level]];
+    const uint32_t d = degree_[c];
+    // Stale entries: coded meanwhile, or a newer entry sits at the vertex's current level.
+    if (done_[c] || (d < kLevels ? int(d) : kLevels - 1) != level) continue;
+    return c;
+  }
+}
+
+inline int DegreeTraversal::Visit(uint32_t c) {
+  const Wedge* const first = wedges_.begin(c);
+  const Wedge* const last = wedges_.end(c);
+  // At most two entries per wedge: make room first, then push without checks.
+  const size_t count = size_t(last - first);
+  for (int l = 0; l < kLevels; ++l) {
+    if (top_[l] + 2 * count > stacks_[l].size()) stacks_[l].resize(2 * (top_[l] + 2 * count));
+  }
+  if (count > par_.size()) par_.resize(2 * count);
+  uint32_t* stack[kLevels];
+  for (int l = 0; l < kLevels; ++l) stack[l] = stacks_[l].data();
+  size_t top[kLevels] = {top_[0], top_[1], top_[2], top_[3]};
+  const Wedge** par = par_.data();
+  int n_par = 0;
+  const uint8_t* const done = done_.data();
+  uint32_t* const degree = degree_.data();
+  // Before c is marked: x == c stands for "no neighbour".
+  for (const Wedge* it = first; it != last; ++it) {
+    const uint32_t u = it->u, w = it->w;
+    const uint32_t du = done[u], dw = done[w];
+    par[n_par] = it;
+    n_par += int(du & dw & done[it->x]);
+    // Exactly one of u, w coded: the other gains a parallelogram and moves up a level. Neither
+    // coded: both become candidates at level 0 (w pushed first). Written without branches: the
+    // slots are always written, the stack tops advance only when the entry is real.
+    const uint32_t one = du ^ dw, none = (du | dw) ^ 1;
+    const uint32_t a = du ? w : u;
+    const uint32_t d = degree[a] + one;
+    degree[a] = d;
+    const int level = int(one) * (d < kLevels ? int(d) : kLevels - 1);
+    stack[level][top[level]] = one ? a : w;
+    top[level] += one | none;
+    stack[0][top[0]] = u;
+    top[0] += none;
+  }
+  for (int l = 0; l < kLevels; ++l) top_[l] = top[l];
+  done_[c] = 1;
+  ++visited_;
+  previous_ = c;
+  return n_par;
+}
+
+constexpr int kMaxKept = 16;
+
+// Rounded mean of two values (DivRound(a + b, 2) without a division).
+inline int64_t Mean2(int64_t s) { return s >= 0 ? (s + 1) >> 1 : -((1 - s) >> 1); }
+
+// Multi-parallelogram prediction with kDim components (see PredictParallelogram) from c's
+// n_par parallelograms `par` (wedges with u, w and x coded, in wedge order).
+template <int kDim>
+inline PredictionContext PredictFromParallelograms(const Wedge* const* par, int n_par,
+                                                   const WedgeTable& wedges, const uint8_t* done,
+                                                   uint32_t c, uint32_t previous,
+                                                   const int32_t* values, const uint32_t* magnitudes,
+                                                   int64_t* pred) {
+  PredictionContext ctx;
+  if (n_par >= 2) {
+    int64_t kept[kMaxKept][kDim];
+    const int m = n_par < kMaxKept ? n_par : kMaxKept;
+    for (int i = 0; i < m; ++i) {
+      const int32_t* vu = values + size_t(par[i]->u) * kDim;
+      const int32_t* vw = values + size_t(par[i]->w) * kDim;
+      const int32_t* vx = values + size_t(par[i]->x) * kDim;
+      for (int k = 0; k < kDim; ++k) kept[i][k] = int64_t(vu[k]) + vw[k] - vx[k];
+    }
+    ctx.kind = kPredParallelogram;
+    if (n_par == 2) {
+      for (int k = 0; k < kDim; ++k) pred[k] = Mean2(kept[0][k] + kept[1][k]);
+    } else if (n_par == 3) {
+      // Three or more parallelograms: the component-wise median is more robust than the mean.
+      for (int k = 0; k < kDim; ++k) {
+        const int64_t a = kept[0][k], b = kept[1][k], d = kept[2][k];
+        const int64_t lo = a < b ? a : b, hi = a < b ? b : a;
+        pred[k] = d < lo ? lo : (d > hi ? hi : d);
+      }
+    } else if (n_par <= kMaxKept) {
+      for (int k = 0; k < kDim; ++k) {
+        int64_t col[kMaxKept];
+        for (int i = 0; i < n_par; ++i) {  // insertion sort: n_par is small
+          const int64_t xv = kept[i][k];
+          int q = i;
+          for (; q > 0 && col[q - 1] > xv; --q) col[q] = col[q - 1];
+          col[q] = xv;
+        }
+        pred[k] = (n_par & 1) ? col[n_par / 2] : Mean2(col[n_par / 2 - 1] + col[n_par / 2]);
+      }
+    } else {
+      // Many parallelograms (fan apices): the mean of all of them.
+      int64_t sum[kDim] = {};
+      for (int i = 0; i < n_par; ++i) {
+        for (int k = 0; k < kDim; ++k) {
+          sum[k] += int64_t(values[size_t(par[i]->u) * kDim + k]) +
+                    values[size_t(par[i]->w) * kDim + k] - values[size_t(par[i]->x) * kDim + k];
+        }
+      }
+      for (int k = 0; k < kDim; ++k) pred[k] = DivRound(sum[k], n_par);
+    }
+    // The context is the disagreement between the parallelograms: twice the mean absolute
+    // deviation, summed over the components.
+    uint64_t dev = 0;
+    for (int i = 0; i < m; ++i) {
+      for (int k = 0; k < kDim; ++k) {
+        const int64_t d = kept[i][k] - pred[k];
+        dev += uint64_t(d < 0 ? -d : d);
+      }
+    }
+    ctx.neighbour_magnitude = dev * 2 / uint64_t(m);
+    return ctx;
+  }
+  // One parallelogram or none: the context (and the fallback) come from the coded neighbours.
+  int64_t nb[kDim] = {};
+  int n_nb = 0;
+  uint64_t mag = 0;
+  for (const Wedge* it = wedges.begin(c); it != wedges.end(c); ++it) {
+    for (const uint32_t u : {it->u, it->w}) {
+      if (!done[u]) continue;
+      for (int k = 0; k < kDim; ++k) nb[k] += values[size_t(u) * kDim + k];
+      if (magnitudes) mag += magnitudes[u];
+      ++n_nb;
+    }
+  }
+  ctx.neighbour_magnitude = n_nb ? mag / uint64_t(n_nb) : 0;
+  if (n_par == 1) {
+    const int32_t* vu = values + size_t(par[0]->u) * kDim;
+    const int32_t* vw = values + size_t(par[0]->w) * kDim;
+    const int32_t* vx = values + size_t(par[0]->x) * kDim;
+    for (int k = 0; k < kDim; ++k) pred[k] = int64_t(vu[k]) + vw[k] - vx[k];
+    ctx.kind = kPredParallelogram;
+  } else if (n_nb > 0) {
+    for (int k = 0; k < kDim; ++k) pred[k] = DivRound(nb[k], n_nb);
+    ctx.kind = kPredNeighbours;
+  } else {
+    for (int k = 0; k < kDim; ++k) {
+      pred[k] = previous != kNoVertex ? values[size_t(previous) * kDim + k] : 0;
+    }
+    ctx.kind = kPredPrevious;
+    if (magnitudes && previous != kNoVertex) ctx.neighbour_magnitude = magnitudes[previous];
+  }
+  return ctx;
+}
+
+// The same for a vertex c not visited yet (its parallelograms found here).
+template <int kDim>
+inline PredictionContext PredictParallelogramT(const WedgeTable& wedges, const uint8_t* done,
+                                               uint32_t c, uint32_t previous,
+                                               const int32_t* values, const uint32_t* magnitudes,
+                                               int64_t* pred) {
+  std::vector<const Wedge*> par;
+  for (const Wedge* it = wedges.begin(c); it != wedges.end(c); ++it) {
+    if (done[it->u] && done[it->w] && done[it->x]) par.push_back(it);
+  }
+  return PredictFromParallelograms<kDim>(par.data(), int(par.size()), wedges, done, c, previous,
+                                         values, magnitudes, pred);
+}
 
 }  // namespace o3dgc
 
