@@ -104,9 +104,12 @@ struct Scene {
 };
 
 // A scene with one root node that holds every mesh; what formats without a hierarchy produce.
+// `name` may be the file's path: only its last component is kept, so the folders of the machine
+// that packed a file never end up inside it.
 inline void AddRootNodeForAllMeshes(Scene& scene, const std::string& name) {
   Node root;
-  root.name = name;
+  const size_t slash = name.find_last_of("/\\");
+  root.name = slash == std::string::npos ? name : name.substr(slash + 1);
   for (size_t i = 0; i < scene.meshes.size(); ++i) root.meshes.push_back(static_cast<int>(i));
   scene.nodes.push_back(std::move(root));
 }

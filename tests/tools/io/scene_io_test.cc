@@ -32,6 +32,20 @@ TEST(SceneIo, WriteThenReadEveryWrittenFormat) {
   }
 }
 
+// Formats without a hierarchy name their root node after the file; the folders it was read from
+// must not travel into what is written (a packed GLB would carry the packer's local paths).
+TEST(SceneIo, RootNodeNamedAfterTheFileNotItsPath) {
+  TempDir dir;
+  for (const char* ext : {"obj", "off", "wrl"}) {
+    const std::string path = dir.File(std::string("named.") + ext);
+    ASSERT_TRUE(WriteScene(TorusScene(), path).ok()) << ext;
+    Result<Scene> out = ReadScene(path);
+    ASSERT_TRUE(out.ok()) << out.status().ToString();
+    ASSERT_FALSE(out->nodes.empty()) << ext;
+    EXPECT_EQ(out->nodes[0].name, std::string("named.") + ext);
+  }
+}
+
 TEST(SceneIo, FormatsThroughAssimp) {
   TempDir dir;
   const Scene in = TorusScene(8, 6);
