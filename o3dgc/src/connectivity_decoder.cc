@@ -92,6 +92,7 @@ class Decoder {
 
   uint32_t num_vertices() const { return front_.num_vertices(); }
   std::vector<uint32_t> TakeOpposite() { return front_.TakeOpposite(nt_); }
+  std::vector<uint32_t> TakeOppositeVertices() { return front_.TakeOppositeVertices(nt_); }
   const ArithmeticDecoder& decoder() const { return dec_; }
 
  private:
@@ -146,12 +147,13 @@ class Decoder {
 
 Status DecodeConnectivity(ArithmeticDecoder* dec, size_t num_triangles, size_t max_vertices,
                           std::vector<uint32_t>* triangles, uint32_t* num_vertices,
-                          std::vector<uint32_t>* opposite) {
+                          std::vector<uint32_t>* opposite, std::vector<uint32_t>* opposite_vertices) {
   Decoder d(dec, num_triangles, max_vertices, triangles);
   const Status s = d.Run();
   *dec = d.decoder();
   *num_vertices = d.num_vertices();
   if (s == Status::kOk && opposite) *opposite = d.TakeOpposite();
+  if (s == Status::kOk && opposite_vertices) *opposite_vertices = d.TakeOppositeVertices();
   return s;
 }
 

@@ -12,10 +12,12 @@ namespace o3dgc {
 
 // Decodes exactly `num_triangles` triangles using at most `max_vertices` vertices. On success
 // `triangles` holds 3 * num_triangles ids < *num_vertices, every vertex referenced, and
-// `opposite` (if not null) the neighbours found by the traversal (see Front::TakeOpposite).
+// `opposite` and `opposite_vertices` (if not null) the neighbours found by the traversal (see
+// Front::TakeOpposite and TakeOppositeVertices).
 Status DecodeConnectivity(ArithmeticDecoder* dec, size_t num_triangles, size_t max_vertices,
                           std::vector<uint32_t>* triangles, uint32_t* num_vertices,
-                          std::vector<uint32_t>* opposite = nullptr);
+                          std::vector<uint32_t>* opposite = nullptr,
+                          std::vector<uint32_t>* opposite_vertices = nullptr);
 
 }  // namespace o3dgc
 

@@ -147,6 +147,7 @@ class Encoder {
       out_.source.push_back(t);
     }
     out_.opposite = front_.TakeOpposite(nt_);
+    out_.opposite_vertices = front_.TakeOppositeVertices(nt_);
   }
 
  private:

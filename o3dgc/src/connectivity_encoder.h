@@ -21,6 +21,7 @@ struct ConnectivityEncoding {
   std::vector<uint32_t> source;      // input triangle of each decoded triangle
   std::vector<uint32_t> old_of_new;  // input vertex of each new vertex id
   std::vector<uint32_t> opposite;    // neighbours found by the traversal (see Front::TakeOpposite)
+  std::vector<uint32_t> opposite_vertices;  // their opposite vertices (Front::TakeOppositeVertices)
 };
 
 // `triangles`: 3 * num_triangles vertex ids < num_vertices, every vertex referenced at least once.

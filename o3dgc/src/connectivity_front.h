@@ -43,6 +43,7 @@ class Front {
   struct Gate {
     uint32_t a, b;
     uint32_t edge;  // triangle * 4 + slot of the decoded triangle this gate is an edge of
+    uint32_t apex;  // that triangle's vertex opposite the gate (at the slot)
     int32_t next_out, next_in;
   };
   static constexpr uint32_t kNoEdge = 0xFFFFFFFFu;
@@ -54,6 +55,7 @@ class Front {
     GrowVertices(vertices < 16 ? 16 : vertices);
     GrowGates(3 * triangles + 3);
     opp_.assign(3 * triangles, kNoEdge);
+    oppv_.assign(3 * triangles, kNoEdge);
   }
   uint32_t AddVertex() {
     if (num_vertices_ == vertex_capacity_) GrowVertices(2 * vertex_capacity_ + 16);
@@ -110,7 +112,8 @@ class Front {
   // Only the kMaxScan newest open gates leaving v are searched, so a vertex with very many open
   // gates (hostile streams, pathological meshes) cannot make coding quadratic; the encoder and the
   // decoder apply the same rule.
-  void AddHalfEdge(uint32_t u, uint32_t v, uint32_t edge) {
+  // `apex`: the new triangle's vertex opposite the edge.
+  void AddHalfEdge(uint32_t u, uint32_t v, uint32_t edge, uint32_t apex) {
     int32_t prev = -1;
     int scanned = 0;
     for (int32_t g = head_out_[v]; g >= 0 && scanned < kMaxScan;) {
@@ -123,7 +126,7 @@ class Front {
           gates_[prev].next_out = next;
         }
       } else if (x.b == u) {
-        Link(edge, x.edge);
+        Link(edge, apex, x.edge, x.apex);
         open_[g] = 0;
         return;
       } else {
@@ -134,7 +137,7 @@ class Front {
     }
     if (num_gates_ == gate_capacity_) GrowGates(2 * gate_capacity_ + 16);
     const int32_t id = int32_t(num_gates_++);
-    gates_[id] = Gate{u, v, edge, head_out_[u], head_in_[v]};
+    gates_[id] = Gate{u, v, edge, apex, head_out_[u], head_in_[v]};
     open_[id] = 1;
     head_out_[u] = id;
     head_in_[v] = id;
@@ -146,20 +149,20 @@ class Front {
     ++deg_[x];
     ++deg_[y];
     ++deg_[z];
-    AddHalfEdge(x, y, tri * 4 + 2);
-    AddHalfEdge(y, z, tri * 4 + 0);
-    AddHalfEdge(z, x, tri * 4 + 1);
+    AddHalfEdge(x, y, tri * 4 + 2, z);
+    AddHalfEdge(y, z, tri * 4 + 0, x);
+    AddHalfEdge(z, x, tri * 4 + 1, y);
   }
   // Attaches triangle `tri` across the gate g = a->b; it is emitted as (b, a, c), or as (a, b, c)
   // when `flipped`.
   void Attach(int32_t g, uint32_t tri, uint32_t a, uint32_t b, uint32_t c, bool flipped) {
-    Link(tri * 4 + 2, gates_[g].edge);
+    Link(tri * 4 + 2, c, gates_[g].edge, gates_[g].apex);
     open_[g] = 0;
     ++deg_[a];
     ++deg_[b];
     ++deg_[c];
-    AddHalfEdge(a, c, tri * 4 + (flipped ? 1 : 0));
-    AddHalfEdge(c, b, tri * 4 + (flipped ? 0 : 1));
+    AddHalfEdge(a, c, tri * 4 + (flipped ? 1 : 0), b);
+    AddHalfEdge(c, b, tri * 4 + (flipped ? 0 : 1), a);
   }
   // Neighbour relation found while coding: for triangle t and slot k (the edge opposite corner k),
   // opposite()[3t+k] is the neighbour's triangle * 4 + slot, or kNoEdge. Sized for `triangles`.
@@ -167,13 +170,26 @@ class Front {
     opp_.resize(3 * triangles, kNoEdge);
     return std::move(opp_);
   }
+  // The same as vertices: the neighbour's vertex opposite the shared edge, or kNoEdge.
+  std::vector<uint32_t> TakeOppositeVertices(size_t triangles) {
+    oppv_.resize(3 * triangles, kNoEdge);
+    return std::move(oppv_);
+  }
 
  private:
-  void Link(uint32_t e1, uint32_t e2) {
+  // Edges e1 and e2 (with opposite vertices v1 and v2 in their triangles) are neighbours.
+  void Link(uint32_t e1, uint32_t v1, uint32_t e2, uint32_t v2) {
     const size_t need = 3 * size_t((e1 > e2 ? e1 : e2) / 4 + 1);
-    if (opp_.size() < need) opp_.resize(need > 2 * opp_.size() ? need : 2 * opp_.size(), kNoEdge);
-    opp_[3 * size_t(e1 / 4) + e1 % 4] = e2;
-    opp_[3 * size_t(e2 / 4) + e2 % 4] = e1;
+    if (opp_.size() < need) {
+      const size_t size = need > 2 * opp_.size() ? need : 2 * opp_.size();
+      opp_.resize(size, kNoEdge);
+      oppv_.resize(size, kNoEdge);
+    }
+    const size_t i1 = 3 * size_t(e1 / 4) + e1 % 4, i2 = 3 * size_t(e2 / 4) + e2 % 4;
+    opp_[i1] = e2;
+    opp_[i2] = e1;
+    oppv_[i1] = v2;
+    oppv_[i2] = v1;
   }
   template <typename T>
   static void Grow(std::unique_ptr<T[]>* a, size_t used, size_t capacity) {
@@ -203,7 +219,7 @@ class Front {
   std::unique_ptr<uint32_t[]> deg_;
   uint32_t num_vertices_ = 0;
   size_t vertex_capacity_ = 0;
-  std::vector<uint32_t> opp_;
+  std::vector<uint32_t> opp_, oppv_;
 };
 
 }  // namespace o3dgc

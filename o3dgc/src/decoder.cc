@@ -52,9 +52,12 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
   size_t mark = dec.BytesConsumed();
 
   // Connectivity.
-  std::vector<uint32_t> tris, opposite;
+  std::vector<uint32_t> tris, opposite, opposite_vertices;
   uint32_t nc = 0;
-  if ((s = DecodeConnectivity(&dec, nt, nv, &tris, &nc, &opposite)) != Status::kOk) return s;
+  if ((s = DecodeConnectivity(&dec, nt, nv, &tris, &nc, &opposite, &opposite_vertices)) !=
+      Status::kOk) {
+    return s;
+  }
 
   // Seams.
   std::unique_ptr<SideModels> sm(new SideModels);
@@ -150,7 +153,9 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
   std::vector<int32_t> qpos;
   {
     WedgeTable wedges;
-    if (h.position.prediction == Prediction::kParallelogram) wedges.Build(tris, nw, opposite, false);
+    if (h.position.prediction == Prediction::kParallelogram) {
+      wedges.BuildFromOppositeVertices(tris, nw, opposite_vertices);
+    }
     if ((s = DecodeQuantized(&dec, &wedges, nw, 3, h.position.bits, h.position.prediction, &qpos)) !=
         Status::kOk) {
       return s;

@@ -287,7 +287,7 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
   {
     WedgeTable wedges;
     if (h.position.prediction == Prediction::kParallelogram) {
-      wedges.Build(conn.triangles, nw, conn.opposite, false);
+      wedges.BuildFromOppositeVertices(conn.triangles, nw, conn.opposite_vertices);
     }
     EncodeQuantized(&enc, &wedges, qpos, 3, h.position.bits, h.position.prediction);
   }

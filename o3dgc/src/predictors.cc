@@ -27,11 +27,7 @@ void MeshAdjacency::Build(const std::vector<uint32_t>& triangles, uint32_t num_v
   }
 }
 
-void WedgeTable::Build(const std::vector<uint32_t>& triangles, uint32_t num_vertices,
-                       const std::vector<uint32_t>& opposite, bool verify) {
-  const size_t nt = triangles.size() / 3;
-  const uint32_t* tri = triangles.data();
-  const uint32_t* opp = opposite.size() >= 3 * nt ? opposite.data() : nullptr;
+void WedgeTable::Count(const uint32_t* tri, size_t nt, uint32_t num_vertices) {
   start_.assign(size_t(num_vertices) + 2, 0);
   uint32_t* start = start_.data() + 1;  // counts at start[v + 1], then fill positions at start[v]
   for (size_t t = 0; t < nt; ++t) {
@@ -43,6 +39,15 @@ void WedgeTable::Build(const std::vector<uint32_t>& triangles, uint32_t num_vert
   }
   for (uint32_t v = 0; v < num_vertices; ++v) start[v + 1] += start[v];
   wedges_.resize(start[num_vertices]);
+}
+
+void WedgeTable::Build(const std::vector<uint32_t>& triangles, uint32_t num_vertices,
+                       const std::vector<uint32_t>& opposite, bool verify) {
+  const size_t nt = triangles.size() / 3;
+  const uint32_t* tri = triangles.data();
+  const uint32_t* opp = opposite.size() >= 3 * nt ? opposite.data() : nullptr;
+  Count(tri, nt, num_vertices);
+  uint32_t* start = start_.data() + 1;
   Wedge* out = wedges_.data();
   static constexpr uint8_t kNext[3] = {1, 2, 0}, kPrev[3] = {2, 0, 1};
   for (size_t t = 0; t < nt; ++t) {
@@ -69,9 +74,56 @@ void WedgeTable::Build(const std::vector<uint32_t>& triangles, uint32_t num_vert
   start_.pop_back();  // start[v] advanced to the end of v's wedges: start_[v + 1] now
 }
 
+void WedgeTable::BuildFromOppositeVertices(const std::vector<uint32_t>& triangles,
+                                           uint32_t num_vertices,
+                                           const std::vector<uint32_t>& opposite_vertices) {
+  const size_t nt = triangles.size() / 3;
+  const uint32_t* tri = triangles.data();
+  const uint32_t* oppv = opposite_vertices.size() >= 3 * nt ? opposite_vertices.data() : nullptr;
+  Count(tri, nt, num_vertices);
+  uint32_t* start = start_.data() + 1;
+  Wedge* out = wedges_.data();
+  for (size_t t = 0; t < nt; ++t) {
+    const uint32_t* v = tri + 3 * t;
+    if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) continue;
+    uint32_t x[3] = {v[0], v[1], v[2]};  // no neighbour: the vertex itself
+    if (oppv) {
+      for (int j = 0; j < 3; ++j) x[j] = oppv[3 * t + j] != 0xFFFFFFFFu ? oppv[3 * t + j] : v[j];
+    }
+    out[start[v[0]]++] = Wedge{v[1], v[2], x[0]};
+    out[start[v[1]]++] = Wedge{v[2], v[0], x[1]};
+    out[start[v[2]]++] = Wedge{v[0], v[1], x[2]};
+  }
+  start_.pop_back();
+}
+
 DegreeTraversal::DegreeTraversal(const WedgeTable& wedges)
     : wedges_(wedges), done_(wedges.num_vertices(), 0), degree_(wedges.num_vertices(), 0) {
-  for (int l = 0; l < kLevels; ++l) stacks_[l].resize(256);
+  stacks_[0].resize(1);
+  for (int l = 1; l < kLevels; ++l) stacks_[l].resize(256);
+  log_.reserve(wedges.num_vertices());
+}
+
+uint32_t DegreeTraversal::NextWithoutParallelogram() {
+  // The level-0 stack would hold, for every visit in order, w then u of each wedge whose u and w
+  // were both uncoded then; it is taken from the top, stale entries skipped. A vertex uncoded and
+  // without parallelogram now had both uncoded at every visit next to it (else it would have
+  // gained a parallelogram), so walking the logged visits newest first, their wedges last first,
+  // u before w, and taking the first such vertex gives the same sequence.
+  while (!log_.empty()) {
+    Visited& v = log_.back();
+    const Wedge* const first = wedges_.begin(v.vertex);
+    const uint32_t entries = 2 * uint32_t(wedges_.end(v.vertex) - first);
+    while (v.searched < entries) {
+      const Wedge& w = first[(entries - 1 - v.searched) / 2];
+      const uint32_t candidate = (v.searched & 1) ? w.w : w.u;
+      ++v.searched;
+      if (!done_[candidate] && degree_[candidate] == 0) return candidate;
+    }
+    log_.pop_back();
+  }
+  while (done_[next_start_]) ++next_start_;
+  return next_start_;
 }
 
 PredictionContext PredictParallelogram(const WedgeTable& wedges, const uint8_t* done, uint32_t c,

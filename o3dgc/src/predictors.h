@@ -43,11 +43,17 @@ class WedgeTable {
   // when attribute seams split edges; the connectivity coder's neighbours always share them).
   void Build(const std::vector<uint32_t>& triangles, uint32_t num_vertices,
              const std::vector<uint32_t>& opposite, bool verify);
+  // For the mesh the connectivity coder numbered: `opposite_vertices` (3 per triangle, see
+  // Front::TakeOppositeVertices) gives x directly.
+  void BuildFromOppositeVertices(const std::vector<uint32_t>& triangles, uint32_t num_vertices,
+                                 const std::vector<uint32_t>& opposite_vertices);
   const Wedge* begin(uint32_t v) const { return wedges_.data() + start_[v]; }
   const Wedge* end(uint32_t v) const { return wedges_.data() + start_[v + 1]; }
   uint32_t num_vertices() const { return uint32_t(start_.size() - 1); }
 
  private:
+  // Counts wedges per vertex into start_ (start_[v + 2]) and sizes wedges_.
+  void Count(const uint32_t* tri, size_t nt, uint32_t num_vertices);
   std::vector<uint32_t> start_;
   std::vector<Wedge> wedges_;
 };
@@ -77,11 +83,21 @@ class DegreeTraversal {
 
  private:
   static constexpr int kLevels = 4;
+  uint32_t NextWithoutParallelogram();
   const WedgeTable& wedges_;
   std::vector<uint8_t> done_;
   std::vector<uint32_t> degree_;
-  std::vector<uint32_t> stacks_[kLevels];  // candidates per level; top_ entries are in use
+  // Candidates at levels 1..3 (entry 0 is scratch space for the branch-free pushes), top_ in use.
+  std::vector<uint32_t> stacks_[kLevels];
   size_t top_[kLevels] = {0, 0, 0, 0};
+  // Level 0 holds the neighbours of visited vertices that have no parallelogram yet, newest
+  // first; it is only needed when levels 1..3 are empty, so instead of pushing them at every
+  // visit, the visits are logged and their wedges searched on demand (see NextWithoutParallelogram).
+  struct Visited {
+    uint32_t vertex;
+    uint32_t searched;  // entries (wedges * 2, from the last one) already taken
+  };
+  std::vector<Visited> log_;
   std::vector<const Wedge*> par_;
   uint32_t visited_ = 0, next_start_ = 0, previous_ = kNoVertex;
 };
@@ -137,35 +153,31 @@ void OctEncode(const double n[3], double* u, double* v);
 void OctDecode(double u, double v, double n[3]);
 
 inline uint32_t DegreeTraversal::Next() {
-  const uint32_t n = wedges_.num_vertices();
-  if (visited_ >= n) return kNoVertex;
-  for (;;) {
-    int level = kLevels - 1;
-    while (level >= 0 && top_[level] == 0) --level;
-    if (level < 0) {
-      while (done_[next_start_]) ++next_start_;
-      return next_start_;
+  if (visited_ >= wedges_.num_vertices()) return kNoVertex;
+  for (int level = kLevels - 1; level > 0; --level) {
+    uint32_t* const stack = stacks_[level].data();
+    while (top_[level] > 0) {
+      const uint32_t c = stack[--top_[level]];
+      const uint32_t d = degree_[c];
+      // Stale entries: coded meanwhile, or a newer entry sits at the vertex's current level.
+      if (done_[c] || (d < kLevels ? int(d) : kLevels - 1) != level) continue;
+      return c;
     }
-    const uint32_t c = stacks_[level][--top_[level]];
-    const uint32_t d = degree_[c];
-    // Stale entries: coded meanwhile, or a newer entry sits at the vertex's current level.
-    if (done_[c] || (d < kLevels ? int(d) : kLevels - 1) != level) continue;
-    return c;
   }
+  return NextWithoutParallelogram();
 }
 
 inline int DegreeTraversal::Visit(uint32_t c) {
   const Wedge* const first = wedges_.begin(c);
   const Wedge* const last = wedges_.end(c);
-  // At most two entries per wedge: make room first, then push without checks.
+  // At most one entry per wedge: make room first, then push without checks.
   const size_t count = size_t(last - first);
-  for (int l = 0; l < kLevels; ++l) {
-    if (top_[l] + 2 * count > stacks_[l].size()) stacks_[l].resize(2 * (top_[l] + 2 * count));
+  for (int l = 1; l < kLevels; ++l) {
+    if (top_[l] + count > stacks_[l].size()) stacks_[l].resize(2 * (top_[l] + count));
   }
   if (count > par_.size()) par_.resize(2 * count);
-  uint32_t* stack[kLevels];
-  for (int l = 0; l < kLevels; ++l) stack[l] = stacks_[l].data();
-  size_t top[kLevels] = {top_[0], top_[1], top_[2], top_[3]};
+  uint32_t* slot[kLevels] = {stacks_[0].data(), stacks_[1].data() + top_[1],
+                             stacks_[2].data() + top_[2], stacks_[3].data() + top_[3]};
   const Wedge** par = par_.data();
   int n_par = 0;
   const uint8_t* const done = done_.data();
@@ -176,20 +188,20 @@ inline int DegreeTraversal::Visit(uint32_t c) {
     const uint32_t du = done[u], dw = done[w];
     par[n_par] = it;
     n_par += int(du & dw & done[it->x]);
-    // Exactly one of u, w coded: the other gains a parallelogram and moves up a level. Neither
-    // coded: both become candidates at level 0 (w pushed first). Written without branches: the
-    // slots are always written, the stack tops advance only when the entry is real.
-    const uint32_t one = du ^ dw, none = (du | dw) ^ 1;
+    // Exactly one of u, w coded: the other gains a parallelogram and moves up a level. Written
+    // without branches: a slot is always written (level 0 is scratch), and advances only when
+    // the entry is real.
+    const uint32_t one = du ^ dw;
     const uint32_t a = du ? w : u;
     const uint32_t d = degree[a] + one;
     degree[a] = d;
-    const int level = int(one) * (d < kLevels ? int(d) : kLevels - 1);
-    stack[level][top[level]] = one ? a : w;
-    top[level] += one | none;
-    stack[0][top[0]] = u;
-    top[0] += none;
+    const int level = int((d < kLevels ? d : kLevels - 1) & (0u - one));
+    uint32_t* const s = slot[level];
+    *s = a;
+    slot[level] = s + one;
   }
-  for (int l = 0; l < kLevels; ++l) top_[l] = top[l];
+  for (int l = 1; l < kLevels; ++l) top_[l] = size_t(slot[l] - stacks_[l].data());
+  log_.push_back(Visited{c, 0});
   done_[c] = 1;
   ++visited_;
   previous_ = c;
