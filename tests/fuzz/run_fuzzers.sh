@@ -2,7 +2,7 @@
 # Builds the libFuzzer targets with clang (ASan+UBSan) and runs each for a fixed time from its seed
 # corpus. Any crash, leak, sanitizer report or timeout fails the run; the reproducer is kept in
 # build-fuzz/artifacts/ so it can become a regression test.
-# usage: tests/fuzz/run_fuzzers.sh [SECONDS_PER_TARGET]   (default: $HULLPACK_FUZZ_SECONDS or 60)
+# usage: tests/fuzz/run_fuzzers.sh [SECONDS_PER_TARGET|seeds]   (default: $HULLPACK_FUZZ_SECONDS or 60)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 seconds=${1:-${HULLPACK_FUZZ_SECONDS:-60}}
@@ -15,18 +15,30 @@ if [ ! -f "$build/CMakeCache.txt" ]; then
   CC=clang CXX=clang++ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DHULLPACK_FUZZ=ON -DHULLPACK_BUILD_TESTS=OFF >/dev/null
 fi
-cmake --build "$build" -j "$(nproc)" >/dev/null
+targets=(o3dgc_decoder_fuzzer packed_glb_fuzzer obj_reader_fuzzer off_reader_fuzzer wrl_reader_fuzzer)
+# Only the fuzzers and the two programs that make the seeds (not every tool of the fuzz build).
+cmake --build "$build" -j "$(nproc)" --target "${targets[@]}" test_o3dgc hullpack >/dev/null
 mkdir -p "$build/artifacts"
 # Seeds for the binary formats come from this build's own encoder, so they follow the stream format.
 gen=$build/generated-seeds
 mkdir -p "$gen/o3dgc_decoder_fuzzer" "$gen/packed_glb_fuzzer"
 cp samples/torus.obj "$gen/torus.obj"
-"$build/tools/test_o3dgc/test_o3dgc" -c -i "$gen/torus.obj" -st binary -qc 8 >/dev/null && mv "$gen/torus.s3d" "$gen/o3dgc_decoder_fuzzer/binary.s3d"
-"$build/tools/test_o3dgc/test_o3dgc" -c -i "$gen/torus.obj" -st ascii -qc 8 >/dev/null && mv "$gen/torus.s3d" "$gen/o3dgc_decoder_fuzzer/ascii.s3d"
-"$build/tools/hullpack/hullpack" pack "$gen/torus.obj" -o "$gen/packed_glb_fuzzer/hulls.glb" --force --quiet --max-error 0.01 --resolution 10000 >/dev/null
-"$build/tools/hullpack/hullpack" pack "$gen/torus.obj" -o "$gen/packed_glb_fuzzer/fallback.glb" --force --quiet --hulls none --fallback --max-error 0.01 >/dev/null
+cp tests/fuzz/seeds/obj_reader_fuzzer/tetra.obj "$gen/tetra.obj"
+enc="$build/tools/test_o3dgc/test_o3dgc"
+pack() { "$build/tools/hullpack/hullpack" pack "$gen/tetra.obj" --force --quiet --resolution 10000 "$@" >/dev/null; }
+# The torus exercises the connectivity coder; the tetrahedron (groups, UVs, normals) keeps inputs small.
+"$enc" -c -i "$gen/torus.obj" -st binary -qc 8 >/dev/null && mv "$gen/torus.s3d" "$gen/o3dgc_decoder_fuzzer/binary.s3d"
+"$enc" -c -i "$gen/torus.obj" -st ascii -qc 8 >/dev/null && mv "$gen/torus.s3d" "$gen/o3dgc_decoder_fuzzer/ascii.s3d"
+"$enc" -c -i "$gen/tetra.obj" -st binary -qc 10 -keep >/dev/null && mv "$gen/tetra.s3d" "$gen/o3dgc_decoder_fuzzer/tetra_keep.s3d"
+"$enc" -c -i "$gen/tetra.obj" -st ascii -qc 10 >/dev/null && mv "$gen/tetra.s3d" "$gen/o3dgc_decoder_fuzzer/tetra_ascii.s3d"
+# Packed GLBs stay small (a few KB): the fuzzer's speed is set by the JSON text it scans.
+rm -f "$gen/packed_glb_fuzzer/"*.glb
+pack -o "$gen/packed_glb_fuzzer/hulls.glb" --max-hulls 2
+pack -o "$gen/packed_glb_fuzzer/khr_ascii.glb" --max-hulls 1 --physics khr --ascii
+pack -o "$gen/packed_glb_fuzzer/fallback.glb" --hulls none --fallback --keep-order
+[ "$seconds" = seeds ] && exit 0  # build and make the seeds only (what tests/fuzz/campaign.sh needs)
 status=0
-for target in $(ls "$build/tools/fuzz/" | grep '_fuzzer$'); do
+for target in "${targets[@]}"; do
   seeds=()
   for dir in "tests/fuzz/seeds/$target" "$gen/$target"; do [ -d "$dir" ] && seeds+=("$dir"); done
   corpus=$build/corpus/$target
