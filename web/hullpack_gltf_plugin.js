@@ -1,7 +1,8 @@
 // hullpack_gltf_plugin.js: three.js GLTFLoader plugin for hullpack's packed GLB (docs/packed-gltf.md):
 //  - HULLPACK_mesh_compression: primitives whose attributes and indices come from an o3dgc stream;
-//  - OMI_physics_shape / OMI_physics_body: convex collision hulls, exposed as data in
-//    gltf.userData.hullpackHulls and as hidden wireframe meshes under their collider nodes.
+//  - OMI_physics_shape / OMI_physics_body (or the KHR_physics_rigid_bodies draft): convex collision
+//    hulls, exposed as data in gltf.userData.hullpackHulls and as hidden wireframe meshes under
+//    their collider nodes.
 //
 //   import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 //   import { createDecoder } from './hullpack_decoder.js';
@@ -138,19 +139,34 @@ export class HullpackMeshCompressionPlugin {
     }
   }
 
-  // Collision hulls: gltf.userData.hullpackHulls = [{nodeIndex, node, shapeIndex, meshIndex,
+  // Collision hulls: gltf.userData.hullpackHulls = [{nodeIndex, node, shapeIndex, meshIndex, type,
   // positions: Float32Array, indices: Uint32Array, mesh}], each mesh a hidden wireframe child of its
-  // collider node (toggle with setHullsVisible).
+  // collider node (toggle with setHullsVisible). Colliders come in either form `hullpack pack`
+  // writes (docs/packed-gltf.md): OMI_physics_body -> OMI_physics_shape convex/trimesh shapes, or
+  // the KHR_physics_rigid_bodies draft's mesh geometry (convexHull true -> type 'convex');
+  // shapeIndex is undefined for the latter.
   async afterRoot(gltf) {
     const json = this.parser.json;
     const shapes = json.extensions?.OMI_physics_shape?.shapes || [];
     const hulls = [];
     const nodes = json.nodes || [];
     for (let n = 0; n < nodes.length; ++n) {
-      const collider = nodes[n].extensions?.OMI_physics_body?.collider;
-      if (!collider || collider.shape === undefined) continue;
-      const shape = shapes[collider.shape];
-      const meshIndex = shape?.type === 'convex' ? shape.convex?.mesh : shape?.type === 'trimesh' ? shape.trimesh?.mesh : undefined;
+      const omi = nodes[n].extensions?.OMI_physics_body?.collider;
+      const khr = nodes[n].extensions?.KHR_physics_rigid_bodies?.collider?.geometry;
+      let meshIndex;
+      let type;
+      let shapeIndex;
+      if (omi && omi.shape !== undefined) {
+        const shape = shapes[omi.shape];
+        shapeIndex = omi.shape;
+        type = shape?.type;
+        meshIndex = type === 'convex' ? shape.convex?.mesh : type === 'trimesh' ? shape.trimesh?.mesh : undefined;
+      } else if (khr && khr.mesh !== undefined) {
+        meshIndex = khr.mesh;
+        type = khr.convexHull ? 'convex' : 'trimesh';
+      } else {
+        continue;
+      }
       const meshDef = json.meshes?.[meshIndex];
       if (!meshDef || !meshDef.primitives?.length) continue;
       const prim = meshDef.primitives[0];
@@ -179,7 +195,7 @@ export class HullpackMeshCompressionPlugin {
       group.visible = false;
       group.userData.hullpackHull = true;
       node.add(group);
-      hulls.push({ nodeIndex: n, node, shapeIndex: collider.shape, meshIndex, type: shape.type, positions, indices, mesh: group });
+      hulls.push({ nodeIndex: n, node, shapeIndex, meshIndex, type, positions, indices, mesh: group });
     }
     gltf.userData.hullpackHulls = hulls;
     gltf.userData.hullpackStats = { ...this.stats };

@@ -156,13 +156,23 @@ try {
   check(info2.vertices === r.vertices && info2.triangles === r.triangles, `viewer stream+worker ${info2.vertices}/${info2.triangles}`);
   await page2.screenshot({ path: path.join(work, 'viewer_stream.png') });
 
-  // 4. A GLB written by `hullpack pack` (once it exists): the figures its accessors state (count,
-  // min/max of the decoded data, per docs/packed-gltf.md) must be what the browser decodes.
-  const packed = path.join(work, 'packed.glb');
-  if (fs.existsSync(packed)) {
-    const glb = fs.readFileSync(packed);
+  // 4. GLBs written by `hullpack pack` (both collider forms): the figures their accessors state
+  // (count, min/max of the decoded data, per docs/packed-gltf.md) must be what the browser decodes,
+  // with one hull per collider node.
+  const packedFiles = ['packed.glb', 'packed_khr.glb'].filter((f) => fs.existsSync(path.join(work, f)));
+  for (const file of packedFiles) {
+    const glb = fs.readFileSync(path.join(work, file));
     const doc = JSON.parse(glb.subarray(20, 20 + glb.readUInt32LE(12)).toString('utf8'));
-    const hullMeshes = new Set((doc.extensions?.OMI_physics_shape?.shapes || []).map((s) => s.convex?.mesh ?? s.trimesh?.mesh));
+    const colliderMesh = (n) => {
+      const omi = n.extensions?.OMI_physics_body?.collider;
+      if (omi?.shape !== undefined) {
+        const s = doc.extensions?.OMI_physics_shape?.shapes?.[omi.shape];
+        return s?.convex?.mesh ?? s?.trimesh?.mesh;
+      }
+      return n.extensions?.KHR_physics_rigid_bodies?.collider?.geometry?.mesh;
+    };
+    const colliderNodes = (doc.nodes || []).filter((n) => colliderMesh(n) !== undefined);
+    const hullMeshes = new Set(colliderNodes.map(colliderMesh));
     let nv = 0;
     let nt = 0;
     for (const node of doc.nodes || []) {
@@ -172,17 +182,22 @@ try {
         nt += prim.indices !== undefined ? doc.accessors[prim.indices].count / 3 : doc.accessors[prim.attributes.POSITION].count / 3;
       }
     }
-    const colliders = (doc.nodes || []).filter((n) => n.extensions?.OMI_physics_body?.collider?.shape !== undefined).length;
     const page3 = await context.newPage();
     page3.on('pageerror', (e) => errors.push(String(e)));
-    await page3.goto(`${url}/samples/web/index.html?glb=/__work/packed.glb&hulls=1`);
+    await page3.goto(`${url}/samples/web/index.html?glb=/__work/${file}&hulls=1`);
     const info3 = await page3.evaluate(() => window.hullpackViewer.ready);
-    check(info3.vertices === nv && info3.triangles === nt, `hullpack pack GLB: ${info3.vertices}/${info3.triangles} == accessors ${nv}/${nt}`);
-    check(info3.hulls.length === colliders, `hullpack pack GLB: ${info3.hulls.length} hulls == ${colliders} colliders`);
-    await page3.screenshot({ path: path.join(work, 'viewer_packed.png') });
-  } else {
-    console.log('note: no packed.glb (hullpack pack not available yet); checked the make_glb.mjs GLB only');
+    check(info3.vertices === nv && info3.triangles === nt, `hullpack pack ${file}: ${info3.vertices}/${info3.triangles} == accessors ${nv}/${nt}`);
+    check(colliderNodes.length > 0 && info3.hulls.length === colliderNodes.length,
+      `hullpack pack ${file}: ${info3.hulls.length} hulls == ${colliderNodes.length} collider nodes`);
+    // Each hull: the counts its accessors state.
+    const hullOk = info3.hulls.every((h, k) => {
+      const prim = doc.meshes[colliderMesh(colliderNodes[k])].primitives[0];
+      return h.vertices === doc.accessors[prim.attributes.POSITION].count && h.triangles === doc.accessors[prim.indices].count / 3;
+    });
+    check(hullOk, `hullpack pack ${file}: every hull has its accessors' vertex and triangle counts`);
+    await page3.screenshot({ path: path.join(work, file.replace(/\.glb$/, '.png')) });
   }
+  if (!packedFiles.length) console.log('note: no packed.glb (hullpack pack not available); checked the make_glb.mjs GLB only');
 
   check(errors.length === 0, `no page errors${errors.length ? `: ${errors.join(' | ')}` : ''}`);
 } catch (e) {

@@ -1,0 +1,75 @@
+// bench_cpu.mjs: the decode benchmark of bench.mjs in Node instead of a browser (the same V8 and
+// wasm), timed in CPU time of the process (process.cpuUsage) rather than wall time, so that other
+// work on a shared machine disturbs it far less. Node runs single-threaded (V8's background
+// compilation and GC on the timed thread) with TurboFan only, so every timed run is optimized code.
+//
+//   node --single-threaded --no-liftoff tests/web/bench_cpu.mjs [--meshes igea] [--runs 15]
+//        [--warmup 3] [--wasm DIR[,DIR2]] [same stream options as bench.mjs]
+//
+// --wasm: folders holding hullpack_decoder_wasm.{js,wasm} (default samples/web/dist). Draco is
+// three's copy of its official WASM decoder, driven by web/bench_draco.js as in the browser.
+import fs from 'node:fs';
+import { createRequire } from 'node:module';
+import path from 'node:path';
+import { pathToFileURL } from 'node:url';
+import { fmt as f, median, parseArgs, prepareStreams, repo } from './bench_streams.mjs';
+
+const a = parseArgs(process.argv);
+const runs = Number(a.runs || 15);
+const warmup = Number(a.warmup || 3);
+// The emscripten glue is built for web and worker only: look like a worker to it (wasmBinary is
+// passed, so nothing is fetched). Draco's wrapper wants CommonJS globals.
+globalThis.self = globalThis;
+globalThis.importScripts = () => {};
+globalThis.location = { href: pathToFileURL(`${repo}/`).href };
+globalThis.require = createRequire(import.meta.url);
+globalThis.__dirname = repo;
+
+const { decoderFromModule } = await import(pathToFileURL(path.join(repo, 'web/hullpack_decoder.js')).href);
+const decoders = [];
+const dirs = (a.wasm || 'samples/web/dist').split(',').map((d) => path.resolve(repo, d));
+for (const d of dirs) {
+  const { default: factory } = await import(`${pathToFileURL(path.join(d, 'hullpack_decoder_wasm.js')).href}?${decoders.length}`);
+  const M = await factory({ wasmBinary: fs.readFileSync(path.join(d, 'hullpack_decoder_wasm.wasm')) });
+  const dec = decoderFromModule(M);
+  const name = dirs.length === 1 ? 'hullpack' : `hullpack[${path.basename(d)}]`;
+  decoders.push({ name, stream: 's3d', decode: (b) => { const m = dec.decode(b); return [m.numVertices, m.numTriangles]; } });
+}
+{
+  const dracoDir = path.join(repo, 'node_modules/three/examples/jsm/libs/draco');
+  // A classic script defining DracoDecoderModule, then web/bench_draco.js on the same global.
+  new Function(`${fs.readFileSync(path.join(dracoDir, 'draco_wasm_wrapper.js'), 'utf8')}\nself.DracoDecoderModule = DracoDecoderModule;`)();
+  new Function(fs.readFileSync(path.join(repo, 'web/bench_draco.js'), 'utf8'))();
+  const D = await self.hullpackBenchDracoModule(fs.readFileSync(path.join(dracoDir, 'draco_decoder.wasm')));
+  decoders.push({ name: 'draco', stream: 'drc', decode: (b) => { const m = self.hullpackBenchDracoDecode(D, b); return [m.numVertices, m.numTriangles]; } });
+}
+
+const { dir, list } = prepareStreams(a);
+console.log(`node ${process.version} (V8 ${process.versions.v8}); CPU ms per decode, median of ${runs} after ${warmup} warm-up, runs interleaved`);
+console.log('| mesh | triangles | decoder | bytes | CPU ms | wall ms | CPU / Draco |\n|---|---|---|---|---|---|---|');
+try {
+  for (const m of list) {
+    const bytes = { s3d: new Uint8Array(fs.readFileSync(path.join(dir, m.s3d))), drc: new Uint8Array(fs.readFileSync(path.join(dir, m.drc))) };
+    const rows = decoders.map((d) => ({ d, counts: d.decode(bytes[d.stream]), cpu: [], wall: [] }));
+    for (let i = 0; i < warmup; ++i) for (const r of rows) r.d.decode(bytes[r.d.stream]);
+    for (let k = 0; k < runs; ++k) {
+      for (let j = 0; j < rows.length; ++j) {
+        const r = rows[(j + k) % rows.length];
+        const c0 = process.cpuUsage();
+        const t0 = performance.now();
+        r.d.decode(bytes[r.d.stream]);
+        const c = process.cpuUsage(c0);
+        r.wall.push(performance.now() - t0);
+        r.cpu.push((c.user + c.system) / 1000);
+      }
+    }
+    const draco = median(rows[rows.length - 1].cpu);
+    for (const r of rows) {
+      const cpu = median(r.cpu);
+      console.log(`| ${m.name} | ${r.counts[1]} | ${r.d.name} | ${bytes[r.d.stream].length} | ${f(cpu)} | ${f(median(r.wall))} | ` +
+        `${r.d.name === 'draco' ? '' : (cpu / draco).toFixed(2)} |`);
+    }
+  }
+} finally {
+  fs.rmSync(dir, { recursive: true, force: true });
+}
