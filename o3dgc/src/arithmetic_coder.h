@@ -26,11 +26,17 @@
 #endif
 
 // Hot coder paths must inline into the coding loops, so that the coder's state can stay in
-// registers there.
+// registers there; rare paths stay out of line so that the hot ones stay small.
 #if defined(__GNUC__) || defined(__clang__)
 #define O3DGC_INLINE inline __attribute__((always_inline))
+#define O3DGC_NOINLINE __attribute__((noinline))
+#define O3DGC_LIKELY(x) __builtin_expect(!!(x), 1)
+#define O3DGC_UNLIKELY(x) __builtin_expect(!!(x), 0)
 #else
 #define O3DGC_INLINE inline
+#define O3DGC_NOINLINE
+#define O3DGC_LIKELY(x) (x)
+#define O3DGC_UNLIKELY(x) (x)
 #endif
 
 namespace o3dgc {
@@ -58,14 +64,19 @@ struct BitModel {
   // take the constant-shift path.
   static constexpr int kWarmUp = 40;
   O3DGC_INLINE void Update(int bit) {
-    const int32_t zero = bit - 1;
-    if (n >= kWarmUp) {
-      slow = uint16_t(Step(slow, zero, kSlowShift));
-      fast = uint16_t(Step(fast, zero, kFastShift));
+    if (O3DGC_UNLIKELY(n < kWarmUp)) {
+      WarmUpdate(bit);
       return;
     }
+    const int32_t zero = bit - 1;
+    slow = uint16_t(Step(slow, zero, kSlowShift));
+    fast = uint16_t(Step(fast, zero, kFastShift));
+  }
+  // The first kWarmUp updates, out of line so that the settled path stays small.
+  O3DGC_NOINLINE void WarmUpdate(int bit) {
     static constexpr uint8_t kSlow[kWarmUp] = {2, 2, 3, 3, 3, 4, 4, 4, 4, 4, 5, 5, 5, 5, 5, 5, 5, 5, 5, 5,
                                                6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6};
+    const int32_t zero = bit - 1;
     const int s = kSlow[n++];
     slow = uint16_t(Step(slow, zero, s));
     fast = uint16_t(Step(fast, zero, s < kFastShift ? s : kFastShift));
@@ -187,12 +198,9 @@ class ArithmeticEncoder {
 
   O3DGC_INLINE void Encode(int bit, BitModel& m) {
     const uint32_t bound = uint32_t((uint64_t(range_) * m.p0()) >> 16);
-    if (bit) {
-      low_ += bound;
-      range_ -= bound;
-    } else {
-      range_ = bound;
-    }
+    const uint32_t one = 0u - uint32_t(bit != 0);  // masks: the bits are unpredictable
+    low_ += bound & one;
+    range_ = bound ^ ((bound ^ (range_ - bound)) & one);
     m.Update(bit);
     Normalize();
   }
@@ -270,12 +278,12 @@ class ArithmeticDecoder {
     const uint32_t one = 0u - uint32_t(code_ >= bound);  // all ones for a 1
     code_ -= bound & one;
     range_ = bound ^ ((bound ^ (range_ - bound)) & one);  // range - bound for a 1, else bound
-    if (m.n >= BitModel::kWarmUp) {
+    if (O3DGC_LIKELY(m.n >= BitModel::kWarmUp)) {
       const int32_t zero = int32_t(~one);
       m.slow = uint16_t(BitModel::Step(slow, zero, BitModel::kSlowShift));
       m.fast = uint16_t(BitModel::Step(fast, zero, BitModel::kFastShift));
     } else {
-      m.Update(int(one & 1));
+      m.WarmUpdate(int(one & 1));
     }
     Normalize();
     return int(one & 1);

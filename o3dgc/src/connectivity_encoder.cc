@@ -34,11 +34,21 @@ class Encoder {
       successors.clear();
       for (uint32_t k = vt_start_[a]; k < vt_start_[a + 1]; ++k) {
         const uint32_t* v = &tris_[3 * size_t(vt_[k])];
-        const int j = v[0] == a ? 0 : (v[1] == a ? 1 : 2);
-        successors.push_back(v[(j + 1) % 3]);
+        // The corner after a, without branching on where a is.
+        successors.push_back((v[0] == a) * v[1] + (v[1] == a) * v[2] + (v[2] == a) * v[0]);
       }
-      std::sort(successors.begin(), successors.end());
-      has_flips_ = std::adjacent_find(successors.begin(), successors.end()) != successors.end();
+      const size_t n = successors.size();
+      if (n <= 16) {
+        // Few incident triangles (the usual case): compare every pair, no sort.
+        uint32_t repeated = 0;
+        for (size_t i = 1; i < n; ++i) {
+          for (size_t j = 0; j < i; ++j) repeated |= successors[i] == successors[j];
+        }
+        has_flips_ = repeated != 0;
+      } else {
+        std::sort(successors.begin(), successors.end());
+        has_flips_ = std::adjacent_find(successors.begin(), successors.end()) != successors.end();
+      }
     }
     enc_.EncodeBits(has_flips_ ? 1 : 0, 1);
     enc_.EncodeBits(has_copies_ ? 1 : 0, 1);
