@@ -31,21 +31,25 @@ class Encoder {
     has_flips_ = false;
     std::vector<uint32_t> successors;
     for (uint32_t a = 0; a < nv_in_ && !has_flips_; ++a) {
-      successors.clear();
-      for (uint32_t k = vt_start_[a]; k < vt_start_[a + 1]; ++k) {
-        const uint32_t* v = &tris_[3 * size_t(vt_[k])];
-        // The corner after a, without branching on where a is.
-        successors.push_back((v[0] == a) * v[1] + (v[1] == a) * v[2] + (v[2] == a) * v[0]);
-      }
-      const size_t n = successors.size();
+      const uint32_t n = vt_start_[a + 1] - vt_start_[a];
+      const uint32_t* list = vt_.data() + vt_start_[a];
+      // The corner after a in each incident triangle, without branching on where a is.
+      auto successor = [&](uint32_t k) {
+        const uint32_t* v = &tris_[3 * size_t(list[k])];
+        return (v[0] == a) * v[1] + (v[1] == a) * v[2] + (v[2] == a) * v[0];
+      };
       if (n <= 16) {
         // Few incident triangles (the usual case): compare every pair, no sort.
+        uint32_t s[16];
         uint32_t repeated = 0;
-        for (size_t i = 1; i < n; ++i) {
-          for (size_t j = 0; j < i; ++j) repeated |= successors[i] == successors[j];
+        for (uint32_t i = 0; i < n; ++i) {
+          s[i] = successor(i);
+          for (uint32_t j = 0; j < i; ++j) repeated |= s[i] == s[j];
         }
         has_flips_ = repeated != 0;
       } else {
+        successors.resize(n);
+        for (uint32_t i = 0; i < n; ++i) successors[i] = successor(i);
         std::sort(successors.begin(), successors.end());
         has_flips_ = std::adjacent_find(successors.begin(), successors.end()) != successors.end();
       }
