@@ -410,6 +410,43 @@ TEST_P(ModeTest, HullBudgetAndVertexLimitAreHonoured) {
   EXPECT_EQ(vhacd_test::CheckHulls(r.hulls, 1e-6 * 2.7), "");
 }
 
+// A flat box (2 x 2 x 0.34) with six one-sided squares floating 0.3 above it, the shape of the
+// corpus' vertex_color_test. Each square is a one-voxel sheet over a gap: the hull of box + sheets
+// sticks out by more than max_distance, and the downsampled plane search did not see the sheets
+// from two of the three axes (they lie between its sampled voxel rows), so it cut the box into
+// single voxel columns, thousands of parts, before trying the plane through the gap.
+Mesh BoxWithFloatingSheets() {
+  Mesh m = vhacd_test::Box(-1, -1, -0.17, 1, 1, 0.17);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 2; ++j) {
+      const double x = -0.78 + 0.59 * i, y = -0.76 + 0.87 * j, s = 0.46, z = 0.487;
+      m.AddQuad(m.AddPoint(x, y, z), m.AddPoint(x + s, y, z), m.AddPoint(x + s, y + s, z), m.AddPoint(x, y + s, z));
+    }
+  return m;
+}
+
+TEST_P(ModeTest, FlatOpenMeshWithStickOutLimitKeepsFewParts) {
+  const Mesh mesh = BoxWithFloatingSheets();
+  vhacd::Parameters p = Fast();
+  p.resolution = 100000;  // the packaging pipeline's parameters (collision.cc)
+  p.gamma = 0.02;
+  p.max_vertices_per_hull = 24;
+  p.max_distance = 0.03;
+  const vhacd::Result r = vhacd::Decompose(mesh.View(), p);
+  ASSERT_TRUE(r.ok()) << r.message;
+  // Slab and sheets apart take a handful of cuts (3 parts here); the columns were over 2000.
+  EXPECT_LE(r.report.parts_before_merge, 32u);
+  EXPECT_LE(r.hulls.size(), 16u);
+  EXPECT_EQ(vhacd_test::CheckHulls(r.hulls, 1e-6 * 3.0), "");
+  EXPECT_LE(r.report.hausdorff_hulls_to_mesh, 0.03 + 0.02);
+  // Same result with one thread.
+  p.num_threads = 1;
+  const vhacd::Result one = vhacd::Decompose(mesh.View(), p);
+  ASSERT_TRUE(one.ok());
+  ASSERT_EQ(one.hulls.size(), r.hulls.size());
+  for (size_t i = 0; i < r.hulls.size(); ++i) EXPECT_EQ(one.hulls[i].points, r.hulls[i].points);
+}
+
 TEST(DecomposeTest, PresetsAndPureVolumeCriterion) {
   const Mesh torus = vhacd_test::Torus(1.0, 0.3, 32, 16);
   vhacd::Parameters p = Fast();

@@ -111,30 +111,60 @@ bool ClipRecursively(Part root, const ClipParams& params, Context* ctx, ClipOutp
     if (!run(params.convexhull_downsampling)) return false;
     std::vector<Task> best(m, Task{0, -1, 0});
     std::vector<double> best_cost(m, std::numeric_limits<double>::infinity());
-    for (size_t t = 0; t < tasks.size(); ++t)
-      if (cost[t] < best_cost[tasks[t].part]) {
-        best_cost[tasks[t].part] = cost[t];
-        best[tasks[t].part] = tasks[t];
-      }
-    // Exact search around the best coarse plane.
-    if (params.plane_downsampling > 1 || params.convexhull_downsampling > 1) {
-      tasks.clear();
-      for (size_t k = 0; k < m; ++k) {
-        if (best[k].axis < 0) continue;
-        const Part& p = current[split[k]];
-        const int a = best[k].axis;
-        const int lo = std::max(p.bmin[a] + 1, best[k].c - params.plane_downsampling + 1);
-        const int hi = std::min(p.bmax[a], best[k].c + params.plane_downsampling - 1);
-        for (int c = lo; c <= hi; ++c) tasks.push_back({static_cast<uint32_t>(k), a, c});
-      }
-      cost.assign(tasks.size(), 0.0);
-      if (!run(1)) return false;
-      std::fill(best_cost.begin(), best_cost.end(), std::numeric_limits<double>::infinity());
+    auto keep_best = [&]() {  // ties keep the earlier task: deterministic
       for (size_t t = 0; t < tasks.size(); ++t)
         if (cost[t] < best_cost[tasks[t].part]) {
           best_cost[tasks[t].part] = cost[t];
           best[tasks[t].part] = tasks[t];
         }
+    };
+    keep_best();
+    const std::vector<double> coarse_cost = best_cost;  // the downsampled estimates
+    // Exact search around the best plane of each part in `parts`.
+    auto refine = [&](const std::vector<uint32_t>& parts) {
+      tasks.clear();
+      for (uint32_t k : parts) {
+        if (best[k].axis < 0) continue;
+        const Part& p = current[split[k]];
+        const int a = best[k].axis;
+        const int lo = std::max(p.bmin[a] + 1, best[k].c - params.plane_downsampling + 1);
+        const int hi = std::min(p.bmax[a], best[k].c + params.plane_downsampling - 1);
+        for (int c = lo; c <= hi; ++c) tasks.push_back({k, a, c});
+      }
+      cost.assign(tasks.size(), 0.0);
+      if (!run(1)) return false;
+      keep_best();
+      return true;
+    };
+    if (params.plane_downsampling > 1 || params.convexhull_downsampling > 1) {
+      std::vector<uint32_t> all(m);
+      for (size_t k = 0; k < m; ++k) all[k] = static_cast<uint32_t>(k);
+      std::fill(best_cost.begin(), best_cost.end(), std::numeric_limits<double>::infinity());
+      if (!refine(all)) return false;
+    }
+    // The downsampled hulls skip all but every convexhull_downsampling-th row of voxel lines, so a
+    // feature thinner than that (a one-voxel sheet floating over a slab) can be invisible to the
+    // coarse costs of two axes: their planes look free, the cut removes no concavity, and the part
+    // was cut again and again into single voxel columns (thousands of parts, a merge of tens of
+    // seconds) before the one plane through the gap was tried. When the exact cost of the chosen
+    // cut shows no gain over the part's concavity although the estimate promised one (less than
+    // half the exact cost), the estimate was blind: search every plane again with exact hulls.
+    if (params.convexhull_downsampling > 1) {
+      std::vector<uint32_t> blind;
+      for (size_t k = 0; k < m; ++k)
+        if (best[k].axis >= 0 && best_cost[k] >= conc[split[k]] && coarse_cost[k] < 0.5 * best_cost[k])
+          blind.push_back(static_cast<uint32_t>(k));
+      if (!blind.empty()) {
+        tasks.clear();
+        for (uint32_t k : blind)
+          for (int axis = 0; axis < 3; ++axis)
+            for (int c : CandidatePlanes(current[split[k]], axis, params.plane_downsampling))
+              tasks.push_back({k, axis, c});
+        cost.assign(tasks.size(), 0.0);
+        if (!run(1)) return false;
+        keep_best();
+        if (params.plane_downsampling > 1 && !refine(blind)) return false;
+      }
     }
     // Split.
     std::vector<Part> next(m * 2);

@@ -27,7 +27,9 @@
 //      minimising
 //        concavity(left) + concavity(right) + alpha * balance + beta * revolution-axis penalty,
 //      searched every `plane_downsampling` voxels on hulls of every `convexhull_downsampling`-th
-//      voxel line, then refined voxel by voxel (exact hulls) around the best plane;
+//      voxel line, then refined voxel by voxel (exact hulls) around the best plane; when that cut
+//      removes no concavity although the coarse estimate said it would (a feature thinner than the
+//      downsampling, missed by the sampled lines), every plane is searched again with exact hulls;
 //   5. one convex hull per part: the input surface clipped to the part's box plus the corners of its
 //      interior voxels, so hulls hug the mesh, not the voxels (a flat part falls back to its voxels);
 //   6. simplification of each hull to at most `max_vertices_per_hull` vertices, greedily keeping
