@@ -98,7 +98,9 @@ struct alignas(32) SymbolModel {
 
   uint16_t slow[kSymbols];  // entry kSymbols - 1 is the total and never changes
   uint16_t fast[kSymbols];
-  uint8_t n = 0;            // observations so far (saturating at kRates - 1)
+  // Observations so far (saturating at kRates - 1). Not a char type: a char store may alias
+  // anything, which would make the compiler reload every pointer after each decision.
+  uint16_t n = 0;
 
   SymbolModel() {
     for (int i = 0; i < kSymbols; ++i) slow[i] = fast[i] = uint16_t((i + 1) * (kTotal / kSymbols));
@@ -140,7 +142,7 @@ inline constexpr Tables kTables{};
 #if defined(__SSE2__) && !defined(O3DGC_NO_SIMD)
 O3DGC_INLINE void SymbolModel::Update(int symbol) {
   const int rate = symbol_tables::kTables.rate[n];
-  n = uint8_t(n + (n < kRates - 1));
+  n = uint16_t(n + (n < kRates - 1));
   const int fast_rate = rate < kFastShift ? rate : kFastShift;
   // 16-bit lanes: differences to the targets stay within +-2^15.
   const __m128i* t = reinterpret_cast<const __m128i*>(symbol_tables::kTables.target[symbol]);
@@ -174,7 +176,7 @@ O3DGC_INLINE int SymbolModel::Find(uint32_t r, uint32_t code) const {
 #else
 O3DGC_INLINE void SymbolModel::Update(int symbol) {
   const int rate = symbol_tables::kTables.rate[n];
-  n = uint8_t(n + (n < kRates - 1));
+  n = uint16_t(n + (n < kRates - 1));
   const int fast_rate = rate < kFastShift ? rate : kFastShift;
   const uint16_t* t = symbol_tables::kTables.target[symbol];
   for (int i = 0; i < kSymbols - 1; ++i) {

@@ -12,9 +12,9 @@ namespace {
 class Decoder {
  public:
   Decoder(ArithmeticDecoder* dec, size_t num_triangles, size_t max_vertices,
-          std::vector<uint32_t>* out)
+          std::vector<uint32_t>* out, bool keep_edges)
       : dec_(*dec), nt_(num_triangles), max_vertices_(max_vertices), out_(*out),
-        m_(new ConnectivityModels) {}
+        m_(new ConnectivityModels), keep_edges_(keep_edges) {}
 
   Status Run() {
     ScopedDecoder scoped(&dec_);  // the state in registers for the loop
@@ -23,7 +23,7 @@ class Decoder {
     // the front for them is bounded by the stream's size.
     out_.resize(nt_ * 3);
     tri_ = out_.data();
-    front_.Reserve(max_vertices_ < nt_ + 3 ? max_vertices_ : nt_ + 3, nt_);
+    front_.Reserve(max_vertices_ < nt_ + 3 ? max_vertices_ : nt_ + 3, nt_, keep_edges_);
     has_flips_ = dec.DecodeBits(1) != 0;
     has_copies_ = dec.DecodeBits(1) != 0;
     for (;;) {
@@ -141,6 +141,7 @@ class Decoder {
   std::unique_ptr<ConnectivityModels> m_;
   Front front_;
   bool has_flips_ = false, has_copies_ = false;
+  const bool keep_edges_;
 };
 
 }  // namespace
@@ -148,7 +149,7 @@ class Decoder {
 Status DecodeConnectivity(ArithmeticDecoder* dec, size_t num_triangles, size_t max_vertices,
                           std::vector<uint32_t>* triangles, uint32_t* num_vertices,
                           std::vector<uint32_t>* opposite, std::vector<uint32_t>* opposite_vertices) {
-  Decoder d(dec, num_triangles, max_vertices, triangles);
+  Decoder d(dec, num_triangles, max_vertices, triangles, opposite != nullptr);
   const Status s = d.Run();
   *dec = d.decoder();
   *num_vertices = d.num_vertices();

@@ -50,11 +50,13 @@ class Front {
   static constexpr int kMaxScan = 64;
 
   // Capacities for a mesh of this size: each triangle opens at most 3 gates. The arrays still
-  // grow if a stream codes more.
-  void Reserve(size_t vertices, size_t triangles) {
+  // grow if a stream codes more. Without `keep_edges` only the opposite vertices are recorded
+  // (TakeOpposite is then empty).
+  void Reserve(size_t vertices, size_t triangles, bool keep_edges = true) {
     GrowVertices(vertices < 16 ? 16 : vertices);
     GrowGates(3 * triangles + 3);
-    opp_.assign(3 * triangles, kNoEdge);
+    keep_edges_ = keep_edges;
+    if (keep_edges_) opp_.assign(3 * triangles, kNoEdge);
     oppv_.assign(3 * triangles, kNoEdge);
   }
   uint32_t AddVertex() {
@@ -167,7 +169,7 @@ class Front {
   // Neighbour relation found while coding: for triangle t and slot k (the edge opposite corner k),
   // opposite()[3t+k] is the neighbour's triangle * 4 + slot, or kNoEdge. Sized for `triangles`.
   std::vector<uint32_t> TakeOpposite(size_t triangles) {
-    opp_.resize(3 * triangles, kNoEdge);
+    if (keep_edges_) opp_.resize(3 * triangles, kNoEdge);
     return std::move(opp_);
   }
   // The same as vertices: the neighbour's vertex opposite the shared edge, or kNoEdge.
@@ -179,17 +181,19 @@ class Front {
  private:
   // Edges e1 and e2 (with opposite vertices v1 and v2 in their triangles) are neighbours.
   void Link(uint32_t e1, uint32_t v1, uint32_t e2, uint32_t v2) {
-    const size_t need = 3 * size_t((e1 > e2 ? e1 : e2) / 4 + 1);
-    if (opp_.size() < need) {
-      const size_t size = need > 2 * opp_.size() ? need : 2 * opp_.size();
-      opp_.resize(size, kNoEdge);
+    const size_t i1 = 3 * size_t(e1 / 4) + e1 % 4, i2 = 3 * size_t(e2 / 4) + e2 % 4;
+    const size_t need = (i1 > i2 ? i1 : i2) + 1;
+    if (oppv_.size() < need) {
+      const size_t size = need > 2 * oppv_.size() ? need : 2 * oppv_.size();
+      if (keep_edges_) opp_.resize(size, kNoEdge);
       oppv_.resize(size, kNoEdge);
     }
-    const size_t i1 = 3 * size_t(e1 / 4) + e1 % 4, i2 = 3 * size_t(e2 / 4) + e2 % 4;
-    opp_[i1] = e2;
-    opp_[i2] = e1;
     oppv_[i1] = v2;
     oppv_[i2] = v1;
+    if (keep_edges_) {
+      opp_[i1] = e2;
+      opp_[i2] = e1;
+    }
   }
   template <typename T>
   static void Grow(std::unique_ptr<T[]>* a, size_t used, size_t capacity) {
@@ -212,7 +216,7 @@ class Front {
 
   // Gates are never reused: at most one per AddHalfEdge, each on the stack once.
   std::unique_ptr<Gate[]> gates_;
-  std::unique_ptr<uint8_t[]> open_;
+  std::unique_ptr<uint16_t[]> open_;  // not a char type: see SymbolModel::n
   std::unique_ptr<int32_t[]> stack_;
   size_t num_gates_ = 0, gate_capacity_ = 0, stack_top_ = 0;
   std::unique_ptr<int32_t[]> head_out_, head_in_;
@@ -220,6 +224,7 @@ class Front {
   uint32_t num_vertices_ = 0;
   size_t vertex_capacity_ = 0;
   std::vector<uint32_t> opp_, oppv_;
+  bool keep_edges_ = true;
 };
 
 }  // namespace o3dgc

@@ -54,8 +54,12 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
   // Connectivity.
   std::vector<uint32_t> tris, opposite, opposite_vertices;
   uint32_t nc = 0;
-  if ((s = DecodeConnectivity(&dec, nt, nv, &tris, &nc, &opposite, &opposite_vertices)) !=
-      Status::kOk) {
+  // The neighbour triangles themselves are needed only by parallelogram-predicted attributes
+  // (across seams); positions use the opposite vertices.
+  bool attribute_wedges = h.has_normals && h.normal.prediction == Prediction::kParallelogram;
+  for (const AttributeDesc& d : h.floats) attribute_wedges |= d.prediction == Prediction::kParallelogram;
+  if ((s = DecodeConnectivity(&dec, nt, nv, &tris, &nc, attribute_wedges ? &opposite : nullptr,
+                              &opposite_vertices)) != Status::kOk) {
     return s;
   }
 
