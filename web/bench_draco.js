@@ -5,6 +5,9 @@
 // result is the same kind of thing hullpack's decode(bytes) returns.
 /* global DracoDecoderModule */
 (function (scope) {
+  // Draco's attribute types, named as hullpack_decoder.js names its semantics.
+  const SEMANTICS = ['position', 'normal', 'color', 'texcoord', 'generic'];
+
   // Instantiates the decoder from the wasm bytes already fetched (compile is not timed here).
   scope.hullpackBenchDracoModule = (wasmBinary) =>
     new Promise((resolve) => { DracoDecoderModule({ wasmBinary, onModuleLoaded: (m) => resolve(m) }); });
@@ -23,7 +26,7 @@
         const n = nv * attr.num_components();
         const ptr = D._malloc(n * 4);
         decoder.GetAttributeDataArrayForAllPoints(mesh, attr, D.DT_FLOAT32, n * 4, ptr);
-        out.attributes.push({ type: attr.attribute_type(), dimension: attr.num_components(),
+        out.attributes.push({ semantic: SEMANTICS[attr.attribute_type()] || 'generic', dimension: attr.num_components(),
           array: new Float32Array(D.HEAPF32.buffer, ptr, n).slice() });
         D._free(ptr);
       }

@@ -81,13 +81,13 @@ if (a.cold) {
 // worker round trip) and the ratio to Draco (< 1: faster than Draco).
 console.log(`${result.userAgent}\nmedian of ${result.runs} runs after ${result.warmup} warm-up; ms, decode only`);
 console.log(`init (fetch + compile + instantiate): ${Object.entries(result.init).map(([k, v]) => `${k} ${v.toFixed(0)} ms`).join(', ')}`);
-console.log('| mesh | triangles | decoder | bytes | main ms | worker ms | worker round trip ms | main / Draco | worker / Draco |');
-console.log('|---|---|---|---|---|---|---|---|---|');
+console.log('| mesh | triangles | decoder | attributes | bytes | main ms | worker ms | worker round trip ms | main / Draco | worker / Draco |');
+console.log('|---|---|---|---|---|---|---|---|---|---|');
 for (const m of result.meshes) {
   const d = m.decoders.draco;
   for (const [name, v] of Object.entries(m.decoders)) {
     const ratio = (x, y) => (d && name !== 'draco' ? (x / y).toFixed(2) : '');
-    console.log(`| ${m.name} | ${v.triangles} | ${name} | ${v.bytes} | ${f(v.main)} | ${f(v.worker)} | ${f(v.roundTrip)} | ` +
+    console.log(`| ${m.name} | ${v.triangles} | ${name} | ${v.attributes} | ${v.bytes} | ${f(v.main)} | ${f(v.worker)} | ${f(v.roundTrip)} | ` +
       `${ratio(v.main, d?.main)} | ${ratio(v.worker, d?.worker)} |`);
   }
 }

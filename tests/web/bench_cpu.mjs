@@ -33,7 +33,7 @@ for (const d of dirs) {
   const M = await factory({ wasmBinary: fs.readFileSync(path.join(d, 'hullpack_decoder_wasm.wasm')) });
   const dec = decoderFromModule(M);
   const name = dirs.length === 1 ? 'hullpack' : `hullpack[${path.basename(d)}]`;
-  decoders.push({ name, stream: 's3d', decode: (b) => { const m = dec.decode(b); return [m.numVertices, m.numTriangles]; } });
+  decoders.push({ name, stream: 's3d', decode: (b) => { const m = dec.decode(b); return [m.numVertices, m.numTriangles, m.attributes.map((x) => x.semantic).join('+')]; } });
 }
 {
   const dracoDir = path.join(repo, 'node_modules/three/examples/jsm/libs/draco');
@@ -41,12 +41,12 @@ for (const d of dirs) {
   new Function(`${fs.readFileSync(path.join(dracoDir, 'draco_wasm_wrapper.js'), 'utf8')}\nself.DracoDecoderModule = DracoDecoderModule;`)();
   new Function(fs.readFileSync(path.join(repo, 'web/bench_draco.js'), 'utf8'))();
   const D = await self.hullpackBenchDracoModule(fs.readFileSync(path.join(dracoDir, 'draco_decoder.wasm')));
-  decoders.push({ name: 'draco', stream: 'drc', decode: (b) => { const m = self.hullpackBenchDracoDecode(D, b); return [m.numVertices, m.numTriangles]; } });
+  decoders.push({ name: 'draco', stream: 'drc', decode: (b) => { const m = self.hullpackBenchDracoDecode(D, b); return [m.numVertices, m.numTriangles, m.attributes.map((x) => x.semantic).join('+')]; } });
 }
 
 const { dir, list } = prepareStreams(a);
 console.log(`node ${process.version} (V8 ${process.versions.v8}); CPU ms per decode, median of ${runs} after ${warmup} warm-up, runs interleaved`);
-console.log('| mesh | triangles | decoder | bytes | CPU ms | wall ms | CPU / Draco |\n|---|---|---|---|---|---|---|');
+console.log('| mesh | triangles | decoder | attributes | bytes | CPU ms | wall ms | CPU / Draco |\n|---|---|---|---|---|---|---|---|');
 try {
   for (const m of list) {
     const bytes = { s3d: new Uint8Array(fs.readFileSync(path.join(dir, m.s3d))), drc: new Uint8Array(fs.readFileSync(path.join(dir, m.drc))) };
@@ -66,7 +66,7 @@ try {
     const draco = median(rows[rows.length - 1].cpu);
     for (const r of rows) {
       const cpu = median(r.cpu);
-      console.log(`| ${m.name} | ${r.counts[1]} | ${r.d.name} | ${bytes[r.d.stream].length} | ${f(cpu)} | ${f(median(r.wall))} | ` +
+      console.log(`| ${m.name} | ${r.counts[1]} | ${r.d.name} | ${r.counts[2]} | ${bytes[r.d.stream].length} | ${f(cpu)} | ${f(median(r.wall))} | ` +
         `${r.d.name === 'draco' ? '' : (cpu / draco).toFixed(2)} |`);
     }
   }
