@@ -4,10 +4,14 @@
 // compilation and GC on the timed thread) with TurboFan only, so every timed run is optimized code.
 //
 //   node --single-threaded --no-liftoff tests/web/bench_cpu.mjs [--meshes igea] [--runs 15]
-//        [--warmup 3] [--wasm DIR[,DIR2]] [same stream options as bench.mjs]
+//        [--warmup 3] [--wasm DIR[,DIR2]] [--native build/tests/web/web_decode_ref]
+//        [same stream options as bench.mjs]
 //
+// --native adds the C++ decoder of that build (web_decode_ref --time: median CPU time of as many
+// decodes in its own process), the reference for what the wasm build costs over native code.
 // --wasm: folders holding hullpack_decoder_wasm.{js,wasm} (default samples/web/dist). Draco is
 // three's copy of its official WASM decoder, driven by web/bench_draco.js as in the browser.
+import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import { createRequire } from 'node:module';
 import path from 'node:path';
@@ -64,6 +68,10 @@ try {
       }
     }
     const draco = median(rows[rows.length - 1].cpu);
+    if (a.native) {
+      const r = JSON.parse(execFileSync(path.resolve(a.native), ['--time', String(runs), path.join(dir, m.s3d)], { encoding: 'utf8' }));
+      console.log(`| ${m.name} | ${rows[0].counts[1]} | native C++ | ${rows[0].counts[2]} | ${bytes.s3d.length} | ${f(r.cpu_ms)} | | ${(r.cpu_ms / draco).toFixed(2)} |`);
+    }
     for (const r of rows) {
       const cpu = median(r.cpu);
       console.log(`| ${m.name} | ${r.counts[1]} | ${r.d.name} | ${r.counts[2]} | ${bytes[r.d.stream].length} | ${f(cpu)} | ${f(median(r.wall))} | ` +

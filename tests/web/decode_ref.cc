@@ -4,10 +4,17 @@
 //    "int_attributes":[...],"min":[x,y,z],"max":[x,y,z],
 //    "groups":[{"id":g,"vertices":n,"triangles":t,"min":[...],"max":[...]}]}
 // "groups" lists each triangle group id present (ascending), with the vertices its triangles use.
+//   web_decode_ref --time N STREAM.s3d
+// instead decodes N times and prints {"cpu_ms": median CPU milliseconds per decode, "runs": N}
+// (the native reference of tests/web/bench_cpu.mjs).
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
+#include <ctime>
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <string>
 #include <set>
 #include <vector>
 
@@ -31,16 +38,25 @@ void PrintBox(const std::vector<float>& p, const std::set<uint32_t>* only) {
               hi[1], hi[2]);
 }
 
+double CpuMs() {
+  timespec t;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::fprintf(stderr, "usage: web_decode_ref STREAM.s3d\n");
+  int timed_runs = 0;
+  if (argc == 4 && std::string(argv[1]) == "--time") timed_runs = std::atoi(argv[2]);
+  if (argc != 2 && timed_runs <= 0) {
+    std::fprintf(stderr, "usage: web_decode_ref [--time N] STREAM.s3d\n");
     return 2;
   }
-  std::ifstream f(argv[1], std::ios::binary);
+  const char* path = argv[argc - 1];
+  std::ifstream f(path, std::ios::binary);
   if (!f) {
-    std::fprintf(stderr, "cannot read %s\n", argv[1]);
+    std::fprintf(stderr, "cannot read %s\n", path);
     return 1;
   }
   const std::vector<uint8_t> data((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
@@ -49,6 +65,18 @@ int main(int argc, char** argv) {
   if (s != o3dgc::Status::kOk) {
     std::fprintf(stderr, "decode failed: %s\n", o3dgc::StatusName(s));
     return 1;
+  }
+  if (timed_runs > 0) {
+    std::vector<double> ms;
+    for (int i = 0; i < timed_runs; ++i) {
+      o3dgc::DecodedMesh r;
+      const double t0 = CpuMs();
+      if (o3dgc::Decode(data.data(), data.size(), o3dgc::DecodeOptions(), &r) != o3dgc::Status::kOk) return 1;
+      ms.push_back(CpuMs() - t0);
+    }
+    std::nth_element(ms.begin(), ms.begin() + ms.size() / 2, ms.end());
+    std::printf("{\"cpu_ms\":%.4f,\"runs\":%d}\n", ms[ms.size() / 2], timed_runs);
+    return 0;
   }
   std::printf("{\"vertices\":%zu,\"triangles\":%zu,\"normals\":%s,", m.num_vertices(),
               m.num_triangles(), m.normals.empty() ? "false" : "true");
