@@ -27,9 +27,11 @@ constexpr uint32_t kSmallMesh = 1500;
 constexpr uint32_t kTinyMesh = 300;
 
 // Context from the residual of the previous component of the same vertex.
+// Bit length of a (0 for 0), without a branch.
+inline int BitLength(uint64_t a) { return 64 - __builtin_clzll(a | 1) - (a == 0); }
+
 inline int IntraContext(int64_t r) {
-  const uint64_t a = uint64_t(r < 0 ? -r : r);
-  const int b = a == 0 ? 0 : FloorLog2(a) + 1;
+  const int b = BitLength(uint64_t(r < 0 ? -r : r));
   return b < kIntraContexts ? b : kIntraContexts - 1;
 }
 
@@ -45,6 +47,8 @@ class ContextModels {
   Model& at(int component, int kind, int mag, int intra) {
     return models_[((size_t(component) * kinds_ + kind) * kMagContexts + mag) * kIntraContexts + intra];
   }
+  // Distance between the same context of consecutive components.
+  size_t component_stride() const { return size_t(kinds_) * kMagContexts * kIntraContexts; }
   BitModel side;
 
  private:
@@ -55,7 +59,7 @@ using ResidualModels = ContextModels<ResidualModel>;
 using NormalModels = ContextModels<SignedModel>;
 
 inline int MagContext(uint64_t mag) {
-  const int b = mag == 0 ? 0 : FloorLog2(mag) + 1;
+  const int b = BitLength(mag);
   return b < kMagContexts ? b : kMagContexts - 1;
 }
 

@@ -26,14 +26,19 @@ Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges, 
         PredictFromParallelograms<kDim>(order.parallelograms(), n_par, wedges, order.done(), c,
                                         previous, q, mags, pred);
     const int mctx = MagContext(pc.neighbour_magnitude) >> coarse;
+    // Component k's context: same (kind, magnitude), its own component (all share component 0
+    // for tiny meshes), the previous component's residual (not for small meshes).
+    ResidualModel* const row = &models.at(0, pc.kind, mctx, 0);
+    const size_t stride = coarse == 2 ? 0 : models.component_stride();
     int64_t r[kDim];
     bool ok = true;
+    int intra = 0;
     for (int k = 0; k < kDim; ++k) {
       const int64_t p = pred[k] < 0 ? 0 : (pred[k] > maxq ? maxq : pred[k]);
-      r[k] = DecodeResidual(dec, models.at(coarse == 2 ? 0 : k, pc.kind, mctx,
-                                           (k && !coarse) ? IntraContext(r[k - 1]) : 0));
+      r[k] = DecodeResidual(dec, row[stride * k + intra]);
+      intra = coarse ? 0 : IntraContext(r[k]);
       const int64_t v = p + r[k];
-      ok &= v >= 0 && v <= maxq;
+      ok &= uint64_t(v) <= uint64_t(maxq);
       q[size_t(c) * kDim + k] = int32_t(v);
     }
     if (!ok) {

@@ -57,12 +57,15 @@ void EncodeParallelogram(ArithmeticEncoder* enc, const WedgeTable& wedges, int64
         PredictFromParallelograms<kDim>(order.parallelograms(), n_par, wedges, order.done(), c,
                                         previous, q, mags, pred);
     const int mctx = MagContext(pc.neighbour_magnitude) >> coarse;
+    ResidualModel* const row = &models.at(0, pc.kind, mctx, 0);
+    const size_t stride = coarse == 2 ? 0 : models.component_stride();
     int64_t r[kDim];
+    int intra = 0;
     for (int k = 0; k < kDim; ++k) {
       const int64_t p = pred[k] < 0 ? 0 : (pred[k] > maxq ? maxq : pred[k]);
       r[k] = int64_t(q[size_t(c) * kDim + k]) - p;
-      EncodeResidual(*enc, models.at(coarse == 2 ? 0 : k, pc.kind, mctx,
-                                     (k && !coarse) ? IntraContext(r[k - 1]) : 0), r[k]);
+      EncodeResidual(*enc, row[stride * k + intra], r[k]);
+      intra = coarse ? 0 : IntraContext(r[k]);
     }
     mags[c] = SaturatingMagnitude(r, kDim);
   }

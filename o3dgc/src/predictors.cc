@@ -38,7 +38,7 @@ void WedgeTable::Count(const uint32_t* tri, size_t nt, uint32_t num_vertices) {
     start[v[2] + 1] += ok;
   }
   for (uint32_t v = 0; v < num_vertices; ++v) start[v + 1] += start[v];
-  wedges_.resize(start[num_vertices]);
+  wedges_.reset(new Wedge[start[num_vertices]]);
 }
 
 void WedgeTable::Build(const std::vector<uint32_t>& triangles, uint32_t num_vertices,
@@ -48,7 +48,7 @@ void WedgeTable::Build(const std::vector<uint32_t>& triangles, uint32_t num_vert
   const uint32_t* opp = opposite.size() >= 3 * nt ? opposite.data() : nullptr;
   Count(tri, nt, num_vertices);
   uint32_t* start = start_.data() + 1;
-  Wedge* out = wedges_.data();
+  Wedge* out = wedges_.get();
   static constexpr uint8_t kNext[3] = {1, 2, 0}, kPrev[3] = {2, 0, 1};
   for (size_t t = 0; t < nt; ++t) {
     const uint32_t* v = tri + 3 * t;
@@ -82,7 +82,7 @@ void WedgeTable::BuildFromOppositeVertices(const std::vector<uint32_t>& triangle
   const uint32_t* oppv = opposite_vertices.size() >= 3 * nt ? opposite_vertices.data() : nullptr;
   Count(tri, nt, num_vertices);
   uint32_t* start = start_.data() + 1;
-  Wedge* out = wedges_.data();
+  Wedge* out = wedges_.get();
   for (size_t t = 0; t < nt; ++t) {
     const uint32_t* v = tri + 3 * t;
     if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) continue;

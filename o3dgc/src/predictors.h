@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace o3dgc {
@@ -47,15 +48,15 @@ class WedgeTable {
   // Front::TakeOppositeVertices) gives x directly.
   void BuildFromOppositeVertices(const std::vector<uint32_t>& triangles, uint32_t num_vertices,
                                  const std::vector<uint32_t>& opposite_vertices);
-  const Wedge* begin(uint32_t v) const { return wedges_.data() + start_[v]; }
-  const Wedge* end(uint32_t v) const { return wedges_.data() + start_[v + 1]; }
+  const Wedge* begin(uint32_t v) const { return wedges_.get() + start_[v]; }
+  const Wedge* end(uint32_t v) const { return wedges_.get() + start_[v + 1]; }
   uint32_t num_vertices() const { return uint32_t(start_.size() - 1); }
 
  private:
   // Counts wedges per vertex into start_ (start_[v + 2]) and sizes wedges_.
   void Count(const uint32_t* tri, size_t nt, uint32_t num_vertices);
   std::vector<uint32_t> start_;
-  std::vector<Wedge> wedges_;
+  std::unique_ptr<Wedge[]> wedges_;  // every entry is written by Build (no zero fill first)
 };
 
 // The order in which parallelogram-predicted values are coded: a greedy traversal that always
