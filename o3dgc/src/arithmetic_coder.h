@@ -105,6 +105,15 @@ struct alignas(32) SymbolModel {
   SymbolModel() {
     for (int i = 0; i < kSymbols; ++i) slow[i] = fast[i] = uint16_t((i + 1) * (kTotal / kSymbols));
   }
+  // A model of which only the first `used` symbols are expected: they share the range evenly, the
+  // others start at the minimum frequency.
+  explicit SymbolModel(int used) {
+    const int rest = (kSymbols - used) * kMinFreq;
+    for (int i = 0; i < kSymbols; ++i) {
+      slow[i] = fast[i] = uint16_t(i < used ? (i + 1) * ((kTotal - rest) / used)
+                                            : kTotal - (kSymbols - 1 - i) * kMinFreq);
+    }
+  }
   // Frequency of the symbols <= i (i < kSymbols) in 1/2^16.
   uint32_t cumulative(int i) const { return uint32_t(slow[i]) + fast[i]; }
   void Update(int symbol);

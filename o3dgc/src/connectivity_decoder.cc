@@ -46,27 +46,26 @@ class Decoder {
       const uint32_t a = front_.gate(g).a, b = front_.gate(g).b;
       const Front::Candidates cand = front_.Look(a, b);
       const int ctx = cand.context;
-      if (!dec.Decode(m_->attach[ctx])) {
+      const int outcome = dec.Decode(m_->gate[ctx]);
+      if (outcome == kGateClose) {
         front_.Close(g);
         continue;
       }
       if (Full()) return Status::kCorrupt;
       uint32_t c;
-      if (dec.Decode(m_->is_new[ctx])) {
+      if (outcome == kGateNew) {
         if (front_.num_vertices() >= max_vertices_) return Status::kCorrupt;
         c = front_.AddVertex();
+      } else if (outcome == kGateRight && cand.right >= 0) {
+        c = uint32_t(cand.right);
+      } else if (outcome == kGateLeft && cand.left >= 0) {
+        c = uint32_t(cand.left);
+      } else if (outcome == kGateOther) {
+        const uint64_t d = DecodeEG(dec, m_->other_ref);
+        if (d >= front_.num_vertices()) return Status::kCorrupt;
+        c = uint32_t(front_.num_vertices() - 1 - d);
       } else {
-        const int64_t r = cand.right;
-        const int64_t l = cand.left;
-        int64_t chosen = -1;
-        if (r >= 0 && dec.Decode(m_->is_right[ctx])) chosen = r;
-        if (chosen < 0 && l >= 0 && l != r && dec.Decode(m_->is_left[ctx])) chosen = l;
-        if (chosen < 0) {
-          const uint64_t d = DecodeEG(dec, m_->other_ref);
-          if (d >= front_.num_vertices()) return Status::kCorrupt;
-          chosen = int64_t(front_.num_vertices() - 1 - d);
-        }
-        c = uint32_t(chosen);
+        return Status::kCorrupt;  // a candidate that does not exist, or an unused symbol
       }
       if (c == a || c == b) return Status::kCorrupt;
       const int flip = has_flips_ ? dec.Decode(m_->flip) : 0;

@@ -118,29 +118,21 @@ class Encoder {
       const Front::Candidates cand = front_.Look(a, b);
       const int ctx = cand.context;
       if (found == kNone) {
-        enc_.Encode(0, m_->attach[ctx]);
+        enc_.Encode(kGateClose, m_->gate[ctx]);
         front_.Close(g);
         continue;
       }
-      enc_.Encode(1, m_->attach[ctx]);
       uint32_t c = new_of_old_[oc];
       if (c == kNone) {
-        enc_.Encode(1, m_->is_new[ctx]);
+        enc_.Encode(kGateNew, m_->gate[ctx]);
         c = NewVertex(oc);
+      } else if (cand.right >= 0 && c == cand.right) {
+        enc_.Encode(kGateRight, m_->gate[ctx]);
+      } else if (cand.left >= 0 && c == cand.left) {
+        enc_.Encode(kGateLeft, m_->gate[ctx]);
       } else {
-        enc_.Encode(0, m_->is_new[ctx]);
-        const int64_t r = cand.right;
-        const int64_t l = cand.left;
-        bool done = false;
-        if (r >= 0) {
-          enc_.Encode(c == r, m_->is_right[ctx]);
-          done = (c == r);
-        }
-        if (!done && l >= 0 && l != r) {
-          enc_.Encode(c == l, m_->is_left[ctx]);
-          done = (c == l);
-        }
-        if (!done) EncodeEG(enc_, m_->other_ref, front_.num_vertices() - 1 - c);
+        enc_.Encode(kGateOther, m_->gate[ctx]);
+        EncodeEG(enc_, m_->other_ref, front_.num_vertices() - 1 - c);
       }
       if (has_flips_) enc_.Encode(flip, m_->flip);
       visited_[found] = 1;

@@ -23,14 +23,20 @@ namespace o3dgc {
 
 constexpr int kConnectivityContexts = 64;
 
+// What happens at a gate, one multi-symbol decision per gate (contexts from Front::Look): nothing
+// (the gate is a boundary, it closes), or a triangle attaches whose third vertex is new, the
+// right or the left candidate, or another earlier vertex (then coded as a back reference).
+enum GateOutcome : int { kGateClose = 0, kGateNew = 1, kGateRight = 2, kGateLeft = 3, kGateOther = 4 };
+constexpr int kGateOutcomes = 5;
+
 struct ConnectivityModels {
+  ConnectivityModels() {
+    for (SymbolModel& m : gate) m = SymbolModel(kGateOutcomes);
+  }
   BitModel more_components;
   BitModel start_new;
   EGModel start_ref;
-  BitModel attach[kConnectivityContexts];
-  BitModel is_new[kConnectivityContexts];
-  BitModel is_right[kConnectivityContexts];
-  BitModel is_left[kConnectivityContexts];
+  SymbolModel gate[kConnectivityContexts];
   EGModel other_ref;
   BitModel flip;
   EGModel copies;
