@@ -8,6 +8,9 @@
 // Off the main thread: `await createWorkerDecoder({wasmUrl})` gives the same decode(), returning a
 // Promise; arrays come back as transferred buffers.
 //
+// Skin weights (semantic 'weight', 4 components) are renormalized per vertex, the packed format's
+// decode rule (normalizeSkinWeights below).
+//
 // Every array of a result is a copy owned by JavaScript (the wasm heap is released before decode()
 // returns). Errors are thrown as Error whose message and `.status` hold the decoder's status name
 // ("corrupt", "truncated", "bad_magic", ...).
@@ -49,6 +52,31 @@ function copyU32(M, ptr, count) {
   return new Uint32Array(M.HEAPU32.buffer, ptr, count).slice();
 }
 
+// The packed format's one decode rule (docs/packed-gltf.md, tools/gltf/skin_weights.cc, bit for bit):
+// a vertex's 4 skin weights with a positive, finite sum are divided by it (in double) and rounded to
+// float, except the largest (the first of equal largest), which becomes 1 minus the others (summed
+// in double from their float values, then rounded to float). All-zero vertices stay as they are.
+// Quantization moves each weight by up to half a step, and glTF wants the float sum to be 1.
+export function normalizeSkinWeights(weights) {
+  for (let i = 0; i + 3 < weights.length; i += 4) {
+    let sum = 0;
+    let largest = 0;
+    for (let k = 0; k < 4; ++k) {
+      sum += weights[i + k];
+      if (weights[i + k] > weights[i + largest]) largest = k;
+    }
+    if (!(sum > 0) || !Number.isFinite(sum)) continue;
+    let others = 0;
+    for (let k = 0; k < 4; ++k) {
+      if (k === largest) continue;
+      weights[i + k] = Math.fround(weights[i + k] / sum);
+      others += weights[i + k];
+    }
+    weights[i + largest] = Math.fround(1 - others);
+  }
+  return weights;
+}
+
 function jointsArray(values) {
   let max = 0;
   for (let i = 0; i < values.length; ++i) if (values[i] > max) max = values[i];
@@ -88,6 +116,7 @@ function readResult(M, h) {
     const dimension = M._hp_float_attribute_dimension(h, i);
     const ptr = M._hp_float_attribute_values(h, i);
     const array = ptr ? copyF32(M, ptr, dimension * nv) : new Float32Array(0);
+    if (semantic === 'weight' && dimension === 4) normalizeSkinWeights(array);
     mesh.attributes.push({ id: mesh.attributes.length, kind: 'float', semantic, dimension, array });
     if (semantic === 'texcoord') mesh.uvs.push(array);
     else if (semantic === 'color' && !mesh.colors) mesh.colors = array;

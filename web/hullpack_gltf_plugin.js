@@ -34,18 +34,46 @@ const THREE_NAMES = {
   TEXCOORD_2: 'uv2', TEXCOORD_3: 'uv3', COLOR_0: 'color', WEIGHTS_0: 'skinWeight', JOINTS_0: 'skinIndex',
 };
 
-// Converts decoded values to the accessor's component type (normalized integers are scaled).
-function toAccessorArray(values, accessorDef) {
+const COMPONENT_LIMITS = {
+  Int8Array: [-128, 127], Uint8Array: [0, 255], Int16Array: [-32768, 32767], Uint16Array: [0, 65535],
+  Uint32Array: [0, 4294967295],
+};
+
+// Converts decoded values to the accessor's component type as the C++ reader does
+// (tools/gltf/packed_glb_reader.cc): floats as they are; normalized integers scaled by the type's
+// maximum and rounded half away from zero; plain integers only when whole. A value the type cannot
+// hold is an error, not a wrapped number.
+function toAccessorArray(values, accessorDef, where) {
   const Type = COMPONENT_ARRAYS[accessorDef?.componentType] || values.constructor;
   if (values instanceof Type) return values;
   const out = new Type(values.length);
-  if (accessorDef?.normalized && Type !== Float32Array && values instanceof Float32Array) {
-    const max = { [Int8Array.name]: 127, [Uint8Array.name]: 255, [Int16Array.name]: 32767, [Uint16Array.name]: 65535 }[Type.name] || 1;
-    for (let i = 0; i < values.length; ++i) out[i] = Math.round(values[i] * max);
-  } else {
-    for (let i = 0; i < values.length; ++i) out[i] = values[i];
+  if (Type === Float32Array) {
+    out.set(values);
+    return out;
+  }
+  const [lo, hi] = COMPONENT_LIMITS[Type.name];
+  const scale = accessorDef?.normalized ? hi : 0;
+  for (let i = 0; i < values.length; ++i) {
+    let v = values[i];
+    if (scale) v = Math.sign(v) * Math.round(Math.abs(v * scale));
+    if (!(v >= lo && v <= hi) || v !== Math.floor(v)) {
+      throw new Error(`${EXTENSION_NAME}: ${where}: value ${values[i]} does not fit its component type`);
+    }
+    out[i] = v;
   }
   return out;
+}
+
+// The accessor a stream fills must state the decoded data's count and item size
+// (docs/packed-gltf.md); a file that says otherwise is rejected, as the C++ reader does.
+function checkAccessor(accessorDef, count, itemSize, where) {
+  if (!accessorDef) throw new Error(`${EXTENSION_NAME}: ${where} does not exist`);
+  if (accessorDef.count !== count) {
+    throw new Error(`${EXTENSION_NAME}: ${where} count ${accessorDef.count} does not match the stream (${count})`);
+  }
+  if (TYPE_SIZES[accessorDef.type] !== itemSize) {
+    throw new Error(`${EXTENSION_NAME}: ${where} is ${accessorDef.type} but the stream attribute has ${itemSize} components`);
+  }
 }
 
 export class HullpackMeshCompressionPlugin {
@@ -99,7 +127,7 @@ export class HullpackMeshCompressionPlugin {
     const geometry = new BufferGeometry();
     for (const [name, a] of Object.entries(attributes)) {
       const accessorDef = json.accessors?.[primitiveDef.attributes?.[name]];
-      const array = toAccessorArray(a.array, accessorDef);
+      const array = toAccessorArray(a.array, accessorDef, `attribute ${name}`);
       geometry.setAttribute(THREE_NAMES[name] || name.toLowerCase(),
         new BufferAttribute(array, a.dimension, accessorDef?.normalized === true));
     }
@@ -113,19 +141,31 @@ export class HullpackMeshCompressionPlugin {
     const jobs = [];
     (json.meshes || []).forEach((meshDef) => {
       for (const prim of meshDef.primitives || []) {
-        if (!prim.extensions?.[EXTENSION_NAME]) continue;
+        const ext = prim.extensions?.[EXTENSION_NAME];
+        if (!ext) continue;
         jobs.push(this.decodePrimitiveData(prim).then(({ mesh, attributes }) => {
           for (const [name, a] of Object.entries(attributes)) {
             const accessorIndex = prim.attributes?.[name];
-            if (accessorIndex === undefined || this.accessors.has(accessorIndex)) continue;
-            const accessorDef = json.accessors[accessorIndex];
-            const array = toAccessorArray(a.array, accessorDef);
-            const itemSize = TYPE_SIZES[accessorDef.type] || a.dimension;
-            this.accessors.set(accessorIndex, new BufferAttribute(array, itemSize, accessorDef.normalized === true));
+            if (accessorIndex === undefined) {
+              throw new Error(`${EXTENSION_NAME}: attribute ${name} has no accessor in the primitive`);
+            }
+            if (this.accessors.has(accessorIndex)) continue;  // shared by the mesh's primitives
+            const accessorDef = json.accessors?.[accessorIndex];
+            const where = `accessors[${accessorIndex}]`;
+            checkAccessor(accessorDef, mesh.numVertices, a.dimension, where);
+            const array = toAccessorArray(a.array, accessorDef, where);
+            this.accessors.set(accessorIndex, new BufferAttribute(array, a.dimension, accessorDef.normalized === true));
           }
-          if (prim.indices !== undefined && !this.accessors.has(prim.indices)) {
-            const accessorDef = json.accessors[prim.indices];
-            this.accessors.set(prim.indices, new BufferAttribute(toAccessorArray(mesh.indices, accessorDef), 1));
+          if (prim.indices !== undefined) {
+            if (this.accessors.has(prim.indices)) return;
+            const accessorDef = json.accessors?.[prim.indices];
+            const where = `accessors[${prim.indices}]`;
+            checkAccessor(accessorDef, mesh.indices.length, 1, where);
+            this.accessors.set(prim.indices, new BufferAttribute(toAccessorArray(mesh.indices, accessorDef, where), 1));
+          } else if (mesh.indices.length !== mesh.numVertices ||
+                     (ext.group !== undefined && ext.compactVertices === true && mesh.numVertices > 0)) {
+            // Without an index accessor the vertices are drawn in order (as the C++ reader rules).
+            throw new Error(`${EXTENSION_NAME}: a non-indexed primitive cannot hold an indexed stream`);
           }
         }));
       }

@@ -199,6 +199,166 @@ try {
   }
   if (!packedFiles.length) console.log('note: no packed.glb (hullpack pack not available); checked the make_glb.mjs GLB only');
 
+  // 5. Every packed GLB against the C++ reader (`hullpack unpack` wrote X.ref.glb: the same
+  // document, each compressed primitive decoded into plain accessors, skin weights renormalized).
+  // (a) What the plugin hands three.js for each compressed accessor (component type, item size,
+  // normalized flag, every byte) must be the C++ accessor, with the decoder on the main thread and
+  // in the worker. It is read straight from the plugin, before three's SkinnedMesh rescales float
+  // weights in place. (b) The whole GLTFLoader path: every mesh's geometry equals that of the
+  // reference file loaded by three without the plugin.
+  const refPairs = ['skinned.packed', 'packed', 'packed_khr']
+    .filter((f) => fs.existsSync(path.join(work, `${f}.glb`)) && fs.existsSync(path.join(work, `${f}.ref.glb`)));
+  const TYPED = { 5120: 'Int8Array', 5121: 'Uint8Array', 5122: 'Int16Array', 5123: 'Uint16Array', 5125: 'Uint32Array', 5126: 'Float32Array' };
+  const COMPONENTS = { SCALAR: 1, VEC2: 2, VEC3: 3, VEC4: 4, MAT2: 4, MAT3: 9, MAT4: 16 };
+  const readGlb = (file) => {
+    const glb = fs.readFileSync(path.join(work, file));
+    const jsonLength = glb.readUInt32LE(12);
+    const doc = JSON.parse(glb.subarray(20, 20 + jsonLength).toString('utf8'));
+    const binStart = 20 + jsonLength + 8;
+    return { doc, bin: glb.subarray(binStart, binStart + glb.readUInt32LE(20 + jsonLength)) };
+  };
+  for (const base of refPairs) {
+    const packed = readGlb(`${base}.glb`);
+    const refGlb = readGlb(`${base}.ref.glb`);
+    // The accessors the streams supply: those without data in the packed file.
+    const expected = {};
+    packed.doc.accessors.forEach((acc, i) => {
+      if (acc.bufferView !== undefined) return;
+      const r = refGlb.doc.accessors[i];
+      const bv = refGlb.doc.bufferViews[r.bufferView];
+      const size = { 5120: 1, 5121: 1, 5122: 2, 5123: 2, 5125: 4, 5126: 4 }[r.componentType];
+      const n = COMPONENTS[r.type];
+      if (bv.byteStride && bv.byteStride !== n * size) throw new Error(`${base}.ref.glb accessor ${i}: interleaved`);
+      const start = (bv.byteOffset || 0) + (r.byteOffset || 0);
+      expected[i] = {
+        type: TYPED[r.componentType], itemSize: n, normalized: r.normalized === true,
+        bytes: [...refGlb.bin.subarray(start, start + r.count * n * size)],
+        semantic: null,
+      };
+    });
+    for (const m of packed.doc.meshes) {
+      for (const prim of m.primitives) {
+        for (const [name, i] of Object.entries(prim.attributes)) if (expected[i]) expected[i].semantic = name;
+        if (prim.indices !== undefined && expected[prim.indices]) expected[prim.indices].semantic = 'indices';
+      }
+    }
+    const page5 = await context.newPage();
+    page5.on('pageerror', (e) => errors.push(String(e)));
+    await page5.goto(`${url}/samples/web/index.html?glb=/__work/${base}.glb&worker=1`);
+    await page5.evaluate(() => window.hullpackViewer.ready);
+    const got = await page5.evaluate(async ({ base: b }) => {
+      const { GLTFLoader } = await import('three/addons/loaders/GLTFLoader.js');
+      const dm = await import('/web/hullpack_decoder.js');
+      const { HullpackMeshCompressionPlugin } = await import('/web/hullpack_gltf_plugin.js');
+      const wasmUrl = '/samples/web/dist/hullpack_decoder_wasm.wasm';
+      const buffer = await (await fetch(`/__work/${b}.glb`)).arrayBuffer();
+      const view = new DataView(buffer);
+      const jsonLength = view.getUint32(12, true);
+      const json = JSON.parse(new TextDecoder().decode(new Uint8Array(buffer, 20, jsonLength)));
+      const binStart = 20 + jsonLength + 8;
+      // The parser interface beforeRoot() uses: the JSON, bufferViews, and loadAccessor (replaced).
+      const parser = {
+        json,
+        getDependency: async (type, i) => {
+          if (type !== 'bufferView') throw new Error(`unexpected dependency ${type}`);
+          const bv = json.bufferViews[i];
+          return buffer.slice(binStart + (bv.byteOffset || 0), binStart + (bv.byteOffset || 0) + bv.byteLength);
+        },
+        loadAccessor: async () => { throw new Error('loadAccessor before beforeRoot finished'); },
+      };
+      const accessorsOf = async (decoder) => {
+        const plugin = new HullpackMeshCompressionPlugin(parser, decoder);
+        await plugin.beforeRoot();
+        const out = {};
+        for (const [i, a] of plugin.accessors) {
+          out[i] = { type: a.array.constructor.name, itemSize: a.itemSize, normalized: a.normalized,
+            bytes: [...new Uint8Array(a.array.buffer, a.array.byteOffset, a.array.byteLength)] };
+        }
+        return out;
+      };
+      const mainDecoder = await dm.createDecoder({ wasmUrl });
+      const main = await accessorsOf(mainDecoder);
+      // An accessor whose count is not the decoded data's is rejected (as the C++ reader does).
+      const bad = JSON.parse(JSON.stringify(json));
+      const victim = bad.accessors.findIndex((acc) => acc.bufferView === undefined);
+      bad.accessors[victim].count += 1;
+      let badCount = 'accepted';
+      try {
+        await new HullpackMeshCompressionPlugin({ ...parser, json: bad }, mainDecoder).beforeRoot();
+      } catch (e) {
+        badCount = e.message;
+      }
+      const worker = await dm.createWorkerDecoder({ wasmUrl });
+      const inWorker = await accessorsOf(worker);
+      // (b) Whole loader: a digest of every mesh's geometry (all attributes and the index).
+      const digest = (a) => {
+        if (!a) return 'none';
+        if (a.isInterleavedBufferAttribute) return 'interleaved';
+        const bytes = new Uint8Array(a.array.buffer, a.array.byteOffset, a.array.byteLength);
+        let h = 2166136261;
+        for (let k = 0; k < bytes.length; ++k) h = Math.imul(h ^ bytes[k], 16777619) >>> 0;
+        return `${a.array.constructor.name}/${a.itemSize}/${a.normalized}/${a.count}/${h.toString(16)}`;
+      };
+      const geometries = async (fileUrl, decoder) => {
+        const loader = new GLTFLoader();
+        if (decoder) loader.register((p) => new HullpackMeshCompressionPlugin(p, decoder));
+        const gltf = await loader.loadAsync(fileUrl);
+        const out = [];
+        for (let i = 0; i < (gltf.parser.json.meshes || []).length; ++i) {
+          const o = await gltf.parser.getDependency('mesh', i);
+          for (const m of o.isMesh ? [o] : o.children.filter((c) => c.isMesh)) {
+            const g = { index: digest(m.geometry.index) };
+            for (const [name, a] of Object.entries(m.geometry.attributes)) g[name] = digest(a);
+            out.push(g);
+          }
+        }
+        return out;
+      };
+      const loaded = {
+        ref: await geometries(`/__work/${b}.ref.glb`, null),
+        main: await geometries(`/__work/${b}.glb`, mainDecoder),
+        worker: await geometries(`/__work/${b}.glb`, worker),
+      };
+      worker.terminate();
+      return { main, inWorker, loaded, badCount };
+    }, { base });
+    for (const [where, accs] of [['main thread', got.main], ['worker', got.inWorker]]) {
+      const wrong = [];
+      for (const [i, e] of Object.entries(expected)) {
+        const g = accs[i];
+        if (!g) { wrong.push(`accessor ${i} (${e.semantic}) not supplied`); continue; }
+        if (g.type !== e.type || g.itemSize !== e.itemSize || g.normalized !== e.normalized) {
+          wrong.push(`accessor ${i} (${e.semantic}) ${g.type}/${g.itemSize}/${g.normalized} != C++ ${e.type}/${e.itemSize}/${e.normalized}`);
+          continue;
+        }
+        const n = e.bytes.length;
+        let diff = g.bytes.length === n ? 0 : -1;
+        let first = -1;
+        for (let k = 0; diff >= 0 && k < n; ++k) if (g.bytes[k] !== e.bytes[k]) { ++diff; if (first < 0) first = k; }
+        if (diff) {
+          let detail = diff < 0 ? `${g.bytes.length} bytes != C++ ${n}` : `${diff} bytes differ`;
+          if (first >= 0 && e.type === 'Float32Array') {
+            const f = (bytes) => new Float32Array(Uint8Array.from(bytes.slice(first & ~15, (first & ~15) + 16)).buffer);
+            detail += `, first at value ${first >> 2}: [${[...f(g.bytes)]}] != C++ [${[...f(e.bytes)]}]`;
+          }
+          wrong.push(`accessor ${i} (${e.semantic}): ${detail}`);
+        }
+      }
+      const names = [...new Set(Object.values(expected).map((e) => e.semantic))].sort().join(' ');
+      check(wrong.length === 0 && Object.keys(expected).length > 0,
+        `${base}.glb, ${where}: the plugin's ${Object.keys(expected).length} decoded accessors (${names}) == C++ reader's, byte for byte${wrong.length ? `: ${wrong.slice(0, 4).join('; ')}` : ''}`);
+    }
+    const same = (x, y) => JSON.stringify(x) === JSON.stringify(y);
+    check(got.loaded.ref.length > 0 && same(got.loaded.main, got.loaded.ref) && same(got.loaded.worker, got.loaded.ref),
+      `${base}.glb through GLTFLoader (main thread and worker): every mesh's geometry == the C++-decoded file's` +
+      (same(got.loaded.main, got.loaded.ref) ? '' : `: ${JSON.stringify(got.loaded.main).slice(0, 300)} != ${JSON.stringify(got.loaded.ref).slice(0, 300)}`));
+    check(/does not match the stream/.test(got.badCount), `${base}.glb with an accessor count off by one: ${got.badCount}`);
+    if (base === 'skinned.packed') await page5.screenshot({ path: path.join(work, 'skinned.png') });
+  }
+  if (fs.existsSync(path.join(work, 'skinned.packed.glb'))) {
+    check(refPairs.includes('skinned.packed'), 'skinned GLB compared with the C++ reader');
+  }
+
   check(errors.length === 0, `no page errors${errors.length ? `: ${errors.join(' | ')}` : ''}`);
 } catch (e) {
   console.log(`FAIL: ${e && e.stack ? e.stack : e}`);
