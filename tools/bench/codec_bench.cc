@@ -3,12 +3,21 @@
 // and -cl 10): bytes, bits per vertex, encode and decode time (median of repeats), maximum position
 // error. Prints a table and writes CSV.
 //
-//   codec_bench FOLDER [--repeats 5] [--csv out.csv] [--qp 14] [--qn 10] [--qt 12]
+//   codec_bench FOLDER [--repeats 5] [--csv out.csv] [--qp 14] [--qn 10] [--qt 12] [--only a,b]
+//               [--clock wall|cpu]
+//
+// The repeats are interleaved (one encode and one decode of each codec per round), so that a load
+// change during the run affects the three codecs alike. --clock cpu times the process's CPU time
+// instead of wall time: steadier on a loaded machine (the time spent waiting for a core is left
+// out), the same on a quiet one.
+#include <time.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -24,8 +33,28 @@ using hullpack::Mesh;
 
 struct Settings {
   int repeats = 5, qp = 14, qn = 10, qt = 12;
+  bool cpu_clock = false;
   std::string csv;
+  std::vector<std::string> only;  // mesh names (file names without extension); empty: all
 };
+
+double NowMs(bool cpu) {
+  timespec t;
+  clock_gettime(cpu ? CLOCK_PROCESS_CPUTIME_ID : CLOCK_MONOTONIC, &t);
+  return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+}
+
+template <typename F>
+double TimeMs(bool cpu, F&& run) {
+  const double t0 = NowMs(cpu);
+  run();
+  return NowMs(cpu) - t0;
+}
+
+double Median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0.0 : v[v.size() / 2];
+}
 
 // Every mesh of the file as one: the codecs compress one mesh at a time.
 Mesh Merge(const hullpack::Scene& scene) {
@@ -53,35 +82,58 @@ struct Row {
   double encode_ms[3] = {0, 0, 0}, decode_ms[3] = {0, 0, 0}, error[3] = {0, 0, 0};
 };
 
-bool RunDraco(const Mesh& mesh, const Settings& s, int level, Row& row, int slot) {
-  std::unique_ptr<draco::Mesh> d = hullpack::ToDracoMesh(mesh);
-  if (!d) return false;
+// Draco at one level: the mesh converted once (not timed), then encoded and decoded per round.
+struct DracoRun {
+  int level = 7;
+  std::unique_ptr<draco::Mesh> mesh;
   std::vector<uint8_t> bytes;
-  row.encode_ms[slot] = hullpack::MedianMs(s.repeats, [&] { bytes = hullpack::DracoEncode(*d, s.qp, s.qn, s.qt, level); });
-  if (bytes.empty()) return false;
-  row.bytes[slot] = bytes.size();
   Mesh decoded;
-  row.decode_ms[slot] = hullpack::MedianMs(s.repeats, [&] { decoded = hullpack::DracoDecodePositions(bytes); });
-  if (decoded.positions.empty()) return false;
-  row.error[slot] = hullpack::MaxVertexDistance(mesh, decoded);
-  return true;
-}
+};
 
-bool RunOurs(const Mesh& mesh, const Settings& s, Row& row) {
+// Every codec encodes and decodes once per round; times are medians over the rounds.
+bool RunAll(const Mesh& mesh, const Settings& s, Row& row) {
   hullpack::MeshCodecSettings cs;
   cs.position_bits = s.qp;
   cs.normal_bits = s.qn;
   cs.uv_bits = s.qt;
+  DracoRun draco[2];
+  draco[0].level = 7;
+  draco[1].level = 10;
+  for (DracoRun& d : draco) {
+    d.mesh = hullpack::ToDracoMesh(mesh);
+    if (!d.mesh) return false;
+  }
+  std::vector<double> enc[3], dec[3];
   hullpack::Result<hullpack::EncodedMesh> encoded = hullpack::Status(hullpack::StatusCode::kInternal, "");
-  row.encode_ms[0] = hullpack::MedianMs(s.repeats, [&] { encoded = hullpack::EncodeMesh(mesh, {}, cs); });
-  if (!encoded.ok()) return false;
-  row.bytes[0] = encoded->stream.size();
   hullpack::Result<Mesh> decoded = hullpack::Status(hullpack::StatusCode::kInternal, "");
-  row.decode_ms[0] = hullpack::MedianMs(s.repeats, [&] {
-    decoded = hullpack::DecodeMesh(encoded->stream.data(), encoded->stream.size(), nullptr, row.name);
-  });
-  if (!decoded.ok()) return false;
+  for (int round = 0; round < s.repeats; ++round) {
+    enc[0].push_back(TimeMs(s.cpu_clock, [&] { encoded = hullpack::EncodeMesh(mesh, {}, cs); }));
+    if (!encoded.ok()) return false;
+    for (int i = 0; i < 2; ++i) {
+      DracoRun& d = draco[i];
+      enc[i + 1].push_back(TimeMs(s.cpu_clock, [&] { d.bytes = hullpack::DracoEncode(*d.mesh, s.qp, s.qn, s.qt, d.level); }));
+      if (d.bytes.empty()) return false;
+    }
+    dec[0].push_back(TimeMs(s.cpu_clock, [&] {
+      decoded = hullpack::DecodeMesh(encoded->stream.data(), encoded->stream.size(), nullptr, row.name);
+    }));
+    if (!decoded.ok()) return false;
+    for (int i = 0; i < 2; ++i) {
+      DracoRun& d = draco[i];
+      dec[i + 1].push_back(TimeMs(s.cpu_clock, [&] { d.decoded = hullpack::DracoDecodePositions(d.bytes); }));
+      if (d.decoded.positions.empty()) return false;
+    }
+  }
+  row.bytes[0] = encoded->stream.size();
   row.error[0] = hullpack::MaxVertexDistance(mesh, decoded.value());
+  for (int i = 0; i < 2; ++i) {
+    row.bytes[i + 1] = draco[i].bytes.size();
+    row.error[i + 1] = hullpack::MaxVertexDistance(mesh, draco[i].decoded);
+  }
+  for (int i = 0; i < 3; ++i) {
+    row.encode_ms[i] = Median(enc[i]);
+    row.decode_ms[i] = Median(dec[i]);
+  }
   return true;
 }
 
@@ -89,7 +141,9 @@ bool RunOurs(const Mesh& mesh, const Settings& s, Row& row) {
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: codec_bench FOLDER [--repeats N] [--csv FILE] [--qp N] [--qn N] [--qt N]\n");
+    std::fprintf(stderr,
+                 "usage: codec_bench FOLDER [--repeats N] [--csv FILE] [--qp N] [--qn N] [--qt N] [--only a,b] "
+                 "[--clock wall|cpu]\n");
     return 64;
   }
   Settings s;
@@ -101,7 +155,16 @@ int main(int argc, char** argv) {
     else if (flag == "--qp") s.qp = std::atoi(argv[i + 1]);
     else if (flag == "--qn") s.qn = std::atoi(argv[i + 1]);
     else if (flag == "--qt") s.qt = std::atoi(argv[i + 1]);
-    else {
+    else if (flag == "--clock" && (std::strcmp(argv[i + 1], "cpu") == 0 || std::strcmp(argv[i + 1], "wall") == 0)) {
+      s.cpu_clock = std::strcmp(argv[i + 1], "cpu") == 0;
+    } else if (flag == "--only") {
+      std::string list = argv[i + 1];
+      for (size_t p = 0; p <= list.size();) {
+        const size_t q = std::min(list.find(',', p), list.size());
+        if (q > p) s.only.push_back(list.substr(p, q - p));
+        p = q + 1;
+      }
+    } else {
       std::fprintf(stderr, "codec_bench: unknown option %s\n", flag.c_str());
       return 64;
     }
@@ -111,10 +174,17 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "codec_bench: %s: cannot open folder\n", folder.c_str());
     return 1;
   }
+  if (!s.only.empty()) {
+    std::vector<std::string> kept;
+    for (const std::string& f : files) {
+      if (std::find(s.only.begin(), s.only.end(), f.substr(0, f.size() - 4)) != s.only.end()) kept.push_back(f);
+    }
+    files = kept;
+  }
   std::vector<Row> rows;
-  std::printf("%-18s %8s %8s | %8s %8s %8s | %6s %6s | %6s %6s %6s | %6s %6s %6s | %9s %9s\n", "mesh", "tris", "verts",
-              "ours B", "cl7 B", "cl10 B", "/cl7", "/cl10", "enc", "cl7", "cl10", "dec", "cl7", "cl10", "err ours",
-              "err cl10");
+  std::printf("%-18s %8s %8s | %8s %8s %8s | %6s %6s | %6s %6s %6s | %6s %6s %6s | %7s %7s | %9s %9s\n", "mesh", "tris",
+              "verts", "ours B", "cl7 B", "cl10 B", "/cl7", "/cl10", "enc", "cl7", "cl10", "dec", "cl7", "cl10", "enc/cl7",
+              "dec/cl7", "err ours", "err cl10");
   for (const std::string& file : files) {
     hullpack::Result<hullpack::Scene> scene = hullpack::ReadScene(folder + "/" + file);
     if (!scene.ok()) {
@@ -126,15 +196,16 @@ int main(int argc, char** argv) {
     row.name = file.substr(0, file.size() - 4);
     row.triangles = mesh.triangle_count();
     row.vertices = mesh.vertex_count();
-    if (!RunOurs(mesh, s, row) || !RunDraco(mesh, s, 7, row, 1) || !RunDraco(mesh, s, 10, row, 2)) {
+    if (!RunAll(mesh, s, row)) {
       std::fprintf(stderr, "codec_bench: %s: a codec failed\n", file.c_str());
       continue;
     }
-    std::printf("%-18s %8zu %8zu | %8zu %8zu %8zu | %6.3f %6.3f | %6.1f %6.1f %6.1f | %6.1f %6.1f %6.1f | %9.3g %9.3g\n",
-                row.name.c_str(), row.triangles, row.vertices, row.bytes[0], row.bytes[1], row.bytes[2],
-                double(row.bytes[0]) / row.bytes[1], double(row.bytes[0]) / row.bytes[2], row.encode_ms[0],
-                row.encode_ms[1], row.encode_ms[2], row.decode_ms[0], row.decode_ms[1], row.decode_ms[2], row.error[0],
-                row.error[2]);
+    std::printf(
+        "%-18s %8zu %8zu | %8zu %8zu %8zu | %6.3f %6.3f | %6.2f %6.2f %6.2f | %6.2f %6.2f %6.2f | %7.2f %7.2f | %9.3g %9.3g\n",
+        row.name.c_str(), row.triangles, row.vertices, row.bytes[0], row.bytes[1], row.bytes[2],
+        double(row.bytes[0]) / row.bytes[1], double(row.bytes[0]) / row.bytes[2], row.encode_ms[0], row.encode_ms[1],
+        row.encode_ms[2], row.decode_ms[0], row.decode_ms[1], row.decode_ms[2], row.encode_ms[0] / row.encode_ms[1],
+        row.decode_ms[0] / row.decode_ms[1], row.error[0], row.error[2]);
     rows.push_back(row);
   }
   double log7 = 0, log10 = 0;
@@ -143,8 +214,9 @@ int main(int argc, char** argv) {
     log10 += std::log(double(r.bytes[0]) / r.bytes[2]);
   }
   if (!rows.empty()) {
-    std::printf("geometric mean of bytes: ours/cl7 %.3f, ours/cl10 %.3f over %zu meshes (median of %d runs per time)\n",
-                std::exp(log7 / rows.size()), std::exp(log10 / rows.size()), rows.size(), s.repeats);
+    std::printf("geometric mean of bytes: ours/cl7 %.3f, ours/cl10 %.3f over %zu meshes (median of %d interleaved runs per %s time)\n",
+                std::exp(log7 / rows.size()), std::exp(log10 / rows.size()), rows.size(), s.repeats,
+                s.cpu_clock ? "CPU" : "wall");
   }
   if (!s.csv.empty()) {
     std::string text =
