@@ -4,12 +4,12 @@
 // error. Prints a table and writes CSV.
 //
 //   codec_bench FOLDER [--repeats 5] [--csv out.csv] [--qp 14] [--qn 10] [--qt 12] [--only a,b]
-//               [--clock wall|cpu]
+//               [--clock wall|cpu] [--ours-only]
 //
 // The repeats are interleaved (one encode and one decode of each codec per round), so that a load
 // change during the run affects the three codecs alike. --clock cpu times the process's CPU time
 // instead of wall time: steadier on a loaded machine (the time spent waiting for a core is left
-// out), the same on a quiet one.
+// out), the same on a quiet one. --ours-only skips Draco (profiling runs, size checks).
 #include <time.h>
 
 #include <algorithm>
@@ -34,6 +34,7 @@ using hullpack::Mesh;
 struct Settings {
   int repeats = 5, qp = 14, qn = 10, qt = 12;
   bool cpu_clock = false;
+  bool ours_only = false;
   std::string csv;
   std::vector<std::string> only;  // mesh names (file names without extension); empty: all
 };
@@ -99,7 +100,9 @@ bool RunAll(const Mesh& mesh, const Settings& s, Row& row) {
   DracoRun draco[2];
   draco[0].level = 7;
   draco[1].level = 10;
-  for (DracoRun& d : draco) {
+  const int num_draco = s.ours_only ? 0 : 2;
+  for (int i = 0; i < num_draco; ++i) {
+    DracoRun& d = draco[i];
     d.mesh = hullpack::ToDracoMesh(mesh);
     if (!d.mesh) return false;
   }
@@ -109,7 +112,7 @@ bool RunAll(const Mesh& mesh, const Settings& s, Row& row) {
   for (int round = 0; round < s.repeats; ++round) {
     enc[0].push_back(TimeMs(s.cpu_clock, [&] { encoded = hullpack::EncodeMesh(mesh, {}, cs); }));
     if (!encoded.ok()) return false;
-    for (int i = 0; i < 2; ++i) {
+    for (int i = 0; i < num_draco; ++i) {
       DracoRun& d = draco[i];
       enc[i + 1].push_back(TimeMs(s.cpu_clock, [&] { d.bytes = hullpack::DracoEncode(*d.mesh, s.qp, s.qn, s.qt, d.level); }));
       if (d.bytes.empty()) return false;
@@ -118,7 +121,7 @@ bool RunAll(const Mesh& mesh, const Settings& s, Row& row) {
       decoded = hullpack::DecodeMesh(encoded->stream.data(), encoded->stream.size(), nullptr, row.name);
     }));
     if (!decoded.ok()) return false;
-    for (int i = 0; i < 2; ++i) {
+    for (int i = 0; i < num_draco; ++i) {
       DracoRun& d = draco[i];
       dec[i + 1].push_back(TimeMs(s.cpu_clock, [&] { d.decoded = hullpack::DracoDecodePositions(d.bytes); }));
       if (d.decoded.positions.empty()) return false;
@@ -126,7 +129,7 @@ bool RunAll(const Mesh& mesh, const Settings& s, Row& row) {
   }
   row.bytes[0] = encoded->stream.size();
   row.error[0] = hullpack::MaxVertexDistance(mesh, decoded.value());
-  for (int i = 0; i < 2; ++i) {
+  for (int i = 0; i < num_draco; ++i) {
     row.bytes[i + 1] = draco[i].bytes.size();
     row.error[i + 1] = hullpack::MaxVertexDistance(mesh, draco[i].decoded);
   }
@@ -143,22 +146,31 @@ int main(int argc, char** argv) {
   if (argc < 2) {
     std::fprintf(stderr,
                  "usage: codec_bench FOLDER [--repeats N] [--csv FILE] [--qp N] [--qn N] [--qt N] [--only a,b] "
-                 "[--clock wall|cpu]\n");
+                 "[--clock wall|cpu] [--ours-only]\n");
     return 64;
   }
   Settings s;
   const std::string folder = argv[1];
-  for (int i = 2; i + 1 < argc; i += 2) {
+  for (int i = 2; i < argc; ++i) {
     const std::string flag = argv[i];
-    if (flag == "--repeats") s.repeats = std::max(1, std::atoi(argv[i + 1]));
-    else if (flag == "--csv") s.csv = argv[i + 1];
-    else if (flag == "--qp") s.qp = std::atoi(argv[i + 1]);
-    else if (flag == "--qn") s.qn = std::atoi(argv[i + 1]);
-    else if (flag == "--qt") s.qt = std::atoi(argv[i + 1]);
-    else if (flag == "--clock" && (std::strcmp(argv[i + 1], "cpu") == 0 || std::strcmp(argv[i + 1], "wall") == 0)) {
-      s.cpu_clock = std::strcmp(argv[i + 1], "cpu") == 0;
+    if (flag == "--ours-only") {
+      s.ours_only = true;
+      continue;
+    }
+    const char* value = i + 1 < argc ? argv[++i] : nullptr;
+    if (!value) {
+      std::fprintf(stderr, "codec_bench: %s needs a value\n", flag.c_str());
+      return 64;
+    }
+    if (flag == "--repeats") s.repeats = std::max(1, std::atoi(value));
+    else if (flag == "--csv") s.csv = value;
+    else if (flag == "--qp") s.qp = std::atoi(value);
+    else if (flag == "--qn") s.qn = std::atoi(value);
+    else if (flag == "--qt") s.qt = std::atoi(value);
+    else if (flag == "--clock" && (std::strcmp(value, "cpu") == 0 || std::strcmp(value, "wall") == 0)) {
+      s.cpu_clock = std::strcmp(value, "cpu") == 0;
     } else if (flag == "--only") {
-      std::string list = argv[i + 1];
+      const std::string list = value;
       for (size_t p = 0; p <= list.size();) {
         const size_t q = std::min(list.find(',', p), list.size());
         if (q > p) s.only.push_back(list.substr(p, q - p));
@@ -213,7 +225,7 @@ int main(int argc, char** argv) {
     log7 += std::log(double(r.bytes[0]) / r.bytes[1]);
     log10 += std::log(double(r.bytes[0]) / r.bytes[2]);
   }
-  if (!rows.empty()) {
+  if (!rows.empty() && !s.ours_only) {
     std::printf("geometric mean of bytes: ours/cl7 %.3f, ours/cl10 %.3f over %zu meshes (median of %d interleaved runs per %s time)\n",
                 std::exp(log7 / rows.size()), std::exp(log10 / rows.size()), rows.size(), s.repeats,
                 s.cpu_clock ? "CPU" : "wall");
