@@ -33,6 +33,9 @@ Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges, 
     int64_t r[kDim];
     bool ok = true;
     int intra = 0;
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC unroll 4
+#endif
     for (int k = 0; k < kDim; ++k) {
       const int64_t p = pred[k] < 0 ? 0 : (pred[k] > maxq ? maxq : pred[k]);
       r[k] = DecodeResidual(dec, row[stride * k + intra]);

@@ -51,6 +51,8 @@ class Front {
     uint32_t edge;  // triangle * 4 + slot of the decoded triangle this gate is an edge of
     uint32_t apex;  // that triangle's vertex opposite the gate (at the slot)
     int32_t next_out, next_in;
+    uint32_t open;
+    uint32_t unused;  // 32 bytes: indexing by a shift
   };
   static constexpr uint32_t kNoEdge = 0xFFFFFFFFu;
   static constexpr int kMaxScan = 64;
@@ -67,9 +69,7 @@ class Front {
   }
   uint32_t AddVertex() {
     if (num_vertices_ == vertex_capacity_) GrowVertices(2 * vertex_capacity_ + 16);
-    head_out_[num_vertices_] = -1;
-    head_in_[num_vertices_] = -1;
-    deg_[num_vertices_] = 0;
+    vertices_[num_vertices_] = Vertex{-1, -1, 0};
     return num_vertices_++;
   }
   uint32_t num_vertices() const { return num_vertices_; }
@@ -77,21 +77,21 @@ class Front {
   // Pops the next gate; returns -1 if it was closed meanwhile.
   int32_t Pop() {
     const int32_t g = stack_[--stack_top_];
-    return open_[g] ? g : -1;
+    return gates_[g].open ? g : -1;
   }
   const Gate& gate(int32_t g) const { return gates_[g]; }
 
   // The newest open gate leaving v / entering v, or -1 (closed gates at the head are dropped).
   int32_t HeadOut(uint32_t v) {
-    int32_t g = head_out_[v];
-    while (g >= 0 && !open_[g]) g = gates_[g].next_out;
-    head_out_[v] = g;
+    int32_t g = vertices_[v].head_out;
+    while (g >= 0 && !gates_[g].open) g = gates_[g].next_out;
+    vertices_[v].head_out = g;
     return g;
   }
   int32_t HeadIn(uint32_t v) {
-    int32_t g = head_in_[v];
-    while (g >= 0 && !open_[g]) g = gates_[g].next_in;
-    head_in_[v] = g;
+    int32_t g = vertices_[v].head_in;
+    while (g >= 0 && !gates_[g].open) g = gates_[g].next_in;
+    vertices_[v].head_in = g;
     return g;
   }
 
@@ -103,8 +103,9 @@ class Front {
   };
   Candidates Look(uint32_t a, uint32_t b) {
     const int32_t r = HeadOut(b), l = HeadIn(a);
-    const uint32_t d = deg_[b] < 7 ? deg_[b] : 7;
-    const uint32_t da = deg_[a] >= 5 ? 1 : 0;
+    const uint32_t db = vertices_[b].deg;
+    const uint32_t d = db < 7 ? db : 7;
+    const uint32_t da = vertices_[a].deg >= 5 ? 1 : 0;
     Candidates c;
     c.context = int((((r >= 0) + 2 * (l >= 0)) * 2 + da) * 8 + d);
     c.right = r >= 0 ? int64_t(gates_[r].b) : -1;
@@ -112,7 +113,7 @@ class Front {
     return c;
   }
 
-  void Close(int32_t g) { open_[g] = 0; }
+  void Close(int32_t g) { gates_[g].open = 0; }
 
   // A new triangle edge u->v (edge = triangle * 4 + slot, the slot being the corner opposite the
   // edge): closes the open gate v->u if there is one (the two triangles become neighbours), else
@@ -124,18 +125,18 @@ class Front {
   void AddHalfEdge(uint32_t u, uint32_t v, uint32_t edge, uint32_t apex) {
     int32_t prev = -1;
     int scanned = 0;
-    for (int32_t g = head_out_[v]; g >= 0 && scanned < kMaxScan;) {
+    for (int32_t g = vertices_[v].head_out; g >= 0 && scanned < kMaxScan;) {
       Gate& x = gates_[g];
       const int32_t next = x.next_out;
-      if (!open_[g]) {  // drop a closed gate from v's list on the way
+      if (!x.open) {  // drop a closed gate from v's list on the way
         if (prev < 0) {
-          head_out_[v] = next;
+          vertices_[v].head_out = next;
         } else {
           gates_[prev].next_out = next;
         }
       } else if (x.b == u) {
         Link(edge, apex, x.edge, x.apex);
-        open_[g] = 0;
+        x.open = 0;
         return;
       } else {
         prev = g;
@@ -145,18 +146,17 @@ class Front {
     }
     if (num_gates_ == gate_capacity_) GrowGates(2 * gate_capacity_ + 16);
     const int32_t id = int32_t(num_gates_++);
-    gates_[id] = Gate{u, v, edge, apex, head_out_[u], head_in_[v]};
-    open_[id] = 1;
-    head_out_[u] = id;
-    head_in_[v] = id;
+    gates_[id] = Gate{u, v, edge, apex, vertices_[u].head_out, vertices_[v].head_in, 1, 0};
+    vertices_[u].head_out = id;
+    vertices_[v].head_in = id;
     stack_[stack_top_++] = id;
   }
 
   // Triangle `tri` = (x, y, z) starts a new part.
   void StartTriangle(uint32_t tri, uint32_t x, uint32_t y, uint32_t z) {
-    ++deg_[x];
-    ++deg_[y];
-    ++deg_[z];
+    ++vertices_[x].deg;
+    ++vertices_[y].deg;
+    ++vertices_[z].deg;
     AddHalfEdge(x, y, tri * 4 + 2, z);
     AddHalfEdge(y, z, tri * 4 + 0, x);
     AddHalfEdge(z, x, tri * 4 + 1, y);
@@ -165,10 +165,10 @@ class Front {
   // when `flipped`.
   void Attach(int32_t g, uint32_t tri, uint32_t a, uint32_t b, uint32_t c, bool flipped) {
     Link(tri * 4 + 2, c, gates_[g].edge, gates_[g].apex);
-    open_[g] = 0;
-    ++deg_[a];
-    ++deg_[b];
-    ++deg_[c];
+    gates_[g].open = 0;
+    ++vertices_[a].deg;
+    ++vertices_[b].deg;
+    ++vertices_[c].deg;
     AddHalfEdge(a, c, tri * 4 + (flipped ? 1 : 0), b);
     AddHalfEdge(c, b, tri * 4 + (flipped ? 0 : 1), a);
   }
@@ -207,26 +207,25 @@ class Front {
     std::copy(a->get(), a->get() + used, b.get());
     *a = std::move(b);
   }
-  void GrowVertices(size_t capacity) {
-    Grow(&head_out_, num_vertices_, capacity);
-    Grow(&head_in_, num_vertices_, capacity);
-    Grow(&deg_, num_vertices_, capacity);
+  O3DGC_NOINLINE void GrowVertices(size_t capacity) {
+    Grow(&vertices_, num_vertices_, capacity);
     vertex_capacity_ = capacity;
   }
-  void GrowGates(size_t capacity) {
+  O3DGC_NOINLINE void GrowGates(size_t capacity) {
     Grow(&gates_, num_gates_, capacity);
-    Grow(&open_, num_gates_, capacity);
     Grow(&stack_, stack_top_, capacity);  // never more entries than gates
     gate_capacity_ = capacity;
   }
 
   // Gates are never reused: at most one per AddHalfEdge, each on the stack once.
   std::unique_ptr<Gate[]> gates_;
-  std::unique_ptr<uint16_t[]> open_;  // not a char type: see SymbolModel::n
   std::unique_ptr<int32_t[]> stack_;
   size_t num_gates_ = 0, gate_capacity_ = 0, stack_top_ = 0;
-  std::unique_ptr<int32_t[]> head_out_, head_in_;
-  std::unique_ptr<uint32_t[]> deg_;
+  struct Vertex {
+    int32_t head_out, head_in;  // newest gate leaving / entering the vertex, -1 if none
+    uint32_t deg;               // triangles at the vertex so far
+  };
+  std::unique_ptr<Vertex[]> vertices_;
   uint32_t num_vertices_ = 0;
   size_t vertex_capacity_ = 0;
   std::vector<uint32_t> opp_, oppv_;

@@ -9,6 +9,8 @@
 #include <memory>
 #include <vector>
 
+#include "arithmetic_coder.h"  // O3DGC_INLINE
+
 namespace o3dgc {
 
 constexpr uint32_t kNoVertex = 0xFFFFFFFFu;
@@ -217,7 +219,7 @@ inline int64_t Mean2(int64_t s) { return s >= 0 ? (s + 1) >> 1 : -((1 - s) >> 1)
 // Multi-parallelogram prediction with kDim components (see PredictParallelogram) from c's
 // n_par parallelograms `par` (wedges with u, w and x coded, in wedge order).
 template <int kDim>
-inline PredictionContext PredictFromParallelograms(const Wedge* const* par, int n_par,
+O3DGC_INLINE PredictionContext PredictFromParallelograms(const Wedge* const* par, int n_par,
                                                    const WedgeTable& wedges, const uint8_t* done,
                                                    uint32_t c, uint32_t previous,
                                                    const int32_t* values, const uint32_t* magnitudes,
