@@ -92,10 +92,15 @@ Result<EncodedMesh> EncodeMesh(const Mesh& mesh, const std::vector<uint32_t>& gr
 Result<Mesh> DecodeMesh(const uint8_t* data, size_t size, std::vector<uint32_t>* groups, const std::string& name,
                         o3dgc::StreamInfo* info) {
   o3dgc::DecodedMesh d;
+  o3dgc::StreamInfo local_info;
+  if (!info) info = &local_info;
   const o3dgc::Status st = o3dgc::Decode(data, size, o3dgc::DecodeOptions(), &d, info);
   if (st != o3dgc::Status::kOk) {
     return Status(StatusCode::kParseError, name + ": compressed mesh stream: " + o3dgc::StatusName(st));
   }
+  // The original Open3DGC tool coded texture coordinates as OBJ has them (v up); the scene model,
+  // like glTF, has v down.
+  const bool obj_uvs = info->format == o3dgc::StreamFormat::kOpen3dgc2013;
   Mesh m;
   const size_t n = d.num_vertices();
   m.positions = std::move(d.positions);
@@ -104,6 +109,9 @@ Result<Mesh> DecodeMesh(const uint8_t* data, size_t size, std::vector<uint32_t>*
   for (o3dgc::DecodedFloatAttribute& a : d.float_attributes) {
     if (a.values.size() != n * a.dimension) continue;
     if (a.semantic == o3dgc::Semantic::kTexCoord && a.dimension == 2) {
+      if (obj_uvs) {
+        for (size_t i = 1; i < a.values.size(); i += 2) a.values[i] = 1.0f - a.values[i];
+      }
       m.uv_sets.push_back(std::move(a.values));
     } else if (a.semantic == o3dgc::Semantic::kColor && a.dimension == 4) {
       m.colors = std::move(a.values);

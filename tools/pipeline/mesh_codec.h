@@ -45,7 +45,9 @@ Result<EncodedMesh> EncodeMesh(const Mesh& mesh, const std::vector<uint32_t>& gr
                                const MeshCodecSettings& settings);
 
 // Decodes a stream into a mesh (name, material ids left empty) and its triangle groups. Skin weights
-// are normalized (NormalizeSkinWeights), as every decoder of packed files does.
+// are normalized (NormalizeSkinWeights), as every decoder of packed files does. Streams of the
+// original Open3DGC tool (StreamFormat::kOpen3dgc2013) carry OBJ-convention texture coordinates:
+// their v is flipped into the scene model's (glTF) convention.
 // Safe on untrusted bytes; `name` prefixes error messages. `info` (may be null) gets the part sizes.
 Result<Mesh> DecodeMesh(const uint8_t* data, size_t size, std::vector<uint32_t>* groups,
                         const std::string& name, o3dgc::StreamInfo* info = nullptr);

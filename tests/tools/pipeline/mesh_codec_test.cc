@@ -4,7 +4,14 @@
 
 #include "test_torus.h"
 
+#include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "o3dgc/o3dgc.h"
 
 namespace hullpack {
 namespace {
@@ -89,6 +96,45 @@ TEST(MeshCodec, MaxVertexDistanceIsSymmetricAndOrderFree) {
   Mesh far = b;
   far.positions[0] = 1e6f;
   EXPECT_GT(MaxVertexDistance(a, far), 9e5);
+}
+
+// A stream of the original Open3DGC tool (tests/o3dgc/vectors) holds OBJ texture coordinates; the
+// mesh comes out in the scene model's convention, so writing it as OBJ gives the original's vt back.
+TEST(MeshCodec, OriginalOpen3dgcStreamUvsComeOutInSceneConvention) {
+  const std::string path = std::string(HULLPACK_SOURCE_DIR) + "/tests/o3dgc/vectors/fox.binary.s3d";
+  std::ifstream file(path, std::ios::binary);
+  ASSERT_TRUE(file.good()) << path;
+  const std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  o3dgc::DecodedMesh raw;
+  ASSERT_EQ(o3dgc::Decode(bytes.data(), bytes.size(), o3dgc::DecodeOptions(), &raw), o3dgc::Status::kOk);
+  ASSERT_FALSE(raw.float_attributes.empty());
+  const std::vector<float>& obj_uv = raw.float_attributes[0].values;
+  o3dgc::StreamInfo info;
+  Result<Mesh> dec = DecodeMesh(bytes.data(), bytes.size(), nullptr, "fox", &info);
+  ASSERT_TRUE(dec.ok()) << dec.status().ToString();
+  EXPECT_EQ(info.format, o3dgc::StreamFormat::kOpen3dgc2013);
+  ASSERT_EQ(dec->uv_sets.size(), 1u);
+  ASSERT_EQ(dec->uv_sets[0].size(), obj_uv.size());
+  size_t differing = 0;
+  for (size_t i = 0; i < obj_uv.size(); i += 2) {
+    EXPECT_EQ(dec->uv_sets[0][i], obj_uv[i]);
+    EXPECT_EQ(dec->uv_sets[0][i + 1], 1.0f - obj_uv[i + 1]);
+    differing += obj_uv[i + 1] != 0.5f;
+  }
+  EXPECT_GT(differing, 0u);  // the flip is visible on this mesh
+  // A native stream's texture coordinates come back unflipped.
+  const Mesh in = FullTorus(6, 4);
+  Result<EncodedMesh> enc = EncodeMesh(in, {}, {});
+  ASSERT_TRUE(enc.ok());
+  Result<Mesh> native = DecodeMesh(enc->stream.data(), enc->stream.size(), nullptr, "t");
+  ASSERT_TRUE(native.ok());
+  float min_v = 1, max_v = 0;
+  for (size_t i = 1; i < native->uv_sets[0].size(); i += 2) {
+    min_v = std::min(min_v, native->uv_sets[0][i]);
+    max_v = std::max(max_v, native->uv_sets[0][i]);
+  }
+  EXPECT_NEAR(min_v, 0.0f, 1e-3);  // the torus's v runs 0 .. 3/4
+  EXPECT_NEAR(max_v, 0.75f, 1e-3);
 }
 
 TEST(MeshCodec, BadStreamsGiveErrors) {
