@@ -48,7 +48,7 @@ class Front {
  public:
   struct Gate {
     uint32_t a, b;
-    uint32_t edge;  // triangle * 4 + slot of the decoded triangle this gate is an edge of
+    uint32_t edge;  // the corner (triangle * 3 + slot) opposite this gate in its decoded triangle
     uint32_t apex;  // that triangle's vertex opposite the gate (at the slot)
     int32_t next_out, next_in;
     uint32_t open;
@@ -57,8 +57,9 @@ class Front {
   static constexpr uint32_t kNoEdge = 0xFFFFFFFFu;
   static constexpr int kMaxScan = 64;
 
-  // Capacities for a mesh of this size: each triangle opens at most 3 gates. The arrays still
-  // grow if a stream codes more. Without `keep_edges` only the opposite vertices are recorded
+  // Capacities for a mesh of this size: each triangle opens at most 3 gates. Callers never code
+  // more than `triangles` triangles (the neighbour tables are sized for them; vertices and gates
+  // still grow if needed). Without `keep_edges` only the opposite vertices are recorded
   // (TakeOpposite is then empty).
   void Reserve(size_t vertices, size_t triangles, bool keep_edges = true) {
     GrowVertices(vertices < 16 ? 16 : vertices);
@@ -115,8 +116,7 @@ class Front {
 
   void Close(int32_t g) { gates_[g].open = 0; }
 
-  // A new triangle edge u->v (edge = triangle * 4 + slot, the slot being the corner opposite the
-  // edge): closes the open gate v->u if there is one (the two triangles become neighbours), else
+  // A new triangle edge u->v (edge = triangle * 3 + slot, the corner opposite the edge): closes the open gate v->u if there is one (the two triangles become neighbours), else
   // opens u->v.
   // Only the kMaxScan newest open gates leaving v are searched, so a vertex with very many open
   // gates (hostile streams, pathological meshes) cannot make coding quadratic; the encoder and the
@@ -157,23 +157,24 @@ class Front {
     ++vertices_[x].deg;
     ++vertices_[y].deg;
     ++vertices_[z].deg;
-    AddHalfEdge(x, y, tri * 4 + 2, z);
-    AddHalfEdge(y, z, tri * 4 + 0, x);
-    AddHalfEdge(z, x, tri * 4 + 1, y);
+    AddHalfEdge(x, y, tri * 3 + 2, z);
+    AddHalfEdge(y, z, tri * 3 + 0, x);
+    AddHalfEdge(z, x, tri * 3 + 1, y);
   }
   // Attaches triangle `tri` across the gate g = a->b; it is emitted as (b, a, c), or as (a, b, c)
   // when `flipped`.
   void Attach(int32_t g, uint32_t tri, uint32_t a, uint32_t b, uint32_t c, bool flipped) {
-    Link(tri * 4 + 2, c, gates_[g].edge, gates_[g].apex);
+    Link(tri * 3 + 2, c, gates_[g].edge, gates_[g].apex);
     gates_[g].open = 0;
     ++vertices_[a].deg;
     ++vertices_[b].deg;
     ++vertices_[c].deg;
-    AddHalfEdge(a, c, tri * 4 + (flipped ? 1 : 0), b);
-    AddHalfEdge(c, b, tri * 4 + (flipped ? 0 : 1), a);
+    AddHalfEdge(a, c, tri * 3 + (flipped ? 1 : 0), b);
+    AddHalfEdge(c, b, tri * 3 + (flipped ? 0 : 1), a);
   }
   // Neighbour relation found while coding: for triangle t and slot k (the edge opposite corner k),
-  // opposite()[3t+k] is the neighbour's triangle * 4 + slot, or kNoEdge. Sized for `triangles`.
+  // opposite()[3t+k] is the neighbour's corner opposite that edge (triangle * 3 + slot), or
+  // kNoEdge. Sized for `triangles`.
   std::vector<uint32_t> TakeOpposite(size_t triangles) {
     if (keep_edges_) opp_.resize(3 * triangles, kNoEdge);
     return std::move(opp_);
@@ -185,20 +186,14 @@ class Front {
   }
 
  private:
-  // Edges e1 and e2 (with opposite vertices v1 and v2 in their triangles) are neighbours.
+  // The edges opposite corners e1 and e2 (vertices v1 and v2) are neighbours. Both corners belong
+  // to the `triangles` of Reserve.
   void Link(uint32_t e1, uint32_t v1, uint32_t e2, uint32_t v2) {
-    const size_t i1 = 3 * size_t(e1 / 4) + e1 % 4, i2 = 3 * size_t(e2 / 4) + e2 % 4;
-    const size_t need = (i1 > i2 ? i1 : i2) + 1;
-    if (oppv_.size() < need) {
-      const size_t size = need > 2 * oppv_.size() ? need : 2 * oppv_.size();
-      if (keep_edges_) opp_.resize(size, kNoEdge);
-      oppv_.resize(size, kNoEdge);
-    }
-    oppv_[i1] = v2;
-    oppv_[i2] = v1;
+    oppv_[e1] = v2;
+    oppv_[e2] = v1;
     if (keep_edges_) {
-      opp_[i1] = e2;
-      opp_[i2] = e1;
+      opp_[e1] = e2;
+      opp_[e2] = e1;
     }
   }
   template <typename T>

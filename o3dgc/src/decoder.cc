@@ -170,11 +170,8 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
 
   DecodedMesh m;
   m.positions.resize(size_t(nv) * 3);
-  for (uint32_t v = 0; v < nv; ++v) {
-    for (uint32_t k = 0; k < 3; ++k) {
-      m.positions[3 * size_t(v) + k] = h.position.quant.Dequantize(qpos[3 * size_t(welded_of[v]) + k], k);
-    }
-  }
+  h.position.quant.DequantizeAll(qpos.data(), has_seams ? welded_of.data() : nullptr, nv,
+                                 m.positions.data());
   MeshAdjacency attr_adj;
   if (h.has_normals && h.normal.prediction == Prediction::kSurfaceNormal) attr_adj.Build(attr_tris, nv);
   WedgeTable attr_wedges;
@@ -199,9 +196,7 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
                                       &q, texcoord ? &attr_geometry : nullptr);
     if (st != Status::kOk) return st;
     values->resize(q.size());
-    for (size_t i = 0; i < q.size(); ++i) {
-      (*values)[i] = d.quant.Dequantize(q[i], uint32_t(i % d.dimension));
-    }
+    d.quant.DequantizeAll(q.data(), nullptr, nv, values->data());
     return Status::kOk;
   };
   mark = dec.BytesConsumed();

@@ -58,8 +58,8 @@ void WedgeTable::Build(const std::vector<uint32_t>& triangles, uint32_t num_vert
       uint32_t x = v[j];  // no neighbour: the vertex itself, never coded before itself
       const uint32_t e = opp ? opp[3 * t + j] : 0xFFFFFFFFu;
       if (e != 0xFFFFFFFFu) {
-        const uint32_t* o = tri + 3 * size_t(e >> 2);
-        const uint32_t s = e & 3;
+        const uint32_t s = e % 3;
+        const uint32_t* o = tri + (size_t(e) - s);
         x = o[s];
         // With attribute seams a neighbour across the position edge may not share the attribute
         // edge; then it does not count.
@@ -98,10 +98,10 @@ void WedgeTable::BuildFromOppositeVertices(const std::vector<uint32_t>& triangle
 }
 
 DegreeTraversal::DegreeTraversal(const WedgeTable& wedges)
-    : wedges_(wedges), done_(wedges.num_vertices(), 0), degree_(wedges.num_vertices(), 0) {
-  stacks_[0].resize(1);
-  for (int l = 1; l < kLevels; ++l) stacks_[l].resize(256);
-  log_.reserve(wedges.num_vertices());
+    : wedges_(wedges), done_(wedges.num_vertices(), 0), degree_(wedges.num_vertices(), 0),
+      log_(new Visited[wedges.num_vertices()]), par_(16) {
+  stacks_[0].reset(new uint32_t[1]);
+  for (int l = 1; l < kLevels; ++l) stacks_[l].reset(new uint32_t[wedges.num_wedges() + 1]);
 }
 
 uint32_t DegreeTraversal::NextWithoutParallelogram() {
@@ -110,8 +110,8 @@ uint32_t DegreeTraversal::NextWithoutParallelogram() {
   // without parallelogram now had both uncoded at every visit next to it (else it would have
   // gained a parallelogram), so walking the logged visits newest first, their wedges last first,
   // u before w, and taking the first such vertex gives the same sequence.
-  while (!log_.empty()) {
-    Visited& v = log_.back();
+  while (log_size_ > 0) {
+    Visited& v = log_[log_size_ - 1];
     const Wedge* const first = wedges_.begin(v.vertex);
     const uint32_t entries = 2 * uint32_t(wedges_.end(v.vertex) - first);
     while (v.searched < entries) {
@@ -120,7 +120,7 @@ uint32_t DegreeTraversal::NextWithoutParallelogram() {
       ++v.searched;
       if (!done_[candidate] && degree_[candidate] == 0) return candidate;
     }
-    log_.pop_back();
+    --log_size_;
   }
   while (done_[next_start_]) ++next_start_;
   return next_start_;

@@ -41,9 +41,10 @@ struct Wedge {
 // Vertex -> wedges (CSR), in increasing triangle order; degenerate triangles are left out.
 class WedgeTable {
  public:
-  // `opposite`: 3 per triangle, neighbour triangle * 4 + its slot or 0xFFFFFFFF (see
-  // Front::TakeOpposite). `verify`: check that a neighbour shares the edge's two vertices (needed
-  // when attribute seams split edges; the connectivity coder's neighbours always share them).
+  // `opposite`: 3 per triangle, the neighbour's opposite corner (triangle * 3 + slot) or
+  // 0xFFFFFFFF (see Front::TakeOpposite). `verify`: check that a neighbour shares the edge's two
+  // vertices (needed when attribute seams split edges; the connectivity coder's neighbours always
+  // share them).
   void Build(const std::vector<uint32_t>& triangles, uint32_t num_vertices,
              const std::vector<uint32_t>& opposite, bool verify);
   // For the mesh the connectivity coder numbered: `opposite_vertices` (3 per triangle, see
@@ -53,6 +54,7 @@ class WedgeTable {
   const Wedge* begin(uint32_t v) const { return wedges_.get() + start_[v]; }
   const Wedge* end(uint32_t v) const { return wedges_.get() + start_[v + 1]; }
   uint32_t num_vertices() const { return uint32_t(start_.size() - 1); }
+  size_t num_wedges() const { return start_.empty() ? 0 : start_.back(); }
 
  private:
   // Counts wedges per vertex into start_ (start_[v + 2]) and sizes wedges_.
@@ -90,8 +92,10 @@ class DegreeTraversal {
   const WedgeTable& wedges_;
   std::vector<uint8_t> done_;
   std::vector<uint32_t> degree_;
-  // Candidates at levels 1..3 (entry 0 is scratch space for the branch-free pushes), top_ in use.
-  std::vector<uint32_t> stacks_[kLevels];
+  // Candidates at levels 1..3 (stack 0 is one entry of scratch space for the branch-free pushes),
+  // top_ in use. A visit pushes at most one entry per wedge, so num_wedges() entries per level
+  // are never exceeded: no capacity checks.
+  std::unique_ptr<uint32_t[]> stacks_[kLevels];
   size_t top_[kLevels] = {0, 0, 0, 0};
   // Level 0 holds the neighbours of visited vertices that have no parallelogram yet, newest
   // first; it is only needed when levels 1..3 are empty, so instead of pushing them at every
@@ -100,7 +104,8 @@ class DegreeTraversal {
     uint32_t vertex;
     uint32_t searched;  // entries (wedges * 2, from the last one) already taken
   };
-  std::vector<Visited> log_;
+  std::unique_ptr<Visited[]> log_;  // one entry per visit at most
+  size_t log_size_ = 0;
   std::vector<const Wedge*> par_;
   uint32_t visited_ = 0, next_start_ = 0, previous_ = kNoVertex;
 };
@@ -158,7 +163,7 @@ void OctDecode(double u, double v, double n[3]);
 inline uint32_t DegreeTraversal::Next() {
   if (visited_ >= wedges_.num_vertices()) return kNoVertex;
   for (int level = kLevels - 1; level > 0; --level) {
-    uint32_t* const stack = stacks_[level].data();
+    uint32_t* const stack = stacks_[level].get();
     while (top_[level] > 0) {
       const uint32_t c = stack[--top_[level]];
       const uint32_t d = degree_[c];
@@ -173,14 +178,10 @@ inline uint32_t DegreeTraversal::Next() {
 inline int DegreeTraversal::Visit(uint32_t c) {
   const Wedge* const first = wedges_.begin(c);
   const Wedge* const last = wedges_.end(c);
-  // At most one entry per wedge: make room first, then push without checks.
   const size_t count = size_t(last - first);
-  for (int l = 1; l < kLevels; ++l) {
-    if (top_[l] + count > stacks_[l].size()) stacks_[l].resize(2 * (top_[l] + count));
-  }
-  if (count > par_.size()) par_.resize(2 * count);
-  uint32_t* slot[kLevels] = {stacks_[0].data(), stacks_[1].data() + top_[1],
-                             stacks_[2].data() + top_[2], stacks_[3].data() + top_[3]};
+  if (O3DGC_UNLIKELY(count > par_.size())) par_.resize(2 * count);
+  uint32_t* slot[kLevels] = {stacks_[0].get(), stacks_[1].get() + top_[1],
+                             stacks_[2].get() + top_[2], stacks_[3].get() + top_[3]};
   const Wedge** par = par_.data();
   int n_par = 0;
   const uint8_t* const done = done_.data();
@@ -203,8 +204,8 @@ inline int DegreeTraversal::Visit(uint32_t c) {
     *s = a;
     slot[level] = s + one;
   }
-  for (int l = 1; l < kLevels; ++l) top_[l] = size_t(slot[l] - stacks_[l].data());
-  log_.push_back(Visited{c, 0});
+  for (int l = 1; l < kLevels; ++l) top_[l] = size_t(slot[l] - stacks_[l].get());
+  log_[log_size_++] = Visited{c, 0};
   done_[c] = 1;
   ++visited_;
   previous_ = c;

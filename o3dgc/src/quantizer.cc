@@ -53,6 +53,24 @@ int32_t Quantizer::Quantize(float x, uint32_t c) const {
   return int32_t(q);
 }
 
+void Quantizer::DequantizeAll(const int32_t* q, const uint32_t* index, size_t count,
+                              float* out) const {
+  const uint32_t dim = dimension;
+  for (uint32_t c = 0; c < dim; ++c) {
+    // Locals: the float stores below could alias the members.
+    const double base = double(min[c]), step = double(range[c]) / double(max_q());
+    float* o = out + c;
+    if (!(range[c] > 0)) {
+      const float m = min[c];
+      for (size_t i = 0; i < count; ++i) o[i * dim] = m;
+    } else if (index) {
+      for (size_t i = 0; i < count; ++i) o[i * dim] = float(base + double(q[size_t(index[i]) * dim + c]) * step);
+    } else {
+      const int32_t* p = q + c;
+      for (size_t i = 0; i < count; ++i) o[i * dim] = float(base + double(p[i * dim]) * step);
+    }
+  }
+}
 
 bool Quantizer::Valid() const {
   for (uint32_t c = 0; c < dimension; ++c) {

@@ -30,6 +30,9 @@ struct Quantizer {
     return float(double(min[component]) +
                  double(q) * (double(range[component]) / double(max_q())));
   }
+  // Dequantize of `count` vectors of `dimension` values; vector i is read at q + dimension *
+  // index[i] (index null: i). The same values as Dequantize, with the steps computed once.
+  void DequantizeAll(const int32_t* q, const uint32_t* index, size_t count, float* out) const;
   // True if min/range are finite, range >= 0 and min + range is finite (decoder-side check).
   bool Valid() const;
 };
