@@ -26,8 +26,9 @@ class Decoder {
     front_.Reserve(max_vertices_ < nt_ + 3 ? max_vertices_ : nt_ + 3, nt_, keep_edges_);
     has_flips_ = dec.DecodeBits(1) != 0;
     has_copies_ = dec.DecodeBits(1) != 0;
+    // Bounded work whatever the stream: every pass pops a gate (at most 3 per triangle) or starts
+    // a triangle (at most nt_), so a truncated stream (read as zeros) is found after the loop.
     for (;;) {
-      if (dec.failed()) return Status::kTruncated;
       if (front_.empty()) {
         if (!dec.Decode(m_->more_components)) break;
         if (Full()) return Status::kCorrupt;
@@ -53,11 +54,14 @@ class Decoder {
       }
       if (Full()) return Status::kCorrupt;
       uint32_t c;
+      int32_t gate_bc = Front::kSearch;
       if (outcome == kGateNew) {
         if (front_.num_vertices() >= max_vertices_) return Status::kCorrupt;
         c = front_.AddVertex();
+        gate_bc = Front::kNoGate;
       } else if (outcome == kGateRight && cand.right >= 0) {
         c = uint32_t(cand.right);
+        gate_bc = cand.right_gate;
       } else if (outcome == kGateLeft && cand.left >= 0) {
         c = uint32_t(cand.left);
       } else if (outcome == kGateOther) {
@@ -69,7 +73,7 @@ class Decoder {
       }
       if (c == a || c == b) return Status::kCorrupt;
       const int flip = has_flips_ ? dec.Decode(m_->flip) : 0;
-      front_.Attach(g, uint32_t(count_), a, b, c, flip != 0);
+      front_.Attach(g, uint32_t(count_), a, b, c, flip != 0, gate_bc);
       const Status s = flip ? Emit(dec, a, b, c) : Emit(dec, b, a, c);
       if (s != Status::kOk) return s;
     }

@@ -123,11 +123,14 @@ class Encoder {
         continue;
       }
       uint32_t c = new_of_old_[oc];
+      int32_t gate_bc = Front::kSearch;
       if (c == kNone) {
         enc_.Encode(kGateNew, m_->gate[ctx]);
         c = NewVertex(oc);
+        gate_bc = Front::kNoGate;
       } else if (cand.right >= 0 && c == cand.right) {
         enc_.Encode(kGateRight, m_->gate[ctx]);
+        gate_bc = cand.right_gate;
       } else if (cand.left >= 0 && c == cand.left) {
         enc_.Encode(kGateLeft, m_->gate[ctx]);
       } else {
@@ -136,7 +139,7 @@ class Encoder {
       }
       if (has_flips_) enc_.Encode(flip, m_->flip);
       visited_[found] = 1;
-      front_.Attach(g, uint32_t(out_.source.size()), a, b, c, flip != 0);
+      front_.Attach(g, uint32_t(out_.source.size()), a, b, c, flip != 0, gate_bc);
       if (flip) {
         Emit(found, a, b, c);
       } else {

@@ -101,6 +101,7 @@ class Front {
   struct Candidates {
     int context;
     int64_t right, left;
+    int32_t right_gate;  // the gate b->right, -1 if none
   };
   Candidates Look(uint32_t a, uint32_t b) {
     const int32_t r = HeadOut(b), l = HeadIn(a);
@@ -111,13 +112,14 @@ class Front {
     c.context = int((((r >= 0) + 2 * (l >= 0)) * 2 + da) * 8 + d);
     c.right = r >= 0 ? int64_t(gates_[r].b) : -1;
     c.left = l >= 0 ? int64_t(gates_[l].a) : -1;
+    c.right_gate = r;
     return c;
   }
 
   void Close(int32_t g) { gates_[g].open = 0; }
 
-  // A new triangle edge u->v (edge = triangle * 3 + slot, the corner opposite the edge): closes the open gate v->u if there is one (the two triangles become neighbours), else
-  // opens u->v.
+  // A new triangle edge u->v (edge = triangle * 3 + slot, the corner opposite the edge): closes
+  // the open gate v->u if there is one (the two triangles become neighbours), else opens u->v.
   // Only the kMaxScan newest open gates leaving v are searched, so a vertex with very many open
   // gates (hostile streams, pathological meshes) cannot make coding quadratic; the encoder and the
   // decoder apply the same rule.
@@ -144,6 +146,10 @@ class Front {
       }
       g = next;
     }
+    Open(u, v, edge, apex);
+  }
+  // Opens gate u->v (AddHalfEdge when v has no open gate to u).
+  void Open(uint32_t u, uint32_t v, uint32_t edge, uint32_t apex) {
     if (num_gates_ == gate_capacity_) GrowGates(2 * gate_capacity_ + 16);
     const int32_t id = int32_t(num_gates_++);
     gates_[id] = Gate{u, v, edge, apex, vertices_[u].head_out, vertices_[v].head_in, 1, 0};
@@ -161,16 +167,30 @@ class Front {
     AddHalfEdge(y, z, tri * 3 + 0, x);
     AddHalfEdge(z, x, tri * 3 + 1, y);
   }
+  // What Attach knows beforehand of the gates b->c: nothing (kSearch), that there is none
+  // (kNoGate: c is new), or the one AddHalfEdge(c, b) would close (its id: the right candidate's
+  // gate is the newest open gate leaving b, the first one the search meets). Knowing it spares the
+  // search and changes nothing else.
+  static constexpr int32_t kSearch = -2, kNoGate = -1;
   // Attaches triangle `tri` across the gate g = a->b; it is emitted as (b, a, c), or as (a, b, c)
   // when `flipped`.
-  void Attach(int32_t g, uint32_t tri, uint32_t a, uint32_t b, uint32_t c, bool flipped) {
+  void Attach(int32_t g, uint32_t tri, uint32_t a, uint32_t b, uint32_t c, bool flipped,
+              int32_t gate_bc = kSearch) {
     Link(tri * 3 + 2, c, gates_[g].edge, gates_[g].apex);
     gates_[g].open = 0;
     ++vertices_[a].deg;
     ++vertices_[b].deg;
     ++vertices_[c].deg;
     AddHalfEdge(a, c, tri * 3 + (flipped ? 1 : 0), b);
-    AddHalfEdge(c, b, tri * 3 + (flipped ? 0 : 1), a);
+    const uint32_t edge = tri * 3 + (flipped ? 0 : 1);
+    if (gate_bc == kSearch) {
+      AddHalfEdge(c, b, edge, a);
+    } else if (gate_bc == kNoGate) {
+      Open(c, b, edge, a);
+    } else {
+      Link(edge, a, gates_[gate_bc].edge, gates_[gate_bc].apex);
+      gates_[gate_bc].open = 0;
+    }
   }
   // Neighbour relation found while coding: for triangle t and slot k (the edge opposite corner k),
   // opposite()[3t+k] is the neighbour's corner opposite that edge (triangle * 3 + slot), or

@@ -64,7 +64,9 @@ void Quantizer::DequantizeAll(const int32_t* q, const uint32_t* index, size_t co
       const float m = min[c];
       for (size_t i = 0; i < count; ++i) o[i * dim] = m;
     } else if (index) {
-      for (size_t i = 0; i < count; ++i) o[i * dim] = float(base + double(q[size_t(index[i]) * dim + c]) * step);
+      for (size_t i = 0; i < count; ++i) {
+        o[i * dim] = float(base + double(q[size_t(index[i]) * dim + c]) * step);
+      }
     } else {
       const int32_t* p = q + c;
       for (size_t i = 0; i < count; ++i) o[i * dim] = float(base + double(p[i * dim]) * step);
