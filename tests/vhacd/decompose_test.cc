@@ -265,7 +265,9 @@ TEST_P(ModeTest, CancelFromAnotherThreadReturnsPromptly) {
   canceller.join();
   EXPECT_EQ(r.status, vhacd::Status::kCancelled);
   EXPECT_TRUE(r.hulls.empty());
-  EXPECT_LT(std::chrono::duration<double>(returned_at - cancelled_at).count(), 1.0);
+  // Loose on purpose (a loaded 2-core machine or a sanitized build takes ~1 s): what it guards is a
+  // stage that forgets to poll, which shows as the rest of a run at 3M voxels (minutes).
+  EXPECT_LT(std::chrono::duration<double>(returned_at - cancelled_at).count(), 5.0);
 }
 
 TEST_P(ModeTest, InvalidInputsGiveErrors) {
