@@ -5,9 +5,10 @@
 //    first (count-based rate) and then settles to a 1/128 rate, and a fast one (rate 1/8) that
 //    follows local runs; probabilities are clamped to [kMinProb, 65536 - kMinProb] so no decision
 //    costs less than ~0.001 bits;
-//  - SymbolModel, 16 symbols in one decision (the magnitude classes of residuals): the same two-rate
-//    idea on cumulative frequencies. One multi-symbol decision replaces the 3-6 dependent binary
-//    decisions of a unary or tree binarization, which is what bounds decoding speed.
+//  - SymbolModelN, 8 (16, 32) symbols in one decision (magnitude classes of residuals, gate
+//    outcomes): the same two-rate idea on cumulative frequencies. One multi-symbol decision
+//    replaces the 3-6 dependent binary decisions of a unary or tree binarization, which is what
+//    bounds decoding speed.
 // Raw (equiprobable) bits of the residuals go to a separate bit stream stored after the range code
 // and read backwards from the end of the payload, so reading them costs a shift instead of a coder
 // step. The range code is terminated so that whatever follows it decodes the same. The decoder
@@ -83,14 +84,17 @@ struct BitModel {
   }
 };
 
-// An adaptive distribution over kSymbols symbols. Two cumulative frequency tables (total 2^15
-// each; entry i is the frequency of the symbols <= i) move towards the observed symbol, the slow
-// one at a count-based rate settling at 1/2^kSlowShift, the fast one at min(that, 1/2^kFastShift);
-// the coder uses their sum (total 2^16). Every symbol keeps at least kMinFreq in each table (the
-// targets keep it and rounding cannot lose it), so every symbol stays codable. The tables are
-// updated 16 lanes at a time (SSE2 where available; the scalar code computes the same values).
-struct alignas(32) SymbolModel {
-  static constexpr int kSymbols = 16;
+// An adaptive distribution over kSymbols symbols (8, 16 or 32). Two cumulative frequency tables
+// (total 2^15 each; entry i is the frequency of the symbols <= i) move towards the observed symbol,
+// the slow one at a count-based rate settling at 1/2^kSlowShift, the fast one at min(that,
+// 1/2^kFastShift); the coder uses their sum (total 2^16). Every symbol keeps at least kMinFreq in
+// each table (the targets keep it and rounding cannot lose it), so every symbol stays codable. The
+// tables are updated 8 lanes at a time (SSE2 where available; the scalar code computes the same
+// values).
+template <int N>
+struct alignas(16) SymbolModelN {
+  static_assert(N == 8 || N == 16 || N == 32, "alphabet of 8, 16 or 32 symbols");
+  static constexpr int kSymbols = N;
   static constexpr int kMinFreq = 4;
   static constexpr int kSlowShift = 8;
   static constexpr int kFastShift = 3;
@@ -102,12 +106,12 @@ struct alignas(32) SymbolModel {
   // anything, which would make the compiler reload every pointer after each decision.
   uint16_t n = 0;
 
-  SymbolModel() {
+  SymbolModelN() {
     for (int i = 0; i < kSymbols; ++i) slow[i] = fast[i] = uint16_t((i + 1) * (kTotal / kSymbols));
   }
   // A model of which only the first `used` symbols are expected: they share the range evenly, the
   // others start at the minimum frequency.
-  explicit SymbolModel(int used) {
+  explicit SymbolModelN(int used) {
     const int rest = (kSymbols - used) * kMinFreq;
     for (int i = 0; i < kSymbols; ++i) {
       slow[i] = fast[i] = uint16_t(i < used ? (i + 1) * ((kTotal - rest) / used)
@@ -118,8 +122,13 @@ struct alignas(32) SymbolModel {
   uint32_t cumulative(int i) const { return uint32_t(slow[i]) + fast[i]; }
   void Update(int symbol);
   // The symbol whose interval holds `code` (< range) for a range r * 2^16: the number of entries
-  // i < kSymbols - 1 with r * cumulative(i) <= code, i.e. with cumulative(i) <= code / r.
-  int Find(uint32_t r, uint32_t code) const;
+  // i < kSymbols - 1 with r * cumulative(i) <= code, i.e. with cumulative(i) <= code / r. Its
+  // interval is [*lo, *hi) (in 1/2^16).
+  int Find(uint32_t r, uint32_t code, uint32_t* lo, uint32_t* hi) const;
+  int Find(uint32_t r, uint32_t code) const {
+    uint32_t lo, hi;
+    return Find(r, code, &lo, &hi);
+  }
 
   // Slow rate by observation count: 1/4 at first, then 1/8, 1/16, ... down to 1/2^kSlowShift
   // after 126 observations.
@@ -128,77 +137,103 @@ struct alignas(32) SymbolModel {
     return uint8_t(2 + (n > 2) + (n > 6) + (n > 14) + (n > 30) + (n > 62) + (n > 126));
   }
   // Targets after observing s: entry i moves to (i + 1) * kMinFreq below s and to
-  // kTotal - (15 - i) * kMinFreq from s on (entry 15, the total, stays).
+  // kTotal - (kSymbols - 1 - i) * kMinFreq from s on (the last entry, the total, stays).
   static constexpr uint16_t Target(int s, int i) {
     return uint16_t(i < s ? (i + 1) * kMinFreq : kTotal - (kSymbols - 1 - i) * kMinFreq);
   }
 };
+using SymbolModel = SymbolModelN<16>;
 
 namespace symbol_tables {
+template <int N>
 struct Tables {
-  uint8_t rate[SymbolModel::kRates];
-  alignas(16) uint16_t target[SymbolModel::kSymbols][SymbolModel::kSymbols];
+  uint8_t rate[SymbolModelN<N>::kRates];
+  alignas(16) uint16_t target[N][N];
   constexpr Tables() : rate(), target() {
-    for (int n = 0; n < SymbolModel::kRates; ++n) rate[n] = SymbolModel::Rate(n);
-    for (int s = 0; s < SymbolModel::kSymbols; ++s) {
-      for (int i = 0; i < SymbolModel::kSymbols; ++i) target[s][i] = SymbolModel::Target(s, i);
+    for (int n = 0; n < SymbolModelN<N>::kRates; ++n) rate[n] = SymbolModelN<N>::Rate(n);
+    for (int s = 0; s < N; ++s) {
+      for (int i = 0; i < N; ++i) target[s][i] = SymbolModelN<N>::Target(s, i);
     }
   }
 };
-inline constexpr Tables kTables{};
+template <int N>
+inline constexpr Tables<N> kTables{};
 }  // namespace symbol_tables
 
 #if defined(__SSE2__) && !defined(O3DGC_NO_SIMD)
-O3DGC_INLINE void SymbolModel::Update(int symbol) {
-  const int rate = symbol_tables::kTables.rate[n];
+template <int N>
+O3DGC_INLINE void SymbolModelN<N>::Update(int symbol) {
+  const auto& tables = symbol_tables::kTables<N>;
+  const int rate = tables.rate[n];
   n = uint16_t(n + (n < kRates - 1));
   const int fast_rate = rate < kFastShift ? rate : kFastShift;
   // 16-bit lanes: differences to the targets stay within +-2^15.
-  const __m128i* t = reinterpret_cast<const __m128i*>(symbol_tables::kTables.target[symbol]);
-  const __m128i t0 = _mm_load_si128(t), t1 = _mm_load_si128(t + 1);
+  const __m128i* t = reinterpret_cast<const __m128i*>(tables.target[symbol]);
   const __m128i rs = _mm_cvtsi32_si128(rate), rf = _mm_cvtsi32_si128(fast_rate);
   __m128i* sp = reinterpret_cast<__m128i*>(slow);
   __m128i* fp = reinterpret_cast<__m128i*>(fast);
-  const __m128i s0 = _mm_load_si128(sp), s1 = _mm_load_si128(sp + 1);
-  const __m128i f0 = _mm_load_si128(fp), f1 = _mm_load_si128(fp + 1);
-  _mm_store_si128(sp, _mm_add_epi16(s0, _mm_sra_epi16(_mm_sub_epi16(t0, s0), rs)));
-  _mm_store_si128(sp + 1, _mm_add_epi16(s1, _mm_sra_epi16(_mm_sub_epi16(t1, s1), rs)));
-  _mm_store_si128(fp, _mm_add_epi16(f0, _mm_sra_epi16(_mm_sub_epi16(t0, f0), rf)));
-  _mm_store_si128(fp + 1, _mm_add_epi16(f1, _mm_sra_epi16(_mm_sub_epi16(t1, f1), rf)));
+  for (int v = 0; v < N / 8; ++v) {
+    const __m128i tv = _mm_load_si128(t + v), sv = _mm_load_si128(sp + v), fv = _mm_load_si128(fp + v);
+    _mm_store_si128(sp + v, _mm_add_epi16(sv, _mm_sra_epi16(_mm_sub_epi16(tv, sv), rs)));
+    _mm_store_si128(fp + v, _mm_add_epi16(fv, _mm_sra_epi16(_mm_sub_epi16(tv, fv), rf)));
+  }
 }
 
-O3DGC_INLINE int SymbolModel::Find(uint32_t r, uint32_t code) const {
-  // Compare the 16-bit cumulative sums (lane 15 wraps to 0 and is masked off) with code / r: the
-  // lanes at or below it form a prefix, whose length is the symbol.
+template <int N>
+O3DGC_INLINE int SymbolModelN<N>::Find(uint32_t r, uint32_t code, uint32_t* lo, uint32_t* hi) const {
+  // Compare the 16-bit cumulative sums (the last lane wraps to 0 and is masked off) with code / r:
+  // the lanes at or below it form a prefix, whose length is the symbol. The sums are kept, after a
+  // zero, for the interval's ends.
   uint32_t q = code / r;
   q = q < 0xFFFFu ? q : 0xFFFFu;  // larger only in a corrupt stream
   const __m128i* sp = reinterpret_cast<const __m128i*>(slow);
   const __m128i* fp = reinterpret_cast<const __m128i*>(fast);
-  const __m128i c0 = _mm_add_epi16(_mm_load_si128(sp), _mm_load_si128(fp));
-  const __m128i c1 = _mm_add_epi16(_mm_load_si128(sp + 1), _mm_load_si128(fp + 1));
   const __m128i qv = _mm_set1_epi16(short(q)), zero = _mm_setzero_si128();
-  const __m128i le0 = _mm_cmpeq_epi16(_mm_subs_epu16(c0, qv), zero);
-  const __m128i le1 = _mm_cmpeq_epi16(_mm_subs_epu16(c1, qv), zero);
-  const uint32_t at_or_below = uint32_t(_mm_movemask_epi8(_mm_packs_epi16(le0, le1))) & 0x7FFFu;
-  return __builtin_ctz(~at_or_below);
+  __m128i le[N / 8];
+  uint16_t cum[N + 8];
+  cum[7] = 0;
+  for (int v = 0; v < N / 8; ++v) {
+    const __m128i c = _mm_add_epi16(_mm_load_si128(sp + v), _mm_load_si128(fp + v));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(cum + 8 + 8 * v), c);
+    le[v] = _mm_cmpeq_epi16(_mm_subs_epu16(c, qv), zero);
+  }
+  uint32_t at_or_below;
+  if (N == 8) {
+    at_or_below = uint32_t(_mm_movemask_epi8(_mm_packs_epi16(le[0], zero)));
+  } else {
+    at_or_below = uint32_t(_mm_movemask_epi8(_mm_packs_epi16(le[0], le[N / 8 > 1 ? 1 : 0])));
+    if (N == 32) {
+      at_or_below |= uint32_t(_mm_movemask_epi8(_mm_packs_epi16(le[N / 8 > 2 ? 2 : 0], le[N / 8 > 3 ? 3 : 0]))) << 16;
+    }
+  }
+  at_or_below &= uint32_t((uint64_t(1) << (N - 1)) - 1);
+  const int symbol = __builtin_ctz(~at_or_below);
+  *lo = cum[7 + symbol];
+  *hi = ((uint32_t(cum[8 + symbol]) - 1) & 0xFFFFu) + 1;  // the total, 2^16, wrapped to 0
+  return symbol;
 }
 #else
-O3DGC_INLINE void SymbolModel::Update(int symbol) {
-  const int rate = symbol_tables::kTables.rate[n];
+template <int N>
+O3DGC_INLINE void SymbolModelN<N>::Update(int symbol) {
+  const auto& tables = symbol_tables::kTables<N>;
+  const int rate = tables.rate[n];
   n = uint16_t(n + (n < kRates - 1));
   const int fast_rate = rate < kFastShift ? rate : kFastShift;
-  const uint16_t* t = symbol_tables::kTables.target[symbol];
+  const uint16_t* t = tables.target[symbol];
   for (int i = 0; i < kSymbols - 1; ++i) {
     slow[i] = uint16_t(slow[i] + ((int32_t(t[i]) - slow[i]) >> rate));
     fast[i] = uint16_t(fast[i] + ((int32_t(t[i]) - fast[i]) >> fast_rate));
   }
 }
 
-O3DGC_INLINE int SymbolModel::Find(uint32_t r, uint32_t code) const {
+template <int N>
+O3DGC_INLINE int SymbolModelN<N>::Find(uint32_t r, uint32_t code, uint32_t* lo, uint32_t* hi) const {
   uint32_t q = code / r;
   q = q < 0xFFFFu ? q : 0xFFFFu;
   int symbol = 0;
   for (int i = 0; i < kSymbols - 1; ++i) symbol += cumulative(i) <= q;
+  *lo = symbol ? cumulative(symbol - 1) : 0;
+  *hi = cumulative(symbol);
   return symbol;
 }
 #endif
@@ -215,7 +250,8 @@ class ArithmeticEncoder {
     m.Update(bit);
     Normalize();
   }
-  O3DGC_INLINE void Encode(int symbol, SymbolModel& m) {
+  template <int N>
+  O3DGC_INLINE void Encode(int symbol, SymbolModelN<N>& m) {
     const uint32_t r = range_ >> 16;
     const uint32_t lo = symbol ? r * m.cumulative(symbol - 1) : 0;
     const uint32_t hi = r * m.cumulative(symbol);
@@ -299,13 +335,13 @@ class ArithmeticDecoder {
     Normalize();
     return int(one & 1);
   }
-  O3DGC_INLINE int Decode(SymbolModel& m) {
+  template <int N>
+  O3DGC_INLINE int Decode(SymbolModelN<N>& m) {
     const uint32_t r = range_ >> 16;
-    const int symbol = m.Find(r, code_);
-    const int below = symbol - 1 + (symbol == 0);  // any valid index: masked for symbol 0
-    const uint32_t lo = r * (m.cumulative(below) & (0u - uint32_t(symbol != 0)));
-    code_ -= lo;
-    range_ = r * m.cumulative(symbol) - lo;
+    uint32_t lo, hi;
+    const int symbol = m.Find(r, code_, &lo, &hi);
+    code_ -= r * lo;
+    range_ = r * (hi - lo);
     m.Update(symbol);
     Normalize();
     return symbol;

@@ -28,15 +28,16 @@ constexpr int kConnectivityContexts = 64;
 // right or the left candidate, or another earlier vertex (then coded as a back reference).
 enum GateOutcome : int { kGateClose = 0, kGateNew = 1, kGateRight = 2, kGateLeft = 3, kGateOther = 4 };
 constexpr int kGateOutcomes = 5;
+using GateModel = SymbolModelN<8>;
 
 struct ConnectivityModels {
   ConnectivityModels() {
-    for (SymbolModel& m : gate) m = SymbolModel(kGateOutcomes);
+    for (GateModel& m : gate) m = GateModel(kGateOutcomes);
   }
   BitModel more_components;
   BitModel start_new;
   EGModel start_ref;
-  SymbolModel gate[kConnectivityContexts];
+  GateModel gate[kConnectivityContexts];
   EGModel other_ref;
   BitModel flip;
   EGModel copies;

@@ -127,15 +127,22 @@ inline int64_t DecodeSigned(ArithmeticDecoder& d, SignedModel& m) {
 
 // Residuals of the attribute coders: the magnitude class in one multi-symbol decision (0: zero;
 // 1 + k: |r| in [2^k, 2^(k+1)) for k < kDirectClasses; the last symbol: k >= kDirectClasses, then
-// k - kDirectClasses in a unary code), then the sign and the two bits below the leading one
-// through adaptive models (the second conditioned on the first), the remaining bits raw.
-constexpr int kDirectClasses = SymbolModel::kSymbols - 2;
+// a second decision for k - kDirectClasses (the last symbol again: more, in a unary code)), then
+// the sign and the two bits below the leading one through adaptive models (the second conditioned
+// on the first), the remaining bits raw.
+// Eight symbols: one SSE2 vector per table, and a smaller alphabet learns faster than 16 classes
+// did (most residuals are below 2^6; the escape costs a second decision for the others).
+constexpr int kResidualSymbols = 8;
+constexpr int kDirectClasses = kResidualSymbols - 2;
+constexpr int kEscapeSymbol = kResidualSymbols - 1;
+constexpr int kHighClasses = kDirectClasses + kEscapeSymbol;  // below: the two decisions
 
 struct ResidualModel {
-  SymbolModel magnitude;
+  SymbolModelN<kResidualSymbols> magnitude;
+  SymbolModelN<kResidualSymbols> high;  // k - kDirectClasses after an escape
   BitModel sign;
   BitModel mantissa[kDirectClasses + 1][3];  // by k (larger classes share the last)
-  BitModel escape[kMaxEGPrefix - kDirectClasses + 1];
+  BitModel escape[kMaxEGPrefix - kHighClasses + 1];
 };
 
 O3DGC_INLINE void EncodeResidual(ArithmeticEncoder& e, ResidualModel& m, int64_t r) {
@@ -148,9 +155,14 @@ O3DGC_INLINE void EncodeResidual(ArithmeticEncoder& e, ResidualModel& m, int64_t
   if (k < kDirectClasses) {
     e.Encode(1 + k, m.magnitude);
   } else {
-    e.Encode(SymbolModel::kSymbols - 1, m.magnitude);
-    for (int i = kDirectClasses; i < k; ++i) e.Encode(1, m.escape[i - kDirectClasses]);
-    if (k < kMaxEGPrefix) e.Encode(0, m.escape[k - kDirectClasses]);
+    e.Encode(kEscapeSymbol, m.magnitude);
+    if (k < kHighClasses) {
+      e.Encode(k - kDirectClasses, m.high);
+    } else {
+      e.Encode(kEscapeSymbol, m.high);
+      for (int i = kHighClasses; i < k; ++i) e.Encode(1, m.escape[i - kHighClasses]);
+      if (k < kMaxEGPrefix) e.Encode(0, m.escape[k - kHighClasses]);
+    }
   }
   e.Encode(r < 0, m.sign);
   if (k == 0) return;
@@ -171,8 +183,12 @@ O3DGC_INLINE int64_t DecodeResidual(ArithmeticDecoder& d, ResidualModel& m) {
   const int symbol = d.Decode(m.magnitude);
   if (symbol == 0) return 0;
   int k = symbol - 1;
-  if (symbol == SymbolModel::kSymbols - 1) {
-    while (k < kMaxEGPrefix && d.Decode(m.escape[k - kDirectClasses])) ++k;
+  if (O3DGC_UNLIKELY(symbol == kEscapeSymbol)) {
+    const int h = d.Decode(m.high);
+    k = kDirectClasses + h;
+    if (h == kEscapeSymbol) {
+      while (k < kMaxEGPrefix && d.Decode(m.escape[k - kHighClasses])) ++k;
+    }
   }
   const int neg = d.Decode(m.sign);
   uint64_t v = 1;

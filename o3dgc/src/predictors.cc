@@ -31,11 +31,11 @@ void WedgeTable::Count(const uint32_t* tri, size_t nt, uint32_t num_vertices) {
   start_.assign(size_t(num_vertices) + 2, 0);
   uint32_t* start = start_.data() + 1;  // counts at start[v + 1], then fill positions at start[v]
   for (size_t t = 0; t < nt; ++t) {
-    const uint32_t* v = tri + 3 * t;
-    const uint32_t ok = v[0] != v[1] && v[1] != v[2] && v[0] != v[2];
-    start[v[0] + 1] += ok;
-    start[v[1] + 1] += ok;
-    start[v[2] + 1] += ok;
+    const uint32_t a = tri[3 * t], b = tri[3 * t + 1], c = tri[3 * t + 2];
+    const uint32_t ok = (a != b) & (b != c) & (a != c);
+    start[a + 1] += ok;
+    start[b + 1] += ok;
+    start[c + 1] += ok;
   }
   for (uint32_t v = 0; v < num_vertices; ++v) start[v + 1] += start[v];
   wedges_.reset(new Wedge[start[num_vertices]]);
@@ -84,15 +84,19 @@ void WedgeTable::BuildFromOppositeVertices(const std::vector<uint32_t>& triangle
   uint32_t* start = start_.data() + 1;
   Wedge* out = wedges_.get();
   for (size_t t = 0; t < nt; ++t) {
-    const uint32_t* v = tri + 3 * t;
-    if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) continue;
-    uint32_t x[3] = {v[0], v[1], v[2]};  // no neighbour: the vertex itself
+    // Locals: the stores below may alias the triangle array for all the compiler knows.
+    const uint32_t a = tri[3 * t], b = tri[3 * t + 1], c = tri[3 * t + 2];
+    if (a == b || b == c || a == c) continue;
+    uint32_t xa = a, xb = b, xc = c;  // no neighbour: the vertex itself
     if (oppv) {
-      for (int j = 0; j < 3; ++j) x[j] = oppv[3 * t + j] != 0xFFFFFFFFu ? oppv[3 * t + j] : v[j];
+      const uint32_t oa = oppv[3 * t], ob = oppv[3 * t + 1], oc = oppv[3 * t + 2];
+      xa = oa != 0xFFFFFFFFu ? oa : a;
+      xb = ob != 0xFFFFFFFFu ? ob : b;
+      xc = oc != 0xFFFFFFFFu ? oc : c;
     }
-    out[start[v[0]]++] = Wedge{v[1], v[2], x[0]};
-    out[start[v[1]]++] = Wedge{v[2], v[0], x[1]};
-    out[start[v[2]]++] = Wedge{v[0], v[1], x[2]};
+    out[start[a]++] = Wedge{b, c, xa};
+    out[start[b]++] = Wedge{c, a, xb};
+    out[start[c]++] = Wedge{a, b, xc};
   }
   start_.pop_back();
 }

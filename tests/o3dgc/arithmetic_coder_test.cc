@@ -96,6 +96,8 @@ TEST(ArithmeticCoder, SymbolsRawBitsAndResidualsRoundTrip) {
   {
     ArithmeticEncoder enc(&buf);
     SymbolModel skewed, flat;
+    SymbolModelN<8> small;
+    SymbolModelN<32> large;
     BitModel bit;
     ResidualModel rm;
     for (int i = 0; i < 20000; ++i) {
@@ -103,6 +105,10 @@ TEST(ArithmeticCoder, SymbolsRawBitsAndResidualsRoundTrip) {
       enc.Encode(symbols.back(), skewed);
       symbols.push_back(int(rng() % 16));
       enc.Encode(symbols.back(), flat);
+      symbols.push_back(int(rng() % 8));
+      enc.Encode(symbols.back(), small);
+      symbols.push_back(int(rng() % 32));
+      enc.Encode(symbols.back(), large);
       bits.push_back(int(rng() & 1));
       enc.Encode(bits.back(), bit);
       raw_count.push_back(int(rng() % 33));
@@ -117,11 +123,15 @@ TEST(ArithmeticCoder, SymbolsRawBitsAndResidualsRoundTrip) {
   }
   ArithmeticDecoder dec(buf.data(), buf.size());
   SymbolModel skewed, flat;
+  SymbolModelN<8> small;
+  SymbolModelN<32> large;
   BitModel bit;
   ResidualModel rm;
   for (int i = 0; i < 20000; ++i) {
-    ASSERT_EQ(dec.Decode(skewed), symbols[2 * i]);
-    ASSERT_EQ(dec.Decode(flat), symbols[2 * i + 1]);
+    ASSERT_EQ(dec.Decode(skewed), symbols[4 * i]);
+    ASSERT_EQ(dec.Decode(flat), symbols[4 * i + 1]);
+    ASSERT_EQ(dec.Decode(small), symbols[4 * i + 2]);
+    ASSERT_EQ(dec.Decode(large), symbols[4 * i + 3]);
     ASSERT_EQ(dec.Decode(bit), bits[i]);
     ASSERT_EQ(dec.DecodeRaw(raw_count[i]), raw[i]);
     ASSERT_EQ(DecodeResidual(dec, rm), residuals[i]);
@@ -129,38 +139,48 @@ TEST(ArithmeticCoder, SymbolsRawBitsAndResidualsRoundTrip) {
   EXPECT_FALSE(dec.failed());
 }
 
-TEST(ArithmeticCoder, SymbolModelMatchesItsDefinition) {
-  // The SIMD and scalar builds must adapt identically (streams cross platforms, the web decoder is
-  // scalar): compare against the definition, written out here.
-  std::mt19937 rng(3);
-  SymbolModel m;
-  int32_t slow[16], fast[16];
-  for (int i = 0; i < 16; ++i) slow[i] = fast[i] = (i + 1) * 2048;
+// The SIMD and scalar builds must adapt identically (streams cross platforms): compare a model of
+// N symbols against the definition, written out here.
+template <int N>
+void CheckSymbolModelDefinition(unsigned seed) {
+  std::mt19937 rng(seed);
+  SymbolModelN<N> m;
+  int32_t slow[N], fast[N];
+  for (int i = 0; i < N; ++i) slow[i] = fast[i] = (i + 1) * (32768 / N);
   int n = 0;
   for (int step = 0; step < 3000; ++step) {
-    const int s = int(rng() % 100) < 70 ? int(rng() % 4) : int(rng() % 16);
+    const int s = int(rng() % 100) < 70 ? int(rng() % 4) : int(rng() % N);
     int rate = 2;
     for (int t : {2, 6, 14, 30, 62, 126}) rate += n > t;
     n = n < 255 ? n + 1 : n;
     const int fast_rate = rate < 3 ? rate : 3;
-    for (int i = 0; i < 15; ++i) {
-      const int32_t target = i < s ? (i + 1) * 4 : 32768 - (15 - i) * 4;
+    for (int i = 0; i < N - 1; ++i) {
+      const int32_t target = i < s ? (i + 1) * 4 : 32768 - (N - 1 - i) * 4;
       slow[i] += (target - slow[i]) >> rate;
       fast[i] += (target - fast[i]) >> fast_rate;
       ASSERT_GE(slow[i] - (i ? slow[i - 1] : 0), 4);
       ASSERT_GE(fast[i] - (i ? fast[i - 1] : 0), 4);
     }
     m.Update(s);
-    for (int i = 0; i < 16; ++i) {
-      ASSERT_EQ(m.slow[i], slow[i]) << step << " " << i;
-      ASSERT_EQ(m.fast[i], fast[i]) << step << " " << i;
+    for (int i = 0; i < N; ++i) {
+      ASSERT_EQ(m.slow[i], slow[i]) << N << " " << step << " " << i;
+      ASSERT_EQ(m.fast[i], fast[i]) << N << " " << step << " " << i;
     }
     const uint32_t r = (uint32_t(rng()) >> 16) | 0x100;
     const uint32_t code = uint32_t(uint64_t(rng()) * (uint64_t(r) << 16) >> 32);
     int expected = 0;
-    while (expected < 15 && uint64_t(r) * m.cumulative(expected) <= code) ++expected;
-    ASSERT_EQ(m.Find(r, code), expected);
+    while (expected < N - 1 && uint64_t(r) * m.cumulative(expected) <= code) ++expected;
+    uint32_t lo = 0, hi = 0;
+    ASSERT_EQ(m.Find(r, code, &lo, &hi), expected) << N << " " << step;
+    ASSERT_EQ(lo, expected ? m.cumulative(expected - 1) : 0u) << N << " " << step;
+    ASSERT_EQ(hi, m.cumulative(expected)) << N << " " << step;
   }
+}
+
+TEST(ArithmeticCoder, SymbolModelMatchesItsDefinition) {
+  CheckSymbolModelDefinition<8>(3);
+  CheckSymbolModelDefinition<16>(4);
+  CheckSymbolModelDefinition<32>(5);
 }
 
 TEST(ArithmeticCoder, SkewedSymbolsCostLittle) {
