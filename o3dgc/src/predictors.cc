@@ -106,6 +106,7 @@ DegreeTraversal::DegreeTraversal(const WedgeTable& wedges)
       log_(new Visited[wedges.num_vertices()]), par_(16) {
   stacks_[0].reset(new uint32_t[1]);
   for (int l = 1; l < kLevels; ++l) stacks_[l].reset(new uint32_t[wedges.num_wedges() + 1]);
+  for (int l = 0; l < kLevels; ++l) top_[l] = stacks_[l].get();
 }
 
 uint32_t DegreeTraversal::NextWithoutParallelogram() {

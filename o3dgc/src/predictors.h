@@ -93,10 +93,10 @@ class DegreeTraversal {
   std::vector<uint8_t> done_;
   std::vector<uint32_t> degree_;
   // Candidates at levels 1..3 (stack 0 is one entry of scratch space for the branch-free pushes),
-  // top_ in use. A visit pushes at most one entry per wedge, so num_wedges() entries per level
-  // are never exceeded: no capacity checks.
+  // top_[l] one past the newest entry. A visit pushes at most one entry per wedge, so
+  // num_wedges() entries per level are never exceeded: no capacity checks.
   std::unique_ptr<uint32_t[]> stacks_[kLevels];
-  size_t top_[kLevels] = {0, 0, 0, 0};
+  uint32_t* top_[kLevels] = {nullptr, nullptr, nullptr, nullptr};
   // Level 0 holds the neighbours of visited vertices that have no parallelogram yet, newest
   // first; it is only needed when levels 1..3 are empty, so instead of pushing them at every
   // visit, the visits are logged and their wedges searched on demand (see NextWithoutParallelogram).
@@ -164,8 +164,8 @@ inline uint32_t DegreeTraversal::Next() {
   if (visited_ >= wedges_.num_vertices()) return kNoVertex;
   for (int level = kLevels - 1; level > 0; --level) {
     uint32_t* const stack = stacks_[level].get();
-    while (top_[level] > 0) {
-      const uint32_t c = stack[--top_[level]];
+    while (top_[level] != stack) {
+      const uint32_t c = *--top_[level];
       const uint32_t d = degree_[c];
       // Stale entries: coded meanwhile, or a newer entry sits at the vertex's current level.
       if (done_[c] || (d < kLevels ? int(d) : kLevels - 1) != level) continue;
@@ -180,8 +180,7 @@ inline int DegreeTraversal::Visit(uint32_t c) {
   const Wedge* const last = wedges_.end(c);
   const size_t count = size_t(last - first);
   if (O3DGC_UNLIKELY(count > par_.size())) par_.resize(2 * count);
-  uint32_t* slot[kLevels] = {stacks_[0].get(), stacks_[1].get() + top_[1],
-                             stacks_[2].get() + top_[2], stacks_[3].get() + top_[3]};
+  uint32_t* slot[kLevels] = {top_[0], top_[1], top_[2], top_[3]};
   const Wedge** par = par_.data();
   int n_par = 0;
   const uint8_t* const done = done_.data();
@@ -204,7 +203,7 @@ inline int DegreeTraversal::Visit(uint32_t c) {
     *s = a;
     slot[level] = s + one;
   }
-  for (int l = 1; l < kLevels; ++l) top_[l] = size_t(slot[l] - stacks_[l].get());
+  for (int l = 1; l < kLevels; ++l) top_[l] = slot[l];
   log_[log_size_++] = Visited{c, 0};
   done_[c] = 1;
   ++visited_;
@@ -236,16 +235,33 @@ O3DGC_INLINE PredictionContext PredictFromParallelograms(const Wedge* const* par
       for (int k = 0; k < kDim; ++k) kept[i][k] = int64_t(vu[k]) + vw[k] - vx[k];
     }
     ctx.kind = kPredParallelogram;
+    // The context is the disagreement between the parallelograms: twice the mean absolute
+    // deviation from the prediction, summed over the components. With two parallelograms that is
+    // the distance between them (the prediction lies between them), with three the spread (the
+    // prediction is their median).
     if (n_par == 2) {
-      for (int k = 0; k < kDim; ++k) pred[k] = Mean2(kept[0][k] + kept[1][k]);
-    } else if (n_par == 3) {
+      uint64_t spread = 0;
+      for (int k = 0; k < kDim; ++k) {
+        pred[k] = Mean2(kept[0][k] + kept[1][k]);
+        const int64_t d = kept[0][k] - kept[1][k];
+        spread += uint64_t(d < 0 ? -d : d);
+      }
+      ctx.neighbour_magnitude = spread;
+      return ctx;
+    }
+    if (n_par == 3) {
       // Three or more parallelograms: the component-wise median is more robust than the mean.
+      uint64_t spread = 0;
       for (int k = 0; k < kDim; ++k) {
         const int64_t a = kept[0][k], b = kept[1][k], d = kept[2][k];
         const int64_t lo = a < b ? a : b, hi = a < b ? b : a;
         pred[k] = d < lo ? lo : (d > hi ? hi : d);
+        spread += uint64_t((hi > d ? hi : d) - (lo < d ? lo : d));
       }
-    } else if (n_par <= kMaxKept) {
+      ctx.neighbour_magnitude = spread * 2 / 3;
+      return ctx;
+    }
+    if (n_par <= kMaxKept) {
       for (int k = 0; k < kDim; ++k) {
         int64_t col[kMaxKept];
         for (int i = 0; i < n_par; ++i) {  // insertion sort: n_par is small
@@ -267,8 +283,6 @@ O3DGC_INLINE PredictionContext PredictFromParallelograms(const Wedge* const* par
       }
       for (int k = 0; k < kDim; ++k) pred[k] = DivRound(sum[k], n_par);
     }
-    // The context is the disagreement between the parallelograms: twice the mean absolute
-    // deviation, summed over the components.
     uint64_t dev = 0;
     for (int i = 0; i < m; ++i) {
       for (int k = 0; k < kDim; ++k) {
