@@ -6,23 +6,38 @@
 namespace o3dgc {
 namespace {
 
-struct CrcTable {
-  uint32_t v[256];
-  CrcTable() {
+// Slicing by 8: table t[k][b] is the CRC of byte b followed by k zero bytes, so eight bytes take
+// eight independent lookups.
+struct CrcTables {
+  uint32_t t[8][256];
+  constexpr CrcTables() : t() {
     for (uint32_t i = 0; i < 256; ++i) {
       uint32_t c = i;
       for (int k = 0; k < 8; ++k) c = (c & 1) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-      v[i] = c;
+      t[0][i] = c;
+    }
+    for (uint32_t i = 0; i < 256; ++i) {
+      for (int k = 1; k < 8; ++k) t[k][i] = t[0][t[k - 1][i] & 0xFF] ^ (t[k - 1][i] >> 8);
     }
   }
 };
+constexpr CrcTables kCrc{};
 
 }  // namespace
 
 uint32_t Crc32(const uint8_t* data, size_t size, uint32_t crc) {
-  static const CrcTable table;
+  const auto& t = kCrc.t;
   crc = ~crc;
-  for (size_t i = 0; i < size; ++i) crc = table.v[(crc ^ data[i]) & 0xFF] ^ (crc >> 8);
+  size_t i = 0;
+  for (; i + 8 <= size; i += 8) {
+    const uint32_t lo = crc ^ (uint32_t(data[i]) | uint32_t(data[i + 1]) << 8 |
+                               uint32_t(data[i + 2]) << 16 | uint32_t(data[i + 3]) << 24);
+    const uint32_t hi = uint32_t(data[i + 4]) | uint32_t(data[i + 5]) << 8 |
+                        uint32_t(data[i + 6]) << 16 | uint32_t(data[i + 7]) << 24;
+    crc = t[7][lo & 0xFF] ^ t[6][(lo >> 8) & 0xFF] ^ t[5][(lo >> 16) & 0xFF] ^ t[4][lo >> 24] ^
+          t[3][hi & 0xFF] ^ t[2][(hi >> 8) & 0xFF] ^ t[1][(hi >> 16) & 0xFF] ^ t[0][hi >> 24];
+  }
+  for (; i < size; ++i) crc = t[0][(crc ^ data[i]) & 0xFF] ^ (crc >> 8);
   return ~crc;
 }
 
