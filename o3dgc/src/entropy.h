@@ -66,11 +66,19 @@ inline void EncodeEG(ArithmeticEncoder& e, EGModel& m, uint64_t u) {
   EncodeMantissa(e, m.suffix[k], v, k);
 }
 
-inline uint64_t DecodeEG(ArithmeticDecoder& d, EGModel& m) {
-  int k = 0;
+// Values of 2 and more (a prefix of at least two ones), out of line.
+O3DGC_NOINLINE inline uint64_t DecodeEGTail(ArithmeticDecoder& d, EGModel& m) {
+  int k = 2;
   while (k < kMaxEGPrefix && d.Decode(m.prefix[k])) ++k;
-  if (k == 0) return 0;
   return DecodeMantissa(d, m.suffix[k], k) - 1;
+}
+
+// The common small values (0: one decision; 1 and 2: three) inline, so that a caller's decoder
+// state can stay in registers.
+O3DGC_INLINE uint64_t DecodeEG(ArithmeticDecoder& d, EGModel& m) {
+  if (!d.Decode(m.prefix[0])) return 0;
+  if (!d.Decode(m.prefix[1])) return 1 + uint64_t(d.Decode(m.suffix[1][0]));
+  return DecodeEGTail(d, m);
 }
 
 // Signed residuals: zero flag, sign, then the bit length k of the magnitude coded relative to a
