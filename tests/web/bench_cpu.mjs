@@ -13,40 +13,13 @@
 // three's copy of its official WASM decoder, driven by web/bench_draco.js as in the browser.
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
-import { createRequire } from 'node:module';
 import path from 'node:path';
-import { pathToFileURL } from 'node:url';
-import { fmt as f, median, parseArgs, prepareStreams, repo } from './bench_streams.mjs';
+import { fmt as f, median, nodeDecoders, parseArgs, prepareStreams } from './bench_streams.mjs';
 
 const a = parseArgs(process.argv);
 const runs = Number(a.runs || 15);
 const warmup = Number(a.warmup || 3);
-// The emscripten glue is built for web and worker only: look like a worker to it (wasmBinary is
-// passed, so nothing is fetched). Draco's wrapper wants CommonJS globals.
-globalThis.self = globalThis;
-globalThis.importScripts = () => {};
-globalThis.location = { href: pathToFileURL(`${repo}/`).href };
-globalThis.require = createRequire(import.meta.url);
-globalThis.__dirname = repo;
-
-const { decoderFromModule } = await import(pathToFileURL(path.join(repo, 'web/hullpack_decoder.js')).href);
-const decoders = [];
-const dirs = (a.wasm || 'samples/web/dist').split(',').map((d) => path.resolve(repo, d));
-for (const d of dirs) {
-  const { default: factory } = await import(`${pathToFileURL(path.join(d, 'hullpack_decoder_wasm.js')).href}?${decoders.length}`);
-  const M = await factory({ wasmBinary: fs.readFileSync(path.join(d, 'hullpack_decoder_wasm.wasm')) });
-  const dec = decoderFromModule(M);
-  const name = dirs.length === 1 ? 'hullpack' : `hullpack[${path.basename(d)}]`;
-  decoders.push({ name, stream: 's3d', decode: (b) => { const m = dec.decode(b); return [m.numVertices, m.numTriangles, m.attributes.map((x) => x.semantic).join('+')]; } });
-}
-{
-  const dracoDir = path.join(repo, 'node_modules/three/examples/jsm/libs/draco');
-  // A classic script defining DracoDecoderModule, then web/bench_draco.js on the same global.
-  new Function(`${fs.readFileSync(path.join(dracoDir, 'draco_wasm_wrapper.js'), 'utf8')}\nself.DracoDecoderModule = DracoDecoderModule;`)();
-  new Function(fs.readFileSync(path.join(repo, 'web/bench_draco.js'), 'utf8'))();
-  const D = await self.hullpackBenchDracoModule(fs.readFileSync(path.join(dracoDir, 'draco_decoder.wasm')));
-  decoders.push({ name: 'draco', stream: 'drc', decode: (b) => { const m = self.hullpackBenchDracoDecode(D, b); return [m.numVertices, m.numTriangles, m.attributes.map((x) => x.semantic).join('+')]; } });
-}
+const decoders = await nodeDecoders(a);
 
 const { dir, list } = prepareStreams(a);
 console.log(`node ${process.version} (V8 ${process.versions.v8}); CPU ms per decode, median of ${runs} after ${warmup} warm-up, runs interleaved`);

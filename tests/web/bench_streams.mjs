@@ -6,7 +6,8 @@ import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { fileURLToPath } from 'node:url';
+import { createRequire } from 'node:module';
+import { fileURLToPath, pathToFileURL } from 'node:url';
 
 export const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
 
@@ -56,3 +57,40 @@ export const median = (v) => {
   return s.length % 2 ? s[m] : (s[m - 1] + s[m]) / 2;
 };
 export const fmt = (x) => (x < 10 ? x.toFixed(2) : x.toFixed(1));
+
+// The decoders of the Node benchmarks (bench_cpu.mjs, bench_instructions.mjs), each
+// {name, stream: 's3d' | 'drc', decode(bytes) -> [vertices, triangles, 'attr+attr']}: hullpack's
+// wasm build from each folder of a.wasm (default samples/web/dist; a.only = 'hullpack' or 'draco'
+// keeps one kind) and Draco's official WASM decoder (three's copy), driven by web/bench_draco.js
+// as in the browser.
+export async function nodeDecoders(a) {
+  // The emscripten glue is built for web and worker only: look like a worker to it (wasmBinary is
+  // passed, so nothing is fetched). Draco's wrapper wants CommonJS globals.
+  globalThis.self = globalThis;
+  globalThis.importScripts = () => {};
+  globalThis.location = { href: pathToFileURL(`${repo}/`).href };
+  globalThis.require = createRequire(import.meta.url);
+  globalThis.__dirname = repo;
+  const summary = (m) => [m.numVertices, m.numTriangles, m.attributes.map((x) => x.semantic).join('+')];
+  const decoders = [];
+  if (a.only !== 'draco') {
+    const { decoderFromModule } = await import(pathToFileURL(path.join(repo, 'web/hullpack_decoder.js')).href);
+    const dirs = (a.wasm || 'samples/web/dist').split(',').map((d) => path.resolve(repo, d));
+    for (const d of dirs) {
+      const { default: factory } = await import(`${pathToFileURL(path.join(d, 'hullpack_decoder_wasm.js')).href}?${decoders.length}`);
+      const M = await factory({ wasmBinary: fs.readFileSync(path.join(d, 'hullpack_decoder_wasm.wasm')) });
+      const dec = decoderFromModule(M);
+      const name = dirs.length === 1 ? 'hullpack' : `hullpack[${path.basename(d)}]`;
+      decoders.push({ name, stream: 's3d', decode: (b) => summary(dec.decode(b)) });
+    }
+  }
+  if (a.only !== 'hullpack') {
+    const dracoDir = path.join(repo, 'node_modules/three/examples/jsm/libs/draco');
+    // A classic script defining DracoDecoderModule, then web/bench_draco.js on the same global.
+    new Function(`${fs.readFileSync(path.join(dracoDir, 'draco_wasm_wrapper.js'), 'utf8')}\nself.DracoDecoderModule = DracoDecoderModule;`)();
+    new Function(fs.readFileSync(path.join(repo, 'web/bench_draco.js'), 'utf8'))();
+    const D = await self.hullpackBenchDracoModule(fs.readFileSync(path.join(dracoDir, 'draco_decoder.wasm')));
+    decoders.push({ name: 'draco', stream: 'drc', decode: (b) => summary(self.hullpackBenchDracoDecode(D, b)) });
+  }
+  return decoders;
+}
