@@ -12,6 +12,7 @@ namespace o3dgc {
 namespace {
 
 constexpr uint32_t kNone = 0xFFFFFFFFu;
+constexpr uint32_t kNext[3] = {1, 2, 0}, kPrev[3] = {2, 0, 1};
 
 class Encoder {
  public:
@@ -28,38 +29,29 @@ class Encoder {
     // triangles (two incident triangles of a vertex with the same successor).
     has_copies_ = false;
     for (size_t t = 0; t < nt_ && !has_copies_; ++t) has_copies_ = kind_[t] == kCopy;
+    // A successor seen twice around a vertex is found with a stamp per vertex (the vertex whose
+    // triangles were last looked at).
     has_flips_ = false;
-    std::vector<uint32_t> successors;
-    for (uint32_t a = 0; a < nv_in_ && !has_flips_; ++a) {
-      const uint32_t n = vt_start_[a + 1] - vt_start_[a];
-      const uint32_t* list = vt_.data() + vt_start_[a];
-      // The corner after a in each incident triangle, without branching on where a is.
-      auto successor = [&](uint32_t k) {
-        const uint32_t* v = &tris_[3 * size_t(list[k])];
-        return (v[0] == a) * v[1] + (v[1] == a) * v[2] + (v[2] == a) * v[0];
-      };
-      if (n <= 16) {
-        // Few incident triangles (the usual case): compare every pair, no sort.
-        uint32_t s[16];
+    {
+      std::vector<uint32_t> stamp(nv_in_, kNone);
+      for (uint32_t a = 0; a < nv_in_ && !has_flips_; ++a) {
         uint32_t repeated = 0;
-        for (uint32_t i = 0; i < n; ++i) {
-          s[i] = successor(i);
-          for (uint32_t j = 0; j < i; ++j) repeated |= s[i] == s[j];
+        for (uint32_t k = vt_start_[a]; k < vt_start_[a + 1]; ++k) {
+          const uint32_t corner = vt_[k];
+          const uint32_t b = tris_[corner - corner % 3 + kNext[corner % 3]];
+          repeated |= stamp[b] == a;
+          stamp[b] = a;
         }
         has_flips_ = repeated != 0;
-      } else {
-        successors.resize(n);
-        for (uint32_t i = 0; i < n; ++i) successors[i] = successor(i);
-        std::sort(successors.begin(), successors.end());
-        has_flips_ = std::adjacent_find(successors.begin(), successors.end()) != successors.end();
       }
     }
     enc_.EncodeBits(has_flips_ ? 1 : 0, 1);
     enc_.EncodeBits(has_copies_ ? 1 : 0, 1);
     new_of_old_.assign(nv_in_, kNone);
     visited_.assign(nt_, 0);
-    out_.triangles.reserve(nt_ * 3);
-    out_.source.reserve(nt_);
+    // Every input triangle is emitted once (primary, copy or degenerate).
+    out_.triangles.resize(nt_ * 3);
+    out_.source.resize(nt_);
     front_.Reserve(nv_in_, nt_);
 
     size_t scan = 0;
@@ -76,7 +68,7 @@ class Encoder {
         const uint32_t x = CodeVertexRef(tris_[3 * t]);
         const uint32_t y = CodeVertexRef(tris_[3 * t + 1]);
         const uint32_t z = CodeVertexRef(tris_[3 * t + 2]);
-        front_.StartTriangle(uint32_t(out_.source.size()), x, y, z);
+        front_.StartTriangle(uint32_t(emitted_), x, y, z);
         Emit(t, x, y, z);
         continue;
       }
@@ -88,31 +80,31 @@ class Encoder {
       size_t found = kNone;
       int flip = 0;
       uint32_t oc = kNone;
-      // Search the shorter of the two vertices' triangle lists (a fan apex can have many).
-      const uint32_t os =
-          (vt_start_[oa + 1] - vt_start_[oa] <= vt_start_[ob + 1] - vt_start_[ob]) ? oa : ob;
+      // Search the shorter of the two vertices' triangle lists (a fan apex can have many). Each
+      // entry is the list vertex's corner, so its two neighbours in the triangle are known.
+      const bool from_a = vt_start_[oa + 1] - vt_start_[oa] <= vt_start_[ob + 1] - vt_start_[ob];
+      const uint32_t os = from_a ? oa : ob, other = from_a ? ob : oa;
       for (uint32_t k = vt_start_[os]; k < vt_start_[os + 1]; ++k) {
-        const uint32_t t = vt_[k];
+        const uint32_t corner = vt_[k];
+        const uint32_t t = corner / 3, j = corner % 3;
         if (visited_[t]) continue;
-        const uint32_t* v = &tris_[3 * t];
-        int ia = -1, ib = -1;
-        for (int j = 0; j < 3; ++j) {
-          if (v[j] == oa) ia = j;
-          if (v[j] == ob) ib = j;
-        }
-        if (ia < 0 || ib < 0) continue;
-        const int third = 3 - ia - ib;
-        const bool consistent = ((ib + 1) % 3) == ia;  // the triangle holds b->a
+        const uint32_t* v = &tris_[3 * size_t(t)];
+        const uint32_t next = v[kNext[j]], prev = v[kPrev[j]];
+        if (next != other && prev != other) continue;
+        // The triangle holds b->a when a follows b: from a, b is the previous corner; from b, a is
+        // the next one.
+        const bool consistent = from_a ? prev == other : next == other;
+        const uint32_t third = next == other ? prev : next;
         if (consistent) {
           found = t;
           flip = 0;
-          oc = v[third];
+          oc = third;
           break;
         }
         if (found == kNone) {
           found = t;
           flip = 1;
-          oc = v[third];
+          oc = third;
         }
       }
       const Front::Candidates cand = front_.Look(a, b);
@@ -139,7 +131,7 @@ class Encoder {
       }
       if (has_flips_) enc_.Encode(flip, m_->flip);
       visited_[found] = 1;
-      front_.Attach(g, uint32_t(out_.source.size()), a, b, c, flip != 0, gate_bc);
+      front_.Attach(g, uint32_t(emitted_), a, b, c, flip != 0, gate_bc);
       if (flip) {
         Emit(found, a, b, c);
       } else {
@@ -152,8 +144,7 @@ class Encoder {
       const uint32_t x = CodeVertexRef(tris_[3 * t]);
       const uint32_t y = CodeVertexRef(tris_[3 * t + 1]);
       const uint32_t z = CodeVertexRef(tris_[3 * t + 2]);
-      Push(x, y, z);
-      out_.source.push_back(t);
+      Push(t, x, y, z);
     }
     out_.opposite = front_.TakeOpposite(nt_);
     out_.opposite_vertices = front_.TakeOppositeVertices(nt_);
@@ -190,6 +181,7 @@ class Encoder {
     }
   }
 
+  // Corners (triangle * 3 + slot) of the primary triangles around every vertex, by triangle.
   void BuildVertexTriangles() {
     vt_start_.assign(nv_in_ + 1, 0);
     for (size_t t = 0; t < nt_; ++t) {
@@ -201,14 +193,16 @@ class Encoder {
     std::vector<uint32_t> fill(vt_start_.begin(), vt_start_.end() - 1);
     for (size_t t = 0; t < nt_; ++t) {
       if (kind_[t] != kPrimary) continue;
-      for (int j = 0; j < 3; ++j) vt_[fill[tris_[3 * t + j]]++] = uint32_t(t);
+      for (int j = 0; j < 3; ++j) vt_[fill[tris_[3 * t + j]]++] = uint32_t(3 * t + j);
     }
   }
 
-  void Push(uint32_t x, uint32_t y, uint32_t z) {
-    out_.triangles.push_back(x);
-    out_.triangles.push_back(y);
-    out_.triangles.push_back(z);
+  void Push(size_t source, uint32_t x, uint32_t y, uint32_t z) {
+    uint32_t* v = out_.triangles.data() + 3 * emitted_;
+    v[0] = x;
+    v[1] = y;
+    v[2] = z;
+    out_.source[emitted_++] = uint32_t(source);
   }
 
   uint32_t NewVertex(uint32_t old) {
@@ -231,8 +225,7 @@ class Encoder {
 
   // Records a primary triangle and codes its copies.
   void Emit(size_t t, uint32_t x, uint32_t y, uint32_t z) {
-    Push(x, y, z);
-    out_.source.push_back(uint32_t(t));
+    Push(t, x, y, z);
     if (!has_copies_) return;
     uint32_t count = 0;
     for (uint32_t q = first_copy_[t]; q != kNone; q = next_copy_[q]) ++count;
@@ -244,11 +237,10 @@ class Encoder {
       const bool same = (nx == x && ny == y) || (nx == y && ny == z) || (nx == z && ny == x);
       enc_.Encode(same ? 0 : 1, m_->copy_flip);
       if (same) {
-        Push(x, y, z);
+        Push(q, x, y, z);
       } else {
-        Push(x, z, y);
+        Push(q, x, z, y);
       }
-      out_.source.push_back(q);
     }
   }
 
@@ -264,6 +256,7 @@ class Encoder {
   std::vector<uint32_t> vt_start_, vt_;
   std::vector<uint32_t> new_of_old_;
   bool has_flips_ = false, has_copies_ = false;
+  size_t emitted_ = 0;  // triangles in out_ so far
 };
 
 }  // namespace

@@ -44,14 +44,6 @@ void Quantizer::Fit(const float* data, size_t stride, size_t count) {
   }
 }
 
-int32_t Quantizer::Quantize(float x, uint32_t c) const {
-  if (!(range[c] > 0)) return 0;
-  const double t = (double(x) - double(min[c])) / double(range[c]);
-  double q = std::floor(t * double(max_q()) + 0.5);
-  if (q < 0) q = 0;
-  if (q > double(max_q())) q = double(max_q());
-  return int32_t(q);
-}
 
 void Quantizer::DequantizeAll(const int32_t* q, const uint32_t* index, size_t count,
                               float* out) const {

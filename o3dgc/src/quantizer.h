@@ -24,7 +24,16 @@ struct Quantizer {
   uint32_t max_q() const { return uint32_t((uint64_t(1) << bits) - 1); }
   // Sets min/range from `count` vectors of `dimension` floats at data + i * stride bytes.
   void Fit(const float* data, size_t stride, size_t count);
-  int32_t Quantize(float x, uint32_t component) const;
+  int32_t Quantize(float x, uint32_t component) const {
+    if (!(range[component] > 0)) return 0;
+    const double t = (double(x) - double(min[component])) / double(range[component]);
+    // floor(y) clamped to [0, max_q]: truncation gives the same for y in (0, max_q) (no libm
+    // call: SSE2 has no rounding instruction).
+    const double y = t * double(max_q()) + 0.5;
+    if (!(y > 0)) return 0;
+    if (y >= double(max_q())) return int32_t(max_q());
+    return int32_t(y);
+  }
   float Dequantize(int32_t q, uint32_t component) const {
     if (!(range[component] > 0)) return min[component];
     return float(double(min[component]) +
