@@ -17,9 +17,9 @@ constexpr uint32_t kNext[3] = {1, 2, 0}, kPrev[3] = {2, 0, 1};
 class Encoder {
  public:
   Encoder(const std::vector<uint32_t>& tris, uint32_t num_vertices, ArithmeticEncoder* enc,
-          ConnectivityEncoding* out)
+          ConnectivityEncoding* out, bool keep_edges)
       : tris_(tris), nt_(tris.size() / 3), nv_in_(num_vertices), enc_(*enc), out_(*out),
-        m_(new ConnectivityModels) {}
+        m_(new ConnectivityModels), keep_edges_(keep_edges) {}
 
   void Run() {
     Classify();
@@ -52,7 +52,7 @@ class Encoder {
     // Every input triangle is emitted once (primary, copy or degenerate).
     out_.triangles.resize(nt_ * 3);
     out_.source.resize(nt_);
-    front_.Reserve(nv_in_, nt_);
+    front_.Reserve(nv_in_, nt_, keep_edges_);
 
     size_t scan = 0;
     for (;;) {
@@ -257,16 +257,17 @@ class Encoder {
   std::vector<uint32_t> new_of_old_;
   bool has_flips_ = false, has_copies_ = false;
   size_t emitted_ = 0;  // triangles in out_ so far
+  const bool keep_edges_;
 };
 
 }  // namespace
 
 void EncodeConnectivity(const std::vector<uint32_t>& triangles, uint32_t num_vertices,
-                        ArithmeticEncoder* enc, ConnectivityEncoding* out) {
+                        ArithmeticEncoder* enc, ConnectivityEncoding* out, bool keep_edges) {
   out->triangles.clear();
   out->source.clear();
   out->old_of_new.clear();
-  Encoder(triangles, num_vertices, enc, out).Run();
+  Encoder(triangles, num_vertices, enc, out, keep_edges).Run();
 }
 
 }  // namespace o3dgc

@@ -25,8 +25,10 @@ struct ConnectivityEncoding {
 };
 
 // `triangles`: 3 * num_triangles vertex ids < num_vertices, every vertex referenced at least once.
+// Without `keep_edges`, out->opposite stays empty (only parallelogram-coded attributes besides
+// positions need it).
 void EncodeConnectivity(const std::vector<uint32_t>& triangles, uint32_t num_vertices,
-                        ArithmeticEncoder* enc, ConnectivityEncoding* out);
+                        ArithmeticEncoder* enc, ConnectivityEncoding* out, bool keep_edges = true);
 
 }  // namespace o3dgc
 

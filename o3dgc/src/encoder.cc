@@ -180,7 +180,11 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
 
   // Connectivity over welded vertices.
   ConnectivityEncoding conn;
-  EncodeConnectivity(welded_tris, num_welded, &enc, &conn);
+  // The neighbour triangles themselves are needed only by parallelogram-predicted attributes
+  // besides positions (across seams; positions use the opposite vertices).
+  bool attribute_wedges = h.has_normals && h.normal.prediction == Prediction::kParallelogram;
+  for (const AttributeDesc& d : h.floats) attribute_wedges |= d.prediction == Prediction::kParallelogram;
+  EncodeConnectivity(welded_tris, num_welded, &enc, &conn, attribute_wedges);
   const uint32_t nc = uint32_t(conn.old_of_new.size());
   std::vector<uint32_t> welded_new(num_welded, kNone);
   for (uint32_t i = 0; i < nc; ++i) welded_new[conn.old_of_new[i]] = i;
@@ -295,8 +299,11 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
   if (!progress(0.6f)) return Status::kCancelled;
 
   // Per-vertex attributes over the attribute-vertex mesh.
-  std::vector<uint32_t> attr_tris(3 * nt);
-  for (size_t i = 0; i < 3 * nt; ++i) attr_tris[i] = orig_new[corner_vertex[i]];
+  std::vector<uint32_t> attr_tris;  // only attributes beside positions need it
+  if (h.has_normals || !h.floats.empty()) {
+    attr_tris.resize(3 * nt);
+    for (size_t i = 0; i < 3 * nt; ++i) attr_tris[i] = orig_new[corner_vertex[i]];
+  }
   MeshAdjacency attr_adj;
   if (h.has_normals && h.normal.prediction == Prediction::kSurfaceNormal) {
     attr_adj.Build(attr_tris, uint32_t(nv));
