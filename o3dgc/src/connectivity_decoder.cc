@@ -79,6 +79,7 @@ class Decoder {
     }
     const uint64_t extras = DecodeEG(dec, m_->extra_count);
     if (extras > nt_ - count_) return Status::kCorrupt;
+    extras_ = extras;
     for (uint64_t i = 0; i < extras; ++i) {
       if (dec.failed()) return Status::kTruncated;
       uint32_t v[3];
@@ -94,6 +95,14 @@ class Decoder {
   }
 
   uint32_t num_vertices() const { return front_.num_vertices(); }
+  // Triangles per vertex, when every triangle went through the front (see DecodeConnectivity).
+  std::vector<uint32_t> VertexTriangles() const {
+    std::vector<uint32_t> counts;
+    if (has_copies_ || extras_ != 0) return counts;
+    counts.resize(front_.num_vertices());
+    for (uint32_t v = 0; v < front_.num_vertices(); ++v) counts[v] = front_.degree(v);
+    return counts;
+  }
   std::vector<uint32_t> TakeOpposite() { return front_.TakeOpposite(nt_); }
   std::vector<uint32_t> TakeOppositeVertices() { return front_.TakeOppositeVertices(nt_); }
   const ArithmeticDecoder& decoder() const { return dec_; }
@@ -144,6 +153,7 @@ class Decoder {
   std::unique_ptr<ConnectivityModels> m_;
   Front front_;
   bool has_flips_ = false, has_copies_ = false;
+  uint64_t extras_ = 0;
   const bool keep_edges_;
 };
 
@@ -151,13 +161,15 @@ class Decoder {
 
 Status DecodeConnectivity(ArithmeticDecoder* dec, size_t num_triangles, size_t max_vertices,
                           std::vector<uint32_t>* triangles, uint32_t* num_vertices,
-                          std::vector<uint32_t>* opposite, std::vector<uint32_t>* opposite_vertices) {
+                          std::vector<uint32_t>* opposite, std::vector<uint32_t>* opposite_vertices,
+                          std::vector<uint32_t>* vertex_triangles) {
   Decoder d(dec, num_triangles, max_vertices, triangles, opposite != nullptr);
   const Status s = d.Run();
   *dec = d.decoder();
   *num_vertices = d.num_vertices();
   if (s == Status::kOk && opposite) *opposite = d.TakeOpposite();
   if (s == Status::kOk && opposite_vertices) *opposite_vertices = d.TakeOppositeVertices();
+  if (s == Status::kOk && vertex_triangles) *vertex_triangles = d.VertexTriangles();
   return s;
 }
 

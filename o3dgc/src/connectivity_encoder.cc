@@ -148,6 +148,10 @@ class Encoder {
     }
     out_.opposite = front_.TakeOpposite(nt_);
     out_.opposite_vertices = front_.TakeOppositeVertices(nt_);
+    if (!has_copies_ && degenerate_.empty()) {
+      out_.vertex_triangles.resize(front_.num_vertices());
+      for (uint32_t v = 0; v < front_.num_vertices(); ++v) out_.vertex_triangles[v] = front_.degree(v);
+    }
   }
 
  private:
@@ -267,6 +271,7 @@ void EncodeConnectivity(const std::vector<uint32_t>& triangles, uint32_t num_ver
   out->triangles.clear();
   out->source.clear();
   out->old_of_new.clear();
+  out->vertex_triangles.clear();
   Encoder(triangles, num_vertices, enc, out, keep_edges).Run();
 }
 

@@ -22,6 +22,9 @@ struct ConnectivityEncoding {
   std::vector<uint32_t> old_of_new;  // input vertex of each new vertex id
   std::vector<uint32_t> opposite;    // neighbours found by the traversal (see Front::TakeOpposite)
   std::vector<uint32_t> opposite_vertices;  // their opposite vertices (Front::TakeOppositeVertices)
+  // Triangles at each new vertex when every triangle went through the front (no repeated or
+  // degenerate ones), else empty (see DecodeConnectivity).
+  std::vector<uint32_t> vertex_triangles;
 };
 
 // `triangles`: 3 * num_triangles vertex ids < num_vertices, every vertex referenced at least once.

@@ -75,6 +75,7 @@ class Front {
     return num_vertices_++;
   }
   uint32_t num_vertices() const { return num_vertices_; }
+  uint32_t degree(uint32_t v) const { return vertices_[v].deg; }  // triangles attached at v
   bool empty() const { return stack_top_ == 0; }
   // Pops the next gate; returns -1 if it was closed meanwhile.
   int32_t Pop() {

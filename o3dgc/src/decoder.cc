@@ -52,14 +52,14 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
   size_t mark = dec.BytesConsumed();
 
   // Connectivity.
-  std::vector<uint32_t> tris, opposite, opposite_vertices;
+  std::vector<uint32_t> tris, opposite, opposite_vertices, vertex_triangles;
   uint32_t nc = 0;
   // The neighbour triangles themselves are needed only by parallelogram-predicted attributes
   // (across seams); positions use the opposite vertices.
   bool attribute_wedges = h.has_normals && h.normal.prediction == Prediction::kParallelogram;
   for (const AttributeDesc& d : h.floats) attribute_wedges |= d.prediction == Prediction::kParallelogram;
   if ((s = DecodeConnectivity(&dec, nt, nv, &tris, &nc, attribute_wedges ? &opposite : nullptr,
-                              &opposite_vertices)) != Status::kOk) {
+                              &opposite_vertices, &vertex_triangles)) != Status::kOk) {
     return s;
   }
 
@@ -158,7 +158,7 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
   {
     WedgeTable wedges;
     if (h.position.prediction == Prediction::kParallelogram) {
-      wedges.BuildFromOppositeVertices(tris, nw, opposite_vertices);
+      wedges.BuildFromOppositeVertices(tris, nw, opposite_vertices, &vertex_triangles);
     }
     if ((s = DecodeQuantized(&dec, &wedges, nw, 3, h.position.bits, h.position.prediction, &qpos)) !=
         Status::kOk) {

@@ -291,7 +291,8 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
   {
     WedgeTable wedges;
     if (h.position.prediction == Prediction::kParallelogram) {
-      wedges.BuildFromOppositeVertices(conn.triangles, nw, conn.opposite_vertices);
+      wedges.BuildFromOppositeVertices(conn.triangles, nw, conn.opposite_vertices,
+                                       &conn.vertex_triangles);
     }
     EncodeQuantized(&enc, &wedges, qpos, 3, h.position.bits, h.position.prediction);
   }

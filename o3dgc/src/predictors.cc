@@ -27,10 +27,15 @@ void MeshAdjacency::Build(const std::vector<uint32_t>& triangles, uint32_t num_v
   }
 }
 
-void WedgeTable::Count(const uint32_t* tri, size_t nt, uint32_t num_vertices) {
+void WedgeTable::Count(const uint32_t* tri, size_t nt, uint32_t num_vertices,
+                       const std::vector<uint32_t>* counts) {
   start_.assign(size_t(num_vertices) + 2, 0);
   uint32_t* start = start_.data() + 1;  // counts at start[v + 1], then fill positions at start[v]
-  for (size_t t = 0; t < nt; ++t) {
+  if (counts) {
+    const size_t n = counts->size() < num_vertices ? counts->size() : num_vertices;
+    for (size_t v = 0; v < n; ++v) start[v + 1] = (*counts)[v];
+  }
+  for (size_t t = 0; t < (counts ? 0 : nt); ++t) {
     const uint32_t a = tri[3 * t], b = tri[3 * t + 1], c = tri[3 * t + 2];
     const uint32_t ok = (a != b) & (b != c) & (a != c);
     start[a + 1] += ok;
@@ -76,11 +81,13 @@ void WedgeTable::Build(const std::vector<uint32_t>& triangles, uint32_t num_vert
 
 void WedgeTable::BuildFromOppositeVertices(const std::vector<uint32_t>& triangles,
                                            uint32_t num_vertices,
-                                           const std::vector<uint32_t>& opposite_vertices) {
+                                           const std::vector<uint32_t>& opposite_vertices,
+                                           const std::vector<uint32_t>* vertex_triangles) {
   const size_t nt = triangles.size() / 3;
   const uint32_t* tri = triangles.data();
   const uint32_t* oppv = opposite_vertices.size() >= 3 * nt ? opposite_vertices.data() : nullptr;
-  Count(tri, nt, num_vertices);
+  Count(tri, nt, num_vertices,
+        vertex_triangles && !vertex_triangles->empty() ? vertex_triangles : nullptr);
   uint32_t* start = start_.data() + 1;
   Wedge* out = wedges_.get();
   for (size_t t = 0; t < nt; ++t) {

@@ -48,17 +48,22 @@ class WedgeTable {
   void Build(const std::vector<uint32_t>& triangles, uint32_t num_vertices,
              const std::vector<uint32_t>& opposite, bool verify);
   // For the mesh the connectivity coder numbered: `opposite_vertices` (3 per triangle, see
-  // Front::TakeOppositeVertices) gives x directly.
+  // Front::TakeOppositeVertices) gives x directly. `vertex_triangles` (optional, as
+  // DecodeConnectivity gives it: the non-degenerate triangles at each vertex, zero past its end)
+  // spares counting them.
   void BuildFromOppositeVertices(const std::vector<uint32_t>& triangles, uint32_t num_vertices,
-                                 const std::vector<uint32_t>& opposite_vertices);
+                                 const std::vector<uint32_t>& opposite_vertices,
+                                 const std::vector<uint32_t>* vertex_triangles = nullptr);
   const Wedge* begin(uint32_t v) const { return wedges_.get() + start_[v]; }
   const Wedge* end(uint32_t v) const { return wedges_.get() + start_[v + 1]; }
   uint32_t num_vertices() const { return uint32_t(start_.size() - 1); }
   size_t num_wedges() const { return start_.empty() ? 0 : start_.back(); }
 
  private:
-  // Counts wedges per vertex into start_ (start_[v + 2]) and sizes wedges_.
-  void Count(const uint32_t* tri, size_t nt, uint32_t num_vertices);
+  // Counts wedges per vertex into start_ (start_[v + 2]) and sizes wedges_; `counts` (optional)
+  // gives them.
+  void Count(const uint32_t* tri, size_t nt, uint32_t num_vertices,
+             const std::vector<uint32_t>* counts = nullptr);
   std::vector<uint32_t> start_;
   std::unique_ptr<Wedge[]> wedges_;  // every entry is written by Build (no zero fill first)
 };
