@@ -47,6 +47,7 @@ void Quantizer::Fit(const float* data, size_t stride, size_t count) {
 
 void Quantizer::DequantizeAll(const int32_t* q, const uint32_t* index, size_t count,
                               float* out) const {
+  if (count == 0) return;  // an empty mesh's arrays may be null: no pointer arithmetic on them
   const uint32_t dim = dimension;
   for (uint32_t c = 0; c < dim; ++c) {
     // Locals: the float stores below could alias the members.
