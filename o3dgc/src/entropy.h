@@ -146,11 +146,12 @@ constexpr int kDirectClasses = kResidualSymbols - 2;
 constexpr int kEscapeSymbol = kResidualSymbols - 1;
 constexpr int kHighClasses = kDirectClasses + kEscapeSymbol;  // below: the two decisions
 
+// The models every residual uses first (two cache lines), the rare escapes' after them.
 struct ResidualModel {
   SymbolModelN<kResidualSymbols> magnitude;
-  SymbolModelN<kResidualSymbols> high;  // k - kDirectClasses after an escape
   BitModel sign;
   BitModel mantissa[kDirectClasses + 1];  // the bit below the leading one, by k (larger: the last)
+  SymbolModelN<kResidualSymbols> high;  // k - kDirectClasses after an escape
   BitModel escape[kMaxEGPrefix - kHighClasses + 1];
 };
 
