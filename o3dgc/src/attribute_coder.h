@@ -50,6 +50,7 @@ class ContextModels {
   // Distance between the same context of consecutive components.
   size_t component_stride() const { return size_t(kinds_) * kMagContexts * kIntraContexts; }
   BitModel side;
+  ResidualEscape escape;  // shared by all contexts (ResidualModel only)
 
  private:
   int kinds_;

@@ -36,7 +36,7 @@ Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges, 
 #endif
     for (int k = 0; k < kDim; ++k) {
       const int64_t p = pred[k] < 0 ? 0 : (pred[k] > maxq ? maxq : pred[k]);
-      r[k] = DecodeResidual(dec, row[stride * k + intra]);
+      r[k] = DecodeResidual(dec, row[stride * k + intra], models.escape);
       intra = coarse ? 0 : IntraContext(r[k]);
       const int64_t v = p + r[k];
       ok &= uint64_t(v) <= uint64_t(maxq);
@@ -77,7 +77,8 @@ Status DecodeQuantized(ArithmeticDecoder* dec_in, const WedgeTable* wedges, uint
     const int mctx = MagContext(pc.neighbour_magnitude) >> coarse;
     int64_t r[4];
     for (int k = 0; k < dim; ++k) {
-      r[k] = DecodeResidual(*dec, models->at(coarse == 2 ? 0 : k, pc.kind, mctx, (k && !coarse) ? IntraContext(r[k - 1]) : 0));
+      r[k] = DecodeResidual(*dec, models->at(coarse == 2 ? 0 : k, pc.kind, mctx, (k && !coarse) ? IntraContext(r[k - 1]) : 0),
+                              models->escape);
       const int64_t v = pred[k] + r[k];
       if (v < 0 || v > maxq) return false;
       q[size_t(c) * dim + k] = int32_t(v);

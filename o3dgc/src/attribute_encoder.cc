@@ -64,7 +64,7 @@ void EncodeParallelogram(ArithmeticEncoder* enc, const WedgeTable& wedges, int64
     for (int k = 0; k < kDim; ++k) {
       const int64_t p = pred[k] < 0 ? 0 : (pred[k] > maxq ? maxq : pred[k]);
       r[k] = int64_t(q[size_t(c) * kDim + k]) - p;
-      EncodeResidual(*enc, row[stride * k + intra], r[k]);
+      EncodeResidual(*enc, row[stride * k + intra], models.escape, r[k]);
       intra = coarse ? 0 : IntraContext(r[k]);
     }
     mags[c] = SaturatingMagnitude(r, kDim);
@@ -90,7 +90,8 @@ void EncodeQuantized(ArithmeticEncoder* enc, const WedgeTable* wedges,
     int64_t r[4];
     for (int k = 0; k < dim; ++k) {
       r[k] = int64_t(q[size_t(c) * dim + k]) - pred[k];
-      EncodeResidual(*enc, models->at(coarse == 2 ? 0 : k, pc.kind, mctx, (k && !coarse) ? IntraContext(r[k - 1]) : 0), r[k]);
+      EncodeResidual(*enc, models->at(coarse == 2 ? 0 : k, pc.kind, mctx, (k && !coarse) ? IntraContext(r[k - 1]) : 0),
+                     models->escape, r[k]);
     }
     mags[c] = SaturatingMagnitude(r, dim);
   };

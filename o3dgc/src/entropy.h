@@ -146,16 +146,21 @@ constexpr int kDirectClasses = kResidualSymbols - 2;
 constexpr int kEscapeSymbol = kResidualSymbols - 1;
 constexpr int kHighClasses = kDirectClasses + kEscapeSymbol;  // below: the two decisions
 
-// The models every residual uses first (two cache lines), the rare escapes' after them.
+// One context's models: those every residual uses first (two cache lines), then the second class
+// decision. The unary part of the rare classes past both decisions (|r| >= 2^kHighClasses) has its
+// models in ResidualEscape, shared by all contexts, so that the context models stay small.
 struct ResidualModel {
   SymbolModelN<kResidualSymbols> magnitude;
   BitModel sign;
   BitModel mantissa[kDirectClasses + 1];  // the bit below the leading one, by k (larger: the last)
   SymbolModelN<kResidualSymbols> high;  // k - kDirectClasses after an escape
-  BitModel escape[kMaxEGPrefix - kHighClasses + 1];
+};
+struct ResidualEscape {
+  BitModel more[kMaxEGPrefix - kHighClasses + 1];
 };
 
-O3DGC_INLINE void EncodeResidual(ArithmeticEncoder& e, ResidualModel& m, int64_t r) {
+O3DGC_INLINE void EncodeResidual(ArithmeticEncoder& e, ResidualModel& m, ResidualEscape& x,
+                                 int64_t r) {
   if (r == 0) {
     e.Encode(0, m.magnitude);
     return;
@@ -170,8 +175,8 @@ O3DGC_INLINE void EncodeResidual(ArithmeticEncoder& e, ResidualModel& m, int64_t
       e.Encode(k - kDirectClasses, m.high);
     } else {
       e.Encode(kEscapeSymbol, m.high);
-      for (int i = kHighClasses; i < k; ++i) e.Encode(1, m.escape[i - kHighClasses]);
-      if (k < kMaxEGPrefix) e.Encode(0, m.escape[k - kHighClasses]);
+      for (int i = kHighClasses; i < k; ++i) e.Encode(1, x.more[i - kHighClasses]);
+      if (k < kMaxEGPrefix) e.Encode(0, x.more[k - kHighClasses]);
     }
   }
   e.Encode(r < 0, m.sign);
@@ -185,7 +190,7 @@ O3DGC_INLINE void EncodeResidual(ArithmeticEncoder& e, ResidualModel& m, int64_t
   }
 }
 
-O3DGC_INLINE int64_t DecodeResidual(ArithmeticDecoder& d, ResidualModel& m) {
+O3DGC_INLINE int64_t DecodeResidual(ArithmeticDecoder& d, ResidualModel& m, ResidualEscape& x) {
   const int symbol = d.Decode(m.magnitude);
   if (symbol == 0) return 0;
   int k = symbol - 1;
@@ -193,7 +198,7 @@ O3DGC_INLINE int64_t DecodeResidual(ArithmeticDecoder& d, ResidualModel& m) {
     const int h = d.Decode(m.high);
     k = kDirectClasses + h;
     if (h == kEscapeSymbol) {
-      while (k < kMaxEGPrefix && d.Decode(m.escape[k - kHighClasses])) ++k;
+      while (k < kMaxEGPrefix && d.Decode(x.more[k - kHighClasses])) ++k;
     }
   }
   const int neg = d.Decode(m.sign);

@@ -100,6 +100,7 @@ TEST(ArithmeticCoder, SymbolsRawBitsAndResidualsRoundTrip) {
     SymbolModelN<32> large;
     BitModel bit;
     ResidualModel rm;
+    ResidualEscape rx;
     for (int i = 0; i < 20000; ++i) {
       symbols.push_back(int(rng() % 100) < 90 ? int(rng() % 3) : int(rng() % 16));
       enc.Encode(symbols.back(), skewed);
@@ -117,7 +118,7 @@ TEST(ArithmeticCoder, SymbolsRawBitsAndResidualsRoundTrip) {
       // Mostly small, sometimes huge (escape classes), sometimes zero.
       const int64_t r = i % 101 == 0 ? (int64_t(1) << 38) - 3 : int64_t(rng() % 2001) - 1000;
       residuals.push_back(i % 7 == 0 ? 0 : (i % 3 ? r : -r));
-      EncodeResidual(enc, rm, residuals.back());
+      EncodeResidual(enc, rm, rx, residuals.back());
     }
     enc.Finish();
   }
@@ -127,6 +128,7 @@ TEST(ArithmeticCoder, SymbolsRawBitsAndResidualsRoundTrip) {
   SymbolModelN<32> large;
   BitModel bit;
   ResidualModel rm;
+  ResidualEscape rx;
   for (int i = 0; i < 20000; ++i) {
     ASSERT_EQ(dec.Decode(skewed), symbols[4 * i]);
     ASSERT_EQ(dec.Decode(flat), symbols[4 * i + 1]);
@@ -134,7 +136,7 @@ TEST(ArithmeticCoder, SymbolsRawBitsAndResidualsRoundTrip) {
     ASSERT_EQ(dec.Decode(large), symbols[4 * i + 3]);
     ASSERT_EQ(dec.Decode(bit), bits[i]);
     ASSERT_EQ(dec.DecodeRaw(raw_count[i]), raw[i]);
-    ASSERT_EQ(DecodeResidual(dec, rm), residuals[i]);
+    ASSERT_EQ(DecodeResidual(dec, rm, rx), residuals[i]);
   }
   EXPECT_FALSE(dec.failed());
 }
