@@ -374,8 +374,9 @@ TEST(GlbHostileTest, LargeHierarchiesAndManyAccessorsStayLinear) {
   Result<Scene> back = DecodeGlb(glb->data(), glb->size(), "chain.glb");
   ASSERT_TRUE(back.ok()) << back.status().ToString();
   EXPECT_EQ(back->nodes.back().meshes, std::vector<int>({0}));
-  // Quadratic checks would take minutes here; linear ones take well under a second.
-  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(30));
+  // Quadratic checks would take minutes here; linear ones take well under a second. Loose on
+  // purpose: the ASan+UBSan build on a loaded 2-core machine took 35 s (the plain build 3 s).
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(120));
 }
 
 TEST(GlbHostileTest, ExpansionLimitIsAnOption) {
