@@ -4,8 +4,8 @@
 # usage: tests/stability/make_table.sh [BUILD_DIR]   (default: build; runs the heavy case too)
 set -euo pipefail
 build=${1:-build}
-echo '| case | input | decompose (vhacd) | o3dgc codec (keep order, 14 bits) | mesh codec (pipeline) | pack + read back | peak RSS (MB) |'
-echo '|---|---|---|---|---|---|---|'
+echo '| case | input | expected: decompose / codec / pack | promised: codec per axis / pack | decompose (vhacd) | o3dgc codec (keep order, 14 bits) | mesh codec (pipeline) | pack + read back | peak RSS (MB) |'
+echo '|---|---|---|---|---|---|---|---|---|'
 for exe in "$build/tests/stability/stability_tests" "$build/tests/stability/stability_heavy_tests"; do
   [ -x "$exe" ] || { echo "make_table: $exe not built" >&2; exit 1; }
   # One process per case, as ctest runs them, so each row's peak RSS is the case's own.

@@ -87,13 +87,11 @@ double FloatUlp(double x) {
 // "Is there a point of the set within `radius` of q?" on a hash grid of cells >= radius.
 class PointSet {
  public:
-  PointSet(const std::vector<float>& p, double radius, const std::vector<bool>* keep = nullptr) : p_(p) {
+  PointSet(const std::vector<float>& p, double radius) : p_(p) {
     Box box(p);
     cell_ = std::max({radius, box.Extent() * 1e-6, std::numeric_limits<double>::min()});
     for (int k = 0; k < 3; ++k) origin_[k] = box.lo[k];
-    for (uint32_t i = 0; i < p.size() / 3; ++i) {
-      if (!keep || (*keep)[i]) cells_[Key(Cell(&p[i * 3]))].push_back(i);
-    }
+    for (uint32_t i = 0; i < p.size() / 3; ++i) cells_[Key(Cell(&p[i * 3]))].push_back(i);
   }
   // Distance from q to the nearest point of the set, looking only at the 27 cells around q
   // (exact whenever that distance is below the cell size; +inf when no point is that near).
@@ -471,13 +469,19 @@ TEST_P(Stability, EveryStageGivesAValidResultOrAClearError) {
 #if !defined(HULLPACK_UNDER_ASAN)
   EXPECT_LT(rss, HULLPACK_STABILITY_HEAVY ? 4096 : 1024) << "peak memory (MB)";
 #endif
-  std::cout << "| " << c.name << " | " << c.description << " | " << decompose.cell << " | " << codec.cell << " | "
-            << mesh_codec.cell << " | " << pack.cell << " | " << Format("%.0f", rss) << " |\n";
+  // The promise in model units: half a 14-bit step per axis (codec), max_error x diagonal (pack).
+  const Box float_box(positions);
+  const std::string promised =
+      float_box.any ? Format("%.1e", 0.5 * float_box.Extent() / double((1 << kPositionBits) - 1)) + " / " +
+                          Format("%.1e", PackOptions().max_error * float_box.Diagonal())
+                    : "-";
+  std::cout << "| " << c.name << " | " << c.description << " | " << ExpectName(c.decompose) << " / "
+            << ExpectName(c.codec) << " / " << ExpectName(c.pack) << " | " << promised << " | " << decompose.cell
+            << " | " << codec.cell << " | " << mesh_codec.cell << " | " << pack.cell << " | " << Format("%.0f", rss)
+            << " |\n";
   for (const Outcome* o : {&decompose, &codec, &mesh_codec, &pack}) {
     if (!o->message.empty()) std::cout << "message: " << o->message << "\n";
   }
-  std::cout << "expected: decompose " << ExpectName(c.decompose) << ", codec " << ExpectName(c.codec) << ", pack "
-            << ExpectName(c.pack) << "\n";
 }
 
 std::string TestName(const ::testing::TestParamInfo<std::string>& info) {
