@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets with clang (ASan+UBSan) and runs each for a fixed time from its seed
-# corpus. Any crash, leak, sanitizer report or timeout fails the run; the reproducer is kept in
-# build-fuzz/artifacts/ so it can become a regression test.
+# corpus, one per core at a time. Any crash, leak, sanitizer report or timeout fails the run; the
+# reproducer is kept in <build>/artifacts/ so it can become a regression test.
 # usage: tests/fuzz/run_fuzzers.sh [SECONDS_PER_TARGET|seeds]   (default: $HULLPACK_FUZZ_SECONDS or 60)
+# env:   HULLPACK_FUZZ_BUILD_DIR (build-fuzz; ./setup.sh test passes its sanitized tree, build-sanitize),
+#        HULLPACK_FUZZ_JOBS (targets at a time; default nproc)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 seconds=${1:-${HULLPACK_FUZZ_SECONDS:-60}}
@@ -37,20 +39,33 @@ pack -o "$gen/packed_glb_fuzzer/hulls.glb" --max-hulls 2
 pack -o "$gen/packed_glb_fuzzer/khr_ascii.glb" --max-hulls 1 --physics khr --ascii
 pack -o "$gen/packed_glb_fuzzer/fallback.glb" --hulls none --fallback --keep-order
 [ "$seconds" = seeds ] && exit 0  # build and make the seeds only (what tests/fuzz/campaign.sh needs)
-status=0
-for target in "${targets[@]}"; do
-  seeds=()
+# Targets run side by side, HULLPACK_FUZZ_JOBS at a time (default: one per core), each one process.
+jobs=${HULLPACK_FUZZ_JOBS:-$(nproc)}
+run_one() {
+  local target=$1 seeds=() dir
   for dir in "tests/fuzz/seeds/$target" "$gen/$target"; do [ -d "$dir" ] && seeds+=("$dir"); done
-  corpus=$build/corpus/$target
+  local corpus=$build/corpus/$target log=$build/$target.log
   mkdir -p "$corpus"
-  log=$build/$target.log
   if "$build/tools/fuzz/$target" "$corpus" "${seeds[@]}" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
       -artifact_prefix="$build/artifacts/$target-" -print_final_stats=1 >"$log" 2>&1; then
+    local runs
     runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo '?')
     echo "fuzz $target: ok, $runs executions in ${seconds}s"
   else
-    echo "fuzz $target: FAILED (see $log)"; tail -30 "$log"
-    status=1
+    # One write, so the report of a failing target is not interleaved with another's line.
+    printf 'fuzz %s: FAILED (see %s)\n%s\n' "$target" "$log" "$(tail -30 "$log")"
+    return 1
+  fi
+}
+status=0
+pids=()
+for target in "${targets[@]}"; do
+  run_one "$target" &
+  pids+=($!)
+  if [ ${#pids[@]} -ge "$jobs" ]; then
+    wait "${pids[0]}" || status=1
+    pids=("${pids[@]:1}")
   fi
 done
+for pid in "${pids[@]}"; do wait "$pid" || status=1; done
 exit $status
