@@ -34,7 +34,7 @@ for target in "${targets[@]}"; do
   corpus=$build/corpus/$target
   mkdir -p "$corpus"
   seeds=()
-  for dir in "tests/fuzz/seeds/$target" "$build/generated-seeds/$target"; do [ -d "$dir" ] && seeds+=("$dir"); done
+  for dir in "tests/fuzz/seeds/$target" "tests/fuzz/regressions/$target" "$build/generated-seeds/$target"; do [ -d "$dir" ] && seeds+=("$dir"); done
   while :; do
     done_runs=$(awk '{s += $2} END {print s + 0}' "$ledger")
     [ "$done_runs" -ge "$total" ] && break

@@ -43,7 +43,7 @@ pack -o "$gen/packed_glb_fuzzer/fallback.glb" --hulls none --fallback --keep-ord
 jobs=${HULLPACK_FUZZ_JOBS:-$(nproc)}
 run_one() {
   local target=$1 seeds=() dir
-  for dir in "tests/fuzz/seeds/$target" "$gen/$target"; do [ -d "$dir" ] && seeds+=("$dir"); done
+  for dir in "tests/fuzz/seeds/$target" "tests/fuzz/regressions/$target" "$gen/$target"; do [ -d "$dir" ] && seeds+=("$dir"); done
   local corpus=$build/corpus/$target log=$build/$target.log
   mkdir -p "$corpus"
   if "$build/tools/fuzz/$target" "$corpus" "${seeds[@]}" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \

@@ -3,6 +3,8 @@
 #include <cstring>
 #include <functional>
 
+#include "gltf/json_members.h"
+
 namespace hullpack {
 namespace {
 
@@ -28,13 +30,18 @@ Status CompactBufferViews(GltfDocument& doc) {
   if (!json.contains("bufferViews") || !json["bufferViews"].is_array()) return Status::Ok();
   nlohmann::json& views = json["bufferViews"];
   const std::vector<uint8_t>& bin = doc.binary();
+  std::vector<uint64_t> offsets(views.size()), lengths(views.size());
   for (size_t i = 0; i < views.size(); ++i) {
     const nlohmann::json& v = views[i];
-    if (!v.is_object() || v.value("buffer", -1) != 0) {
+    uint64_t buffer = 1;
+    if (!v.is_object() || !gltf::GetUintMember(v, "buffer", 1, &buffer) || buffer != 0) {
       return Status(StatusCode::kUnsupported, "bufferViews[" + std::to_string(i) + "] is not on the GLB binary chunk");
     }
-    const uint64_t offset = v.value("byteOffset", uint64_t(0));
-    const uint64_t length = v.value("byteLength", uint64_t(0));
+    uint64_t& offset = offsets[i];
+    uint64_t& length = lengths[i];
+    if (!gltf::GetUintMember(v, "byteOffset", 0, &offset) || !gltf::GetUintMember(v, "byteLength", 0, &length)) {
+      return Status(StatusCode::kParseError, "bufferViews[" + std::to_string(i) + "] has a byteOffset or byteLength that is not a non-negative integer");
+    }
     if (offset > bin.size() || length > bin.size() - offset) {
       return Status(StatusCode::kParseError, "bufferViews[" + std::to_string(i) + "] lies outside the binary chunk");
     }
@@ -49,8 +56,8 @@ Status CompactBufferViews(GltfDocument& doc) {
   for (size_t i = 0; i < views.size(); ++i) {
     if (new_index[i] < 0) continue;
     nlohmann::json v = views[i];
-    const uint64_t offset = v.value("byteOffset", uint64_t(0));
-    const uint64_t length = v.value("byteLength", uint64_t(0));
+    const uint64_t offset = offsets[i];
+    const uint64_t length = lengths[i];
     size_t alignment = 4;
     while (alignment < 16 && offset % (alignment * 2) == 0) alignment *= 2;
     packed.resize((packed.size() + alignment - 1) / alignment * alignment, 0);

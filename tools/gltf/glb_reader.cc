@@ -10,6 +10,7 @@
 #include <set>
 #include <utility>
 
+#include "gltf/json_members.h"
 #include "gltf/node_forest.h"
 
 namespace hullpack {
@@ -270,19 +271,7 @@ Status Decoder::GetArray(const json& obj, const char* key, const std::string& wh
 
 Status Decoder::GetUint(const json& obj, const char* key, const std::string& where, uint64_t def,
                         uint64_t* out) const {
-  auto it = obj.find(key);
-  if (it == obj.end()) {
-    *out = def;
-    return Status::Ok();
-  }
-  if (it->is_number_unsigned()) {
-    *out = it->get<uint64_t>();
-  } else if (it->is_number_integer() && it->get<int64_t>() >= 0) {
-    *out = static_cast<uint64_t>(it->get<int64_t>());
-  } else if (it->is_number_float() && it->get<double>() >= 0 && it->get<double>() < 9.0e15 &&
-             std::floor(it->get<double>()) == it->get<double>()) {
-    *out = static_cast<uint64_t>(it->get<double>());
-  } else {
+  if (!gltf::GetUintMember(obj, key, def, out)) {
     return Error(where, std::string("'") + key + "' is not a non-negative integer");
   }
   return Status::Ok();
@@ -328,18 +317,12 @@ Status Decoder::GetNumbers(const json& obj, const char* key, const std::string& 
 }
 
 Status Decoder::GetString(const json& obj, const char* key, const std::string& where, std::string* out) const {
-  auto it = obj.find(key);
-  if (it == obj.end()) return Status::Ok();
-  if (!it->is_string()) return Error(where, std::string("'") + key + "' is not a string");
-  *out = it->get<std::string>();
+  if (!gltf::GetStringMember(obj, key, out)) return Error(where, std::string("'") + key + "' is not a string");
   return Status::Ok();
 }
 
 Status Decoder::GetBool(const json& obj, const char* key, const std::string& where, bool* out) const {
-  auto it = obj.find(key);
-  if (it == obj.end()) return Status::Ok();
-  if (!it->is_boolean()) return Error(where, std::string("'") + key + "' is not a boolean");
-  *out = it->get<bool>();
+  if (!gltf::GetBoolMember(obj, key, out)) return Error(where, std::string("'") + key + "' is not a boolean");
   return Status::Ok();
 }
 

@@ -3,12 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <exception>
 #include <map>
+#include <new>
 #include <optional>
 #include <set>
 
 #include "gltf/buffer_compaction.h"
 #include "gltf/glb_reader.h"
+#include "gltf/json_members.h"
 #include "gltf/skin_weights.h"
 #include "o3dgc/o3dgc.h"
 
@@ -93,8 +96,10 @@ class Inflater {
     if (it != streams_.end()) return static_cast<const DecodedStream*>(&it->second);
     const nlohmann::json& v = json_["bufferViews"][view];
     if (Index(v, "buffer", 1) != 0) return Error("stream bufferView is not on the GLB binary chunk");
-    const uint64_t offset = v.value("byteOffset", uint64_t(0));
-    const uint64_t length = v.value("byteLength", uint64_t(0));
+    uint64_t offset = 0, length = 0;
+    if (!gltf::GetUintMember(v, "byteOffset", 0, &offset) || !gltf::GetUintMember(v, "byteLength", 0, &length)) {
+      return Error("stream bufferView has a byteOffset or byteLength that is not a non-negative integer");
+    }
     const std::vector<uint8_t>& bin = doc_.binary();
     if (offset > bin.size() || length > bin.size() - offset) return Error("stream bufferView lies outside the binary chunk");
     DecodedStream d;
@@ -123,7 +128,8 @@ class Inflater {
     }
     if (!ext["group"].is_number_unsigned()) return Error("group must be a non-negative integer");
     const uint64_t group = ext["group"].get<uint64_t>();
-    const bool compact = ext.value("compactVertices", false);
+    bool compact = false;
+    if (!gltf::GetBoolMember(ext, "compactVertices", &compact)) return Error("compactVertices is not a boolean");
     std::vector<uint32_t> remap;
     if (compact) remap.assign(m.num_vertices(), UINT32_MAX);
     for (size_t t = 0; t < m.num_triangles(); ++t) {
@@ -153,11 +159,15 @@ class Inflater {
   Status Fill(int64_t accessor_index, const Selection& sel, const StreamAttribute* attribute, bool is_indices) {
     if (filled_.count(accessor_index)) return Status::Ok();  // shared by the mesh's primitives
     nlohmann::json& acc = json_["accessors"][accessor_index];
-    const std::string type = acc.value("type", std::string());
+    std::string type;
+    uint64_t ctype = 0;
+    bool normalized = false;
+    if (!gltf::GetStringMember(acc, "type", &type) || !gltf::GetUintMember(acc, "componentType", 0, &ctype) ||
+        !gltf::GetBoolMember(acc, "normalized", &normalized)) {
+      return Error("accessors[" + std::to_string(accessor_index) + "] has a type, componentType or normalized member of the wrong JSON type");
+    }
     const int dims = gltf::ComponentCount(type);
-    const int ctype = acc.value("componentType", 0);
-    const size_t csize = gltf::ComponentSize(ctype);
-    const bool normalized = acc.value("normalized", false);
+    const size_t csize = ctype <= 0xFFFF ? gltf::ComponentSize(static_cast<int>(ctype)) : 0;
     const size_t count = is_indices ? sel.indices.size() : sel.vertex_count;
     if (dims == 0 || csize == 0) return Error("accessors[" + std::to_string(accessor_index) + "] has a bad type");
     if (!acc.contains("count") || !acc["count"].is_number_unsigned() || acc["count"].get<uint64_t>() != count) {
@@ -186,7 +196,7 @@ class Inflater {
           value = attribute->floats ? (*attribute->floats)[at] : (*attribute->ints)[at];
         }
         uint8_t* out = &bytes[(i * dims + c) * csize];
-        if (!Store(value, ctype, normalized, out)) {
+        if (!Store(value, static_cast<int>(ctype), normalized, out)) {
           return Error("accessors[" + std::to_string(accessor_index) + "]: value " + std::to_string(value) +
                        " does not fit its component type");
         }
@@ -313,7 +323,16 @@ class Inflater {
 
 }  // namespace
 
-Status InflatePackedDocument(GltfDocument& doc, const std::string& name) { return Inflater(doc, name).Run(); }
+Status InflatePackedDocument(GltfDocument& doc, const std::string& name) {
+  try {
+    return Inflater(doc, name).Run();
+  } catch (const std::bad_alloc&) {
+    return Status(StatusCode::kUnsupported, name + ": out of memory while inflating compressed meshes");
+  } catch (const std::exception& e) {
+    // The member checks should make this unreachable; keep malformed input an error, never a crash.
+    return Status(StatusCode::kParseError, name + ": malformed glTF: " + e.what());
+  }
+}
 
 Result<Scene> ReadPackedGltf(const uint8_t* data, size_t size, const std::string& name, const std::string& base_dir,
                              GltfDocument* inflated) {
