@@ -7,10 +7,12 @@ namespace o3dgc {
 namespace {
 
 // Slicing by 8: table t[k][b] is the CRC of byte b followed by k zero bytes, so eight bytes take
-// eight independent lookups.
+// eight independent lookups. Built on first use rather than at compile time: 8 KB of CRC values
+// do not compress, and the WebAssembly decoder's download would carry them. The constructor is
+// deliberately not constexpr: a constant-evaluable initializer would be folded back into data.
 struct CrcTables {
   uint32_t t[8][256];
-  constexpr CrcTables() : t() {
+  CrcTables() {
     for (uint32_t i = 0; i < 256; ++i) {
       uint32_t c = i;
       for (int k = 0; k < 8; ++k) c = (c & 1) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
@@ -21,12 +23,16 @@ struct CrcTables {
     }
   }
 };
-constexpr CrcTables kCrc{};
+
+const CrcTables& Tables() {
+  static const CrcTables tables;  // initialised once, thread-safely (C++11 function-local static)
+  return tables;
+}
 
 }  // namespace
 
 uint32_t Crc32(const uint8_t* data, size_t size, uint32_t crc) {
-  const auto& t = kCrc.t;
+  const auto& t = Tables().t;
   crc = ~crc;
   size_t i = 0;
   for (; i + 8 <= size; i += 8) {
