@@ -120,7 +120,20 @@ struct alignas(16) SymbolModelN {
   }
   // Frequency of the symbols <= i (i < kSymbols) in 1/2^16.
   uint32_t cumulative(int i) const { return uint32_t(slow[i]) + fast[i]; }
-  void Update(int symbol);
+  // Settled models (n == kRates - 1, the hot ones) move at the constant rates kSlowShift and
+  // kFastShift, with immediate shifts and no table lookup; the first kRates - 1 observations take
+  // the out-of-line count-based path (the same values: Rate(kRates - 1) == kSlowShift).
+  O3DGC_INLINE void Update(int symbol) {
+    if (O3DGC_LIKELY(n == kRates - 1)) {
+      Move<kSlowShift, kFastShift>(symbol);
+    } else {
+      WarmUpdate(symbol);
+    }
+  }
+  O3DGC_NOINLINE void WarmUpdate(int symbol);
+  template <int kSlow, int kFast>
+  void Move(int symbol);
+  void Move(int symbol, int rate, int fast_rate);
   // The symbol whose interval holds `code` (< range) for a range r * 2^16: the number of entries
   // i < kSymbols - 1 with r * cumulative(i) <= code, i.e. with cumulative(i) <= code / r. Its
   // interval is [*lo, *hi) (in 1/2^16).
@@ -136,6 +149,7 @@ struct alignas(16) SymbolModelN {
   static constexpr uint8_t Rate(int n) {
     return uint8_t(2 + (n > 2) + (n > 6) + (n > 14) + (n > 30) + (n > 62) + (n > 126));
   }
+  static_assert(Rate(kRates - 1) == kSlowShift, "a settled model moves at the slow rate");
   // Targets after observing s: entry i moves to (i + 1) * kMinFreq below s and to
   // kTotal - (kSymbols - 1 - i) * kMinFreq from s on (the last entry, the total, stays).
   static constexpr uint16_t Target(int s, int i) {
@@ -162,13 +176,22 @@ inline constexpr Tables<N> kTables{};
 
 #if defined(__SSE2__) && !defined(O3DGC_NO_SIMD)
 template <int N>
-O3DGC_INLINE void SymbolModelN<N>::Update(int symbol) {
-  const auto& tables = symbol_tables::kTables<N>;
-  const int rate = tables.rate[n];
-  n = uint16_t(n + (n < kRates - 1));
-  const int fast_rate = rate < kFastShift ? rate : kFastShift;
+template <int kSlow, int kFast>
+O3DGC_INLINE void SymbolModelN<N>::Move(int symbol) {
   // 16-bit lanes: differences to the targets stay within +-2^15.
-  const __m128i* t = reinterpret_cast<const __m128i*>(tables.target[symbol]);
+  const __m128i* t = reinterpret_cast<const __m128i*>(symbol_tables::kTables<N>.target[symbol]);
+  __m128i* sp = reinterpret_cast<__m128i*>(slow);
+  __m128i* fp = reinterpret_cast<__m128i*>(fast);
+  for (int v = 0; v < N / 8; ++v) {
+    const __m128i tv = _mm_load_si128(t + v), sv = _mm_load_si128(sp + v), fv = _mm_load_si128(fp + v);
+    _mm_store_si128(sp + v, _mm_add_epi16(sv, _mm_srai_epi16(_mm_sub_epi16(tv, sv), kSlow)));
+    _mm_store_si128(fp + v, _mm_add_epi16(fv, _mm_srai_epi16(_mm_sub_epi16(tv, fv), kFast)));
+  }
+}
+
+template <int N>
+inline void SymbolModelN<N>::Move(int symbol, int rate, int fast_rate) {
+  const __m128i* t = reinterpret_cast<const __m128i*>(symbol_tables::kTables<N>.target[symbol]);
   const __m128i rs = _mm_cvtsi32_si128(rate), rf = _mm_cvtsi32_si128(fast_rate);
   __m128i* sp = reinterpret_cast<__m128i*>(slow);
   __m128i* fp = reinterpret_cast<__m128i*>(fast);
@@ -214,12 +237,18 @@ O3DGC_INLINE int SymbolModelN<N>::Find(uint32_t r, uint32_t code, uint32_t* lo, 
 }
 #else
 template <int N>
-O3DGC_INLINE void SymbolModelN<N>::Update(int symbol) {
-  const auto& tables = symbol_tables::kTables<N>;
-  const int rate = tables.rate[n];
-  n = uint16_t(n + (n < kRates - 1));
-  const int fast_rate = rate < kFastShift ? rate : kFastShift;
-  const uint16_t* t = tables.target[symbol];
+template <int kSlow, int kFast>
+O3DGC_INLINE void SymbolModelN<N>::Move(int symbol) {
+  const uint16_t* t = symbol_tables::kTables<N>.target[symbol];
+  for (int i = 0; i < kSymbols - 1; ++i) {
+    slow[i] = uint16_t(slow[i] + ((int32_t(t[i]) - slow[i]) >> kSlow));
+    fast[i] = uint16_t(fast[i] + ((int32_t(t[i]) - fast[i]) >> kFast));
+  }
+}
+
+template <int N>
+inline void SymbolModelN<N>::Move(int symbol, int rate, int fast_rate) {
+  const uint16_t* t = symbol_tables::kTables<N>.target[symbol];
   for (int i = 0; i < kSymbols - 1; ++i) {
     slow[i] = uint16_t(slow[i] + ((int32_t(t[i]) - slow[i]) >> rate));
     fast[i] = uint16_t(fast[i] + ((int32_t(t[i]) - fast[i]) >> fast_rate));
@@ -237,6 +266,14 @@ O3DGC_INLINE int SymbolModelN<N>::Find(uint32_t r, uint32_t code, uint32_t* lo, 
   return symbol;
 }
 #endif
+
+// The first kRates - 1 observations: the slow rate from the observation count.
+template <int N>
+O3DGC_NOINLINE void SymbolModelN<N>::WarmUpdate(int symbol) {
+  const int rate = symbol_tables::kTables<N>.rate[n];
+  ++n;
+  Move(symbol, rate, rate < kFastShift ? rate : kFastShift);
+}
 
 class ArithmeticEncoder {
  public:
