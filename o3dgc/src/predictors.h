@@ -50,7 +50,8 @@ class WedgeTable {
   // For the mesh the connectivity coder numbered: `opposite_vertices` (3 per triangle, see
   // Front::TakeOppositeVertices) gives x directly. `vertex_triangles` (optional, as
   // DecodeConnectivity gives it: the non-degenerate triangles at each vertex, zero past its end)
-  // spares counting them.
+  // spares counting them; non-empty, it promises that no triangle is degenerate (every triangle
+  // went through the connectivity front), so the per-triangle checks are skipped too.
   void BuildFromOppositeVertices(const std::vector<uint32_t>& triangles, uint32_t num_vertices,
                                  const std::vector<uint32_t>& opposite_vertices,
                                  const std::vector<uint32_t>* vertex_triangles = nullptr);
