@@ -90,23 +90,13 @@ void WedgeTable::BuildFromOppositeVertices(const std::vector<uint32_t>& triangle
         vertex_triangles && !vertex_triangles->empty() ? vertex_triangles : nullptr);
   uint32_t* start = start_.data() + 1;
   Wedge* out = wedges_.get();
-  if (oppv && vertex_triangles && !vertex_triangles->empty()) {
-    // Every triangle went through the connectivity front, which never makes a degenerate one:
-    // no checks (the counts above already assume three wedges per triangle).
-    for (size_t t = 0; t < nt; ++t) {
-      const uint32_t a = tri[3 * t], b = tri[3 * t + 1], c = tri[3 * t + 2];
-      const uint32_t oa = oppv[3 * t], ob = oppv[3 * t + 1], oc = oppv[3 * t + 2];
-      out[start[a]++] = Wedge{b, c, oa != 0xFFFFFFFFu ? oa : a};
-      out[start[b]++] = Wedge{c, a, ob != 0xFFFFFFFFu ? ob : b};
-      out[start[c]++] = Wedge{a, b, oc != 0xFFFFFFFFu ? oc : c};
-    }
-    start_.pop_back();
-    return;
-  }
+  // Counts from the connectivity front: every triangle went through it, and it never makes a
+  // degenerate one, so no checks.
+  const bool checks = !(vertex_triangles && !vertex_triangles->empty());
   for (size_t t = 0; t < nt; ++t) {
     // Locals: the stores below may alias the triangle array for all the compiler knows.
     const uint32_t a = tri[3 * t], b = tri[3 * t + 1], c = tri[3 * t + 2];
-    if (a == b || b == c || a == c) continue;
+    if (checks && (a == b || b == c || a == c)) continue;
     uint32_t xa = a, xb = b, xc = c;  // no neighbour: the vertex itself
     if (oppv) {
       const uint32_t oa = oppv[3 * t], ob = oppv[3 * t + 1], oc = oppv[3 * t + 2];
