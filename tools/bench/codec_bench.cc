@@ -1,7 +1,8 @@
 // codec_bench: the project's SC3DMC coder and Draco side by side on every mesh of a folder, in one
 // run, at the same quantization (default 14-bit positions, 10-bit normals, 12-bit UVs; Draco at -cl 7
 // and -cl 10): bytes, bits per vertex, encode and decode time (median of repeats), maximum position
-// error. Prints a table and writes CSV.
+// error; and the ASCII stream's bytes once gzip'd, against the binary stream's. Prints a table and
+// writes CSV.
 //
 //   codec_bench FOLDER [--repeats 5] [--csv out.csv] [--qp 14] [--qn 10] [--qt 12] [--only a,b]
 //               [--clock wall|cpu] [--ours-only]
@@ -23,6 +24,7 @@
 
 #include "bench/bench_util.h"
 #include "bench/draco_bridge.h"
+#include "bench/gzip_size.h"
 #include "common/file_util.h"
 #include "io/scene_io.h"
 #include "pipeline/mesh_codec.h"
@@ -80,6 +82,7 @@ struct Row {
   std::string name;
   size_t triangles = 0, vertices = 0;
   size_t bytes[3] = {0, 0, 0};  // ours, draco cl7, draco cl10
+  size_t ascii_gzip_bytes = 0;  // ours, the 7-bit ASCII stream gzip'd as a server sends it
   double encode_ms[3] = {0, 0, 0}, decode_ms[3] = {0, 0, 0}, error[3] = {0, 0, 0};
 };
 
@@ -128,6 +131,11 @@ bool RunAll(const Mesh& mesh, const Settings& s, Row& row) {
     }
   }
   row.bytes[0] = encoded->stream.size();
+  hullpack::MeshCodecSettings ascii = cs;
+  ascii.stream_type = o3dgc::StreamType::kAscii;
+  hullpack::Result<hullpack::EncodedMesh> ascii_stream = hullpack::EncodeMesh(mesh, {}, ascii);
+  if (!ascii_stream.ok()) return false;
+  row.ascii_gzip_bytes = hullpack::GzipSize(ascii_stream->stream.data(), ascii_stream->stream.size());
   row.error[0] = hullpack::MaxVertexDistance(mesh, decoded.value());
   for (int i = 0; i < num_draco; ++i) {
     row.bytes[i + 1] = draco[i].bytes.size();
@@ -194,9 +202,9 @@ int main(int argc, char** argv) {
     files = kept;
   }
   std::vector<Row> rows;
-  std::printf("%-18s %8s %8s | %8s %8s %8s | %6s %6s | %6s %6s %6s | %6s %6s %6s | %7s %7s | %9s %9s\n", "mesh", "tris",
-              "verts", "ours B", "cl7 B", "cl10 B", "/cl7", "/cl10", "enc", "cl7", "cl10", "dec", "cl7", "cl10", "enc/cl7",
-              "dec/cl7", "err ours", "err cl10");
+  std::printf("%-18s %8s %8s | %8s %8s %8s | %6s %6s | %6s %6s %6s | %6s %6s %6s | %7s %7s | %9s %9s | %8s %6s\n", "mesh",
+              "tris", "verts", "ours B", "cl7 B", "cl10 B", "/cl7", "/cl10", "enc", "cl7", "cl10", "dec", "cl7", "cl10",
+              "enc/cl7", "dec/cl7", "err ours", "err cl10", "ascii.gz", "/bin");
   for (const std::string& file : files) {
     hullpack::Result<hullpack::Scene> scene = hullpack::ReadScene(folder + "/" + file);
     if (!scene.ok()) {
@@ -213,15 +221,18 @@ int main(int argc, char** argv) {
       continue;
     }
     std::printf(
-        "%-18s %8zu %8zu | %8zu %8zu %8zu | %6.3f %6.3f | %6.2f %6.2f %6.2f | %6.2f %6.2f %6.2f | %7.2f %7.2f | %9.3g %9.3g\n",
+        "%-18s %8zu %8zu | %8zu %8zu %8zu | %6.3f %6.3f | %6.2f %6.2f %6.2f | %6.2f %6.2f %6.2f | %7.2f %7.2f | %9.3g %9.3g | "
+        "%8zu %6.3f\n",
         row.name.c_str(), row.triangles, row.vertices, row.bytes[0], row.bytes[1], row.bytes[2],
         double(row.bytes[0]) / row.bytes[1], double(row.bytes[0]) / row.bytes[2], row.encode_ms[0], row.encode_ms[1],
         row.encode_ms[2], row.decode_ms[0], row.decode_ms[1], row.decode_ms[2], row.encode_ms[0] / row.encode_ms[1],
-        row.decode_ms[0] / row.decode_ms[1], row.error[0], row.error[2]);
+        row.decode_ms[0] / row.decode_ms[1], row.error[0], row.error[2], row.ascii_gzip_bytes,
+        double(row.ascii_gzip_bytes) / row.bytes[0]);
     rows.push_back(row);
   }
-  double log7 = 0, log10 = 0;
+  double log7 = 0, log10 = 0, worst_ascii = 0;
   for (const Row& r : rows) {
+    worst_ascii = std::max(worst_ascii, double(r.ascii_gzip_bytes) / r.bytes[0]);
     log7 += std::log(double(r.bytes[0]) / r.bytes[1]);
     log10 += std::log(double(r.bytes[0]) / r.bytes[2]);
   }
@@ -230,16 +241,18 @@ int main(int argc, char** argv) {
                 std::exp(log7 / rows.size()), std::exp(log10 / rows.size()), rows.size(), s.repeats,
                 s.cpu_clock ? "CPU" : "wall");
   }
+  if (!rows.empty()) std::printf("largest gzip'd ASCII / binary: %.3f\n", worst_ascii);
   if (!s.csv.empty()) {
     std::string text =
         "mesh,triangles,vertices,ours_bytes,draco7_bytes,draco10_bytes,ours_encode_ms,draco7_encode_ms,draco10_encode_ms,"
-        "ours_decode_ms,draco7_decode_ms,draco10_decode_ms,ours_max_error,draco7_max_error,draco10_max_error\n";
+        "ours_decode_ms,draco7_decode_ms,draco10_decode_ms,ours_max_error,draco7_max_error,draco10_max_error,"
+        "ours_ascii_gzip_bytes\n";
     for (const Row& r : rows) {
       char line[512];
-      std::snprintf(line, sizeof(line), "%s,%zu,%zu,%zu,%zu,%zu,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.6g,%.6g,%.6g\n",
+      std::snprintf(line, sizeof(line), "%s,%zu,%zu,%zu,%zu,%zu,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.6g,%.6g,%.6g,%zu\n",
                     r.name.c_str(), r.triangles, r.vertices, r.bytes[0], r.bytes[1], r.bytes[2], r.encode_ms[0],
                     r.encode_ms[1], r.encode_ms[2], r.decode_ms[0], r.decode_ms[1], r.decode_ms[2], r.error[0], r.error[1],
-                    r.error[2]);
+                    r.error[2], r.ascii_gzip_bytes);
       text += line;
     }
     hullpack::Status st = hullpack::WriteFileAtomically(s.csv, text.data(), text.size());
