@@ -14,6 +14,7 @@
 #include "gltf/gltf_document.h"
 #include "gltf/packed_glb_reader.h"
 #include "pipeline/pack.h"
+#include "../tools/pipeline/packed_glb_test_util.h"
 
 namespace hullpack {
 namespace {
@@ -34,24 +35,13 @@ Mesh Grid(int n) {
   return m;
 }
 
-std::vector<uint8_t> PackWithoutHulls(Mesh mesh) {
-  Scene scene;
-  scene.meshes.push_back(std::move(mesh));
-  AddRootNodeForAllMeshes(scene, "root");
-  PackOptions options;
-  options.collision.policy = HullPolicy::kNone;
-  Result<PackResult> packed = PackScene(std::move(scene), options);
-  EXPECT_TRUE(packed.ok()) << packed.status().ToString();
-  return packed.ok() ? packed->glb : std::vector<uint8_t>();
-}
-
 // The packed 250 x 250 grid (125,000 triangles), made once for the tests that need it.
 const Mesh& BigGrid() {
   static const Mesh grid = Grid(250);
   return grid;
 }
 const std::vector<uint8_t>& BigGridGlb() {
-  static const std::vector<uint8_t> glb = PackWithoutHulls(BigGrid());
+  static const std::vector<uint8_t> glb = testing::PackWithoutHulls(BigGrid());
   return glb;
 }
 
@@ -59,18 +49,6 @@ double PeakRssMegabytes() {
   struct rusage u;
   getrusage(RUSAGE_SELF, &u);
   return u.ru_maxrss / 1024.0;
-}
-
-// Parses `glb`, lets `edit` change its JSON (and binary), and serializes it again.
-template <typename Edit>
-std::vector<uint8_t> Rewrite(const std::vector<uint8_t>& glb, Edit edit) {
-  Result<GltfDocument> doc = DecodeGlbDocument(glb.data(), glb.size(), "in.glb");
-  EXPECT_TRUE(doc.ok()) << doc.status().ToString();
-  if (!doc.ok()) return {};
-  edit(doc.value());
-  Result<std::vector<uint8_t>> out = doc->Serialize();
-  EXPECT_TRUE(out.ok()) << out.status().ToString();
-  return out.ok() ? out.value() : std::vector<uint8_t>();
 }
 
 // The reader must refuse `glb` quickly and without growing the process by anything near the claim.
@@ -98,9 +76,9 @@ TEST(PackedGlbMemory, WellCompressedFileReadsBack) {
 }
 
 TEST(PackedGlbMemory, AccessorsClaimingTwoToThe32VerticesAreRejected) {
-  const std::vector<uint8_t> glb = PackWithoutHulls(Grid(8));
+  const std::vector<uint8_t> glb = testing::PackWithoutHulls(Grid(8));
   for (const char* attribute : {"POSITION", "indices"}) {
-    const std::vector<uint8_t> bad = Rewrite(glb, [&](GltfDocument& doc) {
+    const std::vector<uint8_t> bad = testing::RewriteGlb(glb, [&](GltfDocument& doc) {
       nlohmann::json& prim = doc.json()["meshes"][0]["primitives"][0];
       const int accessor = std::string(attribute) == "indices" ? prim["indices"].get<int>()
                                                                 : prim["attributes"][attribute].get<int>();
@@ -117,8 +95,8 @@ TEST(PackedGlbMemory, StreamClaimingTwoToThe32VerticesIsRejected) {
   std::vector<uint8_t> stream((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   ASSERT_GT(stream.size(), 40u);
   for (int i = 0; i < 4; ++i) stream[14 + i] = 0xFF;  // coordinate count (little endian)
-  const std::vector<uint8_t> glb = PackWithoutHulls(Grid(8));
-  const std::vector<uint8_t> bad = Rewrite(glb, [&](GltfDocument& doc) {
+  const std::vector<uint8_t> glb = testing::PackWithoutHulls(Grid(8));
+  const std::vector<uint8_t> bad = testing::RewriteGlb(glb, [&](GltfDocument& doc) {
     const int view = doc.json()["meshes"][0]["primitives"][0]["extensions"][kMeshCompressionExtension]["bufferView"];
     const int replaced = doc.AddBufferView(stream, 4);
     doc.json()["meshes"][0]["primitives"][0]["extensions"][kMeshCompressionExtension]["bufferView"] = replaced;
@@ -130,7 +108,7 @@ TEST(PackedGlbMemory, StreamClaimingTwoToThe32VerticesIsRejected) {
 TEST(PackedGlbMemory, OneStreamInflatedManyTimesIsRejected) {
   // 400 primitives, each with its own accessors, all pointing at one well-compressed stream: a
   // file of about 100 KB that would otherwise inflate to about 400 x 2.3 MB.
-  const std::vector<uint8_t> bad = Rewrite(BigGridGlb(), [](GltfDocument& doc) {
+  const std::vector<uint8_t> bad = testing::RewriteGlb(BigGridGlb(), [](GltfDocument& doc) {
     nlohmann::json& js = doc.json();
     const nlohmann::json prim = js["meshes"][0]["primitives"][0];
     for (int copy = 0; copy < 400; ++copy) {

@@ -15,32 +15,18 @@
 #include "gltf/gltf_document.h"
 #include "gltf/packed_glb_reader.h"
 #include "pipeline/pack.h"
+#include "../pipeline/packed_glb_test_util.h"
 #include "../pipeline/test_torus.h"
 
 namespace hullpack {
 namespace {
 
-std::vector<uint8_t> PackedTorus() {
-  Scene scene;
-  scene.meshes.push_back(testing::TorusMesh(12, 8));
-  AddRootNodeForAllMeshes(scene, "root");
-  PackOptions options;
-  options.collision.policy = HullPolicy::kNone;
-  Result<PackResult> packed = PackScene(std::move(scene), options);
-  EXPECT_TRUE(packed.ok()) << packed.status().ToString();
-  return packed.ok() ? packed->glb : std::vector<uint8_t>();
-}
+std::vector<uint8_t> PackedTorus() { return testing::PackWithoutHulls(testing::TorusMesh(12, 8)); }
 
-// Parses `glb`, lets `edit` change its JSON, and serializes it again.
+// `edit` changes the JSON of `glb`, which is serialized again.
 template <typename Edit>
 std::vector<uint8_t> Rewrite(const std::vector<uint8_t>& glb, Edit edit) {
-  Result<GltfDocument> doc = DecodeGlbDocument(glb.data(), glb.size(), "in.glb");
-  EXPECT_TRUE(doc.ok()) << doc.status().ToString();
-  if (!doc.ok()) return {};
-  edit(doc->json());
-  Result<std::vector<uint8_t>> out = doc->Serialize();
-  EXPECT_TRUE(out.ok()) << out.status().ToString();
-  return out.ok() ? out.value() : std::vector<uint8_t>();
+  return testing::RewriteGlb(glb, [&](GltfDocument& doc) { edit(doc.json()); });
 }
 
 // The accessors and bufferView the packed primitive's extension fills from its stream.
