@@ -6,11 +6,7 @@ namespace hullpack {
 namespace gltf {
 
 bool GetUintMember(const nlohmann::json& obj, const char* key, uint64_t fallback, uint64_t* out) {
-  if (!obj.is_object()) {
-    *out = fallback;
-    return true;
-  }
-  auto it = obj.find(key);
+  auto it = obj.find(key);  // end() for a non-object
   if (it == obj.end()) {
     *out = fallback;
     return true;
@@ -34,7 +30,6 @@ bool GetUintMember(const nlohmann::json& obj, const char* key, uint64_t fallback
 }
 
 bool GetBoolMember(const nlohmann::json& obj, const char* key, bool* out) {
-  if (!obj.is_object()) return true;
   auto it = obj.find(key);
   if (it == obj.end()) return true;
   if (!it->is_boolean()) return false;
@@ -43,7 +38,6 @@ bool GetBoolMember(const nlohmann::json& obj, const char* key, bool* out) {
 }
 
 bool GetStringMember(const nlohmann::json& obj, const char* key, std::string* out) {
-  if (!obj.is_object()) return true;
   auto it = obj.find(key);
   if (it == obj.end()) return true;
   if (!it->is_string()) return false;
