@@ -59,25 +59,6 @@ double Median(std::vector<double> v) {
   return v.empty() ? 0.0 : v[v.size() / 2];
 }
 
-// Every mesh of the file as one: the codecs compress one mesh at a time.
-Mesh Merge(const hullpack::Scene& scene) {
-  Mesh out;
-  bool normals = true, uvs = true;
-  for (const Mesh& m : scene.meshes) {
-    normals = normals && !m.normals.empty();
-    uvs = uvs && !m.uv_sets.empty();
-  }
-  if (uvs) out.uv_sets.emplace_back();
-  for (const Mesh& m : scene.meshes) {
-    const uint32_t base = static_cast<uint32_t>(out.vertex_count());
-    out.positions.insert(out.positions.end(), m.positions.begin(), m.positions.end());
-    if (normals) out.normals.insert(out.normals.end(), m.normals.begin(), m.normals.end());
-    if (uvs) out.uv_sets[0].insert(out.uv_sets[0].end(), m.uv_sets[0].begin(), m.uv_sets[0].end());
-    for (uint32_t i : m.indices) out.indices.push_back(base + i);
-  }
-  return out;
-}
-
 struct Row {
   std::string name;
   size_t triangles = 0, vertices = 0;
@@ -211,7 +192,7 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "codec_bench: %s\n", scene.status().message().c_str());
       continue;
     }
-    const Mesh mesh = Merge(scene.value());
+    const Mesh mesh = hullpack::MergeMeshes(scene.value());
     Row row;
     row.name = file.substr(0, file.size() - 4);
     row.triangles = mesh.triangle_count();

@@ -59,26 +59,6 @@ std::string Stem(const std::string& file) {
   return dot == std::string::npos ? file : file.substr(0, dot);
 }
 
-// Every mesh of the file as one (vertex arrays only: the codec and the decomposition take one mesh).
-// Normals and the first UV set are kept when every mesh has them.
-Mesh Merge(const Scene& scene) {
-  Mesh out;
-  bool normals = !scene.meshes.empty(), uvs = !scene.meshes.empty();
-  for (const Mesh& m : scene.meshes) {
-    normals = normals && !m.normals.empty();
-    uvs = uvs && !m.uv_sets.empty();
-  }
-  if (uvs) out.uv_sets.emplace_back();
-  for (const Mesh& m : scene.meshes) {
-    const uint32_t base = static_cast<uint32_t>(out.vertex_count());
-    out.positions.insert(out.positions.end(), m.positions.begin(), m.positions.end());
-    if (normals) out.normals.insert(out.normals.end(), m.normals.begin(), m.normals.end());
-    if (uvs) out.uv_sets[0].insert(out.uv_sets[0].end(), m.uv_sets[0].begin(), m.uv_sets[0].end());
-    for (uint32_t i : m.indices) out.indices.push_back(base + i);
-  }
-  return out;
-}
-
 bool Contains(const std::vector<uint32_t>& v, uint32_t x) { return std::find(v.begin(), v.end(), x) != v.end(); }
 bool Contains(const std::vector<int>& v, int x) { return std::find(v.begin(), v.end(), x) != v.end(); }
 bool Contains(const std::vector<double>& v, double x) { return std::find(v.begin(), v.end(), x) != v.end(); }
@@ -487,7 +467,7 @@ Result<SweepResult> RunSweep(const std::string& folder, const SweepOptions& o) {
         result.skipped.push_back(file + ": " + scene.status().message());
         continue;
       }
-      mesh = Merge(scene.value());
+      mesh = MergeMeshes(scene.value());
     }
     mesh.name = Stem(file);
     const Status valid = ValidateMesh(mesh);
