@@ -125,15 +125,14 @@ struct alignas(16) SymbolModelN {
   // the out-of-line count-based path (the same values: Rate(kRates - 1) == kSlowShift).
   O3DGC_INLINE void Update(int symbol) {
     if (O3DGC_LIKELY(n == kRates - 1)) {
-      Move<kSlowShift, kFastShift>(symbol);
+      Move(symbol, kSlowShift, kFastShift);  // inlined: the constant rates become immediate shifts
     } else {
       WarmUpdate(symbol);
     }
   }
   O3DGC_NOINLINE void WarmUpdate(int symbol);
-  template <int kSlow, int kFast>
-  void Move(int symbol);
-  void Move(int symbol, int rate, int fast_rate);
+  // Moves both tables towards the targets of `symbol` at 1/2^rate and 1/2^fast_rate.
+  O3DGC_INLINE void Move(int symbol, int rate, int fast_rate);
   // The symbol whose interval holds `code` (< range) for a range r * 2^16: the number of entries
   // i < kSymbols - 1 with r * cumulative(i) <= code, i.e. with cumulative(i) <= code / r. Its
   // interval is [*lo, *hi) (in 1/2^16).
@@ -176,21 +175,8 @@ inline constexpr Tables<N> kTables{};
 
 #if defined(__SSE2__) && !defined(O3DGC_NO_SIMD)
 template <int N>
-template <int kSlow, int kFast>
-O3DGC_INLINE void SymbolModelN<N>::Move(int symbol) {
+O3DGC_INLINE void SymbolModelN<N>::Move(int symbol, int rate, int fast_rate) {
   // 16-bit lanes: differences to the targets stay within +-2^15.
-  const __m128i* t = reinterpret_cast<const __m128i*>(symbol_tables::kTables<N>.target[symbol]);
-  __m128i* sp = reinterpret_cast<__m128i*>(slow);
-  __m128i* fp = reinterpret_cast<__m128i*>(fast);
-  for (int v = 0; v < N / 8; ++v) {
-    const __m128i tv = _mm_load_si128(t + v), sv = _mm_load_si128(sp + v), fv = _mm_load_si128(fp + v);
-    _mm_store_si128(sp + v, _mm_add_epi16(sv, _mm_srai_epi16(_mm_sub_epi16(tv, sv), kSlow)));
-    _mm_store_si128(fp + v, _mm_add_epi16(fv, _mm_srai_epi16(_mm_sub_epi16(tv, fv), kFast)));
-  }
-}
-
-template <int N>
-inline void SymbolModelN<N>::Move(int symbol, int rate, int fast_rate) {
   const __m128i* t = reinterpret_cast<const __m128i*>(symbol_tables::kTables<N>.target[symbol]);
   const __m128i rs = _mm_cvtsi32_si128(rate), rf = _mm_cvtsi32_si128(fast_rate);
   __m128i* sp = reinterpret_cast<__m128i*>(slow);
@@ -237,17 +223,7 @@ O3DGC_INLINE int SymbolModelN<N>::Find(uint32_t r, uint32_t code, uint32_t* lo, 
 }
 #else
 template <int N>
-template <int kSlow, int kFast>
-O3DGC_INLINE void SymbolModelN<N>::Move(int symbol) {
-  const uint16_t* t = symbol_tables::kTables<N>.target[symbol];
-  for (int i = 0; i < kSymbols - 1; ++i) {
-    slow[i] = uint16_t(slow[i] + ((int32_t(t[i]) - slow[i]) >> kSlow));
-    fast[i] = uint16_t(fast[i] + ((int32_t(t[i]) - fast[i]) >> kFast));
-  }
-}
-
-template <int N>
-inline void SymbolModelN<N>::Move(int symbol, int rate, int fast_rate) {
+O3DGC_INLINE void SymbolModelN<N>::Move(int symbol, int rate, int fast_rate) {
   const uint16_t* t = symbol_tables::kTables<N>.target[symbol];
   for (int i = 0; i < kSymbols - 1; ++i) {
     slow[i] = uint16_t(slow[i] + ((int32_t(t[i]) - slow[i]) >> rate));
