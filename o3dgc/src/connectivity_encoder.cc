@@ -6,7 +6,6 @@
 
 #include "connectivity_front.h"
 #include "entropy.h"
-#include "key_table.h"
 
 namespace o3dgc {
 namespace {
@@ -157,32 +156,92 @@ class Encoder {
  private:
   enum : uint8_t { kPrimary = 0, kCopy = 1, kDegenerate = 2 };
 
+  // Marks degenerate triangles and copies (triangles whose vertex set an earlier triangle, the
+  // primary, already has) and chains each primary's copies in triangle order. Triangles with the
+  // same vertex set share their smallest vertex, so they are bucketed by it (a counting sort that
+  // keeps triangle order) and compared within buckets: small arrays read in order instead of a
+  // hash table of all triangles, whose random accesses dominated encoding large meshes.
   void Classify() {
     kind_.assign(nt_, kPrimary);
     first_copy_.assign(nt_, kNone);
     next_copy_.assign(nt_, kNone);
-    std::vector<uint32_t> last_copy(nt_, kNone);
-    KeyTable table(nt_);
+    std::vector<uint32_t> start(size_t(nv_in_) + 1, 0);
     for (size_t t = 0; t < nt_; ++t) {
-      uint32_t a = tris_[3 * t], b = tris_[3 * t + 1], c = tris_[3 * t + 2];
+      const uint32_t a = tris_[3 * t], b = tris_[3 * t + 1], c = tris_[3 * t + 2];
       if (a == b || b == c || a == c) {
         kind_[t] = kDegenerate;
         degenerate_.push_back(uint32_t(t));
         continue;
       }
-      if (a > b) std::swap(a, b);
-      if (b > c) std::swap(b, c);
-      if (a > b) std::swap(a, b);
-      const uint32_t p = table.FindOrInsert(a, b, c, uint32_t(t));
-      if (p == t) continue;  // first triangle with this vertex set: the primary
+      ++start[size_t(std::min(a, std::min(b, c))) + 1];
+    }
+    for (uint32_t v = 0; v < nv_in_; ++v) start[v + 1] += start[v];
+    std::vector<uint32_t> bucket(start[nv_in_]);
+    {
+      std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+      for (size_t t = 0; t < nt_; ++t) {
+        if (kind_[t] == kDegenerate) continue;
+        const uint32_t a = tris_[3 * t], b = tris_[3 * t + 1], c = tris_[3 * t + 2];
+        bucket[fill[std::min(a, std::min(b, c))]++] = uint32_t(t);
+      }
+    }
+    std::vector<uint32_t> last_copy;  // allocated at the first copy: most meshes have none
+    auto add_copy = [&](uint32_t p, uint32_t t) {
+      if (last_copy.empty()) last_copy.assign(nt_, kNone);
       kind_[t] = kCopy;
       if (first_copy_[p] == kNone) {
-        first_copy_[p] = uint32_t(t);
+        first_copy_[p] = t;
       } else {
-        next_copy_[last_copy[p]] = uint32_t(t);
+        next_copy_[last_copy[p]] = t;
       }
-      last_copy[p] = uint32_t(t);
+      last_copy[p] = t;
+    };
+    std::vector<SortedPair> large;
+    for (uint32_t v = 0; v < nv_in_; ++v) {
+      const uint32_t* items = bucket.data() + start[v];
+      const uint32_t n = start[v + 1] - start[v];
+      if (n < 2) continue;
+      if (n <= kSmallBucket) {
+        // The first earlier triangle with the same other two vertices is the primary.
+        uint64_t keys[kSmallBucket];
+        for (uint32_t i = 0; i < n; ++i) {
+          keys[i] = OtherTwo(items[i], v);
+          for (uint32_t j = 0; j < i; ++j) {
+            if (keys[j] == keys[i]) {
+              add_copy(items[j], items[i]);
+              break;
+            }
+          }
+        }
+        continue;
+      }
+      // A fan apex: sort by (other two vertices, triangle) so that equal sets are adjacent and
+      // each group starts with its primary; copies are then added in triangle order.
+      large.clear();
+      for (uint32_t i = 0; i < n; ++i) large.push_back(SortedPair{OtherTwo(items[i], v), items[i]});
+      std::sort(large.begin(), large.end(), [](const SortedPair& x, const SortedPair& y) {
+        return x.key != y.key ? x.key < y.key : x.tri < y.tri;
+      });
+      for (uint32_t i = 1, first = 0; i < n; ++i) {
+        if (large[i].key != large[first].key) {
+          first = i;
+        } else {
+          add_copy(large[first].tri, large[i].tri);
+        }
+      }
     }
+  }
+  static constexpr uint32_t kSmallBucket = 16;
+  struct SortedPair {
+    uint64_t key;
+    uint32_t tri;
+  };
+  // The two vertices of triangle t other than its smallest one, v, as one ordered key.
+  uint64_t OtherTwo(uint32_t t, uint32_t v) const {
+    const uint32_t* x = &tris_[3 * size_t(t)];
+    const uint32_t p = x[0] == v ? x[1] : x[0];
+    const uint32_t q = x[2] == v ? x[1] : x[2];
+    return p < q ? (uint64_t(p) << 32) | q : (uint64_t(q) << 32) | p;
   }
 
   // Corners (triangle * 3 + slot) of the primary triangles around every vertex, by triangle.

@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <map>
 #include <random>
+#include <set>
 
 #include "connectivity_decoder.h"
 #include "connectivity_encoder.h"
@@ -27,6 +29,34 @@ std::vector<std::array<uint32_t, 3>> Canon(const std::vector<uint32_t>& t,
   return out;
 }
 
+// Triangles with the same vertex set are coded as one primary (the first in the input) followed
+// by its copies in input order: check that order in the encoder's output (degenerate triangles,
+// coded apart, left out).
+void ExpectCopiesFollowTheirPrimary(const std::vector<uint32_t>& tris, const std::vector<uint32_t>& source) {
+  auto vertex_set = [&](uint32_t t) {
+    std::array<uint32_t, 3> k = {tris[3 * t], tris[3 * t + 1], tris[3 * t + 2]};
+    std::sort(k.begin(), k.end());
+    return k;
+  };
+  std::map<std::array<uint32_t, 3>, uint32_t> first;  // vertex set -> first input triangle
+  for (uint32_t t = 0; t < tris.size() / 3; ++t) first.emplace(vertex_set(t), t);
+  std::set<std::array<uint32_t, 3>> coded;
+  std::array<uint32_t, 3> previous = {0, 0, 0};
+  uint32_t previous_t = 0;
+  for (const uint32_t t : source) {
+    const std::array<uint32_t, 3> k = vertex_set(t);
+    if (k[0] == k[1] || k[1] == k[2]) continue;
+    if (!coded.empty() && k == previous) {
+      EXPECT_LT(previous_t, t) << "copies in input order";
+    } else {
+      EXPECT_EQ(t, first[k]) << "triangle " << t << " coded as a primary, but " << first[k] << " has its vertices";
+      EXPECT_TRUE(coded.insert(k).second) << "a vertex set coded in two places";
+    }
+    previous = k;
+    previous_t = t;
+  }
+}
+
 void RoundTrip(const std::vector<uint32_t>& tris, uint32_t nv, size_t* bytes = nullptr) {
   std::vector<uint8_t> buf;
   ConnectivityEncoding enc_out;
@@ -36,6 +66,7 @@ void RoundTrip(const std::vector<uint32_t>& tris, uint32_t nv, size_t* bytes = n
     enc.Finish();
   }
   ASSERT_EQ(enc_out.old_of_new.size(), nv);
+  ExpectCopiesFollowTheirPrimary(tris, enc_out.source);
   ArithmeticDecoder dec(buf.data(), buf.size());
   std::vector<uint32_t> out;
   uint32_t dnv = 0;
@@ -77,6 +108,32 @@ TEST(Connectivity, TwoSidedMesh) {
   RoundTrip(g.indices, uint32_t(g.nv()), &one);
   RoundTrip(tris, uint32_t(g.nv()), &two);
   EXPECT_LT(two, one + one / 4 + 8);
+}
+
+TEST(Connectivity, TwoSidedFanAroundOneApex) {
+  // Every triangle holds vertex 0, the smallest id, so the copies are found among the 2 x 60
+  // triangles bucketed at that vertex (the sorted path, not the small-bucket one); the copies are
+  // interleaved with the primaries and alternate in winding.
+  std::vector<uint32_t> fan;
+  const uint32_t n = 60;
+  for (uint32_t i = 0; i < n; ++i) fan.insert(fan.end(), {0, 1 + i, 1 + (i + 1) % n});
+  std::vector<uint32_t> two;
+  for (uint32_t i = 0; i < n; ++i) {
+    const uint32_t* t = &fan[3 * i];
+    two.insert(two.end(), t, t + 3);
+    if (i >= 2) {  // a copy of an earlier triangle, every other one flipped
+      const uint32_t* e = &fan[3 * (i - 2)];
+      if (i % 2) {
+        two.insert(two.end(), {e[0], e[2], e[1]});
+      } else {
+        two.insert(two.end(), e, e + 3);
+      }
+    }
+  }
+  two.insert(two.end(), {fan[3 * (n - 2)], fan[3 * (n - 2) + 2], fan[3 * (n - 2) + 1]});
+  two.insert(two.end(), fan.begin() + 3 * (n - 1), fan.end());
+  RoundTrip(fan, n + 1);
+  RoundTrip(two, n + 1);  // checks that every copy follows its primary
 }
 
 TEST(Connectivity, RandomTriangleSoups) {
