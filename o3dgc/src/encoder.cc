@@ -160,13 +160,11 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
   {
     std::vector<uint8_t> referenced(nv, 0);
     for (size_t i = 0; i < 3 * nt; ++i) referenced[mesh.indices[i]] = 1;
-    KeyTable table(nv);
-    for (size_t v = 0; v < nv; ++v) {
+    KeyTable table(positions.data(), nv);
+    for (uint32_t v = 0; v < nv; ++v) {
       if (!referenced[v]) continue;
-      uint32_t k[3];
-      std::memcpy(k, &positions[3 * v], 12);
-      weld[v] = table.FindOrInsert(k[0], k[1], k[2], num_welded);
-      if (weld[v] == num_welded) ++num_welded;
+      const uint32_t first = table.FindOrInsert(v);
+      weld[v] = first == v ? num_welded++ : weld[first];
     }
   }
   std::vector<uint32_t> welded_tris(3 * nt);
