@@ -35,8 +35,8 @@ TEST(KeyTable, FindsTheFirstEntryWithTheKey) {
   }
 }
 
-// Entries that are never inserted are never found, and a full table's worth of distinct keys fits.
-TEST(KeyTable, SkipsUninsertedEntriesAndHoldsExpectedCount) {
+// Entries that are never inserted (unreferenced vertices) are never found; keys compare bitwise.
+TEST(KeyTable, SkipsUninsertedEntriesAndComparesBitwise) {
   const std::vector<float> positions = {0, 0, 0, 1, 0, 0, 0, 0, 0, 1, 0, 0, -0.0f, 0, 0};
   KeyTable table(positions.data(), 5);
   EXPECT_EQ(table.FindOrInsert(1), 1u);
