@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/file_util.h"
+#include "mesh/merge.h"
 #include "scene/scene.h"
 
 namespace hullpack {
@@ -41,23 +42,14 @@ double MedianMs(int repeats, F&& run) {
   return ms[ms.size() / 2];
 }
 
-// Every mesh of a scene as one (vertex arrays only: the codecs and the decomposition take one mesh).
-// Normals and the first UV set are kept when every mesh has them.
-inline Mesh MergeMeshes(const Scene& scene) {
-  Mesh out;
-  bool normals = !scene.meshes.empty(), uvs = !scene.meshes.empty();
-  for (const Mesh& m : scene.meshes) {
-    normals = normals && !m.normals.empty();
-    uvs = uvs && !m.uv_sets.empty();
-  }
-  if (uvs) out.uv_sets.emplace_back();
-  for (const Mesh& m : scene.meshes) {
-    const uint32_t base = static_cast<uint32_t>(out.vertex_count());
-    out.positions.insert(out.positions.end(), m.positions.begin(), m.positions.end());
-    if (normals) out.normals.insert(out.normals.end(), m.normals.begin(), m.normals.end());
-    if (uvs) out.uv_sets[0].insert(out.uv_sets[0].end(), m.uv_sets[0].begin(), m.uv_sets[0].end());
-    for (uint32_t i : m.indices) out.indices.push_back(base + i);
-  }
+// Every mesh of a scene as one, with the attributes the benchmarks compare (positions, normals,
+// the first UV set: what both codecs and the decomposition are given); see MergeMeshes.
+inline Mesh MergeGeometry(const Scene& scene) {
+  Mesh out = MergeMeshes(scene);
+  out.colors.clear();
+  out.joints.clear();
+  out.weights.clear();
+  out.material_ids.clear();
   return out;
 }
 

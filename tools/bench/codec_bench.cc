@@ -192,7 +192,7 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "codec_bench: %s\n", scene.status().message().c_str());
       continue;
     }
-    const Mesh mesh = hullpack::MergeMeshes(scene.value());
+    const Mesh mesh = hullpack::MergeGeometry(scene.value());
     Row row;
     row.name = file.substr(0, file.size() - 4);
     row.triangles = mesh.triangle_count();

@@ -467,7 +467,7 @@ Result<SweepResult> RunSweep(const std::string& folder, const SweepOptions& o) {
         result.skipped.push_back(file + ": " + scene.status().message());
         continue;
       }
-      mesh = MergeMeshes(scene.value());
+      mesh = MergeGeometry(scene.value());
     }
     mesh.name = Stem(file);
     const Status valid = ValidateMesh(mesh);

@@ -18,6 +18,7 @@
 
 #include "common/file_util.h"
 #include "io/scene_io.h"
+#include "mesh/merge.h"
 #include "pipeline/mesh_codec.h"
 #include "o3dgc/o3dgc.h"
 #include "scene/scene.h"
@@ -65,44 +66,13 @@ void PrintParts(const o3dgc::StreamInfo& info, size_t nv) {
   line("total", info.total);
 }
 
-// Every mesh of the scene as one; an attribute is kept only when every mesh has it, and material
-// ids become triangle groups.
-hullpack::Mesh MergeMeshes(const hullpack::Scene& scene) {
-  hullpack::Mesh all;
-  bool normals = !scene.meshes.empty(), uvs = normals, colors = normals, skin = normals, materials = false;
-  for (const hullpack::Mesh& m : scene.meshes) {
-    normals = normals && !m.normals.empty();
-    uvs = uvs && !m.uv_sets.empty();
-    colors = colors && !m.colors.empty();
-    skin = skin && m.has_skin();
-    materials = materials || !m.material_ids.empty();
-  }
-  all.uv_sets.resize(uvs ? 1 : 0);
-  for (const hullpack::Mesh& m : scene.meshes) {
-    const uint32_t base = uint32_t(all.vertex_count());
-    all.positions.insert(all.positions.end(), m.positions.begin(), m.positions.end());
-    for (uint32_t i : m.indices) all.indices.push_back(base + i);
-    if (normals) all.normals.insert(all.normals.end(), m.normals.begin(), m.normals.end());
-    if (uvs) all.uv_sets[0].insert(all.uv_sets[0].end(), m.uv_sets[0].begin(), m.uv_sets[0].end());
-    if (colors) all.colors.insert(all.colors.end(), m.colors.begin(), m.colors.end());
-    if (skin) {
-      all.joints.insert(all.joints.end(), m.joints.begin(), m.joints.end());
-      all.weights.insert(all.weights.end(), m.weights.begin(), m.weights.end());
-    }
-    if (materials) {
-      for (size_t t = 0; t < m.triangle_count(); ++t) all.material_ids.push_back(m.material_ids.empty() ? 0 : m.material_ids[t]);
-    }
-  }
-  return all;
-}
-
 int Compress(const std::string& input, const hullpack::MeshCodecSettings& settings) {
   hullpack::Result<hullpack::Scene> scene = hullpack::ReadScene(input);
   if (!scene.ok()) {
     std::fprintf(stderr, "%s\n", scene.status().ToString().c_str());
     return 1;
   }
-  const hullpack::Mesh all = MergeMeshes(scene.value());
+  const hullpack::Mesh all = hullpack::MergeMeshes(scene.value());
   std::printf("Mesh info\n  vertices %zu\n  triangles %zu\n  normals %s\n  uv %s\n  colors %s\n"
               "  skin %s\n  groups %s\n",
               all.vertex_count(), all.triangle_count(), all.normals.empty() ? "no" : "yes",
