@@ -33,11 +33,13 @@
 #define O3DGC_NOINLINE __attribute__((noinline))
 #define O3DGC_LIKELY(x) __builtin_expect(!!(x), 1)
 #define O3DGC_UNLIKELY(x) __builtin_expect(!!(x), 0)
+#define O3DGC_PREFETCH(p) __builtin_prefetch(p)
 #else
 #define O3DGC_INLINE inline
 #define O3DGC_NOINLINE
 #define O3DGC_LIKELY(x) (x)
 #define O3DGC_UNLIKELY(x) (x)
+#define O3DGC_PREFETCH(p) ((void)(p))
 #endif
 
 namespace o3dgc {
