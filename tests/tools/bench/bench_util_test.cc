@@ -7,8 +7,8 @@
 namespace hullpack {
 namespace {
 
-// Two triangles sharing an edge, with the shared corners duplicated as across a UV seam: vertices
-// 0-3 for the first triangle's side, 4-5 repeat 1 and 2 at the same positions.
+// Two triangles sharing an edge, 0-1-2 and 4-3-5, whose shared corners are duplicated as across a
+// UV seam: vertices 4 and 5 repeat the positions of 1 and 2.
 Mesh SeamQuad() {
   Mesh m;
   m.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, /* copies of 1, 2: */ 1, 0, 0, 0, 1, 0};
