@@ -8,7 +8,7 @@ namespace {
 
 // The multi-parallelogram loop for kDim components, in one function so that the decoder's state
 // (a local copy) stays in registers.
-template <int kDim>
+template <int kDim, bool kRawLow>
 Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges, int64_t maxq,
                            int coarse, ResidualModels& models, int32_t* q, uint32_t* mags) {
   ArithmeticDecoder dec = *dec_in;
@@ -36,7 +36,7 @@ Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges, 
 #endif
     for (int k = 0; k < kDim; ++k) {
       const int64_t p = pred[k] < 0 ? 0 : (pred[k] > maxq ? maxq : pred[k]);
-      r[k] = DecodeResidual(dec, row[stride * k + intra], models.escape);
+      r[k] = DecodeResidual<kRawLow>(dec, row[stride * k + intra], models.escape);
       intra = coarse ? 0 : IntraContext(r[k]);
       const int64_t v = p + r[k];
       ok &= uint64_t(v) <= uint64_t(maxq);
@@ -51,6 +51,14 @@ Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges, 
   *dec_in = dec;
   if (status == Status::kOk && dec.failed()) status = Status::kTruncated;
   return status;
+}
+
+// The residual coding (RawLowBits) as a template argument, so that the loop has no test for it.
+template <int kDim>
+Status DecodeParallelogramFor(bool raw, ArithmeticDecoder* dec, const WedgeTable& wedges, int64_t maxq,
+                              int coarse, ResidualModels& models, int32_t* q, uint32_t* mags) {
+  return raw ? DecodeParallelogram<kDim, true>(dec, wedges, maxq, coarse, models, q, mags)
+             : DecodeParallelogram<kDim, false>(dec, wedges, maxq, coarse, models, q, mags);
 }
 
 }  // namespace
@@ -72,13 +80,14 @@ Status DecodeQuantized(ArithmeticDecoder* dec_in, const WedgeTable* wedges, uint
   std::unique_ptr<ResidualModels> models(new ResidualModels(dim, 3));
   std::vector<uint32_t> mags(n, 0);
   const int coarse = n < kTinyMesh ? 2 : (n < kSmallMesh ? 1 : 0);
+  const bool raw = RawLowBits(n);
   // Residuals against `pred` for vertex c, with the context of `pc`.
   auto decode_vertex = [&](uint32_t c, const PredictionContext& pc, const int64_t* pred) {
     const int mctx = MagContext(pc.neighbour_magnitude) >> coarse;
     int64_t r[4];
     for (int k = 0; k < dim; ++k) {
-      r[k] = DecodeResidual(*dec, models->at(coarse == 2 ? 0 : k, pc.kind, mctx, (k && !coarse) ? IntraContext(r[k - 1]) : 0),
-                              models->escape);
+      ResidualModel& m = models->at(coarse == 2 ? 0 : k, pc.kind, mctx, (k && !coarse) ? IntraContext(r[k - 1]) : 0);
+      r[k] = raw ? DecodeResidual<true>(*dec, m, models->escape) : DecodeResidual<false>(*dec, m, models->escape);
       const int64_t v = pred[k] + r[k];
       if (v < 0 || v > maxq) return false;
       q[size_t(c) * dim + k] = int32_t(v);
@@ -101,10 +110,10 @@ Status DecodeQuantized(ArithmeticDecoder* dec_in, const WedgeTable* wedges, uint
   const double* geo = (geometry && dim == 2) ? geometry->data() : nullptr;
   if (!geo) {
     switch (dim) {
-      case 1: return DecodeParallelogram<1>(&*dec, *wedges, maxq, coarse, *models, q.data(), mags.data());
-      case 2: return DecodeParallelogram<2>(&*dec, *wedges, maxq, coarse, *models, q.data(), mags.data());
-      case 3: return DecodeParallelogram<3>(&*dec, *wedges, maxq, coarse, *models, q.data(), mags.data());
-      default: return DecodeParallelogram<4>(&*dec, *wedges, maxq, coarse, *models, q.data(), mags.data());
+      case 1: return DecodeParallelogramFor<1>(raw, &*dec, *wedges, maxq, coarse, *models, q.data(), mags.data());
+      case 2: return DecodeParallelogramFor<2>(raw, &*dec, *wedges, maxq, coarse, *models, q.data(), mags.data());
+      case 3: return DecodeParallelogramFor<3>(raw, &*dec, *wedges, maxq, coarse, *models, q.data(), mags.data());
+      default: return DecodeParallelogramFor<4>(raw, &*dec, *wedges, maxq, coarse, *models, q.data(), mags.data());
     }
   }
   DegreeTraversal order(*wedges);

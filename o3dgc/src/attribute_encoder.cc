@@ -45,7 +45,7 @@ std::vector<double> AttributeGeometry(const NormalGeometry& geo, uint32_t n) {
 namespace {
 
 // The multi-parallelogram loop for kDim components (mirror of DecodeParallelogram).
-template <int kDim>
+template <int kDim, bool kRawLow>
 void EncodeParallelogram(ArithmeticEncoder* enc, const WedgeTable& wedges, int64_t maxq, int coarse,
                          ResidualModels& models, const int32_t* q, uint32_t* mags) {
   DegreeTraversal order(wedges);
@@ -64,10 +64,21 @@ void EncodeParallelogram(ArithmeticEncoder* enc, const WedgeTable& wedges, int64
     for (int k = 0; k < kDim; ++k) {
       const int64_t p = pred[k] < 0 ? 0 : (pred[k] > maxq ? maxq : pred[k]);
       r[k] = int64_t(q[size_t(c) * kDim + k]) - p;
-      EncodeResidual(*enc, row[stride * k + intra], models.escape, r[k]);
+      EncodeResidual<kRawLow>(*enc, row[stride * k + intra], models.escape, r[k]);
       intra = coarse ? 0 : IntraContext(r[k]);
     }
     mags[c] = SaturatingMagnitude(r, kDim);
+  }
+}
+
+// The residual coding (RawLowBits) as a template argument, so that the loop has no test for it.
+template <int kDim>
+void EncodeParallelogramFor(bool raw, ArithmeticEncoder* enc, const WedgeTable& wedges, int64_t maxq,
+                            int coarse, ResidualModels& models, const int32_t* q, uint32_t* mags) {
+  if (raw) {
+    EncodeParallelogram<kDim, true>(enc, wedges, maxq, coarse, models, q, mags);
+  } else {
+    EncodeParallelogram<kDim, false>(enc, wedges, maxq, coarse, models, q, mags);
   }
 }
 
@@ -85,13 +96,18 @@ void EncodeQuantized(ArithmeticEncoder* enc, const WedgeTable* wedges,
   std::vector<uint32_t> mags(n, 0);
   const int64_t maxq = (int64_t(1) << bits) - 1;
   const int coarse = n < kTinyMesh ? 2 : (n < kSmallMesh ? 1 : 0);
+  const bool raw = RawLowBits(n);
   auto encode_vertex = [&](uint32_t c, const PredictionContext& pc, const int64_t* pred) {
     const int mctx = MagContext(pc.neighbour_magnitude) >> coarse;
     int64_t r[4];
     for (int k = 0; k < dim; ++k) {
       r[k] = int64_t(q[size_t(c) * dim + k]) - pred[k];
-      EncodeResidual(*enc, models->at(coarse == 2 ? 0 : k, pc.kind, mctx, (k && !coarse) ? IntraContext(r[k - 1]) : 0),
-                     models->escape, r[k]);
+      ResidualModel& m = models->at(coarse == 2 ? 0 : k, pc.kind, mctx, (k && !coarse) ? IntraContext(r[k - 1]) : 0);
+      if (raw) {
+        EncodeResidual<true>(*enc, m, models->escape, r[k]);
+      } else {
+        EncodeResidual<false>(*enc, m, models->escape, r[k]);
+      }
     }
     mags[c] = SaturatingMagnitude(r, dim);
   };
@@ -109,10 +125,10 @@ void EncodeQuantized(ArithmeticEncoder* enc, const WedgeTable* wedges,
   const double* geo = (geometry && dim == 2) ? geometry->data() : nullptr;
   if (!geo) {
     switch (dim) {
-      case 1: return EncodeParallelogram<1>(enc, *wedges, maxq, coarse, *models, q.data(), mags.data());
-      case 2: return EncodeParallelogram<2>(enc, *wedges, maxq, coarse, *models, q.data(), mags.data());
-      case 3: return EncodeParallelogram<3>(enc, *wedges, maxq, coarse, *models, q.data(), mags.data());
-      default: return EncodeParallelogram<4>(enc, *wedges, maxq, coarse, *models, q.data(), mags.data());
+      case 1: return EncodeParallelogramFor<1>(raw, enc, *wedges, maxq, coarse, *models, q.data(), mags.data());
+      case 2: return EncodeParallelogramFor<2>(raw, enc, *wedges, maxq, coarse, *models, q.data(), mags.data());
+      case 3: return EncodeParallelogramFor<3>(raw, enc, *wedges, maxq, coarse, *models, q.data(), mags.data());
+      default: return EncodeParallelogramFor<4>(raw, enc, *wedges, maxq, coarse, *models, q.data(), mags.data());
     }
   }
   DegreeTraversal order(*wedges);

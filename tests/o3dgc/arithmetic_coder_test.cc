@@ -99,7 +99,7 @@ TEST(ArithmeticCoder, SymbolsRawBitsAndResidualsRoundTrip) {
     SymbolModelN<8> small;
     SymbolModelN<32> large;
     BitModel bit;
-    ResidualModel rm;
+    ResidualModel rm, rm_raw;
     ResidualEscape rx;
     for (int i = 0; i < 20000; ++i) {
       symbols.push_back(int(rng() % 100) < 90 ? int(rng() % 3) : int(rng() % 16));
@@ -118,7 +118,8 @@ TEST(ArithmeticCoder, SymbolsRawBitsAndResidualsRoundTrip) {
       // Mostly small, sometimes huge (escape classes), sometimes zero.
       const int64_t r = i % 101 == 0 ? (int64_t(1) << 38) - 3 : int64_t(rng() % 2001) - 1000;
       residuals.push_back(i % 7 == 0 ? 0 : (i % 3 ? r : -r));
-      EncodeResidual(enc, rm, rx, residuals.back());
+      EncodeResidual<false>(enc, rm, rx, residuals.back());
+      EncodeResidual<true>(enc, rm_raw, rx, residuals.back());
     }
     enc.Finish();
   }
@@ -127,7 +128,7 @@ TEST(ArithmeticCoder, SymbolsRawBitsAndResidualsRoundTrip) {
   SymbolModelN<8> small;
   SymbolModelN<32> large;
   BitModel bit;
-  ResidualModel rm;
+  ResidualModel rm, rm_raw;
   ResidualEscape rx;
   for (int i = 0; i < 20000; ++i) {
     ASSERT_EQ(dec.Decode(skewed), symbols[4 * i]);
@@ -136,7 +137,8 @@ TEST(ArithmeticCoder, SymbolsRawBitsAndResidualsRoundTrip) {
     ASSERT_EQ(dec.Decode(large), symbols[4 * i + 3]);
     ASSERT_EQ(dec.Decode(bit), bits[i]);
     ASSERT_EQ(dec.DecodeRaw(raw_count[i]), raw[i]);
-    ASSERT_EQ(DecodeResidual(dec, rm, rx), residuals[i]);
+    ASSERT_EQ(DecodeResidual<false>(dec, rm, rx), residuals[i]);
+    ASSERT_EQ(DecodeResidual<true>(dec, rm_raw, rx), residuals[i]);
   }
   EXPECT_FALSE(dec.failed());
 }

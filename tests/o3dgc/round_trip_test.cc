@@ -208,6 +208,27 @@ TEST(RoundTrip, EveryPredictionModeAndBitDepth) {
   }
 }
 
+TEST(RoundTrip, LargeMeshesCodeResidualLowBitsRaw) {
+  // From 4096 vertices on (kRawLowBitsMesh) residuals take their sign and low bits from the raw
+  // bit stream: every residual path on meshes past that size, down to 30-bit differential
+  // residuals (wider than one 24-bit raw read).
+  TestMesh torus = o3dgc_test::Torus(72, 60);  // colours (differential), joint ids
+  TestMesh grid = o3dgc_test::Grid(72, 60);    // uvs (predicted from the shape)
+  grid.normals.clear();
+  ASSERT_GE(torus.nv(), 4096u);
+  ASSERT_GE(grid.nv(), 4096u);
+  for (Prediction pp : {Prediction::kDifferential, Prediction::kParallelogram}) {
+    for (int bits : {14, 30}) {
+      EncodeParams p;
+      p.keep_order = true;
+      p.position_prediction = pp;
+      p.position_bits = bits;
+      CheckExact(torus, DecodeOk(EncodeOk(torus, p)), bits, 0, 12);
+      CheckExact(grid, DecodeOk(EncodeOk(grid, p)), bits, 0, 12);
+    }
+  }
+}
+
 TEST(RoundTrip, FloatAttributeModesDimensionsAndRanges) {
   TestMesh t = o3dgc_test::Grid(10, 10);
   t.normals.clear();
