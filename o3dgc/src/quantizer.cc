@@ -45,25 +45,36 @@ void Quantizer::Fit(const float* data, size_t stride, size_t count) {
 }
 
 
+namespace {
+
+// One pass over the vectors, all components at once (a pass per component read and wrote every
+// cache line of both arrays `dim` times). A component of zero range has step 0: base + q * 0 is
+// its min exactly, as Dequantize returns.
+template <uint32_t kDim>
+void DequantizeRows(const int32_t* q, const uint32_t* index, size_t count, const double* base,
+                    const double* step, float* out) {
+  for (size_t i = 0; i < count; ++i) {
+    const int32_t* p = q + (index ? size_t(index[i]) : i) * kDim;
+    for (uint32_t c = 0; c < kDim; ++c) out[i * kDim + c] = float(base[c] + double(p[c]) * step[c]);
+  }
+}
+
+}  // namespace
+
 void Quantizer::DequantizeAll(const int32_t* q, const uint32_t* index, size_t count,
                               float* out) const {
   if (count == 0) return;  // an empty mesh's arrays may be null: no pointer arithmetic on them
-  const uint32_t dim = dimension;
-  for (uint32_t c = 0; c < dim; ++c) {
-    // Locals: the float stores below could alias the members.
-    const double base = double(min[c]), step = double(range[c]) / double(max_q());
-    float* o = out + c;
-    if (!(range[c] > 0)) {
-      const float m = min[c];
-      for (size_t i = 0; i < count; ++i) o[i * dim] = m;
-    } else if (index) {
-      for (size_t i = 0; i < count; ++i) {
-        o[i * dim] = float(base + double(q[size_t(index[i]) * dim + c]) * step);
-      }
-    } else {
-      const int32_t* p = q + c;
-      for (size_t i = 0; i < count; ++i) o[i * dim] = float(base + double(p[i * dim]) * step);
-    }
+  double base[4] = {0, 0, 0, 0}, step[4] = {0, 0, 0, 0};
+  for (uint32_t c = 0; c < dimension && c < 4; ++c) {
+    base[c] = double(min[c]);
+    step[c] = range[c] > 0 ? double(range[c]) / double(max_q()) : 0.0;
+  }
+  switch (dimension) {
+    case 1: return DequantizeRows<1>(q, index, count, base, step, out);
+    case 2: return DequantizeRows<2>(q, index, count, base, step, out);
+    case 3: return DequantizeRows<3>(q, index, count, base, step, out);
+    case 4: return DequantizeRows<4>(q, index, count, base, step, out);
+    default: return;  // dimensions are 1..4 (checked when the header is read)
   }
 }
 
