@@ -97,7 +97,7 @@ class DegreeTraversal {
   uint32_t NextWithoutParallelogram();
   const WedgeTable& wedges_;
   std::vector<uint8_t> done_;
-  std::vector<uint32_t> degree_;
+  std::vector<uint8_t> degree_;  // saturating at kLevels - 1: only the level is needed
   // Candidates at levels 1..3 (stack 0 is one entry of scratch space for the branch-free pushes),
   // top_[l] one past the newest entry. A visit pushes at most one entry per wedge, so
   // num_wedges() entries per level are never exceeded: no capacity checks.
@@ -172,9 +172,8 @@ inline uint32_t DegreeTraversal::Next() {
     uint32_t* const stack = stacks_[level].get();
     while (top_[level] != stack) {
       const uint32_t c = *--top_[level];
-      const uint32_t d = degree_[c];
       // Stale entries: coded meanwhile, or a newer entry sits at the vertex's current level.
-      if (done_[c] || (d < kLevels ? int(d) : kLevels - 1) != level) continue;
+      if (done_[c] || int(degree_[c]) != level) continue;
       return c;
     }
   }
@@ -192,7 +191,7 @@ inline int DegreeTraversal::Visit(uint32_t c) {
   const Wedge** par = par_.data();
   int n_par = 0;
   const uint8_t* const done = done_.data();
-  uint32_t* const degree = degree_.data();
+  uint8_t* const degree = degree_.data();
   // Before c is marked: x == c stands for "no neighbour".
   for (const Wedge* it = first; it != last; ++it) {
     const uint32_t u = it->u, w = it->w;
@@ -204,9 +203,10 @@ inline int DegreeTraversal::Visit(uint32_t c) {
     // the entry is real.
     const uint32_t one = du ^ dw;
     const uint32_t a = du ? w : u;
-    const uint32_t d = degree[a] + one;
-    degree[a] = d;
-    const int level = int((d < kLevels ? d : kLevels - 1) & (0u - one));
+    uint32_t d = degree[a] + one;
+    d = d < kLevels ? d : kLevels - 1;
+    degree[a] = uint8_t(d);
+    const int level = int(d & (0u - one));
     uint32_t* const s = slot[level];
     *s = a;
     slot[level] = s + one;
