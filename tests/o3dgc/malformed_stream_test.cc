@@ -111,6 +111,34 @@ TEST(Malformed, RandomByteFlipsOnLargerMeshes) {
   }
 }
 
+TEST(Malformed, ByteFlipsAndTruncationsPastTheRawBitsThreshold) {
+  // Meshes of 4096 vertices or more take residual signs and low bits from the raw bit stream,
+  // read backwards from the payload's end: flipped and cut streams of that kind too.
+  std::mt19937 rng(77);
+  std::vector<std::vector<uint8_t>> streams;
+  o3dgc_test::TestMesh torus = o3dgc_test::Torus(72, 60);  // colours and joint ids too
+  o3dgc_test::TestMesh grid = o3dgc_test::Grid(72, 60);    // uvs
+  ASSERT_GE(torus.nv(), 4096u);
+  for (const o3dgc_test::TestMesh* t : {&torus, &grid}) {
+    std::vector<uint8_t> s;
+    ASSERT_EQ(Encode(t->View(), EncodeParams(), &s), Status::kOk);
+    streams.push_back(s);
+  }
+  for (const auto& s : streams) {
+    for (int iter = 0; iter < 150; ++iter) {
+      auto c = s;
+      const int flips = 1 + int(rng() % 3);
+      for (int f = 0; f < flips; ++f) c[12 + rng() % (c.size() - 12)] ^= uint8_t(1u << (rng() % 8));
+      DecodeOptions o;
+      o.verify_checksum = false;
+      DecodedMesh m;
+      if (Decode(c.data(), c.size(), o, &m) == Status::kOk) ExpectSane(m);
+      const size_t n = 1 + rng() % (s.size() - 1);
+      EXPECT_NE(Decode(s.data(), n, o, &m), Status::kOk) << n;
+    }
+  }
+}
+
 TEST(Malformed, AsciiStreamByteFlips) {
   std::mt19937 rng(77);
   const auto s = SmallStream(false, StreamType::kAscii);
