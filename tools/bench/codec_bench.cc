@@ -7,8 +7,11 @@
 //   codec_bench FOLDER [--repeats 5] [--csv out.csv] [--qp 14] [--qn 10] [--qt 12] [--only a,b]
 //               [--clock wall|cpu] [--ours-only]
 //
-// The repeats are interleaved (one encode and one decode of each codec per round), so that a load
-// change during the run affects the three codecs alike. --clock cpu times the process's CPU time
+// The repeats are interleaved (one encode and one decode of each codec per round, the codecs'
+// order rotating from round to round, so that none always runs after the same one), so that a load
+// change during the run affects the three codecs alike; the ratios to Draco -cl 7 (enc/cl7,
+// dec/cl7) are the medians of the per-round ratios, which a load change during the run moves less
+// than a ratio of medians. --clock cpu times the process's CPU time
 // instead of wall time: steadier on a loaded machine (the time spent waiting for a core is left
 // out), the same on a quiet one. --ours-only skips Draco (profiling runs, size checks).
 #include <time.h>
@@ -65,6 +68,7 @@ struct Row {
   size_t bytes[3] = {0, 0, 0};  // ours, draco cl7, draco cl10
   size_t ascii_gzip_bytes = 0;  // ours, the 7-bit ASCII stream gzip'd as a server sends it
   double encode_ms[3] = {0, 0, 0}, decode_ms[3] = {0, 0, 0}, error[3] = {0, 0, 0};
+  double encode_ratio7 = 0, decode_ratio7 = 0;  // ours / Draco -cl 7, medians of per-round ratios
 };
 
 // Draco at one level: the mesh converted once (not timed), then encoded and decoded per round.
@@ -93,22 +97,32 @@ bool RunAll(const Mesh& mesh, const Settings& s, Row& row) {
   std::vector<double> enc[3], dec[3];
   hullpack::Result<hullpack::EncodedMesh> encoded = hullpack::Status(hullpack::StatusCode::kInternal, "");
   hullpack::Result<Mesh> decoded = hullpack::Status(hullpack::StatusCode::kInternal, "");
+  // Round r runs the codecs from the (r mod n)-th on: each one follows each other one as often.
+  const int n = 1 + num_draco;
   for (int round = 0; round < s.repeats; ++round) {
-    enc[0].push_back(TimeMs(s.cpu_clock, [&] { encoded = hullpack::EncodeMesh(mesh, {}, cs); }));
-    if (!encoded.ok()) return false;
-    for (int i = 0; i < num_draco; ++i) {
-      DracoRun& d = draco[i];
-      enc[i + 1].push_back(TimeMs(s.cpu_clock, [&] { d.bytes = hullpack::DracoEncode(*d.mesh, s.qp, s.qn, s.qt, d.level); }));
-      if (d.bytes.empty()) return false;
+    for (int j = 0; j < n; ++j) {
+      const int i = (round + j) % n;
+      if (i == 0) {
+        enc[0].push_back(TimeMs(s.cpu_clock, [&] { encoded = hullpack::EncodeMesh(mesh, {}, cs); }));
+        if (!encoded.ok()) return false;
+      } else {
+        DracoRun& d = draco[i - 1];
+        enc[i].push_back(TimeMs(s.cpu_clock, [&] { d.bytes = hullpack::DracoEncode(*d.mesh, s.qp, s.qn, s.qt, d.level); }));
+        if (d.bytes.empty()) return false;
+      }
     }
-    dec[0].push_back(TimeMs(s.cpu_clock, [&] {
-      decoded = hullpack::DecodeMesh(encoded->stream.data(), encoded->stream.size(), nullptr, row.name);
-    }));
-    if (!decoded.ok()) return false;
-    for (int i = 0; i < num_draco; ++i) {
-      DracoRun& d = draco[i];
-      dec[i + 1].push_back(TimeMs(s.cpu_clock, [&] { d.decoded = hullpack::DracoDecodePositions(d.bytes); }));
-      if (d.decoded.positions.empty()) return false;
+    for (int j = 0; j < n; ++j) {
+      const int i = (round + j) % n;
+      if (i == 0) {
+        dec[0].push_back(TimeMs(s.cpu_clock, [&] {
+          decoded = hullpack::DecodeMesh(encoded->stream.data(), encoded->stream.size(), nullptr, row.name);
+        }));
+        if (!decoded.ok()) return false;
+      } else {
+        DracoRun& d = draco[i - 1];
+        dec[i].push_back(TimeMs(s.cpu_clock, [&] { d.decoded = hullpack::DracoDecodePositions(d.bytes); }));
+        if (d.decoded.positions.empty()) return false;
+      }
     }
   }
   row.bytes[0] = encoded->stream.size();
@@ -125,6 +139,15 @@ bool RunAll(const Mesh& mesh, const Settings& s, Row& row) {
   for (int i = 0; i < 3; ++i) {
     row.encode_ms[i] = Median(enc[i]);
     row.decode_ms[i] = Median(dec[i]);
+  }
+  if (num_draco > 0) {
+    std::vector<double> enc_ratio, dec_ratio;
+    for (int r = 0; r < s.repeats; ++r) {
+      enc_ratio.push_back(enc[0][r] / enc[1][r]);
+      dec_ratio.push_back(dec[0][r] / dec[1][r]);
+    }
+    row.encode_ratio7 = Median(enc_ratio);
+    row.decode_ratio7 = Median(dec_ratio);
   }
   return true;
 }
@@ -206,8 +229,8 @@ int main(int argc, char** argv) {
         "%8zu %6.3f\n",
         row.name.c_str(), row.triangles, row.vertices, row.bytes[0], row.bytes[1], row.bytes[2],
         double(row.bytes[0]) / row.bytes[1], double(row.bytes[0]) / row.bytes[2], row.encode_ms[0], row.encode_ms[1],
-        row.encode_ms[2], row.decode_ms[0], row.decode_ms[1], row.decode_ms[2], row.encode_ms[0] / row.encode_ms[1],
-        row.decode_ms[0] / row.decode_ms[1], row.error[0], row.error[2], row.ascii_gzip_bytes,
+        row.encode_ms[2], row.decode_ms[0], row.decode_ms[1], row.decode_ms[2], row.encode_ratio7,
+        row.decode_ratio7, row.error[0], row.error[2], row.ascii_gzip_bytes,
         double(row.ascii_gzip_bytes) / row.bytes[0]);
     rows.push_back(row);
   }
@@ -227,13 +250,13 @@ int main(int argc, char** argv) {
     std::string text =
         "mesh,triangles,vertices,ours_bytes,draco7_bytes,draco10_bytes,ours_encode_ms,draco7_encode_ms,draco10_encode_ms,"
         "ours_decode_ms,draco7_decode_ms,draco10_decode_ms,ours_max_error,draco7_max_error,draco10_max_error,"
-        "ours_ascii_gzip_bytes\n";
+        "ours_ascii_gzip_bytes,ours_over_draco7_encode,ours_over_draco7_decode\n";
     for (const Row& r : rows) {
       char line[512];
-      std::snprintf(line, sizeof(line), "%s,%zu,%zu,%zu,%zu,%zu,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.6g,%.6g,%.6g,%zu\n",
+      std::snprintf(line, sizeof(line), "%s,%zu,%zu,%zu,%zu,%zu,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.6g,%.6g,%.6g,%zu,%.4f,%.4f\n",
                     r.name.c_str(), r.triangles, r.vertices, r.bytes[0], r.bytes[1], r.bytes[2], r.encode_ms[0],
                     r.encode_ms[1], r.encode_ms[2], r.decode_ms[0], r.decode_ms[1], r.decode_ms[2], r.error[0], r.error[1],
-                    r.error[2], r.ascii_gzip_bytes);
+                    r.error[2], r.ascii_gzip_bytes, r.encode_ratio7, r.decode_ratio7);
       text += line;
     }
     hullpack::Status st = hullpack::WriteFileAtomically(s.csv, text.data(), text.size());
