@@ -2,9 +2,10 @@
 // attribute_decoder.cc; both share the context models defined here).
 //
 // Quantized values are predicted (none / differential / multi-parallelogram), and each residual
-// component is coded with a signed adaptive Exp-Golomb binarization whose models are selected by
-// the component, the kind of prediction that was possible and the magnitude of the residuals of the
-// already decoded neighbours. Normals in surface-normal mode are coded in octahedral coordinates
+// component is coded as a magnitude class in one adaptive multi-symbol decision, whose model is
+// selected by the component, the kind of prediction that was possible and the magnitude of the
+// residuals of the already decoded neighbours, then its sign and low bits (adaptive on small
+// meshes, raw on large ones: RawLowBits; see entropy.h). Normals in surface-normal mode are coded in octahedral coordinates
 // against the normal of the decoded surface. Int attributes are coded exactly.
 #ifndef O3DGC_SRC_ATTRIBUTE_CODER_H_
 #define O3DGC_SRC_ATTRIBUTE_CODER_H_
