@@ -80,6 +80,23 @@ TEST(Malformed, RandomByteFlipsNeverCrash) {
   SUCCEED() << accepted << " corrupted streams decoded to valid meshes";
 }
 
+// `iterations` times: a few bits of the payload flipped (where the parser is exercised), decoded
+// without the checksum (a result, if any, must be sane), then the flipped stream cut short (must
+// fail).
+void ExpectFlipsAndCutsHandled(const std::vector<uint8_t>& s, std::mt19937& rng, int iterations) {
+  for (int iter = 0; iter < iterations; ++iter) {
+    auto c = s;
+    const int flips = 1 + int(rng() % 3);
+    for (int f = 0; f < flips; ++f) c[12 + rng() % (c.size() - 12)] ^= uint8_t(1u << (rng() % 8));
+    DecodeOptions o;
+    o.verify_checksum = false;
+    DecodedMesh m;
+    if (Decode(c.data(), c.size(), o, &m) == Status::kOk) ExpectSane(m);
+    const size_t n = 1 + rng() % c.size();
+    EXPECT_NE(Decode(c.data(), n - (n == c.size() ? 1 : 0), o, &m), Status::kOk);
+  }
+}
+
 TEST(Malformed, RandomByteFlipsOnLargerMeshes) {
   std::mt19937 rng(4242);
   std::vector<std::vector<uint8_t>> streams;
@@ -94,46 +111,26 @@ TEST(Malformed, RandomByteFlipsOnLargerMeshes) {
     ASSERT_EQ(Encode(g.View(), p, &s), Status::kOk);
     streams.push_back(s);
   }
-  for (const auto& s : streams) {
-    for (int iter = 0; iter < 800; ++iter) {
-      auto c = s;
-      // Flip bits mostly in the payload, where the parser is exercised.
-      const int flips = 1 + int(rng() % 3);
-      for (int f = 0; f < flips; ++f) c[12 + rng() % (c.size() - 12)] ^= uint8_t(1u << (rng() % 8));
-      DecodeOptions o;
-      o.verify_checksum = false;
-      DecodedMesh m;
-      if (Decode(c.data(), c.size(), o, &m) == Status::kOk) ExpectSane(m);
-      // Truncated and flipped at once.
-      const size_t n = 1 + rng() % c.size();
-      EXPECT_NE(Decode(c.data(), n - (n == c.size() ? 1 : 0), o, &m), Status::kOk);
-    }
-  }
+  for (const auto& s : streams) ExpectFlipsAndCutsHandled(s, rng, 800);
 }
 
 TEST(Malformed, ByteFlipsAndTruncationsPastTheRawBitsThreshold) {
   // Meshes of 4096 vertices or more take residual signs and low bits from the raw bit stream,
   // read backwards from the payload's end: flipped and cut streams of that kind too.
   std::mt19937 rng(77);
-  std::vector<std::vector<uint8_t>> streams;
   o3dgc_test::TestMesh torus = o3dgc_test::Torus(72, 60);  // colours and joint ids too
   o3dgc_test::TestMesh grid = o3dgc_test::Grid(72, 60);    // uvs
   ASSERT_GE(torus.nv(), 4096u);
   for (const o3dgc_test::TestMesh* t : {&torus, &grid}) {
     std::vector<uint8_t> s;
     ASSERT_EQ(Encode(t->View(), EncodeParams(), &s), Status::kOk);
-    streams.push_back(s);
-  }
-  for (const auto& s : streams) {
-    for (int iter = 0; iter < 150; ++iter) {
-      auto c = s;
-      const int flips = 1 + int(rng() % 3);
-      for (int f = 0; f < flips; ++f) c[12 + rng() % (c.size() - 12)] ^= uint8_t(1u << (rng() % 8));
+    ExpectFlipsAndCutsHandled(s, rng, 150);
+    // The unflipped stream cut anywhere, the raw bits' end included.
+    for (int i = 0; i < 60; ++i) {
+      const size_t n = 1 + rng() % (s.size() - 1);
+      DecodedMesh m;
       DecodeOptions o;
       o.verify_checksum = false;
-      DecodedMesh m;
-      if (Decode(c.data(), c.size(), o, &m) == Status::kOk) ExpectSane(m);
-      const size_t n = 1 + rng() % (s.size() - 1);
       EXPECT_NE(Decode(s.data(), n, o, &m), Status::kOk) << n;
     }
   }
