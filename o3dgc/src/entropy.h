@@ -172,6 +172,16 @@ inline void EncodeRawWide(ArithmeticEncoder& e, uint64_t v, int count) {
   }
 }
 
+// Inverse of EncodeRawWide: v followed by `count` bits of the raw stream.
+O3DGC_INLINE uint64_t DecodeRawWide(ArithmeticDecoder& d, uint64_t v, int count) {
+  while (count > 0) {
+    const int n = count > 24 ? 24 : count;
+    count -= n;
+    v = (v << n) | d.DecodeRaw(n);
+  }
+  return v;
+}
+
 template <bool kRawLow>
 O3DGC_INLINE void EncodeResidual(ArithmeticEncoder& e, ResidualModel& m, ResidualEscape& x,
                                  int64_t r) {
@@ -230,21 +240,13 @@ O3DGC_INLINE int64_t DecodeResidual(ArithmeticDecoder& d, ResidualModel& m, Resi
       v = (uint64_t(1) << k) | (bits & ((1u << k) - 1));
     } else {
       neg = int(d.DecodeRaw(1));
-      for (int rest = k; rest > 0;) {
-        const int n = rest > 24 ? 24 : rest;
-        rest -= n;
-        v = (v << n) | d.DecodeRaw(n);
-      }
+      v = DecodeRawWide(d, v, k);
     }
   } else {
     neg = d.Decode(m.sign);
     if (k > 0) {
       v = 2 | uint64_t(d.Decode(m.mantissa[k < kDirectClasses ? k : kDirectClasses]));
-      for (int rest = k - 1; rest > 0;) {
-        const int n = rest > 24 ? 24 : rest;
-        rest -= n;
-        v = (v << n) | d.DecodeRaw(n);
-      }
+      v = DecodeRawWide(d, v, k - 1);
     }
   }
   const int64_t sign = -int64_t(neg);  // all ones for a negative value

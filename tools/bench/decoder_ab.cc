@@ -41,6 +41,15 @@ bool Read(const char* path, std::vector<uint8_t>* out) {
   return true;
 }
 
+// CPU ms of one decode with build A's or build B's Decode (its DecodedMesh, DecodeOptions and
+// Status types passed along), -1 if it fails.
+template <typename Mesh, typename Options, typename StatusT, typename DecodeFn>
+double TimeDecode(DecodeFn decode, const std::vector<uint8_t>& s, StatusT ok) {
+  const double t0 = CpuMs();
+  Mesh m;
+  return decode(s.data(), s.size(), Options(), &m, nullptr) == ok ? CpuMs() - t0 : -1.0;
+}
+
 double Median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v[v.size() / 2];
@@ -66,16 +75,10 @@ int main(int argc, char** argv) {
       return 1;
     }
     auto run_a = [&] {
-      const double t0 = CpuMs();
-      o3dgc::DecodedMesh m;
-      const bool ok = o3dgc::Decode(a.data(), a.size(), o3dgc::DecodeOptions(), &m) == o3dgc::Status::kOk;
-      return ok ? CpuMs() - t0 : -1.0;
+      return TimeDecode<o3dgc::DecodedMesh, o3dgc::DecodeOptions>(o3dgc::Decode, a, o3dgc::Status::kOk);
     };
     auto run_b = [&] {
-      const double t0 = CpuMs();
-      o3dgc_alt::DecodedMesh m;
-      const bool ok = o3dgc_alt::Decode(b.data(), b.size(), o3dgc_alt::DecodeOptions(), &m) == o3dgc_alt::Status::kOk;
-      return ok ? CpuMs() - t0 : -1.0;
+      return TimeDecode<o3dgc_alt::DecodedMesh, o3dgc_alt::DecodeOptions>(o3dgc_alt::Decode, b, o3dgc_alt::Status::kOk);
     };
     std::vector<double> ta, tb, ratio;
     for (int i = 0; i < n + 2; ++i) {
