@@ -113,10 +113,11 @@ void WedgeTable::BuildFromOppositeVertices(const std::vector<uint32_t>& triangle
 
 DegreeTraversal::DegreeTraversal(const WedgeTable& wedges)
     : wedges_(wedges), done_(wedges.num_vertices(), 0), degree_(wedges.num_vertices(), 0),
-      log_(new Visited[wedges.num_vertices()]), par_(16) {
-  stacks_[0].reset(new uint32_t[1]);
-  for (int l = 1; l < kLevels; ++l) stacks_[l].reset(new uint32_t[wedges.num_wedges() + 1]);
-  for (int l = 0; l < kLevels; ++l) top_[l] = stacks_[l].get();
+      log_(new Visited[wedges.num_vertices()]), par_(16), moved_(16) {
+  for (int l = 1; l < kLevels; ++l) {
+    stacks_[l].reset(new uint32_t[wedges.num_wedges() + 1]);
+    top_[l] = stacks_[l].get();
+  }
 }
 
 uint32_t DegreeTraversal::NextWithoutParallelogram() {

@@ -98,9 +98,9 @@ class DegreeTraversal {
   const WedgeTable& wedges_;
   std::vector<uint8_t> done_;
   std::vector<uint8_t> degree_;  // saturating at kLevels - 1: only the level is needed
-  // Candidates at levels 1..3 (stack 0 is one entry of scratch space for the branch-free pushes),
-  // top_[l] one past the newest entry. A visit pushes at most one entry per wedge, so
-  // num_wedges() entries per level are never exceeded: no capacity checks.
+  // Candidates at levels 1..3 (stack 0 is not used), top_[l] one past the newest entry. A visit
+  // pushes at most one entry per wedge, so num_wedges() entries per level are never exceeded: no
+  // capacity checks.
   std::unique_ptr<uint32_t[]> stacks_[kLevels];
   uint32_t* top_[kLevels] = {nullptr, nullptr, nullptr, nullptr};
   // Level 0 holds the neighbours of visited vertices that have no parallelogram yet, newest
@@ -113,6 +113,7 @@ class DegreeTraversal {
   std::unique_ptr<Visited[]> log_;  // one entry per visit at most
   size_t log_size_ = 0;
   std::vector<const Wedge*> par_;
+  std::vector<uint64_t> moved_;  // Visit's scratch: vertex << 2 | new level, per vertex moved up
   uint32_t visited_ = 0, next_start_ = 0, previous_ = kNoVertex;
 };
 
@@ -184,12 +185,13 @@ inline int DegreeTraversal::Visit(uint32_t c) {
   const Wedge* const first = wedges_.begin(c);
   const Wedge* const last = wedges_.end(c);
   const size_t count = size_t(last - first);
-  if (O3DGC_UNLIKELY(count > par_.size())) par_.resize(2 * count);
-  // The stack tops are updated in place: copying them to a local array and back was compiled to
-  // 16-byte moves over 8-byte stores, which stall on store forwarding.
-  uint32_t** const slot = top_;
+  if (O3DGC_UNLIKELY(count > par_.size())) {
+    par_.resize(2 * count);
+    moved_.resize(2 * count);
+  }
   const Wedge** par = par_.data();
-  int n_par = 0;
+  uint64_t* moved = moved_.data();
+  int n_par = 0, n_moved = 0;
   const uint8_t* const done = done_.data();
   uint8_t* const degree = degree_.data();
   // Before c is marked: x == c stands for "no neighbour".
@@ -199,18 +201,19 @@ inline int DegreeTraversal::Visit(uint32_t c) {
     par[n_par] = it;
     n_par += int(du & dw & done[it->x]);
     // Exactly one of u, w coded: the other gains a parallelogram and moves up a level. Written
-    // without branches: a slot is always written (level 0 is scratch), and advances only when
-    // the entry is real.
+    // without branches: an entry is always written, and kept only when it is real. The entries
+    // (vertex and new level) go to a local list first, not to the level stacks: a stack top in
+    // memory, loaded and stored at every wedge, chained the iterations through store forwarding.
     const uint32_t one = du ^ dw;
     const uint32_t a = du ? w : u;
     uint32_t d = degree[a] + one;
     d = d < kLevels ? d : kLevels - 1;
     degree[a] = uint8_t(d);
-    const int level = int(d & (0u - one));
-    uint32_t* const s = slot[level];
-    *s = a;
-    slot[level] = s + one;
+    moved[n_moved] = uint64_t(a) << 2 | d;
+    n_moved += int(one);
   }
+  // The same pushes, in wedge order per level, as pushing in the loop would make.
+  for (int i = 0; i < n_moved; ++i) *top_[moved[i] & 3]++ = uint32_t(moved[i] >> 2);
   log_[log_size_++] = Visited{c, 0};
   done_[c] = 1;
   ++visited_;
