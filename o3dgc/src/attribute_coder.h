@@ -4,8 +4,9 @@
 // Quantized values are predicted (none / differential / multi-parallelogram), and each residual
 // component is coded as a magnitude class in one adaptive multi-symbol decision, whose model is
 // selected by the component, the kind of prediction that was possible and the magnitude of the
-// residuals of the already decoded neighbours, then its sign and low bits (adaptive on small
-// meshes, raw on large ones: RawLowBits; see entropy.h). Normals in surface-normal mode are coded
+// residuals of the already decoded neighbours (on large meshes, the classes that decision covers
+// are shifted per context: ClassShifts), then its sign and low bits (adaptive on small meshes, raw
+// on large ones: RawLowBits; see entropy.h). Normals in surface-normal mode are coded
 // in octahedral coordinates against the normal of the decoded surface. Int attributes are coded
 // exactly.
 #ifndef O3DGC_SRC_ATTRIBUTE_CODER_H_
@@ -42,6 +43,38 @@ inline int IntraContext(int64_t r) {
   const int b = BitLength(uint64_t(r < 0 ? -r : r));
   return b < kIntraContexts ? b : kIntraContexts - 1;
 }
+
+// Class shifts of the residual coding (see DecodeResidual) by prediction kind and magnitude
+// context, for the multi-parallelogram coder of large meshes (RawLowBits). The encoder counts the
+// residual classes per context (ClassHistograms), picks per context the shift that leaves the
+// fewest residuals needing a second decision (ChooseClassShifts), and sends the table before the
+// residuals, 2 bits per entry (11 bytes); a table of zeros is the coding without shifts.
+constexpr int kPredictionKinds = 3;
+struct ClassShifts {
+  uint8_t shift[kPredictionKinds][kMagContexts] = {};
+  bool any() const {
+    for (const auto& row : shift) {
+      for (const uint8_t s : row) {
+        if (s != 0) return true;
+      }
+    }
+    return false;
+  }
+};
+// Classes 0 (zero) and 1 + k by context, the last entry counting every class from there on.
+constexpr int kShiftHistogram = kDirectClasses + kMaxClassShift + 2;
+struct ClassHistograms {
+  uint64_t counts[kPredictionKinds][kMagContexts][kShiftHistogram] = {};
+  void Add(int kind, int mctx, int64_t r) {
+    const int cls = BitLength(uint64_t(r < 0 ? -r : r));
+    ++counts[kind][mctx][cls < kShiftHistogram - 1 ? cls : kShiftHistogram - 1];
+  }
+};
+// Shifts are used only when they spare at least 1 / kMinShiftGain of the residuals a decision.
+constexpr uint64_t kMinShiftGain = 32;
+ClassShifts ChooseClassShifts(const ClassHistograms& histograms);
+void EncodeClassShifts(ArithmeticEncoder* enc, const ClassShifts& shifts);
+void DecodeClassShifts(ArithmeticDecoder* dec, ClassShifts* shifts);
 
 // Residual models indexed by (component, prediction kind, magnitude context, intra context);
 // only the components and kinds a coder uses are allocated. Quantized attributes use

@@ -4,13 +4,22 @@
 #include "attribute_coder.h"
 
 namespace o3dgc {
+
+void DecodeClassShifts(ArithmeticDecoder* dec, ClassShifts* shifts) {
+  for (auto& row : shifts->shift) {
+    for (uint8_t& s : row) s = uint8_t(dec->DecodeBits(2));
+  }
+}
+
 namespace {
 
 // The multi-parallelogram loop for kDim components, in one function so that the decoder's state
-// (a local copy) stays in registers.
-template <int kDim, bool kRawLow>
+// (a local copy, whose address no call may take) stays in registers. `shifts`: read before it,
+// used when kShifted (a table of zeros is the same as none, and the loop without it is smaller).
+template <int kDim, bool kRawLow, bool kShifted>
 Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges, int64_t maxq,
-                           int coarse, ResidualModels& models, int32_t* q, uint32_t* mags) {
+                           int coarse, ResidualModels& models, const ClassShifts& shifts, int32_t* q,
+                           uint32_t* mags) {
   ArithmeticDecoder dec = *dec_in;
   Status status = Status::kOk;
   DegreeTraversal order(wedges);
@@ -28,6 +37,7 @@ Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges, 
     // for tiny meshes), the previous component's residual (not for small meshes).
     ResidualModel* const row = &models.at(0, pc.kind, mctx, 0);
     const size_t stride = coarse == 2 ? 0 : models.component_stride();
+    const int shift = kShifted ? shifts.shift[pc.kind][mctx] : 0;
     int64_t r[kDim];
     bool ok = true;
     int intra = 0;
@@ -36,7 +46,7 @@ Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges, 
 #endif
     for (int k = 0; k < kDim; ++k) {
       const int64_t p = pred[k] < 0 ? 0 : (pred[k] > maxq ? maxq : pred[k]);
-      r[k] = DecodeResidual<kRawLow>(dec, row[stride * k + intra], models.escape);
+      r[k] = DecodeResidual<kRawLow>(dec, row[stride * k + intra], models.escape, shift);
       intra = coarse ? 0 : IntraContext(r[k]);
       const int64_t v = p + r[k];
       ok &= uint64_t(v) <= uint64_t(maxq);
@@ -57,8 +67,14 @@ Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges, 
 template <int kDim>
 Status DecodeParallelogramFor(bool raw, ArithmeticDecoder* dec, const WedgeTable& wedges, int64_t maxq,
                               int coarse, ResidualModels& models, int32_t* q, uint32_t* mags) {
-  return raw ? DecodeParallelogram<kDim, true>(dec, wedges, maxq, coarse, models, q, mags)
-             : DecodeParallelogram<kDim, false>(dec, wedges, maxq, coarse, models, q, mags);
+  ClassShifts shifts;
+  if (!raw) {
+    return DecodeParallelogram<kDim, false, false>(dec, wedges, maxq, coarse, models, shifts, q, mags);
+  }
+  DecodeClassShifts(dec, &shifts);
+  return shifts.any()
+             ? DecodeParallelogram<kDim, true, true>(dec, wedges, maxq, coarse, models, shifts, q, mags)
+             : DecodeParallelogram<kDim, true, false>(dec, wedges, maxq, coarse, models, shifts, q, mags);
 }
 
 }  // namespace

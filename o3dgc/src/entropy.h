@@ -133,10 +133,15 @@ inline int64_t DecodeSigned(ArithmeticDecoder& d, SignedModel& m) {
   return neg ? -int64_t(v) : int64_t(v);
 }
 
-// Residuals of the attribute coders: the magnitude class in one multi-symbol decision (0: zero;
-// 1 + k: |r| in [2^k, 2^(k+1)) for k < kDirectClasses; the last symbol: k >= kDirectClasses, then
-// a second decision for k - kDirectClasses (the last symbol again: more, in a unary code)), then
-// the sign and the k bits below the leading one. Two codings of those (the caller picks one per
+// Residuals of the attribute coders: the magnitude class (0: zero; 1 + k: |r| in [2^k, 2^(k+1)))
+// in one multi-symbol decision, then the sign and the k bits below the leading one. The decision
+// covers the classes shift + 1 .. shift + kDirectClasses directly (symbols 1..kDirectClasses); the
+// first symbol stands for the classes 0..shift (when shift > 0, a second decision says which), the
+// last one for the classes above (a second decision for the next kEscapeSymbol classes, then a
+// unary code). The shift (0..kMaxClassShift) comes from the caller, the same in the encoder and
+// the decoder: with 0 the first symbol is zero itself. Meshes with large residuals (rocker_arm at
+// 14 bits: 27 % of them k >= kDirectClasses) take a shift where they are common, so that most
+// residuals need one decision. Two codings of the sign and the low bits (the caller picks one per
 // attribute, the same in the encoder and the decoder):
 //  - adaptive (kRawLow false): the sign and the bit below the leading one through adaptive models,
 //    the remaining bits raw;
@@ -149,15 +154,19 @@ constexpr int kResidualSymbols = 8;
 constexpr int kDirectClasses = kResidualSymbols - 2;
 constexpr int kEscapeSymbol = kResidualSymbols - 1;
 constexpr int kHighClasses = kDirectClasses + kEscapeSymbol;  // below: the two decisions
+constexpr int kMaxClassShift = 3;
 
 // One context's models: those every residual uses first (two cache lines), then the second class
-// decision. The unary part of the rare classes past both decisions (|r| >= 2^kHighClasses) has its
-// models in ResidualEscape, shared by all contexts, so that the context models stay small.
+// decisions. The unary part of the rare classes past both decisions (|r| >= 2^(kHighClasses +
+// shift)) has its models in ResidualEscape, shared by all contexts, so that the context models
+// stay small.
 struct ResidualModel {
   SymbolModelN<kResidualSymbols> magnitude;
   BitModel sign;                          // adaptive coding only
   BitModel mantissa[kDirectClasses + 1];  // the bit below the leading one, by k (larger: the last)
-  SymbolModelN<kResidualSymbols> high;  // k - kDirectClasses after an escape
+  SymbolModelN<kResidualSymbols> high;  // the class above the direct ones after an escape
+  // The class 0..shift after the first symbol (shift > 0).
+  SymbolModelN<kResidualSymbols> low{kMaxClassShift + 1};
 };
 struct ResidualEscape {
   BitModel more[kMaxEGPrefix - kHighClasses + 1];
@@ -182,25 +191,29 @@ O3DGC_INLINE uint64_t DecodeRawWide(ArithmeticDecoder& d, uint64_t v, int count)
   return v;
 }
 
+// `shift` in 0..kMaxClassShift.
 template <bool kRawLow>
 O3DGC_INLINE void EncodeResidual(ArithmeticEncoder& e, ResidualModel& m, ResidualEscape& x,
-                                 int64_t r) {
-  if (r == 0) {
-    e.Encode(0, m.magnitude);
-    return;
-  }
+                                 int64_t r, int shift = 0) {
   const uint64_t v = uint64_t(r < 0 ? -r : r);
-  const int k = FloorLog2(v);
-  if (k < kDirectClasses) {
-    e.Encode(1 + k, m.magnitude);
+  const int k = r == 0 ? -1 : FloorLog2(v);
+  const int cls = k + 1;
+  if (cls <= shift) {
+    e.Encode(0, m.magnitude);
+    if (shift > 0) e.Encode(cls, m.low);
+    if (r == 0) return;
+  } else if (cls <= shift + kDirectClasses) {
+    e.Encode(cls - shift, m.magnitude);
   } else {
     e.Encode(kEscapeSymbol, m.magnitude);
-    if (k < kHighClasses) {
-      e.Encode(k - kDirectClasses, m.high);
+    const int h = cls - shift - kDirectClasses - 1;
+    if (h < kEscapeSymbol) {
+      e.Encode(h, m.high);
     } else {
       e.Encode(kEscapeSymbol, m.high);
-      for (int i = kHighClasses; i < k; ++i) e.Encode(1, x.more[i - kHighClasses]);
-      if (k < kMaxEGPrefix) e.Encode(0, x.more[k - kHighClasses]);
+      const int first = kHighClasses + shift;  // the k of the first unary step
+      for (int i = first; i < k; ++i) e.Encode(1, x.more[i - first]);
+      if (k < kMaxEGPrefix) e.Encode(0, x.more[k - first]);
     }
   }
   if (kRawLow) {
@@ -220,15 +233,21 @@ O3DGC_INLINE void EncodeResidual(ArithmeticEncoder& e, ResidualModel& m, Residua
 }
 
 template <bool kRawLow>
-O3DGC_INLINE int64_t DecodeResidual(ArithmeticDecoder& d, ResidualModel& m, ResidualEscape& x) {
+O3DGC_INLINE int64_t DecodeResidual(ArithmeticDecoder& d, ResidualModel& m, ResidualEscape& x,
+                                    int shift = 0) {
   const int symbol = d.Decode(m.magnitude);
-  if (symbol == 0) return 0;
-  int k = symbol - 1;
-  if (O3DGC_UNLIKELY(symbol == kEscapeSymbol)) {
+  int k = symbol - 1 + shift;
+  if (symbol == 0) {
+    if (shift == 0) return 0;
+    // A corrupt stream may name a class above the shift: it decodes as some value all the same.
+    k = d.Decode(m.low) - 1;
+    if (k < 0) return 0;
+  } else if (O3DGC_UNLIKELY(symbol == kEscapeSymbol)) {
     const int h = d.Decode(m.high);
-    k = kDirectClasses + h;
+    k = kDirectClasses + shift + h;
     if (h == kEscapeSymbol) {
-      while (k < kMaxEGPrefix && d.Decode(x.more[k - kHighClasses])) ++k;
+      const int first = k;
+      while (k < kMaxEGPrefix && d.Decode(x.more[k - first])) ++k;
     }
   }
   int neg;

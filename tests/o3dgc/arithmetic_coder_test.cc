@@ -99,7 +99,7 @@ TEST(ArithmeticCoder, SymbolsRawBitsAndResidualsRoundTrip) {
     SymbolModelN<8> small;
     SymbolModelN<32> large;
     BitModel bit;
-    ResidualModel rm, rm_raw;
+    ResidualModel rm, rm_raw, rm_shift, rm_raw_shift;
     ResidualEscape rx;
     for (int i = 0; i < 20000; ++i) {
       symbols.push_back(int(rng() % 100) < 90 ? int(rng() % 3) : int(rng() % 16));
@@ -115,11 +115,16 @@ TEST(ArithmeticCoder, SymbolsRawBitsAndResidualsRoundTrip) {
       raw_count.push_back(int(rng() % 33));
       raw.push_back(raw_count.back() ? uint32_t(rng()) >> (32 - raw_count.back()) : 0);
       enc.EncodeRaw(raw.back(), raw_count.back());
-      // Mostly small, sometimes huge (escape classes), sometimes zero.
-      const int64_t r = i % 101 == 0 ? (int64_t(1) << 38) - 3 : int64_t(rng() % 2001) - 1000;
+      // Mostly small, sometimes huge (escape classes), sometimes zero; with every class shift.
+      const int64_t r = i % 101 == 0 ? (int64_t(1) << 38) - 3
+                        : i % 5 == 1 ? int64_t(rng() % 15) - 7
+                                     : int64_t(rng() % 2001) - 1000;
       residuals.push_back(i % 7 == 0 ? 0 : (i % 3 ? r : -r));
+      const int shift = i % (kMaxClassShift + 1);
       EncodeResidual<false>(enc, rm, rx, residuals.back());
       EncodeResidual<true>(enc, rm_raw, rx, residuals.back());
+      EncodeResidual<false>(enc, rm_shift, rx, residuals.back(), shift);
+      EncodeResidual<true>(enc, rm_raw_shift, rx, residuals.back(), shift);
     }
     enc.Finish();
   }
@@ -128,7 +133,7 @@ TEST(ArithmeticCoder, SymbolsRawBitsAndResidualsRoundTrip) {
   SymbolModelN<8> small;
   SymbolModelN<32> large;
   BitModel bit;
-  ResidualModel rm, rm_raw;
+  ResidualModel rm, rm_raw, rm_shift, rm_raw_shift;
   ResidualEscape rx;
   for (int i = 0; i < 20000; ++i) {
     ASSERT_EQ(dec.Decode(skewed), symbols[4 * i]);
@@ -139,6 +144,9 @@ TEST(ArithmeticCoder, SymbolsRawBitsAndResidualsRoundTrip) {
     ASSERT_EQ(dec.DecodeRaw(raw_count[i]), raw[i]);
     ASSERT_EQ(DecodeResidual<false>(dec, rm, rx), residuals[i]);
     ASSERT_EQ(DecodeResidual<true>(dec, rm_raw, rx), residuals[i]);
+    const int shift = i % (kMaxClassShift + 1);
+    ASSERT_EQ(DecodeResidual<false>(dec, rm_shift, rx, shift), residuals[i]) << "shift " << shift;
+    ASSERT_EQ(DecodeResidual<true>(dec, rm_raw_shift, rx, shift), residuals[i]) << "shift " << shift;
   }
   EXPECT_FALSE(dec.failed());
 }

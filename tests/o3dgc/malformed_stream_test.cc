@@ -121,7 +121,13 @@ TEST(Malformed, ByteFlipsAndTruncationsPastTheRawBitsThreshold) {
   o3dgc_test::TestMesh torus = o3dgc_test::Torus(72, 60);  // colours and joint ids too
   o3dgc_test::TestMesh grid = o3dgc_test::Grid(72, 60);    // uvs
   ASSERT_GE(torus.nv(), 4096u);
-  for (const o3dgc_test::TestMesh* t : {&torus, &grid}) {
+  // Positions jittered by about +-2^7 quantization steps: residuals large enough for the encoder
+  // to send class shifts (see attribute_coder_test.cc).
+  o3dgc_test::TestMesh noisy = grid;
+  for (size_t i = 0; i < noisy.positions.size(); ++i) {
+    noisy.positions[i] += 0.008f * float(std::sin(double(i) * 12.9898) * 0.5 + std::cos(double(i) * 7.233) * 0.5);
+  }
+  for (const o3dgc_test::TestMesh* t : {&torus, &grid, &noisy}) {
     std::vector<uint8_t> s;
     ASSERT_EQ(Encode(t->View(), EncodeParams(), &s), Status::kOk);
     ExpectFlipsAndCutsHandled(s, rng, 150);

@@ -45,7 +45,7 @@
 namespace o3dgc {
 
 // Format version written by Encode and the only one Decode accepts.
-constexpr uint32_t kStreamVersion = 6;
+constexpr uint32_t kStreamVersion = 7;
 
 enum class Status : uint8_t {
   kOk = 0,
