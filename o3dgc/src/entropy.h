@@ -232,24 +232,20 @@ O3DGC_INLINE void EncodeResidual(ArithmeticEncoder& e, ResidualModel& m, Residua
   EncodeRawWide(e, v, k - 1);
 }
 
-template <bool kRawLow>
-O3DGC_INLINE int64_t DecodeResidual(ArithmeticDecoder& d, ResidualModel& m, ResidualEscape& x,
-                                    int shift = 0) {
-  const int symbol = d.Decode(m.magnitude);
-  int k = symbol - 1 + shift;
-  if (symbol == 0) {
-    if (shift == 0) return 0;
-    // A corrupt stream may name a class above the shift: it decodes as some value all the same.
-    k = d.Decode(m.low) - 1;
-    if (k < 0) return 0;
-  } else if (O3DGC_UNLIKELY(symbol == kEscapeSymbol)) {
-    const int h = d.Decode(m.high);
-    k = kDirectClasses + shift + h;
-    if (h == kEscapeSymbol) {
-      const int first = k;
-      while (k < kMaxEGPrefix && d.Decode(x.more[k - first])) ++k;
-    }
+// The class k after an escape: the high decision `h` counts from k = `base`; its last symbol
+// continues in a unary code.
+O3DGC_INLINE int DecodeHighClass(ArithmeticDecoder& d, ResidualEscape& x, int h, int base) {
+  int k = base + h;
+  if (h == kEscapeSymbol) {
+    const int first = k;
+    while (k < kMaxEGPrefix && d.Decode(x.more[k - first])) ++k;
   }
+  return k;
+}
+
+// The sign and the k bits below the leading one of a residual of class 1 + k.
+template <bool kRawLow>
+O3DGC_INLINE int64_t DecodeSignAndLowBits(ArithmeticDecoder& d, ResidualModel& m, int k) {
   int neg;
   uint64_t v = 1;
   if (kRawLow) {
@@ -270,6 +266,41 @@ O3DGC_INLINE int64_t DecodeResidual(ArithmeticDecoder& d, ResidualModel& m, Resi
   }
   const int64_t sign = -int64_t(neg);  // all ones for a negative value
   return (int64_t(v) ^ sign) - sign;
+}
+
+// Inverse of EncodeResidual with shift 0.
+template <bool kRawLow>
+O3DGC_INLINE int64_t DecodeResidual(ArithmeticDecoder& d, ResidualModel& m, ResidualEscape& x) {
+  const int symbol = d.Decode(m.magnitude);
+  if (symbol == 0) return 0;
+  int k = symbol - 1;
+  if (O3DGC_UNLIKELY(symbol == kEscapeSymbol)) {
+    k = DecodeHighClass(d, x, d.Decode(m.high), kDirectClasses);
+  }
+  return DecodeSignAndLowBits<kRawLow>(d, m, k);
+}
+
+// Inverse of EncodeResidual with any shift (0..kMaxClassShift). A separate function: the loops
+// without shifts keep DecodeResidual's shorter code.
+template <bool kRawLow>
+O3DGC_INLINE int64_t DecodeShiftedResidual(ArithmeticDecoder& d, ResidualModel& m,
+                                           ResidualEscape& x, int shift) {
+  const int symbol = d.Decode(m.magnitude);
+  int k = symbol - 1 + shift;
+  if (O3DGC_UNLIKELY(symbol == 0 || symbol == kEscapeSymbol)) {
+    if (symbol == 0 && shift == 0) return 0;
+    // One decoding step for both second decisions: each inlined step adds to the loops' code
+    // (and to the WebAssembly decoder's download).
+    const int h = d.Decode(symbol == 0 ? m.low : m.high);
+    if (symbol == 0) {
+      // A corrupt stream may name a class above the shift: it decodes as some value all the same.
+      k = h - 1;
+      if (k < 0) return 0;
+    } else {
+      k = DecodeHighClass(d, x, h, kDirectClasses + shift);
+    }
+  }
+  return DecodeSignAndLowBits<kRawLow>(d, m, k);
 }
 
 // Values known to lie in [0, n): fixed-length equiprobable code.

@@ -145,8 +145,8 @@ TEST(ArithmeticCoder, SymbolsRawBitsAndResidualsRoundTrip) {
     ASSERT_EQ(DecodeResidual<false>(dec, rm, rx), residuals[i]);
     ASSERT_EQ(DecodeResidual<true>(dec, rm_raw, rx), residuals[i]);
     const int shift = i % (kMaxClassShift + 1);
-    ASSERT_EQ(DecodeResidual<false>(dec, rm_shift, rx, shift), residuals[i]) << "shift " << shift;
-    ASSERT_EQ(DecodeResidual<true>(dec, rm_raw_shift, rx, shift), residuals[i]) << "shift " << shift;
+    ASSERT_EQ(DecodeShiftedResidual<false>(dec, rm_shift, rx, shift), residuals[i]) << "shift " << shift;
+    ASSERT_EQ(DecodeShiftedResidual<true>(dec, rm_raw_shift, rx, shift), residuals[i]) << "shift " << shift;
   }
   EXPECT_FALSE(dec.failed());
 }
