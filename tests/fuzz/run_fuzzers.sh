@@ -33,6 +33,14 @@ pack() { "$build/tools/hullpack/hullpack" pack "$gen/tetra.obj" --force --quiet 
 "$enc" -c -i "$gen/torus.obj" -st ascii -qc 8 >/dev/null && mv "$gen/torus.s3d" "$gen/o3dgc_decoder_fuzzer/ascii.s3d"
 "$enc" -c -i "$gen/tetra.obj" -st binary -qc 10 -keep >/dev/null && mv "$gen/tetra.s3d" "$gen/o3dgc_decoder_fuzzer/tetra_keep.s3d"
 "$enc" -c -i "$gen/tetra.obj" -st ascii -qc 10 >/dev/null && mv "$gen/tetra.s3d" "$gen/o3dgc_decoder_fuzzer/tetra_ascii.s3d"
+# A 4489-vertex grid jittered in x, y and z: past the size where residual signs and low bits are read
+# raw, with residuals large enough for the encoder to send class shifts (attribute_coder.h).
+awk 'function r() { s = (s * 1103515245 + 12345) % 2147483648; return 0.008 * (s / 2147483648 - 0.5) }
+  BEGIN { n = 66; s = 7
+    for (j = 0; j <= n; ++j) for (i = 0; i <= n; ++i) printf "v %.6f %.6f %.6f\n", i / n + r(), j / n + r(), r()
+    for (j = 0; j < n; ++j) for (i = 0; i < n; ++i) { a = j * (n + 1) + i + 1
+      printf "f %d %d %d\nf %d %d %d\n", a, a + 1, a + n + 2, a, a + n + 2, a + n + 1 } }' >"$gen/rough_grid.obj"
+"$enc" -c -i "$gen/rough_grid.obj" -st binary -qc 14 >/dev/null && mv "$gen/rough_grid.s3d" "$gen/o3dgc_decoder_fuzzer/rough_grid.s3d"
 # Packed GLBs stay small (a few KB): the fuzzer's speed is set by the JSON text it scans.
 rm -f "$gen/packed_glb_fuzzer/"*.glb
 pack -o "$gen/packed_glb_fuzzer/hulls.glb" --max-hulls 2
