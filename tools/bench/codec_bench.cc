@@ -97,32 +97,35 @@ bool RunAll(const Mesh& mesh, const Settings& s, Row& row) {
   std::vector<double> enc[3], dec[3];
   hullpack::Result<hullpack::EncodedMesh> encoded = hullpack::Status(hullpack::StatusCode::kInternal, "");
   hullpack::Result<Mesh> decoded = hullpack::Status(hullpack::StatusCode::kInternal, "");
+  // One timed encode / decode of codec i (0: ours, 1..: Draco at its level); false on failure.
+  auto encode = [&](int i) {
+    if (i == 0) {
+      enc[0].push_back(TimeMs(s.cpu_clock, [&] { encoded = hullpack::EncodeMesh(mesh, {}, cs); }));
+      return encoded.ok();
+    }
+    DracoRun& d = draco[i - 1];
+    enc[i].push_back(TimeMs(s.cpu_clock, [&] { d.bytes = hullpack::DracoEncode(*d.mesh, s.qp, s.qn, s.qt, d.level); }));
+    return !d.bytes.empty();
+  };
+  auto decode = [&](int i) {
+    if (i == 0) {
+      dec[0].push_back(TimeMs(s.cpu_clock, [&] {
+        decoded = hullpack::DecodeMesh(encoded->stream.data(), encoded->stream.size(), nullptr, row.name);
+      }));
+      return decoded.ok();
+    }
+    DracoRun& d = draco[i - 1];
+    dec[i].push_back(TimeMs(s.cpu_clock, [&] { d.decoded = hullpack::DracoDecodePositions(d.bytes); }));
+    return !d.decoded.positions.empty();
+  };
   // Round r runs the codecs from the (r mod n)-th on: each one follows each other one as often.
   const int n = 1 + num_draco;
   for (int round = 0; round < s.repeats; ++round) {
     for (int j = 0; j < n; ++j) {
-      const int i = (round + j) % n;
-      if (i == 0) {
-        enc[0].push_back(TimeMs(s.cpu_clock, [&] { encoded = hullpack::EncodeMesh(mesh, {}, cs); }));
-        if (!encoded.ok()) return false;
-      } else {
-        DracoRun& d = draco[i - 1];
-        enc[i].push_back(TimeMs(s.cpu_clock, [&] { d.bytes = hullpack::DracoEncode(*d.mesh, s.qp, s.qn, s.qt, d.level); }));
-        if (d.bytes.empty()) return false;
-      }
+      if (!encode((round + j) % n)) return false;
     }
     for (int j = 0; j < n; ++j) {
-      const int i = (round + j) % n;
-      if (i == 0) {
-        dec[0].push_back(TimeMs(s.cpu_clock, [&] {
-          decoded = hullpack::DecodeMesh(encoded->stream.data(), encoded->stream.size(), nullptr, row.name);
-        }));
-        if (!decoded.ok()) return false;
-      } else {
-        DracoRun& d = draco[i - 1];
-        dec[i].push_back(TimeMs(s.cpu_clock, [&] { d.decoded = hullpack::DracoDecodePositions(d.bytes); }));
-        if (d.decoded.positions.empty()) return false;
-      }
+      if (!decode((round + j) % n)) return false;
     }
   }
   row.bytes[0] = encoded->stream.size();
