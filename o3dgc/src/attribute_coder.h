@@ -132,15 +132,15 @@ struct NormalGeometry {
   const uint32_t* position_of;   // attribute vertex -> position vertex
 };
 
-// `wedges` (needed for kParallelogram) gives the coding order and the predictions; other modes code
-// the vertices in id order. `geometry` (optional, 3 doubles per vertex): with dim == 2 and
+// `wedges` (needed for kParallelogram) gives the predictions and, with `order`, the coding order;
+// other modes code the vertices in id order. `geometry` (optional, 3 doubles per vertex): with dim == 2 and
 // kParallelogram, texture coordinates are predicted from the shape (PredictTexCoord) instead of
 // parallelograms.
 void EncodeQuantized(ArithmeticEncoder* enc, const WedgeTable* wedges,
                      const std::vector<int32_t>& q, int dim, int bits, Prediction mode,
-                     const std::vector<double>* geometry = nullptr);
+                     CodingOrder::Kind order, const std::vector<double>* geometry = nullptr);
 Status DecodeQuantized(ArithmeticDecoder* dec, const WedgeTable* wedges, uint32_t n, int dim,
-                       int bits, Prediction mode, std::vector<int32_t>* q,
+                       int bits, Prediction mode, CodingOrder::Kind order, std::vector<int32_t>* q,
                        const std::vector<double>* geometry = nullptr);
 
 // Positions of attribute vertices as doubles (quantized value * step), for PredictTexCoord.

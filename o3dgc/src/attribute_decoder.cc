@@ -17,12 +17,12 @@ namespace {
 // (a local copy, whose address no call may take) stays in registers. `shifts`: read before it,
 // used when kShifted (a table of zeros is the same as none, and the loop without it is smaller).
 template <int kDim, bool kRawLow, bool kShifted>
-Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges, int64_t maxq,
-                           int coarse, ResidualModels& models, const ClassShifts& shifts, int32_t* q,
-                           uint32_t* mags) {
+Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges, CodingOrder::Kind kind,
+                           int64_t maxq, int coarse, ResidualModels& models, const ClassShifts& shifts,
+                           int32_t* q, uint32_t* mags) {
   ArithmeticDecoder dec = *dec_in;
   Status status = Status::kOk;
-  DegreeTraversal order(wedges);
+  CodingOrder order(wedges, kind);
   // A truncated stream reads as zeros (bounded work: one pass over the vertices), found by the
   // check after the loop.
   for (uint32_t c; (c = order.Next()) != kNoVertex;) {
@@ -67,28 +67,29 @@ Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges, 
 
 // The residual coding (RawLowBits) as a template argument, so that the loop has no test for it.
 template <int kDim>
-Status DecodeParallelogramFor(bool raw, ArithmeticDecoder* dec, const WedgeTable& wedges, int64_t maxq,
-                              int coarse, ResidualModels& models, int32_t* q, uint32_t* mags) {
+Status DecodeParallelogramFor(bool raw, ArithmeticDecoder* dec, const WedgeTable& wedges,
+                              CodingOrder::Kind kind, int64_t maxq, int coarse, ResidualModels& models,
+                              int32_t* q, uint32_t* mags) {
   ClassShifts shifts;
   if (!raw) {
-    return DecodeParallelogram<kDim, false, false>(dec, wedges, maxq, coarse, models, shifts, q, mags);
+    return DecodeParallelogram<kDim, false, false>(dec, wedges, kind, maxq, coarse, models, shifts, q, mags);
   }
   DecodeClassShifts(dec, &shifts);
   // Positions (and normals predicted as values) have a loop of their own for tables of zeros; other
   // attributes share the loop with shifts (each loop adds about 1.6 KB to the gzip'd wasm decoder).
   if constexpr (kDim == 3) {
     if (!shifts.any()) {
-      return DecodeParallelogram<kDim, true, false>(dec, wedges, maxq, coarse, models, shifts, q, mags);
+      return DecodeParallelogram<kDim, true, false>(dec, wedges, kind, maxq, coarse, models, shifts, q, mags);
     }
   }
-  return DecodeParallelogram<kDim, true, true>(dec, wedges, maxq, coarse, models, shifts, q, mags);
+  return DecodeParallelogram<kDim, true, true>(dec, wedges, kind, maxq, coarse, models, shifts, q, mags);
 }
 
 }  // namespace
 
 Status DecodeQuantized(ArithmeticDecoder* dec_in, const WedgeTable* wedges, uint32_t n, int dim,
-                       int bits, Prediction mode, std::vector<int32_t>* out,
-                       const std::vector<double>* geometry) {
+                       int bits, Prediction mode, CodingOrder::Kind order_kind,
+                       std::vector<int32_t>* out, const std::vector<double>* geometry) {
   ScopedDecoder dec(dec_in);
   std::vector<int32_t>& q = *out;
   q.assign(size_t(n) * dim, 0);
@@ -133,13 +134,13 @@ Status DecodeQuantized(ArithmeticDecoder* dec_in, const WedgeTable* wedges, uint
   const double* geo = (geometry && dim == 2) ? geometry->data() : nullptr;
   if (!geo) {
     switch (dim) {
-      case 1: return DecodeParallelogramFor<1>(raw, &*dec, *wedges, maxq, coarse, *models, q.data(), mags.data());
-      case 2: return DecodeParallelogramFor<2>(raw, &*dec, *wedges, maxq, coarse, *models, q.data(), mags.data());
-      case 3: return DecodeParallelogramFor<3>(raw, &*dec, *wedges, maxq, coarse, *models, q.data(), mags.data());
-      default: return DecodeParallelogramFor<4>(raw, &*dec, *wedges, maxq, coarse, *models, q.data(), mags.data());
+      case 1: return DecodeParallelogramFor<1>(raw, &*dec, *wedges, order_kind, maxq, coarse, *models, q.data(), mags.data());
+      case 2: return DecodeParallelogramFor<2>(raw, &*dec, *wedges, order_kind, maxq, coarse, *models, q.data(), mags.data());
+      case 3: return DecodeParallelogramFor<3>(raw, &*dec, *wedges, order_kind, maxq, coarse, *models, q.data(), mags.data());
+      default: return DecodeParallelogramFor<4>(raw, &*dec, *wedges, order_kind, maxq, coarse, *models, q.data(), mags.data());
     }
   }
-  DegreeTraversal order(*wedges);
+  CodingOrder order(*wedges, order_kind);
   for (uint32_t c; (c = order.Next()) != kNoVertex;) {
     if (dec->failed()) return Status::kTruncated;
     int64_t pred[4];

@@ -85,15 +85,16 @@ namespace {
 // are found first, in coding order, then coded: on large meshes the class shifts they select are
 // sent before them.
 template <int kDim, bool kRawLow>
-void EncodeParallelogram(ArithmeticEncoder* enc, const WedgeTable& wedges, int64_t maxq, int coarse,
-                         ResidualModels& models, const int32_t* q, uint32_t* mags) {
+void EncodeParallelogram(ArithmeticEncoder* enc, const WedgeTable& wedges, CodingOrder::Kind kind,
+                         int64_t maxq, int coarse, ResidualModels& models, const int32_t* q,
+                         uint32_t* mags) {
   struct Vertex {
     uint8_t kind, mctx;
     int64_t r[kDim];
   };
   std::vector<Vertex> coded;
   coded.reserve(wedges.num_vertices());
-  DegreeTraversal order(wedges);
+  CodingOrder order(wedges, kind);
   for (uint32_t c; (c = order.Next()) != kNoVertex;) {
     int64_t pred[kDim];
     const uint32_t previous = order.previous();
@@ -134,12 +135,13 @@ void EncodeParallelogram(ArithmeticEncoder* enc, const WedgeTable& wedges, int64
 
 // The residual coding (RawLowBits) as a template argument, so that the loop has no test for it.
 template <int kDim>
-void EncodeParallelogramFor(bool raw, ArithmeticEncoder* enc, const WedgeTable& wedges, int64_t maxq,
-                            int coarse, ResidualModels& models, const int32_t* q, uint32_t* mags) {
+void EncodeParallelogramFor(bool raw, ArithmeticEncoder* enc, const WedgeTable& wedges,
+                            CodingOrder::Kind kind, int64_t maxq, int coarse, ResidualModels& models,
+                            const int32_t* q, uint32_t* mags) {
   if (raw) {
-    EncodeParallelogram<kDim, true>(enc, wedges, maxq, coarse, models, q, mags);
+    EncodeParallelogram<kDim, true>(enc, wedges, kind, maxq, coarse, models, q, mags);
   } else {
-    EncodeParallelogram<kDim, false>(enc, wedges, maxq, coarse, models, q, mags);
+    EncodeParallelogram<kDim, false>(enc, wedges, kind, maxq, coarse, models, q, mags);
   }
 }
 
@@ -147,7 +149,7 @@ void EncodeParallelogramFor(bool raw, ArithmeticEncoder* enc, const WedgeTable& 
 
 void EncodeQuantized(ArithmeticEncoder* enc, const WedgeTable* wedges,
                      const std::vector<int32_t>& q, int dim, int bits, Prediction mode,
-                     const std::vector<double>* geometry) {
+                     CodingOrder::Kind order_kind, const std::vector<double>* geometry) {
   const uint32_t n = uint32_t(q.size() / size_t(dim));
   if (mode == Prediction::kNone) {
     for (int32_t v : q) enc->EncodeBits(uint32_t(v), bits);
@@ -186,13 +188,13 @@ void EncodeQuantized(ArithmeticEncoder* enc, const WedgeTable* wedges,
   const double* geo = (geometry && dim == 2) ? geometry->data() : nullptr;
   if (!geo) {
     switch (dim) {
-      case 1: return EncodeParallelogramFor<1>(raw, enc, *wedges, maxq, coarse, *models, q.data(), mags.data());
-      case 2: return EncodeParallelogramFor<2>(raw, enc, *wedges, maxq, coarse, *models, q.data(), mags.data());
-      case 3: return EncodeParallelogramFor<3>(raw, enc, *wedges, maxq, coarse, *models, q.data(), mags.data());
-      default: return EncodeParallelogramFor<4>(raw, enc, *wedges, maxq, coarse, *models, q.data(), mags.data());
+      case 1: return EncodeParallelogramFor<1>(raw, enc, *wedges, order_kind, maxq, coarse, *models, q.data(), mags.data());
+      case 2: return EncodeParallelogramFor<2>(raw, enc, *wedges, order_kind, maxq, coarse, *models, q.data(), mags.data());
+      case 3: return EncodeParallelogramFor<3>(raw, enc, *wedges, order_kind, maxq, coarse, *models, q.data(), mags.data());
+      default: return EncodeParallelogramFor<4>(raw, enc, *wedges, order_kind, maxq, coarse, *models, q.data(), mags.data());
     }
   }
-  DegreeTraversal order(*wedges);
+  CodingOrder order(*wedges, order_kind);
   for (uint32_t c; (c = order.Next()) != kNoVertex;) {
     int64_t pred[4];
     int64_t alt[2];

@@ -33,6 +33,8 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
   StreamInfo si;
   si.version = sh.version;
   si.keep_order = sh.keep_order;
+  si.fast_decode = sh.fast_decode;
+  const CodingOrder::Kind order = sh.fast_decode ? CodingOrder::kVertexId : CodingOrder::kGreedy;
   PayloadHeader h;
   if ((s = DecodePayloadHeader(&dec, &h)) != Status::kOk) return s;
   if (h.num_vertices > options.max_vertices || h.num_triangles > options.max_triangles) {
@@ -160,8 +162,8 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
     if (h.position.prediction == Prediction::kParallelogram) {
       wedges.BuildFromOppositeVertices(tris, nw, opposite_vertices, &vertex_triangles);
     }
-    if ((s = DecodeQuantized(&dec, &wedges, nw, 3, h.position.bits, h.position.prediction, &qpos)) !=
-        Status::kOk) {
+    if ((s = DecodeQuantized(&dec, &wedges, nw, 3, h.position.bits, h.position.prediction, order,
+                             &qpos)) != Status::kOk) {
       return s;
     }
   }
@@ -193,7 +195,7 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
       attr_wedges_built = true;
     }
     const Status st = DecodeQuantized(&dec, &attr_wedges, nv, int(d.dimension), d.bits, d.prediction,
-                                      &q, texcoord ? &attr_geometry : nullptr);
+                                      order, &q, texcoord ? &attr_geometry : nullptr);
     if (st != Status::kOk) return st;
     values->resize(q.size());
     d.quant.DequantizeAll(q.data(), nullptr, nv, values->data());
@@ -335,6 +337,7 @@ Status ReadStreamInfo(const uint8_t* data, size_t size, StreamInfo* info) {
   info->stream_type = type;
   info->version = sh.version;
   info->keep_order = sh.keep_order;
+  info->fast_decode = sh.fast_decode;
   info->num_vertices = size_t(h.num_vertices);
   info->num_triangles = size_t(h.num_triangles);
   info->total = size;

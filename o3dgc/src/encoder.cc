@@ -69,6 +69,7 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
     if (mesh.indices[i] >= nv) return Status::kInvalidArgument;
   }
   auto progress = [&](float f) { return !params.progress || params.progress(f); };
+  const CodingOrder::Kind order = params.fast_decode ? CodingOrder::kVertexId : CodingOrder::kGreedy;
 
   // Descriptors.
   PayloadHeader h;
@@ -292,7 +293,7 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
       wedges.BuildFromOppositeVertices(conn.triangles, nw, conn.opposite_vertices,
                                        &conn.vertex_triangles);
     }
-    EncodeQuantized(&enc, &wedges, qpos, 3, h.position.bits, h.position.prediction);
+    EncodeQuantized(&enc, &wedges, qpos, 3, h.position.bits, h.position.prediction, order);
   }
   si.positions = enc.BytesSoFar() - mark;
   if (!progress(0.6f)) return Status::kCancelled;
@@ -327,7 +328,7 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
       attr_wedges.Build(attr_tris, uint32_t(nv), conn.opposite, true);
       attr_wedges_built = true;
     }
-    EncodeQuantized(&enc, &attr_wedges, q, int(d.dimension), d.bits, d.prediction,
+    EncodeQuantized(&enc, &attr_wedges, q, int(d.dimension), d.bits, d.prediction, order,
                     texcoord ? &attr_geometry : nullptr);
   };
   mark = enc.BytesSoFar();
@@ -374,7 +375,7 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
   AddTailBytes(h, payload.size() > mark ? payload.size() - mark : 0, &si);
 
   out->clear();
-  WriteHeader(params.keep_order, payload.size(), out);
+  WriteHeader(params.keep_order, params.fast_decode, payload.size(), out);
   const size_t byte_header = out->size();
   out->insert(out->end(), payload.begin(), payload.end());
   FinalizeCrc(out);
@@ -382,6 +383,7 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
   si.stream_type = params.stream_type;
   si.version = kStreamVersion;
   si.keep_order = params.keep_order;
+  si.fast_decode = params.fast_decode;
   si.num_vertices = nv;
   si.num_triangles = nt;
   if (params.stream_type == StreamType::kAscii) *out = PackAscii(*out);

@@ -111,16 +111,25 @@ void WedgeTable::BuildFromOppositeVertices(const std::vector<uint32_t>& triangle
   start_.pop_back();
 }
 
-DegreeTraversal::DegreeTraversal(const WedgeTable& wedges)
-    : wedges_(wedges), done_(wedges.num_vertices(), 0), degree_(wedges.num_vertices(), 0),
-      log_(new Visited[wedges.num_vertices()]), par_(16), moved_(16) {
+CodingOrder::CodingOrder(const WedgeTable& wedges, Kind kind)
+    : wedges_(wedges), kind_(kind), done_(wedges.num_vertices(), 0) {
+  size_t most = 0;
+  for (uint32_t v = 0; v < wedges.num_vertices(); ++v) {
+    const size_t n = size_t(wedges.end(v) - wedges.begin(v));
+    most = n > most ? n : most;
+  }
+  par_.resize(most + 1);
+  if (kind == kVertexId) return;
+  moved_.resize(most + 1);
+  degree_.assign(wedges.num_vertices(), 0);
+  log_.reset(new Visited[wedges.num_vertices()]);
   for (int l = 1; l < kLevels; ++l) {
     stacks_[l].reset(new uint32_t[wedges.num_wedges() + 1]);
     top_[l] = stacks_[l].get();
   }
 }
 
-uint32_t DegreeTraversal::NextWithoutParallelogram() {
+uint32_t CodingOrder::NextWithoutParallelogram() {
   // The level-0 stack would hold, for every visit in order, w then u of each wedge whose u and w
   // were both uncoded then; it is taken from the top, stale entries skipped. A vertex uncoded and
   // without parallelogram now had both uncoded at every visit next to it (else it would have

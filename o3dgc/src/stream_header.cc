@@ -47,10 +47,10 @@ uint32_t Crc32(const uint8_t* data, size_t size, uint32_t crc) {
   return ~crc;
 }
 
-void WriteHeader(bool keep_order, size_t payload_size, std::vector<uint8_t>* out) {
+void WriteHeader(bool keep_order, bool fast_decode, size_t payload_size, std::vector<uint8_t>* out) {
   out->insert(out->end(), kMagic, kMagic + 4);
   out->push_back(uint8_t(kStreamVersion));
-  out->push_back(keep_order ? 1 : 0);
+  out->push_back(uint8_t((keep_order ? 1 : 0) | (fast_decode ? 2 : 0)));
   for (size_t i = 0; i < kCrcSize; ++i) out->push_back(0);
   uint64_t v = payload_size;
   do {
@@ -72,8 +72,9 @@ Status ParseHeader(const uint8_t* data, size_t size, StreamHeader* header) {
   if (size < kCrcOffset + kCrcSize + 1) return Status::kTruncated;
   header->version = data[4];
   if (header->version != kStreamVersion) return Status::kBadVersion;
-  if (data[5] & ~1u) return Status::kCorrupt;
+  if (data[5] & ~3u) return Status::kCorrupt;
   header->keep_order = (data[5] & 1) != 0;
+  header->fast_decode = (data[5] & 2) != 0;
   header->crc = uint32_t(data[6]) | uint32_t(data[7]) << 8 | uint32_t(data[8]) << 16 |
                 uint32_t(data[9]) << 24;
   uint64_t v = 0;

@@ -4,7 +4,6 @@
 #include <cstdint>
 #include <map>
 #include <random>
-#include <utility>
 #include <vector>
 
 #include "attribute_coder.h"
@@ -72,22 +71,6 @@ TEST(ClassShifts, TableRoundTrips) {
   }
 }
 
-// Neighbour corners of a triangle list (triangle * 3 + slot, or 0xFFFFFFFF), for a wedge table.
-std::vector<uint32_t> OppositeCorners(const std::vector<uint32_t>& tris) {
-  std::map<std::pair<uint32_t, uint32_t>, uint32_t> edge_corner;  // directed edge -> opposite corner
-  for (uint32_t c = 0; c < tris.size(); ++c) {
-    const uint32_t t = c / 3, k = c % 3;
-    edge_corner[{tris[3 * t + (k + 1) % 3], tris[3 * t + (k + 2) % 3]}] = c;
-  }
-  std::vector<uint32_t> opposite(tris.size(), 0xFFFFFFFFu);
-  for (uint32_t c = 0; c < tris.size(); ++c) {
-    const uint32_t t = c / 3, k = c % 3;
-    const auto it = edge_corner.find({tris[3 * t + (k + 2) % 3], tris[3 * t + (k + 1) % 3]});
-    if (it != edge_corner.end()) opposite[c] = it->second;
-  }
-  return opposite;
-}
-
 TEST(ClassShifts, LargeMeshWithLargeResidualsRoundTripsThroughShifts) {
   // A 4453-vertex grid (past kRawLowBitsMesh) at 16 bits: smooth, then with noise of up to
   // +-2^7 steps, which makes residuals of classes 7-10 common: the encoder sends shifts then.
@@ -95,7 +78,7 @@ TEST(ClassShifts, LargeMeshWithLargeResidualsRoundTripsThroughShifts) {
   const uint32_t n = uint32_t(grid.nv());
   ASSERT_GE(n, kRawLowBitsMesh);
   WedgeTable wedges;
-  wedges.Build(grid.indices, n, OppositeCorners(grid.indices), true);
+  wedges.Build(grid.indices, n, o3dgc_test::OppositeCorners(grid.indices), true);
   std::mt19937 rng(5);
   for (const int noise : {0, 128}) {
     std::vector<int32_t> q(size_t(n) * 3);
@@ -106,7 +89,7 @@ TEST(ClassShifts, LargeMeshWithLargeResidualsRoundTripsThroughShifts) {
     std::vector<uint8_t> buf;
     {
       ArithmeticEncoder enc(&buf);
-      EncodeQuantized(&enc, &wedges, q, 3, 16, Prediction::kParallelogram);
+      EncodeQuantized(&enc, &wedges, q, 3, 16, Prediction::kParallelogram, CodingOrder::kGreedy);
       enc.Finish();
     }
     ArithmeticDecoder table(buf.data(), buf.size());
@@ -115,7 +98,7 @@ TEST(ClassShifts, LargeMeshWithLargeResidualsRoundTripsThroughShifts) {
     EXPECT_EQ(sent.any(), noise != 0) << "noise " << noise;
     ArithmeticDecoder dec(buf.data(), buf.size());
     std::vector<int32_t> decoded;
-    ASSERT_EQ(DecodeQuantized(&dec, &wedges, n, 3, 16, Prediction::kParallelogram, &decoded),
+    ASSERT_EQ(DecodeQuantized(&dec, &wedges, n, 3, 16, Prediction::kParallelogram, CodingOrder::kGreedy, &decoded),
               Status::kOk);
     EXPECT_EQ(decoded, q) << "noise " << noise;
   }

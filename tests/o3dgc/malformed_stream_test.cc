@@ -127,9 +127,12 @@ TEST(Malformed, ByteFlipsAndTruncationsPastTheRawBitsThreshold) {
   for (size_t i = 0; i < noisy.positions.size(); ++i) {
     noisy.positions[i] += 0.008f * float(std::sin(double(i) * 12.9898) * 0.5 + std::cos(double(i) * 7.233) * 0.5);
   }
-  for (const o3dgc_test::TestMesh* t : {&torus, &grid, &noisy}) {
+  EncodeParams fast;
+  fast.fast_decode = true;  // the coding order of fast_decode streams
+  for (const auto& [t, p] : {std::make_pair(&torus, EncodeParams()), std::make_pair(&grid, EncodeParams()),
+                             std::make_pair(&noisy, EncodeParams()), std::make_pair(&noisy, fast)}) {
     std::vector<uint8_t> s;
-    ASSERT_EQ(Encode(t->View(), EncodeParams(), &s), Status::kOk);
+    ASSERT_EQ(Encode(t->View(), p, &s), Status::kOk);
     ExpectFlipsAndCutsHandled(s, rng, 150);
     // The unflipped stream cut anywhere, the raw bits' end included.
     for (int i = 0; i < 60; ++i) {
@@ -164,7 +167,7 @@ TEST(Malformed, RandomGarbageAfterHeader) {
     for (size_t i = 0; i < n; ++i) c.push_back(uint8_t(rng()));
     // Fix the payload length so the header parses.
     std::vector<uint8_t> out;
-    WriteHeader(false, n, &out);
+    WriteHeader(false, false, n, &out);
     out.insert(out.end(), c.begin() + 11, c.end());
     FinalizeCrc(&out);
     DecodedMesh m;
@@ -194,7 +197,7 @@ TEST(Malformed, HugeVertexCountRejectedQuickly) {
     enc.Finish();
   }
   std::vector<uint8_t> s;
-  WriteHeader(false, payload.size(), &s);
+  WriteHeader(false, false, payload.size(), &s);
   s.insert(s.end(), payload.begin(), payload.end());
   FinalizeCrc(&s);
   const auto t0 = std::chrono::steady_clock::now();
@@ -217,6 +220,11 @@ TEST(Malformed, HeaderChecks) {
   c = s;
   c[4] = 99;
   EXPECT_EQ(Decode(c.data(), c.size(), DecodeOptions(), &m), Status::kBadVersion);
+  for (const uint8_t flag : {4, 8, 128}) {  // bits 0 (keep_order) and 1 (fast_decode) are defined
+    c = s;
+    c[5] |= flag;
+    EXPECT_EQ(Decode(c.data(), c.size(), DecodeOptions(), &m), Status::kCorrupt) << int(flag);
+  }
   c = s;
   c.push_back(0);
   EXPECT_EQ(Decode(c.data(), c.size(), DecodeOptions(), &m), Status::kCorrupt);

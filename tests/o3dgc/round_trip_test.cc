@@ -173,6 +173,60 @@ TEST(RoundTrip, KeepOrderIsExact) {
   }
 }
 
+// fast_decode changes only the order in which the parallelogram-predicted values are coded: the
+// decoded mesh is the one the default stream gives, bit for bit, for every attribute that uses that
+// order (positions, normals and generic values by parallelograms, uvs from the shape), on small
+// meshes and on large ones (raw low bits, class shifts), in both vertex-order modes.
+TEST(RoundTrip, FastDecodeGivesTheSameMeshFromAnotherStream) {
+  TestMesh noisy = o3dgc_test::Grid(72, 60);  // 4453 vertices: raw low bits; the noise: shifts
+  for (size_t i = 2; i < noisy.positions.size(); i += 3) noisy.positions[i] = float(std::sin(i * 0.7) * 0.01);
+  std::vector<TestMesh> meshes = AllMeshes();
+  meshes.push_back(o3dgc_test::Torus(72, 60));
+  meshes.push_back(noisy);
+  for (const TestMesh& t : meshes) {
+    std::vector<float> generic(t.nv());
+    for (size_t i = 0; i < generic.size(); ++i) generic[i] = t.positions[3 * i] * t.positions[3 * i + 1];
+    MeshView v = t.View();
+    FloatAttributeView g;
+    g.data = generic.data();
+    g.dimension = 1;
+    g.semantic = Semantic::kGeneric;
+    v.float_attributes.push_back(g);
+    for (const bool keep : {false, true}) {
+      for (const Prediction np : {Prediction::kSurfaceNormal, Prediction::kParallelogram}) {
+        EncodeParams p;
+        p.keep_order = keep;
+        p.normal_prediction = np;
+        std::vector<uint8_t> slow, fast;
+        StreamInfo si;
+        ASSERT_EQ(Encode(v, p, &slow), Status::kOk);
+        p.fast_decode = true;
+        ASSERT_EQ(Encode(v, p, &fast, &si), Status::kOk);
+        EXPECT_TRUE(si.fast_decode);
+        EXPECT_EQ(fast[5], keep ? 3 : 2);  // the flags byte
+        if (t.nv() > 100) EXPECT_NE(slow, fast);
+        const DecodedMesh a = DecodeOk(slow);
+        DecodedMesh b;
+        StreamInfo di;
+        ASSERT_EQ(Decode(fast.data(), fast.size(), DecodeOptions(), &b, &di), Status::kOk);
+        EXPECT_TRUE(di.fast_decode);
+        EXPECT_EQ(a.indices, b.indices);
+        EXPECT_EQ(a.positions, b.positions);
+        EXPECT_EQ(a.normals, b.normals);
+        ASSERT_EQ(a.float_attributes.size(), b.float_attributes.size());
+        for (size_t i = 0; i < a.float_attributes.size(); ++i) {
+          EXPECT_EQ(a.float_attributes[i].values, b.float_attributes[i].values) << "attribute " << i;
+        }
+        ASSERT_EQ(a.int_attributes.size(), b.int_attributes.size());
+        for (size_t i = 0; i < a.int_attributes.size(); ++i) {
+          EXPECT_EQ(a.int_attributes[i].values, b.int_attributes[i].values);
+        }
+        EXPECT_EQ(a.triangle_groups, b.triangle_groups);
+      }
+    }
+  }
+}
+
 TEST(RoundTrip, EveryPredictionModeAndBitDepth) {
   const TestMesh t = o3dgc_test::Torus(24, 10);
   TestMesh s = o3dgc_test::Sphere(20, 12);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <utility>
 #include <vector>
 
 #include "o3dgc/o3dgc.h"
@@ -180,6 +181,22 @@ inline std::vector<std::array<float, 9>> TriangleSet(const std::vector<float>& p
   }
   std::sort(out.begin(), out.end());
   return out;
+}
+
+// Neighbour corners of a triangle list (triangle * 3 + slot, or 0xFFFFFFFF), for a wedge table.
+inline std::vector<uint32_t> OppositeCorners(const std::vector<uint32_t>& tris) {
+  std::map<std::pair<uint32_t, uint32_t>, uint32_t> edge_corner;  // directed edge -> opposite corner
+  for (uint32_t c = 0; c < tris.size(); ++c) {
+    const uint32_t t = c / 3, k = c % 3;
+    edge_corner[{tris[3 * t + (k + 1) % 3], tris[3 * t + (k + 2) % 3]}] = c;
+  }
+  std::vector<uint32_t> opposite(tris.size(), 0xFFFFFFFFu);
+  for (uint32_t c = 0; c < tris.size(); ++c) {
+    const uint32_t t = c / 3, k = c % 3;
+    const auto it = edge_corner.find({tris[3 * t + (k + 2) % 3], tris[3 * t + (k + 1) % 3]});
+    if (it != edge_corner.end()) opposite[c] = it->second;
+  }
+  return opposite;
 }
 
 }  // namespace o3dgc_test

@@ -147,6 +147,10 @@ struct EncodeParams {
   // winding kept) for size. true: the decoded vertex order, triangle order and corner order are
   // exactly those of the input.
   bool keep_order = false;
+  // true: values predicted by parallelograms are coded in vertex id order instead of the order that
+  // finds the most parallelograms. About 2-5 % more bytes; decoding takes about 0.85x the time
+  // natively and 0.8x in WebAssembly (igea), because the decoder no longer jumps over the mesh.
+  bool fast_decode = false;
   int position_bits = 14;                           // 1..30
   Prediction position_prediction = Prediction::kParallelogram;
   RangeMode position_range = RangeMode::kUniform;
@@ -199,6 +203,7 @@ struct StreamInfo {
   StreamType stream_type = StreamType::kBinary;
   uint32_t version = 0;
   bool keep_order = false;
+  bool fast_decode = false;  // EncodeParams::fast_decode
   size_t num_vertices = 0;
   size_t num_triangles = 0;
   size_t total = 0;
