@@ -41,6 +41,9 @@ awk 'function r() { s = (s * 1103515245 + 12345) % 2147483648; return 0.008 * (s
     for (j = 0; j < n; ++j) for (i = 0; i < n; ++i) { a = j * (n + 1) + i + 1
       printf "f %d %d %d\nf %d %d %d\n", a, a + 1, a + n + 2, a, a + n + 2, a + n + 1 } }' >"$gen/rough_grid.obj"
 "$enc" -c -i "$gen/rough_grid.obj" -st binary -qc 14 >/dev/null && mv "$gen/rough_grid.s3d" "$gen/o3dgc_decoder_fuzzer/rough_grid.s3d"
+# The rough grid and the tetrahedron again, coded in vertex id order (test_o3dgc -fast).
+"$enc" -c -i "$gen/rough_grid.obj" -st binary -qc 14 -fast >/dev/null && mv "$gen/rough_grid.s3d" "$gen/o3dgc_decoder_fuzzer/rough_grid_fast.s3d"
+"$enc" -c -i "$gen/tetra.obj" -st binary -qc 10 -fast >/dev/null && mv "$gen/tetra.s3d" "$gen/o3dgc_decoder_fuzzer/tetra_fast.s3d"
 # Packed GLBs stay small (a few KB): the fuzzer's speed is set by the JSON text it scans.
 rm -f "$gen/packed_glb_fuzzer/"*.glb
 pack -o "$gen/packed_glb_fuzzer/hulls.glb" --max-hulls 2

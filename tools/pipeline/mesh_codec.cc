@@ -79,6 +79,7 @@ Result<EncodedMesh> EncodeMesh(const Mesh& mesh, const std::vector<uint32_t>& gr
   o3dgc::EncodeParams params;
   params.stream_type = s.stream_type;
   params.keep_order = s.keep_order;
+  params.fast_decode = s.fast_decode;
   params.position_bits = s.position_bits;
   params.position_range = s.position_range;
   params.normal_bits = s.normal_bits;

@@ -51,6 +51,7 @@ MeshCodecSettings SettingsFor(const PackOptions& options) {
   MeshCodecSettings s;
   s.stream_type = options.stream_type;
   s.keep_order = options.keep_order;
+  s.fast_decode = options.fast_decode;
   s.normal_bits = options.normal_bits;
   s.uv_bits = options.uv_bits;
   return s;

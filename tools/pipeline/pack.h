@@ -30,6 +30,7 @@ struct PackOptions {
   int uv_bits = 12;
   o3dgc::StreamType stream_type = o3dgc::StreamType::kBinary;
   bool keep_order = false;
+  bool fast_decode = false;  // o3dgc::EncodeParams::fast_decode, for render meshes and hulls
   PackedGlbOptions glb;
   CollisionSettings collision;
   PruneOptions prune;

@@ -34,7 +34,7 @@ double Ms(Clock::time_point a, Clock::time_point b) {
 int Usage() {
   std::fprintf(stderr,
                "usage: test_o3dgc -c -i <mesh> [-st binary|ascii] [-qc bits] [-qn bits] [-qt bits] "
-               "[-keep]\n       test_o3dgc -d -i <stream.s3d>\n");
+               "[-keep] [-fast]\n       test_o3dgc -d -i <stream.s3d>\n");
   return 2;
 }
 
@@ -301,6 +301,8 @@ int main(int argc, char** argv) {
       if (!next_int(&settings.uv_bits)) return Usage();
     } else if (a == "-keep") {
       settings.keep_order = true;
+    } else if (a == "-fast") {
+      settings.fast_decode = true;  // vertex id order: faster decoding, a few % larger
     } else {
       return Usage();
     }
