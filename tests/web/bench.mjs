@@ -2,7 +2,7 @@
 // mesh, on the main thread and in a Web Worker (web/bench.html in headless Chromium).
 //
 //   node tests/web/bench.mjs [--corpus DIR] [--meshes igea,bunny] [--runs 11] [--warmup 3]
-//        [--encoder build/tools/test_o3dgc/test_o3dgc] [--qp 14 --qn 10 --qt 12] [--cl 7]
+//        [--encoder build/tools/test_o3dgc/test_o3dgc] [--qp 14 --qn 10 --qt 12] [--cl 7] [--fast 1]
 //        [--wasm samples/web/dist/hullpack_decoder_wasm.wasm[,other.wasm]] [--json out.json]
 //
 // Every .obj of the corpus is encoded twice from the same file (bench_streams.mjs): this build's
@@ -79,7 +79,8 @@ if (a.cold) {
 
 // Markdown table: one row per mesh and decoder: stream bytes, median ms (main thread, in the worker,
 // worker round trip) and the ratio to Draco (< 1: faster than Draco).
-console.log(`${result.userAgent}\nmedian of ${result.runs} runs after ${result.warmup} warm-up; ms, decode only`);
+console.log(`${result.userAgent}\nmedian of ${result.runs} runs after ${result.warmup} warm-up; ms, decode only` +
+  `${settings.fastDecode ? '; hullpack streams encoded with -fast' : ''}`);
 console.log(`init (fetch + compile + instantiate): ${Object.entries(result.init).map(([k, v]) => `${k} ${v.toFixed(0)} ms`).join(', ')}`);
 console.log('| mesh | triangles | decoder | attributes | bytes | main ms | worker ms | worker round trip ms | main / Draco | worker / Draco |');
 console.log('|---|---|---|---|---|---|---|---|---|---|');

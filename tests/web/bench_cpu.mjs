@@ -21,8 +21,9 @@ const runs = Number(a.runs || 15);
 const warmup = Number(a.warmup || 3);
 const decoders = await nodeDecoders(a);
 
-const { dir, list } = prepareStreams(a);
-console.log(`node ${process.version} (V8 ${process.versions.v8}); CPU ms per decode, median of ${runs} after ${warmup} warm-up, runs interleaved`);
+const { dir, list, settings } = prepareStreams(a);
+console.log(`node ${process.version} (V8 ${process.versions.v8}); CPU ms per decode, median of ${runs} after ${warmup} warm-up, runs interleaved` +
+  `${settings.fastDecode ? '; hullpack streams encoded with -fast' : ''}`);
 console.log('| mesh | triangles | decoder | attributes | bytes | CPU ms | wall ms | CPU / Draco |\n|---|---|---|---|---|---|---|---|');
 try {
   for (const m of list) {

@@ -2,6 +2,7 @@
 // Node): every .obj of a corpus folder (manifest.csv order when there is one) encoded twice from
 // the same file, with this build's test_o3dgc (binary stream) and with Debian's draco_encoder, at
 // the same bits (positions/normals/UVs), Draco at compression level `cl` (7 = its default).
+// `--fast 1` encodes hullpack's streams with test_o3dgc -fast (EncodeParams::fast_decode).
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
@@ -24,6 +25,7 @@ export function prepareStreams(a) {
   const encoder = path.resolve(a.encoder || path.join(repo, 'build/tools/test_o3dgc/test_o3dgc'));
   const bits = { qp: a.qp || '14', qn: a.qn || '10', qt: a.qt || '12' };
   const cl = a.cl || '7';
+  const fast = a.fast === '1';
   let names;
   const manifest = path.join(corpus, 'manifest.csv');
   if (fs.existsSync(manifest)) {
@@ -43,12 +45,13 @@ export function prepareStreams(a) {
     const name = file.replace(/\.obj$/, '');
     const obj = path.join(dir, file);
     fs.copyFileSync(path.join(corpus, file), obj);
-    execFileSync(encoder, ['-c', '-st', 'binary', '-qc', bits.qp, '-qn', bits.qn, '-qt', bits.qt, '-i', obj], { stdio: 'ignore' });
+    execFileSync(encoder, ['-c', '-st', 'binary', '-qc', bits.qp, '-qn', bits.qn, '-qt', bits.qt,
+      ...(fast ? ['-fast'] : []), '-i', obj], { stdio: 'ignore' });
     execFileSync('draco_encoder', ['-i', obj, '-o', path.join(dir, `${name}.drc`), '-qp', bits.qp, '-qn', bits.qn,
       '-qt', bits.qt, '-cl', cl], { stdio: 'ignore' });
     list.push({ name, s3d: `${name}.s3d`, drc: `${name}.drc` });
   }
-  return { dir, list, settings: { ...bits, dracoCl: cl, corpus, encoder } };
+  return { dir, list, settings: { ...bits, dracoCl: cl, fastDecode: fast, corpus, encoder } };
 }
 
 export const median = (v) => {

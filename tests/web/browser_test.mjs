@@ -206,7 +206,7 @@ try {
   // in the worker. It is read straight from the plugin, before three's SkinnedMesh rescales float
   // weights in place. (b) The whole GLTFLoader path: every mesh's geometry equals that of the
   // reference file loaded by three without the plugin.
-  const refPairs = ['skinned.packed', 'packed', 'packed_khr']
+  const refPairs = ['skinned.packed', 'packed', 'packed_khr', 'packed_fast']
     .filter((f) => fs.existsSync(path.join(work, `${f}.glb`)) && fs.existsSync(path.join(work, `${f}.ref.glb`)));
   const TYPED = { 5120: 'Int8Array', 5121: 'Uint8Array', 5122: 'Int16Array', 5123: 'Uint16Array', 5125: 'Uint32Array', 5126: 'Float32Array' };
   const COMPONENTS = { SCALAR: 1, VEC2: 2, VEC3: 3, VEC4: 4, MAT2: 4, MAT3: 9, MAT4: 16 };

@@ -25,12 +25,13 @@ if [ -n "$hullpack" ]; then
   [ -x "$hullpack" ] || { echo "FAIL: $hullpack is not built (cmake --build BUILD --target hullpack)"; exit 1; }
   "$hullpack" pack "$repo/samples/torus.obj" -o "$work/packed.glb" --quiet
   "$hullpack" pack "$repo/samples/torus.obj" -o "$work/packed_khr.glb" --physics khr --quiet
+  "$hullpack" pack "$repo/samples/torus.obj" -o "$work/packed_fast.glb" --fast-decode --quiet
   # A skinned mesh generated in code (float weights whose quantized sums are not 1).
   node "$repo/tests/web/make_skinned_glb.mjs" --out "$work/skinned.glb"
   "$hullpack" pack "$work/skinned.glb" -o "$work/skinned.packed.glb" --quiet
   # The C++ reader's answer for every packed file: the same document, every compressed primitive
   # decoded into plain accessors (skin weights renormalized as docs/packed-gltf.md says).
-  for f in packed packed_khr skinned.packed; do
+  for f in packed packed_khr packed_fast skinned.packed; do
     "$hullpack" unpack "$work/$f.glb" -o "$work/$f.ref.glb" >/dev/null
   done
 fi
