@@ -5,7 +5,7 @@
 // writes CSV.
 //
 //   codec_bench FOLDER [--repeats 5] [--csv out.csv] [--qp 14] [--qn 10] [--qt 12] [--only a,b]
-//               [--clock wall|cpu] [--ours-only]
+//               [--clock wall|cpu] [--ours-only] [--fast-decode]
 //
 // The repeats are interleaved (one encode and one decode of each codec per round, the codecs'
 // order rotating from round to round, so that none always runs after the same one), so that a load
@@ -14,6 +14,7 @@
 // than a ratio of medians. --clock cpu times the process's CPU time
 // instead of wall time: steadier on a loaded machine (the time spent waiting for a core is left
 // out), the same on a quiet one. --ours-only skips Draco (profiling runs, size checks).
+// --fast-decode encodes ours with EncodeParams::fast_decode (values in vertex id order).
 #include <time.h>
 
 #include <algorithm>
@@ -40,6 +41,7 @@ struct Settings {
   int repeats = 5, qp = 14, qn = 10, qt = 12;
   bool cpu_clock = false;
   bool ours_only = false;
+  bool fast_decode = false;
   std::string csv;
   std::vector<std::string> only;  // mesh names (file names without extension); empty: all
 };
@@ -85,6 +87,7 @@ bool RunAll(const Mesh& mesh, const Settings& s, Row& row) {
   cs.position_bits = s.qp;
   cs.normal_bits = s.qn;
   cs.uv_bits = s.qt;
+  cs.fast_decode = s.fast_decode;
   DracoRun draco[2];
   draco[0].level = 7;
   draco[1].level = 10;
@@ -161,7 +164,7 @@ int main(int argc, char** argv) {
   if (argc < 2) {
     std::fprintf(stderr,
                  "usage: codec_bench FOLDER [--repeats N] [--csv FILE] [--qp N] [--qn N] [--qt N] [--only a,b] "
-                 "[--clock wall|cpu] [--ours-only]\n");
+                 "[--clock wall|cpu] [--ours-only] [--fast-decode]\n");
     return 64;
   }
   Settings s;
@@ -170,6 +173,10 @@ int main(int argc, char** argv) {
     const std::string flag = argv[i];
     if (flag == "--ours-only") {
       s.ours_only = true;
+      continue;
+    }
+    if (flag == "--fast-decode") {
+      s.fast_decode = true;
       continue;
     }
     const char* value = i + 1 < argc ? argv[++i] : nullptr;
