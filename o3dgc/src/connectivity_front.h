@@ -126,7 +126,10 @@ class Front {
   // gates (hostile streams, pathological meshes) cannot make coding quadratic; the encoder and the
   // decoder apply the same rule.
   // `apex`: the new triangle's vertex opposite the edge.
-  void AddHalfEdge(uint32_t u, uint32_t v, uint32_t edge, uint32_t apex) {
+  // AddHalfEdge and Attach are forced inline into the coding loops: in WebAssembly a call there
+  // makes the engine spill the loop's live values (V8 keeps no register across a call); inlined,
+  // the wasm decoder takes 0.95x the time on igea, and native decoding is unchanged.
+  O3DGC_INLINE void AddHalfEdge(uint32_t u, uint32_t v, uint32_t edge, uint32_t apex) {
     int32_t prev = -1;
     int scanned = 0;
     for (int32_t g = vertices_[v].head_out; g >= 0 && scanned < kMaxScan;) {
@@ -176,7 +179,7 @@ class Front {
   static constexpr int32_t kSearch = -2, kNoGate = -1;
   // Attaches triangle `tri` across the gate g = a->b; it is emitted as (b, a, c), or as (a, b, c)
   // when `flipped`.
-  void Attach(int32_t g, uint32_t tri, uint32_t a, uint32_t b, uint32_t c, bool flipped,
+  O3DGC_INLINE void Attach(int32_t g, uint32_t tri, uint32_t a, uint32_t b, uint32_t c, bool flipped,
               int32_t gate_bc = kSearch) {
     Link(tri * 3 + 2, c, gates_[g].edge, gates_[g].apex);
     gates_[g].open = 0;
