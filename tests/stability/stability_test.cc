@@ -277,7 +277,7 @@ Outcome Decompose(const Case& c, const Box& box) {
   return o;
 }
 
-// --- codec: o3dgc::Encode (keep_order, 14 bits) then o3dgc::Decode ---
+// --- codec: o3dgc::Encode (keep_order, 14 bits) then o3dgc::Decode; again with fast_decode ---
 Outcome Codec(const Case& c, const std::vector<float>& positions) {
   Outcome o;
   o3dgc::MeshView view;
@@ -319,7 +319,17 @@ Outcome Codec(const Case& c, const std::vector<float>& positions) {
     worst = std::max(worst, step > 0 ? err / step : err);
   }
   EXPECT_EQ(over, 0u) << "coordinates beyond half a step (" << step << ")";
-  o.cell = "ok, " + Format(step > 0 ? "%.2f step" : "%.0e abs", worst) + (over ? " **over**" : "") + Format(" (%.2f s)", seconds);
+  // fast_decode changes only the coding order: the same decoded mesh from another stream.
+  params.fast_decode = true;
+  std::vector<uint8_t> fast;
+  o3dgc::DecodedMesh out_fast;
+  EXPECT_EQ(o3dgc::Encode(view, params, &fast), o3dgc::Status::kOk) << "fast_decode";
+  EXPECT_EQ(o3dgc::Decode(fast.data(), fast.size(), o3dgc::DecodeOptions(), &out_fast), o3dgc::Status::kOk)
+      << "fast_decode: an encoded stream must decode";
+  const bool same = out_fast.positions == out.positions && out_fast.indices == out.indices;
+  EXPECT_TRUE(same) << "fast_decode decodes to another mesh";
+  o.cell = "ok, " + Format(step > 0 ? "%.2f step" : "%.0e abs", worst) + (over ? " **over**" : "") +
+           (same ? "" : " **fast_decode differs**") + Format(" (%.2f s)", seconds);
   return o;
 }
 
