@@ -133,9 +133,9 @@ struct NormalGeometry {
 };
 
 // `wedges` (needed for kParallelogram) gives the predictions and, with `order`, the coding order;
-// other modes code the vertices in id order. `geometry` (optional, 3 doubles per vertex): with dim == 2 and
-// kParallelogram, texture coordinates are predicted from the shape (PredictTexCoord) instead of
-// parallelograms.
+// other modes code the vertices in id order. `geometry` (optional, 3 doubles per vertex): with
+// dim == 2 and kParallelogram, texture coordinates are predicted from the shape (PredictTexCoord)
+// instead of parallelograms.
 void EncodeQuantized(ArithmeticEncoder* enc, const WedgeTable* wedges,
                      const std::vector<int32_t>& q, int dim, int bits, Prediction mode,
                      CodingOrder::Kind order, const std::vector<double>* geometry = nullptr);

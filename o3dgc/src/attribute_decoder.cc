@@ -17,9 +17,9 @@ namespace {
 // (a local copy, whose address no call may take) stays in registers. `shifts`: read before it,
 // used when kShifted (a table of zeros is the same as none, and the loop without it is smaller).
 template <int kDim, bool kRawLow, bool kShifted>
-Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges, CodingOrder::Kind kind,
-                           int64_t maxq, int coarse, ResidualModels& models, const ClassShifts& shifts,
-                           int32_t* q, uint32_t* mags) {
+Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges,
+                           CodingOrder::Kind kind, int64_t maxq, int coarse, ResidualModels& models,
+                           const ClassShifts& shifts, int32_t* q, uint32_t* mags) {
   ArithmeticDecoder dec = *dec_in;
   Status status = Status::kOk;
   CodingOrder order(wedges, kind);

@@ -179,8 +179,8 @@ class Front {
   static constexpr int32_t kSearch = -2, kNoGate = -1;
   // Attaches triangle `tri` across the gate g = a->b; it is emitted as (b, a, c), or as (a, b, c)
   // when `flipped`.
-  O3DGC_INLINE void Attach(int32_t g, uint32_t tri, uint32_t a, uint32_t b, uint32_t c, bool flipped,
-              int32_t gate_bc = kSearch) {
+  O3DGC_INLINE void Attach(int32_t g, uint32_t tri, uint32_t a, uint32_t b, uint32_t c,
+                           bool flipped, int32_t gate_bc = kSearch) {
     Link(tri * 3 + 2, c, gates_[g].edge, gates_[g].apex);
     gates_[g].open = 0;
     ++vertices_[a].deg;
