@@ -34,7 +34,7 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
   si.version = sh.version;
   si.keep_order = sh.keep_order;
   si.fast_decode = sh.fast_decode;
-  const CodingOrder::Kind order = sh.fast_decode ? CodingOrder::kVertexId : CodingOrder::kGreedy;
+  const CodingOrder::Kind order = CodingOrder::ForStream(sh.fast_decode);
   PayloadHeader h;
   if ((s = DecodePayloadHeader(&dec, &h)) != Status::kOk) return s;
   if (h.num_vertices > options.max_vertices || h.num_triangles > options.max_triangles) {

@@ -69,7 +69,7 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
     if (mesh.indices[i] >= nv) return Status::kInvalidArgument;
   }
   auto progress = [&](float f) { return !params.progress || params.progress(f); };
-  const CodingOrder::Kind order = params.fast_decode ? CodingOrder::kVertexId : CodingOrder::kGreedy;
+  const CodingOrder::Kind order = CodingOrder::ForStream(params.fast_decode);
 
   // Descriptors.
   PayloadHeader h;

@@ -42,7 +42,11 @@ void WedgeTable::Count(const uint32_t* tri, size_t nt, uint32_t num_vertices,
     start[b + 1] += ok;
     start[c + 1] += ok;
   }
-  for (uint32_t v = 0; v < num_vertices; ++v) start[v + 1] += start[v];
+  max_wedges_ = 0;
+  for (uint32_t v = 0; v < num_vertices; ++v) {
+    max_wedges_ = start[v + 1] > max_wedges_ ? start[v + 1] : max_wedges_;
+    start[v + 1] += start[v];
+  }
   wedges_.reset(new Wedge[start[num_vertices]]);
 }
 
@@ -113,14 +117,9 @@ void WedgeTable::BuildFromOppositeVertices(const std::vector<uint32_t>& triangle
 
 CodingOrder::CodingOrder(const WedgeTable& wedges, Kind kind)
     : wedges_(wedges), kind_(kind), done_(wedges.num_vertices(), 0) {
-  size_t most = 0;
-  for (uint32_t v = 0; v < wedges.num_vertices(); ++v) {
-    const size_t n = size_t(wedges.end(v) - wedges.begin(v));
-    most = n > most ? n : most;
-  }
-  par_.resize(most + 1);
+  par_.resize(size_t(wedges.max_wedges()) + 1);
   if (kind == kVertexId) return;
-  moved_.resize(most + 1);
+  moved_.resize(size_t(wedges.max_wedges()) + 1);
   degree_.assign(wedges.num_vertices(), 0);
   log_.reset(new Visited[wedges.num_vertices()]);
   for (int l = 1; l < kLevels; ++l) {

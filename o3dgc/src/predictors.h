@@ -59,6 +59,7 @@ class WedgeTable {
   const Wedge* end(uint32_t v) const { return wedges_.get() + start_[v + 1]; }
   uint32_t num_vertices() const { return uint32_t(start_.size() - 1); }
   size_t num_wedges() const { return start_.empty() ? 0 : start_.back(); }
+  uint32_t max_wedges() const { return max_wedges_; }  // the most wedges of one vertex
 
  private:
   // Counts wedges per vertex into start_ (start_[v + 2]) and sizes wedges_; `counts` (optional)
@@ -67,6 +68,7 @@ class WedgeTable {
              const std::vector<uint32_t>* counts = nullptr);
   std::vector<uint32_t> start_;
   std::unique_ptr<Wedge[]> wedges_;  // every entry is written by Build (no zero fill first)
+  uint32_t max_wedges_ = 0;
 };
 
 // The order in which parallelogram-predicted values are coded, one of two:
@@ -89,6 +91,8 @@ class WedgeTable {
 class CodingOrder {
  public:
   enum Kind : uint8_t { kGreedy = 0, kVertexId = 1 };
+  // The kind a stream uses (the fast_decode flag of its header).
+  static Kind ForStream(bool fast_decode) { return fast_decode ? kVertexId : kGreedy; }
   CodingOrder(const WedgeTable& wedges, Kind kind);
   uint32_t Next();
   // Marks c coded and makes its uncoded neighbours candidates. Returns the number of c's
