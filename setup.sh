@@ -13,6 +13,7 @@ JOBS=$(nproc 2>/dev/null || echo 2)
 PACKAGES=(
   chromium
   clang
+  clang-format
   cmake
   emscripten
   g++

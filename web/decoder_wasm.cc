@@ -3,8 +3,8 @@
 //
 //   ptr = malloc(size); copy the stream to HEAPU8[ptr..]; h = hp_decode(ptr, size); free(ptr);
 //   if (hp_status(h) != 0) -> error hp_status_name(h)
-//   read hp_positions(h) (3 * hp_num_vertices floats), hp_indices(h) (3 * hp_num_triangles u32), ...
-//   hp_free(h);
+//   read hp_positions(h) (3 * hp_num_vertices floats), hp_indices(h) (3 * hp_num_triangles u32),
+//   ... hp_free(h);
 //
 // A handle is never null unless memory ran out (then the JS side reports "out_of_memory").
 // Every getter returns 0/null for an absent array or an out-of-range attribute index.
@@ -50,7 +50,9 @@ HP_EXPORT Result* hp_decode_ex(const uint8_t* data, size_t size, int verify_chec
   return r;
 }
 
-HP_EXPORT Result* hp_decode(const uint8_t* data, size_t size) { return hp_decode_ex(data, size, 1); }
+HP_EXPORT Result* hp_decode(const uint8_t* data, size_t size) {
+  return hp_decode_ex(data, size, 1);
+}
 
 HP_EXPORT void hp_free(Result* r) { delete r; }
 
@@ -76,7 +78,7 @@ HP_EXPORT uint32_t hp_float_attribute_dimension(const Result* r, uint32_t i) {
 }
 HP_EXPORT const float* hp_float_attribute_values(const Result* r, uint32_t i) {
   return i < r->mesh.float_attributes.size() ? DataOrNull(r->mesh.float_attributes[i].values)
-                                              : nullptr;
+                                             : nullptr;
 }
 
 HP_EXPORT uint32_t hp_num_int_attributes(const Result* r) {

@@ -47,7 +47,7 @@ namespace o3dgc {
 struct BitModel {
   uint16_t fast = 32768;  // probabilities of a 0, in 1/65536, within [kMinProb, 65536 - kMinProb]
   uint16_t slow = 32768;
-  uint8_t n = 0;          // observations so far (saturating at kWarmUp)
+  uint8_t n = 0;  // observations so far (saturating at kWarmUp)
 
   static constexpr int32_t kMinProb = 48;  // no decision costs less than ~0.001 bits
   static constexpr int kSlowShift = 7;
@@ -77,8 +77,9 @@ struct BitModel {
   }
   // The first kWarmUp updates, out of line so that the settled path stays small.
   O3DGC_NOINLINE void WarmUpdate(int bit) {
-    static constexpr uint8_t kSlow[kWarmUp] = {2, 2, 3, 3, 3, 4, 4, 4, 4, 4, 5, 5, 5, 5, 5, 5, 5, 5, 5, 5,
-                                               6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6};
+    static constexpr uint8_t kSlow[kWarmUp] = {2, 2, 3, 3, 3, 4, 4, 4, 4, 4, 5, 5, 5, 5,
+                                               5, 5, 5, 5, 5, 5, 6, 6, 6, 6, 6, 6, 6, 6,
+                                               6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6, 6};
     const int32_t zero = bit - 1;
     const int s = kSlow[n++];
     slow = uint16_t(Step(slow, zero, s));
@@ -184,14 +185,16 @@ O3DGC_INLINE void SymbolModelN<N>::Move(int symbol, int rate, int fast_rate) {
   __m128i* sp = reinterpret_cast<__m128i*>(slow);
   __m128i* fp = reinterpret_cast<__m128i*>(fast);
   for (int v = 0; v < N / 8; ++v) {
-    const __m128i tv = _mm_load_si128(t + v), sv = _mm_load_si128(sp + v), fv = _mm_load_si128(fp + v);
+    const __m128i tv = _mm_load_si128(t + v), sv = _mm_load_si128(sp + v),
+                  fv = _mm_load_si128(fp + v);
     _mm_store_si128(sp + v, _mm_add_epi16(sv, _mm_sra_epi16(_mm_sub_epi16(tv, sv), rs)));
     _mm_store_si128(fp + v, _mm_add_epi16(fv, _mm_sra_epi16(_mm_sub_epi16(tv, fv), rf)));
   }
 }
 
 template <int N>
-O3DGC_INLINE int SymbolModelN<N>::Find(uint32_t r, uint32_t code, uint32_t* lo, uint32_t* hi) const {
+O3DGC_INLINE int SymbolModelN<N>::Find(uint32_t r, uint32_t code, uint32_t* lo,
+                                       uint32_t* hi) const {
   // Compare the 16-bit cumulative sums (the last lane wraps to 0 and is masked off) with code / r:
   // the lanes at or below it form a prefix, whose length is the symbol. The sums are kept, after a
   // zero, for the interval's ends.
@@ -214,7 +217,9 @@ O3DGC_INLINE int SymbolModelN<N>::Find(uint32_t r, uint32_t code, uint32_t* lo, 
   } else {
     at_or_below = uint32_t(_mm_movemask_epi8(_mm_packs_epi16(le[0], le[N / 8 > 1 ? 1 : 0])));
     if (N == 32) {
-      at_or_below |= uint32_t(_mm_movemask_epi8(_mm_packs_epi16(le[N / 8 > 2 ? 2 : 0], le[N / 8 > 3 ? 3 : 0]))) << 16;
+      at_or_below |=
+          uint32_t(_mm_movemask_epi8(_mm_packs_epi16(le[N / 8 > 2 ? 2 : 0], le[N / 8 > 3 ? 3 : 0])))
+          << 16;
     }
   }
   at_or_below &= uint32_t((uint64_t(1) << (N - 1)) - 1);
@@ -234,7 +239,8 @@ O3DGC_INLINE void SymbolModelN<N>::Move(int symbol, int rate, int fast_rate) {
 }
 
 template <int N>
-O3DGC_INLINE int SymbolModelN<N>::Find(uint32_t r, uint32_t code, uint32_t* lo, uint32_t* hi) const {
+O3DGC_INLINE int SymbolModelN<N>::Find(uint32_t r, uint32_t code, uint32_t* lo,
+                                       uint32_t* hi) const {
   uint32_t q = code / r;
   q = q < 0xFFFFu ? q : 0xFFFFu;
   int symbol = 0;

@@ -86,7 +86,8 @@ class ContextModels {
   ContextModels(int components, int kinds)
       : kinds_(kinds), models_(size_t(components) * kinds * kMagContexts * kIntraContexts) {}
   Model& at(int component, int kind, int mag, int intra) {
-    return models_[((size_t(component) * kinds_ + kind) * kMagContexts + mag) * kIntraContexts + intra];
+    return models_[((size_t(component) * kinds_ + kind) * kMagContexts + mag) * kIntraContexts +
+                   intra];
   }
   // Distance between the same context of consecutive components.
   size_t component_stride() const { return size_t(kinds_) * kMagContexts * kIntraContexts; }
@@ -127,9 +128,9 @@ inline int32_t OctQuantize(double u, uint32_t maxq) {
 inline double OctDequantize(int32_t q, uint32_t maxq) { return double(q) / maxq * 2 - 1; }
 
 struct NormalGeometry {
-  const int32_t* positions;      // quantized, 3 per position vertex
-  double scale[3];               // position step per axis
-  const uint32_t* position_of;   // attribute vertex -> position vertex
+  const int32_t* positions;     // quantized, 3 per position vertex
+  double scale[3];              // position step per axis
+  const uint32_t* position_of;  // attribute vertex -> position vertex
 };
 
 // `wedges` (needed for kParallelogram) gives the predictions and, with `order`, the coding order;
@@ -152,7 +153,8 @@ void EncodeOctNormals(ArithmeticEncoder* enc, const MeshAdjacency& adj, const No
 Status DecodeOctNormals(ArithmeticDecoder* dec, const MeshAdjacency& adj, const NormalGeometry& geo,
                         uint32_t n, int bits, std::vector<float>* normals);
 
-void EncodeInts(ArithmeticEncoder* enc, const std::vector<int32_t>& values, int dim, Prediction mode);
+void EncodeInts(ArithmeticEncoder* enc, const std::vector<int32_t>& values, int dim,
+                Prediction mode);
 Status DecodeInts(ArithmeticDecoder* dec, uint32_t n, int dim, Prediction mode,
                   std::vector<int32_t>* values);
 

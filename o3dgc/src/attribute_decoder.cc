@@ -29,9 +29,8 @@ Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges,
     int64_t pred[kDim];
     const uint32_t previous = order.previous();
     const int n_par = order.Visit(c);
-    const PredictionContext pc =
-        PredictFromParallelograms<kDim>(order.parallelograms(), n_par, wedges, order.done(), c,
-                                        previous, q, mags, pred);
+    const PredictionContext pc = PredictFromParallelograms<kDim>(
+        order.parallelograms(), n_par, wedges, order.done(), c, previous, q, mags, pred);
     const int mctx = MagContext(pc.neighbour_magnitude) >> coarse;
     // Component k's context: same (kind, magnitude), its own component (all share component 0
     // for tiny meshes), the previous component's residual (not for small meshes).
@@ -68,21 +67,24 @@ Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges,
 // The residual coding (RawLowBits) as a template argument, so that the loop has no test for it.
 template <int kDim>
 Status DecodeParallelogramFor(bool raw, ArithmeticDecoder* dec, const WedgeTable& wedges,
-                              CodingOrder::Kind kind, int64_t maxq, int coarse, ResidualModels& models,
-                              int32_t* q, uint32_t* mags) {
+                              CodingOrder::Kind kind, int64_t maxq, int coarse,
+                              ResidualModels& models, int32_t* q, uint32_t* mags) {
   ClassShifts shifts;
   if (!raw) {
-    return DecodeParallelogram<kDim, false, false>(dec, wedges, kind, maxq, coarse, models, shifts, q, mags);
+    return DecodeParallelogram<kDim, false, false>(dec, wedges, kind, maxq, coarse, models, shifts,
+                                                   q, mags);
   }
   DecodeClassShifts(dec, &shifts);
   // Positions (and normals predicted as values) have a loop of their own for tables of zeros; other
   // attributes share the loop with shifts (each loop adds about 1.6 KB to the gzip'd wasm decoder).
   if constexpr (kDim == 3) {
     if (!shifts.any()) {
-      return DecodeParallelogram<kDim, true, false>(dec, wedges, kind, maxq, coarse, models, shifts, q, mags);
+      return DecodeParallelogram<kDim, true, false>(dec, wedges, kind, maxq, coarse, models, shifts,
+                                                    q, mags);
     }
   }
-  return DecodeParallelogram<kDim, true, true>(dec, wedges, kind, maxq, coarse, models, shifts, q, mags);
+  return DecodeParallelogram<kDim, true, true>(dec, wedges, kind, maxq, coarse, models, shifts, q,
+                                               mags);
 }
 
 }  // namespace
@@ -110,8 +112,10 @@ Status DecodeQuantized(ArithmeticDecoder* dec_in, const WedgeTable* wedges, uint
     const int mctx = MagContext(pc.neighbour_magnitude) >> coarse;
     int64_t r[4];
     for (int k = 0; k < dim; ++k) {
-      ResidualModel& m = models->at(coarse == 2 ? 0 : k, pc.kind, mctx, (k && !coarse) ? IntraContext(r[k - 1]) : 0);
-      r[k] = raw ? DecodeResidual<true>(*dec, m, models->escape) : DecodeResidual<false>(*dec, m, models->escape);
+      ResidualModel& m = models->at(coarse == 2 ? 0 : k, pc.kind, mctx,
+                                    (k && !coarse) ? IntraContext(r[k - 1]) : 0);
+      r[k] = raw ? DecodeResidual<true>(*dec, m, models->escape)
+                 : DecodeResidual<false>(*dec, m, models->escape);
       const int64_t v = pred[k] + r[k];
       if (v < 0 || v > maxq) return false;
       q[size_t(c) * dim + k] = int32_t(v);
@@ -134,10 +138,18 @@ Status DecodeQuantized(ArithmeticDecoder* dec_in, const WedgeTable* wedges, uint
   const double* geo = (geometry && dim == 2) ? geometry->data() : nullptr;
   if (!geo) {
     switch (dim) {
-      case 1: return DecodeParallelogramFor<1>(raw, &*dec, *wedges, order_kind, maxq, coarse, *models, q.data(), mags.data());
-      case 2: return DecodeParallelogramFor<2>(raw, &*dec, *wedges, order_kind, maxq, coarse, *models, q.data(), mags.data());
-      case 3: return DecodeParallelogramFor<3>(raw, &*dec, *wedges, order_kind, maxq, coarse, *models, q.data(), mags.data());
-      default: return DecodeParallelogramFor<4>(raw, &*dec, *wedges, order_kind, maxq, coarse, *models, q.data(), mags.data());
+      case 1:
+        return DecodeParallelogramFor<1>(raw, &*dec, *wedges, order_kind, maxq, coarse, *models,
+                                         q.data(), mags.data());
+      case 2:
+        return DecodeParallelogramFor<2>(raw, &*dec, *wedges, order_kind, maxq, coarse, *models,
+                                         q.data(), mags.data());
+      case 3:
+        return DecodeParallelogramFor<3>(raw, &*dec, *wedges, order_kind, maxq, coarse, *models,
+                                         q.data(), mags.data());
+      default:
+        return DecodeParallelogramFor<4>(raw, &*dec, *wedges, order_kind, maxq, coarse, *models,
+                                         q.data(), mags.data());
     }
   }
   CodingOrder order(*wedges, order_kind);
@@ -146,9 +158,9 @@ Status DecodeQuantized(ArithmeticDecoder* dec_in, const WedgeTable* wedges, uint
     int64_t pred[4];
     int64_t alt[2];
     bool ambiguous;
-    const PredictionContext pc = PredictAttributeVertex(*wedges, order.done(), c, order.previous(),
-                                                        q.data(), dim, geo, mags.data(), maxq, pred,
-                                                        alt, &ambiguous);
+    const PredictionContext pc =
+        PredictAttributeVertex(*wedges, order.done(), c, order.previous(), q.data(), dim, geo,
+                               mags.data(), maxq, pred, alt, &ambiguous);
     if (ambiguous && dec->Decode(models->side)) {
       pred[0] = alt[0];
       pred[1] = alt[1];
@@ -159,8 +171,9 @@ Status DecodeQuantized(ArithmeticDecoder* dec_in, const WedgeTable* wedges, uint
   return dec->failed() ? Status::kTruncated : Status::kOk;
 }
 
-Status DecodeOctNormals(ArithmeticDecoder* dec_in, const MeshAdjacency& adj, const NormalGeometry& geo,
-                        uint32_t n, int bits, std::vector<float>* normals) {
+Status DecodeOctNormals(ArithmeticDecoder* dec_in, const MeshAdjacency& adj,
+                        const NormalGeometry& geo, uint32_t n, int bits,
+                        std::vector<float>* normals) {
   ScopedDecoder dec(dec_in);
   const uint32_t maxq = uint32_t((uint64_t(1) << bits) - 1);
   std::unique_ptr<NormalModels> models(new NormalModels(2, 1));

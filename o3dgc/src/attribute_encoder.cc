@@ -36,7 +36,8 @@ std::vector<double> AttributeGeometry(const NormalGeometry& geo, uint32_t n) {
   std::vector<double> g(size_t(n) * 3);
   for (uint32_t v = 0; v < n; ++v) {
     for (int k = 0; k < 3; ++k) {
-      g[3 * size_t(v) + k] = double(geo.positions[3 * size_t(geo.position_of[v]) + k]) * geo.scale[k];
+      g[3 * size_t(v) + k] =
+          double(geo.positions[3 * size_t(geo.position_of[v]) + k]) * geo.scale[k];
     }
   }
   return g;
@@ -99,9 +100,8 @@ void EncodeParallelogram(ArithmeticEncoder* enc, const WedgeTable& wedges, Codin
     int64_t pred[kDim];
     const uint32_t previous = order.previous();
     const int n_par = order.Visit(c);
-    const PredictionContext pc =
-        PredictFromParallelograms<kDim>(order.parallelograms(), n_par, wedges, order.done(), c,
-                                        previous, q, mags, pred);
+    const PredictionContext pc = PredictFromParallelograms<kDim>(
+        order.parallelograms(), n_par, wedges, order.done(), c, previous, q, mags, pred);
     Vertex v;
     v.kind = uint8_t(pc.kind);
     v.mctx = uint8_t(MagContext(pc.neighbour_magnitude) >> coarse);
@@ -136,8 +136,8 @@ void EncodeParallelogram(ArithmeticEncoder* enc, const WedgeTable& wedges, Codin
 // The residual coding (RawLowBits) as a template argument, so that the loop has no test for it.
 template <int kDim>
 void EncodeParallelogramFor(bool raw, ArithmeticEncoder* enc, const WedgeTable& wedges,
-                            CodingOrder::Kind kind, int64_t maxq, int coarse, ResidualModels& models,
-                            const int32_t* q, uint32_t* mags) {
+                            CodingOrder::Kind kind, int64_t maxq, int coarse,
+                            ResidualModels& models, const int32_t* q, uint32_t* mags) {
   if (raw) {
     EncodeParallelogram<kDim, true>(enc, wedges, kind, maxq, coarse, models, q, mags);
   } else {
@@ -165,7 +165,8 @@ void EncodeQuantized(ArithmeticEncoder* enc, const WedgeTable* wedges,
     int64_t r[4];
     for (int k = 0; k < dim; ++k) {
       r[k] = int64_t(q[size_t(c) * dim + k]) - pred[k];
-      ResidualModel& m = models->at(coarse == 2 ? 0 : k, pc.kind, mctx, (k && !coarse) ? IntraContext(r[k - 1]) : 0);
+      ResidualModel& m = models->at(coarse == 2 ? 0 : k, pc.kind, mctx,
+                                    (k && !coarse) ? IntraContext(r[k - 1]) : 0);
       if (raw) {
         EncodeResidual<true>(*enc, m, models->escape, r[k]);
       } else {
@@ -188,10 +189,18 @@ void EncodeQuantized(ArithmeticEncoder* enc, const WedgeTable* wedges,
   const double* geo = (geometry && dim == 2) ? geometry->data() : nullptr;
   if (!geo) {
     switch (dim) {
-      case 1: return EncodeParallelogramFor<1>(raw, enc, *wedges, order_kind, maxq, coarse, *models, q.data(), mags.data());
-      case 2: return EncodeParallelogramFor<2>(raw, enc, *wedges, order_kind, maxq, coarse, *models, q.data(), mags.data());
-      case 3: return EncodeParallelogramFor<3>(raw, enc, *wedges, order_kind, maxq, coarse, *models, q.data(), mags.data());
-      default: return EncodeParallelogramFor<4>(raw, enc, *wedges, order_kind, maxq, coarse, *models, q.data(), mags.data());
+      case 1:
+        return EncodeParallelogramFor<1>(raw, enc, *wedges, order_kind, maxq, coarse, *models,
+                                         q.data(), mags.data());
+      case 2:
+        return EncodeParallelogramFor<2>(raw, enc, *wedges, order_kind, maxq, coarse, *models,
+                                         q.data(), mags.data());
+      case 3:
+        return EncodeParallelogramFor<3>(raw, enc, *wedges, order_kind, maxq, coarse, *models,
+                                         q.data(), mags.data());
+      default:
+        return EncodeParallelogramFor<4>(raw, enc, *wedges, order_kind, maxq, coarse, *models,
+                                         q.data(), mags.data());
     }
   }
   CodingOrder order(*wedges, order_kind);
@@ -199,9 +208,9 @@ void EncodeQuantized(ArithmeticEncoder* enc, const WedgeTable* wedges,
     int64_t pred[4];
     int64_t alt[2];
     bool ambiguous;
-    const PredictionContext pc = PredictAttributeVertex(*wedges, order.done(), c, order.previous(),
-                                                        q.data(), dim, geo, mags.data(), maxq, pred,
-                                                        alt, &ambiguous);
+    const PredictionContext pc =
+        PredictAttributeVertex(*wedges, order.done(), c, order.previous(), q.data(), dim, geo,
+                               mags.data(), maxq, pred, alt, &ambiguous);
     if (ambiguous) {
       int64_t da = 0, db = 0;
       for (int k = 0; k < 2; ++k) {

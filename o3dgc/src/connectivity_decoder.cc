@@ -13,8 +13,12 @@ class Decoder {
  public:
   Decoder(ArithmeticDecoder* dec, size_t num_triangles, size_t max_vertices,
           std::vector<uint32_t>* out, bool keep_edges)
-      : dec_(*dec), nt_(num_triangles), max_vertices_(max_vertices), out_(*out),
-        m_(new ConnectivityModels), keep_edges_(keep_edges) {}
+      : dec_(*dec),
+        nt_(num_triangles),
+        max_vertices_(max_vertices),
+        out_(*out),
+        m_(new ConnectivityModels),
+        keep_edges_(keep_edges) {}
 
   Status Run() {
     ScopedDecoder scoped(&dec_);  // the state in registers for the loop

@@ -17,8 +17,13 @@ class Encoder {
  public:
   Encoder(const std::vector<uint32_t>& tris, uint32_t num_vertices, ArithmeticEncoder* enc,
           ConnectivityEncoding* out, bool keep_edges)
-      : tris_(tris), nt_(tris.size() / 3), nv_in_(num_vertices), enc_(*enc), out_(*out),
-        m_(new ConnectivityModels), keep_edges_(keep_edges) {}
+      : tris_(tris),
+        nt_(tris.size() / 3),
+        nv_in_(num_vertices),
+        enc_(*enc),
+        out_(*out),
+        m_(new ConnectivityModels),
+        keep_edges_(keep_edges) {}
 
   void Run() {
     Classify();
@@ -149,7 +154,8 @@ class Encoder {
     out_.opposite_vertices = front_.TakeOppositeVertices(nt_);
     if (!has_copies_ && degenerate_.empty()) {
       out_.vertex_triangles.resize(front_.num_vertices());
-      for (uint32_t v = 0; v < front_.num_vertices(); ++v) out_.vertex_triangles[v] = front_.degree(v);
+      for (uint32_t v = 0; v < front_.num_vertices(); ++v)
+        out_.vertex_triangles[v] = front_.degree(v);
     }
   }
 

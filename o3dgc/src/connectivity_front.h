@@ -26,7 +26,13 @@ constexpr int kConnectivityContexts = 64;
 // What happens at a gate, one multi-symbol decision per gate (contexts from Front::Look): nothing
 // (the gate is a boundary, it closes), or a triangle attaches whose third vertex is new, the
 // right or the left candidate, or another earlier vertex (then coded as a back reference).
-enum GateOutcome : int { kGateClose = 0, kGateNew = 1, kGateRight = 2, kGateLeft = 3, kGateOther = 4 };
+enum GateOutcome : int {
+  kGateClose = 0,
+  kGateNew = 1,
+  kGateRight = 2,
+  kGateLeft = 3,
+  kGateOther = 4
+};
 constexpr int kGateOutcomes = 5;
 using GateModel = SymbolModelN<8>;
 

@@ -59,7 +59,8 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
   // The neighbour triangles themselves are needed only by parallelogram-predicted attributes
   // (across seams); positions use the opposite vertices.
   bool attribute_wedges = h.has_normals && h.normal.prediction == Prediction::kParallelogram;
-  for (const AttributeDesc& d : h.floats) attribute_wedges |= d.prediction == Prediction::kParallelogram;
+  for (const AttributeDesc& d : h.floats)
+    attribute_wedges |= d.prediction == Prediction::kParallelogram;
   if ((s = DecodeConnectivity(&dec, nt, nv, &tris, &nc, attribute_wedges ? &opposite : nullptr,
                               &opposite_vertices, &vertex_triangles)) != Status::kOk) {
     return s;
@@ -175,7 +176,8 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
   h.position.quant.DequantizeAll(qpos.data(), has_seams ? welded_of.data() : nullptr, nv,
                                  m.positions.data());
   MeshAdjacency attr_adj;
-  if (h.has_normals && h.normal.prediction == Prediction::kSurfaceNormal) attr_adj.Build(attr_tris, nv);
+  if (h.has_normals && h.normal.prediction == Prediction::kSurfaceNormal)
+    attr_adj.Build(attr_tris, nv);
   WedgeTable attr_wedges;
   bool attr_wedges_built = false;
   NormalGeometry geo;
@@ -194,8 +196,8 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
       attr_wedges.Build(attr_tris, nv, opposite, has_seams);
       attr_wedges_built = true;
     }
-    const Status st = DecodeQuantized(&dec, &attr_wedges, nv, int(d.dimension), d.bits, d.prediction,
-                                      order, &q, texcoord ? &attr_geometry : nullptr);
+    const Status st = DecodeQuantized(&dec, &attr_wedges, nv, int(d.dimension), d.bits,
+                                      d.prediction, order, &q, texcoord ? &attr_geometry : nullptr);
     if (st != Status::kOk) return st;
     values->resize(q.size());
     d.quant.DequantizeAll(q.data(), nullptr, nv, values->data());
@@ -347,16 +349,26 @@ Status ReadStreamInfo(const uint8_t* data, size_t size, StreamInfo* info) {
 
 const char* StatusName(Status status) {
   switch (status) {
-    case Status::kOk: return "ok";
-    case Status::kInvalidArgument: return "invalid_argument";
-    case Status::kUnsupported: return "unsupported";
-    case Status::kBadMagic: return "bad_magic";
-    case Status::kBadVersion: return "bad_version";
-    case Status::kTruncated: return "truncated";
-    case Status::kCorrupt: return "corrupt";
-    case Status::kChecksumMismatch: return "checksum_mismatch";
-    case Status::kLimitExceeded: return "limit_exceeded";
-    case Status::kCancelled: return "cancelled";
+    case Status::kOk:
+      return "ok";
+    case Status::kInvalidArgument:
+      return "invalid_argument";
+    case Status::kUnsupported:
+      return "unsupported";
+    case Status::kBadMagic:
+      return "bad_magic";
+    case Status::kBadVersion:
+      return "bad_version";
+    case Status::kTruncated:
+      return "truncated";
+    case Status::kCorrupt:
+      return "corrupt";
+    case Status::kChecksumMismatch:
+      return "checksum_mismatch";
+    case Status::kLimitExceeded:
+      return "limit_exceeded";
+    case Status::kCancelled:
+      return "cancelled";
   }
   return "unknown";
 }

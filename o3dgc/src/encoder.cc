@@ -84,8 +84,8 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
                               ? Prediction::kParallelogram
                               : params.position_prediction;
   h.position.range = params.position_range;
-  std::vector<float> positions = nv ? Gather(mesh.positions, mesh.position_stride, 3, nv)
-                                    : std::vector<float>();
+  std::vector<float> positions =
+      nv ? Gather(mesh.positions, mesh.position_stride, 3, nv) : std::vector<float>();
   if (!AllFinite(positions)) return Status::kInvalidArgument;
   std::vector<float> normals;
   if (h.has_normals) {
@@ -148,7 +148,8 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
   for (size_t i = 0; i < h.floats.size(); ++i) fit(&h.floats[i], floats[i]);
   // Values near FLT_MAX can give a range whose end overflows: not representable in a stream.
   if (!h.position.quant.Valid()) return Status::kUnsupported;
-  if (h.has_normals && h.normal.prediction != Prediction::kSurfaceNormal && !h.normal.quant.Valid()) {
+  if (h.has_normals && h.normal.prediction != Prediction::kSurfaceNormal &&
+      !h.normal.quant.Valid()) {
     return Status::kUnsupported;
   }
   for (const AttributeDesc& d : h.floats) {
@@ -182,7 +183,8 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
   // The neighbour triangles themselves are needed only by parallelogram-predicted attributes
   // besides positions (across seams; positions use the opposite vertices).
   bool attribute_wedges = h.has_normals && h.normal.prediction == Prediction::kParallelogram;
-  for (const AttributeDesc& d : h.floats) attribute_wedges |= d.prediction == Prediction::kParallelogram;
+  for (const AttributeDesc& d : h.floats)
+    attribute_wedges |= d.prediction == Prediction::kParallelogram;
   EncodeConnectivity(welded_tris, num_welded, &enc, &conn, attribute_wedges);
   const uint32_t nc = uint32_t(conn.old_of_new.size());
   std::vector<uint32_t> welded_new(num_welded, kNone);
@@ -250,7 +252,8 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
   }
   std::vector<uint32_t> rep_of_welded(nc, kNone);
   for (uint32_t i = 0; i < old_of_orig.size(); ++i) {
-    if (rep_of_welded[welded_of_orig[i]] == kNone) rep_of_welded[welded_of_orig[i]] = old_of_orig[i];
+    if (rep_of_welded[welded_of_orig[i]] == kNone)
+      rep_of_welded[welded_of_orig[i]] = old_of_orig[i];
   }
   uint32_t nw = nc;
   for (size_t v = 0; v < nv; ++v) {
@@ -284,7 +287,8 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
   std::vector<int32_t> qpos(size_t(nw) * 3);
   for (uint32_t w = 0; w < nw; ++w) {
     for (uint32_t k = 0; k < 3; ++k) {
-      qpos[3 * size_t(w) + k] = h.position.quant.Quantize(positions[3 * size_t(rep_of_welded[w]) + k], k);
+      qpos[3 * size_t(w) + k] =
+          h.position.quant.Quantize(positions[3 * size_t(rep_of_welded[w]) + k], k);
     }
   }
   {

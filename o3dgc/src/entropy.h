@@ -164,7 +164,7 @@ struct ResidualModel {
   SymbolModelN<kResidualSymbols> magnitude;
   BitModel sign;                          // adaptive coding only
   BitModel mantissa[kDirectClasses + 1];  // the bit below the leading one, by k (larger: the last)
-  SymbolModelN<kResidualSymbols> high;  // the class above the direct ones after an escape
+  SymbolModelN<kResidualSymbols> high;    // the class above the direct ones after an escape
   // The class 0..shift after the first symbol (shift > 0).
   SymbolModelN<kResidualSymbols> low{kMaxClassShift + 1};
 };

@@ -26,7 +26,8 @@ class KeyTable {
     const uint8_t* key = keys_ + 12 * size_t(i);
     uint32_t k[3];
     std::memcpy(k, key, 12);
-    uint64_t h = (uint64_t(k[0]) * 0x9E3779B97F4A7C15ull) ^ (uint64_t(k[1]) * 0xC2B2AE3D27D4EB4Full) ^
+    uint64_t h = (uint64_t(k[0]) * 0x9E3779B97F4A7C15ull) ^
+                 (uint64_t(k[1]) * 0xC2B2AE3D27D4EB4Full) ^
                  (uint64_t(k[2]) * 0x165667B19E3779F9ull);
     h ^= h >> 29;
     const uint32_t tag = uint32_t(h >> 32);

@@ -5,9 +5,9 @@ namespace o3dgc {
 namespace {
 
 constexpr uint32_t kMinLength = 1u << 24;
-constexpr uint32_t kBitShift = 13;                 // bit probabilities in 1/8192
+constexpr uint32_t kBitShift = 13;  // bit probabilities in 1/8192
 constexpr uint32_t kBitMaxCount = 1u << kBitShift;
-constexpr uint32_t kDataShift = 15;                // distributions in 1/32768
+constexpr uint32_t kDataShift = 15;  // distributions in 1/32768
 constexpr uint32_t kDataMaxCount = 1u << kDataShift;
 
 }  // namespace

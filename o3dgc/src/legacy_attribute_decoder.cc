@@ -92,13 +92,38 @@ float Height(float u, float w) {
 // Inverse of SphereToCube for a unit-length normal; false for a face outside 0..5.
 bool CubeToSphere(float a, float b, int8_t face, float* n) {
   switch (face) {
-    case 0: n[0] = a; n[1] = b; n[2] = Height(n[0], n[1]); return true;
-    case 1: n[0] = -a; n[1] = -b; n[2] = -Height(n[0], n[1]); return true;
-    case 2: n[2] = a; n[0] = b; n[1] = Height(n[0], n[2]); return true;
-    case 3: n[2] = -a; n[0] = -b; n[1] = -Height(n[0], n[2]); return true;
-    case 4: n[1] = a; n[2] = b; n[0] = Height(n[1], n[2]); return true;
-    case 5: n[1] = -a; n[2] = -b; n[0] = -Height(n[1], n[2]); return true;
-    default: return false;
+    case 0:
+      n[0] = a;
+      n[1] = b;
+      n[2] = Height(n[0], n[1]);
+      return true;
+    case 1:
+      n[0] = -a;
+      n[1] = -b;
+      n[2] = -Height(n[0], n[1]);
+      return true;
+    case 2:
+      n[2] = a;
+      n[0] = b;
+      n[1] = Height(n[0], n[2]);
+      return true;
+    case 3:
+      n[2] = -a;
+      n[0] = -b;
+      n[1] = -Height(n[0], n[2]);
+      return true;
+    case 4:
+      n[1] = a;
+      n[2] = b;
+      n[0] = Height(n[1], n[2]);
+      return true;
+    case 5:
+      n[1] = -a;
+      n[2] = -b;
+      n[0] = -Height(n[1], n[2]);
+      return true;
+    default:
+      return false;
   }
 }
 

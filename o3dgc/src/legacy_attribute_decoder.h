@@ -48,10 +48,10 @@ class LegacyAttributeDecoder {
   const std::vector<uint32_t>& triangles_;
   uint32_t num_coords_;
   std::vector<uint32_t> offsets_, incident_;  // vertex -> triangles (CSR)
-  std::vector<int64_t> coords_;              // quantized positions, 3 per vertex
-  std::vector<int8_t> orientation_;          // surface-normal mode: cube face per vertex
-  std::vector<float> normal_prediction_;     // surface-normal mode: 2 per vertex
-  uint64_t work_ = 0;                        // parallelogram search steps (bounded)
+  std::vector<int64_t> coords_;               // quantized positions, 3 per vertex
+  std::vector<int8_t> orientation_;           // surface-normal mode: cube face per vertex
+  std::vector<float> normal_prediction_;      // surface-normal mode: 2 per vertex
+  uint64_t work_ = 0;                         // parallelogram search steps (bounded)
 };
 
 }  // namespace o3dgc

@@ -101,7 +101,8 @@ Status LoadAscii(LegacyReader* r, BinaryKind kind, size_t limit, SymbolArray* ou
 struct Incidence {
   std::vector<uint32_t> head, count, next, tri;
   uint32_t capacity = 0;
-  explicit Incidence(uint32_t nv, uint32_t cap, size_t entries) : head(nv, kNone), count(nv, 0), capacity(cap) {
+  explicit Incidence(uint32_t nv, uint32_t cap, size_t entries)
+      : head(nv, kNone), count(nv, 0), capacity(cap) {
     next.reserve(entries);
     tri.reserve(entries);
   }
@@ -120,8 +121,14 @@ struct Incidence {
 class TfanDecoder {
  public:
   TfanDecoder(uint32_t nv, uint32_t nt, uint32_t capacity, SymbolArray* arrays)
-      : nv_(nv), nt_(nt), inc_(nv, capacity, 3 * size_t(nt)), fans_(arrays[0]), degrees_(arrays[1]),
-        configs_(arrays[2]), ops_(arrays[3]), indices_(arrays[4]) {
+      : nv_(nv),
+        nt_(nt),
+        inc_(nv, capacity, 3 * size_t(nt)),
+        fans_(arrays[0]),
+        degrees_(arrays[1]),
+        configs_(arrays[2]),
+        ops_(arrays[3]),
+        indices_(arrays[4]) {
     triangles_.reserve(3 * size_t(nt));
   }
 
@@ -277,7 +284,7 @@ Status DecodeLegacyConnectivity(LegacyReader* r, uint32_t num_vertices, uint32_t
   // Fans per vertex, degrees, configurations, operation bits, references, triangle order.
   const BinaryKind kinds[6] = {BinaryKind::kIntEG, BinaryKind::kIntEG, BinaryKind::kUInt,
                                BinaryKind::kBit,   BinaryKind::kIntEG, BinaryKind::kIntEG};
-  const BinaryKind ascii_kinds[6] = {BinaryKind::kUInt, BinaryKind::kUInt, BinaryKind::kUInt,
+  const BinaryKind ascii_kinds[6] = {BinaryKind::kUInt, BinaryKind::kUInt,  BinaryKind::kUInt,
                                      BinaryKind::kBit,  BinaryKind::kIntEG, BinaryKind::kUInt};
   const uint32_t alphabet[6] = {4, 16, 10, 0, 8, 16};
   for (int i = 0; i < (has_order ? 6 : 5); ++i) {

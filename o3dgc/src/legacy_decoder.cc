@@ -12,11 +12,16 @@ namespace {
 
 Semantic FloatSemantic(uint8_t type) {
   switch (LegacyFloatType(type)) {
-    case LegacyFloatType::kNormal: return Semantic::kNormal;
-    case LegacyFloatType::kColor: return Semantic::kColor;
-    case LegacyFloatType::kTexCoord: return Semantic::kTexCoord;
-    case LegacyFloatType::kWeight: return Semantic::kWeight;
-    default: return Semantic::kGeneric;
+    case LegacyFloatType::kNormal:
+      return Semantic::kNormal;
+    case LegacyFloatType::kColor:
+      return Semantic::kColor;
+    case LegacyFloatType::kTexCoord:
+      return Semantic::kTexCoord;
+    case LegacyFloatType::kWeight:
+      return Semantic::kWeight;
+    default:
+      return Semantic::kGeneric;
   }
 }
 
@@ -27,7 +32,8 @@ Semantic IntSemantic(uint8_t type) {
 void FillInfo(const LegacyHeader& h, size_t size, StreamInfo* info) {
   *info = StreamInfo();
   info->format = StreamFormat::kOpen3dgc2013;
-  info->stream_type = h.encoding == LegacyEncoding::kAscii ? StreamType::kAscii : StreamType::kBinary;
+  info->stream_type =
+      h.encoding == LegacyEncoding::kAscii ? StreamType::kAscii : StreamType::kBinary;
   info->version = 0;
   info->num_vertices = size_t(h.coord.count);
   info->num_triangles = size_t(h.num_triangles);
@@ -129,7 +135,8 @@ Status DecodeLegacy(const uint8_t* data, size_t size, const DecodeOptions& optio
   } else {
     m.indices.resize(conn.triangles.size());
     for (size_t i = 0; i < conn.placement.size(); ++i) {
-      for (size_t k = 0; k < 3; ++k) m.indices[3 * size_t(conn.placement[i]) + k] = conn.triangles[3 * i + k];
+      for (size_t k = 0; k < 3; ++k)
+        m.indices[3 * size_t(conn.placement[i]) + k] = conn.triangles[3 * i + k];
     }
   }
   *out = std::move(m);

@@ -78,7 +78,12 @@ inline int64_t LegacyUnsignedToSigned(uint64_t u) {
 
 // The original's float attribute types and what they mean here.
 enum class LegacyFloatType : uint8_t {
-  kUnknown = 0, kPosition = 1, kNormal = 2, kColor = 3, kTexCoord = 4, kWeight = 5,
+  kUnknown = 0,
+  kPosition = 1,
+  kNormal = 2,
+  kColor = 3,
+  kTexCoord = 4,
+  kWeight = 5,
 };
 enum class LegacyIntType : uint8_t { kUnknown = 0, kIndex = 1, kJointId = 2, kIndexBufferId = 3 };
 
@@ -87,24 +92,24 @@ constexpr uint32_t kLegacyMaxAttributes = 256;
 constexpr uint32_t kLegacyMaxDimension = 31;
 
 struct LegacyArrayDesc {
-  uint64_t count = 0;    // elements (vertices) in the array
+  uint64_t count = 0;  // elements (vertices) in the array
   uint32_t dimension = 0;
-  uint8_t type = 0;      // LegacyFloatType / LegacyIntType
-  int bits = 0;          // quantization bits (float arrays)
+  uint8_t type = 0;  // LegacyFloatType / LegacyIntType
+  int bits = 0;      // quantization bits (float arrays)
   float min[kLegacyMaxDimension] = {};
   float max[kLegacyMaxDimension] = {};
 };
 
 struct LegacyHeader {
   LegacyEncoding encoding = LegacyEncoding::kBinary;
-  uint64_t stream_size = 0;   // bytes of the whole SC3DMC stream, start code included
-  uint8_t encode_mode = 0;    // 2 = TFAN, the only mode the original decoder implements
+  uint64_t stream_size = 0;  // bytes of the whole SC3DMC stream, start code included
+  uint8_t encode_mode = 0;   // 2 = TFAN, the only mode the original decoder implements
   uint64_t num_triangles = 0;
-  LegacyArrayDesc coord;      // dimension 3
-  LegacyArrayDesc normal;     // dimension 3
+  LegacyArrayDesc coord;   // dimension 3
+  LegacyArrayDesc normal;  // dimension 3
   std::vector<LegacyArrayDesc> floats;
   std::vector<LegacyArrayDesc> ints;
-  size_t header_bytes = 0;    // where the payload starts
+  size_t header_bytes = 0;  // where the payload starts
 };
 
 // Parses the header. kBadMagic if there is no start code, kTruncated if the stream ends inside the

@@ -24,10 +24,10 @@ namespace o3dgc {
 struct AttributeDesc {
   Semantic semantic = Semantic::kGeneric;
   uint32_t dimension = 0;
-  int bits = 0;            // quantization bits (octahedral bits for surface-normal normals; 0 for ints)
+  int bits = 0;  // quantization bits (octahedral bits for surface-normal normals; 0 for ints)
   Prediction prediction = Prediction::kNone;
   RangeMode range = RangeMode::kPerAxis;
-  Quantizer quant;         // unused for ints and surface-normal normals
+  Quantizer quant;  // unused for ints and surface-normal normals
 };
 
 struct PayloadHeader {
@@ -67,7 +67,9 @@ struct SideModels {
   EGModel group_value;
 };
 
-inline uint64_t ZigZag(int64_t v) { return v < 0 ? (uint64_t(-(v + 1)) << 1) | 1 : uint64_t(v) << 1; }
+inline uint64_t ZigZag(int64_t v) {
+  return v < 0 ? (uint64_t(-(v + 1)) << 1) | 1 : uint64_t(v) << 1;
+}
 inline int64_t UnZigZag(uint64_t u) { return (u & 1) ? -int64_t(u >> 1) - 1 : int64_t(u >> 1); }
 
 }  // namespace o3dgc

@@ -154,10 +154,14 @@ PredictionContext PredictParallelogram(const WedgeTable& wedges, const uint8_t* 
                                        uint32_t previous, const int32_t* values, int dim,
                                        const uint32_t* magnitudes, int64_t* pred) {
   switch (dim) {
-    case 1: return PredictParallelogramT<1>(wedges, done, c, previous, values, magnitudes, pred);
-    case 2: return PredictParallelogramT<2>(wedges, done, c, previous, values, magnitudes, pred);
-    case 3: return PredictParallelogramT<3>(wedges, done, c, previous, values, magnitudes, pred);
-    default: return PredictParallelogramT<4>(wedges, done, c, previous, values, magnitudes, pred);
+    case 1:
+      return PredictParallelogramT<1>(wedges, done, c, previous, values, magnitudes, pred);
+    case 2:
+      return PredictParallelogramT<2>(wedges, done, c, previous, values, magnitudes, pred);
+    case 3:
+      return PredictParallelogramT<3>(wedges, done, c, previous, values, magnitudes, pred);
+    default:
+      return PredictParallelogramT<4>(wedges, done, c, previous, values, magnitudes, pred);
   }
 }
 
@@ -231,8 +235,8 @@ PredictionContext PredictTexCoord(const WedgeTable& wedges, const uint8_t* done,
       ++n_mag;
     }
   }
-  ctx.neighbour_magnitude = n_mag ? mag / uint64_t(n_mag)
-                                  : (previous != kNoVertex ? magnitudes[previous] : 0);
+  ctx.neighbour_magnitude =
+      n_mag ? mag / uint64_t(n_mag) : (previous != kNoVertex ? magnitudes[previous] : 0);
   auto round_to = [](double x) {
     if (!(x > -1e12)) x = -1e12;
     if (!(x < 1e12)) x = 1e12;
@@ -295,12 +299,14 @@ void OctDecode(double u, double v, double n[3]) {
 PredictionContext PredictAttributeVertex(const WedgeTable& wedges, const uint8_t* done, uint32_t c,
                                          uint32_t previous, const int32_t* values, int dim,
                                          const double* geometry, const uint32_t* magnitudes,
-                                         int64_t maxq, int64_t pred[4], int64_t alt[2], bool* ambiguous) {
+                                         int64_t maxq, int64_t pred[4], int64_t alt[2],
+                                         bool* ambiguous) {
   PredictionContext pc;
   *ambiguous = false;
   alt[0] = alt[1] = 0;
   if (geometry) {
-    pc = PredictTexCoord(wedges, done, c, previous, values, geometry, magnitudes, pred, alt, ambiguous);
+    pc = PredictTexCoord(wedges, done, c, previous, values, geometry, magnitudes, pred, alt,
+                         ambiguous);
   } else {
     pc = PredictParallelogram(wedges, done, c, previous, values, dim, magnitudes, pred);
   }

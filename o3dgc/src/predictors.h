@@ -120,7 +120,8 @@ class CodingOrder {
   uint32_t* top_[kLevels] = {nullptr, nullptr, nullptr, nullptr};
   // Level 0 holds the neighbours of visited vertices that have no parallelogram yet, newest
   // first; it is only needed when levels 1..3 are empty, so instead of pushing them at every
-  // visit, the visits are logged and their wedges searched on demand (see NextWithoutParallelogram).
+  // visit, the visits are logged and their wedges searched on demand (see
+  // NextWithoutParallelogram).
   struct Visited {
     uint32_t vertex;
     uint32_t searched;  // entries (wedges * 2, from the last one) already taken
@@ -141,8 +142,8 @@ struct PredictionContext {
 };
 
 // Multi-parallelogram prediction of vertex c (values: dim ints per vertex; done: which vertices are
-// coded; previous: the last coded vertex or kNoVertex; magnitudes: per-vertex residual magnitudes of
-// coded vertices). Averages u + w - x over the wedges of c with u, w and x coded (component-wise
+// coded; previous: the last coded vertex or kNoVertex; magnitudes: per-vertex residual magnitudes
+// of coded vertices). Averages u + w - x over the wedges of c with u, w and x coded (component-wise
 // median with three or more; with two or more the context is their spread); without such a wedge
 // it averages the coded neighbours, then falls back to the previous vertex. pred receives dim
 // values.
@@ -167,12 +168,12 @@ PredictionContext PredictTexCoord(const WedgeTable& wedges, const uint8_t* done,
 PredictionContext PredictAttributeVertex(const WedgeTable& wedges, const uint8_t* done, uint32_t c,
                                          uint32_t previous, const int32_t* values, int dim,
                                          const double* geometry, const uint32_t* magnitudes,
-                                         int64_t maxq, int64_t pred[4], int64_t alt[2], bool* ambiguous);
+                                         int64_t maxq, int64_t pred[4], int64_t alt[2],
+                                         bool* ambiguous);
 
 // Neighbour residual magnitude for coders that visit vertices in id order (surface normals):
 // the mean over the incident triangles' corners with smaller ids, else that of vertex c - 1.
 uint64_t NeighbourMagnitude(const MeshAdjacency& adj, uint32_t c, const uint32_t* magnitudes);
-
 
 // Rounded division for possibly negative numerators, n > 0.
 inline int64_t DivRound(int64_t s, int64_t n) {
@@ -268,11 +269,9 @@ inline int64_t Mean2(int64_t s) { return s >= 0 ? (s + 1) >> 1 : -((1 - s) >> 1)
 // Multi-parallelogram prediction with kDim components (see PredictParallelogram) from c's
 // n_par parallelograms `par` (wedges with u, w and x coded, in wedge order).
 template <int kDim>
-O3DGC_INLINE PredictionContext PredictFromParallelograms(const Wedge* const* par, int n_par,
-                                                   const WedgeTable& wedges, const uint8_t* done,
-                                                   uint32_t c, uint32_t previous,
-                                                   const int32_t* values, const uint32_t* magnitudes,
-                                                   int64_t* pred) {
+O3DGC_INLINE PredictionContext PredictFromParallelograms(
+    const Wedge* const* par, int n_par, const WedgeTable& wedges, const uint8_t* done, uint32_t c,
+    uint32_t previous, const int32_t* values, const uint32_t* magnitudes, int64_t* pred) {
   PredictionContext ctx;
   if (n_par >= 2) {
     int64_t kept[kMaxKept][kDim];
@@ -377,9 +376,8 @@ O3DGC_INLINE PredictionContext PredictFromParallelograms(const Wedge* const* par
 // The same for a vertex c not visited yet (its parallelograms found here).
 template <int kDim>
 inline PredictionContext PredictParallelogramT(const WedgeTable& wedges, const uint8_t* done,
-                                               uint32_t c, uint32_t previous,
-                                               const int32_t* values, const uint32_t* magnitudes,
-                                               int64_t* pred) {
+                                               uint32_t c, uint32_t previous, const int32_t* values,
+                                               const uint32_t* magnitudes, int64_t* pred) {
   std::vector<const Wedge*> par;
   for (const Wedge* it = wedges.begin(c); it != wedges.end(c); ++it) {
     if (done[it->u] && done[it->w] && done[it->x]) par.push_back(it);

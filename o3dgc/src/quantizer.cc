@@ -12,7 +12,8 @@ void Quantizer::Fit(const float* data, size_t stride, size_t count) {
     hi[c] = 0;
   }
   for (size_t i = 0; i < count; ++i) {
-    const float* v = reinterpret_cast<const float*>(reinterpret_cast<const char*>(data) + i * stride);
+    const float* v =
+        reinterpret_cast<const float*>(reinterpret_cast<const char*>(data) + i * stride);
     for (uint32_t c = 0; c < dimension; ++c) {
       if (i == 0 || v[c] < lo[c]) lo[c] = v[c];
       if (i == 0 || v[c] > hi[c]) hi[c] = v[c];
@@ -44,7 +45,6 @@ void Quantizer::Fit(const float* data, size_t stride, size_t count) {
   }
 }
 
-
 namespace {
 
 // One pass over the vectors, all components at once (a pass per component read and wrote every
@@ -70,11 +70,16 @@ void Quantizer::DequantizeAll(const int32_t* q, const uint32_t* index, size_t co
     step[c] = range[c] > 0 ? double(range[c]) / double(max_q()) : 0.0;
   }
   switch (dimension) {
-    case 1: return DequantizeRows<1>(q, index, count, base, step, out);
-    case 2: return DequantizeRows<2>(q, index, count, base, step, out);
-    case 3: return DequantizeRows<3>(q, index, count, base, step, out);
-    case 4: return DequantizeRows<4>(q, index, count, base, step, out);
-    default: return;  // dimensions are 1..4 (checked when the header is read)
+    case 1:
+      return DequantizeRows<1>(q, index, count, base, step, out);
+    case 2:
+      return DequantizeRows<2>(q, index, count, base, step, out);
+    case 3:
+      return DequantizeRows<3>(q, index, count, base, step, out);
+    case 4:
+      return DequantizeRows<4>(q, index, count, base, step, out);
+    default:
+      return;  // dimensions are 1..4 (checked when the header is read)
   }
 }
 

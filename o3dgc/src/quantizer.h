@@ -36,8 +36,7 @@ struct Quantizer {
   }
   float Dequantize(int32_t q, uint32_t component) const {
     if (!(range[component] > 0)) return min[component];
-    return float(double(min[component]) +
-                 double(q) * (double(range[component]) / double(max_q())));
+    return float(double(min[component]) + double(q) * (double(range[component]) / double(max_q())));
   }
   // Dequantize of `count` vectors of `dimension` values; vector i is read at q + dimension *
   // index[i] (index null: i). The same values as Dequantize, with the steps computed once.

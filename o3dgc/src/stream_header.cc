@@ -47,7 +47,8 @@ uint32_t Crc32(const uint8_t* data, size_t size, uint32_t crc) {
   return ~crc;
 }
 
-void WriteHeader(bool keep_order, bool fast_decode, size_t payload_size, std::vector<uint8_t>* out) {
+void WriteHeader(bool keep_order, bool fast_decode, size_t payload_size,
+                 std::vector<uint8_t>* out) {
   out->insert(out->end(), kMagic, kMagic + 4);
   out->push_back(uint8_t(kStreamVersion));
   out->push_back(uint8_t((keep_order ? 1 : 0) | (fast_decode ? 2 : 0)));

@@ -12,18 +12,20 @@
 #include <string>
 #include <vector>
 
-#include "vhacd/VHACD.h"
+#include "vhacd/ivhacd.h"
 
 using VHACD::IVHACD;
 
 class MyCallback : public IVHACD::IUserCallback {
  public:
-  void Update(const double overallProgress, const double stageProgress, const double operationProgress,
-              const char* const stage, const char* const operation) override {
-    std::cout << std::setfill(' ') << std::setw(3) << static_cast<int>(overallProgress + 0.5) << "% "
-              << "[ " << stage << " " << std::setw(3) << static_cast<int>(stageProgress + 0.5) << "% ] "
-              << operation << " " << std::setw(3) << static_cast<int>(operationProgress + 0.5) << "%"
-              << std::endl;
+  void Update(const double overallProgress, const double stageProgress,
+              const double operationProgress, const char* const stage,
+              const char* const operation) override {
+    std::cout << std::setfill(' ') << std::setw(3) << static_cast<int>(overallProgress + 0.5)
+              << "% "
+              << "[ " << stage << " " << std::setw(3) << static_cast<int>(stageProgress + 0.5)
+              << "% ] " << operation << " " << std::setw(3)
+              << static_cast<int>(operationProgress + 0.5) << "%" << std::endl;
   }
 };
 
@@ -64,7 +66,8 @@ static bool LoadObj(const char* path, std::vector<float>* points, std::vector<in
         if (v < 0) v += static_cast<long>(points->size() / 3) + 1;
         face.push_back(static_cast<int>(v - 1));
       }
-      for (size_t k = 1; k + 1 < face.size(); ++k) triangles->insert(triangles->end(), {face[0], face[k], face[k + 1]});
+      for (size_t k = 1; k + 1 < face.size(); ++k)
+        triangles->insert(triangles->end(), {face[0], face[k], face[k + 1]});
     }
   }
   return true;
@@ -88,7 +91,7 @@ static void MakeTorus(std::vector<float>* points, std::vector<int>* triangles) {
 }
 
 int main(int argc, char* argv[]) {
-  std::vector<float> points;  // array of coordinates
+  std::vector<float> points;   // array of coordinates
   std::vector<int> triangles;  // array of indexes
   // load the mesh
   if (argc > 1) {
@@ -102,7 +105,7 @@ int main(int argc, char* argv[]) {
   const unsigned int nPoints = static_cast<unsigned int>(points.size() / 3);
   const unsigned int nTriangles = static_cast<unsigned int>(triangles.size() / 3);
 
-  IVHACD::Parameters params;  // V-HACD parameters
+  IVHACD::Parameters params;                      // V-HACD parameters
   IVHACD* interfaceVHACD = VHACD::CreateVHACD();  // create interface
   MyCallback myCallback;
   MyLogger myLogger(argc > 2 ? argv[2] : "");
@@ -110,7 +113,8 @@ int main(int argc, char* argv[]) {
   params.m_callback = &myCallback;
 
   // compute approximate convex decomposition
-  const bool res = interfaceVHACD->Compute(points.data(), 3, nPoints, triangles.data(), 3, nTriangles, params);
+  const bool res =
+      interfaceVHACD->Compute(points.data(), 3, nPoints, triangles.data(), 3, nTriangles, params);
   if (!res) {
     std::cerr << "decomposition failed: " << interfaceVHACD->GetMessage() << "\n";
     interfaceVHACD->Release();
@@ -118,15 +122,19 @@ int main(int argc, char* argv[]) {
   }
 
   // read results
-  const unsigned int nConvexHulls = interfaceVHACD->GetNConvexHulls();  // Get the number of convex-hulls
+  const unsigned int nConvexHulls =
+      interfaceVHACD->GetNConvexHulls();  // Get the number of convex-hulls
   IVHACD::ConvexHull ch;
   for (unsigned int p = 0; p < nConvexHulls; ++p) {
     interfaceVHACD->GetConvexHull(p, ch);  // get the p-th convex-hull information
-    std::printf("hull %u: %u points, %u triangles, volume %g\n", p, ch.m_nPoints, ch.m_nTriangles, ch.m_volume);
+    std::printf("hull %u: %u points, %u triangles, volume %g\n", p, ch.m_nPoints, ch.m_nTriangles,
+                ch.m_volume);
     for (unsigned int v = 0, idx = 0; v < ch.m_nPoints; ++v, idx += 3)
-      std::printf("x=%f, y=%f, z=%f\n", ch.m_points[idx], ch.m_points[idx + 1], ch.m_points[idx + 2]);
+      std::printf("x=%f, y=%f, z=%f\n", ch.m_points[idx], ch.m_points[idx + 1],
+                  ch.m_points[idx + 2]);
     for (unsigned int t = 0, idx = 0; t < ch.m_nTriangles; ++t, idx += 3)
-      std::printf("i=%d, j=%d, k=%d\n", ch.m_triangles[idx], ch.m_triangles[idx + 1], ch.m_triangles[idx + 2]);
+      std::printf("i=%d, j=%d, k=%d\n", ch.m_triangles[idx], ch.m_triangles[idx + 1],
+                  ch.m_triangles[idx + 2]);
   }
 
   // release memory

@@ -145,8 +145,10 @@ TEST(ArithmeticCoder, SymbolsRawBitsAndResidualsRoundTrip) {
     ASSERT_EQ(DecodeResidual<false>(dec, rm, rx), residuals[i]);
     ASSERT_EQ(DecodeResidual<true>(dec, rm_raw, rx), residuals[i]);
     const int shift = i % (kMaxClassShift + 1);
-    ASSERT_EQ(DecodeShiftedResidual<false>(dec, rm_shift, rx, shift), residuals[i]) << "shift " << shift;
-    ASSERT_EQ(DecodeShiftedResidual<true>(dec, rm_raw_shift, rx, shift), residuals[i]) << "shift " << shift;
+    ASSERT_EQ(DecodeShiftedResidual<false>(dec, rm_shift, rx, shift), residuals[i])
+        << "shift " << shift;
+    ASSERT_EQ(DecodeShiftedResidual<true>(dec, rm_raw_shift, rx, shift), residuals[i])
+        << "shift " << shift;
   }
   EXPECT_FALSE(dec.failed());
 }
@@ -225,7 +227,8 @@ TEST(ArithmeticCoder, TerminationIgnoresWhatFollows) {
       padded.insert(padded.end(), 8, uint8_t(fill));
       ArithmeticDecoder dec(padded.data(), buf.size() + (fill ? 8 : 0));
       BitModel m;
-      for (size_t i = 0; i < bits.size(); ++i) ASSERT_EQ(dec.Decode(m), bits[i]) << n << " " << fill;
+      for (size_t i = 0; i < bits.size(); ++i)
+        ASSERT_EQ(dec.Decode(m), bits[i]) << n << " " << fill;
     }
   }
 }

@@ -25,7 +25,8 @@ TEST(ClassShifts, NoneForSmallResidualsOrAnEmptyTable) {
   EXPECT_FALSE(ChooseClassShifts(ClassHistograms()).any());
   ClassHistograms h;
   // A scan's residuals (igea, 14 bits): classes up to 6 nearly always, one decision each.
-  AddClasses(&h, kPredParallelogram, 7, {{0, 800}, {1, 900}, {2, 700}, {3, 1000}, {5, 2800}, {7, 2}});
+  AddClasses(&h, kPredParallelogram, 7,
+             {{0, 800}, {1, 900}, {2, 700}, {3, 1000}, {5, 2800}, {7, 2}});
   EXPECT_FALSE(ChooseClassShifts(h).any());
 }
 
@@ -34,8 +35,17 @@ TEST(ClassShifts, ShiftWhereLargeClassesAreCommon) {
   // rocker_arm at 14 bits, magnitude context 9: classes 5-8 most often, 27 % of them past the
   // direct classes without a shift.
   AddClasses(&h, kPredParallelogram, 9,
-             {{0, 108}, {1, 150}, {2, 326}, {3, 668}, {4, 1124}, {5, 1798}, {6, 2284}, {7, 2262},
-              {8, 898}, {9, 112}, {10, 5}});
+             {{0, 108},
+              {1, 150},
+              {2, 326},
+              {3, 668},
+              {4, 1124},
+              {5, 1798},
+              {6, 2284},
+              {7, 2262},
+              {8, 898},
+              {9, 112},
+              {10, 5}});
   // Mostly zeros: a shift would give them a second decision.
   AddClasses(&h, kPredParallelogram, 2, {{0, 3000}, {1, 500}, {7, 10}});
   const ClassShifts s = ChooseClassShifts(h);
@@ -57,7 +67,8 @@ TEST(ClassShifts, NotWorthTheirCostWhenTheyRarelySpareADecision) {
 TEST(ClassShifts, TableRoundTrips) {
   ClassShifts s;
   for (int kind = 0; kind < kPredictionKinds; ++kind) {
-    for (int m = 0; m < kMagContexts; ++m) s.shift[kind][m] = uint8_t((kind * 5 + m) % (kMaxClassShift + 1));
+    for (int m = 0; m < kMagContexts; ++m)
+      s.shift[kind][m] = uint8_t((kind * 5 + m) % (kMaxClassShift + 1));
   }
   std::vector<uint8_t> buf;
   ArithmeticEncoder enc(&buf);
@@ -98,7 +109,8 @@ TEST(ClassShifts, LargeMeshWithLargeResidualsRoundTripsThroughShifts) {
     EXPECT_EQ(sent.any(), noise != 0) << "noise " << noise;
     ArithmeticDecoder dec(buf.data(), buf.size());
     std::vector<int32_t> decoded;
-    ASSERT_EQ(DecodeQuantized(&dec, &wedges, n, 3, 16, Prediction::kParallelogram, CodingOrder::kGreedy, &decoded),
+    ASSERT_EQ(DecodeQuantized(&dec, &wedges, n, 3, 16, Prediction::kParallelogram,
+                              CodingOrder::kGreedy, &decoded),
               Status::kOk);
     EXPECT_EQ(decoded, q) << "noise " << noise;
   }

@@ -17,7 +17,7 @@ namespace {
 using namespace o3dgc;
 
 std::vector<std::array<uint32_t, 3>> Canon(const std::vector<uint32_t>& t,
-                                          const std::vector<uint32_t>* map) {
+                                           const std::vector<uint32_t>* map) {
   std::vector<std::array<uint32_t, 3>> out;
   for (size_t i = 0; i < t.size() / 3; ++i) {
     std::array<uint32_t, 3> c;
@@ -32,7 +32,8 @@ std::vector<std::array<uint32_t, 3>> Canon(const std::vector<uint32_t>& t,
 // Triangles with the same vertex set are coded as one primary (the first in the input) followed
 // by its copies in input order: check that order in the encoder's output (degenerate triangles,
 // coded apart, left out).
-void ExpectCopiesFollowTheirPrimary(const std::vector<uint32_t>& tris, const std::vector<uint32_t>& source) {
+void ExpectCopiesFollowTheirPrimary(const std::vector<uint32_t>& tris,
+                                    const std::vector<uint32_t>& source) {
   auto vertex_set = [&](uint32_t t) {
     std::array<uint32_t, 3> k = {tris[3 * t], tris[3 * t + 1], tris[3 * t + 2]};
     std::sort(k.begin(), k.end());
@@ -49,7 +50,8 @@ void ExpectCopiesFollowTheirPrimary(const std::vector<uint32_t>& tris, const std
     if (!coded.empty() && k == previous) {
       EXPECT_LT(previous_t, t) << "copies in input order";
     } else {
-      EXPECT_EQ(t, first[k]) << "triangle " << t << " coded as a primary, but " << first[k] << " has its vertices";
+      EXPECT_EQ(t, first[k]) << "triangle " << t << " coded as a primary, but " << first[k]
+                             << " has its vertices";
       EXPECT_TRUE(coded.insert(k).second) << "a vertex set coded in two places";
     }
     previous = k;

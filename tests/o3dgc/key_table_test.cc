@@ -20,7 +20,8 @@ TEST(KeyTable, FindsTheFirstEntryWithTheKey) {
     std::vector<uint32_t> keys(3 * n);
     for (size_t i = 0; i < n; ++i) {
       const uint32_t k = rng() % distinct;
-      // Keys that differ in one word only, so that a table comparing part of a key would merge them.
+      // Keys that differ in one word only, so that a table comparing part of a key would merge
+      // them.
       keys[3 * i] = k % 7;
       keys[3 * i + 1] = 0x3F800000u;
       keys[3 * i + 2] = k / 7;

@@ -27,7 +27,8 @@ std::string VectorPath(const std::string& name) {
 std::vector<uint8_t> ReadBytes(const std::string& name) {
   std::ifstream in(VectorPath(name), std::ios::binary);
   EXPECT_TRUE(in.good()) << name;
-  return std::vector<uint8_t>((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return std::vector<uint8_t>((std::istreambuf_iterator<char>(in)),
+                              std::istreambuf_iterator<char>());
 }
 
 struct Obj {
@@ -43,7 +44,10 @@ Obj ReadObj(const std::string& name) {
   while (std::getline(in, line)) {
     std::istringstream s(line);
     if (!(s >> tag)) continue;
-    std::vector<std::string>* dst = tag == "v" ? &o.v : tag == "vn" ? &o.vn : tag == "vt" ? &o.vt : nullptr;
+    std::vector<std::string>* dst = tag == "v"    ? &o.v
+                                    : tag == "vn" ? &o.vn
+                                    : tag == "vt" ? &o.vt
+                                                  : nullptr;
     while (s >> tok) {
       if (dst) {
         dst->push_back(tok);
@@ -189,7 +193,8 @@ TEST(LegacyDecoder, BinaryAndAsciiDecodeAlike) {
   const DecodedMesh k = DecodeVector("knot.binary.s3d");
   ASSERT_EQ(k.normals.size(), k.positions.size());
   for (size_t i = 0; i < k.normals.size(); i += 3) {
-    const double n = std::sqrt(double(k.normals[i]) * k.normals[i] + double(k.normals[i + 1]) * k.normals[i + 1] +
+    const double n = std::sqrt(double(k.normals[i]) * k.normals[i] +
+                               double(k.normals[i + 1]) * k.normals[i + 1] +
                                double(k.normals[i + 2]) * k.normals[i + 2]);
     EXPECT_NEAR(n, 1.0, 0.01) << i / 3;
   }
@@ -226,7 +231,8 @@ void ExpectSane(const DecodedMesh& m) {
 }
 
 TEST(LegacyDecoder, EveryTruncationIsRejected) {
-  for (const char* name : {"vertex_color_test.binary.s3d", "vertex_color_test.ascii.s3d", "cup.binary.s3d"}) {
+  for (const char* name :
+       {"vertex_color_test.binary.s3d", "vertex_color_test.ascii.s3d", "cup.binary.s3d"}) {
     const std::vector<uint8_t> s = ReadBytes(name);
     const bool binary = s[0] == 0xF1;
     for (size_t n = 0; n < s.size(); ++n) {
@@ -236,7 +242,8 @@ TEST(LegacyDecoder, EveryTruncationIsRejected) {
       if (!binary || n < 8) continue;
       std::vector<uint8_t> cut(s.begin(), s.begin() + long(n));
       for (int i = 0; i < 4; ++i) cut[4 + size_t(i)] = uint8_t(n >> (8 * i));
-      EXPECT_NE(Decode(cut.data(), cut.size(), DecodeOptions(), &m), Status::kOk) << name << " " << n;
+      EXPECT_NE(Decode(cut.data(), cut.size(), DecodeOptions(), &m), Status::kOk)
+          << name << " " << n;
     }
   }
 }
@@ -244,7 +251,8 @@ TEST(LegacyDecoder, EveryTruncationIsRejected) {
 TEST(LegacyDecoder, RandomDamageNeverCrashes) {
   std::mt19937 rng(11);
   const auto start = std::chrono::steady_clock::now();
-  for (const char* name : {"test_nm.binary.s3d", "test_nm.ascii.s3d", "fox.binary.s3d", "fox.ascii.s3d"}) {
+  for (const char* name :
+       {"test_nm.binary.s3d", "test_nm.ascii.s3d", "fox.binary.s3d", "fox.ascii.s3d"}) {
     const std::vector<uint8_t> good = ReadBytes(name);
     for (int trial = 0; trial < 300; ++trial) {
       std::vector<uint8_t> s = good;
@@ -269,7 +277,8 @@ TEST(LegacyDecoder, LyingCountsAreRejectedBeforeAllocating) {
       std::vector<uint8_t> s = good;
       for (int i = 0; i < 4; ++i) s[field + size_t(i)] = uint8_t(v >> (8 * i));
       DecodedMesh m;
-      EXPECT_EQ(Decode(s.data(), s.size(), DecodeOptions(), &m), Status::kLimitExceeded) << field << " " << v;
+      EXPECT_EQ(Decode(s.data(), s.size(), DecodeOptions(), &m), Status::kLimitExceeded)
+          << field << " " << v;
     }
   }
   // A stream size beyond the data: truncated.

@@ -40,7 +40,7 @@ std::vector<uint8_t> Header(LegacyEncoding enc, float nan_at_max = 0) {
   w.F32(0.25f);
   w.F32(0.75f);
   w.U8(1);
-  w.U8(4);   // texcoord
+  w.U8(4);  // texcoord
   w.U8(12);
   w.U32(3);  // joint ids
   w.U32(0);
@@ -68,8 +68,8 @@ TEST(LegacyStreamReader, RecognisesBothStartCodes) {
 
 TEST(LegacyStreamReader, AsciiNumbers) {
   // 5; 127 + 3; 127 + 1 + 2 * 64; then 32-bit 0x12345678 as five 7-bit groups.
-  const std::vector<uint8_t> bytes = {5, 127, 3 << 1, 127, (1 << 1) | 1, 2 << 1,
-                                      0x78, 0x2C, 0x51, 0x11, 0x01};
+  const std::vector<uint8_t> bytes = {5,    127,  3 << 1, 127,  (1 << 1) | 1, 2 << 1,
+                                      0x78, 0x2C, 0x51,   0x11, 0x01};
   LegacyReader r(bytes.data(), bytes.size(), LegacyEncoding::kAscii);
   EXPECT_EQ(r.ReadAsciiUInt(), 5u);
   EXPECT_EQ(r.ReadAsciiUInt(), 130u);

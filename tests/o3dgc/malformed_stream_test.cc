@@ -5,8 +5,8 @@
 #include <cmath>
 #include <random>
 
-#include "o3dgc/o3dgc.h"
 #include "entropy.h"
+#include "o3dgc/o3dgc.h"
 #include "stream_header.h"
 #include "test_meshes.h"
 
@@ -125,12 +125,14 @@ TEST(Malformed, ByteFlipsAndTruncationsPastTheRawBitsThreshold) {
   // to send class shifts (see attribute_coder_test.cc).
   o3dgc_test::TestMesh noisy = grid;
   for (size_t i = 0; i < noisy.positions.size(); ++i) {
-    noisy.positions[i] += 0.008f * float(std::sin(double(i) * 12.9898) * 0.5 + std::cos(double(i) * 7.233) * 0.5);
+    noisy.positions[i] +=
+        0.008f * float(std::sin(double(i) * 12.9898) * 0.5 + std::cos(double(i) * 7.233) * 0.5);
   }
   EncodeParams fast;
   fast.fast_decode = true;  // the coding order of fast_decode streams
-  for (const auto& [t, p] : {std::make_pair(&torus, EncodeParams()), std::make_pair(&grid, EncodeParams()),
-                             std::make_pair(&noisy, EncodeParams()), std::make_pair(&noisy, fast)}) {
+  for (const auto& [t, p] :
+       {std::make_pair(&torus, EncodeParams()), std::make_pair(&grid, EncodeParams()),
+        std::make_pair(&noisy, EncodeParams()), std::make_pair(&noisy, fast)}) {
     std::vector<uint8_t> s;
     ASSERT_EQ(Encode(t->View(), p, &s), Status::kOk);
     ExpectFlipsAndCutsHandled(s, rng, 150);

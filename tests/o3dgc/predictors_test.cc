@@ -23,7 +23,8 @@ WedgeTable WedgesOf(const o3dgc_test::TestMesh& t) {
 
 // Runs `kind` over `wedges`; returns the visit order and checks, at every visit, that the listed
 // parallelograms are exactly the wedges of c whose u, w and x were visited before c.
-std::vector<uint32_t> Traverse(const WedgeTable& wedges, CodingOrder::Kind kind, size_t* parallelograms) {
+std::vector<uint32_t> Traverse(const WedgeTable& wedges, CodingOrder::Kind kind,
+                               size_t* parallelograms) {
   const uint32_t n = wedges.num_vertices();
   std::vector<uint32_t> order, rank(n, UINT32_MAX);
   CodingOrder t(wedges, kind);
@@ -54,7 +55,8 @@ std::vector<uint32_t> Traverse(const WedgeTable& wedges, CodingOrder::Kind kind,
 }
 
 TEST(CodingOrder, VertexIdOrderVisitsTheIdsInIncreasingOrder) {
-  for (const auto& mesh : {o3dgc_test::Torus(20, 12), o3dgc_test::Sphere(16, 10), o3dgc_test::Awkward()}) {
+  for (const auto& mesh :
+       {o3dgc_test::Torus(20, 12), o3dgc_test::Sphere(16, 10), o3dgc_test::Awkward()}) {
     const WedgeTable wedges = WedgesOf(mesh);
     size_t parallelograms = 0;
     const std::vector<uint32_t> order = Traverse(wedges, CodingOrder::kVertexId, &parallelograms);

@@ -34,7 +34,8 @@ TEST(Quantizer, DequantizeAllMatchesDequantizeForEveryDimension) {
     for (size_t i = 0; i < n; ++i) {
       for (uint32_t c = 0; c < dim; ++c) {
         ASSERT_EQ(direct[i * dim + c], q.Dequantize(values[i * dim + c], c)) << dim << " " << i;
-        ASSERT_EQ(indexed[i * dim + c], q.Dequantize(values[index[i] * dim + c], c)) << dim << " " << i;
+        ASSERT_EQ(indexed[i * dim + c], q.Dequantize(values[index[i] * dim + c], c))
+            << dim << " " << i;
       }
     }
   }

@@ -43,7 +43,9 @@ struct Keyer {
     }
     step = e / double((1u << bits) - 1);
   }
-  int64_t Q(double x, int k) const { return step > 0 ? int64_t(std::floor((x - min[k]) / step + 0.5)) : 0; }
+  int64_t Q(double x, int k) const {
+    return step > 0 ? int64_t(std::floor((x - min[k]) / step + 0.5)) : 0;
+  }
 };
 
 std::vector<std::vector<int64_t>> Triangles(const Keyer& key, const std::vector<float>& pos,
@@ -65,7 +67,8 @@ std::vector<std::vector<int64_t>> Triangles(const Keyer& key, const std::vector<
       if (c[k] < c[best]) best = k;
     }
     std::vector<int64_t> r;
-    for (int k = 0; k < 3; ++k) r.insert(r.end(), c[(best + k) % 3].begin(), c[(best + k) % 3].end());
+    for (int k = 0; k < 3; ++k)
+      r.insert(r.end(), c[(best + k) % 3].begin(), c[(best + k) % 3].end());
     if (groups && !groups->empty()) r.push_back((*groups)[t]);
     out.push_back(r);
   }
@@ -95,7 +98,8 @@ void CheckExact(const TestMesh& t, const DecodedMesh& m, int pbits, int nbits, i
   ASSERT_EQ(m.num_vertices(), t.nv());
   Keyer key(t, pbits);
   for (size_t i = 0; i < t.positions.size(); ++i) {
-    EXPECT_LE(std::fabs(double(m.positions[i]) - t.positions[i]), key.step * 0.5 * (1 + 1e-6) + 1e-7)
+    EXPECT_LE(std::fabs(double(m.positions[i]) - t.positions[i]),
+              key.step * 0.5 * (1 + 1e-6) + 1e-7)
         << "position component " << i;
   }
   if (!t.normals.empty()) {
@@ -149,8 +153,12 @@ std::vector<TestMesh> AllMeshes() {
   TestMesh single;
   single.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
   single.indices = {0, 1, 2};
-  return {o3dgc_test::Grid(12, 9), o3dgc_test::Sphere(16, 10), o3dgc_test::Torus(20, 12),
-          o3dgc_test::Awkward(), single, WithGroups(o3dgc_test::Sphere(12, 7))};
+  return {o3dgc_test::Grid(12, 9),
+          o3dgc_test::Sphere(16, 10),
+          o3dgc_test::Torus(20, 12),
+          o3dgc_test::Awkward(),
+          single,
+          WithGroups(o3dgc_test::Sphere(12, 7))};
 }
 
 TEST(RoundTrip, DefaultModeKeepsTriangleSet) {
@@ -179,13 +187,15 @@ TEST(RoundTrip, KeepOrderIsExact) {
 // meshes and on large ones (raw low bits, class shifts), in both vertex-order modes.
 TEST(RoundTrip, FastDecodeGivesTheSameMeshFromAnotherStream) {
   TestMesh noisy = o3dgc_test::Grid(72, 60);  // 4453 vertices: raw low bits; the noise: shifts
-  for (size_t i = 2; i < noisy.positions.size(); i += 3) noisy.positions[i] = float(std::sin(i * 0.7) * 0.01);
+  for (size_t i = 2; i < noisy.positions.size(); i += 3)
+    noisy.positions[i] = float(std::sin(i * 0.7) * 0.01);
   std::vector<TestMesh> meshes = AllMeshes();
   meshes.push_back(o3dgc_test::Torus(72, 60));
   meshes.push_back(noisy);
   for (const TestMesh& t : meshes) {
     std::vector<float> generic(t.nv());
-    for (size_t i = 0; i < generic.size(); ++i) generic[i] = t.positions[3 * i] * t.positions[3 * i + 1];
+    for (size_t i = 0; i < generic.size(); ++i)
+      generic[i] = t.positions[3 * i] * t.positions[3 * i + 1];
     MeshView v = t.View();
     FloatAttributeView g;
     g.data = generic.data();
@@ -215,7 +225,8 @@ TEST(RoundTrip, FastDecodeGivesTheSameMeshFromAnotherStream) {
         EXPECT_EQ(a.normals, b.normals);
         ASSERT_EQ(a.float_attributes.size(), b.float_attributes.size());
         for (size_t i = 0; i < a.float_attributes.size(); ++i) {
-          EXPECT_EQ(a.float_attributes[i].values, b.float_attributes[i].values) << "attribute " << i;
+          EXPECT_EQ(a.float_attributes[i].values, b.float_attributes[i].values)
+              << "attribute " << i;
         }
         ASSERT_EQ(a.int_attributes.size(), b.int_attributes.size());
         for (size_t i = 0; i < a.int_attributes.size(); ++i) {
@@ -252,7 +263,8 @@ TEST(RoundTrip, EveryPredictionModeAndBitDepth) {
           CheckExact(no_normals, m2, bits, 0, 12);
           for (size_t i = 0; i < s.normals.size(); ++i) {
             const double step = StepOf(s.normals, 3, int(i % 3), p.normal_bits);
-            EXPECT_LE(std::fabs(double(m.normals[i]) - s.normals[i]), step * 0.5 * (1 + 1e-6) + 1e-7);
+            EXPECT_LE(std::fabs(double(m.normals[i]) - s.normals[i]),
+                      step * 0.5 * (1 + 1e-6) + 1e-7);
           }
         }
         const DecodedMesh mt = DecodeOk(EncodeOk(t, p));
@@ -289,7 +301,8 @@ TEST(RoundTrip, FloatAttributeModesDimensionsAndRanges) {
   std::vector<float> attr(t.nv() * 4);
   for (size_t i = 0; i < attr.size(); ++i) attr[i] = float(std::sin(double(i) * 0.37) * 100.0);
   for (uint32_t dim = 1; dim <= 4; ++dim) {
-    for (Prediction pr : {Prediction::kNone, Prediction::kDifferential, Prediction::kParallelogram}) {
+    for (Prediction pr :
+         {Prediction::kNone, Prediction::kDifferential, Prediction::kParallelogram}) {
       for (RangeMode rm : {RangeMode::kUniform, RangeMode::kPerAxis, RangeMode::kDiagonal}) {
         MeshView v = t.View();
         v.float_attributes.clear();
@@ -321,11 +334,13 @@ TEST(RoundTrip, FloatAttributeModesDimensionsAndRanges) {
           for (uint32_t k = 0; k < dim; ++k) {
             std::vector<float> c;
             for (size_t j = 0; j < t.nv(); ++j) c.push_back(attr[4 * j + k]);
-            const double step = rm == RangeMode::kUniform
-                                    ? ext
-                                    : (rm == RangeMode::kDiagonal ? std::sqrt(diag2) : StepOf(c, 1, 0, 11));
-            EXPECT_LE(std::fabs(double(m.float_attributes[0].values[i * dim + k]) - attr[4 * i + k]),
-                      step * 0.5 * (1 + 1e-6) + 1e-5);
+            const double step =
+                rm == RangeMode::kUniform
+                    ? ext
+                    : (rm == RangeMode::kDiagonal ? std::sqrt(diag2) : StepOf(c, 1, 0, 11));
+            EXPECT_LE(
+                std::fabs(double(m.float_attributes[0].values[i * dim + k]) - attr[4 * i + k]),
+                step * 0.5 * (1 + 1e-6) + 1e-5);
           }
         }
       }
@@ -471,7 +486,8 @@ TEST(RoundTrip, SeamsShareWeldedPositions) {
   for (uint32_t j = 0; j <= n; ++j) {
     const uint32_t v = j * (n + 1) + n / 2;
     copy_of[v] = uint32_t(s.nv());
-    s.positions.insert(s.positions.end(), {g.positions[3 * v], g.positions[3 * v + 1], g.positions[3 * v + 2]});
+    s.positions.insert(s.positions.end(),
+                       {g.positions[3 * v], g.positions[3 * v + 1], g.positions[3 * v + 2]});
     s.uvs.insert(s.uvs.end(), {g.uvs[2 * v] + 0.5f, g.uvs[2 * v + 1]});
   }
   for (size_t t = 0; t < s.nt(); ++t) {

@@ -98,7 +98,8 @@ inline TestMesh Sphere(int slices, int stacks) {
   t.normals.insert(t.normals.end(), {0, 0, -1});
   const uint32_t south = uint32_t(t.nv() - 1);
   auto ring = [&](int j, int i) { return uint32_t(1 + (j - 1) * slices + (i % slices)); };
-  for (int i = 0; i < slices; ++i) t.indices.insert(t.indices.end(), {0, ring(1, i), ring(1, i + 1)});
+  for (int i = 0; i < slices; ++i)
+    t.indices.insert(t.indices.end(), {0, ring(1, i), ring(1, i + 1)});
   for (int j = 1; j < stacks - 1; ++j) {
     for (int i = 0; i < slices; ++i) {
       t.indices.insert(t.indices.end(), {ring(j, i), ring(j + 1, i), ring(j + 1, i + 1)});
@@ -118,9 +119,9 @@ inline TestMesh Torus(int n, int m) {
   for (int j = 0; j < m; ++j) {
     for (int i = 0; i < n; ++i) {
       const double u = 2 * pi * i / n, v = 2 * pi * j / m;
-      t.positions.insert(t.positions.end(), {float((2 + 0.5 * std::cos(v)) * std::cos(u)),
-                                             float((2 + 0.5 * std::cos(v)) * std::sin(u)),
-                                             float(0.5 * std::sin(v))});
+      t.positions.insert(t.positions.end(),
+                         {float((2 + 0.5 * std::cos(v)) * std::cos(u)),
+                          float((2 + 0.5 * std::cos(v)) * std::sin(u)), float(0.5 * std::sin(v))});
       t.colors.insert(t.colors.end(), {float(i) / n, float(j) / m, 0.5f, 1.0f});
       t.joints.insert(t.joints.end(), {i % 3, j % 5, 1000 + i, -7});
     }
@@ -128,7 +129,8 @@ inline TestMesh Torus(int n, int m) {
   for (int j = 0; j < m; ++j) {
     for (int i = 0; i < n; ++i) {
       const uint32_t a = uint32_t(j * n + i), b = uint32_t(j * n + (i + 1) % n),
-                     c = uint32_t(((j + 1) % m) * n + i), d = uint32_t(((j + 1) % m) * n + (i + 1) % n);
+                     c = uint32_t(((j + 1) % m) * n + i),
+                     d = uint32_t(((j + 1) % m) * n + (i + 1) % n);
       t.indices.insert(t.indices.end(), {a, b, d, a, d, c});
     }
   }
@@ -140,16 +142,16 @@ inline TestMesh Torus(int n, int m) {
 // vertices and a seam (two vertices at the same position).
 inline TestMesh Awkward() {
   TestMesh t;
-  t.positions = {0, 0, 0,  1, 0, 0,  0, 1, 0,  0, -1, 0,  0, 0, 1,  1, 1, 1,   // 0..5
-                 5, 5, 5,  6, 5, 5,  5, 6, 5,                                     // 6..8 component
-                 9, 9, 9,  -3, 2, 1,                                              // 9, 10 isolated
-                 1, 0, 0};                                                        // 11 = seam of 1
-  t.indices = {0, 1, 2,  1, 0, 3,  0, 1, 4,   // three triangles on edge 0-1
-               1, 2, 5,  2, 1, 5,             // same vertex set, both windings
-               0, 2, 4,  0, 2, 4,             // exact duplicate
-               2, 2, 5,                       // degenerate
-               6, 7, 8,                       // component
-               11, 5, 4};                     // uses the seam vertex
+  t.positions = {0, 0, 0, 1,  0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 1, 1, 1,  // 0..5
+                 5, 5, 5, 6,  5, 5, 5, 6, 5,                              // 6..8 component
+                 9, 9, 9, -3, 2, 1,                                       // 9, 10 isolated
+                 1, 0, 0};                                                // 11 = seam of 1
+  t.indices = {0,  1, 2, 1, 0, 3, 0, 1, 4,  // three triangles on edge 0-1
+               1,  2, 5, 2, 1, 5,           // same vertex set, both windings
+               0,  2, 4, 0, 2, 4,           // exact duplicate
+               2,  2, 5,                    // degenerate
+               6,  7, 8,                    // component
+               11, 5, 4};                   // uses the seam vertex
   t.uvs.resize(t.nv() * 2);
   for (size_t i = 0; i < t.nv(); ++i) {
     t.uvs[2 * i] = float(i) / 16;
@@ -185,7 +187,8 @@ inline std::vector<std::array<float, 9>> TriangleSet(const std::vector<float>& p
 
 // Neighbour corners of a triangle list (triangle * 3 + slot, or 0xFFFFFFFF), for a wedge table.
 inline std::vector<uint32_t> OppositeCorners(const std::vector<uint32_t>& tris) {
-  std::map<std::pair<uint32_t, uint32_t>, uint32_t> edge_corner;  // directed edge -> opposite corner
+  std::map<std::pair<uint32_t, uint32_t>, uint32_t>
+      edge_corner;  // directed edge -> opposite corner
   for (uint32_t c = 0; c < tris.size(); ++c) {
     const uint32_t t = c / 3, k = c % 3;
     edge_corner[{tris[3 * t + (k + 1) % 3], tris[3 * t + (k + 2) % 3]}] = c;

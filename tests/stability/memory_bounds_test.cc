@@ -1,8 +1,9 @@
-// Memory bounds of the packed-GLB reader (the o3dgc stream itself: tests/o3dgc/malformed_stream_test.cc
-// HugeVertexCountRejectedQuickly and legacy_decoder_test.cc LyingCountsAreRejectedBeforeAllocating):
-// files that claim 2^32 vertices are rejected before anything that size is allocated, a small file
-// cannot make the reader inflate one stream many times over, and a legitimately well-compressed
-// file (decoded data far above 64 bytes per file byte) still reads back.
+// Memory bounds of the packed-GLB reader (the o3dgc stream itself:
+// tests/o3dgc/malformed_stream_test.cc HugeVertexCountRejectedQuickly and legacy_decoder_test.cc
+// LyingCountsAreRejectedBeforeAllocating): files that claim 2^32 vertices are rejected before
+// anything that size is allocated, a small file cannot make the reader inflate one stream many
+// times over, and a legitimately well-compressed file (decoded data far above 64 bytes per file
+// byte) still reads back.
 #include <gtest/gtest.h>
 #include <sys/resource.h>
 
@@ -10,11 +11,11 @@
 #include <fstream>
 #include <iterator>
 
+#include "../tools/pipeline/packed_glb_test_util.h"
 #include "gltf/glb_reader.h"
 #include "gltf/gltf_document.h"
 #include "gltf/packed_glb_reader.h"
 #include "pipeline/pack.h"
-#include "../tools/pipeline/packed_glb_test_util.h"
 
 namespace hullpack {
 namespace {
@@ -59,7 +60,8 @@ void ExpectRejectedCheaply(const std::vector<uint8_t>& glb, const std::string& w
   Result<Scene> scene = ReadPackedGltf(glb.data(), glb.size(), "hostile.glb", "", nullptr);
   EXPECT_FALSE(scene.ok()) << what;
   EXPECT_FALSE(scene.status().message().empty()) << what;
-  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 5.0) << what;
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 5.0)
+      << what;
   EXPECT_LT(PeakRssMegabytes() - rss_before, 512.0) << what;
 }
 
@@ -68,7 +70,8 @@ TEST(PackedGlbMemory, WellCompressedFileReadsBack) {
   const std::vector<uint8_t>& glb = BigGridGlb();
   ASSERT_FALSE(glb.empty());
   const size_t decoded_bytes = grid.positions.size() * 4 + grid.indices.size() * 4;
-  ASSERT_GT(decoded_bytes, 64 * glb.size()) << "the case must exceed the reader's plain-file expansion limit";
+  ASSERT_GT(decoded_bytes, 64 * glb.size())
+      << "the case must exceed the reader's plain-file expansion limit";
   Result<Scene> scene = ReadPackedGltf(glb.data(), glb.size(), "grid.glb", "", nullptr);
   ASSERT_TRUE(scene.ok()) << scene.status().ToString();
   ASSERT_EQ(scene->meshes.size(), 1u);
@@ -80,8 +83,9 @@ TEST(PackedGlbMemory, AccessorsClaimingTwoToThe32VerticesAreRejected) {
   for (const char* attribute : {"POSITION", "indices"}) {
     const std::vector<uint8_t> bad = testing::RewriteGlb(glb, [&](GltfDocument& doc) {
       nlohmann::json& prim = doc.json()["meshes"][0]["primitives"][0];
-      const int accessor = std::string(attribute) == "indices" ? prim["indices"].get<int>()
-                                                                : prim["attributes"][attribute].get<int>();
+      const int accessor = std::string(attribute) == "indices"
+                               ? prim["indices"].get<int>()
+                               : prim["attributes"][attribute].get<int>();
       doc.json()["accessors"][accessor]["count"] = uint64_t(1) << 32;
     });
     ExpectRejectedCheaply(bad, attribute);
@@ -91,15 +95,19 @@ TEST(PackedGlbMemory, AccessorsClaimingTwoToThe32VerticesAreRejected) {
 TEST(PackedGlbMemory, StreamClaimingTwoToThe32VerticesIsRejected) {
   // An original Open3DGC stream (which the decoder reads too) whose header claims 2^32 - 1
   // coordinates, in place of the packed file's own stream.
-  std::ifstream in(std::string(HULLPACK_SOURCE_DIR) + "/tests/o3dgc/vectors/cup.binary.s3d", std::ios::binary);
-  std::vector<uint8_t> stream((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::ifstream in(std::string(HULLPACK_SOURCE_DIR) + "/tests/o3dgc/vectors/cup.binary.s3d",
+                   std::ios::binary);
+  std::vector<uint8_t> stream((std::istreambuf_iterator<char>(in)),
+                              std::istreambuf_iterator<char>());
   ASSERT_GT(stream.size(), 40u);
   for (int i = 0; i < 4; ++i) stream[14 + i] = 0xFF;  // coordinate count (little endian)
   const std::vector<uint8_t> glb = testing::PackWithoutHulls(Grid(8));
   const std::vector<uint8_t> bad = testing::RewriteGlb(glb, [&](GltfDocument& doc) {
-    const int view = doc.json()["meshes"][0]["primitives"][0]["extensions"][kMeshCompressionExtension]["bufferView"];
+    const int view = doc.json()["meshes"][0]["primitives"][0]["extensions"]
+                               [kMeshCompressionExtension]["bufferView"];
     const int replaced = doc.AddBufferView(stream, 4);
-    doc.json()["meshes"][0]["primitives"][0]["extensions"][kMeshCompressionExtension]["bufferView"] = replaced;
+    doc.json()["meshes"][0]["primitives"][0]["extensions"][kMeshCompressionExtension]
+              ["bufferView"] = replaced;
     (void)view;
   });
   ExpectRejectedCheaply(bad, "stream");

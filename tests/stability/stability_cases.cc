@@ -46,13 +46,14 @@ Soup Torus(double major, double minor, int rings, int sides) {
   for (int i = 0; i < rings; ++i) {
     for (int j = 0; j < sides; ++j) {
       const double u = 2 * kPi * i / rings, v = 2 * kPi * j / sides;
-      s.Add((major + minor * std::cos(v)) * std::cos(u), (major + minor * std::cos(v)) * std::sin(u),
-            minor * std::sin(v));
+      s.Add((major + minor * std::cos(v)) * std::cos(u),
+            (major + minor * std::cos(v)) * std::sin(u), minor * std::sin(v));
     }
   }
   for (int i = 0; i < rings; ++i) {
     for (int j = 0; j < sides; ++j) {
-      const uint32_t a = i * sides + j, b = ((i + 1) % rings) * sides + j, c = ((i + 1) % rings) * sides + (j + 1) % sides,
+      const uint32_t a = i * sides + j, b = ((i + 1) % rings) * sides + j,
+                     c = ((i + 1) % rings) * sides + (j + 1) % sides,
                      d = i * sides + (j + 1) % sides;
       s.Quad(a, b, c, d);
     }
@@ -66,11 +67,11 @@ Soup DefaultTorus() { return Torus(1.0, 0.35, 32, 12); }
 Soup Box(double x0, double y0, double z0, double x1, double y1, double z1, bool with_top = true) {
   Soup s;
   for (int k = 0; k < 8; ++k) s.Add(k & 1 ? x1 : x0, k & 2 ? y1 : y0, k & 4 ? z1 : z0);
-  s.Quad(0, 4, 6, 2);  // -x
-  s.Quad(1, 3, 7, 5);  // +x
-  s.Quad(0, 1, 5, 4);  // -y
-  s.Quad(2, 6, 7, 3);  // +y
-  s.Quad(0, 2, 3, 1);  // -z
+  s.Quad(0, 4, 6, 2);                // -x
+  s.Quad(1, 3, 7, 5);                // +x
+  s.Quad(0, 1, 5, 4);                // -y
+  s.Quad(2, 6, 7, 3);                // +y
+  s.Quad(0, 2, 3, 1);                // -z
   if (with_top) s.Quad(4, 5, 7, 6);  // +z
   return s;
 }
@@ -83,7 +84,8 @@ Soup Weld(const Soup& in) {
   for (size_t i = 0; i < in.point_count(); ++i) {
     const auto key = std::make_tuple(in.points[i * 3], in.points[i * 3 + 1], in.points[i * 3 + 2]);
     auto it = index.find(key);
-    if (it == index.end()) it = index.emplace(key, out.Add(std::get<0>(key), std::get<1>(key), std::get<2>(key))).first;
+    if (it == index.end())
+      it = index.emplace(key, out.Add(std::get<0>(key), std::get<1>(key), std::get<2>(key))).first;
     remap[i] = it->second;
   }
   for (uint32_t i : in.indices) out.indices.push_back(remap[i]);
@@ -99,8 +101,8 @@ Soup Transformed(Soup s, double scale, double dx, double dy, double dz) {
   return s;
 }
 
-Case Make(const std::string& name, const std::string& description, const Soup& s, Expect decompose, Expect codec,
-          Expect pack) {
+Case Make(const std::string& name, const std::string& description, const Soup& s, Expect decompose,
+          Expect codec, Expect pack) {
   Case c;
   c.name = name;
   c.description = description;
@@ -117,15 +119,19 @@ constexpr Expect kOk = Expect::kOk, kError = Expect::kError, kEither = Expect::k
 Case Build(const std::string& name) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
-  if (name == "torus") return Make(name, "reference: closed torus, 768 triangles", DefaultTorus(), kOk, kOk, kOk);
+  if (name == "torus")
+    return Make(name, "reference: closed torus, 768 triangles", DefaultTorus(), kOk, kOk, kOk);
   if (name == "scale_1e-30") {
-    return Make(name, "the torus scaled by 1e-30", Transformed(DefaultTorus(), 1e-30, 0, 0, 0), kOk, kOk, kOk);
+    return Make(name, "the torus scaled by 1e-30", Transformed(DefaultTorus(), 1e-30, 0, 0, 0), kOk,
+                kOk, kOk);
   }
   if (name == "scale_1e30") {
-    return Make(name, "the torus scaled by 1e30", Transformed(DefaultTorus(), 1e30, 0, 0, 0), kOk, kOk, kOk);
+    return Make(name, "the torus scaled by 1e30", Transformed(DefaultTorus(), 1e30, 0, 0, 0), kOk,
+                kOk, kOk);
   }
   if (name == "aspect_1e30_1e-30") {
-    return Make(name, "closed box 1e30 x 1 x 1e-30", Box(0, 0, 0, 1e30, 1, 1e-30), kEither, kOk, kEither);
+    return Make(name, "closed box 1e30 x 1 x 1e-30", Box(0, 0, 0, 1e30, 1, 1e-30), kEither, kOk,
+                kEither);
   }
   if (name == "float_extent_overflow") {
     return Make(name, "closed box from -3e38 to 3e38: the extent overflows float",
@@ -134,86 +140,100 @@ Case Build(const std::string& name) {
   if (name == "far_1e7_detail_1e-3") {
     // In double this is a fine torus; rounded to float (ulp 1 at 1e7) every point collapses onto
     // a few grid points, so the float stages see a degenerate mesh.
-    return Make(name, "torus of size 1e-3 at (1e7, -1e7, 1e7)", Transformed(DefaultTorus(), 1e-3, 1e7, -1e7, 1e7), kOk,
-                kOk, kEither);
+    return Make(name, "torus of size 1e-3 at (1e7, -1e7, 1e7)",
+                Transformed(DefaultTorus(), 1e-3, 1e7, -1e7, 1e7), kOk, kOk, kEither);
   }
   if (name == "far_1e3_detail_1e-3") {
     return Make(name, "torus of size 1e-3 at (1e3, -1e3, 1e3) (float holds the detail)",
                 Transformed(DefaultTorus(), 1e-3, 1e3, -1e3, 1e3), kOk, kOk, kOk);
   }
   if (name == "flat_box_1e-7") {
-    return Make(name, "near-coplanar: closed box 1 x 1 x 1e-7", Box(0, 0, 0, 1, 1, 1e-7), kEither, kOk, kEither);
+    return Make(name, "near-coplanar: closed box 1 x 1 x 1e-7", Box(0, 0, 0, 1, 1, 1e-7), kEither,
+                kOk, kEither);
   }
   if (name == "near_coplanar_sheet") {
     Soup s;
     Noise noise;
     const int n = 33;
     for (int i = 0; i < n; ++i) {
-      for (int j = 0; j < n; ++j) s.Add(double(i) / (n - 1), double(j) / (n - 1), 1e-9 * noise.Next());
+      for (int j = 0; j < n; ++j)
+        s.Add(double(i) / (n - 1), double(j) / (n - 1), 1e-9 * noise.Next());
     }
     for (int i = 0; i + 1 < n; ++i) {
-      for (int j = 0; j + 1 < n; ++j) s.Quad(i * n + j, (i + 1) * n + j, (i + 1) * n + j + 1, i * n + j + 1);
+      for (int j = 0; j + 1 < n; ++j)
+        s.Quad(i * n + j, (i + 1) * n + j, (i + 1) * n + j + 1, i * n + j + 1);
     }
     return Make(name, "open 32 x 32 grid, z noise 1e-9", s, kEither, kOk, kEither);
   }
   if (name == "needle_1e-7") {
-    return Make(name, "near-collinear: closed box 1 x 1e-7 x 1e-7", Box(0, 0, 0, 1, 1e-7, 1e-7), kEither, kOk, kEither);
+    return Make(name, "near-collinear: closed box 1 x 1e-7 x 1e-7", Box(0, 0, 0, 1, 1e-7, 1e-7),
+                kEither, kOk, kEither);
   }
   if (name == "near_collinear_strip") {
     Soup s;
     Noise noise;
     for (int i = 0; i <= 100; ++i) s.Add(i / 100.0, 1e-9 * noise.Next(), 1e-9 * noise.Next());
     for (uint32_t i = 0; i + 2 <= 100; ++i) s.Tri(i, i + 1, i + 2);
-    return Make(name, "99 triangles on points along x, off the line by 1e-9", s, kEither, kOk, kEither);
+    return Make(name, "99 triangles on points along x, off the line by 1e-9", s, kEither, kOk,
+                kEither);
   }
   if (name == "slivers") {
-    return Make(name, "closed torus of 4000 x 4 quads: 16000 triangles of aspect ~250", Torus(1.0, 0.35, 4000, 4), kOk,
-                kOk, kOk);
+    return Make(name, "closed torus of 4000 x 4 quads: 16000 triangles of aspect ~250",
+                Torus(1.0, 0.35, 4000, 4), kOk, kOk, kOk);
   }
   if (name == "zero_area_triangles") {
     Soup s = DefaultTorus();
     const size_t t = s.triangle_count();
     for (size_t k = 0; k < t; k += 4) {
       const uint32_t a = s.indices[k * 3], b = s.indices[k * 3 + 1];
-      s.Tri(a, a, b);                       // repeated corner
-      s.Tri(a, a, a);                       // a point
-      const uint32_t m = s.Add((s.points[a * 3] + s.points[b * 3]) / 2, (s.points[a * 3 + 1] + s.points[b * 3 + 1]) / 2,
+      s.Tri(a, a, b);  // repeated corner
+      s.Tri(a, a, a);  // a point
+      const uint32_t m = s.Add((s.points[a * 3] + s.points[b * 3]) / 2,
+                               (s.points[a * 3 + 1] + s.points[b * 3 + 1]) / 2,
                                (s.points[a * 3 + 2] + s.points[b * 3 + 2]) / 2);
-      s.Tri(a, m, b);                       // collinear corners
+      s.Tri(a, m, b);  // collinear corners
     }
-    return Make(name, "the torus plus 576 zero-area triangles (repeated, point-like, collinear)", s, kOk, kOk, kOk);
+    return Make(name, "the torus plus 576 zero-area triangles (repeated, point-like, collinear)", s,
+                kOk, kOk, kOk);
   }
   if (name == "duplicate_vertices") {
     const Soup t = DefaultTorus();
     Soup s;
     for (uint32_t i : t.indices) s.Add(t.points[i * 3], t.points[i * 3 + 1], t.points[i * 3 + 2]);
     for (uint32_t i = 0; i < t.indices.size(); ++i) s.indices.push_back(i);
-    return Make(name, "the torus as a triangle soup: every corner its own vertex", s, kOk, kOk, kOk);
+    return Make(name, "the torus as a triangle soup: every corner its own vertex", s, kOk, kOk,
+                kOk);
   }
   if (name == "duplicate_faces") {
     Soup s = DefaultTorus();
     const size_t t = s.triangle_count();
-    for (size_t k = 0; k < t; ++k) s.Tri(s.indices[k * 3], s.indices[k * 3 + 1], s.indices[k * 3 + 2]);
-    for (size_t k = 0; k < t; k += 3) s.Tri(s.indices[k * 3], s.indices[k * 3 + 2], s.indices[k * 3 + 1]);
-    return Make(name, "the torus with every triangle twice and every third once more, reversed", s, kOk, kOk, kOk);
+    for (size_t k = 0; k < t; ++k)
+      s.Tri(s.indices[k * 3], s.indices[k * 3 + 1], s.indices[k * 3 + 2]);
+    for (size_t k = 0; k < t; k += 3)
+      s.Tri(s.indices[k * 3], s.indices[k * 3 + 2], s.indices[k * 3 + 1]);
+    return Make(name, "the torus with every triangle twice and every third once more, reversed", s,
+                kOk, kOk, kOk);
   }
   if (name == "t_junctions") {
     Soup s = Box(0, 0, 0, 1, 1, 1, /*with_top=*/false);
-    const uint32_t m45 = s.Add(0.5, 0, 1), m57 = s.Add(1, 0.5, 1), m76 = s.Add(0.5, 1, 1), m64 = s.Add(0, 0.5, 1),
-                   c = s.Add(0.5, 0.5, 1);
+    const uint32_t m45 = s.Add(0.5, 0, 1), m57 = s.Add(1, 0.5, 1), m76 = s.Add(0.5, 1, 1),
+                   m64 = s.Add(0, 0.5, 1), c = s.Add(0.5, 0.5, 1);
     s.Quad(4, m45, c, m64);
     s.Quad(m45, 5, m57, c);
     s.Quad(c, m57, 7, m76);
     s.Quad(m64, c, m76, 6);
-    return Make(name, "unit box whose top is split 2 x 2: four T-junctions on its rim", s, kOk, kOk, kOk);
+    return Make(name, "unit box whose top is split 2 x 2: four T-junctions on its rim", s, kOk, kOk,
+                kOk);
   }
   if (name == "open_box") {
-    return Make(name, "unit box without its top face", Box(0, 0, 0, 1, 1, 1, /*with_top=*/false), kOk, kOk, kOk);
+    return Make(name, "unit box without its top face", Box(0, 0, 0, 1, 1, 1, /*with_top=*/false),
+                kOk, kOk, kOk);
   }
   if (name == "open_torus") {
     Soup s = DefaultTorus();
     s.indices.resize(s.indices.size() - 4 * 12 * 6);  // the last 4 rings of quads
-    return Make(name, "the torus with 4 of its 32 rings of quads removed (a C-shaped open tube)", s, kOk, kOk, kOk);
+    return Make(name, "the torus with 4 of its 32 rings of quads removed (a C-shaped open tube)", s,
+                kOk, kOk, kOk);
   }
   if (name == "non_manifold_edge") {
     Soup s = Box(0, 0, 0, 1, 1, 1);
@@ -230,7 +250,8 @@ Case Build(const std::string& name) {
   }
   if (name == "inconsistent_orientation") {
     Soup s = DefaultTorus();
-    for (size_t k = 0; k < s.triangle_count(); k += 2) std::swap(s.indices[k * 3 + 1], s.indices[k * 3 + 2]);
+    for (size_t k = 0; k < s.triangle_count(); k += 2)
+      std::swap(s.indices[k * 3 + 1], s.indices[k * 3 + 2]);
     return Make(name, "the torus with every other triangle reversed", s, kOk, kOk, kOk);
   }
   if (name == "single_triangle") {
@@ -255,7 +276,8 @@ Case Build(const std::string& name) {
     s.points[9 * 3 + 2] = -inf;
     return Make(name, "the torus with a +Inf and a -Inf coordinate", s, kError, kError, kError);
   }
-  if (name == "empty") return Make(name, "no points, no triangles", Soup(), kError, kEither, kEither);
+  if (name == "empty")
+    return Make(name, "no points, no triangles", Soup(), kError, kEither, kEither);
   if (name == "points_only") {
     Soup s = DefaultTorus();
     s.indices.clear();
@@ -264,7 +286,8 @@ Case Build(const std::string& name) {
   if (name == "index_out_of_range") {
     Soup s = DefaultTorus();
     s.indices[10] = static_cast<uint32_t>(s.point_count());
-    return Make(name, "the torus with one index equal to the point count", s, kError, kError, kError);
+    return Make(name, "the torus with one index equal to the point count", s, kError, kError,
+                kError);
   }
   if (name == "index_uint32_max") {
     Soup s = DefaultTorus();

@@ -17,11 +17,11 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "convex_hull.h"  // vhacd/src: the reference hull for the dent depth of packed hulls
 #include "gltf/packed_glb_reader.h"
 #include "o3dgc/o3dgc.h"
 #include "pipeline/mesh_codec.h"
 #include "pipeline/pack.h"
-#include "convex_hull.h"  // vhacd/src: the reference hull for the dent depth of packed hulls
 #include "stability_cases.h"
 #include "vhacd/vhacd.h"
 
@@ -40,13 +40,16 @@
 namespace hullpack::stability {
 namespace {
 
-constexpr int kPositionBits = 14;           // o3dgc stage
-constexpr double kConvexTolerance = 1e-6;   // of the input's bounding-box diagonal
-constexpr double kHullBoxMargin = 0.1;      // hulls stay within the input's box grown by this x diagonal
+constexpr int kPositionBits = 14;          // o3dgc stage
+constexpr double kConvexTolerance = 1e-6;  // of the input's bounding-box diagonal
+constexpr double kHullBoxMargin =
+    0.1;  // hulls stay within the input's box grown by this x diagonal
 constexpr const char* kMeshName = "stability_mesh";  // pack errors must name it
 
 using Clock = std::chrono::steady_clock;
-double Seconds(Clock::time_point since) { return std::chrono::duration<double>(Clock::now() - since).count(); }
+double Seconds(Clock::time_point since) {
+  return std::chrono::duration<double>(Clock::now() - since).count();
+}
 
 std::string Format(const char* fmt, double a) {
   char buf[64];
@@ -61,7 +64,9 @@ struct Box {
   template <typename T>
   explicit Box(const std::vector<T>& p) {
     for (size_t i = 0; i + 2 < p.size(); i += 3) {
-      if (!std::isfinite(double(p[i])) || !std::isfinite(double(p[i + 1])) || !std::isfinite(double(p[i + 2]))) continue;
+      if (!std::isfinite(double(p[i])) || !std::isfinite(double(p[i + 1])) ||
+          !std::isfinite(double(p[i + 2])))
+        continue;
       for (int k = 0; k < 3; ++k) {
         lo[k] = any ? std::min(lo[k], double(p[i + k])) : double(p[i + k]);
         hi[k] = any ? std::max(hi[k], double(p[i + k])) : double(p[i + k]);
@@ -75,12 +80,15 @@ struct Box {
     for (int k = 0; k < 3; ++k) m = std::max({m, std::fabs(lo[k]), std::fabs(hi[k])});
     return m;
   }
-  double Diagonal() const { return std::hypot(hi[0] - lo[0], std::hypot(hi[1] - lo[1], hi[2] - lo[2])); }
+  double Diagonal() const {
+    return std::hypot(hi[0] - lo[0], std::hypot(hi[1] - lo[1], hi[2] - lo[2]));
+  }
 };
 
 // One float ulp at the magnitude of x (the rounding every float output may add).
 double FloatUlp(double x) {
-  const float f = static_cast<float>(std::min(std::fabs(x), double(std::numeric_limits<float>::max())));
+  const float f =
+      static_cast<float>(std::min(std::fabs(x), double(std::numeric_limits<float>::max())));
   return double(std::nextafter(f, std::numeric_limits<float>::infinity())) - double(f);
 }
 
@@ -104,7 +112,9 @@ class PointSet {
           auto it = cells_.find(Key({c[0] + dx, c[1] + dy, c[2] + dz}));
           if (it == cells_.end()) continue;
           for (uint32_t i : it->second) {
-            const double d = std::hypot(double(p_[i * 3]) - q[0], std::hypot(double(p_[i * 3 + 1]) - q[1], double(p_[i * 3 + 2]) - q[2]));
+            const double d =
+                std::hypot(double(p_[i * 3]) - q[0],
+                           std::hypot(double(p_[i * 3 + 1]) - q[1], double(p_[i * 3 + 2]) - q[2]));
             best = std::min(best, d);
           }
         }
@@ -116,7 +126,9 @@ class PointSet {
  private:
   std::array<int64_t, 3> Cell(const float* q) const {
     std::array<int64_t, 3> c;
-    for (int k = 0; k < 3; ++k) c[k] = static_cast<int64_t>(std::floor(std::clamp((double(q[k]) - origin_[k]) / cell_, -1e12, 1e12)));
+    for (int k = 0; k < 3; ++k)
+      c[k] = static_cast<int64_t>(
+          std::floor(std::clamp((double(q[k]) - origin_[k]) / cell_, -1e12, 1e12)));
     return c;
   }
   static uint64_t Key(const std::array<int64_t, 3>& c) {
@@ -131,15 +143,16 @@ class PointSet {
 
 // What the checks of one convex hull found.
 struct HullCheck {
-  std::string problem;      // empty when the hull is finite, closed, outward and in the box
-  double convexity = 0;     // largest distance of a vertex above a face plane, / diagonal
+  std::string problem;   // empty when the hull is finite, closed, outward and in the box
+  double convexity = 0;  // largest distance of a vertex above a face plane, / diagonal
 };
 
 // Finite, indices in range, every vertex used, closed (every directed edge once, with its
 // reverse), outward (non-negative volume), inside the input's box grown by kHullBoxMargin; the
 // convexity defect is measured, not judged here.
 template <typename T>
-HullCheck CheckHull(const std::vector<T>& points, const std::vector<uint32_t>& triangles, const Box& input) {
+HullCheck CheckHull(const std::vector<T>& points, const std::vector<uint32_t>& triangles,
+                    const Box& input) {
   HullCheck r;
   const size_t n = points.size() / 3;
   const double diagonal = input.Diagonal();
@@ -187,8 +200,10 @@ HullCheck CheckHull(const std::vector<T>& points, const std::vector<uint32_t>& t
       b[k] = double(points[triangles[t + 1] * 3 + k]) - o[k];
       c[k] = double(points[triangles[t + 2] * 3 + k]) - o[k];
     }
-    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-    const double nrm[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]},
+                 w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const double nrm[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
+                           u[0] * w[1] - u[1] * w[0]};
     volume += (a[0] * nrm[0] + a[1] * nrm[1] + a[2] * nrm[2]) / 6;
     const double len = std::hypot(nrm[0], std::hypot(nrm[1], nrm[2]));
     if (!(len > 0)) continue;  // a zero-area face has no plane to violate
@@ -208,9 +223,12 @@ HullCheck CheckHull(const std::vector<T>& points, const std::vector<uint32_t>& t
 template <typename T>
 double DentDepth(const std::vector<T>& points, double diagonal) {
   std::vector<vhacd::internal::Vec3> p;
-  for (size_t i = 0; i + 2 < points.size(); i += 3) p.emplace_back(double(points[i]), double(points[i + 1]), double(points[i + 2]));
+  for (size_t i = 0; i + 2 < points.size(); i += 3)
+    p.emplace_back(double(points[i]), double(points[i + 1]), double(points[i + 2]));
   vhacd::internal::HullMesh reference;
-  if (vhacd::internal::ComputeConvexHull(p, -1, &reference) != vhacd::internal::HullStatus::kOk || !(diagonal > 0)) return 0;
+  if (vhacd::internal::ComputeConvexHull(p, -1, &reference) != vhacd::internal::HullStatus::kOk ||
+      !(diagonal > 0))
+    return 0;
   const vhacd::internal::HullPlanes planes(reference);
   double depth = 0;
   for (const vhacd::internal::Vec3& v : p) depth = std::max(depth, -planes.SignedDistanceBound(v));
@@ -225,7 +243,9 @@ struct Outcome {
   std::string message;  // the error's message, printed under the row
 };
 
-const char* ExpectName(Expect e) { return e == Expect::kOk ? "ok" : e == Expect::kError ? "error" : "ok or error"; }
+const char* ExpectName(Expect e) {
+  return e == Expect::kOk ? "ok" : e == Expect::kError ? "error" : "ok or error";
+}
 
 void Judge(const char* stage, Expect expect, const Outcome& o) {
   if (expect == Expect::kOk) {
@@ -244,7 +264,8 @@ Outcome Decompose(const Case& c, const Box& box) {
   Outcome o;
   vhacd::Parameters params;
   params.resolution = 20000;
-  const vhacd::MeshView view = vhacd::MeshView::FromDouble(c.points.data(), c.points.size() / 3, c.indices.data(), c.indices.size() / 3);
+  const vhacd::MeshView view = vhacd::MeshView::FromDouble(c.points.data(), c.points.size() / 3,
+                                                           c.indices.data(), c.indices.size() / 3);
   const auto t0 = Clock::now();
   const vhacd::Result r = vhacd::Decompose(view, params);
   const double seconds = Seconds(t0);
@@ -260,7 +281,8 @@ Outcome Decompose(const Case& c, const Box& box) {
     const vhacd::ConvexHull& hull = r.hulls[h];
     HullCheck check = CheckHull(hull.points, hull.triangles, box);
     if (!check.problem.empty()) problem = "hull " + std::to_string(h) + ": " + check.problem;
-    if (!std::isfinite(hull.volume) || hull.volume < 0) problem = "hull " + std::to_string(h) + ": bad volume";
+    if (!std::isfinite(hull.volume) || hull.volume < 0)
+      problem = "hull " + std::to_string(h) + ": bad volume";
     for (double x : hull.center) {
       if (!std::isfinite(x)) problem = "hull " + std::to_string(h) + ": non-finite centre";
     }
@@ -270,10 +292,12 @@ Outcome Decompose(const Case& c, const Box& box) {
     if (!std::isfinite(x)) problem = "non-finite report";
   }
   EXPECT_EQ(problem, "") << "decompose";
-  EXPECT_LE(convexity, kConvexTolerance) << "decompose: hull not convex within 1e-6 of the diagonal";
+  EXPECT_LE(convexity, kConvexTolerance)
+      << "decompose: hull not convex within 1e-6 of the diagonal";
   o.ok = true;
-  o.cell = "ok, " + std::to_string(r.hulls.size()) + (r.hulls.size() == 1 ? " hull" : " hulls") + ", convex to " +
-           Format("%.0e", convexity) + (problem.empty() ? "" : " **" + problem + "**") + Format(" (%.2f s)", seconds);
+  o.cell = "ok, " + std::to_string(r.hulls.size()) + (r.hulls.size() == 1 ? " hull" : " hulls") +
+           ", convex to " + Format("%.0e", convexity) +
+           (problem.empty() ? "" : " **" + problem + "**") + Format(" (%.2f s)", seconds);
   return o;
 }
 
@@ -315,7 +339,9 @@ Outcome Codec(const Case& c, const std::vector<float>& positions) {
   for (size_t i = 0; i < std::min(positions.size(), out.positions.size()); ++i) {
     const double x = positions[i], y = out.positions[i];
     const double err = std::fabs(y - x);
-    if (!std::isfinite(y) || err > 0.5 * step * (1 + 1e-6) + FloatUlp(std::max(std::fabs(x), std::fabs(y)))) ++over;
+    if (!std::isfinite(y) ||
+        err > 0.5 * step * (1 + 1e-6) + FloatUlp(std::max(std::fabs(x), std::fabs(y))))
+      ++over;
     worst = std::max(worst, step > 0 ? err / step : err);
   }
   EXPECT_EQ(over, 0u) << "coordinates beyond half a step (" << step << ")";
@@ -324,7 +350,8 @@ Outcome Codec(const Case& c, const std::vector<float>& positions) {
   std::vector<uint8_t> fast;
   o3dgc::DecodedMesh out_fast;
   EXPECT_EQ(o3dgc::Encode(view, params, &fast), o3dgc::Status::kOk) << "fast_decode";
-  EXPECT_EQ(o3dgc::Decode(fast.data(), fast.size(), o3dgc::DecodeOptions(), &out_fast), o3dgc::Status::kOk)
+  EXPECT_EQ(o3dgc::Decode(fast.data(), fast.size(), o3dgc::DecodeOptions(), &out_fast),
+            o3dgc::Status::kOk)
       << "fast_decode: an encoded stream must decode";
   const bool same = out_fast.positions == out.positions && out_fast.indices == out.indices;
   EXPECT_TRUE(same) << "fast_decode decodes to another mesh";
@@ -344,13 +371,15 @@ Outcome MeshCodec(const Case& c, const std::vector<float>& positions) {
   const auto t0 = Clock::now();
   Result<EncodedMesh> encoded = EncodeMesh(mesh, {}, settings);
   if (!encoded.ok()) {
-    o.clear_error = encoded.status().code() != StatusCode::kInternal && !encoded.status().message().empty();
+    o.clear_error =
+        encoded.status().code() != StatusCode::kInternal && !encoded.status().message().empty();
     o.cell = std::string("error: ") + StatusCodeName(encoded.status().code());
     o.message = encoded.status().message();
     return o;
   }
   std::vector<uint32_t> groups;
-  Result<Mesh> decoded = DecodeMesh(encoded->stream.data(), encoded->stream.size(), &groups, c.name);
+  Result<Mesh> decoded =
+      DecodeMesh(encoded->stream.data(), encoded->stream.size(), &groups, c.name);
   const double seconds = Seconds(t0);
   EXPECT_TRUE(decoded.ok()) << decoded.status().ToString();
   if (!decoded.ok()) {
@@ -361,21 +390,26 @@ Outcome MeshCodec(const Case& c, const std::vector<float>& positions) {
   o.ok = true;
   const Mesh& out = decoded.value();
   EXPECT_EQ(out.triangle_count(), mesh.triangle_count());
-  EXPECT_EQ(std::count_if(out.indices.begin(), out.indices.end(), [&](uint32_t i) { return i >= out.vertex_count(); }), 0);
+  EXPECT_EQ(std::count_if(out.indices.begin(), out.indices.end(),
+                          [&](uint32_t i) { return i >= out.vertex_count(); }),
+            0);
   // Promise: every decoded vertex within half a cell diagonal (sqrt(3)/2 step) of an input vertex,
   // and every input vertex a triangle uses within that of a decoded vertex.
   const double step = Box(positions).Extent() / double((1 << settings.position_bits) - 1);
-  const double bound = std::sqrt(3.0) / 2 * step * (1 + 1e-6) + 2 * FloatUlp(Box(positions).MaxAbs());
+  const double bound =
+      std::sqrt(3.0) / 2 * step * (1 + 1e-6) + 2 * FloatUlp(Box(positions).MaxAbs());
   PointSet in(positions, bound), back(out.positions, bound);
   double worst = 0;
-  for (size_t v = 0; v < out.vertex_count(); ++v) worst = std::max(worst, in.NearDistance(&out.positions[v * 3]));
+  for (size_t v = 0; v < out.vertex_count(); ++v)
+    worst = std::max(worst, in.NearDistance(&out.positions[v * 3]));
   std::vector<bool> referenced(mesh.vertex_count(), false);
   for (uint32_t i : mesh.indices) referenced[i] = true;
   for (size_t v = 0; v < mesh.vertex_count(); ++v) {
     if (referenced[v]) worst = std::max(worst, back.NearDistance(&positions[v * 3]));
   }
   EXPECT_LE(worst, bound) << "vertex distance beyond sqrt(3)/2 step";
-  o.cell = "ok, " + Format(step > 0 ? "%.2f step" : "%.0e abs", step > 0 ? worst / step : worst) + Format(" (%.2f s)", seconds);
+  o.cell = "ok, " + Format(step > 0 ? "%.2f step" : "%.0e abs", step > 0 ? worst / step : worst) +
+           Format(" (%.2f s)", seconds);
   return o;
 }
 
@@ -401,7 +435,8 @@ Outcome Pack(const Case& c, const std::vector<float>& positions) {
     o.message = packed.status().message();
     return o;
   }
-  Result<Scene> read = ReadPackedGltf(packed->glb.data(), packed->glb.size(), "packed.glb", "", nullptr);
+  Result<Scene> read =
+      ReadPackedGltf(packed->glb.data(), packed->glb.size(), "packed.glb", "", nullptr);
   const double seconds = Seconds(t0);
   EXPECT_TRUE(read.ok()) << read.status().ToString();
   if (!read.ok()) {
@@ -419,12 +454,15 @@ Outcome Pack(const Case& c, const std::vector<float>& positions) {
   // Render mesh: every vertex within max_error x diagonal of an input vertex (pruning may drop
   // vertices and triangles, so only this direction is promised).
   const Mesh& render = meshes[0];
-  EXPECT_EQ(std::count_if(render.indices.begin(), render.indices.end(), [&](uint32_t i) { return i >= render.vertex_count(); }), 0);
+  EXPECT_EQ(std::count_if(render.indices.begin(), render.indices.end(),
+                          [&](uint32_t i) { return i >= render.vertex_count(); }),
+            0);
   const double budget = options.max_error * Box(positions).Diagonal();
   const double bound = budget * (1 + 1e-6) + 2 * FloatUlp(Box(positions).MaxAbs());
   PointSet in(positions, bound);
   double worst = 0;
-  for (size_t v = 0; v < render.vertex_count(); ++v) worst = std::max(worst, in.NearDistance(&render.positions[v * 3]));
+  for (size_t v = 0; v < render.vertex_count(); ++v)
+    worst = std::max(worst, in.NearDistance(&render.positions[v * 3]));
   EXPECT_LE(worst, bound) << "render vertex beyond max_error x diagonal";
   // Hulls: finite, closed, outward, and convex up to their quantization: the stored triangles are
   // the decoder's rounding of convex hulls, so a face plane can be crossed (sliver faces tilt
@@ -436,19 +474,23 @@ Outcome Pack(const Case& c, const std::vector<float>& positions) {
   std::string problem;
   for (size_t h = 1; h < meshes.size(); ++h) {
     HullCheck check = CheckHull(meshes[h].positions, meshes[h].indices, float_box);
-    if (!check.problem.empty() && problem.empty()) problem = "hull " + std::to_string(h - 1) + ": " + check.problem;
+    if (!check.problem.empty() && problem.empty())
+      problem = "hull " + std::to_string(h - 1) + ": " + check.problem;
     convexity = std::max(convexity, check.convexity);
     dent = std::max(dent, DentDepth(meshes[h].positions, diagonal));
   }
   EXPECT_EQ(problem, "") << "packed hulls";
   const double quantization = report.meshes.empty() ? 0 : report.meshes[0].hull_quantization_error;
   EXPECT_LE(quantization, options.hull_error * (1 + 1e-6)) << "hull vertices beyond their budget";
-  EXPECT_LE(dent, 2 * quantization * (1 + 1e-6) + 4 * FloatUlp(float_box.MaxAbs()) / std::max(diagonal, 1e-300))
+  EXPECT_LE(dent, 2 * quantization * (1 + 1e-6) +
+                      4 * FloatUlp(float_box.MaxAbs()) / std::max(diagonal, 1e-300))
       << "packed hull dented deeper than twice its quantization";
-  o.cell = "ok, " + Format(budget > 0 ? "%.2f budget" : "%.0e abs", budget > 0 ? worst / budget : worst) + ", " +
-           std::to_string(hulls) + (hulls == 1 ? " hull" : " hulls") +
-           (hulls ? ", faces " + Format("%.0e", convexity) + ", dent " + Format("%.0e", dent) : "") +
-           (problem.empty() ? "" : " **" + problem + "**") + Format(" (%.2f s)", seconds);
+  o.cell =
+      "ok, " +
+      Format(budget > 0 ? "%.2f budget" : "%.0e abs", budget > 0 ? worst / budget : worst) + ", " +
+      std::to_string(hulls) + (hulls == 1 ? " hull" : " hulls") +
+      (hulls ? ", faces " + Format("%.0e", convexity) + ", dent " + Format("%.0e", dent) : "") +
+      (problem.empty() ? "" : " **" + problem + "**") + Format(" (%.2f s)", seconds);
   return o;
 }
 
@@ -482,13 +524,13 @@ TEST_P(Stability, EveryStageGivesAValidResultOrAClearError) {
   // The promise in model units: half a 14-bit step per axis (codec), max_error x diagonal (pack).
   const Box float_box(positions);
   const std::string promised =
-      float_box.any ? Format("%.1e", 0.5 * float_box.Extent() / double((1 << kPositionBits) - 1)) + " / " +
-                          Format("%.1e", PackOptions().max_error * float_box.Diagonal())
+      float_box.any ? Format("%.1e", 0.5 * float_box.Extent() / double((1 << kPositionBits) - 1)) +
+                          " / " + Format("%.1e", PackOptions().max_error * float_box.Diagonal())
                     : "-";
   std::cout << "| " << c.name << " | " << c.description << " | " << ExpectName(c.decompose) << " / "
-            << ExpectName(c.codec) << " / " << ExpectName(c.pack) << " | " << promised << " | " << decompose.cell
-            << " | " << codec.cell << " | " << mesh_codec.cell << " | " << pack.cell << " | " << Format("%.0f", rss)
-            << " |\n";
+            << ExpectName(c.codec) << " / " << ExpectName(c.pack) << " | " << promised << " | "
+            << decompose.cell << " | " << codec.cell << " | " << mesh_codec.cell << " | "
+            << pack.cell << " | " << Format("%.0f", rss) << " |\n";
   for (const Outcome* o : {&decompose, &codec, &mesh_codec, &pack}) {
     if (!o->message.empty()) std::cout << "message: " << o->message << "\n";
   }
@@ -502,7 +544,8 @@ std::string TestName(const ::testing::TestParamInfo<std::string>& info) {
   return s;
 }
 
-INSTANTIATE_TEST_SUITE_P(Cases, Stability, ::testing::ValuesIn(CaseNames(HULLPACK_STABILITY_HEAVY)), TestName);
+INSTANTIATE_TEST_SUITE_P(Cases, Stability, ::testing::ValuesIn(CaseNames(HULLPACK_STABILITY_HEAVY)),
+                         TestName);
 
 }  // namespace
 }  // namespace hullpack::stability

@@ -72,7 +72,8 @@ TEST(ConvexHullTest, RandomPointsOnAndInSphere) {
 TEST(ConvexHullTest, DegenerateInputs) {
   HullMesh h;
   EXPECT_EQ(ComputeConvexHull({}, -1.0, &h), HullStatus::kTooFewPoints);
-  EXPECT_EQ(ComputeConvexHull({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}, -1.0, &h), HullStatus::kTooFewPoints);
+  EXPECT_EQ(ComputeConvexHull({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}, -1.0, &h),
+            HullStatus::kTooFewPoints);
   std::vector<Vec3> same(10, Vec3(1, 2, 3));
   EXPECT_EQ(ComputeConvexHull(same, -1.0, &h), HullStatus::kCollinear);
   std::vector<Vec3> line;

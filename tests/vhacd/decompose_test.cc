@@ -52,7 +52,8 @@ TEST_P(ModeTest, SeparateComponentsAndTwoSidedFaces) {
   Mesh m = vhacd_test::Box(0, 0, 0, 1, 1, 1);
   m.Append(vhacd_test::Box(3, 0.5, 0, 4, 1.5, 1));
   const size_t n = m.triangle_count();
-  for (size_t t = 0; t < n; ++t) m.AddTriangle(m.indices[3 * t], m.indices[3 * t + 2], m.indices[3 * t + 1]);
+  for (size_t t = 0; t < n; ++t)
+    m.AddTriangle(m.indices[3 * t], m.indices[3 * t + 2], m.indices[3 * t + 1]);
   const vhacd::Result r = vhacd::Decompose(m.View(), Fast());
   ASSERT_TRUE(r.ok()) << r.message;
   EXPECT_TRUE(r.report.closed_input);  // duplicates are dropped before the topology check
@@ -70,9 +71,11 @@ double LBlockIoU(const std::vector<vhacd::ConvexHull>& hulls, double scale) {
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j)
       for (int k = 0; k < n / 2; ++k) {
-        const double x = 2.0 * (i + 0.5) / n, y = 2.0 * (j + 0.5) / n, z = 1.0 * (k + 0.5) / (n / 2);
+        const double x = 2.0 * (i + 0.5) / n, y = 2.0 * (j + 0.5) / n,
+                     z = 1.0 * (k + 0.5) / (n / 2);
         const bool s = vhacd_test::InsideLBlock(x, y, z);
-        const bool h = vhacd_test::InsideAnyHull(hulls, x * scale, y * scale, z * scale, 1e-9 * scale);
+        const bool h =
+            vhacd_test::InsideAnyHull(hulls, x * scale, y * scale, z * scale, 1e-9 * scale);
         inter += s && h;
         uni += s || h;
       }
@@ -185,7 +188,8 @@ TEST_P(ModeTest, OpenAndNonManifoldMeshesGiveValidHulls) {
   EXPECT_EQ(vhacd_test::CheckHulls(r.hulls, 1e-6 * 4), "");
   // A flat single square also works (a one-voxel-thick slab).
   Mesh sq;
-  sq.AddQuad(sq.AddPoint(0, 0, 0), sq.AddPoint(1, 0, 0), sq.AddPoint(1, 1, 0), sq.AddPoint(0, 1, 0));
+  sq.AddQuad(sq.AddPoint(0, 0, 0), sq.AddPoint(1, 0, 0), sq.AddPoint(1, 1, 0),
+             sq.AddPoint(0, 1, 0));
   const vhacd::Result r2 = vhacd::Decompose(sq.View(), Fast());
   ASSERT_TRUE(r2.ok()) << r2.message;
   EXPECT_EQ(r2.hulls.size(), 1u);
@@ -315,19 +319,28 @@ TEST(DecomposeTest, OutOfRangeParametersAreRejected) {
     change(p);
     return vhacd::Decompose(cube.View(), p).status;
   };
-  EXPECT_EQ(status([](vhacd::Parameters& p) { p.resolution = 100; }), vhacd::Status::kInvalidParameter);
-  EXPECT_EQ(status([](vhacd::Parameters& p) { p.resolution = 64000001; }), vhacd::Status::kInvalidParameter);
+  EXPECT_EQ(status([](vhacd::Parameters& p) { p.resolution = 100; }),
+            vhacd::Status::kInvalidParameter);
+  EXPECT_EQ(status([](vhacd::Parameters& p) { p.resolution = 64000001; }),
+            vhacd::Status::kInvalidParameter);
   EXPECT_EQ(status([](vhacd::Parameters& p) { p.depth = 0; }), vhacd::Status::kInvalidParameter);
   EXPECT_EQ(status([](vhacd::Parameters& p) { p.depth = 33; }), vhacd::Status::kInvalidParameter);
-  EXPECT_EQ(status([](vhacd::Parameters& p) { p.concavity = -0.1; }), vhacd::Status::kInvalidParameter);
-  EXPECT_EQ(status([](vhacd::Parameters& p) { p.concavity = NAN; }), vhacd::Status::kInvalidParameter);
-  EXPECT_EQ(status([](vhacd::Parameters& p) { p.plane_downsampling = 17; }), vhacd::Status::kInvalidParameter);
-  EXPECT_EQ(status([](vhacd::Parameters& p) { p.convexhull_downsampling = 0; }), vhacd::Status::kInvalidParameter);
+  EXPECT_EQ(status([](vhacd::Parameters& p) { p.concavity = -0.1; }),
+            vhacd::Status::kInvalidParameter);
+  EXPECT_EQ(status([](vhacd::Parameters& p) { p.concavity = NAN; }),
+            vhacd::Status::kInvalidParameter);
+  EXPECT_EQ(status([](vhacd::Parameters& p) { p.plane_downsampling = 17; }),
+            vhacd::Status::kInvalidParameter);
+  EXPECT_EQ(status([](vhacd::Parameters& p) { p.convexhull_downsampling = 0; }),
+            vhacd::Status::kInvalidParameter);
   EXPECT_EQ(status([](vhacd::Parameters& p) { p.alpha = 2; }), vhacd::Status::kInvalidParameter);
   EXPECT_EQ(status([](vhacd::Parameters& p) { p.gamma = 1.5; }), vhacd::Status::kInvalidParameter);
-  EXPECT_EQ(status([](vhacd::Parameters& p) { p.max_vertices_per_hull = 3; }), vhacd::Status::kInvalidParameter);
-  EXPECT_EQ(status([](vhacd::Parameters& p) { p.min_volume_per_hull = 0.5; }), vhacd::Status::kInvalidParameter);
-  EXPECT_EQ(status([](vhacd::Parameters& p) { p.mode = static_cast<vhacd::Mode>(7); }), vhacd::Status::kInvalidParameter);
+  EXPECT_EQ(status([](vhacd::Parameters& p) { p.max_vertices_per_hull = 3; }),
+            vhacd::Status::kInvalidParameter);
+  EXPECT_EQ(status([](vhacd::Parameters& p) { p.min_volume_per_hull = 0.5; }),
+            vhacd::Status::kInvalidParameter);
+  EXPECT_EQ(status([](vhacd::Parameters& p) { p.mode = static_cast<vhacd::Mode>(7); }),
+            vhacd::Status::kInvalidParameter);
   std::string why;
   EXPECT_EQ(vhacd::ValidateParameters(vhacd::Parameters(), &why), vhacd::Status::kOk);
   EXPECT_EQ(vhacd::ValidateParameters(vhacd::Parameters::High(), &why), vhacd::Status::kOk);
@@ -372,7 +385,8 @@ class Recorder : public vhacd::Observer {
  public:
   std::vector<double> overall;
   int logs = 0;
-  void OnProgress(double o, double s, double op, const char* stage, const char* operation) override {
+  void OnProgress(double o, double s, double op, const char* stage,
+                  const char* operation) override {
     EXPECT_GE(o, 0.0);
     EXPECT_LE(o, 100.0);
     EXPECT_TRUE(stage != nullptr && operation != nullptr);
@@ -422,7 +436,8 @@ Mesh BoxWithFloatingSheets() {
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 2; ++j) {
       const double x = -0.78 + 0.59 * i, y = -0.76 + 0.87 * j, s = 0.46, z = 0.487;
-      m.AddQuad(m.AddPoint(x, y, z), m.AddPoint(x + s, y, z), m.AddPoint(x + s, y + s, z), m.AddPoint(x, y + s, z));
+      m.AddQuad(m.AddPoint(x, y, z), m.AddPoint(x + s, y, z), m.AddPoint(x + s, y + s, z),
+                m.AddPoint(x, y + s, z));
     }
   return m;
 }
@@ -481,7 +496,8 @@ TEST(DecomposeTest, FloatInputAndStridesAndPca) {
     for (int k = 0; k < 3; ++k) idx.push_back(l.indices[3 * t + k]);
     idx.push_back(12345);  // padding: stride 4
   }
-  vhacd::MeshView v = vhacd::MeshView::FromFloat(pf.data(), l.point_count(), idx.data(), l.triangle_count());
+  vhacd::MeshView v =
+      vhacd::MeshView::FromFloat(pf.data(), l.point_count(), idx.data(), l.triangle_count());
   v.point_stride = 4;
   v.triangle_stride = 4;
   vhacd::Parameters p = Fast();
@@ -497,9 +513,11 @@ TEST(DecomposeTest, FloatInputAndStridesAndPca) {
   EXPECT_GT(LBlockIoU(rp.hulls, 1.0), 0.9);
 }
 
-INSTANTIATE_TEST_SUITE_P(Modes, ModeTest, ::testing::Values(vhacd::Mode::kVoxel, vhacd::Mode::kTetrahedron),
+INSTANTIATE_TEST_SUITE_P(Modes, ModeTest,
+                         ::testing::Values(vhacd::Mode::kVoxel, vhacd::Mode::kTetrahedron),
                          [](const ::testing::TestParamInfo<vhacd::Mode>& param) {
-                           return param.param == vhacd::Mode::kVoxel ? std::string("Voxel") : std::string("Tetrahedron");
+                           return param.param == vhacd::Mode::kVoxel ? std::string("Voxel")
+                                                                     : std::string("Tetrahedron");
                          });
 
 }  // namespace

@@ -21,7 +21,8 @@ TEST(DistanceFieldTest, ExactEuclideanDistanceToSolidVoxels) {
   for (int z = 0; z < 5; ++z)
     for (int y = 0; y < 7; ++y)
       for (int x = 0; x < 9; ++x)
-        EXPECT_NEAR(f.At(g.Index(x, y, z)), std::sqrt((x - 4.0) * (x - 4) + (y - 3.0) * (y - 3) + (z - 2.0) * (z - 2)),
+        EXPECT_NEAR(f.At(g.Index(x, y, z)),
+                    std::sqrt((x - 4.0) * (x - 4) + (y - 3.0) * (y - 3) + (z - 2.0) * (z - 2)),
                     1e-5);
   // Depth of a hull covering voxels x in [0, 9): the farthest outside centre inside it.
   std::vector<Vec3> pts;

@@ -24,7 +24,8 @@ TEST(ErrorMetricsTest, TriangleLocatorMatchesBruteForce) {
     const Vec3 p(u(rng), u(rng), u(rng) * 0.3);
     double brute = 1e300;
     for (const auto& tr : g.triangles)
-      brute = std::min(brute, PointTriangleDistance(p, g.points[tr[0]], g.points[tr[1]], g.points[tr[2]]));
+      brute = std::min(brute,
+                       PointTriangleDistance(p, g.points[tr[0]], g.points[tr[1]], g.points[tr[2]]));
     EXPECT_NEAR(loc.Distance(p), brute, 1e-9);
   }
 }

@@ -12,8 +12,10 @@ namespace {
 
 Soup Box(double x0, double y0, double z0, double x1, double y1, double z1) {
   Soup s;
-  for (int i = 0; i < 8; ++i) s.points.emplace_back(i & 1 ? x1 : x0, i & 2 ? y1 : y0, i & 4 ? z1 : z0);
-  const uint32_t q[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (int i = 0; i < 8; ++i)
+    s.points.emplace_back(i & 1 ? x1 : x0, i & 2 ? y1 : y0, i & 4 ? z1 : z0);
+  const uint32_t q[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                            {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
   for (const auto& f : q) {
     s.triangles.push_back({f[0], f[1], f[2]});
     s.triangles.push_back({f[0], f[2], f[3]});
@@ -27,7 +29,8 @@ Soup Sphere(double r, int nu, int nv) {
   for (int j = 1; j < nv; ++j)
     for (int i = 0; i < nu; ++i) {
       const double th = M_PI * j / nv, ph = 2 * M_PI * i / nu;
-      s.points.emplace_back(r * std::sin(th) * std::cos(ph), r * std::sin(th) * std::sin(ph), -r * std::cos(th));
+      s.points.emplace_back(r * std::sin(th) * std::cos(ph), r * std::sin(th) * std::sin(ph),
+                            -r * std::cos(th));
     }
   s.points.emplace_back(0, 0, r);
   auto ring = [&](int j, int i) { return static_cast<uint32_t>(1 + (j - 1) * nu + (i % nu)); };
@@ -54,9 +57,9 @@ MetricsOptions Small() {
 
 TEST(HullMetricsTest, PointTriangleDistance) {
   const V3 a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
-  EXPECT_DOUBLE_EQ(PointTriangleDistance(V3(0.2, 0.2, 3), a, b, c), 3.0);       // face
+  EXPECT_DOUBLE_EQ(PointTriangleDistance(V3(0.2, 0.2, 3), a, b, c), 3.0);           // face
   EXPECT_DOUBLE_EQ(PointTriangleDistance(V3(-1, -1, 0), a, b, c), std::sqrt(2.0));  // vertex
-  EXPECT_DOUBLE_EQ(PointTriangleDistance(V3(0.5, -2, 0), a, b, c), 2.0);       // edge
+  EXPECT_DOUBLE_EQ(PointTriangleDistance(V3(0.5, -2, 0), a, b, c), 2.0);            // edge
   EXPECT_NEAR(PointTriangleDistance(V3(1, 1, 0), a, b, c), std::sqrt(0.5), 1e-15);  // hypotenuse
   // Degenerate triangles measure to their segment.
   EXPECT_DOUBLE_EQ(PointTriangleDistance(V3(0.5, 1, 0), a, b, V3(2, 0, 0)), 1.0);
@@ -71,7 +74,8 @@ TEST(HullMetricsTest, BvhDistanceAndWindingMatchBruteForce) {
     const V3 p(u(rng), u(rng), u(rng));
     double brute = 1e300;
     for (const auto& t : sphere.triangles)
-      brute = std::min(brute, PointTriangleDistance(p, sphere.points[t[0]], sphere.points[t[1]], sphere.points[t[2]]));
+      brute = std::min(brute, PointTriangleDistance(p, sphere.points[t[0]], sphere.points[t[1]],
+                                                    sphere.points[t[2]]));
     EXPECT_NEAR(bvh.Distance(p), brute, 1e-12);
     const double exact = WindingNumberExact(sphere, p);
     EXPECT_NEAR(bvh.Winding(p), exact, 0.05);  // far clusters as dipoles: close, not exact
@@ -144,7 +148,8 @@ TEST(HullMetricsTest, OpenMeshSolidByWindingNumber) {
   EXPECT_GT(r.coverage, 0.999);
   EXPECT_GT(m.solid_point_count(), 40000u * 3 / 4);
   // Only the lower half covered: about half of the solid.
-  EXPECT_NEAR(m.Measure({Box(0, 0, 0, 1, 1, 0.5)}).coverage, 0.5 / (static_cast<double>(m.solid_point_count()) / 40000), 0.05);
+  EXPECT_NEAR(m.Measure({Box(0, 0, 0, 1, 1, 0.5)}).coverage,
+              0.5 / (static_cast<double>(m.solid_point_count()) / 40000), 0.05);
 }
 
 }  // namespace

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "test_meshes.h"
-#include "vhacd/VHACD.h"
+#include "vhacd/ivhacd.h"
 
 namespace {
 
@@ -102,8 +102,8 @@ TEST(IVHACDTest, CancelFromAnotherThread) {
     std::this_thread::sleep_for(std::chrono::milliseconds(300));
     v->Cancel();
   });
-  const bool ok = v->Compute(torus.points.data(), 3, static_cast<unsigned>(torus.point_count()), tris.data(), 3,
-                             static_cast<unsigned>(torus.triangle_count()), params);
+  const bool ok = v->Compute(torus.points.data(), 3, static_cast<unsigned>(torus.point_count()),
+                             tris.data(), 3, static_cast<unsigned>(torus.triangle_count()), params);
   t.join();
   EXPECT_FALSE(ok);
   EXPECT_EQ(v->GetStatus(), vhacd::Status::kCancelled);

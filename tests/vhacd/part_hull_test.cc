@@ -11,15 +11,18 @@ namespace {
 TEST(PartHullTest, ClipTriangleToBox) {
   std::vector<Vec3> out;
   // Fully inside: unchanged.
-  ClipTriangleToBox(Vec3(1, 1, 1), Vec3(2, 1, 1), Vec3(1, 2, 1), Vec3(0, 0, 0), Vec3(3, 3, 3), &out);
+  ClipTriangleToBox(Vec3(1, 1, 1), Vec3(2, 1, 1), Vec3(1, 2, 1), Vec3(0, 0, 0), Vec3(3, 3, 3),
+                    &out);
   EXPECT_EQ(out.size(), 3u);
   // Outside: nothing.
   out.clear();
-  ClipTriangleToBox(Vec3(5, 5, 5), Vec3(6, 5, 5), Vec3(5, 6, 5), Vec3(0, 0, 0), Vec3(3, 3, 3), &out);
+  ClipTriangleToBox(Vec3(5, 5, 5), Vec3(6, 5, 5), Vec3(5, 6, 5), Vec3(0, 0, 0), Vec3(3, 3, 3),
+                    &out);
   EXPECT_TRUE(out.empty());
   // A big triangle in z = 1 covering the box's section: clipped to the square [0,3]^2.
   out.clear();
-  ClipTriangleToBox(Vec3(-10, -10, 1), Vec3(30, -10, 1), Vec3(-10, 30, 1), Vec3(0, 0, 0), Vec3(3, 3, 3), &out);
+  ClipTriangleToBox(Vec3(-10, -10, 1), Vec3(30, -10, 1), Vec3(-10, 30, 1), Vec3(0, 0, 0),
+                    Vec3(3, 3, 3), &out);
   ASSERT_EQ(out.size(), 4u);
   for (const Vec3& p : out) {
     EXPECT_TRUE(p.x() == 0 || p.x() == 3);
@@ -32,8 +35,10 @@ TEST(PartHullTest, HullOfAPartHugsTheSurfaceInsideItsBox) {
   // A box mesh [2.3, 7.6] x [2.2, 5.9] x [2.1, 4.8] in grid units; the part holds voxels x < 5.
   const vhacd_test::Mesh box = vhacd_test::Box(2.3, 2.2, 2.1, 7.6, 5.9, 4.8);
   GridMesh g;
-  for (size_t i = 0; i < box.point_count(); ++i) g.points.emplace_back(box.points[3 * i], box.points[3 * i + 1], box.points[3 * i + 2]);
-  for (size_t t = 0; t < box.triangle_count(); ++t) g.triangles.push_back({box.indices[3 * t], box.indices[3 * t + 1], box.indices[3 * t + 2]});
+  for (size_t i = 0; i < box.point_count(); ++i)
+    g.points.emplace_back(box.points[3 * i], box.points[3 * i + 1], box.points[3 * i + 2]);
+  for (size_t t = 0; t < box.triangle_count(); ++t)
+    g.triangles.push_back({box.indices[3 * t], box.indices[3 * t + 1], box.indices[3 * t + 2]});
   const int dims[3] = {10, 8, 7};
   Part part;
   for (int z = 2; z <= 4; ++z)

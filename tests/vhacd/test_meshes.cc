@@ -32,13 +32,16 @@ std::string CheckHulls(const std::vector<vhacd::ConvexHull>& hulls, double tol) 
       const double* a = &H.points[3 * H.triangles[3 * t]];
       const double* b = &H.points[3 * H.triangles[3 * t + 1]];
       const double* c = &H.points[3 * H.triangles[3 * t + 2]];
-      const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-      const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+      const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]},
+                   v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+      const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                           u[0] * v[1] - u[1] * v[0]};
       const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
       if (!(len > 0)) continue;
       for (size_t p = 0; p < H.vertex_count(); ++p) {
         const double* q = &H.points[3 * p];
-        worst = std::max(worst, (n[0] * (q[0] - a[0]) + n[1] * (q[1] - a[1]) + n[2] * (q[2] - a[2])) / len);
+        worst = std::max(
+            worst, (n[0] * (q[0] - a[0]) + n[1] * (q[1] - a[1]) + n[2] * (q[2] - a[2])) / len);
       }
     }
     if (worst > tol) err << "hull " << h << " not convex (" << worst << "); ";

@@ -18,7 +18,8 @@ struct Mesh {
   size_t point_count() const { return points.size() / 3; }
   size_t triangle_count() const { return indices.size() / 3; }
   vhacd::MeshView View() const {
-    return vhacd::MeshView::FromDouble(points.data(), point_count(), indices.data(), triangle_count());
+    return vhacd::MeshView::FromDouble(points.data(), point_count(), indices.data(),
+                                       triangle_count());
   }
   uint32_t AddPoint(double x, double y, double z) {
     points.insert(points.end(), {x, y, z});
@@ -85,12 +86,13 @@ inline Mesh Torus(double R, double r, int nu = 48, int nv = 24) {
   for (int i = 0; i < nu; ++i)
     for (int j = 0; j < nv; ++j) {
       const double u = 2 * M_PI * i / nu, v = 2 * M_PI * j / nv;
-      m.AddPoint((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v));
+      m.AddPoint((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u),
+                 r * std::sin(v));
     }
   for (int i = 0; i < nu; ++i)
     for (int j = 0; j < nv; ++j) {
-      const uint32_t a = i * nv + j, b = ((i + 1) % nu) * nv + j, c = ((i + 1) % nu) * nv + (j + 1) % nv,
-                     d = i * nv + (j + 1) % nv;
+      const uint32_t a = i * nv + j, b = ((i + 1) % nu) * nv + j,
+                     c = ((i + 1) % nu) * nv + (j + 1) % nv, d = i * nv + (j + 1) % nv;
       m.AddQuad(a, b, c, d);
     }
   return m;
@@ -103,7 +105,8 @@ inline Mesh Sphere(double radius, int nu = 48, int nv = 24, bool holes = false) 
   for (int j = 1; j < nv; ++j)
     for (int i = 0; i < nu; ++i) {
       const double th = M_PI * j / nv, ph = 2 * M_PI * i / nu;
-      m.AddPoint(radius * std::sin(th) * std::cos(ph), radius * std::sin(th) * std::sin(ph), -radius * std::cos(th));
+      m.AddPoint(radius * std::sin(th) * std::cos(ph), radius * std::sin(th) * std::sin(ph),
+                 -radius * std::cos(th));
     }
   const uint32_t north = m.AddPoint(0, 0, radius);
   auto ring = [&](int j, int i) { return static_cast<uint32_t>(1 + (j - 1) * nu + (i % nu)); };
@@ -122,7 +125,8 @@ inline Mesh Sphere(double radius, int nu = 48, int nv = 24, bool holes = false) 
   }
   for (int j = 1; j + 1 < nv; ++j)
     for (int i = 0; i < nu; ++i)
-      if (!skip(j + 1, i)) m.AddQuad(ring(j, i), ring(j, i + 1), ring(j + 1, i + 1), ring(j + 1, i));
+      if (!skip(j + 1, i))
+        m.AddQuad(ring(j, i), ring(j, i + 1), ring(j + 1, i + 1), ring(j + 1, i));
   return m;
 }
 
@@ -135,7 +139,8 @@ inline Mesh ThickBowl(double R, double H, double t, int n = 48) {
   Mesh m;
   for (int i = 0; i < n; ++i) {
     const double a = 2 * M_PI * i / n;
-    for (int k = 0; k < np; ++k) m.AddPoint(prof[k][0] * std::cos(a), prof[k][0] * std::sin(a), prof[k][1]);
+    for (int k = 0; k < np; ++k)
+      m.AddPoint(prof[k][0] * std::cos(a), prof[k][0] * std::sin(a), prof[k][1]);
   }
   for (int i = 0; i < n; ++i) {
     const int i2 = (i + 1) % n;
@@ -171,7 +176,8 @@ inline bool InsideHull(const vhacd::ConvexHull& h, double x, double y, double z,
     const double* a = &h.points[3 * h.triangles[3 * t]];
     const double* b = &h.points[3 * h.triangles[3 * t + 1]];
     const double* c = &h.points[3 * h.triangles[3 * t + 2]];
-    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]},
+                 v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
     double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
     const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     if (!(len > 0)) continue;
@@ -180,7 +186,8 @@ inline bool InsideHull(const vhacd::ConvexHull& h, double x, double y, double z,
   return true;
 }
 
-inline bool InsideAnyHull(const std::vector<vhacd::ConvexHull>& hulls, double x, double y, double z, double tol) {
+inline bool InsideAnyHull(const std::vector<vhacd::ConvexHull>& hulls, double x, double y, double z,
+                          double tol) {
   for (const auto& h : hulls)
     if (InsideHull(h, x, y, z, tol)) return true;
   return false;

@@ -44,7 +44,8 @@ TEST(TetrahedronSetTest, ClippedTetrahedronVolumes) {
   EXPECT_NEAR(ClipTetrahedron(a, b, c, d, diag, t / std::sqrt(3.0), &count), t * t * t / 6, 1e-15);
   EXPECT_EQ(count, 1);
   // Vertex a out, b, c, d in: the tetrahedron minus its corner at a.
-  EXPECT_NEAR(ClipTetrahedron(a, b, c, d, -diag, -t / std::sqrt(3.0), &count, &pieces), (1 - t * t * t) / 6, 1e-15);
+  EXPECT_NEAR(ClipTetrahedron(a, b, c, d, -diag, -t / std::sqrt(3.0), &count, &pieces),
+              (1 - t * t * t) / 6, 1e-15);
   EXPECT_EQ(count, 3);
   EXPECT_EQ(pieces.size(), 3u);
   // Two in, two out (a wedge): x <= 0.5 keeps everything but the corner at b... of scale 1/2,

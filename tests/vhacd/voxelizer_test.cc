@@ -11,7 +11,8 @@ namespace {
 GridMesh ToGrid(const vhacd_test::Mesh& m, double scale, const Vec3& offset) {
   GridMesh g;
   for (size_t i = 0; i < m.point_count(); ++i)
-    g.points.push_back(scale * Vec3(m.points[3 * i], m.points[3 * i + 1], m.points[3 * i + 2]) + offset);
+    g.points.push_back(scale * Vec3(m.points[3 * i], m.points[3 * i + 1], m.points[3 * i + 2]) +
+                       offset);
   for (size_t t = 0; t < m.triangle_count(); ++t)
     g.triangles.push_back({m.indices[3 * t], m.indices[3 * t + 1], m.indices[3 * t + 2]});
   return g;
@@ -19,9 +20,12 @@ GridMesh ToGrid(const vhacd_test::Mesh& m, double scale, const Vec3& offset) {
 
 TEST(VoxelizerTest, TriangleBoxOverlap) {
   const Vec3 c(0.5, 0.5, 0.5);
-  EXPECT_TRUE(TriangleBoxOverlap(c, 0.5, Vec3(-1, -1, 0.5), Vec3(3, -1, 0.5), Vec3(-1, 3, 0.5)));  // slices it
-  EXPECT_FALSE(TriangleBoxOverlap(c, 0.5, Vec3(-1, -1, 1.5), Vec3(3, -1, 1.5), Vec3(-1, 3, 1.5)));  // above
-  EXPECT_TRUE(TriangleBoxOverlap(c, 0.5, Vec3(0.2, 0.2, 0.2), Vec3(0.3, 0.2, 0.2), Vec3(0.2, 0.3, 0.2)));  // inside
+  EXPECT_TRUE(TriangleBoxOverlap(c, 0.5, Vec3(-1, -1, 0.5), Vec3(3, -1, 0.5),
+                                 Vec3(-1, 3, 0.5)));  // slices it
+  EXPECT_FALSE(
+      TriangleBoxOverlap(c, 0.5, Vec3(-1, -1, 1.5), Vec3(3, -1, 1.5), Vec3(-1, 3, 1.5)));  // above
+  EXPECT_TRUE(TriangleBoxOverlap(c, 0.5, Vec3(0.2, 0.2, 0.2), Vec3(0.3, 0.2, 0.2),
+                                 Vec3(0.2, 0.3, 0.2)));  // inside
   // Beyond the box corner edge: only the triangle plane separates them.
   EXPECT_FALSE(TriangleBoxOverlap(c, 0.5, Vec3(2.1, 0, 0), Vec3(0, 2.1, 0), Vec3(0, 2.1, 1)));
   EXPECT_TRUE(TriangleBoxOverlap(c, 0.5, Vec3(1.9, 0, 0), Vec3(0, 1.9, 0), Vec3(0, 1.9, 1)));

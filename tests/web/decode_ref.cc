@@ -14,8 +14,8 @@
 #include <fstream>
 #include <iterator>
 #include <map>
-#include <string>
 #include <set>
+#include <string>
 #include <vector>
 
 #include "o3dgc/o3dgc.h"
@@ -59,7 +59,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "cannot read %s\n", path);
     return 1;
   }
-  const std::vector<uint8_t> data((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  const std::vector<uint8_t> data((std::istreambuf_iterator<char>(f)),
+                                  std::istreambuf_iterator<char>());
   o3dgc::DecodedMesh m;
   const o3dgc::Status s = o3dgc::Decode(data.data(), data.size(), o3dgc::DecodeOptions(), &m);
   if (s != o3dgc::Status::kOk) {
@@ -71,7 +72,8 @@ int main(int argc, char** argv) {
     for (int i = 0; i < timed_runs; ++i) {
       o3dgc::DecodedMesh r;
       const double t0 = CpuMs();
-      if (o3dgc::Decode(data.data(), data.size(), o3dgc::DecodeOptions(), &r) != o3dgc::Status::kOk) return 1;
+      if (o3dgc::Decode(data.data(), data.size(), o3dgc::DecodeOptions(), &r) != o3dgc::Status::kOk)
+        return 1;
       ms.push_back(CpuMs() - t0);
     }
     std::nth_element(ms.begin(), ms.begin() + ms.size() / 2, ms.end());

@@ -18,12 +18,14 @@ namespace hullpack {
 
 // Sorted names of the files in `folder` whose lower-case extension is one of `extensions`; false
 // when the folder cannot be read.
-inline bool ListFiles(const std::string& folder, const std::vector<std::string>& extensions, std::vector<std::string>* out) {
+inline bool ListFiles(const std::string& folder, const std::vector<std::string>& extensions,
+                      std::vector<std::string>* out) {
   DIR* dir = opendir(folder.c_str());
   if (!dir) return false;
   while (dirent* e = readdir(dir)) {
     const std::string name = e->d_name;
-    if (std::find(extensions.begin(), extensions.end(), LowerExtension(name)) != extensions.end()) out->push_back(name);
+    if (std::find(extensions.begin(), extensions.end(), LowerExtension(name)) != extensions.end())
+      out->push_back(name);
   }
   closedir(dir);
   std::sort(out->begin(), out->end());
@@ -37,7 +39,8 @@ double MedianMs(int repeats, F&& run) {
   for (int i = 0; i < std::max(1, repeats); ++i) {
     const auto t0 = std::chrono::steady_clock::now();
     run();
-    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    ms.push_back(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
   }
   std::sort(ms.begin(), ms.end());
   return ms[ms.size() / 2];

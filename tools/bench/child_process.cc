@@ -80,7 +80,8 @@ ChildResult RunInChild(const std::function<std::vector<uint8_t>()>& work, double
       _exit(3);
     }
     const uint64_t size = payload.size();
-    const bool written = WriteAll(fds[1], &base, sizeof(base)) && WriteAll(fds[1], &size, sizeof(size)) &&
+    const bool written = WriteAll(fds[1], &base, sizeof(base)) &&
+                         WriteAll(fds[1], &size, sizeof(size)) &&
                          WriteAll(fds[1], payload.data(), payload.size());
     _exit(written ? 0 : 4);
   }
@@ -91,7 +92,8 @@ ChildResult RunInChild(const std::function<std::vector<uint8_t>()>& work, double
     int wait_ms = -1;
     if (timeout_seconds > 0) {
       const double left =
-          timeout_seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+          timeout_seconds -
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       if (left <= 0) {
         timed_out = true;
         break;
@@ -126,7 +128,8 @@ ChildResult RunInChild(const std::function<std::vector<uint8_t>()>& work, double
     return r;
   }
   if (WIFSIGNALED(status)) {
-    r.error = "killed by signal " + std::to_string(WTERMSIG(status)) + " (" + strsignal(WTERMSIG(status)) + ")";
+    r.error = "killed by signal " + std::to_string(WTERMSIG(status)) + " (" +
+              strsignal(WTERMSIG(status)) + ")";
     return r;
   }
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {

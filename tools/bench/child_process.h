@@ -17,13 +17,13 @@
 namespace hullpack {
 
 struct ChildResult {
-  bool ok = false;              // the child ran `work` to the end and exited with status 0
-  std::string error;            // why not: "killed by signal 11", "timed out after 900 s", ...
-  std::vector<uint8_t> payload; // what `work` returned
-  double base_rss_mb = 0;       // resident size of the child when it started (the parent's at the fork)
-  double peak_rss_mb = 0;       // ru_maxrss of the child
-  double cpu_seconds = 0;       // user + system time of the child
-  double wall_seconds = 0;      // from fork to exit
+  bool ok = false;               // the child ran `work` to the end and exited with status 0
+  std::string error;             // why not: "killed by signal 11", "timed out after 900 s", ...
+  std::vector<uint8_t> payload;  // what `work` returned
+  double base_rss_mb = 0;   // resident size of the child when it started (the parent's at the fork)
+  double peak_rss_mb = 0;   // ru_maxrss of the child
+  double cpu_seconds = 0;   // user + system time of the child
+  double wall_seconds = 0;  // from fork to exit
 };
 
 // Forks, runs `work` in the child and sends its result back through a pipe. The child is killed

@@ -1,8 +1,8 @@
 // codec_bench: the project's SC3DMC coder and Draco side by side on every mesh of a folder, in one
-// run, at the same quantization (default 14-bit positions, 10-bit normals, 12-bit UVs; Draco at -cl 7
-// and -cl 10): bytes, bits per vertex, encode and decode time (median of repeats), maximum position
-// error; and the ASCII stream's bytes once gzip'd, against the binary stream's. Prints a table and
-// writes CSV.
+// run, at the same quantization (default 14-bit positions, 10-bit normals, 12-bit UVs; Draco at -cl
+// 7 and -cl 10): bytes, bits per vertex, encode and decode time (median of repeats), maximum
+// position error; and the ASCII stream's bytes once gzip'd, against the binary stream's. Prints a
+// table and writes CSV.
 //
 //   codec_bench FOLDER [--repeats 5] [--csv out.csv] [--qp 14] [--qn 10] [--qt 12] [--only a,b]
 //               [--clock wall|cpu] [--ours-only] [--fast-decode]
@@ -98,7 +98,8 @@ bool RunAll(const Mesh& mesh, const Settings& s, Row& row) {
     if (!d.mesh) return false;
   }
   std::vector<double> enc[3], dec[3];
-  hullpack::Result<hullpack::EncodedMesh> encoded = hullpack::Status(hullpack::StatusCode::kInternal, "");
+  hullpack::Result<hullpack::EncodedMesh> encoded =
+      hullpack::Status(hullpack::StatusCode::kInternal, "");
   hullpack::Result<Mesh> decoded = hullpack::Status(hullpack::StatusCode::kInternal, "");
   // One timed encode / decode of codec i (0: ours, 1..: Draco at its level); false on failure.
   auto encode = [&](int i) {
@@ -107,18 +108,21 @@ bool RunAll(const Mesh& mesh, const Settings& s, Row& row) {
       return encoded.ok();
     }
     DracoRun& d = draco[i - 1];
-    enc[i].push_back(TimeMs(s.cpu_clock, [&] { d.bytes = hullpack::DracoEncode(*d.mesh, s.qp, s.qn, s.qt, d.level); }));
+    enc[i].push_back(TimeMs(
+        s.cpu_clock, [&] { d.bytes = hullpack::DracoEncode(*d.mesh, s.qp, s.qn, s.qt, d.level); }));
     return !d.bytes.empty();
   };
   auto decode = [&](int i) {
     if (i == 0) {
       dec[0].push_back(TimeMs(s.cpu_clock, [&] {
-        decoded = hullpack::DecodeMesh(encoded->stream.data(), encoded->stream.size(), nullptr, row.name);
+        decoded =
+            hullpack::DecodeMesh(encoded->stream.data(), encoded->stream.size(), nullptr, row.name);
       }));
       return decoded.ok();
     }
     DracoRun& d = draco[i - 1];
-    dec[i].push_back(TimeMs(s.cpu_clock, [&] { d.decoded = hullpack::DracoDecodePositions(d.bytes); }));
+    dec[i].push_back(
+        TimeMs(s.cpu_clock, [&] { d.decoded = hullpack::DracoDecodePositions(d.bytes); }));
     return !d.decoded.positions.empty();
   };
   // Round r runs the codecs from the (r mod n)-th on: each one follows each other one as often.
@@ -136,7 +140,8 @@ bool RunAll(const Mesh& mesh, const Settings& s, Row& row) {
   ascii.stream_type = o3dgc::StreamType::kAscii;
   hullpack::Result<hullpack::EncodedMesh> ascii_stream = hullpack::EncodeMesh(mesh, {}, ascii);
   if (!ascii_stream.ok()) return false;
-  row.ascii_gzip_bytes = hullpack::GzipSize(ascii_stream->stream.data(), ascii_stream->stream.size());
+  row.ascii_gzip_bytes =
+      hullpack::GzipSize(ascii_stream->stream.data(), ascii_stream->stream.size());
   row.error[0] = hullpack::MaxVertexDistance(mesh, decoded.value());
   for (int i = 0; i < num_draco; ++i) {
     row.bytes[i + 1] = draco[i].bytes.size();
@@ -163,7 +168,8 @@ bool RunAll(const Mesh& mesh, const Settings& s, Row& row) {
 int main(int argc, char** argv) {
   if (argc < 2) {
     std::fprintf(stderr,
-                 "usage: codec_bench FOLDER [--repeats N] [--csv FILE] [--qp N] [--qn N] [--qt N] [--only a,b] "
+                 "usage: codec_bench FOLDER [--repeats N] [--csv FILE] [--qp N] [--qn N] [--qt N] "
+                 "[--only a,b] "
                  "[--clock wall|cpu] [--ours-only] [--fast-decode]\n");
     return 64;
   }
@@ -184,12 +190,18 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "codec_bench: %s needs a value\n", flag.c_str());
       return 64;
     }
-    if (flag == "--repeats") s.repeats = std::max(1, std::atoi(value));
-    else if (flag == "--csv") s.csv = value;
-    else if (flag == "--qp") s.qp = std::atoi(value);
-    else if (flag == "--qn") s.qn = std::atoi(value);
-    else if (flag == "--qt") s.qt = std::atoi(value);
-    else if (flag == "--clock" && (std::strcmp(value, "cpu") == 0 || std::strcmp(value, "wall") == 0)) {
+    if (flag == "--repeats")
+      s.repeats = std::max(1, std::atoi(value));
+    else if (flag == "--csv")
+      s.csv = value;
+    else if (flag == "--qp")
+      s.qp = std::atoi(value);
+    else if (flag == "--qn")
+      s.qn = std::atoi(value);
+    else if (flag == "--qt")
+      s.qt = std::atoi(value);
+    else if (flag == "--clock" &&
+             (std::strcmp(value, "cpu") == 0 || std::strcmp(value, "wall") == 0)) {
       s.cpu_clock = std::strcmp(value, "cpu") == 0;
     } else if (flag == "--only") {
       const std::string list = value;
@@ -211,14 +223,17 @@ int main(int argc, char** argv) {
   if (!s.only.empty()) {
     std::vector<std::string> kept;
     for (const std::string& f : files) {
-      if (std::find(s.only.begin(), s.only.end(), f.substr(0, f.size() - 4)) != s.only.end()) kept.push_back(f);
+      if (std::find(s.only.begin(), s.only.end(), f.substr(0, f.size() - 4)) != s.only.end())
+        kept.push_back(f);
     }
     files = kept;
   }
   std::vector<Row> rows;
-  std::printf("%-18s %8s %8s | %8s %8s %8s | %6s %6s | %6s %6s %6s | %6s %6s %6s | %7s %7s | %9s %9s | %8s %6s\n", "mesh",
-              "tris", "verts", "ours B", "cl7 B", "cl10 B", "/cl7", "/cl10", "enc", "cl7", "cl10", "dec", "cl7", "cl10",
-              "enc/cl7", "dec/cl7", "err ours", "err cl10", "ascii.gz", "/bin");
+  std::printf(
+      "%-18s %8s %8s | %8s %8s %8s | %6s %6s | %6s %6s %6s | %6s %6s %6s | %7s %7s | %9s %9s | %8s "
+      "%6s\n",
+      "mesh", "tris", "verts", "ours B", "cl7 B", "cl10 B", "/cl7", "/cl10", "enc", "cl7", "cl10",
+      "dec", "cl7", "cl10", "enc/cl7", "dec/cl7", "err ours", "err cl10", "ascii.gz", "/bin");
   for (const std::string& file : files) {
     hullpack::Result<hullpack::Scene> scene = hullpack::ReadScene(folder + "/" + file);
     if (!scene.ok()) {
@@ -235,12 +250,13 @@ int main(int argc, char** argv) {
       continue;
     }
     std::printf(
-        "%-18s %8zu %8zu | %8zu %8zu %8zu | %6.3f %6.3f | %6.2f %6.2f %6.2f | %6.2f %6.2f %6.2f | %7.2f %7.2f | %9.3g %9.3g | "
+        "%-18s %8zu %8zu | %8zu %8zu %8zu | %6.3f %6.3f | %6.2f %6.2f %6.2f | %6.2f %6.2f %6.2f | "
+        "%7.2f %7.2f | %9.3g %9.3g | "
         "%8zu %6.3f\n",
         row.name.c_str(), row.triangles, row.vertices, row.bytes[0], row.bytes[1], row.bytes[2],
-        double(row.bytes[0]) / row.bytes[1], double(row.bytes[0]) / row.bytes[2], row.encode_ms[0], row.encode_ms[1],
-        row.encode_ms[2], row.decode_ms[0], row.decode_ms[1], row.decode_ms[2], row.encode_ratio7,
-        row.decode_ratio7, row.error[0], row.error[2], row.ascii_gzip_bytes,
+        double(row.bytes[0]) / row.bytes[1], double(row.bytes[0]) / row.bytes[2], row.encode_ms[0],
+        row.encode_ms[1], row.encode_ms[2], row.decode_ms[0], row.decode_ms[1], row.decode_ms[2],
+        row.encode_ratio7, row.decode_ratio7, row.error[0], row.error[2], row.ascii_gzip_bytes,
         double(row.ascii_gzip_bytes) / row.bytes[0]);
     rows.push_back(row);
   }
@@ -251,22 +267,29 @@ int main(int argc, char** argv) {
     log10 += std::log(double(r.bytes[0]) / r.bytes[2]);
   }
   if (!rows.empty() && !s.ours_only) {
-    std::printf("geometric mean of bytes: ours/cl7 %.3f, ours/cl10 %.3f over %zu meshes (median of %d interleaved runs per %s time)\n",
-                std::exp(log7 / rows.size()), std::exp(log10 / rows.size()), rows.size(), s.repeats,
-                s.cpu_clock ? "CPU" : "wall");
+    std::printf(
+        "geometric mean of bytes: ours/cl7 %.3f, ours/cl10 %.3f over %zu meshes (median of %d "
+        "interleaved runs per %s time)\n",
+        std::exp(log7 / rows.size()), std::exp(log10 / rows.size()), rows.size(), s.repeats,
+        s.cpu_clock ? "CPU" : "wall");
   }
   if (!rows.empty()) std::printf("largest gzip'd ASCII / binary: %.3f\n", worst_ascii);
   if (!s.csv.empty()) {
     std::string text =
-        "mesh,triangles,vertices,ours_bytes,draco7_bytes,draco10_bytes,ours_encode_ms,draco7_encode_ms,draco10_encode_ms,"
-        "ours_decode_ms,draco7_decode_ms,draco10_decode_ms,ours_max_error,draco7_max_error,draco10_max_error,"
+        "mesh,triangles,vertices,ours_bytes,draco7_bytes,draco10_bytes,ours_encode_ms,draco7_"
+        "encode_ms,draco10_encode_ms,"
+        "ours_decode_ms,draco7_decode_ms,draco10_decode_ms,ours_max_error,draco7_max_error,draco10_"
+        "max_error,"
         "ours_ascii_gzip_bytes,ours_over_draco7_encode,ours_over_draco7_decode\n";
     for (const Row& r : rows) {
       char line[512];
-      std::snprintf(line, sizeof(line), "%s,%zu,%zu,%zu,%zu,%zu,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.6g,%.6g,%.6g,%zu,%.4f,%.4f\n",
-                    r.name.c_str(), r.triangles, r.vertices, r.bytes[0], r.bytes[1], r.bytes[2], r.encode_ms[0],
-                    r.encode_ms[1], r.encode_ms[2], r.decode_ms[0], r.decode_ms[1], r.decode_ms[2], r.error[0], r.error[1],
-                    r.error[2], r.ascii_gzip_bytes, r.encode_ratio7, r.decode_ratio7);
+      std::snprintf(
+          line, sizeof(line),
+          "%s,%zu,%zu,%zu,%zu,%zu,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.6g,%.6g,%.6g,%zu,%.4f,%.4f\n",
+          r.name.c_str(), r.triangles, r.vertices, r.bytes[0], r.bytes[1], r.bytes[2],
+          r.encode_ms[0], r.encode_ms[1], r.encode_ms[2], r.decode_ms[0], r.decode_ms[1],
+          r.decode_ms[2], r.error[0], r.error[1], r.error[2], r.ascii_gzip_bytes, r.encode_ratio7,
+          r.decode_ratio7);
       text += line;
     }
     hullpack::Status st = hullpack::WriteFileAtomically(s.csv, text.data(), text.size());

@@ -25,14 +25,17 @@ std::string Record(const o3dgc::DecodedMesh& m, size_t v) {
   auto add = [&](const void* p, size_t bytes) { r.append(static_cast<const char*>(p), bytes); };
   add(&m.positions[v * 3], 3 * sizeof(float));
   if (!m.normals.empty()) add(&m.normals[v * 3], 3 * sizeof(float));
-  for (const o3dgc::DecodedFloatAttribute& a : m.float_attributes) add(&a.values[v * a.dimension], a.dimension * sizeof(float));
-  for (const o3dgc::DecodedIntAttribute& a : m.int_attributes) add(&a.values[v * a.dimension], a.dimension * sizeof(int32_t));
+  for (const o3dgc::DecodedFloatAttribute& a : m.float_attributes)
+    add(&a.values[v * a.dimension], a.dimension * sizeof(float));
+  for (const o3dgc::DecodedIntAttribute& a : m.int_attributes)
+    add(&a.values[v * a.dimension], a.dimension * sizeof(int32_t));
   return r;
 }
 
 bool Consistent(const o3dgc::DecodedMesh& m) {
   const size_t n = m.num_vertices();
-  if (m.positions.size() != n * 3 || (!m.normals.empty() && m.normals.size() != n * 3)) return false;
+  if (m.positions.size() != n * 3 || (!m.normals.empty() && m.normals.size() != n * 3))
+    return false;
   for (const o3dgc::DecodedFloatAttribute& a : m.float_attributes) {
     if (a.values.size() != n * a.dimension) return false;
   }
@@ -45,29 +48,36 @@ bool Consistent(const o3dgc::DecodedMesh& m) {
 }  // namespace
 
 double AngleDegrees(const double a[3], const double b[3]) {
-  const double cross[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-  const double sin_part = std::sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]);
+  const double cross[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                           a[0] * b[1] - a[1] * b[0]};
+  const double sin_part =
+      std::sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]);
   const double cos_part = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-  const double la = a[0] * a[0] + a[1] * a[1] + a[2] * a[2], lb = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
+  const double la = a[0] * a[0] + a[1] * a[1] + a[2] * a[2],
+               lb = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
   if (!(la > 0) || !(lb > 0)) return -1;
   return std::atan2(sin_part, cos_part) * kDegrees;
 }
 
-bool MeasureCodecError(const VertexArrays& original, const o3dgc::DecodedMesh& decoded, CodecError* out,
-                       std::string* why) {
+bool MeasureCodecError(const VertexArrays& original, const o3dgc::DecodedMesh& decoded,
+                       CodecError* out, std::string* why) {
   auto fail = [&](const std::string& text) {
     if (why) *why = text;
     return false;
   };
-  if (!original.positions || original.positions->size() % 3 != 0) return fail("no original positions");
+  if (!original.positions || original.positions->size() % 3 != 0)
+    return fail("no original positions");
   const size_t n = original.positions->size() / 3;
   if (decoded.num_vertices() != n || decoded.positions.size() != n * 3) {
-    return fail("decoded " + std::to_string(decoded.num_vertices()) + " vertices, encoded " + std::to_string(n));
+    return fail("decoded " + std::to_string(decoded.num_vertices()) + " vertices, encoded " +
+                std::to_string(n));
   }
   const bool has_normals = Size(original.normals) > 0, has_uvs = Size(original.uvs) > 0;
-  if (has_normals && (Size(original.normals) != n * 3 || decoded.normals.size() != n * 3)) return fail("normal counts differ");
+  if (has_normals && (Size(original.normals) != n * 3 || decoded.normals.size() != n * 3))
+    return fail("normal counts differ");
   const o3dgc::DecodedFloatAttribute* uvs = DecodedUvs(decoded);
-  if (has_uvs && (Size(original.uvs) != n * 2 || !uvs || uvs->values.size() != n * 2)) return fail("uv counts differ");
+  if (has_uvs && (Size(original.uvs) != n * 2 || !uvs || uvs->values.size() != n * 2))
+    return fail("uv counts differ");
 
   CodecError e;
   e.vertices = n;
@@ -101,8 +111,10 @@ bool MeasureCodecError(const VertexArrays& original, const o3dgc::DecodedMesh& d
     double max_deg = 0, sum_deg = 0;
     size_t counted = 0;
     for (size_t v = 0; v < n; ++v) {
-      const double a[3] = {(*original.normals)[v * 3], (*original.normals)[v * 3 + 1], (*original.normals)[v * 3 + 2]};
-      const double b[3] = {decoded.normals[v * 3], decoded.normals[v * 3 + 1], decoded.normals[v * 3 + 2]};
+      const double a[3] = {(*original.normals)[v * 3], (*original.normals)[v * 3 + 1],
+                           (*original.normals)[v * 3 + 2]};
+      const double b[3] = {decoded.normals[v * 3], decoded.normals[v * 3 + 1],
+                           decoded.normals[v * 3 + 2]};
       const double deg = AngleDegrees(a, b);
       if (deg < 0) {
         // An original without direction is not counted; a decoded normal without direction for
@@ -136,7 +148,8 @@ bool MeasureCodecError(const VertexArrays& original, const o3dgc::DecodedMesh& d
 
 bool SameVertexRecords(const o3dgc::DecodedMesh& a, const o3dgc::DecodedMesh& b) {
   if (a.num_vertices() != b.num_vertices() || a.normals.empty() != b.normals.empty() ||
-      a.float_attributes.size() != b.float_attributes.size() || a.int_attributes.size() != b.int_attributes.size()) {
+      a.float_attributes.size() != b.float_attributes.size() ||
+      a.int_attributes.size() != b.int_attributes.size()) {
     return false;
   }
   for (size_t i = 0; i < a.float_attributes.size(); ++i) {

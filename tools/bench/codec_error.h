@@ -25,22 +25,22 @@ struct VertexArrays {
 
 struct CodecError {
   size_t vertices = 0;
-  double diagonal = 0;          // of the original positions' bounding box (the unit of the two below)
-  double position_max = 0;      // largest |decoded - original| / diagonal
-  double position_rms = 0;      // sqrt(mean |decoded - original|^2) / diagonal
+  double diagonal = 0;      // of the original positions' bounding box (the unit of the two below)
+  double position_max = 0;  // largest |decoded - original| / diagonal
+  double position_rms = 0;  // sqrt(mean |decoded - original|^2) / diagonal
   // Angle between the original normal and the decoded one, in degrees; -1 when there are no
   // normals. Original normals of zero length have no direction and are not counted.
   double normal_max_deg = -1;
   double normal_mean_deg = -1;
   size_t normals_counted = 0;
-  double uv_max = -1;           // largest Euclidean distance in UV space; -1 without UVs
+  double uv_max = -1;  // largest Euclidean distance in UV space; -1 without UVs
 };
 
 // Measures `decoded` against `original`, vertex i against vertex i. The UVs are the decoded mesh's
 // first 2-component kTexCoord attribute. Returns false (and says why) when the vertex counts or the
 // attributes present differ.
-bool MeasureCodecError(const VertexArrays& original, const o3dgc::DecodedMesh& decoded, CodecError* out,
-                       std::string* why);
+bool MeasureCodecError(const VertexArrays& original, const o3dgc::DecodedMesh& decoded,
+                       CodecError* out, std::string* why);
 
 // True when `a` and `b` hold the same vertex records (position, normal, float and int attribute
 // values, bit for bit) with the same multiplicities, in any order.

@@ -64,7 +64,8 @@ int main(int argc, char** argv) {
   const int n = argc > arg ? std::atoi(argv[arg]) : 0;
   ++arg;
   if (n <= 0 || arg >= argc || (pairs && (argc - arg) % 2 != 0)) {
-    std::fprintf(stderr, "usage: decoder_ab [--pairs] N STREAM... (with --pairs: A.s3d B.s3d ...)\n");
+    std::fprintf(stderr,
+                 "usage: decoder_ab [--pairs] N STREAM... (with --pairs: A.s3d B.s3d ...)\n");
     return 2;
   }
   for (; arg < argc; arg += pairs ? 2 : 1) {
@@ -75,10 +76,12 @@ int main(int argc, char** argv) {
       return 1;
     }
     auto run_a = [&] {
-      return TimeDecode<o3dgc::DecodedMesh, o3dgc::DecodeOptions>(o3dgc::Decode, a, o3dgc::Status::kOk);
+      return TimeDecode<o3dgc::DecodedMesh, o3dgc::DecodeOptions>(o3dgc::Decode, a,
+                                                                  o3dgc::Status::kOk);
     };
     auto run_b = [&] {
-      return TimeDecode<o3dgc_alt::DecodedMesh, o3dgc_alt::DecodeOptions>(o3dgc_alt::Decode, b, o3dgc_alt::Status::kOk);
+      return TimeDecode<o3dgc_alt::DecodedMesh, o3dgc_alt::DecodeOptions>(o3dgc_alt::Decode, b,
+                                                                          o3dgc_alt::Status::kOk);
     };
     std::vector<double> ta, tb, ratio;
     for (int i = 0; i < n + 2; ++i) {
@@ -91,7 +94,8 @@ int main(int argc, char** argv) {
         y = run_b();
       }
       if (x < 0 || y < 0) {
-        std::fprintf(stderr, "decoder_ab: %s: build %s cannot decode it\n", x < 0 ? argv[arg] : path_b, x < 0 ? "A" : "B");
+        std::fprintf(stderr, "decoder_ab: %s: build %s cannot decode it\n",
+                     x < 0 ? argv[arg] : path_b, x < 0 ? "A" : "B");
         return 1;
       }
       if (i < 2) continue;  // warm-up
@@ -99,9 +103,11 @@ int main(int argc, char** argv) {
       tb.push_back(y);
       ratio.push_back(y / x);
     }
-    std::printf("%s: A min %.3f median %.3f ms | B min %.3f median %.3f ms | B/A %.4f (median of %d pairs)\n",
-                argv[arg], *std::min_element(ta.begin(), ta.end()), Median(ta),
-                *std::min_element(tb.begin(), tb.end()), Median(tb), Median(ratio), n);
+    std::printf(
+        "%s: A min %.3f median %.3f ms | B min %.3f median %.3f ms | B/A %.4f (median of %d "
+        "pairs)\n",
+        argv[arg], *std::min_element(ta.begin(), ta.end()), Median(ta),
+        *std::min_element(tb.begin(), tb.end()), Median(tb), Median(ratio), n);
   }
   return 0;
 }

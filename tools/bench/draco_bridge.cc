@@ -10,24 +10,42 @@ std::unique_ptr<draco::Mesh> ToDracoMesh(const Mesh& m) {
   draco::TriangleSoupMeshBuilder b;
   b.Start(static_cast<int>(m.triangle_count()));
   const int pos = b.AddAttribute(draco::GeometryAttribute::POSITION, 3, draco::DT_FLOAT32);
-  const int nrm = m.normals.empty() ? -1 : b.AddAttribute(draco::GeometryAttribute::NORMAL, 3, draco::DT_FLOAT32);
-  const int tex = m.uv_sets.empty() ? -1 : b.AddAttribute(draco::GeometryAttribute::TEX_COORD, 2, draco::DT_FLOAT32);
-  const int col = m.colors.empty() ? -1 : b.AddAttribute(draco::GeometryAttribute::COLOR, 4, draco::DT_FLOAT32);
+  const int nrm = m.normals.empty()
+                      ? -1
+                      : b.AddAttribute(draco::GeometryAttribute::NORMAL, 3, draco::DT_FLOAT32);
+  const int tex = m.uv_sets.empty()
+                      ? -1
+                      : b.AddAttribute(draco::GeometryAttribute::TEX_COORD, 2, draco::DT_FLOAT32);
+  const int col =
+      m.colors.empty() ? -1 : b.AddAttribute(draco::GeometryAttribute::COLOR, 4, draco::DT_FLOAT32);
   // Skins as glTF's Draco extension carries them: generic attributes.
-  const int wgt = m.weights.empty() ? -1 : b.AddAttribute(draco::GeometryAttribute::GENERIC, 4, draco::DT_FLOAT32);
-  const int jnt = m.joints.empty() ? -1 : b.AddAttribute(draco::GeometryAttribute::GENERIC, 4, draco::DT_UINT16);
+  const int wgt = m.weights.empty()
+                      ? -1
+                      : b.AddAttribute(draco::GeometryAttribute::GENERIC, 4, draco::DT_FLOAT32);
+  const int jnt = m.joints.empty()
+                      ? -1
+                      : b.AddAttribute(draco::GeometryAttribute::GENERIC, 4, draco::DT_UINT16);
   for (size_t t = 0; t < m.triangle_count(); ++t) {
     const uint32_t* c = &m.indices[t * 3];
     const draco::FaceIndex f(static_cast<uint32_t>(t));
-    b.SetAttributeValuesForFace(pos, f, &m.positions[c[0] * 3], &m.positions[c[1] * 3], &m.positions[c[2] * 3]);
-    if (nrm >= 0) b.SetAttributeValuesForFace(nrm, f, &m.normals[c[0] * 3], &m.normals[c[1] * 3], &m.normals[c[2] * 3]);
+    b.SetAttributeValuesForFace(pos, f, &m.positions[c[0] * 3], &m.positions[c[1] * 3],
+                                &m.positions[c[2] * 3]);
+    if (nrm >= 0)
+      b.SetAttributeValuesForFace(nrm, f, &m.normals[c[0] * 3], &m.normals[c[1] * 3],
+                                  &m.normals[c[2] * 3]);
     if (tex >= 0) {
       const std::vector<float>& uv = m.uv_sets[0];
       b.SetAttributeValuesForFace(tex, f, &uv[c[0] * 2], &uv[c[1] * 2], &uv[c[2] * 2]);
     }
-    if (col >= 0) b.SetAttributeValuesForFace(col, f, &m.colors[c[0] * 4], &m.colors[c[1] * 4], &m.colors[c[2] * 4]);
-    if (wgt >= 0) b.SetAttributeValuesForFace(wgt, f, &m.weights[c[0] * 4], &m.weights[c[1] * 4], &m.weights[c[2] * 4]);
-    if (jnt >= 0) b.SetAttributeValuesForFace(jnt, f, &m.joints[c[0] * 4], &m.joints[c[1] * 4], &m.joints[c[2] * 4]);
+    if (col >= 0)
+      b.SetAttributeValuesForFace(col, f, &m.colors[c[0] * 4], &m.colors[c[1] * 4],
+                                  &m.colors[c[2] * 4]);
+    if (wgt >= 0)
+      b.SetAttributeValuesForFace(wgt, f, &m.weights[c[0] * 4], &m.weights[c[1] * 4],
+                                  &m.weights[c[2] * 4]);
+    if (jnt >= 0)
+      b.SetAttributeValuesForFace(jnt, f, &m.joints[c[0] * 4], &m.joints[c[1] * 4],
+                                  &m.joints[c[2] * 4]);
   }
   return b.Finalize();
 }
@@ -56,7 +74,8 @@ Mesh DracoDecodePositions(const std::vector<uint8_t>& bytes) {
   const draco::PointAttribute* att = d->GetNamedAttribute(draco::GeometryAttribute::POSITION);
   if (!att) return m;
   m.positions.resize(d->num_points() * 3);
-  for (uint32_t i = 0; i < d->num_points(); ++i) att->GetMappedValue(draco::PointIndex(i), &m.positions[i * 3]);
+  for (uint32_t i = 0; i < d->num_points(); ++i)
+    att->GetMappedValue(draco::PointIndex(i), &m.positions[i * 3]);
   return m;
 }
 

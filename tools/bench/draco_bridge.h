@@ -17,7 +17,8 @@ namespace hullpack {
 
 std::unique_ptr<draco::Mesh> ToDracoMesh(const Mesh& mesh);
 
-// Encodes with quantization bits (position, normal, UV) and compression level 0..10; empty on failure.
+// Encodes with quantization bits (position, normal, UV) and compression level 0..10; empty on
+// failure.
 std::vector<uint8_t> DracoEncode(const draco::Mesh& mesh, int qp, int qn, int qt, int level);
 
 // Decodes and returns the positions (one per draco point); empty on failure.

@@ -48,7 +48,8 @@ void ParallelFor(size_t n, int threads, Fn fn) {
   for (auto& t : pool) t.join();
 }
 
-// Largest fn(i) over i in [0, n), in parallel; *arg (when non-null) receives the smallest i reaching it.
+// Largest fn(i) over i in [0, n), in parallel; *arg (when non-null) receives the smallest i
+// reaching it.
 template <typename Fn>
 double ParallelMax(size_t n, int threads, Fn fn, size_t* arg = nullptr) {
   const size_t blocks = std::min<size_t>(n, 1024);
@@ -128,7 +129,8 @@ struct HullShape {
   double SurfaceDistance(const V3& p) const {
     double best = kInf;
     for (const auto& t : soup->triangles)
-      best = std::min(best, PointTriangleDistance(p, soup->points[t[0]], soup->points[t[1]], soup->points[t[2]]));
+      best = std::min(best, PointTriangleDistance(p, soup->points[t[0]], soup->points[t[1]],
+                                                  soup->points[t[2]]));
     return best;
   }
 };
@@ -189,7 +191,8 @@ double WindingNumberExact(const Soup& soup, const V3& p) {
 
 double SignedVolume(const Soup& soup) {
   double v = 0.0;
-  for (const auto& t : soup.triangles) v += soup.points[t[0]].dot(soup.points[t[1]].cross(soup.points[t[2]]));
+  for (const auto& t : soup.triangles)
+    v += soup.points[t[0]].dot(soup.points[t[1]].cross(soup.points[t[2]]));
   return v / 6.0;
 }
 
@@ -211,7 +214,8 @@ std::string CheckHull(const Soup& hull, double tol) {
   if (!(SignedVolume(hull) > 0)) return "not outward-facing (volume <= 0)";
   double worst = 0.0;
   for (const auto& t : hull.triangles) {
-    const V3 n = (hull.points[t[1]] - hull.points[t[0]]).cross(hull.points[t[2]] - hull.points[t[0]]);
+    const V3 n =
+        (hull.points[t[1]] - hull.points[t[0]]).cross(hull.points[t[2]] - hull.points[t[0]]);
     const double len = n.norm();
     if (!(len > 0)) continue;
     for (const V3& q : hull.points) worst = std::max(worst, n.dot(q - hull.points[t[0]]) / len);
@@ -248,7 +252,8 @@ uint32_t TriangleBvh::Build(uint32_t first, uint32_t count, std::vector<V3>* cen
   node.area_vector = V3::Zero();
   for (uint32_t k = first; k < first + count; ++k) {
     const auto& t = soup_.triangles[order_[k]];
-    const V3 cr = (soup_.points[t[1]] - soup_.points[t[0]]).cross(soup_.points[t[2]] - soup_.points[t[0]]);
+    const V3 cr =
+        (soup_.points[t[1]] - soup_.points[t[0]]).cross(soup_.points[t[2]] - soup_.points[t[0]]);
     const double a = 0.5 * cr.norm();
     node.area_vector += 0.5 * cr;
     area += a;
@@ -275,8 +280,9 @@ uint32_t TriangleBvh::Build(uint32_t first, uint32_t count, std::vector<V3>* cen
   if (ext[1] > ext[axis]) axis = 1;
   if (ext[2] > ext[axis]) axis = 2;
   const uint32_t half = count / 2;
-  std::nth_element(order_.begin() + first, order_.begin() + first + half, order_.begin() + first + count,
-                   [&](uint32_t a, uint32_t b) { return (*centroids)[a][axis] < (*centroids)[b][axis]; });
+  std::nth_element(
+      order_.begin() + first, order_.begin() + first + half, order_.begin() + first + count,
+      [&](uint32_t a, uint32_t b) { return (*centroids)[a][axis] < (*centroids)[b][axis]; });
   node.left = Build(first, half, centroids);
   node.right = Build(first + half, count - half, centroids);
   nodes_[index] = node;
@@ -295,7 +301,8 @@ double TriangleBvh::Distance(const V3& p) const {
     if (n.count > 0) {
       for (uint32_t k = n.first; k < n.first + n.count; ++k) {
         const auto& t = soup_.triangles[order_[k]];
-        const double d = PointTriangleDistance(p, soup_.points[t[0]], soup_.points[t[1]], soup_.points[t[2]]);
+        const double d =
+            PointTriangleDistance(p, soup_.points[t[0]], soup_.points[t[1]], soup_.points[t[2]]);
         best2 = std::min(best2, d * d);
       }
       continue;
@@ -347,7 +354,8 @@ double TriangleBvh::Winding(const V3& p) const {
 // ---------------------------------------------------------------------------------------------
 // MeshMeasure
 
-MeshMeasure::MeshMeasure(Soup mesh, const MetricsOptions& options) : mesh_(std::move(mesh)), options_(options) {
+MeshMeasure::MeshMeasure(Soup mesh, const MetricsOptions& options)
+    : mesh_(std::move(mesh)), options_(options) {
   // Bounds and diagonal of the referenced points; drop triangles with repeated indices.
   std::vector<char> used(mesh_.points.size(), 0);
   std::vector<std::array<uint32_t, 3>> tris;
@@ -380,7 +388,8 @@ MeshMeasure::MeshMeasure(Soup mesh, const MetricsOptions& options) : mesh_(std::
     std::sort(idx.begin(), idx.end(), less);
     std::vector<uint32_t> weld(mesh_.points.size());
     for (size_t k = 0; k < idx.size(); ++k)
-      weld[idx[k]] = (k > 0 && mesh_.points[idx[k]] == mesh_.points[idx[k - 1]]) ? weld[idx[k - 1]] : idx[k];
+      weld[idx[k]] =
+          (k > 0 && mesh_.points[idx[k]] == mesh_.points[idx[k - 1]]) ? weld[idx[k - 1]] : idx[k];
     std::vector<uint64_t> edges;
     for (const auto& t : mesh_.triangles) {
       const uint32_t w[3] = {weld[t[0]], weld[t[1]], weld[t[2]]};
@@ -407,19 +416,22 @@ MeshMeasure::MeshMeasure(Soup mesh, const MetricsOptions& options) : mesh_(std::
     if (used[i]) samples_.push_back(mesh_.points[i]);
   std::vector<double> cdf(mesh_.triangles.size());
   double total = 0.0;
-  for (size_t t = 0; t < mesh_.triangles.size(); ++t) cdf[t] = total += Area2(mesh_, mesh_.triangles[t]);
+  for (size_t t = 0; t < mesh_.triangles.size(); ++t)
+    cdf[t] = total += Area2(mesh_, mesh_.triangles[t]);
   Rng rng{options_.seed};
   if (total > 0)
     for (size_t s = 0; s < options_.mesh_samples; ++s) {
-      const size_t t = std::min<size_t>(std::upper_bound(cdf.begin(), cdf.end(), rng.Uniform() * total) - cdf.begin(),
-                                        cdf.size() - 1);
+      const size_t t = std::min<size_t>(
+          std::upper_bound(cdf.begin(), cdf.end(), rng.Uniform() * total) - cdf.begin(),
+          cdf.size() - 1);
       samples_.push_back(RandomPointOn(mesh_, mesh_.triangles[t], &rng));
     }
 
   // Inside lattice (flat boxes get a minimum thickness so the lattice stays finite).
   V3 ext = (hi_ - lo_).cwiseMax(std::max(diagonal_, 1e-300) * 1e-3);
   // Cells tile the box exactly (a lattice point per cell centre), so counts are volumes.
-  const double cube = std::cbrt(ext[0] * ext[1] * ext[2] / static_cast<double>(std::max<size_t>(1, options_.solid_points)));
+  const double cube = std::cbrt(ext[0] * ext[1] * ext[2] /
+                                static_cast<double>(std::max<size_t>(1, options_.solid_points)));
   for (int a = 0; a < 3; ++a) {
     dims_[a] = std::max(1, static_cast<int>(std::lround(ext[a] / cube)));
     step_[a] = ext[a] / dims_[a];
@@ -442,7 +454,8 @@ MeshMeasure::~MeshMeasure() = default;
 V3 MeshMeasure::CellPoint(int i, int j, int k) const {
   // A random point of the cell, the same for every query (the hash of the cell and the seed): an
   // unbiased volume estimate whatever the shapes' alignment with the lattice.
-  Rng rng{options_.seed ^ (static_cast<uint64_t>(static_cast<uint32_t>(i)) * 0x9e3779b97f4a7c15ull) ^
+  Rng rng{options_.seed ^
+          (static_cast<uint64_t>(static_cast<uint32_t>(i)) * 0x9e3779b97f4a7c15ull) ^
           (static_cast<uint64_t>(static_cast<uint32_t>(j)) * 0xc2b2ae3d27d4eb4full) ^
           (static_cast<uint64_t>(static_cast<uint32_t>(k)) * 0x165667b19e3779f9ull)};
   const double u = rng.Uniform(), v = rng.Uniform(), w = rng.Uniform();
@@ -459,7 +472,8 @@ HullMetrics MeshMeasure::Measure(const std::vector<Soup>& hulls) const {
     m.max_hull_vertices = std::max(m.max_hull_vertices, h.points.size());
     const std::string problem = CheckHull(h, options_.convexity_tol * diag);
     if (!problem.empty()) {
-      if (m.invalid_hulls == 0) m.first_problem = "hull " + std::to_string(&h - hulls.data()) + ": " + problem;
+      if (m.invalid_hulls == 0)
+        m.first_problem = "hull " + std::to_string(&h - hulls.data()) + ": " + problem;
       ++m.invalid_hulls;
     }
     shapes.emplace_back(h);
@@ -470,7 +484,8 @@ HullMetrics MeshMeasure::Measure(const std::vector<Soup>& hulls) const {
   const double inside_tol = 1e-9 * diag;
   size_t arg = 0;
   const double d_mh = ParallelMax(
-      samples_.size(), options_.threads, [&](size_t i) { return DistanceToHulls(samples_[i], shapes, inside_tol); }, &arg);
+      samples_.size(), options_.threads,
+      [&](size_t i) { return DistanceToHulls(samples_[i], shapes, inside_tol); }, &arg);
   if (!samples_.empty()) m.worst_mesh_point = samples_[arg];
 
   // hulls -> mesh, on the exposed part of the hulls' surfaces.
@@ -500,23 +515,30 @@ HullMetrics MeshMeasure::Measure(const std::vector<Soup>& hulls) const {
   Rng rng{options_.seed ^ 0x5bd1e995ull};
   if (total > 0)
     for (size_t k = 0; k < options_.hull_samples; ++k) {
-      const size_t f = std::min<size_t>(std::upper_bound(cdf.begin(), cdf.end(), rng.Uniform() * total) - cdf.begin(),
-                                        cdf.size() - 1);
+      const size_t f = std::min<size_t>(
+          std::upper_bound(cdf.begin(), cdf.end(), rng.Uniform() * total) - cdf.begin(),
+          cdf.size() - 1);
       const Soup& s = hulls[faces[f].first];
       const auto& tr = s.triangles[faces[f].second];
-      const V3 n = (s.points[tr[1]] - s.points[tr[0]]).cross(s.points[tr[2]] - s.points[tr[0]]).normalized();
+      const V3 n =
+          (s.points[tr[1]] - s.points[tr[0]]).cross(s.points[tr[2]] - s.points[tr[0]]).normalized();
       hs.push_back({faces[f].first, RandomPointOn(s, tr, &rng), n});
     }
   const double gap = options_.gap * diag;
-  const double d_hm = ParallelMax(hs.size(), options_.threads, [&](size_t k) {
-    const V3& p = hs[k].p;
-    for (uint32_t h = 0; h < shapes.size(); ++h) {
-      if (h == hs[k].hull || BoxDistance2(p, shapes[h].lo, shapes[h].hi) >= gap * gap) continue;
-      const double s = shapes[h].Signed(p);
-      if (s <= 0) return 0.0;  // inside a neighbour: not on the union's boundary
-      if (s < gap && shapes[h].SurfaceDistance(p) < gap) return 0.0;  // across a gap narrower than `gap`
-    }
-    return bvh_->Distance(p);  }, &arg);
+  const double d_hm = ParallelMax(
+      hs.size(), options_.threads,
+      [&](size_t k) {
+        const V3& p = hs[k].p;
+        for (uint32_t h = 0; h < shapes.size(); ++h) {
+          if (h == hs[k].hull || BoxDistance2(p, shapes[h].lo, shapes[h].hi) >= gap * gap) continue;
+          const double s = shapes[h].Signed(p);
+          if (s <= 0) return 0.0;  // inside a neighbour: not on the union's boundary
+          if (s < gap && shapes[h].SurfaceDistance(p) < gap)
+            return 0.0;  // across a gap narrower than `gap`
+        }
+        return bvh_->Distance(p);
+      },
+      &arg);
   if (!hs.empty()) {
     m.worst_hull_point = hs[arg].p;
     m.worst_hull = hs[arg].hull;
@@ -524,13 +546,15 @@ HullMetrics MeshMeasure::Measure(const std::vector<Soup>& hulls) const {
     std::vector<HullShape> others;
     for (size_t h = 0; h < shapes.size(); ++h)
       if (h != hs[arg].hull) others.push_back(shapes[h]);
-    m.worst_hull_point_gap = others.empty() ? -1.0 : DistanceToHulls(hs[arg].p, others, inside_tol) / diag;
+    m.worst_hull_point_gap =
+        others.empty() ? -1.0 : DistanceToHulls(hs[arg].p, others, inside_tol) / diag;
   }
   m.mesh_to_hulls = d_mh / diag;
   m.hulls_to_mesh = d_hm / diag;
   m.concavity = std::max(m.mesh_to_hulls, m.hulls_to_mesh);
 
-  // Volumes on the lattice, extended to the hulls' bounds (at most one lattice size beyond each side).
+  // Volumes on the lattice, extended to the hulls' bounds (at most one lattice size beyond each
+  // side).
   int elo[3], ehi[3];
   for (int a = 0; a < 3; ++a) {
     elo[a] = 0;

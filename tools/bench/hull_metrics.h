@@ -53,7 +53,7 @@ struct MetricsOptions {
   double gap = 0.002;            // see "hulls -> mesh" above, fraction of the diagonal
   double convexity_tol = 1e-6;   // CheckHull tolerance, fraction of the diagonal
   uint64_t seed = 1;
-  int threads = 0;               // 0: every core
+  int threads = 0;  // 0: every core
 };
 
 struct HullMetrics {
@@ -65,7 +65,7 @@ struct HullMetrics {
   size_t worst_hull = 0;
   bool worst_hull_point_in_solid = false;  // the hulls -> mesh maximum lies inside the mesh solid
   double worst_hull_point_gap = -1.0;      // its distance to the nearest other hull (fraction)
-  double iou = -1.0;       // -1 for open meshes
+  double iou = -1.0;                       // -1 for open meshes
   double coverage = -1.0;
   size_t invalid_hulls = 0;
   std::string first_problem;  // of the first invalid hull
@@ -82,10 +82,10 @@ class TriangleBvh {
 
  private:
   struct Node {
-    V3 lo, hi;          // bounds of the node's triangles
-    V3 center;          // area-weighted centroid
-    V3 area_vector;     // sum of the triangles' area vectors (half the cross products)
-    double radius = 0;  // of the ball around `center` holding every triangle
+    V3 lo, hi;                      // bounds of the node's triangles
+    V3 center;                      // area-weighted centroid
+    V3 area_vector;                 // sum of the triangles' area vectors (half the cross products)
+    double radius = 0;              // of the ball around `center` holding every triangle
     uint32_t first = 0, count = 0;  // leaf: order_[first .. first + count)
     uint32_t left = 0, right = 0;   // inner node (count == 0)
   };

@@ -1,11 +1,12 @@
-// pack_bench: `hullpack pack` against Draco at equal error, on every .obj/.glb of a folder, in one run.
-// For each file: the packed GLB's geometry bytes (mesh streams + hull streams) at --max-error, the
-// error reached, and the same pruned meshes compressed by Draco (-cl 7) without hulls, each mesh at
-// the fewest position bits whose measured error stays within the same budget (Draco's usual
+// pack_bench: `hullpack pack` against Draco at equal error, on every .obj/.glb of a folder, in one
+// run. For each file: the packed GLB's geometry bytes (mesh streams + hull streams) at --max-error,
+// the error reached, and the same pruned meshes compressed by Draco (-cl 7) without hulls, each
+// mesh at the fewest position bits whose measured error stays within the same budget (Draco's usual
 // quantization: a cube of the largest extent). The bar: packed-with-hulls <= Draco-without-hulls in
 // median. Every file is also read back (unpack(pack(x))) and checked against x: same triangle,
-// vertex and skin counts, position error within the budget. Also per file: the GLB's JSON bytes (the hulls' meshes, accessors, shapes and collider
-// nodes add to it; not geometry) and seconds per stage.
+// vertex and skin counts, position error within the budget. Also per file: the GLB's JSON bytes
+// (the hulls' meshes, accessors, shapes and collider nodes add to it; not geometry) and seconds per
+// stage.
 //
 //   pack_bench FOLDER [--max-error 0.0005] [--hull-error F] [--max-hulls N] [--max-vertices N]
 //              [--gamma F] [--csv out.csv]
@@ -34,7 +35,9 @@ size_t JsonChunkBytes(const std::vector<uint8_t>& glb) {
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: pack_bench FOLDER [--max-error F] [--hull-error F] [--max-hulls N] [--max-vertices N] [--gamma F] [--csv FILE]\n");
+    std::fprintf(stderr,
+                 "usage: pack_bench FOLDER [--max-error F] [--hull-error F] [--max-hulls N] "
+                 "[--max-vertices N] [--gamma F] [--csv FILE]\n");
     return 64;
   }
   const std::string folder = argv[1];
@@ -49,7 +52,8 @@ int main(int argc, char** argv) {
     } else if (flag == "--max-hulls") {
       options.collision.parameters.max_convex_hulls = static_cast<uint32_t>(std::atoi(argv[i + 1]));
     } else if (flag == "--max-vertices") {
-      options.collision.parameters.max_vertices_per_hull = static_cast<uint32_t>(std::atoi(argv[i + 1]));
+      options.collision.parameters.max_vertices_per_hull =
+          static_cast<uint32_t>(std::atoi(argv[i + 1]));
     } else if (flag == "--gamma") {
       options.collision.parameters.gamma = std::atof(argv[i + 1]);
     } else if (flag == "--csv") {
@@ -64,12 +68,14 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "pack_bench: %s: cannot open folder\n", folder.c_str());
     return 1;
   }
-  std::printf("%-22s %7s %5s | %8s %7s %8s | %8s %2s | %6s | %9s %9s | %6s %6s | %6s %6s %6s %6s\n", "file", "tris",
-              "hulls", "mesh B", "hulls B", "packed B", "draco B", "qp", "ratio", "rt err", "draco err", "json B",
-              "glb B", "enc s", "dec s", "vhacd s", "hull s");
+  std::printf("%-22s %7s %5s | %8s %7s %8s | %8s %2s | %6s | %9s %9s | %6s %6s | %6s %6s %6s %6s\n",
+              "file", "tris", "hulls", "mesh B", "hulls B", "packed B", "draco B", "qp", "ratio",
+              "rt err", "draco err", "json B", "glb B", "enc s", "dec s", "vhacd s", "hull s");
   std::string text =
-      "file,triangles,hulls,mesh_bytes,hull_bytes,packed_geometry_bytes,draco_bytes,draco_position_bits,ratio,"
-      "max_error_fraction,round_trip_error_fraction,draco_max_error_fraction,glb_bytes,json_bytes,seconds_prune,seconds_encode,seconds_decode,"
+      "file,triangles,hulls,mesh_bytes,hull_bytes,packed_geometry_bytes,draco_bytes,draco_position_"
+      "bits,ratio,"
+      "max_error_fraction,round_trip_error_fraction,draco_max_error_fraction,glb_bytes,json_bytes,"
+      "seconds_prune,seconds_encode,seconds_decode,"
       "seconds_decompose,seconds_hull_encode,seconds_write,seconds_total\n";
   std::vector<double> ratios;
   int failures = 0;
@@ -80,8 +86,10 @@ int main(int argc, char** argv) {
       ++failures;
       continue;
     }
-    hullpack::Result<hullpack::PackResult> packed = hullpack::Status(hullpack::StatusCode::kInternal, "");
-    const double ms = hullpack::MedianMs(1, [&] { packed = hullpack::PackScene(scene.value(), options); });
+    hullpack::Result<hullpack::PackResult> packed =
+        hullpack::Status(hullpack::StatusCode::kInternal, "");
+    const double ms =
+        hullpack::MedianMs(1, [&] { packed = hullpack::PackScene(scene.value(), options); });
     if (!packed.ok()) {
       std::fprintf(stderr, "pack_bench: %s: %s\n", file.c_str(), packed.status().message().c_str());
       ++failures;
@@ -103,11 +111,13 @@ int main(int argc, char** argv) {
       kept = a.triangle_count() == b.triangle_count() && a.vertex_count() == b.vertex_count() &&
              a.joints.size() == b.joints.size() && a.weights.size() == b.weights.size();
       const double diagonal = hullpack::BoundingBoxDiagonal(a);
-      if (diagonal > 0) round_trip = std::max(round_trip, hullpack::MaxVertexDistance(a, b) / diagonal);
+      if (diagonal > 0)
+        round_trip = std::max(round_trip, hullpack::MaxVertexDistance(a, b) / diagonal);
     }
     if (!kept) {
       std::fprintf(stderr, "pack_bench: %s: the unpacked file lost data: %s\n", file.c_str(),
-                   unpacked.ok() ? "mesh, triangle, vertex or skin counts differ" : unpacked.status().message().c_str());
+                   unpacked.ok() ? "mesh, triangle, vertex or skin counts differ"
+                                 : unpacked.status().message().c_str());
       ++failures;
     }
     size_t mesh_bytes = 0, hull_bytes = 0, hulls = 0, draco_bytes = 0, triangles = 0;
@@ -131,8 +141,11 @@ int main(int argc, char** argv) {
       // position bits whose decoded positions stay within the budget (or --qp when given).
       const double diagonal = hullpack::BoundingBoxDiagonal(mesh);
       const double budget = options.max_error * diagonal;
-      int bits = options.position_bits > 0 ? options.position_bits
-                                           : std::max(1, hullpack::PositionBitsForMaxError(hullpack::PositionRange(mesh), budget) - 1);
+      int bits = options.position_bits > 0
+                     ? options.position_bits
+                     : std::max(1, hullpack::PositionBitsForMaxError(hullpack::PositionRange(mesh),
+                                                                     budget) -
+                                       1);
       std::vector<uint8_t> bytes;
       double error = 0;
       for (; bits <= 30; ++bits) {
@@ -147,29 +160,38 @@ int main(int argc, char** argv) {
     const size_t packed_bytes = mesh_bytes + hull_bytes;
     const double ratio = draco_bytes ? double(packed_bytes) / draco_bytes : 0;
     if (round_trip > options.max_error && options.position_bits <= 0) {
-      std::fprintf(stderr, "pack_bench: %s: round-trip error %g over the budget\n", file.c_str(), round_trip);
+      std::fprintf(stderr, "pack_bench: %s: round-trip error %g over the budget\n", file.c_str(),
+                   round_trip);
       ++failures;
     }
     ratios.push_back(ratio);
     const size_t json_bytes = JsonChunkBytes(packed->glb);
     const hullpack::PackReport& pr = packed->report;
-    std::printf("%-22s %7zu %5zu | %8zu %7zu %8zu | %8zu %2d | %6.3f | %9.6f %9.6f | %6zu %6zu | %6.2f %6.2f %6.2f %6.2f\n",
-                file.c_str(), triangles, hulls, mesh_bytes, hull_bytes, packed_bytes, draco_bytes, draco_bits_max, ratio,
-                round_trip, draco_worst, json_bytes, packed->glb.size(), s_encode, s_decode, s_decompose, s_hulls);
+    std::printf(
+        "%-22s %7zu %5zu | %8zu %7zu %8zu | %8zu %2d | %6.3f | %9.6f %9.6f | %6zu %6zu | %6.2f "
+        "%6.2f %6.2f %6.2f\n",
+        file.c_str(), triangles, hulls, mesh_bytes, hull_bytes, packed_bytes, draco_bytes,
+        draco_bits_max, ratio, round_trip, draco_worst, json_bytes, packed->glb.size(), s_encode,
+        s_decode, s_decompose, s_hulls);
     char line[768];
-    std::snprintf(line, sizeof(line), "%s,%zu,%zu,%zu,%zu,%zu,%zu,%d,%.4f,%.6g,%.6g,%.6g,%zu,%zu,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f\n",
-                  file.c_str(), triangles, hulls, mesh_bytes, hull_bytes, packed_bytes, draco_bytes, draco_bits_max, ratio,
-                  worst, round_trip, draco_worst, packed->glb.size(), json_bytes, pr.seconds_prune, s_encode, s_decode, s_decompose,
-                  s_hulls, pr.seconds_write, ms / 1000);
+    std::snprintf(line, sizeof(line),
+                  "%s,%zu,%zu,%zu,%zu,%zu,%zu,%d,%.4f,%.6g,%.6g,%.6g,%zu,%zu,%.3f,%.3f,%.3f,%.3f,%."
+                  "3f,%.3f,%.3f\n",
+                  file.c_str(), triangles, hulls, mesh_bytes, hull_bytes, packed_bytes, draco_bytes,
+                  draco_bits_max, ratio, worst, round_trip, draco_worst, packed->glb.size(),
+                  json_bytes, pr.seconds_prune, s_encode, s_decode, s_decompose, s_hulls,
+                  pr.seconds_write, ms / 1000);
     text += line;
   }
   if (!ratios.empty()) {
     std::vector<double> sorted = ratios;
     std::sort(sorted.begin(), sorted.end());
-    const double median = sorted.size() % 2 ? sorted[sorted.size() / 2]
-                                            : 0.5 * (sorted[sorted.size() / 2 - 1] + sorted[sorted.size() / 2]);
-    std::printf("median packed-with-hulls / Draco-without-hulls: %.3f over %zu files (max-error %g)\n", median,
-                ratios.size(), options.max_error);
+    const double median = sorted.size() % 2
+                              ? sorted[sorted.size() / 2]
+                              : 0.5 * (sorted[sorted.size() / 2 - 1] + sorted[sorted.size() / 2]);
+    std::printf(
+        "median packed-with-hulls / Draco-without-hulls: %.3f over %zu files (max-error %g)\n",
+        median, ratios.size(), options.max_error);
   }
   if (!csv.empty()) {
     hullpack::Status st = hullpack::WriteFileAtomically(csv, text.data(), text.size());

@@ -110,7 +110,8 @@ Scale MakeScale(double min, double max, bool log) {
   s.lo = std::floor(min / step) * step;
   s.hi = std::ceil(max / step) * step;
   if (s.hi <= s.lo) s.hi = s.lo + step;
-  for (double v = s.lo; v <= s.hi + step * 1e-6; v += step) s.ticks.push_back({std::fabs(v) < step * 1e-9 ? 0.0 : v, true});
+  for (double v = s.lo; v <= s.hi + step * 1e-6; v += step)
+    s.ticks.push_back({std::fabs(v) < step * 1e-9 ? 0.0 : v, true});
   return s;
 }
 
@@ -121,12 +122,23 @@ std::string XmlEscape(const std::string& text) {
   out.reserve(text.size());
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -149,9 +161,11 @@ std::string RenderSvg(const Plot& plot, size_t* drawn) {
 
   std::string svg;
   svg += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  svg += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + Num(kWidth) + "\" height=\"" + Num(kHeight) +
-         "\" viewBox=\"0 0 " + Num(kWidth) + " " + Num(kHeight) + "\" font-family=\"sans-serif\" font-size=\"12\">\n";
-  svg += "<rect x=\"0\" y=\"0\" width=\"" + Num(kWidth) + "\" height=\"" + Num(kHeight) + "\" fill=\"white\"/>\n";
+  svg += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + Num(kWidth) + "\" height=\"" +
+         Num(kHeight) + "\" viewBox=\"0 0 " + Num(kWidth) + " " + Num(kHeight) +
+         "\" font-family=\"sans-serif\" font-size=\"12\">\n";
+  svg += "<rect x=\"0\" y=\"0\" width=\"" + Num(kWidth) + "\" height=\"" + Num(kHeight) +
+         "\" fill=\"white\"/>\n";
   svg += "<text x=\"" + Num(kWidth / 2) + "\" y=\"24\" text-anchor=\"middle\" font-size=\"15\">" +
          XmlEscape(plot.title) + "</text>\n";
 
@@ -159,31 +173,34 @@ std::string RenderSvg(const Plot& plot, size_t* drawn) {
   svg += "<g stroke=\"#e4e4e4\" stroke-width=\"1\">\n";
   for (const Tick& t : sx.ticks) {
     const double x = px(t.value);
-    svg += "<line x1=\"" + Num(x) + "\" y1=\"" + Num(kTop) + "\" x2=\"" + Num(x) + "\" y2=\"" + Num(kBottom) + "\"/>\n";
+    svg += "<line x1=\"" + Num(x) + "\" y1=\"" + Num(kTop) + "\" x2=\"" + Num(x) + "\" y2=\"" +
+           Num(kBottom) + "\"/>\n";
   }
   for (const Tick& t : sy.ticks) {
     const double y = py(t.value);
-    svg += "<line x1=\"" + Num(kLeft) + "\" y1=\"" + Num(y) + "\" x2=\"" + Num(kRight) + "\" y2=\"" + Num(y) + "\"/>\n";
+    svg += "<line x1=\"" + Num(kLeft) + "\" y1=\"" + Num(y) + "\" x2=\"" + Num(kRight) +
+           "\" y2=\"" + Num(y) + "\"/>\n";
   }
   svg += "</g>\n<g fill=\"#333\">\n";
   for (const Tick& t : sx.ticks) {
     if (!t.labelled) continue;
-    svg += "<text x=\"" + Num(px(t.value)) + "\" y=\"" + Num(kBottom + 16) + "\" text-anchor=\"middle\">" +
-           XmlEscape(TickLabel(t.value)) + "</text>\n";
+    svg += "<text x=\"" + Num(px(t.value)) + "\" y=\"" + Num(kBottom + 16) +
+           "\" text-anchor=\"middle\">" + XmlEscape(TickLabel(t.value)) + "</text>\n";
   }
   for (const Tick& t : sy.ticks) {
     if (!t.labelled) continue;
-    svg += "<text x=\"" + Num(kLeft - 6) + "\" y=\"" + Num(py(t.value) + 4) + "\" text-anchor=\"end\">" +
-           XmlEscape(TickLabel(t.value)) + "</text>\n";
+    svg += "<text x=\"" + Num(kLeft - 6) + "\" y=\"" + Num(py(t.value) + 4) +
+           "\" text-anchor=\"end\">" + XmlEscape(TickLabel(t.value)) + "</text>\n";
   }
   svg += "</g>\n";
-  svg += "<rect x=\"" + Num(kLeft) + "\" y=\"" + Num(kTop) + "\" width=\"" + Num(kRight - kLeft) + "\" height=\"" +
-         Num(kBottom - kTop) + "\" fill=\"none\" stroke=\"#333\"/>\n";
-  svg += "<text x=\"" + Num((kLeft + kRight) / 2) + "\" y=\"" + Num(kBottom + 38) + "\" text-anchor=\"middle\">" +
+  svg += "<rect x=\"" + Num(kLeft) + "\" y=\"" + Num(kTop) + "\" width=\"" + Num(kRight - kLeft) +
+         "\" height=\"" + Num(kBottom - kTop) + "\" fill=\"none\" stroke=\"#333\"/>\n";
+  svg += "<text x=\"" + Num((kLeft + kRight) / 2) + "\" y=\"" + Num(kBottom + 38) +
+         "\" text-anchor=\"middle\">" +
          XmlEscape(plot.x.label + (plot.x.log ? ", log scale" : "")) + "</text>\n";
-  svg += "<text x=\"18\" y=\"" + Num((kTop + kBottom) / 2) + "\" text-anchor=\"middle\" transform=\"rotate(-90 18 " +
-         Num((kTop + kBottom) / 2) + ")\">" + XmlEscape(plot.y.label + (plot.y.log ? ", log scale" : "")) +
-         "</text>\n";
+  svg += "<text x=\"18\" y=\"" + Num((kTop + kBottom) / 2) +
+         "\" text-anchor=\"middle\" transform=\"rotate(-90 18 " + Num((kTop + kBottom) / 2) +
+         ")\">" + XmlEscape(plot.y.label + (plot.y.log ? ", log scale" : "")) + "</text>\n";
 
   // Series: a polyline through the drawable points and a marker with a tooltip on each.
   size_t markers = 0;
@@ -197,14 +214,15 @@ std::string RenderSvg(const Plot& plot, size_t* drawn) {
       if (!s.markers) continue;
       char tip[96];
       std::snprintf(tip, sizeof(tip), ": x = %.4g, y = %.4g", x, y);
-      dots += "<circle cx=\"" + Num(px(x)) + "\" cy=\"" + Num(py(y)) + "\" r=\"3\"><title>" + XmlEscape(s.name + tip) +
-              "</title></circle>\n";
+      dots += "<circle cx=\"" + Num(px(x)) + "\" cy=\"" + Num(py(y)) + "\" r=\"3\"><title>" +
+              XmlEscape(s.name + tip) + "</title></circle>\n";
       ++markers;
     }
     svg += "<g stroke=\"" + std::string(colour) + "\" fill=\"" + colour + "\">\n";
     if (!line.empty()) {
       svg += "<polyline fill=\"none\" stroke-width=\"1.5\"" +
-             std::string(s.dashed ? " stroke-dasharray=\"6 4\"" : "") + " points=\"" + line + "\"/>\n";
+             std::string(s.dashed ? " stroke-dasharray=\"6 4\"" : "") + " points=\"" + line +
+             "\"/>\n";
     }
     svg += dots + "</g>\n";
   }
@@ -215,13 +233,16 @@ std::string RenderSvg(const Plot& plot, size_t* drawn) {
     const PlotSeries& s = plot.series[i];
     const std::string colour = Colour(s, i);
     const double lx = kRight + 16;
-    svg += "<line x1=\"" + Num(lx) + "\" y1=\"" + Num(ly) + "\" x2=\"" + Num(lx + 22) + "\" y2=\"" + Num(ly) +
-           "\" stroke=\"" + colour + "\" stroke-width=\"1.5\"" + (s.dashed ? " stroke-dasharray=\"6 4\"" : "") + "/>\n";
+    svg += "<line x1=\"" + Num(lx) + "\" y1=\"" + Num(ly) + "\" x2=\"" + Num(lx + 22) + "\" y2=\"" +
+           Num(ly) + "\" stroke=\"" + colour + "\" stroke-width=\"1.5\"" +
+           (s.dashed ? " stroke-dasharray=\"6 4\"" : "") + "/>\n";
     if (s.markers) {
-      svg += "<circle cx=\"" + Num(lx + 11) + "\" cy=\"" + Num(ly) + "\" r=\"3\" fill=\"" + colour + "\"/>\n";
+      svg += "<circle cx=\"" + Num(lx + 11) + "\" cy=\"" + Num(ly) + "\" r=\"3\" fill=\"" + colour +
+             "\"/>\n";
     }
     std::string name = s.name.size() > 34 ? s.name.substr(0, 31) + "..." : s.name;
-    svg += "<text x=\"" + Num(lx + 28) + "\" y=\"" + Num(ly + 4) + "\">" + XmlEscape(name) + "</text>\n";
+    svg += "<text x=\"" + Num(lx + 28) + "\" y=\"" + Num(ly + 4) + "\">" + XmlEscape(name) +
+           "</text>\n";
     ly += 17;
   }
   // The note, wrapped at word boundaries into at most two lines.

@@ -14,7 +14,7 @@ namespace hullpack {
 struct PlotSeries {
   std::string name;
   std::vector<std::pair<double, double>> points;  // (x, y), drawn in this order
-  bool dashed = false;                            // e.g. a reference bound rather than a measurement
+  bool dashed = false;  // e.g. a reference bound rather than a measurement
   bool markers = true;
   int colour = -1;  // palette index, so a series keeps its colour across plots; -1: its position
 };

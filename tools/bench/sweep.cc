@@ -4,10 +4,10 @@
 
 #include <algorithm>
 #include <chrono>
-#include <ctime>
 #include <cmath>
 #include <cstdarg>
 #include <cstring>
+#include <ctime>
 #include <set>
 #include <tuple>
 
@@ -26,7 +26,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double Ms(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+double Ms(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
 
 // CPU time of this process (every thread), in ms: unlike wall time it does not grow while other
 // processes hold the cores.
@@ -59,9 +61,15 @@ std::string Stem(const std::string& file) {
   return dot == std::string::npos ? file : file.substr(0, dot);
 }
 
-bool Contains(const std::vector<uint32_t>& v, uint32_t x) { return std::find(v.begin(), v.end(), x) != v.end(); }
-bool Contains(const std::vector<int>& v, int x) { return std::find(v.begin(), v.end(), x) != v.end(); }
-bool Contains(const std::vector<double>& v, double x) { return std::find(v.begin(), v.end(), x) != v.end(); }
+bool Contains(const std::vector<uint32_t>& v, uint32_t x) {
+  return std::find(v.begin(), v.end(), x) != v.end();
+}
+bool Contains(const std::vector<int>& v, int x) {
+  return std::find(v.begin(), v.end(), x) != v.end();
+}
+bool Contains(const std::vector<double>& v, double x) {
+  return std::find(v.begin(), v.end(), x) != v.end();
+}
 
 std::string Join(const std::vector<std::string>& parts) {
   std::string s;
@@ -93,9 +101,10 @@ bool ReadString(PayloadReader& r, std::string* s) {
   return r.Bytes(&(*s)[0], n);
 }
 
-std::vector<uint8_t> DecomposeInChild(const Mesh& mesh, const vhacd::Parameters& params, int repeats) {
-  const vhacd::MeshView view =
-      vhacd::MeshView::FromFloat(mesh.positions.data(), mesh.vertex_count(), mesh.indices.data(), mesh.triangle_count());
+std::vector<uint8_t> DecomposeInChild(const Mesh& mesh, const vhacd::Parameters& params,
+                                      int repeats) {
+  const vhacd::MeshView view = vhacd::MeshView::FromFloat(
+      mesh.positions.data(), mesh.vertex_count(), mesh.indices.data(), mesh.triangle_count());
   vhacd::Result result;
   double wall = 0, cpu = 0;
   TimeRuns(
@@ -137,8 +146,8 @@ bool ReadHulls(PayloadReader& r, std::vector<vhacd::ConvexHull>* hulls) {
 
 // The hulls as `hullpack pack` stores them: one stream, one group per hull, positions quantized to
 // `hull_error` of the mesh's diagonal. Returns the stream size, or -1.
-double HullStreamBytes(const std::vector<vhacd::ConvexHull>& hulls, double diagonal, double hull_error,
-                       size_t* vertex_count) {
+double HullStreamBytes(const std::vector<vhacd::ConvexHull>& hulls, double diagonal,
+                       double hull_error, size_t* vertex_count) {
   Mesh all;
   std::vector<uint32_t> groups;
   for (size_t h = 0; h < hulls.size(); ++h) {
@@ -156,8 +165,9 @@ double HullStreamBytes(const std::vector<vhacd::ConvexHull>& hulls, double diago
 }
 
 // Runs the decomposition of one point in a child; the hulls are returned for measuring later.
-void RunDecomposePoint(const Mesh& mesh, const SweepOptions& o, uint32_t resolution, double concavity,
-                       uint32_t max_hulls, SweepRow& row, std::vector<vhacd::ConvexHull>* hulls) {
+void RunDecomposePoint(const Mesh& mesh, const SweepOptions& o, uint32_t resolution,
+                       double concavity, uint32_t max_hulls, SweepRow& row,
+                       std::vector<vhacd::ConvexHull>* hulls) {
   vhacd::Parameters params = o.base;
   params.resolution = resolution;
   params.concavity = concavity;
@@ -168,8 +178,8 @@ void RunDecomposePoint(const Mesh& mesh, const SweepOptions& o, uint32_t resolut
     row.status = "invalid parameters: " + why;
     return;
   }
-  const ChildResult child = RunInChild([&] { return DecomposeInChild(mesh, params, o.decompose_repeats); },
-                                       o.timeout_seconds);
+  const ChildResult child = RunInChild(
+      [&] { return DecomposeInChild(mesh, params, o.decompose_repeats); }, o.timeout_seconds);
   if (!child.ok) {
     row.status = "decomposition " + child.error;
     return;
@@ -178,7 +188,8 @@ void RunDecomposePoint(const Mesh& mesh, const SweepOptions& o, uint32_t resolut
   uint64_t status = 0;
   std::string message;
   double ms = 0, cpu_ms = 0;
-  if (!r.U64(&status) || !ReadString(r, &message) || !r.Double(&ms) || !r.Double(&cpu_ms) || !ReadHulls(r, hulls)) {
+  if (!r.U64(&status) || !ReadString(r, &message) || !r.Double(&ms) || !r.Double(&cpu_ms) ||
+      !ReadHulls(r, hulls)) {
     row.status = "malformed result from the decomposition child";
     return;
   }
@@ -187,16 +198,19 @@ void RunDecomposePoint(const Mesh& mesh, const SweepOptions& o, uint32_t resolut
   row.peak_mb = child.peak_rss_mb;
   row.base_mb = child.base_rss_mb;
   if (status != 0) {
-    row.status = std::string("vhacd: ") + vhacd::StatusName(static_cast<vhacd::Status>(status)) + " " + message;
+    row.status = std::string("vhacd: ") + vhacd::StatusName(static_cast<vhacd::Status>(status)) +
+                 " " + message;
     return;
   }
   row.hull_count = double(hulls->size());
   row.status = "ok";
 }
 
-bench::Soup ToSoup(const std::vector<double>& points, const uint32_t* triangles, size_t triangle_count) {
+bench::Soup ToSoup(const std::vector<double>& points, const uint32_t* triangles,
+                   size_t triangle_count) {
   bench::Soup soup;
-  for (size_t i = 0; i + 2 < points.size(); i += 3) soup.points.push_back({points[i], points[i + 1], points[i + 2]});
+  for (size_t i = 0; i + 2 < points.size(); i += 3)
+    soup.points.push_back({points[i], points[i + 1], points[i + 2]});
   for (size_t t = 0; t < triangle_count; ++t) {
     soup.triangles.push_back({triangles[t * 3], triangles[t * 3 + 1], triangles[t * 3 + 2]});
   }
@@ -207,7 +221,8 @@ bench::Soup ToSoup(const std::vector<double>& points, const uint32_t* triangles,
 void MeasureDecomposePoint(const bench::MeshMeasure& measure, const SweepOptions& o,
                            const std::vector<vhacd::ConvexHull>& hulls, SweepRow& row) {
   std::vector<bench::Soup> shapes;
-  for (const vhacd::ConvexHull& h : hulls) shapes.push_back(ToSoup(h.points, h.triangles.data(), h.triangle_count()));
+  for (const vhacd::ConvexHull& h : hulls)
+    shapes.push_back(ToSoup(h.points, h.triangles.data(), h.triangle_count()));
   const bench::HullMetrics m = measure.Measure(shapes);
   row.hausdorff_mesh_to_hulls = m.mesh_to_hulls;
   row.hausdorff_hulls_to_mesh = m.hulls_to_mesh;
@@ -264,7 +279,8 @@ void RunCodecPoint(const Mesh& mesh, const SweepOptions& o, int qp, int qn, int 
     return;
   }
   row.bytes = double(stream.size());
-  row.bits_per_vertex = mesh.vertex_count() ? 8.0 * double(stream.size()) / double(mesh.vertex_count()) : -1;
+  row.bits_per_vertex =
+      mesh.vertex_count() ? 8.0 * double(stream.size()) / double(mesh.vertex_count()) : -1;
   // Error: measured vertex by vertex on a keep-order stream, after checking that the stream the
   // user gets decodes to the same values.
   {
@@ -275,7 +291,9 @@ void RunCodecPoint(const Mesh& mesh, const SweepOptions& o, int qp, int qn, int 
       return;
     }
     s = o3dgc::Encode(view, CodecParams(qp, qn, true), &ordered_stream);
-    if (s == o3dgc::Status::kOk) s = o3dgc::Decode(ordered_stream.data(), ordered_stream.size(), o3dgc::DecodeOptions(), &ordered);
+    if (s == o3dgc::Status::kOk)
+      s = o3dgc::Decode(ordered_stream.data(), ordered_stream.size(), o3dgc::DecodeOptions(),
+                        &ordered);
     if (s != o3dgc::Status::kOk) {
       row.status = std::string("keep-order stream: ") + o3dgc::StatusName(s);
       return;
@@ -395,20 +413,26 @@ SweepOptions QuickSweepOptions() {
   return o;
 }
 
-std::string DecomposeSweeps(const SweepOptions& o, uint32_t resolution, double concavity, uint32_t max_hulls) {
+std::string DecomposeSweeps(const SweepOptions& o, uint32_t resolution, double concavity,
+                            uint32_t max_hulls) {
   const bool base_r = resolution == o.base.resolution, base_c = concavity == o.base.concavity,
              base_h = max_hulls == o.base.max_convex_hulls;
   std::vector<std::string> on;
-  if (base_c && base_h && (base_r || Contains(o.grid.resolutions, resolution))) on.push_back("resolution");
-  if (base_r && base_h && (base_c || Contains(o.grid.concavities, concavity))) on.push_back("concavity");
-  if (base_r && base_c && (base_h || Contains(o.grid.max_hulls, max_hulls))) on.push_back("max_hulls");
+  if (base_c && base_h && (base_r || Contains(o.grid.resolutions, resolution)))
+    on.push_back("resolution");
+  if (base_r && base_h && (base_c || Contains(o.grid.concavities, concavity)))
+    on.push_back("concavity");
+  if (base_r && base_c && (base_h || Contains(o.grid.max_hulls, max_hulls)))
+    on.push_back("max_hulls");
   return Join(on);
 }
 
 std::string CodecSweeps(const SweepOptions& o, int qp, int qn, int qt) {
-  const bool base_p = qp == o.base_position_bits, base_n = qn == o.base_normal_bits, base_t = qt == o.base_uv_bits;
+  const bool base_p = qp == o.base_position_bits, base_n = qn == o.base_normal_bits,
+             base_t = qt == o.base_uv_bits;
   std::vector<std::string> on;
-  if (base_n && base_t && (base_p || Contains(o.grid.position_bits, qp))) on.push_back("position_bits");
+  if (base_n && base_t && (base_p || Contains(o.grid.position_bits, qp)))
+    on.push_back("position_bits");
   if (base_p && base_t && (base_n || Contains(o.grid.normal_bits, qn))) on.push_back("normal_bits");
   if (base_p && base_n && (base_t || Contains(o.grid.uv_bits, qt))) on.push_back("uv_bits");
   return Join(on);
@@ -431,7 +455,8 @@ Result<SweepResult> RunSweep(const std::string& folder, const SweepOptions& o) {
     for (const std::string& f : files) {
       if (LowerExtension(f) != ext) continue;
       const std::string stem = Stem(f);
-      if (!o.only.empty() && std::find(o.only.begin(), o.only.end(), stem) == o.only.end()) continue;
+      if (!o.only.empty() && std::find(o.only.begin(), o.only.end(), stem) == o.only.end())
+        continue;
       bool taken = false;
       for (const std::string& c : chosen) taken = taken || Stem(c) == stem;
       if (taken) {
@@ -445,9 +470,12 @@ Result<SweepResult> RunSweep(const std::string& folder, const SweepOptions& o) {
 
   // The points, one parameter at a time around the base point, each once.
   std::set<std::tuple<uint32_t, double, uint32_t>> decompose_points;
-  for (uint32_t r : o.grid.resolutions) decompose_points.insert({r, o.base.concavity, o.base.max_convex_hulls});
-  for (double c : o.grid.concavities) decompose_points.insert({o.base.resolution, c, o.base.max_convex_hulls});
-  for (uint32_t h : o.grid.max_hulls) decompose_points.insert({o.base.resolution, o.base.concavity, h});
+  for (uint32_t r : o.grid.resolutions)
+    decompose_points.insert({r, o.base.concavity, o.base.max_convex_hulls});
+  for (double c : o.grid.concavities)
+    decompose_points.insert({o.base.resolution, c, o.base.max_convex_hulls});
+  for (uint32_t h : o.grid.max_hulls)
+    decompose_points.insert({o.base.resolution, o.base.concavity, h});
   decompose_points.insert({o.base.resolution, o.base.concavity, o.base.max_convex_hulls});
   std::set<std::tuple<int, int, int>> codec_points;
   for (int b : o.grid.position_bits) codec_points.insert({b, o.base_normal_bits, o.base_uv_bits});
@@ -472,7 +500,8 @@ Result<SweepResult> RunSweep(const std::string& folder, const SweepOptions& o) {
     mesh.name = Stem(file);
     const Status valid = ValidateMesh(mesh);
     if (!valid.ok() || mesh.triangle_count() == 0) {
-      result.skipped.push_back(file + ": " + (valid.ok() ? std::string("no triangles") : valid.message()));
+      result.skipped.push_back(file + ": " +
+                               (valid.ok() ? std::string("no triangles") : valid.message()));
       continue;
     }
     SweepMesh info;
@@ -494,9 +523,9 @@ Result<SweepResult> RunSweep(const std::string& folder, const SweepOptions& o) {
       row.status = "not run";
       return row;
     };
-    Log(o, "[%zu/%zu] %s: %zu triangles, %zu vertices, %s%s%s\n", f + 1, chosen.size(), info.name.c_str(),
-        info.triangles, info.vertices, info.closed ? "closed" : "open", info.normals ? ", normals" : "",
-        info.uvs ? ", uvs" : "");
+    Log(o, "[%zu/%zu] %s: %zu triangles, %zu vertices, %s%s%s\n", f + 1, chosen.size(),
+        info.name.c_str(), info.triangles, info.vertices, info.closed ? "closed" : "open",
+        info.normals ? ", normals" : "", info.uvs ? ", uvs" : "");
     if (o.codec) {
       for (const auto& [qp, qn, qt] : codec_points) {
         // A sweep of an attribute the mesh does not have measures nothing new.
@@ -508,11 +537,14 @@ Result<SweepResult> RunSweep(const std::string& folder, const SweepOptions& o) {
         row.normal_bits = qn;
         row.uv_bits = qt;
         RunCodecPoint(mesh, o, qp, qn, qt, row);
-        Log(o, "  codec %d/%d/%d bits: %s, %.0f bytes (%.2f bits/vertex), position max %s rms %s, normal %s deg, "
-               "uv %s, encode %.2f ms, decode %.2f ms\n",
-            qp, qn, qt, row.status.c_str(), row.bytes, row.bits_per_vertex, Fmt(row.position_max_error).c_str(),
-            Fmt(row.position_rms_error).c_str(), Fmt(row.normal_max_deg).c_str(), Fmt(row.uv_max_error).c_str(),
-            row.time_ms, row.decode_ms);
+        Log(o,
+            "  codec %d/%d/%d bits: %s, %.0f bytes (%.2f bits/vertex), position max %s rms %s, "
+            "normal %s deg, "
+            "uv %s, encode %.2f ms, decode %.2f ms\n",
+            qp, qn, qt, row.status.c_str(), row.bytes, row.bits_per_vertex,
+            Fmt(row.position_max_error).c_str(), Fmt(row.position_rms_error).c_str(),
+            Fmt(row.normal_max_deg).c_str(), Fmt(row.uv_max_error).c_str(), row.time_ms,
+            row.decode_ms);
         result.rows.push_back(row);
       }
     }
@@ -529,23 +561,29 @@ Result<SweepResult> RunSweep(const std::string& folder, const SweepOptions& o) {
         row.max_hulls = max_hulls;
         hull_sets.emplace_back();
         RunDecomposePoint(mesh, o, res, conc, max_hulls, row, &hull_sets.back());
-        Log(o, "  decompose resolution %u concavity %g max hulls %u: %s, %.0f hulls, %.3f s (cpu %.3f s), %.1f MB\n",
-            res, conc, max_hulls, row.status.c_str(), row.hull_count, row.time_ms / 1000, row.cpu_ms / 1000,
-            row.peak_mb);
+        Log(o,
+            "  decompose resolution %u concavity %g max hulls %u: %s, %.0f hulls, %.3f s (cpu %.3f "
+            "s), %.1f MB\n",
+            res, conc, max_hulls, row.status.c_str(), row.hull_count, row.time_ms / 1000,
+            row.cpu_ms / 1000, row.peak_mb);
         rows.push_back(row);
       }
       malloc_trim(0);
-      const bench::MeshMeasure measure(ToSoup(std::vector<double>(mesh.positions.begin(), mesh.positions.end()),
-                                              mesh.indices.data(), mesh.triangle_count()),
-                                       o.metrics);
+      const bench::MeshMeasure measure(
+          ToSoup(std::vector<double>(mesh.positions.begin(), mesh.positions.end()),
+                 mesh.indices.data(), mesh.triangle_count()),
+          o.metrics);
       for (size_t i = 0; i < rows.size(); ++i) {
         SweepRow& row = rows[i];
         if (row.status == "ok") MeasureDecomposePoint(measure, o, hull_sets[i], row);
-        Log(o, "  measured resolution %.0f concavity %g max hulls %.0f: H mesh>hulls %s hulls>mesh %s%s, IoU %s, "
-               "%.0f hull bytes\n",
+        Log(o,
+            "  measured resolution %.0f concavity %g max hulls %.0f: H mesh>hulls %s hulls>mesh "
+            "%s%s, IoU %s, "
+            "%.0f hull bytes\n",
             row.resolution, row.concavity, row.max_hulls, Fmt(row.hausdorff_mesh_to_hulls).c_str(),
-            Fmt(row.hausdorff_hulls_to_mesh).c_str(), row.hulls_to_mesh_in_solid == 1 ? " (inside the solid)" : "",
-            Fmt(row.iou).c_str(), row.bytes);
+            Fmt(row.hausdorff_hulls_to_mesh).c_str(),
+            row.hulls_to_mesh_in_solid == 1 ? " (inside the solid)" : "", Fmt(row.iou).c_str(),
+            row.bytes);
         result.rows.push_back(row);
       }
     }

@@ -11,10 +11,10 @@
 // closed meshes and interior coverage on a lattice), measured on the input triangles and the hulls,
 // independently of vhacd's own report, as vhacd_bench measures. It is computed in this process
 // after the mesh's timed children have run, so its memory is not in their peak.
-// Decomposition size: the hulls as `hullpack pack` stores them (one o3dgc stream, one triangle group
-// per hull, positions quantized to `hull_error` of the mesh's diagonal).
-// Codec error: codec_error.h, on a keep-order stream at the same bits, after checking that the
-// size-optimised (reordered) stream decodes to exactly the same vertex values.
+// Decomposition size: the hulls as `hullpack pack` stores them (one o3dgc stream, one triangle
+// group per hull, positions quantized to `hull_error` of the mesh's diagonal). Codec error:
+// codec_error.h, on a keep-order stream at the same bits, after checking that the size-optimised
+// (reordered) stream decodes to exactly the same vertex values.
 #ifndef HULLPACK_TOOLS_BENCH_SWEEP_H_
 #define HULLPACK_TOOLS_BENCH_SWEEP_H_
 
@@ -42,22 +42,23 @@ struct SweepOptions {
   SweepGrid grid;
   vhacd::Parameters base;  // the decomposition's base point (resolution, concavity, max hulls, ...)
   int base_position_bits = 14, base_normal_bits = 10, base_uv_bits = 12;
-  int repeats = 3;            // codec: encode and decode times are medians of this many runs
-  int decompose_repeats = 1;  // decomposition: median of this many runs
-  double hull_error = 0.002;  // hull quantization for the hull bytes, fraction of the diagonal
+  int repeats = 3;                // codec: encode and decode times are medians of this many runs
+  int decompose_repeats = 1;      // decomposition: median of this many runs
+  double hull_error = 0.002;      // hull quantization for the hull bytes, fraction of the diagonal
   bench::MetricsOptions metrics;  // decomposition error measure (samples, lattice, gap, threads)
-  double timeout_seconds = 900;  // per measured step
+  double timeout_seconds = 900;   // per measured step
   // File extensions read (lower case, no dot), in order of preference: when two files of the
   // folder share a stem (bunny.obj, bunny.glb), only the first in this order is measured.
-  std::vector<std::string> extensions = {"obj", "off", "wrl", "ply", "stl", "glb", "gltf", "fbx", "dae"};
+  std::vector<std::string> extensions = {"obj", "off",  "wrl", "ply", "stl",
+                                         "glb", "gltf", "fbx", "dae"};
   std::vector<std::string> only;  // mesh names (file stems) to measure; empty = all
   FILE* log = stderr;             // one progress line per point; null = quiet
 };
 
 // The default grid (about 10-20 minutes over the 15-mesh corpus on 2 shared cores): resolution
-// 20k..1M (6 values), concavity 0.01..0.0005 (5), max hulls 4..32 and unlimited, position bits 8..20,
-// normal bits 6..12, UV bits 8..14 (every bit), one decomposition and 3 codec runs per point;
-// 20000 surface samples per Hausdorff direction.
+// 20k..1M (6 values), concavity 0.01..0.0005 (5), max hulls 4..32 and unlimited, position
+// bits 8..20, normal bits 6..12, UV bits 8..14 (every bit), one decomposition and 3 codec runs per
+// point; 20000 surface samples per Hausdorff direction.
 SweepOptions DefaultSweepOptions();
 // A few minutes: 3 resolutions, 3 concavities, 2 hull budgets, every other bit, 1 run per point,
 // 10000 samples.
@@ -66,8 +67,9 @@ SweepOptions QuickSweepOptions();
 // -1 marks "not applicable / not measured" in every numeric field.
 struct SweepRow {
   std::string mesh;
-  std::string stage;   // "decompose" or "codec"
-  std::string sweep;   // the sweeps this point lies on, '+'-separated: "resolution+concavity+max_hulls"
+  std::string stage;  // "decompose" or "codec"
+  std::string
+      sweep;  // the sweeps this point lies on, '+'-separated: "resolution+concavity+max_hulls"
   std::string status;  // "ok" or why the point failed
   size_t triangles = 0, vertices = 0;
   bool closed = false;
@@ -77,9 +79,9 @@ struct SweepRow {
   // Decomposition results.
   double hull_count = -1, hull_vertices = -1;
   double hausdorff_mesh_to_hulls = -1, hausdorff_hulls_to_mesh = -1, iou = -1;
-  double coverage = -1;                 // |solid ∩ hulls| / |solid| (every mesh)
-  double hulls_to_mesh_in_solid = -1;   // 1: the hulls -> mesh maximum is a crack inside the solid
-  double invalid_hulls = -1;            // hulls that are not closed, outward and convex
+  double coverage = -1;                // |solid ∩ hulls| / |solid| (every mesh)
+  double hulls_to_mesh_in_solid = -1;  // 1: the hulls -> mesh maximum is a crack inside the solid
+  double invalid_hulls = -1;           // hulls that are not closed, outward and convex
   // Codec results.
   double position_max_error = -1, position_rms_error = -1;
   double normal_max_deg = -1, normal_mean_deg = -1, uv_max_error = -1;
@@ -99,9 +101,9 @@ struct SweepMesh {
 
 struct SweepResult {
   std::vector<SweepMesh> meshes;
-  std::vector<SweepRow> rows;          // one per mesh x point, in measurement order
-  std::vector<std::string> skipped;    // files not measured, with the reason
-  double seconds = 0;                  // wall time of the whole sweep
+  std::vector<SweepRow> rows;        // one per mesh x point, in measurement order
+  std::vector<std::string> skipped;  // files not measured, with the reason
+  double seconds = 0;                // wall time of the whole sweep
 };
 
 // Runs the sweep over the folder's meshes. Fails only when the folder cannot be listed or the
@@ -110,8 +112,10 @@ struct SweepResult {
 Result<SweepResult> RunSweep(const std::string& folder, const SweepOptions& options);
 
 // The sweep memberships of a decomposition / codec point under `options` ("" when on none).
-std::string DecomposeSweeps(const SweepOptions& options, uint32_t resolution, double concavity, uint32_t max_hulls);
-std::string CodecSweeps(const SweepOptions& options, int position_bits, int normal_bits, int uv_bits);
+std::string DecomposeSweeps(const SweepOptions& options, uint32_t resolution, double concavity,
+                            uint32_t max_hulls);
+std::string CodecSweeps(const SweepOptions& options, int position_bits, int normal_bits,
+                        int uv_bits);
 
 }  // namespace hullpack
 

@@ -5,7 +5,8 @@
 //   sweep_bench FOLDER -o OUT [--quick] [--decompose-only | --codec-only] [--repeats N]
 //               [--decompose-repeats N] [--threads N] [--resolutions LIST] [--concavities LIST]
 //               [--max-hulls LIST] [--position-bits LIST] [--normal-bits LIST] [--uv-bits LIST]
-//               [--max-distance X] [--samples N] [--solid-points N] [--gap X] [--timeout S] [--meshes a,b]
+//               [--max-distance X] [--samples N] [--solid-points N] [--gap X] [--timeout S]
+//               [--meshes a,b]
 //               [--ext obj,glb,...] [--quiet]
 //
 // LIST is "a,b,c" or a range "lo:hi" (integers, step 1) or "lo:hi:step".
@@ -21,35 +22,36 @@
 namespace {
 
 void Usage(FILE* out) {
-  std::fprintf(out,
-               "usage: sweep_bench FOLDER -o OUT [options]\n"
-               "  Sweeps the decomposition and the codec over every mesh of FOLDER and writes\n"
-               "  OUT/sweep.csv, OUT/*.svg and OUT/summary.md.\n"
-               "options:\n"
-               "  --quick                 a smaller grid and 1 run per point (a few minutes on the corpus)\n"
-               "  --decompose-only        only the decomposition sweep\n"
-               "  --codec-only            only the codec sweep\n"
-               "  --repeats N             codec runs per point, median time (default 3)\n"
-               "  --decompose-repeats N   decomposition runs per point, median time (default 1)\n"
-               "  --threads N             decomposition threads (default 1; 0 = every core)\n"
-               "  --resolutions LIST      default 20000,50000,100000,200000,400000,1000000\n"
-               "  --concavities LIST      default 0.01,0.005,0.0025,0.001,0.0005\n"
-               "  --max-hulls LIST        default 4,8,16,32,0 (0 = no limit)\n"
-               "  --position-bits LIST    default 8:20\n"
-               "  --normal-bits LIST      default 6:12\n"
-               "  --uv-bits LIST          default 8:14\n"
-               "  --max-distance X        vhacd max_distance of every point (default 0.03)\n"
-               "  --samples N             random surface samples per Hausdorff direction (default 20000;\n"
-               "                          the vertices are measured too)\n"
-               "  --solid-points N        lattice points of the IoU / coverage measure (default 262144)\n"
-               "  --gap X                 hull points nearer than X (fraction of the diagonal) to another\n"
-               "                          hull are inside the union of hulls (default 0.002)\n"
-               "  --timeout S             per measured step (default 900)\n"
-               "  --meshes a,b            only these meshes (file names without extension)\n"
-               "  --ext LIST              file extensions, in order of preference (default\n"
-               "                          obj,off,wrl,ply,stl,glb,gltf,fbx,dae; one file per name)\n"
-               "  --quiet                 no progress lines\n"
-               "LIST: a,b,c or lo:hi or lo:hi:step\n");
+  std::fprintf(
+      out,
+      "usage: sweep_bench FOLDER -o OUT [options]\n"
+      "  Sweeps the decomposition and the codec over every mesh of FOLDER and writes\n"
+      "  OUT/sweep.csv, OUT/*.svg and OUT/summary.md.\n"
+      "options:\n"
+      "  --quick                 a smaller grid and 1 run per point (a few minutes on the corpus)\n"
+      "  --decompose-only        only the decomposition sweep\n"
+      "  --codec-only            only the codec sweep\n"
+      "  --repeats N             codec runs per point, median time (default 3)\n"
+      "  --decompose-repeats N   decomposition runs per point, median time (default 1)\n"
+      "  --threads N             decomposition threads (default 1; 0 = every core)\n"
+      "  --resolutions LIST      default 20000,50000,100000,200000,400000,1000000\n"
+      "  --concavities LIST      default 0.01,0.005,0.0025,0.001,0.0005\n"
+      "  --max-hulls LIST        default 4,8,16,32,0 (0 = no limit)\n"
+      "  --position-bits LIST    default 8:20\n"
+      "  --normal-bits LIST      default 6:12\n"
+      "  --uv-bits LIST          default 8:14\n"
+      "  --max-distance X        vhacd max_distance of every point (default 0.03)\n"
+      "  --samples N             random surface samples per Hausdorff direction (default 20000;\n"
+      "                          the vertices are measured too)\n"
+      "  --solid-points N        lattice points of the IoU / coverage measure (default 262144)\n"
+      "  --gap X                 hull points nearer than X (fraction of the diagonal) to another\n"
+      "                          hull are inside the union of hulls (default 0.002)\n"
+      "  --timeout S             per measured step (default 900)\n"
+      "  --meshes a,b            only these meshes (file names without extension)\n"
+      "  --ext LIST              file extensions, in order of preference (default\n"
+      "                          obj,off,wrl,ply,stl,glb,gltf,fbx,dae; one file per name)\n"
+      "  --quiet                 no progress lines\n"
+      "LIST: a,b,c or lo:hi or lo:hi:step\n");
 }
 
 std::vector<std::string> Split(const std::string& s) {
@@ -57,7 +59,8 @@ std::vector<std::string> Split(const std::string& s) {
   size_t at = 0;
   while (at <= s.size()) {
     const size_t comma = s.find(',', at);
-    const std::string part = s.substr(at, comma == std::string::npos ? std::string::npos : comma - at);
+    const std::string part =
+        s.substr(at, comma == std::string::npos ? std::string::npos : comma - at);
     if (!part.empty()) out.push_back(part);
     if (comma == std::string::npos) break;
     at = comma + 1;
@@ -80,7 +83,9 @@ bool ParseList(const std::string& s, std::vector<double>* out) {
     while (true) {
       const size_t colon = s.find(':', at);
       double v;
-      if (!ParseDouble(s.substr(at, colon == std::string::npos ? std::string::npos : colon - at), &v)) return false;
+      if (!ParseDouble(s.substr(at, colon == std::string::npos ? std::string::npos : colon - at),
+                       &v))
+        return false;
       p.push_back(v);
       if (colon == std::string::npos) break;
       at = colon + 1;
@@ -124,7 +129,8 @@ int main(int argc, char** argv) {
   // --quick first: the other options refine whichever grid it chose.
   bool quick = false;
   for (const std::string& a : args) quick = quick || a == "--quick";
-  hullpack::SweepOptions o = quick ? hullpack::QuickSweepOptions() : hullpack::DefaultSweepOptions();
+  hullpack::SweepOptions o =
+      quick ? hullpack::QuickSweepOptions() : hullpack::DefaultSweepOptions();
   o.base.num_threads = 1;
   std::string folder, out;
   auto bad = [&](const std::string& what) {
@@ -150,28 +156,43 @@ int main(int argc, char** argv) {
       o.log = nullptr;
     } else if (a == "-o" || a == "--out") {
       if (!value(&out)) return bad("-o needs a folder");
-    } else if (a == "--repeats" || a == "--decompose-repeats" || a == "--threads" || a == "--samples" ||
-               a == "--solid-points" || a == "--gap" || a == "--timeout" || a == "--max-distance") {
+    } else if (a == "--repeats" || a == "--decompose-repeats" || a == "--threads" ||
+               a == "--samples" || a == "--solid-points" || a == "--gap" || a == "--timeout" ||
+               a == "--max-distance") {
       if (!value(&v) || !ParseDouble(v, &d)) return bad(a + " needs a number");
-      if (a == "--repeats" && d >= 1 && d <= 1000) o.repeats = static_cast<int>(d);
-      else if (a == "--decompose-repeats" && d >= 1 && d <= 1000) o.decompose_repeats = static_cast<int>(d);
-      else if (a == "--threads" && d >= 0 && d <= 256) o.base.num_threads = static_cast<uint32_t>(d);
-      else if (a == "--samples" && d >= 0 && d <= 1e8) o.metrics.mesh_samples = o.metrics.hull_samples = static_cast<size_t>(d);
-      else if (a == "--solid-points" && d >= 1 && d <= 1e9) o.metrics.solid_points = static_cast<size_t>(d);
-      else if (a == "--gap" && d >= 0 && d <= 1) o.metrics.gap = d;
-      else if (a == "--timeout" && d > 0) o.timeout_seconds = d;
-      else if (a == "--max-distance" && d >= 0 && d <= 1) o.base.max_distance = d;
-      else return bad(a + " " + v + ": out of range");
+      if (a == "--repeats" && d >= 1 && d <= 1000)
+        o.repeats = static_cast<int>(d);
+      else if (a == "--decompose-repeats" && d >= 1 && d <= 1000)
+        o.decompose_repeats = static_cast<int>(d);
+      else if (a == "--threads" && d >= 0 && d <= 256)
+        o.base.num_threads = static_cast<uint32_t>(d);
+      else if (a == "--samples" && d >= 0 && d <= 1e8)
+        o.metrics.mesh_samples = o.metrics.hull_samples = static_cast<size_t>(d);
+      else if (a == "--solid-points" && d >= 1 && d <= 1e9)
+        o.metrics.solid_points = static_cast<size_t>(d);
+      else if (a == "--gap" && d >= 0 && d <= 1)
+        o.metrics.gap = d;
+      else if (a == "--timeout" && d > 0)
+        o.timeout_seconds = d;
+      else if (a == "--max-distance" && d >= 0 && d <= 1)
+        o.base.max_distance = d;
+      else
+        return bad(a + " " + v + ": out of range");
     } else if (a == "--resolutions") {
-      if (!value(&v) || !ParseTypedList(v, 10000, 64000000, &o.grid.resolutions)) return bad("bad --resolutions");
+      if (!value(&v) || !ParseTypedList(v, 10000, 64000000, &o.grid.resolutions))
+        return bad("bad --resolutions");
     } else if (a == "--concavities") {
-      if (!value(&v) || !ParseTypedList(v, 0, 1, &o.grid.concavities)) return bad("bad --concavities");
+      if (!value(&v) || !ParseTypedList(v, 0, 1, &o.grid.concavities))
+        return bad("bad --concavities");
     } else if (a == "--max-hulls") {
-      if (!value(&v) || !ParseTypedList(v, 0, 100000, &o.grid.max_hulls)) return bad("bad --max-hulls");
+      if (!value(&v) || !ParseTypedList(v, 0, 100000, &o.grid.max_hulls))
+        return bad("bad --max-hulls");
     } else if (a == "--position-bits") {
-      if (!value(&v) || !ParseTypedList(v, 1, 30, &o.grid.position_bits)) return bad("bad --position-bits");
+      if (!value(&v) || !ParseTypedList(v, 1, 30, &o.grid.position_bits))
+        return bad("bad --position-bits");
     } else if (a == "--normal-bits") {
-      if (!value(&v) || !ParseTypedList(v, 1, 30, &o.grid.normal_bits)) return bad("bad --normal-bits");
+      if (!value(&v) || !ParseTypedList(v, 1, 30, &o.grid.normal_bits))
+        return bad("bad --normal-bits");
     } else if (a == "--uv-bits") {
       if (!value(&v) || !ParseTypedList(v, 1, 30, &o.grid.uv_bits)) return bad("bad --uv-bits");
     } else if (a == "--meshes") {
@@ -205,7 +226,10 @@ int main(int argc, char** argv) {
   }
   size_t failed = 0;
   for (const hullpack::SweepRow& r : result->rows) failed += r.status != "ok";
-  std::printf("sweep_bench: %zu meshes, %zu points (%zu failed), %zu files skipped, %.0f s; wrote %s/summary.md\n",
-              result->meshes.size(), result->rows.size(), failed, result->skipped.size(), result->seconds, out.c_str());
+  std::printf(
+      "sweep_bench: %zu meshes, %zu points (%zu failed), %zu files skipped, %.0f s; wrote "
+      "%s/summary.md\n",
+      result->meshes.size(), result->rows.size(), failed, result->skipped.size(), result->seconds,
+      out.c_str());
   return failed == 0 ? 0 : 1;
 }

@@ -19,15 +19,16 @@ const std::vector<std::string>& SweepCsvColumns();
 std::string SweepCsv(const std::vector<SweepRow>& rows);
 
 // (file name, SVG document) of every plot the rows can fill; a plot without any point is left out.
-std::vector<std::pair<std::string, std::string>> SweepPlots(const SweepResult& result, const SweepOptions& options);
+std::vector<std::pair<std::string, std::string>> SweepPlots(const SweepResult& result,
+                                                            const SweepOptions& options);
 
 // The Markdown summary; `command` is the command line that made it, `plots` the plot files to show.
-std::string SweepSummary(const SweepResult& result, const SweepOptions& options, const std::string& command,
-                         const std::vector<std::string>& plots);
+std::string SweepSummary(const SweepResult& result, const SweepOptions& options,
+                         const std::string& command, const std::vector<std::string>& plots);
 
 // Writes sweep.csv, summary.md and the plots into `folder` (created if missing).
-Status WriteSweepOutputs(const SweepResult& result, const SweepOptions& options, const std::string& folder,
-                         const std::string& command);
+Status WriteSweepOutputs(const SweepResult& result, const SweepOptions& options,
+                         const std::string& folder, const std::string& command);
 
 }  // namespace hullpack
 

@@ -22,12 +22,12 @@
 // fresh folder {dir} with {in} (the input OBJ) and {out} (where it must leave the hulls, one `o`
 // per hull) substituted. Wall time includes reading the input and writing the hulls for both
 // programs; hullpack's also includes its error report (library time without it is listed apart).
+#include <fcntl.h>
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/types.h>
 #include <sys/wait.h>
-#include <fcntl.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -91,7 +91,8 @@ bool ReadObjParts(const std::string& path, bool split, std::vector<Soup>* parts,
         }
         poly.push_back(v > 0 ? v - 1 : static_cast<int64_t>(verts.size()) + v);
       }
-      for (size_t k = 2; k < poly.size(); ++k) faces.back().push_back({poly[0], poly[k - 1], poly[k]});
+      for (size_t k = 2; k < poly.size(); ++k)
+        faces.back().push_back({poly[0], poly[k - 1], poly[k]});
     } else if (split && (line[0] == 'o' || line[0] == 'g') && (line[1] == ' ' || line[1] == '\t')) {
       if (!faces.back().empty()) faces.emplace_back();
     }
@@ -155,8 +156,8 @@ int RunOurs(int argc, char** argv) {
   std::vector<uint32_t> idx;
   for (const V3& q : parts[0].points) pts.insert(pts.end(), {q[0], q[1], q[2]});
   for (const auto& t : parts[0].triangles) idx.insert(idx.end(), {t[0], t[1], t[2]});
-  const vhacd::Result r =
-      vhacd::Decompose(vhacd::MeshView::FromDouble(pts.data(), pts.size() / 3, idx.data(), idx.size() / 3), p);
+  const vhacd::Result r = vhacd::Decompose(
+      vhacd::MeshView::FromDouble(pts.data(), pts.size() / 3, idx.data(), idx.size() / 3), p);
   std::ofstream rep((out + ".report").c_str());
   rep << "status " << vhacd::StatusName(r.status) << "\n";
   if (!r.ok()) {
@@ -165,16 +166,18 @@ int RunOurs(int argc, char** argv) {
   }
   const vhacd::Report& R = r.report;
   rep.precision(9);
-  rep << "concavity " << R.concavity << "\nmesh_to_hulls " << R.hausdorff_mesh_to_hulls << "\nhulls_to_mesh "
-      << R.hausdorff_hulls_to_mesh << "\niou " << R.volume_iou << "\ncoverage " << R.solid_coverage
-      << "\nseconds_total " << R.seconds_total << "\nseconds_report " << R.seconds_report << "\n";
+  rep << "concavity " << R.concavity << "\nmesh_to_hulls " << R.hausdorff_mesh_to_hulls
+      << "\nhulls_to_mesh " << R.hausdorff_hulls_to_mesh << "\niou " << R.volume_iou
+      << "\ncoverage " << R.solid_coverage << "\nseconds_total " << R.seconds_total
+      << "\nseconds_report " << R.seconds_report << "\n";
   std::vector<Soup> hulls(r.hulls.size());
   for (size_t h = 0; h < r.hulls.size(); ++h) {
     for (size_t v = 0; v < r.hulls[h].vertex_count(); ++v)
-      hulls[h].points.emplace_back(r.hulls[h].points[3 * v], r.hulls[h].points[3 * v + 1], r.hulls[h].points[3 * v + 2]);
+      hulls[h].points.emplace_back(r.hulls[h].points[3 * v], r.hulls[h].points[3 * v + 1],
+                                   r.hulls[h].points[3 * v + 2]);
     for (size_t t = 0; t < r.hulls[h].triangle_count(); ++t)
-      hulls[h].triangles.push_back(
-          {r.hulls[h].triangles[3 * t], r.hulls[h].triangles[3 * t + 1], r.hulls[h].triangles[3 * t + 2]});
+      hulls[h].triangles.push_back({r.hulls[h].triangles[3 * t], r.hulls[h].triangles[3 * t + 1],
+                                    r.hulls[h].triangles[3 * t + 2]});
   }
   return WriteObjParts(out, hulls) && rep.good() ? 0 : 1;
 }
@@ -191,8 +194,8 @@ struct RunStats {
 };
 
 // Runs argv (or `sh -c command` when argv is empty) in `dir`, output to dir/log.txt.
-RunStats RunProcess(const std::vector<std::string>& args, const std::string& command, const std::string& dir,
-                    double timeout_s) {
+RunStats RunProcess(const std::vector<std::string>& args, const std::string& command,
+                    const std::string& dir, double timeout_s) {
   RunStats st;
   const auto t0 = std::chrono::steady_clock::now();
   const pid_t pid = fork();
@@ -245,7 +248,8 @@ std::string ShellQuote(const std::string& s) {
 }
 
 std::string Substitute(std::string t, const std::string& key, const std::string& value) {
-  for (size_t pos = 0; (pos = t.find(key, pos)) != std::string::npos; pos += value.size()) t.replace(pos, key.size(), value);
+  for (size_t pos = 0; (pos = t.find(key, pos)) != std::string::npos; pos += value.size())
+    t.replace(pos, key.size(), value);
   return t;
 }
 
@@ -284,13 +288,16 @@ std::string Fmt(double v, const char* f = "%.4f") {
 
 int Usage(const char* why) {
   if (why) std::fprintf(stderr, "vhacd_bench: %s\n", why);
-  std::fprintf(stderr,
-               "usage: vhacd_bench FOLDER [--reference-bin PATH | --reference-cmd 'TEMPLATE'] [--repeats N]\n"
-               "                  [--ours default,high,tetra,high+tetra] [--preset|--quality default|high]\n"
-               "                  [--mode 0|1|tetra] [--csv FILE] [--work DIR] [--timeout S] [--only A,B]\n"
-               "                  [--samples N] [--gap X] [--threads N]\n"
-               "TEMPLATE: a shell command run in a fresh folder {dir}; {in} is the input OBJ, {out} the OBJ\n"
-               "          it must write (one `o` per hull).\n");
+  std::fprintf(
+      stderr,
+      "usage: vhacd_bench FOLDER [--reference-bin PATH | --reference-cmd 'TEMPLATE'] [--repeats "
+      "N]\n"
+      "                  [--ours default,high,tetra,high+tetra] [--preset|--quality default|high]\n"
+      "                  [--mode 0|1|tetra] [--csv FILE] [--work DIR] [--timeout S] [--only A,B]\n"
+      "                  [--samples N] [--gap X] [--threads N]\n"
+      "TEMPLATE: a shell command run in a fresh folder {dir}; {in} is the input OBJ, {out} the "
+      "OBJ\n"
+      "          it must write (one `o` per hull).\n");
   return 64;
 }
 
@@ -318,9 +325,12 @@ int MeasureOne(int argc, char** argv) {
   if (argc < 4) return Usage("--measure needs MESH and HULLS.obj");
   MetricsOptions mo;
   for (int i = 4; i + 1 < argc; i += 2) {
-    if (std::strcmp(argv[i], "--gap") == 0) mo.gap = std::atof(argv[i + 1]);
-    else if (std::strcmp(argv[i], "--samples") == 0) mo.mesh_samples = mo.hull_samples = std::atoll(argv[i + 1]);
-    else return Usage("--measure takes only --gap and --samples");
+    if (std::strcmp(argv[i], "--gap") == 0)
+      mo.gap = std::atof(argv[i + 1]);
+    else if (std::strcmp(argv[i], "--samples") == 0)
+      mo.mesh_samples = mo.hull_samples = std::atoll(argv[i + 1]);
+    else
+      return Usage("--measure takes only --gap and --samples");
   }
   hullpack::Result<hullpack::Scene> scene = hullpack::ReadScene(argv[2]);
   if (!scene.ok()) {
@@ -331,8 +341,10 @@ int MeasureOne(int argc, char** argv) {
   std::vector<uint32_t> idx;
   hullpack::FlattenScene(scene.value(), &pts, &idx);
   Soup soup;
-  for (size_t i = 0; i < pts.size(); i += 3) soup.points.emplace_back(pts[i], pts[i + 1], pts[i + 2]);
-  for (size_t i = 0; i + 2 < idx.size(); i += 3) soup.triangles.push_back({idx[i], idx[i + 1], idx[i + 2]});
+  for (size_t i = 0; i < pts.size(); i += 3)
+    soup.points.emplace_back(pts[i], pts[i + 1], pts[i + 2]);
+  for (size_t i = 0; i + 2 < idx.size(); i += 3)
+    soup.triangles.push_back({idx[i], idx[i + 1], idx[i + 2]});
   std::vector<Soup> hulls;
   std::string why;
   if (!ReadObjParts(argv[3], true, &hulls, &why)) {
@@ -341,15 +353,18 @@ int MeasureOne(int argc, char** argv) {
   }
   const MeshMeasure measure(std::move(soup), mo);
   const HullMetrics m = measure.Measure(hulls);
-  std::printf("hulls %zu (max %zu vertices), invalid %zu %s\n", m.hulls, m.max_hull_vertices, m.invalid_hulls,
-              m.first_problem.c_str());
-  std::printf("concavity %.5f: mesh->hulls %.5f at (%.6g %.6g %.6g), hulls->mesh %.5f at (%.6g %.6g %.6g) on hull %zu\n",
-              m.concavity, m.mesh_to_hulls, m.worst_mesh_point[0], m.worst_mesh_point[1], m.worst_mesh_point[2],
-              m.hulls_to_mesh, m.worst_hull_point[0], m.worst_hull_point[1], m.worst_hull_point[2], m.worst_hull);
+  std::printf("hulls %zu (max %zu vertices), invalid %zu %s\n", m.hulls, m.max_hull_vertices,
+              m.invalid_hulls, m.first_problem.c_str());
+  std::printf(
+      "concavity %.5f: mesh->hulls %.5f at (%.6g %.6g %.6g), hulls->mesh %.5f at (%.6g %.6g %.6g) "
+      "on hull %zu\n",
+      m.concavity, m.mesh_to_hulls, m.worst_mesh_point[0], m.worst_mesh_point[1],
+      m.worst_mesh_point[2], m.hulls_to_mesh, m.worst_hull_point[0], m.worst_hull_point[1],
+      m.worst_hull_point[2], m.worst_hull);
   std::printf("  that hull point is %s the solid, %.5f from the nearest other hull\n",
               m.worst_hull_point_in_solid ? "inside" : "outside", m.worst_hull_point_gap);
-  std::printf("IoU %s, coverage %s, closed %s, diagonal %.6g\n", Fmt(m.iou).c_str(), Fmt(m.coverage).c_str(),
-              measure.closed() ? "yes" : "no", measure.diagonal());
+  std::printf("IoU %s, coverage %s, closed %s, diagonal %.6g\n", Fmt(m.iou).c_str(),
+              Fmt(m.coverage).c_str(), measure.closed() ? "yes" : "no", measure.diagonal());
   return 0;
 }
 
@@ -381,7 +396,8 @@ int Subdivide(int argc, char** argv) {
       remap[i] = it.first->second;
     }
     s.points.swap(welded);
-    for (size_t i = 0; i + 2 < idx.size(); i += 3) s.triangles.push_back({remap[idx[i]], remap[idx[i + 1]], remap[idx[i + 2]]});
+    for (size_t i = 0; i + 2 < idx.size(); i += 3)
+      s.triangles.push_back({remap[idx[i]], remap[idx[i + 1]], remap[idx[i + 2]]});
   }
   while (s.triangles.size() * 4 <= target) {
     std::map<std::pair<uint32_t, uint32_t>, uint32_t> mid;
@@ -395,7 +411,8 @@ int Subdivide(int argc, char** argv) {
     std::vector<std::array<uint32_t, 3>> next;
     next.reserve(s.triangles.size() * 4);
     for (const auto& t : s.triangles) {
-      const uint32_t ab = midpoint(t[0], t[1]), bc = midpoint(t[1], t[2]), ca = midpoint(t[2], t[0]);
+      const uint32_t ab = midpoint(t[0], t[1]), bc = midpoint(t[1], t[2]),
+                     ca = midpoint(t[2], t[0]);
       next.push_back({t[0], ab, ca});
       next.push_back({ab, t[1], bc});
       next.push_back({ca, bc, t[2]});
@@ -437,27 +454,43 @@ int main(int argc, char** argv) {
     const std::string a = argv[i];
     if (i + 1 >= argc) return Usage(("missing value after " + a).c_str());
     const std::string v = argv[++i];
-    if (a == "--reference-bin") ref_bin = v;
-    else if (a == "--reference-cmd") ref_cmd = v;
-    else if (a == "--repeats") repeats = std::max(1, std::atoi(v.c_str()));
-    else if (a == "--ours") ours_list = v;
+    if (a == "--reference-bin")
+      ref_bin = v;
+    else if (a == "--reference-cmd")
+      ref_cmd = v;
+    else if (a == "--repeats")
+      repeats = std::max(1, std::atoi(v.c_str()));
+    else if (a == "--ours")
+      ours_list = v;
     else if (a == "--preset" || a == "--quality") {
       if (v != "default" && v != "high") return Usage("preset must be default or high");
       preset = v;
     } else if (a == "--mode") {
-      if (v == "0" || v == "voxel") mode = 0;
-      else if (v == "1" || v == "tetra" || v == "tetrahedron") mode = 1;
-      else return Usage("mode must be 0, 1 or tetra");
-    } else if (a == "--csv") csv = v;
-    else if (a == "--work") work = v;
-    else if (a == "--timeout") timeout = std::atof(v.c_str());
-    else if (a == "--only") only = SplitComma(v);
-    else if (a == "--samples") mo.mesh_samples = mo.hull_samples = static_cast<size_t>(std::atoll(v.c_str()));
-    else if (a == "--gap") mo.gap = std::atof(v.c_str());
-    else if (a == "--threads") threads = std::atoi(v.c_str());
-    else return Usage(("unknown option " + a).c_str());
+      if (v == "0" || v == "voxel")
+        mode = 0;
+      else if (v == "1" || v == "tetra" || v == "tetrahedron")
+        mode = 1;
+      else
+        return Usage("mode must be 0, 1 or tetra");
+    } else if (a == "--csv")
+      csv = v;
+    else if (a == "--work")
+      work = v;
+    else if (a == "--timeout")
+      timeout = std::atof(v.c_str());
+    else if (a == "--only")
+      only = SplitComma(v);
+    else if (a == "--samples")
+      mo.mesh_samples = mo.hull_samples = static_cast<size_t>(std::atoll(v.c_str()));
+    else if (a == "--gap")
+      mo.gap = std::atof(v.c_str());
+    else if (a == "--threads")
+      threads = std::atoi(v.c_str());
+    else
+      return Usage(("unknown option " + a).c_str());
   }
-  if (!ref_bin.empty() && !ref_cmd.empty()) return Usage("give --reference-bin or --reference-cmd, not both");
+  if (!ref_bin.empty() && !ref_cmd.empty())
+    return Usage("give --reference-bin or --reference-cmd, not both");
   if (!ref_bin.empty() && ref_bin[0] != '/') {
     char cwd[4096];
     if (getcwd(cwd, sizeof(cwd))) ref_bin = std::string(cwd) + "/" + ref_bin;
@@ -469,12 +502,15 @@ int main(int argc, char** argv) {
     Config cfg;
     cfg.name = c;
     if (c == "default") {
-    } else if (c == "high") cfg.preset = "high";
-    else if (c == "tetra" || c == "default+tetra") cfg.mode = 1;
+    } else if (c == "high")
+      cfg.preset = "high";
+    else if (c == "tetra" || c == "default+tetra")
+      cfg.mode = 1;
     else if (c == "high+tetra") {
       cfg.preset = "high";
       cfg.mode = 1;
-    } else return Usage(("unknown configuration " + c).c_str());
+    } else
+      return Usage(("unknown configuration " + c).c_str());
     configs.push_back(cfg);
   }
   if (!ref_bin.empty() || !ref_cmd.empty()) {
@@ -485,7 +521,8 @@ int main(int argc, char** argv) {
   }
 
   std::vector<std::string> files;
-  if (!hullpack::ListFiles(folder, {"obj", "off", "wrl", "ply", "stl", "gltf", "glb", "fbx", "dae"}, &files))
+  if (!hullpack::ListFiles(folder, {"obj", "off", "wrl", "ply", "stl", "gltf", "glb", "fbx", "dae"},
+                           &files))
     return Usage(("cannot read folder " + folder).c_str());
   auto stem = [](const std::string& f) { return f.substr(0, f.rfind('.')); };
   std::vector<std::string> meshes;
@@ -518,8 +555,10 @@ int main(int argc, char** argv) {
     std::vector<uint32_t> idx;
     hullpack::FlattenScene(scene.value(), &pts, &idx);
     Soup soup;
-    for (size_t i = 0; i < pts.size(); i += 3) soup.points.emplace_back(pts[i], pts[i + 1], pts[i + 2]);
-    for (size_t i = 0; i + 2 < idx.size(); i += 3) soup.triangles.push_back({idx[i], idx[i + 1], idx[i + 2]});
+    for (size_t i = 0; i < pts.size(); i += 3)
+      soup.points.emplace_back(pts[i], pts[i + 1], pts[i + 2]);
+    for (size_t i = 0; i + 2 < idx.size(); i += 3)
+      soup.triangles.push_back({idx[i], idx[i + 1], idx[i + 2]});
     const std::string input = work + "/" + name + ".obj";
     if (!WriteObjParts(input, {soup})) {
       std::fprintf(stderr, "cannot write %s\n", input.c_str());
@@ -546,8 +585,9 @@ int main(int argc, char** argv) {
         RunStats st;
         std::string produced = out;
         if (!c.reference) {
-          st = RunProcess({self, "--run-ours", input, out, c.preset, std::to_string(c.mode), std::to_string(threads)}, "",
-                          dir, timeout);
+          st = RunProcess({self, "--run-ours", input, out, c.preset, std::to_string(c.mode),
+                           std::to_string(threads)},
+                          "", dir, timeout);
         } else if (!ref_bin.empty()) {
           produced = dir + "/decomp.obj";
           std::remove(produced.c_str());
@@ -591,33 +631,40 @@ int main(int argc, char** argv) {
         row.peak_mb = Median(mem);
         row.m = measure.Measure(hulls);
       }
-      std::fprintf(stderr, "  %-12s %-8s hulls %3zu  concavity %s (own %s)  IoU %s  cover %s  %.2f s  %.0f MB\n",
-                   c.name.c_str(), row.status.c_str(), row.m.hulls, Fmt(row.m.concavity).c_str(),
-                   row.own.count("concavity") ? Fmt(row.own["concavity"]).c_str() : "-", Fmt(row.m.iou).c_str(),
-                   Fmt(row.m.coverage).c_str(), row.seconds, row.peak_mb);
-      if (!row.m.first_problem.empty()) std::fprintf(stderr, "    %s\n", row.m.first_problem.c_str());
+      std::fprintf(
+          stderr,
+          "  %-12s %-8s hulls %3zu  concavity %s (own %s)  IoU %s  cover %s  %.2f s  %.0f MB\n",
+          c.name.c_str(), row.status.c_str(), row.m.hulls, Fmt(row.m.concavity).c_str(),
+          row.own.count("concavity") ? Fmt(row.own["concavity"]).c_str() : "-",
+          Fmt(row.m.iou).c_str(), Fmt(row.m.coverage).c_str(), row.seconds, row.peak_mb);
+      if (!row.m.first_problem.empty())
+        std::fprintf(stderr, "    %s\n", row.m.first_problem.c_str());
       rows[c.name].push_back(row);
     }
   }
 
   // Tables.
   for (const Config& c : configs) {
-    std::printf("\n== %s%s ==\n", c.reference ? "reference: " : "hullpack ",
-                c.reference ? (ref_bin.empty() ? ref_cmd.c_str() : ref_bin.c_str()) : c.name.c_str());
-    std::printf("%-18s %8s %6s %-8s %5s %7s %7s %7s %7s %6s %6s %6s %7s %7s %7s\n", "mesh", "tris", "closed", "status",
-                "hulls", "conc", "m->h", "h->m", "own", "IoU", "ownIoU", "cover", "time_s", "lib_s", "peakMB");
+    std::printf(
+        "\n== %s%s ==\n", c.reference ? "reference: " : "hullpack ",
+        c.reference ? (ref_bin.empty() ? ref_cmd.c_str() : ref_bin.c_str()) : c.name.c_str());
+    std::printf("%-18s %8s %6s %-8s %5s %7s %7s %7s %7s %6s %6s %6s %7s %7s %7s\n", "mesh", "tris",
+                "closed", "status", "hulls", "conc", "m->h", "h->m", "own", "IoU", "ownIoU",
+                "cover", "time_s", "lib_s", "peakMB");
     for (const Row& r : rows[c.name]) {
       auto own = [&](const char* k) { return r.own.count(k) ? r.own.at(k) : -1.0; };
-      std::printf("%-18s %8zu %6s %-8s %5zu %7s %7s %7s %7s %6s %6s %6s %7.2f %7s %7.0f\n", r.mesh.c_str(), r.triangles,
-                  r.closed ? "yes" : "no", r.status.c_str(), r.m.hulls, Fmt(r.m.concavity).c_str(),
-                  Fmt(r.m.mesh_to_hulls).c_str(), Fmt(r.m.hulls_to_mesh).c_str(), Fmt(own("concavity")).c_str(),
-                  Fmt(r.m.iou, "%.3f").c_str(), Fmt(own("iou"), "%.3f").c_str(), Fmt(r.m.coverage, "%.3f").c_str(),
-                  r.seconds, Fmt(r.library_seconds, "%.2f").c_str(), r.peak_mb);
+      std::printf("%-18s %8zu %6s %-8s %5zu %7s %7s %7s %7s %6s %6s %6s %7.2f %7s %7.0f\n",
+                  r.mesh.c_str(), r.triangles, r.closed ? "yes" : "no", r.status.c_str(), r.m.hulls,
+                  Fmt(r.m.concavity).c_str(), Fmt(r.m.mesh_to_hulls).c_str(),
+                  Fmt(r.m.hulls_to_mesh).c_str(), Fmt(own("concavity")).c_str(),
+                  Fmt(r.m.iou, "%.3f").c_str(), Fmt(own("iou"), "%.3f").c_str(),
+                  Fmt(r.m.coverage, "%.3f").c_str(), r.seconds,
+                  Fmt(r.library_seconds, "%.2f").c_str(), r.peak_mb);
     }
   }
   std::printf("\n== medians over the meshes that succeeded ==\n");
-  std::printf("%-12s %7s %6s %7s %7s %7s %7s %7s %7s %7s %8s %7s\n", "config", "ok", "hulls", "conc", "ownconc", "IoU",
-              "cover", "time_s", "max_s", "peakMB", "maxMB", "invalid");
+  std::printf("%-12s %7s %6s %7s %7s %7s %7s %7s %7s %7s %8s %7s\n", "config", "ok", "hulls",
+              "conc", "ownconc", "IoU", "cover", "time_s", "max_s", "peakMB", "maxMB", "invalid");
   for (const Config& c : configs) {
     std::vector<double> h, cc, oc, iou, cov, t, mem;
     int ok = 0, invalid = 0;
@@ -635,10 +682,12 @@ int main(int argc, char** argv) {
     }
     const double tmax = t.empty() ? -1 : *std::max_element(t.begin(), t.end());
     const double mmax = mem.empty() ? -1 : *std::max_element(mem.begin(), mem.end());
-    std::printf("%-12s %3d/%-3zu %6s %7s %7s %7s %7s %7s %7s %7s %8s %7d\n", c.name.c_str(), ok, rows[c.name].size(),
-                Fmt(Median(h), "%.1f").c_str(), Fmt(Median(cc)).c_str(), Fmt(Median(oc)).c_str(),
-                Fmt(Median(iou), "%.3f").c_str(), Fmt(Median(cov), "%.3f").c_str(), Fmt(Median(t), "%.2f").c_str(),
-                Fmt(tmax, "%.2f").c_str(), Fmt(Median(mem), "%.0f").c_str(), Fmt(mmax, "%.0f").c_str(), invalid);
+    std::printf("%-12s %3d/%-3zu %6s %7s %7s %7s %7s %7s %7s %7s %8s %7d\n", c.name.c_str(), ok,
+                rows[c.name].size(), Fmt(Median(h), "%.1f").c_str(), Fmt(Median(cc)).c_str(),
+                Fmt(Median(oc)).c_str(), Fmt(Median(iou), "%.3f").c_str(),
+                Fmt(Median(cov), "%.3f").c_str(), Fmt(Median(t), "%.2f").c_str(),
+                Fmt(tmax, "%.2f").c_str(), Fmt(Median(mem), "%.0f").c_str(),
+                Fmt(mmax, "%.0f").c_str(), invalid);
   }
 
   if (!csv.empty()) {
@@ -647,18 +696,23 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "cannot write %s\n", csv.c_str());
       return 1;
     }
-    std::fprintf(f,
-                 "mesh,config,triangles,closed,status,hulls,max_hull_vertices,concavity,mesh_to_hulls,hulls_to_mesh,iou,"
-                 "coverage,own_concavity,own_mesh_to_hulls,own_hulls_to_mesh,own_iou,own_coverage,seconds,"
-                 "library_seconds,peak_mb,invalid_hulls\n");
+    std::fprintf(
+        f,
+        "mesh,config,triangles,closed,status,hulls,max_hull_vertices,concavity,mesh_to_hulls,hulls_"
+        "to_mesh,iou,"
+        "coverage,own_concavity,own_mesh_to_hulls,own_hulls_to_mesh,own_iou,own_coverage,seconds,"
+        "library_seconds,peak_mb,invalid_hulls\n");
     for (const Config& c : configs)
       for (const Row& r : rows[c.name]) {
         auto own = [&](const char* k) { return r.own.count(k) ? r.own.at(k) : -1.0; };
-        std::fprintf(f, "%s,%s,%zu,%d,%s,%zu,%zu,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.4f,%.4f,%.1f,%zu\n",
-                     r.mesh.c_str(), c.name.c_str(), r.triangles, r.closed ? 1 : 0, r.status.c_str(), r.m.hulls,
-                     r.m.max_hull_vertices, r.m.concavity, r.m.mesh_to_hulls, r.m.hulls_to_mesh, r.m.iou, r.m.coverage,
-                     own("concavity"), own("mesh_to_hulls"), own("hulls_to_mesh"), own("iou"), own("coverage"), r.seconds,
-                     r.library_seconds, r.peak_mb, r.m.invalid_hulls);
+        std::fprintf(f,
+                     "%s,%s,%zu,%d,%s,%zu,%zu,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%."
+                     "4f,%.4f,%.1f,%zu\n",
+                     r.mesh.c_str(), c.name.c_str(), r.triangles, r.closed ? 1 : 0,
+                     r.status.c_str(), r.m.hulls, r.m.max_hull_vertices, r.m.concavity,
+                     r.m.mesh_to_hulls, r.m.hulls_to_mesh, r.m.iou, r.m.coverage, own("concavity"),
+                     own("mesh_to_hulls"), own("hulls_to_mesh"), own("iou"), own("coverage"),
+                     r.seconds, r.library_seconds, r.peak_mb, r.m.invalid_hulls);
       }
     std::fclose(f);
     std::printf("wrote %s\n", csv.c_str());

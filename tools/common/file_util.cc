@@ -22,7 +22,8 @@ Result<std::vector<uint8_t>> ReadFileBytes(const std::string& path) {
   std::vector<uint8_t> bytes;
   uint8_t chunk[1 << 16];
   size_t n;
-  while ((n = std::fread(chunk, 1, sizeof(chunk), f)) > 0) bytes.insert(bytes.end(), chunk, chunk + n);
+  while ((n = std::fread(chunk, 1, sizeof(chunk), f)) > 0)
+    bytes.insert(bytes.end(), chunk, chunk + n);
   const bool failed = std::ferror(f) != 0;
   std::fclose(f);
   if (failed) return Status(StatusCode::kIoError, path + ": read error");
@@ -31,7 +32,8 @@ Result<std::vector<uint8_t>> ReadFileBytes(const std::string& path) {
 
 Status WriteFileAtomically(const std::string& path, const void* data, size_t size) {
   std::random_device rd;
-  const std::string tmp = path + ".tmp-" + std::to_string(getpid()) + "-" + std::to_string(rd() % 1000000);
+  const std::string tmp =
+      path + ".tmp-" + std::to_string(getpid()) + "-" + std::to_string(rd() % 1000000);
   FILE* f = std::fopen(tmp.c_str(), "wb");
   if (!f) return Status(StatusCode::kIoError, path + ": cannot create: " + std::strerror(errno));
   bool ok = size == 0 || std::fwrite(data, 1, size, f) == size;

@@ -1,5 +1,6 @@
-// Whole-file reads and atomic writes: outputs go to a temporary file beside the target, then rename,
-// so an interrupted run never leaves a half-written file and never destroys the previous one.
+// Whole-file reads and atomic writes: outputs go to a temporary file beside the target, then
+// rename, so an interrupted run never leaves a half-written file and never destroys the previous
+// one.
 #ifndef HULLPACK_TOOLS_COMMON_FILE_UTIL_H_
 #define HULLPACK_TOOLS_COMMON_FILE_UTIL_H_
 

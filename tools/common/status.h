@@ -10,12 +10,12 @@ namespace hullpack {
 
 enum class StatusCode {
   kOk = 0,
-  kIoError,         // the file cannot be opened, read or written
-  kUnknownFormat,   // no reader for this file type
-  kParseError,      // the file is malformed or truncated
-  kInvalidMesh,     // NaN/Inf coordinates, out-of-range indices, ...
-  kInvalidArgument, // a caller or command-line mistake
-  kUnsupported,     // valid input this build cannot handle
+  kIoError,          // the file cannot be opened, read or written
+  kUnknownFormat,    // no reader for this file type
+  kParseError,       // the file is malformed or truncated
+  kInvalidMesh,      // NaN/Inf coordinates, out-of-range indices, ...
+  kInvalidArgument,  // a caller or command-line mistake
+  kUnsupported,      // valid input this build cannot handle
   kCancelled,
   kInternal,
 };
@@ -43,7 +43,7 @@ class Status {
 template <typename T>
 class Result {
  public:
-  Result(T value) : value_(std::move(value)) {}  // NOLINT: implicit by design
+  Result(T value) : value_(std::move(value)) {}          // NOLINT: implicit by design
   Result(Status status) : status_(std::move(status)) {}  // NOLINT
   bool ok() const { return status_.ok(); }
   const Status& status() const { return status_; }

@@ -7,7 +7,8 @@
 #include "gltf/packed_glb_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  hullpack::Result<hullpack::Scene> scene = hullpack::ReadPackedGltf(data, size, "fuzz.glb", "", nullptr);
+  hullpack::Result<hullpack::Scene> scene =
+      hullpack::ReadPackedGltf(data, size, "fuzz.glb", "", nullptr);
   if (!scene.ok()) return 0;
   for (const hullpack::Mesh& mesh : scene.value().meshes) {
     for (uint32_t index : mesh.indices) {

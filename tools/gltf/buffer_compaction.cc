@@ -35,15 +35,20 @@ Status CompactBufferViews(GltfDocument& doc) {
     const nlohmann::json& v = views[i];
     uint64_t buffer = 1;
     if (!v.is_object() || !gltf::GetUintMember(v, "buffer", 1, &buffer) || buffer != 0) {
-      return Status(StatusCode::kUnsupported, "bufferViews[" + std::to_string(i) + "] is not on the GLB binary chunk");
+      return Status(StatusCode::kUnsupported,
+                    "bufferViews[" + std::to_string(i) + "] is not on the GLB binary chunk");
     }
     uint64_t& offset = offsets[i];
     uint64_t& length = lengths[i];
-    if (!gltf::GetUintMember(v, "byteOffset", 0, &offset) || !gltf::GetUintMember(v, "byteLength", 0, &length)) {
-      return Status(StatusCode::kParseError, "bufferViews[" + std::to_string(i) + "] has a byteOffset or byteLength that is not a non-negative integer");
+    if (!gltf::GetUintMember(v, "byteOffset", 0, &offset) ||
+        !gltf::GetUintMember(v, "byteLength", 0, &length)) {
+      return Status(StatusCode::kParseError,
+                    "bufferViews[" + std::to_string(i) +
+                        "] has a byteOffset or byteLength that is not a non-negative integer");
     }
     if (offset > bin.size() || length > bin.size() - offset) {
-      return Status(StatusCode::kParseError, "bufferViews[" + std::to_string(i) + "] lies outside the binary chunk");
+      return Status(StatusCode::kParseError,
+                    "bufferViews[" + std::to_string(i) + "] lies outside the binary chunk");
     }
   }
   std::vector<int64_t> new_index(views.size(), -1);
@@ -62,7 +67,8 @@ Status CompactBufferViews(GltfDocument& doc) {
     while (alignment < 16 && offset % (alignment * 2) == 0) alignment *= 2;
     packed.resize((packed.size() + alignment - 1) / alignment * alignment, 0);
     v["byteOffset"] = packed.size();
-    packed.insert(packed.end(), bin.begin() + static_cast<ptrdiff_t>(offset), bin.begin() + static_cast<ptrdiff_t>(offset + length));
+    packed.insert(packed.end(), bin.begin() + static_cast<ptrdiff_t>(offset),
+                  bin.begin() + static_cast<ptrdiff_t>(offset + length));
     new_index[i] = static_cast<int64_t>(kept.size());
     kept.push_back(std::move(v));
   }
@@ -77,7 +83,8 @@ Status CompactBufferViews(GltfDocument& doc) {
   }
   doc.binary() = std::move(packed);
   // Readers check views against the declared length, so it must follow the repacked chunk.
-  if (json.contains("buffers") && json["buffers"].is_array() && !json["buffers"].empty() && json["buffers"][0].is_object()) {
+  if (json.contains("buffers") && json["buffers"].is_array() && !json["buffers"].empty() &&
+      json["buffers"][0].is_object()) {
     json["buffers"][0]["byteLength"] = doc.binary().size();
   }
   return Status::Ok();

@@ -12,17 +12,21 @@ EmbedReport EmbedExternalImages(Scene& scene, const std::string& base_dir) {
     if (image.uri.empty()) continue;
     std::string path, error;
     if (!RelativePathFromUri(image.uri, &path, &error)) {
-      report.kept_as_references.push_back("image '" + image.uri + "' kept as a reference: " + error);
+      report.kept_as_references.push_back("image '" + image.uri +
+                                          "' kept as a reference: " + error);
       continue;
     }
-    Result<std::vector<uint8_t>> bytes = ReadFileBytes(base_dir.empty() ? path : base_dir + "/" + path);
+    Result<std::vector<uint8_t>> bytes =
+        ReadFileBytes(base_dir.empty() ? path : base_dir + "/" + path);
     if (!bytes.ok()) {
-      report.kept_as_references.push_back("image '" + image.uri + "' kept as a reference: cannot read it");
+      report.kept_as_references.push_back("image '" + image.uri +
+                                          "' kept as a reference: cannot read it");
       continue;
     }
     const std::string mime = SniffImageMime(bytes.value());
     if (mime.empty()) {
-      report.kept_as_references.push_back("image '" + image.uri + "' kept as a reference: not PNG, JPEG or WebP");
+      report.kept_as_references.push_back("image '" + image.uri +
+                                          "' kept as a reference: not PNG, JPEG or WebP");
       continue;
     }
     image.bytes = std::move(bytes.value());

@@ -18,9 +18,9 @@ namespace {
 
 using nlohmann::json;
 
-#define HP_RETURN_IF_ERROR(expr)        \
-  do {                                  \
-    Status hp_status_ = (expr);         \
+#define HP_RETURN_IF_ERROR(expr)             \
+  do {                                       \
+    Status hp_status_ = (expr);              \
     if (!hp_status_.ok()) return hp_status_; \
   } while (0)
 
@@ -154,23 +154,29 @@ double ReadComponent(const uint8_t* p, int component_type, bool normalized) {
       const double v = LoadU16(p);
       return normalized ? v / 65535.0 : v;
     }
-    case gltf::kUnsignedInt: return static_cast<double>(LoadU32(p));
+    case gltf::kUnsignedInt:
+      return static_cast<double>(LoadU32(p));
     case gltf::kFloat: {
       const uint32_t bits = LoadU32(p);
       float f;
       std::memcpy(&f, &bits, sizeof f);
       return f;
     }
-    default: return 0;
+    default:
+      return 0;
   }
 }
 
 uint32_t ReadUnsigned(const uint8_t* p, int component_type) {
   switch (component_type) {
-    case gltf::kUnsignedByte: return p[0];
-    case gltf::kUnsignedShort: return LoadU16(p);
-    case gltf::kUnsignedInt: return LoadU32(p);
-    default: return 0;
+    case gltf::kUnsignedByte:
+      return p[0];
+    case gltf::kUnsignedShort:
+      return LoadU16(p);
+    case gltf::kUnsignedInt:
+      return LoadU32(p);
+    default:
+      return 0;
   }
 }
 
@@ -178,7 +184,7 @@ struct BufferData {
   bool resolved = false;
   std::vector<uint8_t> storage;  // data URI or external file contents
   const uint8_t* data = nullptr;
-  size_t size = 0;               // the declared byteLength (checked against the data)
+  size_t size = 0;  // the declared byteLength (checked against the data)
 };
 
 class Decoder {
@@ -209,14 +215,16 @@ class Decoder {
   }
 
   // JSON access. Each returns an error naming `where` when the value has the wrong type.
-  Status GetArray(const json& obj, const char* key, const std::string& where, const json** out) const;
+  Status GetArray(const json& obj, const char* key, const std::string& where,
+                  const json** out) const;
   Status GetIndex(const json& obj, const char* key, const std::string& where, int64_t* out) const;
   Status GetUint(const json& obj, const char* key, const std::string& where, uint64_t def,
                  uint64_t* out) const;
   Status GetNumbers(const json& obj, const char* key, const std::string& where, size_t n,
                     double* out) const;
   Status GetNumber(const json& obj, const char* key, const std::string& where, double* out) const;
-  Status GetString(const json& obj, const char* key, const std::string& where, std::string* out) const;
+  Status GetString(const json& obj, const char* key, const std::string& where,
+                   std::string* out) const;
   Status GetBool(const json& obj, const char* key, const std::string& where, bool* out) const;
   // The top-level array `key` (empty when missing); elements must be objects.
   Status TopLevel(const char* key, const json** out);
@@ -230,10 +238,11 @@ class Decoder {
   Status GetBufferView(int64_t index, const std::string& where, const uint8_t** data, size_t* size,
                        size_t* stride);
   Status GetAccessor(int64_t index, const std::string& where, AccessorView* out);
-  // An accessor as floats (normalized integers mapped per the spec); its component count must be one
-  // of `allowed_components`.
-  Status ReadFloats(int64_t index, const std::string& where, std::initializer_list<int> allowed_components,
-                    std::vector<float>* out, int* components);
+  // An accessor as floats (normalized integers mapped per the spec); its component count must be
+  // one of `allowed_components`.
+  Status ReadFloats(int64_t index, const std::string& where,
+                    std::initializer_list<int> allowed_components, std::vector<float>* out,
+                    int* components);
   Status ReadIndices(int64_t index, const std::string& where, std::vector<uint32_t>* out);
 
   Status DecodeImages(Scene* scene);
@@ -277,19 +286,22 @@ Status Decoder::GetUint(const json& obj, const char* key, const std::string& whe
   return Status::Ok();
 }
 
-Status Decoder::GetIndex(const json& obj, const char* key, const std::string& where, int64_t* out) const {
+Status Decoder::GetIndex(const json& obj, const char* key, const std::string& where,
+                         int64_t* out) const {
   uint64_t v = 0;
   if (obj.find(key) == obj.end()) {
     *out = -1;
     return Status::Ok();
   }
   HP_RETURN_IF_ERROR(GetUint(obj, key, where, 0, &v));
-  if (v > kMaxIndex) return Error(where, std::string("'") + key + "' index " + std::to_string(v) + " is too large");
+  if (v > kMaxIndex)
+    return Error(where, std::string("'") + key + "' index " + std::to_string(v) + " is too large");
   *out = static_cast<int64_t>(v);
   return Status::Ok();
 }
 
-Status Decoder::GetNumber(const json& obj, const char* key, const std::string& where, double* out) const {
+Status Decoder::GetNumber(const json& obj, const char* key, const std::string& where,
+                          double* out) const {
   auto it = obj.find(key);
   if (it == obj.end()) return Status::Ok();
   if (!it->is_number()) return Error(where, std::string("'") + key + "' is not a number");
@@ -304,25 +316,31 @@ Status Decoder::GetNumbers(const json& obj, const char* key, const std::string& 
   auto it = obj.find(key);
   if (it == obj.end()) return Status::Ok();
   if (!it->is_array() || it->size() != n) {
-    return Error(where, std::string("'") + key + "' is not an array of " + std::to_string(n) + " numbers");
+    return Error(where,
+                 std::string("'") + key + "' is not an array of " + std::to_string(n) + " numbers");
   }
   for (size_t i = 0; i < n; ++i) {
     const json& v = (*it)[i];
     if (!v.is_number() || !std::isfinite(v.get<double>())) {
-      return Error(where, std::string("'") + key + "' element " + std::to_string(i) + " is not a finite number");
+      return Error(where, std::string("'") + key + "' element " + std::to_string(i) +
+                              " is not a finite number");
     }
     out[i] = v.get<double>();
   }
   return Status::Ok();
 }
 
-Status Decoder::GetString(const json& obj, const char* key, const std::string& where, std::string* out) const {
-  if (!gltf::GetStringMember(obj, key, out)) return Error(where, std::string("'") + key + "' is not a string");
+Status Decoder::GetString(const json& obj, const char* key, const std::string& where,
+                          std::string* out) const {
+  if (!gltf::GetStringMember(obj, key, out))
+    return Error(where, std::string("'") + key + "' is not a string");
   return Status::Ok();
 }
 
-Status Decoder::GetBool(const json& obj, const char* key, const std::string& where, bool* out) const {
-  if (!gltf::GetBoolMember(obj, key, out)) return Error(where, std::string("'") + key + "' is not a boolean");
+Status Decoder::GetBool(const json& obj, const char* key, const std::string& where,
+                        bool* out) const {
+  if (!gltf::GetBoolMember(obj, key, out))
+    return Error(where, std::string("'") + key + "' is not a boolean");
   return Status::Ok();
 }
 
@@ -356,7 +374,8 @@ Status Decoder::CheckExtensions() {
           options_.handled_extensions.end()) {
         continue;
       }
-      return Unsupported("extensionsRequired", "requires " + ext + ", which this reader cannot decode");
+      return Unsupported("extensionsRequired",
+                         "requires " + ext + ", which this reader cannot decode");
     }
   }
   const json* used = nullptr;
@@ -419,13 +438,17 @@ Status Decoder::GetBuffer(int64_t index, const std::string& where, const BufferD
     data->data = data->storage.data();
   } else {
     if (options_.base_dir.empty()) {
-      return Unsupported(bw, "external buffer '" + uri + "' cannot be resolved when reading from memory");
+      return Unsupported(
+          bw, "external buffer '" + uri + "' cannot be resolved when reading from memory");
     }
     std::string rel, error;
-    if (!RelativePathFromUri(uri, &rel, &error)) return Unsupported(bw, "buffer uri '" + uri + "': " + error);
+    if (!RelativePathFromUri(uri, &rel, &error))
+      return Unsupported(bw, "buffer uri '" + uri + "': " + error);
     const std::string path = options_.base_dir + "/" + rel;
     std::ifstream in(path, std::ios::binary);
-    if (!in) return Status(StatusCode::kIoError, name_ + ": " + bw + ": cannot open external buffer " + path);
+    if (!in)
+      return Status(StatusCode::kIoError,
+                    name_ + ": " + bw + ": cannot open external buffer " + path);
     in.seekg(0, std::ios::end);
     const std::streamoff file_size = in.tellg();
     if (file_size < 0 || static_cast<uint64_t>(file_size) < length) {
@@ -434,11 +457,13 @@ Status Decoder::GetBuffer(int64_t index, const std::string& where, const BufferD
     }
     in.seekg(0, std::ios::beg);
     data->storage.resize(static_cast<size_t>(length));
-    if (length > 0 && !in.read(reinterpret_cast<char*>(data->storage.data()), static_cast<std::streamsize>(length))) {
+    if (length > 0 && !in.read(reinterpret_cast<char*>(data->storage.data()),
+                               static_cast<std::streamsize>(length))) {
       return Status(StatusCode::kIoError, name_ + ": " + bw + ": cannot read " + path);
     }
     data->data = data->storage.data();
-    budget_ += length * std::max<size_t>(options_.max_expansion, 1);  // external input earns budget too
+    budget_ +=
+        length * std::max<size_t>(options_.max_expansion, 1);  // external input earns budget too
   }
   data->size = static_cast<size_t>(length);
   data->resolved = true;
@@ -447,8 +472,8 @@ Status Decoder::GetBuffer(int64_t index, const std::string& where, const BufferD
   return Status::Ok();
 }
 
-Status Decoder::GetBufferView(int64_t index, const std::string& where, const uint8_t** data, size_t* size,
-                              size_t* stride) {
+Status Decoder::GetBufferView(int64_t index, const std::string& where, const uint8_t** data,
+                              size_t* size, size_t* stride) {
   const json* views = nullptr;
   HP_RETURN_IF_ERROR(TopLevel("bufferViews", &views));
   if (index < 0 || views == nullptr || static_cast<size_t>(index) >= views->size()) {
@@ -464,16 +489,18 @@ Status Decoder::GetBufferView(int64_t index, const std::string& where, const uin
   HP_RETURN_IF_ERROR(GetUint(v, "byteOffset", vw, 0, &offset));
   HP_RETURN_IF_ERROR(GetUint(v, "byteLength", vw, 0, &length));
   HP_RETURN_IF_ERROR(GetUint(v, "byteStride", vw, 0, &byte_stride));
-  if (v.find("byteStride") != v.end() && (byte_stride < 4 || byte_stride > 252 || byte_stride % 4 != 0)) {
-    return Error(vw, "byteStride " + std::to_string(byte_stride) + " is not a multiple of 4 in 4..252");
+  if (v.find("byteStride") != v.end() &&
+      (byte_stride < 4 || byte_stride > 252 || byte_stride % 4 != 0)) {
+    return Error(vw,
+                 "byteStride " + std::to_string(byte_stride) + " is not a multiple of 4 in 4..252");
   }
   const BufferData* buf = nullptr;
   HP_RETURN_IF_ERROR(GetBuffer(buffer, vw, &buf));
   uint64_t end = 0;
   if (__builtin_add_overflow(offset, length, &end) || end > buf->size) {
     return Error(vw, "bytes " + std::to_string(offset) + "+" + std::to_string(length) + " exceed " +
-                         Item("buffers", static_cast<uint64_t>(buffer)) + " (" + std::to_string(buf->size) +
-                         " bytes)");
+                         Item("buffers", static_cast<uint64_t>(buffer)) + " (" +
+                         std::to_string(buf->size) + " bytes)");
   }
   *data = buf->data + offset;
   *size = static_cast<size_t>(length);
@@ -496,7 +523,8 @@ Status Decoder::GetAccessor(int64_t index, const std::string& where, AccessorVie
   HP_RETURN_IF_ERROR(GetUint(a, "componentType", aw, 0, &component_type));
   HP_RETURN_IF_ERROR(GetUint(a, "count", aw, 0, &count));
   HP_RETURN_IF_ERROR(GetUint(a, "byteOffset", aw, 0, &offset));
-  const size_t csize = component_type > 0xFFFF ? 0 : gltf::ComponentSize(static_cast<int>(component_type));
+  const size_t csize =
+      component_type > 0xFFFF ? 0 : gltf::ComponentSize(static_cast<int>(component_type));
   if (csize == 0) return Error(aw, "unknown componentType " + std::to_string(component_type));
   std::string type;
   HP_RETURN_IF_ERROR(GetString(a, "type", aw, &type));
@@ -520,7 +548,8 @@ Status Decoder::GetAccessor(int64_t index, const std::string& where, AccessorVie
   int64_t view = -1;
   HP_RETURN_IF_ERROR(GetIndex(a, "bufferView", aw, &view));
   if (view < 0) {
-    // Zero-filled: no bytes back it, so its size is charged against the budget before any allocation.
+    // Zero-filled: no bytes back it, so its size is charged against the budget before any
+    // allocation.
     uint64_t bytes = 0;
     if (!MulAdd(count, element, 0, &bytes)) return Error(aw, "count overflows");
     HP_RETURN_IF_ERROR(Charge(bytes, aw));
@@ -539,21 +568,24 @@ Status Decoder::GetAccessor(int64_t index, const std::string& where, AccessorVie
   uint64_t span = 0;
   if (!MulAdd(count - 1, stride, element, &span) || __builtin_add_overflow(span, offset, &span) ||
       span > view_size) {
-    return Error(aw, "byteOffset " + std::to_string(offset) + " + count " + std::to_string(count) + " x stride " +
-                         std::to_string(stride) + " exceeds " + Item("bufferViews", static_cast<uint64_t>(view)) +
-                         " (" + std::to_string(view_size) + " bytes)");
+    return Error(aw, "byteOffset " + std::to_string(offset) + " + count " + std::to_string(count) +
+                         " x stride " + std::to_string(stride) + " exceeds " +
+                         Item("bufferViews", static_cast<uint64_t>(view)) + " (" +
+                         std::to_string(view_size) + " bytes)");
   }
   out->data = data + offset;
   out->stride = stride;
   return Status::Ok();
 }
 
-Status Decoder::ReadFloats(int64_t index, const std::string& where, std::initializer_list<int> allowed_components,
-                           std::vector<float>* out, int* components) {
+Status Decoder::ReadFloats(int64_t index, const std::string& where,
+                           std::initializer_list<int> allowed_components, std::vector<float>* out,
+                           int* components) {
   AccessorView a;
   HP_RETURN_IF_ERROR(GetAccessor(index, where, &a));
   const std::string aw = where + " (" + Item("accessors", static_cast<uint64_t>(index)) + ")";
-  if (std::find(allowed_components.begin(), allowed_components.end(), a.components) == allowed_components.end()) {
+  if (std::find(allowed_components.begin(), allowed_components.end(), a.components) ==
+      allowed_components.end()) {
     return Error(aw, "has type " + a.type + ", which this attribute does not allow");
   }
   const size_t n = a.count * static_cast<size_t>(a.components);
@@ -564,8 +596,8 @@ Status Decoder::ReadFloats(int64_t index, const std::string& where, std::initial
     for (size_t i = 0; i < a.count; ++i) {
       const uint8_t* e = a.data + i * a.stride;
       for (int c = 0; c < a.components; ++c) {
-        (*out)[i * static_cast<size_t>(a.components) + static_cast<size_t>(c)] =
-            static_cast<float>(ReadComponent(e + static_cast<size_t>(c) * csize, a.component_type, a.normalized));
+        (*out)[i * static_cast<size_t>(a.components) + static_cast<size_t>(c)] = static_cast<float>(
+            ReadComponent(e + static_cast<size_t>(c) * csize, a.component_type, a.normalized));
       }
     }
   }
@@ -585,7 +617,8 @@ Status Decoder::ReadIndices(int64_t index, const std::string& where, std::vector
   HP_RETURN_IF_ERROR(Charge(static_cast<uint64_t>(a.count) * sizeof(uint32_t), aw));
   out->assign(a.count, 0);
   if (a.data != nullptr) {
-    for (size_t i = 0; i < a.count; ++i) (*out)[i] = ReadUnsigned(a.data + i * a.stride, a.component_type);
+    for (size_t i = 0; i < a.count; ++i)
+      (*out)[i] = ReadUnsigned(a.data + i * a.stride, a.component_type);
   }
   return Status::Ok();
 }
@@ -643,7 +676,8 @@ Status Decoder::DecodeTextureRef(const json& material, const char* key, const st
   HP_RETURN_IF_ERROR(GetIndex(*it, "index", tw, &texture));
   HP_RETURN_IF_ERROR(GetUint(*it, "texCoord", tw, 0, &tex_coord));
   if (texture < 0) return Error(tw, "has no texture index");
-  if (tex_coord > 255) return Error(tw, "texCoord " + std::to_string(tex_coord) + " is out of range");
+  if (tex_coord > 255)
+    return Error(tw, "texCoord " + std::to_string(tex_coord) + " is out of range");
   const json* textures = nullptr;
   HP_RETURN_IF_ERROR(TopLevel("textures", &textures));
   if (textures == nullptr || static_cast<size_t>(texture) >= textures->size()) {
@@ -696,15 +730,18 @@ Status Decoder::DecodeMaterials(Scene* scene) {
       HP_RETURN_IF_ERROR(GetNumbers(*pbr, "baseColorFactor", pw, 4, base));
       HP_RETURN_IF_ERROR(GetNumber(*pbr, "metallicFactor", pw, &metallic));
       HP_RETURN_IF_ERROR(GetNumber(*pbr, "roughnessFactor", pw, &roughness));
-      for (int c = 0; c < 4; ++c) m.base_color[static_cast<size_t>(c)] = static_cast<float>(base[c]);
+      for (int c = 0; c < 4; ++c)
+        m.base_color[static_cast<size_t>(c)] = static_cast<float>(base[c]);
       m.metallic = static_cast<float>(metallic);
       m.roughness = static_cast<float>(roughness);
       HP_RETURN_IF_ERROR(DecodeTextureRef(j, "baseColorTexture", mw, true, &m.base_color_texture));
-      HP_RETURN_IF_ERROR(DecodeTextureRef(j, "metallicRoughnessTexture", mw, true, &m.metallic_roughness_texture));
+      HP_RETURN_IF_ERROR(
+          DecodeTextureRef(j, "metallicRoughnessTexture", mw, true, &m.metallic_roughness_texture));
     }
     double emissive[3] = {0, 0, 0};
     HP_RETURN_IF_ERROR(GetNumbers(j, "emissiveFactor", mw, 3, emissive));
-    for (int c = 0; c < 3; ++c) m.emissive[static_cast<size_t>(c)] = static_cast<float>(emissive[c]);
+    for (int c = 0; c < 3; ++c)
+      m.emissive[static_cast<size_t>(c)] = static_cast<float>(emissive[c]);
     HP_RETURN_IF_ERROR(GetBool(j, "doubleSided", mw, &m.double_sided));
     std::string alpha_mode;
     HP_RETURN_IF_ERROR(GetString(j, "alphaMode", mw, &alpha_mode));
@@ -717,7 +754,8 @@ Status Decoder::DecodeMaterials(Scene* scene) {
   if (non_opaque_materials > 0) {
     Drop("dropped alphaMode MASK/BLEND of " + std::to_string(non_opaque_materials) + " materials");
   }
-  if (TopCount("samplers") > 0) Drop("dropped " + std::to_string(TopCount("samplers")) + " texture samplers");
+  if (TopCount("samplers") > 0)
+    Drop("dropped " + std::to_string(TopCount("samplers")) + " texture samplers");
   return Status::Ok();
 }
 
@@ -741,7 +779,8 @@ Status Decoder::DecodeMesh(int64_t mesh_index, Scene* scene, Mesh* out) {
     auto hp = extras->find("hullpack");
     if (hp != extras->end() && hp->is_object()) {
       HP_RETURN_IF_ERROR(GetBool(*hp, "collides", mw + ".extras.hullpack", &out->collides));
-      HP_RETURN_IF_ERROR(GetUint(*hp, "uv_sets", mw + ".extras.hullpack", kNoUvSetLimit, &uv_set_limit));
+      HP_RETURN_IF_ERROR(
+          GetUint(*hp, "uv_sets", mw + ".extras.hullpack", kNoUvSetLimit, &uv_set_limit));
     }
   }
   const json* primitives = nullptr;
@@ -767,7 +806,8 @@ Status Decoder::DecodeMesh(int64_t mesh_index, Scene* scene, Mesh* out) {
       continue;
     }
     auto attrs_it = prim.find("attributes");
-    if (attrs_it == prim.end() || !attrs_it->is_object()) return Error(pw, "has no attributes object");
+    if (attrs_it == prim.end() || !attrs_it->is_object())
+      return Error(pw, "has no attributes object");
     const json& attrs = *attrs_it;
     // The attributes this reader keeps, and their accessors.
     std::map<std::string, int64_t> used;
@@ -803,12 +843,14 @@ Status Decoder::DecodeMesh(int64_t mesh_index, Scene* scene, Mesh* out) {
       HP_RETURN_IF_ERROR(ReadFloats(used["POSITION"], pw + ".POSITION", {3}, &positions, &comps));
       count = positions.size() / 3;
       base = out->vertex_count();
-      if (base + count > std::numeric_limits<uint32_t>::max()) return Unsupported(pw, "more than 2^32-1 vertices");
-      auto read_attr = [&](const std::string& sem, std::initializer_list<int> allowed, std::vector<float>* values,
-                           int* c) -> Status {
+      if (base + count > std::numeric_limits<uint32_t>::max())
+        return Unsupported(pw, "more than 2^32-1 vertices");
+      auto read_attr = [&](const std::string& sem, std::initializer_list<int> allowed,
+                           std::vector<float>* values, int* c) -> Status {
         HP_RETURN_IF_ERROR(ReadFloats(used[sem], pw + "." + sem, allowed, values, c));
         if (values->size() / static_cast<size_t>(*c) != count) {
-          return Error(pw, sem + " has " + std::to_string(values->size() / static_cast<size_t>(*c)) +
+          return Error(pw, sem + " has " +
+                               std::to_string(values->size() / static_cast<size_t>(*c)) +
                                " elements but POSITION has " + std::to_string(count));
         }
         return Status::Ok();
@@ -837,7 +879,8 @@ Status Decoder::DecodeMesh(int64_t mesh_index, Scene* scene, Mesh* out) {
         uv_count = std::max(uv_count, u + 1);
       }
       for (const auto& kv : used) {
-        if (kv.first.compare(0, 9, "TEXCOORD_") == 0 && std::stoul(kv.first.substr(9)) >= uv_count) {
+        if (kv.first.compare(0, 9, "TEXCOORD_") == 0 &&
+            std::stoul(kv.first.substr(9)) >= uv_count) {
           dropped_attributes_.insert(kv.first + " (TEXCOORD sets must be contiguous)");
         }
       }
@@ -846,7 +889,8 @@ Status Decoder::DecodeMesh(int64_t mesh_index, Scene* scene, Mesh* out) {
         PadTo(out->colors, base, 4, 1.0f);
         for (size_t v = 0; v < count; ++v) {
           for (int c = 0; c < 4; ++c) {
-            out->colors.push_back(c < comps ? values[v * static_cast<size_t>(comps) + static_cast<size_t>(c)] : 1.0f);
+            out->colors.push_back(
+                c < comps ? values[v * static_cast<size_t>(comps) + static_cast<size_t>(c)] : 1.0f);
           }
         }
         has_colors = true;
@@ -856,7 +900,8 @@ Status Decoder::DecodeMesh(int64_t mesh_index, Scene* scene, Mesh* out) {
         const std::string jw = pw + ".JOINTS_0";
         HP_RETURN_IF_ERROR(GetAccessor(used["JOINTS_0"], jw, &ja));
         if (ja.components != 4 || ja.normalized ||
-            (ja.component_type != gltf::kUnsignedByte && ja.component_type != gltf::kUnsignedShort)) {
+            (ja.component_type != gltf::kUnsignedByte &&
+             ja.component_type != gltf::kUnsignedShort)) {
           return Error(jw, "must be an unnormalized VEC4 of unsigned bytes or shorts");
         }
         if (ja.count != count) return Error(jw, "count differs from POSITION");
@@ -865,9 +910,10 @@ Status Decoder::DecodeMesh(int64_t mesh_index, Scene* scene, Mesh* out) {
         const size_t csize = gltf::ComponentSize(ja.component_type);
         for (size_t v = 0; v < count; ++v) {
           for (size_t c = 0; c < 4; ++c) {
-            out->joints.push_back(ja.data == nullptr ? 0
-                                                     : static_cast<uint16_t>(ReadUnsigned(
-                                                           ja.data + v * ja.stride + c * csize, ja.component_type)));
+            out->joints.push_back(
+                ja.data == nullptr ? 0
+                                   : static_cast<uint16_t>(ReadUnsigned(
+                                         ja.data + v * ja.stride + c * csize, ja.component_type)));
           }
         }
         HP_RETURN_IF_ERROR(read_attr("WEIGHTS_0", {4}, &values, &comps));
@@ -900,13 +946,15 @@ Status Decoder::DecodeMesh(int64_t mesh_index, Scene* scene, Mesh* out) {
     size_t triangles = 0;
     if (mode == gltf::kModeTriangles) {
       if (indices.size() % 3 != 0) {
-        return Error(pw, std::to_string(indices.size()) + " triangle indices is not a multiple of 3");
+        return Error(pw,
+                     std::to_string(indices.size()) + " triangle indices is not a multiple of 3");
       }
       triangles = indices.size() / 3;
     } else {
       triangles = indices.size() >= 3 ? indices.size() - 2 : 0;
     }
-    HP_RETURN_IF_ERROR(Charge(static_cast<uint64_t>(triangles) * (3 * sizeof(uint32_t) + sizeof(int)), pw));
+    HP_RETURN_IF_ERROR(
+        Charge(static_cast<uint64_t>(triangles) * (3 * sizeof(uint32_t) + sizeof(int)), pw));
     out->indices.reserve(out->indices.size() + 3 * triangles);
     const uint32_t b = static_cast<uint32_t>(base);
     for (size_t t = 0; t < triangles; ++t) {
@@ -947,7 +995,8 @@ Status Decoder::DecodeMesh(int64_t mesh_index, Scene* scene, Mesh* out) {
   for (size_t u = 0; u < uv_count; ++u) PadTo(out->uv_sets[u], vc, 2, 0.0f);
   if (out->uv_sets.size() > uv_set_limit) out->uv_sets.resize(static_cast<size_t>(uv_set_limit));
 
-  if (out->indices.empty()) Drop(mw + (out->name.empty() ? "" : " '" + out->name + "'") + " has no triangles");
+  if (out->indices.empty())
+    Drop(mw + (out->name.empty() ? "" : " '" + out->name + "'") + " has no triangles");
   const bool any_material =
       std::any_of(triangle_material.begin(), triangle_material.end(), [](int m) { return m >= 0; });
   if (any_material) {
@@ -985,7 +1034,8 @@ Status Decoder::DecodeSkins(Scene* scene) {
     std::set<int64_t> seen;
     for (size_t k = 0; k < joints->size(); ++k) {
       const json& e = (*joints)[k];
-      if (!e.is_number_integer() || e.get<int64_t>() < 0 || static_cast<uint64_t>(e.get<int64_t>()) >= node_count) {
+      if (!e.is_number_integer() || e.get<int64_t>() < 0 ||
+          static_cast<uint64_t>(e.get<int64_t>()) >= node_count) {
         return Error(sw, "joint " + std::to_string(k) + " is not a node index");
       }
       if (!seen.insert(e.get<int64_t>()).second) return Error(sw, "lists a joint node twice");
@@ -1001,9 +1051,11 @@ Status Decoder::DecodeSkins(Scene* scene) {
     HP_RETURN_IF_ERROR(GetIndex(j, "inverseBindMatrices", sw, &ibm));
     if (ibm >= 0) {
       int comps = 0;
-      HP_RETURN_IF_ERROR(ReadFloats(ibm, sw + ".inverseBindMatrices", {16}, &skin.inverse_bind_matrices, &comps));
+      HP_RETURN_IF_ERROR(
+          ReadFloats(ibm, sw + ".inverseBindMatrices", {16}, &skin.inverse_bind_matrices, &comps));
       if (skin.inverse_bind_matrices.size() != 16 * skin.joints.size()) {
-        return Error(sw, "inverseBindMatrices has " + std::to_string(skin.inverse_bind_matrices.size() / 16) +
+        return Error(sw, "inverseBindMatrices has " +
+                             std::to_string(skin.inverse_bind_matrices.size() / 16) +
                              " matrices for " + std::to_string(skin.joints.size()) + " joints");
       }
     }
@@ -1046,7 +1098,8 @@ Status Decoder::DecodeNodes(Scene* scene) {
     if (children != nullptr) {
       for (size_t k = 0; k < children->size(); ++k) {
         const json& c = (*children)[k];
-        if (!c.is_number_integer() || c.get<int64_t>() < 0 || static_cast<uint64_t>(c.get<int64_t>()) >= n) {
+        if (!c.is_number_integer() || c.get<int64_t>() < 0 ||
+            static_cast<uint64_t>(c.get<int64_t>()) >= n) {
           return Error(nw, "child " + std::to_string(k) + " is not a node index");
         }
         const size_t child = static_cast<size_t>(c.get<int64_t>());
@@ -1074,11 +1127,13 @@ Status Decoder::DecodeNodes(Scene* scene) {
     HP_RETURN_IF_ERROR(GetIndex(j, "mesh", nw, &mesh));
     HP_RETURN_IF_ERROR(GetIndex(j, "skin", nw, &skin));
     if (mesh >= 0) {
-      if (static_cast<size_t>(mesh) >= scene->meshes.size()) return Error(nw, "mesh " + std::to_string(mesh) + " does not exist");
+      if (static_cast<size_t>(mesh) >= scene->meshes.size())
+        return Error(nw, "mesh " + std::to_string(mesh) + " does not exist");
       node.meshes.push_back(static_cast<int>(mesh));
     }
     if (skin >= 0) {
-      if (static_cast<size_t>(skin) >= scene->skins.size()) return Error(nw, "skin " + std::to_string(skin) + " does not exist");
+      if (static_cast<size_t>(skin) >= scene->skins.size())
+        return Error(nw, "skin " + std::to_string(skin) + " does not exist");
       node.skin = static_cast<int>(skin);
     }
     if (j.contains("camera")) ++cameras;
@@ -1096,7 +1151,8 @@ Status Decoder::DecodeNodes(Scene* scene) {
   }
   const int on_cycle = gltf_internal::FirstNodeOnCycle(scene->nodes);
   if (on_cycle >= 0) {
-    return Error(Item("nodes", static_cast<uint64_t>(on_cycle)), "is part of a cycle in the node hierarchy");
+    return Error(Item("nodes", static_cast<uint64_t>(on_cycle)),
+                 "is part of a cycle in the node hierarchy");
   }
   if (cameras > 0) Drop("dropped " + std::to_string(cameras) + " node cameras");
   if (lights > 0) Drop("dropped " + std::to_string(lights) + " KHR_lights_punctual node lights");
@@ -1111,8 +1167,9 @@ Status Decoder::DecodeNodes(Scene* scene) {
   std::vector<bool> remove(n, false);
   for (size_t i = 0; i < n; ++i) {
     const Node& node = scene->nodes[i];
-    const bool fold = mesh_of_parent[i] && node.parent >= 0 && node.children.empty() && node.meshes.size() == 1 &&
-                      !referenced[i] && node.local_transform == kIdentity &&
+    const bool fold = mesh_of_parent[i] && node.parent >= 0 && node.children.empty() &&
+                      node.meshes.size() == 1 && !referenced[i] &&
+                      node.local_transform == kIdentity &&
                       node.skin == scene->nodes[static_cast<size_t>(node.parent)].skin;
     remove[i] = fold;
   }
@@ -1151,7 +1208,8 @@ Result<Scene> Decoder::Run() {
   std::string version, min_version;
   HP_RETURN_IF_ERROR(GetString(*asset, "version", "asset", &version));
   HP_RETURN_IF_ERROR(GetString(*asset, "minVersion", "asset", &min_version));
-  if (version.compare(0, 2, "2.") != 0) return Unsupported("asset", "glTF version '" + version + "' (need 2.x)");
+  if (version.compare(0, 2, "2.") != 0)
+    return Unsupported("asset", "glTF version '" + version + "' (need 2.x)");
   if (!min_version.empty() && min_version != "2.0") {
     return Unsupported("asset", "minVersion '" + min_version + "' is newer than 2.0");
   }
@@ -1177,18 +1235,21 @@ Result<Scene> Decoder::Run() {
     for (int m : node.meshes) {
       for (uint16_t jn : scene.meshes[static_cast<size_t>(m)].joints) {
         if (jn >= joint_count) {
-          return Error(Item("nodes", i), "mesh " + std::to_string(m) + " uses joint " + std::to_string(jn) +
-                                             " but skin " + std::to_string(node.skin) + " has " +
+          return Error(Item("nodes", i), "mesh " + std::to_string(m) + " uses joint " +
+                                             std::to_string(jn) + " but skin " +
+                                             std::to_string(node.skin) + " has " +
                                              std::to_string(joint_count));
         }
       }
     }
   }
 
-  if (TopCount("animations") > 0) Drop("dropped " + std::to_string(TopCount("animations")) + " animations");
+  if (TopCount("animations") > 0)
+    Drop("dropped " + std::to_string(TopCount("animations")) + " animations");
   if (TopCount("cameras") > 0) Drop("dropped " + std::to_string(TopCount("cameras")) + " cameras");
   if (TopCount("scenes") > 1) {
-    Drop("dropped " + std::to_string(TopCount("scenes") - 1) + " extra scenes (all nodes are kept)");
+    Drop("dropped " + std::to_string(TopCount("scenes") - 1) +
+         " extra scenes (all nodes are kept)");
   }
   if (morph_target_primitives_ > 0) {
     Drop("dropped morph targets of " + std::to_string(morph_target_primitives_) + " primitives");
@@ -1268,7 +1329,8 @@ Result<GltfDocument> DecodeGlbDocument(const uint8_t* data, size_t size, const s
   return ParseGltfBytes(data, size, name);
 }
 
-Result<Scene> DecodeGltfDocument(const GltfDocument& doc, const std::string& name, const GltfReadOptions& options) {
+Result<Scene> DecodeGltfDocument(const GltfDocument& doc, const std::string& name,
+                                 const GltfReadOptions& options) {
   try {
     Decoder decoder(doc, name, options);
     return decoder.Run();

@@ -39,7 +39,6 @@ bool AllFiniteArray(const Array& v) {
   return true;
 }
 
-
 Status CheckPerVertex(size_t mesh_index, const Mesh& mesh, size_t got, size_t width,
                       const char* what) {
   if (got != 0 && got != width * mesh.vertex_count()) {
@@ -55,8 +54,9 @@ Status CheckTextureRef(const Scene& scene, size_t material_index, const TextureR
                        const char* slot) {
   if (!ref.used()) return Status::Ok();
   if (static_cast<size_t>(ref.image) >= scene.images.size()) {
-    return ArgError("material " + std::to_string(material_index) + " " + slot + " references image " +
-                    std::to_string(ref.image) + " of " + std::to_string(scene.images.size()));
+    return ArgError("material " + std::to_string(material_index) + " " + slot +
+                    " references image " + std::to_string(ref.image) + " of " +
+                    std::to_string(scene.images.size()));
   }
   if (ref.uv_set < 0 || ref.uv_set > kMaxUvSet) {
     return ArgError("material " + std::to_string(material_index) + " " + slot + " has uv set " +
@@ -74,7 +74,8 @@ std::vector<uint8_t> Bytes(const void* data, size_t size) {
 int AddFloatAttribute(GltfDocument* doc, const std::vector<float>& values, int width,
                       const char* type, bool with_bounds) {
   AccessorDesc desc;
-  desc.buffer_view = doc->AddBufferView(values.data(), values.size() * sizeof(float), 4, gltf::kArrayBuffer);
+  desc.buffer_view =
+      doc->AddBufferView(values.data(), values.size() * sizeof(float), 4, gltf::kArrayBuffer);
   desc.component_type = gltf::kFloat;
   desc.count = values.size() / static_cast<size_t>(width);
   desc.type = type;
@@ -104,8 +105,8 @@ json TextureInfo(const TextureRef& ref, std::map<int, int>* texture_of_image, Gl
   return info;
 }
 
-// Makes an image reference a valid URI without changing one that already is: backslashes become '/',
-// and bytes that may never appear in a URI (controls, space, "<>\^`{|}, non-ASCII) are
+// Makes an image reference a valid URI without changing one that already is: backslashes become
+// '/', and bytes that may never appear in a URI (controls, space, "<>\^`{|}, non-ASCII) are
 // percent-encoded. '%' is left alone, so an already encoded URI passes through unchanged.
 std::string EscapeUri(const std::string& uri) {
   static const char* kHex = "0123456789ABCDEF";
@@ -133,8 +134,9 @@ size_t UvSetsNeeded(const Scene& scene, const Mesh& m) {
   for (size_t i = 0; i < used.size(); ++i) {
     if (!used[i]) continue;
     const Material& mat = scene.materials[i];
-    for (const TextureRef* ref : {&mat.base_color_texture, &mat.metallic_roughness_texture, &mat.normal_texture,
-                                  &mat.occlusion_texture, &mat.emissive_texture}) {
+    for (const TextureRef* ref :
+         {&mat.base_color_texture, &mat.metallic_roughness_texture, &mat.normal_texture,
+          &mat.occlusion_texture, &mat.emissive_texture}) {
       if (ref->used()) needed = std::max(needed, static_cast<size_t>(ref->uv_set) + 1);
     }
   }
@@ -160,14 +162,18 @@ Status ValidateSceneForGltf(const Scene& scene) {
     if (m.positions.size() % 3 != 0) return MeshError(mi, m, "positions is not a multiple of 3");
     const size_t vc = m.vertex_count();
     if (vc == 0) return MeshError(mi, m, "no vertices (glTF has no empty meshes)");
-    if (vc > std::numeric_limits<uint32_t>::max()) return MeshError(mi, m, "more than 2^32-1 vertices");
+    if (vc > std::numeric_limits<uint32_t>::max())
+      return MeshError(mi, m, "more than 2^32-1 vertices");
     if (m.indices.empty() || m.indices.size() % 3 != 0) {
-      return MeshError(mi, m, "indices must be a non-empty multiple of 3, got " + std::to_string(m.indices.size()));
+      return MeshError(
+          mi, m,
+          "indices must be a non-empty multiple of 3, got " + std::to_string(m.indices.size()));
     }
     for (size_t i = 0; i < m.indices.size(); ++i) {
       if (m.indices[i] >= vc) {
-        return MeshError(mi, m, "index " + std::to_string(i) + " is " + std::to_string(m.indices[i]) +
-                                    " but there are " + std::to_string(vc) + " vertices");
+        return MeshError(mi, m,
+                         "index " + std::to_string(i) + " is " + std::to_string(m.indices[i]) +
+                             " but there are " + std::to_string(vc) + " vertices");
       }
     }
     Status s = CheckPerVertex(mi, m, m.normals.size(), 3, "normals");
@@ -177,8 +183,10 @@ Status ValidateSceneForGltf(const Scene& scene) {
     if (s.ok()) s = CheckPerVertex(mi, m, m.weights.size(), 4, "weights");
     for (size_t u = 0; s.ok() && u < m.uv_sets.size(); ++u) {
       if (m.uv_sets[u].size() != 2 * vc) {
-        s = MeshError(mi, m, "uv set " + std::to_string(u) + " has " + std::to_string(m.uv_sets[u].size()) +
-                                 " values, expected " + std::to_string(2 * vc));
+        s = MeshError(mi, m,
+                      "uv set " + std::to_string(u) + " has " +
+                          std::to_string(m.uv_sets[u].size()) + " values, expected " +
+                          std::to_string(2 * vc));
       }
     }
     if (!s.ok()) return s;
@@ -191,14 +199,16 @@ Status ValidateSceneForGltf(const Scene& scene) {
     if (!finite) return MeshError(mi, m, "a vertex attribute holds NaN or infinity");
     if (!m.material_ids.empty()) {
       if (m.material_ids.size() != m.triangle_count()) {
-        return MeshError(mi, m, "material_ids has " + std::to_string(m.material_ids.size()) +
-                                    " entries for " + std::to_string(m.triangle_count()) + " triangles");
+        return MeshError(mi, m,
+                         "material_ids has " + std::to_string(m.material_ids.size()) +
+                             " entries for " + std::to_string(m.triangle_count()) + " triangles");
       }
       for (size_t t = 0; t < m.material_ids.size(); ++t) {
         if (m.material_ids[t] >= scene.materials.size()) {
-          return MeshError(mi, m, "triangle " + std::to_string(t) + " uses material " +
-                                      std::to_string(m.material_ids[t]) + " of " +
-                                      std::to_string(scene.materials.size()));
+          return MeshError(mi, m,
+                           "triangle " + std::to_string(t) + " uses material " +
+                               std::to_string(m.material_ids[t]) + " of " +
+                               std::to_string(scene.materials.size()));
         }
       }
     }
@@ -210,7 +220,8 @@ Status ValidateSceneForGltf(const Scene& scene) {
       return ArgError("material " + std::to_string(i) + " has a NaN or infinite factor");
     }
     Status s = CheckTextureRef(scene, i, mat.base_color_texture, "base colour texture");
-    if (s.ok()) s = CheckTextureRef(scene, i, mat.metallic_roughness_texture, "metallic-roughness texture");
+    if (s.ok())
+      s = CheckTextureRef(scene, i, mat.metallic_roughness_texture, "metallic-roughness texture");
     if (s.ok()) s = CheckTextureRef(scene, i, mat.normal_texture, "normal texture");
     if (s.ok()) s = CheckTextureRef(scene, i, mat.occlusion_texture, "occlusion texture");
     if (s.ok()) s = CheckTextureRef(scene, i, mat.emissive_texture, "emissive texture");
@@ -222,7 +233,8 @@ Status ValidateSceneForGltf(const Scene& scene) {
       return ArgError("image " + std::to_string(i) + " has neither bytes nor a uri");
     }
     if (img.uri.empty() && img.mime_type.empty() && SniffImageMime(img.bytes).empty()) {
-      return ArgError("image " + std::to_string(i) + " has no mime type and is neither PNG, JPEG nor WebP");
+      return ArgError("image " + std::to_string(i) +
+                      " has no mime type and is neither PNG, JPEG nor WebP");
     }
   }
   const size_t node_count = scene.nodes.size();
@@ -232,22 +244,28 @@ Status ValidateSceneForGltf(const Scene& scene) {
     std::vector<bool> seen(node_count, false);
     for (int j : skin.joints) {
       if (j < 0 || static_cast<size_t>(j) >= node_count) {
-        return ArgError("skin " + std::to_string(i) + " joint " + std::to_string(j) + " is not a node");
+        return ArgError("skin " + std::to_string(i) + " joint " + std::to_string(j) +
+                        " is not a node");
       }
       if (seen[static_cast<size_t>(j)]) {
-        return ArgError("skin " + std::to_string(i) + " lists node " + std::to_string(j) + " twice");
+        return ArgError("skin " + std::to_string(i) + " lists node " + std::to_string(j) +
+                        " twice");
       }
       seen[static_cast<size_t>(j)] = true;
     }
-    if (!skin.inverse_bind_matrices.empty() && skin.inverse_bind_matrices.size() != 16 * skin.joints.size()) {
-      return ArgError("skin " + std::to_string(i) + " has " + std::to_string(skin.inverse_bind_matrices.size()) +
-                      " inverse bind matrix values for " + std::to_string(skin.joints.size()) + " joints");
+    if (!skin.inverse_bind_matrices.empty() &&
+        skin.inverse_bind_matrices.size() != 16 * skin.joints.size()) {
+      return ArgError("skin " + std::to_string(i) + " has " +
+                      std::to_string(skin.inverse_bind_matrices.size()) +
+                      " inverse bind matrix values for " + std::to_string(skin.joints.size()) +
+                      " joints");
     }
     if (!AllFinite(skin.inverse_bind_matrices)) {
       return ArgError("skin " + std::to_string(i) + " has a NaN or infinite inverse bind matrix");
     }
     if (skin.skeleton < -1 || skin.skeleton >= static_cast<int>(node_count)) {
-      return ArgError("skin " + std::to_string(i) + " skeleton " + std::to_string(skin.skeleton) + " is not a node");
+      return ArgError("skin " + std::to_string(i) + " skeleton " + std::to_string(skin.skeleton) +
+                      " is not a node");
     }
   }
   for (size_t i = 0; i < node_count; ++i) {
@@ -268,12 +286,14 @@ Status ValidateSceneForGltf(const Scene& scene) {
         for (uint16_t j : scene.meshes[static_cast<size_t>(m)].joints) {
           if (j >= joint_count) {
             return ArgError(label + " skins mesh " + std::to_string(m) + " whose joint index " +
-                            std::to_string(j) + " exceeds the skin's " + std::to_string(joint_count) + " joints");
+                            std::to_string(j) + " exceeds the skin's " +
+                            std::to_string(joint_count) + " joints");
           }
         }
       }
     }
-    if (!AllFiniteArray(n.local_transform)) return ArgError(label + " has a NaN or infinite transform");
+    if (!AllFiniteArray(n.local_transform))
+      return ArgError(label + " has a NaN or infinite transform");
     if (n.parent < -1 || n.parent >= static_cast<int>(node_count)) {
       return ArgError(label + " has parent " + std::to_string(n.parent));
     }
@@ -295,12 +315,14 @@ Status ValidateSceneForGltf(const Scene& scene) {
   for (size_t i = 0; i < node_count; ++i) {
     const size_t expected = scene.nodes[i].parent >= 0 ? 1 : 0;
     if (listed[i] != expected) {
-      return ArgError("node " + std::to_string(i) + " has parent " + std::to_string(scene.nodes[i].parent) +
-                      " but is listed as a child " + std::to_string(listed[i]) + " times");
+      return ArgError("node " + std::to_string(i) + " has parent " +
+                      std::to_string(scene.nodes[i].parent) + " but is listed as a child " +
+                      std::to_string(listed[i]) + " times");
     }
   }
   const int on_cycle = gltf_internal::FirstNodeOnCycle(scene.nodes);
-  if (on_cycle >= 0) return ArgError("the node hierarchy has a cycle through node " + std::to_string(on_cycle));
+  if (on_cycle >= 0)
+    return ArgError("the node hierarchy has a cycle through node " + std::to_string(on_cycle));
   return Status::Ok();
 }
 
@@ -341,14 +363,17 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
       pbr["baseColorTexture"] = TextureInfo(mat.base_color_texture, &texture_of_image, doc);
     }
     if (mat.metallic_roughness_texture.used()) {
-      pbr["metallicRoughnessTexture"] = TextureInfo(mat.metallic_roughness_texture, &texture_of_image, doc);
+      pbr["metallicRoughnessTexture"] =
+          TextureInfo(mat.metallic_roughness_texture, &texture_of_image, doc);
     }
     j["pbrMetallicRoughness"] = std::move(pbr);
-    if (mat.normal_texture.used()) j["normalTexture"] = TextureInfo(mat.normal_texture, &texture_of_image, doc);
+    if (mat.normal_texture.used())
+      j["normalTexture"] = TextureInfo(mat.normal_texture, &texture_of_image, doc);
     if (mat.occlusion_texture.used()) {
       j["occlusionTexture"] = TextureInfo(mat.occlusion_texture, &texture_of_image, doc);
     }
-    if (mat.emissive_texture.used()) j["emissiveTexture"] = TextureInfo(mat.emissive_texture, &texture_of_image, doc);
+    if (mat.emissive_texture.used())
+      j["emissiveTexture"] = TextureInfo(mat.emissive_texture, &texture_of_image, doc);
     if (mat.emissive != std::array<float, 3>{0, 0, 0}) j["emissiveFactor"] = mat.emissive;
     if (mat.double_sided) j["doubleSided"] = true;
     doc->Append("materials", std::move(j));
@@ -363,14 +388,17 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
     json attributes = json::object();
     ml.position_accessor = AddFloatAttribute(doc, m.positions, 3, "VEC3", true);
     attributes["POSITION"] = ml.position_accessor;
-    if (!m.normals.empty()) attributes["NORMAL"] = AddFloatAttribute(doc, m.normals, 3, "VEC3", false);
-    if (!m.tangents.empty()) attributes["TANGENT"] = AddFloatAttribute(doc, m.tangents, 4, "VEC4", false);
+    if (!m.normals.empty())
+      attributes["NORMAL"] = AddFloatAttribute(doc, m.normals, 3, "VEC3", false);
+    if (!m.tangents.empty())
+      attributes["TANGENT"] = AddFloatAttribute(doc, m.tangents, 4, "VEC4", false);
     for (size_t u = 0; u < m.uv_sets.size(); ++u) {
-      attributes["TEXCOORD_" + std::to_string(u)] = AddFloatAttribute(doc, m.uv_sets[u], 2, "VEC2", false);
+      attributes["TEXCOORD_" + std::to_string(u)] =
+          AddFloatAttribute(doc, m.uv_sets[u], 2, "VEC2", false);
     }
-    // A material texture read through a UV set the mesh lacks makes the primitive invalid glTF, so the
-    // missing sets are added as zero-filled accessors (no bufferView, no bytes) and the reader drops
-    // them again (extras.hullpack.uv_sets).
+    // A material texture read through a UV set the mesh lacks makes the primitive invalid glTF, so
+    // the missing sets are added as zero-filled accessors (no bufferView, no bytes) and the reader
+    // drops them again (extras.hullpack.uv_sets).
     const size_t needed_uv_sets = UvSetsNeeded(scene, m);
     for (size_t u = m.uv_sets.size(); u < needed_uv_sets; ++u) {
       AccessorDesc zeros;
@@ -378,18 +406,19 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
       zeros.type = "VEC2";
       attributes["TEXCOORD_" + std::to_string(u)] = doc->AddAccessor(zeros);
     }
-    if (!m.colors.empty()) attributes["COLOR_0"] = AddFloatAttribute(doc, m.colors, 4, "VEC4", false);
+    if (!m.colors.empty())
+      attributes["COLOR_0"] = AddFloatAttribute(doc, m.colors, 4, "VEC4", false);
     if (!m.joints.empty()) {
-      const bool bytes = options.compact_joints &&
-                         *std::max_element(m.joints.begin(), m.joints.end()) < 256;
+      const bool bytes =
+          options.compact_joints && *std::max_element(m.joints.begin(), m.joints.end()) < 256;
       AccessorDesc desc;
       if (bytes) {
         std::vector<uint8_t> packed(m.joints.begin(), m.joints.end());
         desc.buffer_view = doc->AddBufferView(packed, 4, gltf::kArrayBuffer);
         desc.component_type = gltf::kUnsignedByte;
       } else {
-        desc.buffer_view = doc->AddBufferView(m.joints.data(), m.joints.size() * sizeof(uint16_t), 4,
-                                              gltf::kArrayBuffer);
+        desc.buffer_view = doc->AddBufferView(m.joints.data(), m.joints.size() * sizeof(uint16_t),
+                                              4, gltf::kArrayBuffer);
         desc.component_type = gltf::kUnsignedShort;
       }
       desc.count = vc;
@@ -403,13 +432,15 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
     if (m.material_ids.empty()) {
       groups.emplace_back(-1, std::vector<uint32_t>());
       groups.back().second.resize(m.triangle_count());
-      for (size_t t = 0; t < m.triangle_count(); ++t) groups.back().second[t] = static_cast<uint32_t>(t);
+      for (size_t t = 0; t < m.triangle_count(); ++t)
+        groups.back().second[t] = static_cast<uint32_t>(t);
     } else {
       std::map<uint32_t, std::vector<uint32_t>> by_material;
       for (size_t t = 0; t < m.material_ids.size(); ++t) {
         by_material[m.material_ids[t]].push_back(static_cast<uint32_t>(t));
       }
-      for (auto& kv : by_material) groups.emplace_back(static_cast<int>(kv.first), std::move(kv.second));
+      for (auto& kv : by_material)
+        groups.emplace_back(static_cast<int>(kv.first), std::move(kv.second));
     }
 
     const bool short_indices = vc < 65536;
@@ -420,7 +451,8 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
       if (short_indices) {
         std::vector<uint16_t> idx(n);
         for (size_t k = 0; k < group.second.size(); ++k) {
-          for (size_t c = 0; c < 3; ++c) idx[3 * k + c] = static_cast<uint16_t>(m.indices[3 * group.second[k] + c]);
+          for (size_t c = 0; c < 3; ++c)
+            idx[3 * k + c] = static_cast<uint16_t>(m.indices[3 * group.second[k] + c]);
         }
         index_bytes = Bytes(idx.data(), idx.size() * sizeof(uint16_t));
       } else {
@@ -448,7 +480,8 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
     json mesh_json = {{"primitives", std::move(primitives)}};
     if (!m.name.empty()) mesh_json["name"] = m.name;
     if (!m.collides) mesh_json["extras"]["hullpack"]["collides"] = false;
-    if (needed_uv_sets > m.uv_sets.size()) mesh_json["extras"]["hullpack"]["uv_sets"] = m.uv_sets.size();
+    if (needed_uv_sets > m.uv_sets.size())
+      mesh_json["extras"]["hullpack"]["uv_sets"] = m.uv_sets.size();
     ml.gltf_mesh = doc->Append("meshes", std::move(mesh_json));
   }
 
@@ -494,7 +527,8 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
       if (n.skin >= 0) j["skin"] = n.skin;
       for (size_t k = 1; k < n.meshes.size(); ++k) {
         const int index = static_cast<int>(nodes.size() + extra_nodes.size());
-        json extra = {{"mesh", n.meshes[k]}, {"extras", {{"hullpack", {{"mesh_of_parent", true}}}}}};
+        json extra = {{"mesh", n.meshes[k]},
+                      {"extras", {{"hullpack", {{"mesh_of_parent", true}}}}}};
         if (n.skin >= 0) extra["skin"] = n.skin;
         extra_nodes.push_back(std::move(extra));
         children.push_back(index);

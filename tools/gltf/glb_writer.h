@@ -1,18 +1,18 @@
 // The plain (uncompressed) glTF 2.0 writer: Scene -> GLB.
 //
-// Layout: one buffer (the GLB BIN chunk), one tightly packed bufferView per accessor. Per scene Mesh
-// one glTF mesh whose primitives share the mesh's vertex accessors (POSITION with min/max, NORMAL,
-// TANGENT, TEXCOORD_n, COLOR_0 as float RGBA, JOINTS_0, WEIGHTS_0); one primitive per material id
-// present, in ascending id order, each with its own index accessor (UNSIGNED_SHORT below 65536
-// vertices, else UNSIGNED_INT) holding its triangles in their original order. A mesh without
-// material ids gets one primitive without a material. Mesh::collides == false is written as
+// Layout: one buffer (the GLB BIN chunk), one tightly packed bufferView per accessor. Per scene
+// Mesh one glTF mesh whose primitives share the mesh's vertex accessors (POSITION with min/max,
+// NORMAL, TANGENT, TEXCOORD_n, COLOR_0 as float RGBA, JOINTS_0, WEIGHTS_0); one primitive per
+// material id present, in ascending id order, each with its own index accessor (UNSIGNED_SHORT
+// below 65536 vertices, else UNSIGNED_INT) holding its triangles in their original order. A mesh
+// without material ids gets one primitive without a material. Mesh::collides == false is written as
 // mesh.extras.hullpack.collides = false.
 //
-// Images with a uri are referenced by it (their bytes, if any, are not embedded); others are embedded
-// as a bufferView with their mime type (sniffed from PNG/JPEG/WebP magic when empty). Each image a
-// material uses gets one texture; TextureRef::uv_set becomes texCoord. When a material samples a UV
-// set the mesh lacks, zero-filled TEXCOORD accessors (no bufferView) keep the file valid and
-// extras.hullpack.uv_sets tells the reader to drop them.
+// Images with a uri are referenced by it (their bytes, if any, are not embedded); others are
+// embedded as a bufferView with their mime type (sniffed from PNG/JPEG/WebP magic when empty). Each
+// image a material uses gets one texture; TextureRef::uv_set becomes texCoord. When a material
+// samples a UV set the mesh lacks, zero-filled TEXCOORD accessors (no bufferView) keep the file
+// valid and extras.hullpack.uv_sets tells the reader to drop them.
 //
 // Nodes keep their scene indices; a node with several meshes gets one extra child node per extra
 // mesh (appended after the scene's nodes, marked extras.hullpack.mesh_of_parent so the reader folds
@@ -42,7 +42,7 @@ struct GlbWriteOptions {
 // Where BuildGltfDocument put each scene object.
 struct GltfSceneLayout {
   struct Primitive {
-    int material = -1;        // scene material id, -1 for none
+    int material = -1;  // scene material id, -1 for none
     int indices_accessor = -1;
     size_t triangle_count = 0;  // triangles in this primitive
   };
@@ -53,15 +53,16 @@ struct GltfSceneLayout {
     // Scene triangle index of each triangle, primitive after primitive (the written order).
     std::vector<uint32_t> triangle_order;
   };
-  std::vector<MeshLayout> meshes;           // one per Scene::meshes entry
-  std::vector<int> nodes;                   // scene node -> glTF node (identity when the scene has nodes)
-  std::vector<std::vector<int>> mesh_nodes; // scene mesh -> glTF nodes that reference it
+  std::vector<MeshLayout> meshes;  // one per Scene::meshes entry
+  std::vector<int> nodes;          // scene node -> glTF node (identity when the scene has nodes)
+  std::vector<std::vector<int>> mesh_nodes;  // scene mesh -> glTF nodes that reference it
 };
 
-// Checks what the writer relies on: every mesh has vertices and triangles (glTF has no empty meshes),
-// consistent array sizes, finite values, index and material bounds, texture/skin/node references,
-// joint indices within the skin of each node that skins the mesh, and a node hierarchy that is a
-// forest. kInvalidMesh / kInvalidArgument otherwise, naming the mesh, material, skin or node.
+// Checks what the writer relies on: every mesh has vertices and triangles (glTF has no empty
+// meshes), consistent array sizes, finite values, index and material bounds, texture/skin/node
+// references, joint indices within the skin of each node that skins the mesh, and a node hierarchy
+// that is a forest. kInvalidMesh / kInvalidArgument otherwise, naming the mesh, material, skin or
+// node.
 Status ValidateSceneForGltf(const Scene& scene);
 
 // Writes `scene` into `doc` (which should be fresh). `layout` may be null.

@@ -14,12 +14,16 @@ namespace gltf {
 size_t ComponentSize(int component_type) {
   switch (component_type) {
     case kByte:
-    case kUnsignedByte: return 1;
+    case kUnsignedByte:
+      return 1;
     case kShort:
-    case kUnsignedShort: return 2;
+    case kUnsignedShort:
+      return 2;
     case kUnsignedInt:
-    case kFloat: return 4;
-    default: return 0;
+    case kFloat:
+      return 4;
+    default:
+      return 0;
   }
 }
 
@@ -82,7 +86,8 @@ Result<nlohmann::json> ParseJsonText(const uint8_t* data, size_t size, const std
     // per level. (nlohmann's parser callback could count depth too, but it is quadratic on large
     // arrays, so the text is scanned instead.)
     if (NestsDeeperThan(data, size, kMaxJsonDepth)) {
-      return ParseError(name, "the glTF JSON nests deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+      return ParseError(
+          name, "the glTF JSON nests deeper than " + std::to_string(kMaxJsonDepth) + " levels");
     }
     nlohmann::json j = nlohmann::json::parse(data, data + size);
     if (!j.is_object()) return ParseError(name, "the glTF JSON is not an object");
@@ -140,7 +145,8 @@ double ShortestFloatDecimal(double v) {
 
 nlohmann::json Bounds(const std::vector<double>& values, int component_type) {
   nlohmann::json out = nlohmann::json::array();
-  for (double v : values) out.push_back(component_type == gltf::kFloat ? ShortestFloatDecimal(v) : v);
+  for (double v : values)
+    out.push_back(component_type == gltf::kFloat ? ShortestFloatDecimal(v) : v);
   return out;
 }
 
@@ -203,11 +209,12 @@ Result<std::vector<uint8_t>> GltfDocument::Serialize() const {
   }
   const size_t json_padded = (text.size() + 3) & ~static_cast<size_t>(3);
   const size_t bin_padded = (binary_.size() + 3) & ~static_cast<size_t>(3);
-  uint64_t total = gltf::kGlbHeaderSize + gltf::kChunkHeaderSize + static_cast<uint64_t>(json_padded);
+  uint64_t total =
+      gltf::kGlbHeaderSize + gltf::kChunkHeaderSize + static_cast<uint64_t>(json_padded);
   if (!binary_.empty()) total += gltf::kChunkHeaderSize + static_cast<uint64_t>(bin_padded);
   if (total > std::numeric_limits<uint32_t>::max()) {
-    return Status(StatusCode::kUnsupported,
-                  "the GLB would be " + std::to_string(total) + " bytes; GLB files are limited to 4 GiB");
+    return Status(StatusCode::kUnsupported, "the GLB would be " + std::to_string(total) +
+                                                " bytes; GLB files are limited to 4 GiB");
   }
   std::vector<uint8_t> out;
   out.reserve(static_cast<size_t>(total));
@@ -229,13 +236,14 @@ Result<std::vector<uint8_t>> GltfDocument::Serialize() const {
 
 Result<GltfDocument> ParseGlb(const uint8_t* data, size_t size, const std::string& name) {
   if (data == nullptr || size < gltf::kGlbHeaderSize) {
-    return ParseError(name, "truncated GLB: " + std::to_string(size) + " bytes, the header needs 12");
+    return ParseError(name,
+                      "truncated GLB: " + std::to_string(size) + " bytes, the header needs 12");
   }
   if (ReadU32(data) != gltf::kGlbMagic) return ParseError(name, "not a GLB file (wrong magic)");
   const uint32_t version = ReadU32(data + 4);
   if (version != gltf::kGlbVersion) {
-    return Status(StatusCode::kUnsupported,
-                  name + ": GLB version " + std::to_string(version) + " (only version 2 is supported)");
+    return Status(StatusCode::kUnsupported, name + ": GLB version " + std::to_string(version) +
+                                                " (only version 2 is supported)");
   }
   const uint32_t length = ReadU32(data + 8);
   if (length > size) {
@@ -243,7 +251,8 @@ Result<GltfDocument> ParseGlb(const uint8_t* data, size_t size, const std::strin
                                 " bytes but the file has " + std::to_string(size));
   }
   if (length < gltf::kGlbHeaderSize + gltf::kChunkHeaderSize) {
-    return ParseError(name, "GLB length " + std::to_string(length) + " leaves no room for the JSON chunk");
+    return ParseError(
+        name, "GLB length " + std::to_string(length) + " leaves no room for the JSON chunk");
   }
   size_t pos = gltf::kGlbHeaderSize;
   bool have_json = false;
@@ -266,7 +275,8 @@ Result<GltfDocument> ParseGlb(const uint8_t* data, size_t size, const std::strin
     }
     const uint8_t* chunk = data + pos;
     if (chunk_index == 0) {
-      if (chunk_type != gltf::kChunkJson) return ParseError(name, "the first GLB chunk is not JSON");
+      if (chunk_type != gltf::kChunkJson)
+        return ParseError(name, "the first GLB chunk is not JSON");
       Result<nlohmann::json> parsed = ParseJsonText(chunk, chunk_length, name);
       if (!parsed.ok()) return parsed.status();
       json = std::move(parsed).value();
@@ -294,7 +304,8 @@ Result<GltfDocument> ParseGltfJson(const uint8_t* data, size_t size, const std::
 }
 
 Result<GltfDocument> ParseGltfBytes(const uint8_t* data, size_t size, const std::string& name) {
-  if (data != nullptr && size >= 4 && ReadU32(data) == gltf::kGlbMagic) return ParseGlb(data, size, name);
+  if (data != nullptr && size >= 4 && ReadU32(data) == gltf::kGlbMagic)
+    return ParseGlb(data, size, name);
   return ParseGltfJson(data, size, name);
 }
 

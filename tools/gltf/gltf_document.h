@@ -1,11 +1,11 @@
 // A glTF 2.0 document in memory: the JSON tree plus the GLB binary chunk (buffer 0).
 //
 // Both directions use it. Writers build one with the Add* helpers (aligned appends to the binary
-// chunk, bufferViews, accessors, extension bookkeeping) and call Serialize() for GLB bytes; the plain
-// writer (glb_writer.h) and the packaging stage share it, so the packer can add compressed streams as
-// extra bufferViews and any `extensions` object on top of what the plain writer produced.
-// Readers get one from ParseGlb()/ParseGltfJson(): the JSON is parsed, but nothing in it is trusted
-// yet — glb_reader.h does the checked conversion into the scene model.
+// chunk, bufferViews, accessors, extension bookkeeping) and call Serialize() for GLB bytes; the
+// plain writer (glb_writer.h) and the packaging stage share it, so the packer can add compressed
+// streams as extra bufferViews and any `extensions` object on top of what the plain writer
+// produced. Readers get one from ParseGlb()/ParseGltfJson(): the JSON is parsed, but nothing in it
+// is trusted yet — glb_reader.h does the checked conversion into the scene model.
 #ifndef HULLPACK_TOOLS_GLTF_GLTF_DOCUMENT_H_
 #define HULLPACK_TOOLS_GLTF_GLTF_DOCUMENT_H_
 
@@ -22,10 +22,10 @@ namespace hullpack {
 namespace gltf {
 
 // GLB container constants (glTF 2.0, section "Binary glTF Layout").
-constexpr uint32_t kGlbMagic = 0x46546C67;      // "glTF"
+constexpr uint32_t kGlbMagic = 0x46546C67;  // "glTF"
 constexpr uint32_t kGlbVersion = 2;
-constexpr uint32_t kChunkJson = 0x4E4F534A;     // "JSON"
-constexpr uint32_t kChunkBin = 0x004E4942;      // "BIN\0"
+constexpr uint32_t kChunkJson = 0x4E4F534A;  // "JSON"
+constexpr uint32_t kChunkBin = 0x004E4942;   // "BIN\0"
 constexpr size_t kGlbHeaderSize = 12;
 constexpr size_t kChunkHeaderSize = 8;
 
@@ -57,7 +57,7 @@ int ComponentCount(const std::string& type);
 
 // What AddAccessor writes. min/max are omitted when empty.
 struct AccessorDesc {
-  int buffer_view = -1;       // -1: no bufferView (zero-filled, or an extension supplies the data)
+  int buffer_view = -1;  // -1: no bufferView (zero-filled, or an extension supplies the data)
   size_t byte_offset = 0;
   int component_type = gltf::kFloat;
   size_t count = 0;

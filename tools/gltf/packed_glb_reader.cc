@@ -32,7 +32,8 @@ struct DecodedStream {
 
 // Bytes of every array of a decoded stream.
 uint64_t DecodedBytes(const o3dgc::DecodedMesh& m) {
-  uint64_t n = (m.positions.size() + m.normals.size() + m.indices.size() + m.triangle_groups.size()) * 4;
+  uint64_t n =
+      (m.positions.size() + m.normals.size() + m.indices.size() + m.triangle_groups.size()) * 4;
   for (const auto& a : m.float_attributes) n += a.values.size() * 4;
   for (const auto& a : m.int_attributes) n += a.values.size() * 4;
   return n;
@@ -60,10 +61,13 @@ class Inflater {
     if (!json_.contains("meshes") || !json_["meshes"].is_array()) return Finish();
     nlohmann::json& meshes = json_["meshes"];
     for (size_t m = 0; m < meshes.size(); ++m) {
-      if (!meshes[m].is_object() || !meshes[m].contains("primitives") || !meshes[m]["primitives"].is_array()) continue;
+      if (!meshes[m].is_object() || !meshes[m].contains("primitives") ||
+          !meshes[m]["primitives"].is_array())
+        continue;
       nlohmann::json& prims = meshes[m]["primitives"];
       for (size_t p = 0; p < prims.size(); ++p) {
-        if (!prims[p].is_object() || !prims[p].contains("extensions") || !prims[p]["extensions"].is_object() ||
+        if (!prims[p].is_object() || !prims[p].contains("extensions") ||
+            !prims[p]["extensions"].is_object() ||
             !prims[p]["extensions"].contains(kMeshCompressionExtension)) {
           continue;
         }
@@ -79,7 +83,8 @@ class Inflater {
 
  private:
   Status Error(const std::string& what) const {
-    return Status(StatusCode::kParseError, name_ + ": " + where_ + ": " + kMeshCompressionExtension + ": " + what);
+    return Status(StatusCode::kParseError,
+                  name_ + ": " + where_ + ": " + kMeshCompressionExtension + ": " + what);
   }
 
   // An integer member in [0, limit), or -1.
@@ -89,32 +94,43 @@ class Inflater {
     return v >= 0 && static_cast<uint64_t>(v) < limit ? v : -1;
   }
 
-  size_t ArraySize(const char* key) const { return json_.contains(key) && json_[key].is_array() ? json_[key].size() : 0; }
+  size_t ArraySize(const char* key) const {
+    return json_.contains(key) && json_[key].is_array() ? json_[key].size() : 0;
+  }
 
   Result<const DecodedStream*> Stream(int64_t view) {
     auto it = streams_.find(view);
     if (it != streams_.end()) return static_cast<const DecodedStream*>(&it->second);
     const nlohmann::json& v = json_["bufferViews"][view];
-    if (Index(v, "buffer", 1) != 0) return Error("stream bufferView is not on the GLB binary chunk");
+    if (Index(v, "buffer", 1) != 0)
+      return Error("stream bufferView is not on the GLB binary chunk");
     uint64_t offset = 0, length = 0;
-    if (!gltf::GetUintMember(v, "byteOffset", 0, &offset) || !gltf::GetUintMember(v, "byteLength", 0, &length)) {
-      return Error("stream bufferView has a byteOffset or byteLength that is not a non-negative integer");
+    if (!gltf::GetUintMember(v, "byteOffset", 0, &offset) ||
+        !gltf::GetUintMember(v, "byteLength", 0, &length)) {
+      return Error(
+          "stream bufferView has a byteOffset or byteLength that is not a non-negative integer");
     }
     const std::vector<uint8_t>& bin = doc_.binary();
-    if (offset > bin.size() || length > bin.size() - offset) return Error("stream bufferView lies outside the binary chunk");
+    if (offset > bin.size() || length > bin.size() - offset)
+      return Error("stream bufferView lies outside the binary chunk");
     DecodedStream d;
-    const o3dgc::Status st = o3dgc::Decode(bin.data() + offset, length, o3dgc::DecodeOptions(), &d.mesh);
+    const o3dgc::Status st =
+        o3dgc::Decode(bin.data() + offset, length, o3dgc::DecodeOptions(), &d.mesh);
     if (st != o3dgc::Status::kOk) return Error(std::string("stream: ") + o3dgc::StatusName(st));
-    for (o3dgc::DecodedFloatAttribute& a : d.mesh.float_attributes) {  // the format's one decode rule
-      if (a.semantic == o3dgc::Semantic::kWeight && a.dimension == 4) NormalizeSkinWeights(a.values.data(), a.values.size() / 4);
+    for (o3dgc::DecodedFloatAttribute& a :
+         d.mesh.float_attributes) {  // the format's one decode rule
+      if (a.semantic == o3dgc::Semantic::kWeight && a.dimension == 4)
+        NormalizeSkinWeights(a.values.data(), a.values.size() / 4);
     }
     // The attribute table points into the map node, which stays put.
     budget_ += DecodedBytes(d.mesh);
     DecodedStream& s = streams_.emplace(view, std::move(d)).first->second;
     s.attributes.push_back({3, &s.mesh.positions, nullptr});
     if (!s.mesh.normals.empty()) s.attributes.push_back({3, &s.mesh.normals, nullptr});
-    for (const auto& a : s.mesh.float_attributes) s.attributes.push_back({a.dimension, &a.values, nullptr});
-    for (const auto& a : s.mesh.int_attributes) s.attributes.push_back({a.dimension, nullptr, &a.values});
+    for (const auto& a : s.mesh.float_attributes)
+      s.attributes.push_back({a.dimension, &a.values, nullptr});
+    for (const auto& a : s.mesh.int_attributes)
+      s.attributes.push_back({a.dimension, nullptr, &a.values});
     return static_cast<const DecodedStream*>(&s);
   }
 
@@ -129,7 +145,8 @@ class Inflater {
     if (!ext["group"].is_number_unsigned()) return Error("group must be a non-negative integer");
     const uint64_t group = ext["group"].get<uint64_t>();
     bool compact = false;
-    if (!gltf::GetBoolMember(ext, "compactVertices", &compact)) return Error("compactVertices is not a boolean");
+    if (!gltf::GetBoolMember(ext, "compactVertices", &compact))
+      return Error("compactVertices is not a boolean");
     std::vector<uint32_t> remap;
     if (compact) remap.assign(m.num_vertices(), UINT32_MAX);
     for (size_t t = 0; t < m.num_triangles(); ++t) {
@@ -156,32 +173,41 @@ class Inflater {
 
   // Writes `count` x `dims` values, converted to the accessor's component type, into a new
   // bufferView and points the accessor at it.
-  Status Fill(int64_t accessor_index, const Selection& sel, const StreamAttribute* attribute, bool is_indices) {
+  Status Fill(int64_t accessor_index, const Selection& sel, const StreamAttribute* attribute,
+              bool is_indices) {
     if (filled_.count(accessor_index)) return Status::Ok();  // shared by the mesh's primitives
     nlohmann::json& acc = json_["accessors"][accessor_index];
     std::string type;
     uint64_t ctype = 0;
     bool normalized = false;
-    if (!gltf::GetStringMember(acc, "type", &type) || !gltf::GetUintMember(acc, "componentType", 0, &ctype) ||
+    if (!gltf::GetStringMember(acc, "type", &type) ||
+        !gltf::GetUintMember(acc, "componentType", 0, &ctype) ||
         !gltf::GetBoolMember(acc, "normalized", &normalized)) {
-      return Error("accessors[" + std::to_string(accessor_index) + "] has a type, componentType or normalized member of the wrong JSON type");
+      return Error("accessors[" + std::to_string(accessor_index) +
+                   "] has a type, componentType or normalized member of the wrong JSON type");
     }
     const int dims = gltf::ComponentCount(type);
     const size_t csize = ctype <= 0xFFFF ? gltf::ComponentSize(static_cast<int>(ctype)) : 0;
     const size_t count = is_indices ? sel.indices.size() : sel.vertex_count;
-    if (dims == 0 || csize == 0) return Error("accessors[" + std::to_string(accessor_index) + "] has a bad type");
-    if (!acc.contains("count") || !acc["count"].is_number_unsigned() || acc["count"].get<uint64_t>() != count) {
-      return Error("accessors[" + std::to_string(accessor_index) + "] count does not match the stream (" + std::to_string(count) + ")");
+    if (dims == 0 || csize == 0)
+      return Error("accessors[" + std::to_string(accessor_index) + "] has a bad type");
+    if (!acc.contains("count") || !acc["count"].is_number_unsigned() ||
+        acc["count"].get<uint64_t>() != count) {
+      return Error("accessors[" + std::to_string(accessor_index) +
+                   "] count does not match the stream (" + std::to_string(count) + ")");
     }
     if (!is_indices && static_cast<uint32_t>(dims) != attribute->dimension) {
-      return Error("accessors[" + std::to_string(accessor_index) + "] is " + type + " but the stream attribute has " +
-                   std::to_string(attribute->dimension) + " components");
+      return Error("accessors[" + std::to_string(accessor_index) + "] is " + type +
+                   " but the stream attribute has " + std::to_string(attribute->dimension) +
+                   " components");
     }
     if (is_indices && dims != 1) return Error("index accessor must be SCALAR");
     const uint64_t size = uint64_t(count) * dims * csize;
     if (size > budget_) {
-      return Status(StatusCode::kUnsupported, name_ + ": " + where_ + ": accessors[" + std::to_string(accessor_index) +
-                                                  "]: the decoded streams would be copied out more often than the file can justify");
+      return Status(
+          StatusCode::kUnsupported,
+          name_ + ": " + where_ + ": accessors[" + std::to_string(accessor_index) +
+              "]: the decoded streams would be copied out more often than the file can justify");
     }
     budget_ -= size;
     std::vector<uint8_t> bytes(size);
@@ -197,13 +223,14 @@ class Inflater {
         }
         uint8_t* out = &bytes[(i * dims + c) * csize];
         if (!Store(value, static_cast<int>(ctype), normalized, out)) {
-          return Error("accessors[" + std::to_string(accessor_index) + "]: value " + std::to_string(value) +
-                       " does not fit its component type");
+          return Error("accessors[" + std::to_string(accessor_index) + "]: value " +
+                       std::to_string(value) + " does not fit its component type");
         }
       }
     }
     const size_t alignment = csize < 4 ? 4 : csize;
-    acc["bufferView"] = doc_.AddBufferView(bytes, alignment, is_indices ? gltf::kElementArrayBuffer : gltf::kArrayBuffer);
+    acc["bufferView"] = doc_.AddBufferView(
+        bytes, alignment, is_indices ? gltf::kElementArrayBuffer : gltf::kArrayBuffer);
     acc["byteOffset"] = 0;
     filled_.insert(accessor_index);
     return Status::Ok();
@@ -256,7 +283,8 @@ class Inflater {
         std::memcpy(out, &s, 1);
         return true;
       }
-      default: return false;
+      default:
+        return false;
     }
   }
 
@@ -270,12 +298,15 @@ class Inflater {
     Result<Selection> sel = Select(*stream.value(), ext);
     if (!sel.ok()) return sel.status();
     const size_t accessors = ArraySize("accessors");
-    if (!ext.contains("attributes") || !ext["attributes"].is_object()) return Error("attributes missing");
-    if (!prim.contains("attributes") || !prim["attributes"].is_object()) return Error("primitive has no attributes");
+    if (!ext.contains("attributes") || !ext["attributes"].is_object())
+      return Error("attributes missing");
+    if (!prim.contains("attributes") || !prim["attributes"].is_object())
+      return Error("primitive has no attributes");
     for (auto it = ext["attributes"].begin(); it != ext["attributes"].end(); ++it) {
       const int64_t id = it.value().is_number_integer() ? it.value().get<int64_t>() : -1;
       if (id < 0 || static_cast<size_t>(id) >= stream.value()->attributes.size()) {
-        return Error("attribute " + it.key() + " names stream attribute " + it.value().dump() + ", which the stream lacks");
+        return Error("attribute " + it.key() + " names stream attribute " + it.value().dump() +
+                     ", which the stream lacks");
       }
       const int64_t accessor = Index(prim["attributes"], it.key().c_str(), accessors);
       if (accessor < 0) return Error("attribute " + it.key() + " has no accessor in the primitive");
@@ -298,7 +329,8 @@ class Inflater {
       if (!json_.contains(list) || !json_[list].is_array()) continue;
       nlohmann::json kept = nlohmann::json::array();
       for (const auto& e : json_[list]) {
-        if (!(e.is_string() && e.get<std::string>() == kMeshCompressionExtension)) kept.push_back(e);
+        if (!(e.is_string() && e.get<std::string>() == kMeshCompressionExtension))
+          kept.push_back(e);
       }
       if (kept.empty()) {
         json_.erase(list);
@@ -327,15 +359,16 @@ Status InflatePackedDocument(GltfDocument& doc, const std::string& name) {
   try {
     return Inflater(doc, name).Run();
   } catch (const std::bad_alloc&) {
-    return Status(StatusCode::kUnsupported, name + ": out of memory while inflating compressed meshes");
+    return Status(StatusCode::kUnsupported,
+                  name + ": out of memory while inflating compressed meshes");
   } catch (const std::exception& e) {
     // The member checks should make this unreachable; keep malformed input an error, never a crash.
     return Status(StatusCode::kParseError, name + ": malformed glTF: " + e.what());
   }
 }
 
-Result<Scene> ReadPackedGltf(const uint8_t* data, size_t size, const std::string& name, const std::string& base_dir,
-                             GltfDocument* inflated) {
+Result<Scene> ReadPackedGltf(const uint8_t* data, size_t size, const std::string& name,
+                             const std::string& base_dir, GltfDocument* inflated) {
   Result<GltfDocument> doc = DecodeGlbDocument(data, size, name);
   if (!doc.ok()) return doc.status();
   Status s = InflatePackedDocument(doc.value(), name);
@@ -346,7 +379,8 @@ Result<Scene> ReadPackedGltf(const uint8_t* data, size_t size, const std::string
   // far more than 64 bytes of decoded data per byte when its streams compress that well. Up to 4x
   // for index and attribute types the scene widens to 32 bits.
   const uint64_t file = std::max<uint64_t>(doc->source_size(), 1);
-  options.max_expansion += static_cast<size_t>((4 * uint64_t(doc->binary().size()) + file - 1) / file);
+  options.max_expansion +=
+      static_cast<size_t>((4 * uint64_t(doc->binary().size()) + file - 1) / file);
   Result<Scene> scene = DecodeGltfDocument(doc.value(), name, options);
   if (scene.ok() && inflated) *inflated = std::move(doc.value());
   return scene;

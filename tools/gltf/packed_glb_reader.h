@@ -26,8 +26,8 @@ Status InflatePackedDocument(GltfDocument& doc, const std::string& name);
 // Parses a packed (or plain) GLB or .gltf, inflates it, and converts it into the scene model.
 // `inflated` (may be null) receives the plain document. `base_dir` resolves external buffers
 // (empty: external buffers are rejected).
-Result<Scene> ReadPackedGltf(const uint8_t* data, size_t size, const std::string& name, const std::string& base_dir,
-                             GltfDocument* inflated);
+Result<Scene> ReadPackedGltf(const uint8_t* data, size_t size, const std::string& name,
+                             const std::string& base_dir, GltfDocument* inflated);
 
 }  // namespace hullpack
 

@@ -12,8 +12,9 @@ namespace hullpack {
 
 // `weights`: 4 per vertex, non-negative. Each vertex whose weights have a positive sum gets them
 // divided by that sum (in double), rounded to float, and its largest weight then set to 1 minus the
-// others (in double, rounded to float) so the float sum is 1 to within float rounding. Vertices whose
-// weights are all zero are left alone. Returns how many vertices' sums were off by more than 1e-6.
+// others (in double, rounded to float) so the float sum is 1 to within float rounding. Vertices
+// whose weights are all zero are left alone. Returns how many vertices' sums were off by more than
+// 1e-6.
 size_t NormalizeSkinWeights(float* weights, size_t vertex_count);
 
 }  // namespace hullpack

@@ -21,7 +21,8 @@ void ProgressLine::Update(const std::string& text) {
   const auto now = std::chrono::steady_clock::now();
   if (tty_) {
     if (now - last_ < std::chrono::milliseconds(100)) return;
-    std::fprintf(stderr, "\r%s%*s", text.c_str(), static_cast<int>(last_width_ > text.size() ? last_width_ - text.size() : 0), "");
+    std::fprintf(stderr, "\r%s%*s", text.c_str(),
+                 static_cast<int>(last_width_ > text.size() ? last_width_ - text.size() : 0), "");
     last_width_ = text.size();
   } else {
     if (last_width_ != 0 && now - last_ < std::chrono::seconds(2)) return;
@@ -39,26 +40,32 @@ void ProgressLine::Clear() {
   last_width_ = 0;
 }
 
-Status CheckOutputPath(const std::string& output, const std::vector<std::string>& inputs, bool force) {
+Status CheckOutputPath(const std::string& output, const std::vector<std::string>& inputs,
+                       bool force) {
   for (const std::string& input : inputs) {
     if (SameFile(input, output)) {
-      return Status(StatusCode::kInvalidArgument, output + ": is an input file; refusing to overwrite it");
+      return Status(StatusCode::kInvalidArgument,
+                    output + ": is an input file; refusing to overwrite it");
     }
   }
   struct stat st;
   if (stat(output.c_str(), &st) == 0) {
-    if (S_ISDIR(st.st_mode)) return Status(StatusCode::kInvalidArgument, output + ": is a directory");
-    if (!force) return Status(StatusCode::kInvalidArgument, output + ": exists (use --force to replace it)");
+    if (S_ISDIR(st.st_mode))
+      return Status(StatusCode::kInvalidArgument, output + ": is a directory");
+    if (!force)
+      return Status(StatusCode::kInvalidArgument, output + ": exists (use --force to replace it)");
   }
   return Status::Ok();
 }
 
-bool ParseDouble(const std::string& flag, const std::string& text, double lo, double hi, double* out) {
+bool ParseDouble(const std::string& flag, const std::string& text, double lo, double hi,
+                 double* out) {
   char* end = nullptr;
   errno = 0;
   const double v = std::strtod(text.c_str(), &end);
   if (text.empty() || *end != '\0' || errno != 0 || !(v >= lo && v <= hi)) {
-    std::fprintf(stderr, "hullpack: %s takes a number in [%g, %g], not '%s'\n", flag.c_str(), lo, hi, text.c_str());
+    std::fprintf(stderr, "hullpack: %s takes a number in [%g, %g], not '%s'\n", flag.c_str(), lo,
+                 hi, text.c_str());
     return false;
   }
   *out = v;
@@ -70,7 +77,8 @@ bool ParseInt(const std::string& flag, const std::string& text, long lo, long hi
   errno = 0;
   const long v = std::strtol(text.c_str(), &end, 10);
   if (text.empty() || *end != '\0' || errno != 0 || v < lo || v > hi) {
-    std::fprintf(stderr, "hullpack: %s takes a whole number in [%ld, %ld], not '%s'\n", flag.c_str(), lo, hi, text.c_str());
+    std::fprintf(stderr, "hullpack: %s takes a whole number in [%ld, %ld], not '%s'\n",
+                 flag.c_str(), lo, hi, text.c_str());
     return false;
   }
   *out = v;

@@ -33,10 +33,12 @@ class ProgressLine {
 
 // Checks that `output` may be written: not the same file as any input, and not existing unless
 // `force`. The message names the file and the rule.
-Status CheckOutputPath(const std::string& output, const std::vector<std::string>& inputs, bool force);
+Status CheckOutputPath(const std::string& output, const std::vector<std::string>& inputs,
+                       bool force);
 
 // Parses a number option's value; false (and a message on stderr) when it is not one.
-bool ParseDouble(const std::string& flag, const std::string& text, double lo, double hi, double* out);
+bool ParseDouble(const std::string& flag, const std::string& text, double lo, double hi,
+                 double* out);
 bool ParseInt(const std::string& flag, const std::string& text, long lo, long hi, long* out);
 
 // "dir/name.ext" -> "name"

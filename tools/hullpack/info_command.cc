@@ -23,7 +23,8 @@ int RunInfoCommand(const std::vector<std::string>& args) {
     } else if (path.empty()) {
       path = a;
     } else {
-      std::fprintf(stderr, "hullpack info: one file at a time ('%s' and '%s')\n", path.c_str(), a.c_str());
+      std::fprintf(stderr, "hullpack info: one file at a time ('%s' and '%s')\n", path.c_str(),
+                   a.c_str());
       return kExitUsage;
     }
   }
@@ -39,7 +40,8 @@ int RunInfoCommand(const std::vector<std::string>& args) {
   for (size_t i = 0; i < scene->meshes.size(); ++i) {
     Status valid = ValidateMesh(scene->meshes[i]);
     if (!valid.ok()) {
-      std::fprintf(stderr, "hullpack info: %s: mesh %zu: %s\n", path.c_str(), i, valid.message().c_str());
+      std::fprintf(stderr, "hullpack info: %s: mesh %zu: %s\n", path.c_str(), i,
+                   valid.message().c_str());
       return 1;
     }
   }

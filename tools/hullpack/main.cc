@@ -12,13 +12,14 @@
 namespace {
 
 void PrintUsage(FILE* out) {
-  std::fprintf(out,
-               "usage: hullpack COMMAND [options]\n"
-               "commands:\n"
-               "  pack IN... -o OUT    compressed meshes + convex collision hulls in one GLB per input\n"
-               "  unpack IN.glb -o OUT decode a packed GLB back to plain glTF, OBJ, ...\n"
-               "  info FILE [--json]   counts, attributes, bounds and topology of a mesh or scene file\n"
-               "run 'hullpack COMMAND --help' for a command's options\n");
+  std::fprintf(
+      out,
+      "usage: hullpack COMMAND [options]\n"
+      "commands:\n"
+      "  pack IN... -o OUT    compressed meshes + convex collision hulls in one GLB per input\n"
+      "  unpack IN.glb -o OUT decode a packed GLB back to plain glTF, OBJ, ...\n"
+      "  info FILE [--json]   counts, attributes, bounds and topology of a mesh or scene file\n"
+      "run 'hullpack COMMAND --help' for a command's options\n");
 }
 
 }  // namespace

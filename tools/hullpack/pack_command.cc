@@ -17,7 +17,8 @@ namespace {
 
 const char kUsage[] =
     "usage: hullpack pack INPUT... -o OUTPUT [options]\n"
-    "  INPUT: .glb .gltf .fbx .obj .dae .ply .stl .off .wrl; OUTPUT: a .glb file (one input) or a folder\n"
+    "  INPUT: .glb .gltf .fbx .obj .dae .ply .stl .off .wrl; OUTPUT: a .glb file (one input) or a "
+    "folder\n"
     "  (several inputs, or a path ending in '/'), which gets NAME.packed.glb per input\n"
     "options:\n"
     "  --max-error F      largest position error, fraction of each mesh's bbox diagonal (0.0005)\n"
@@ -30,7 +31,8 @@ const char kUsage[] =
     "  --hulls all|none|auto   which meshes get collision hulls (auto)\n"
     "  --skinned-hulls    with --hulls auto, decompose skinned meshes too\n"
     "  --physics omi|khr  OMI_physics_shape/body (default) or the KHR_physics_rigid_bodies draft\n"
-    "  --quality default|high  decomposition preset (default: V-HACD 2.0's, hulls merged while they\n"
+    "  --quality default|high  decomposition preset (default: V-HACD 2.0's, hulls merged while "
+    "they\n"
     "                     stick out by at most 3 % of the diagonal, at most 24 vertices per hull)\n"
     "  --resolution N --max-hulls N --max-vertices N --concavity F   decomposition parameters\n"
     "  --report FILE.json per mesh: bytes before/after, bits per vertex, error, hulls, times\n"
@@ -88,7 +90,9 @@ nlohmann::json ReportJson(const PackReport& r) {
                           {"hull_encode", m.seconds_hull_encode}}}};
     if (!m.no_hulls_reason.empty()) j["no_hulls"] = m.no_hulls_reason;
     if (m.hull_count) {
-      j["hull_error"] = {{"concavity", m.hull_concavity}, {"volume_iou", m.hull_iou}, {"quantization", m.hull_quantization_error}};
+      j["hull_error"] = {{"concavity", m.hull_concavity},
+                         {"volume_iou", m.hull_iou},
+                         {"quantization", m.hull_quantization_error}};
       j["hull_position_bits"] = m.hull_position_bits;
       j["hull_position_range"] = m.hull_position_range;
     }
@@ -98,10 +102,12 @@ nlohmann::json ReportJson(const PackReport& r) {
           {"left_out", r.left_out},
           {"not_kept", r.not_kept},
           {"output_bytes", r.output_bytes},
-          {"seconds", {{"prune", r.seconds_prune}, {"meshes", r.seconds_meshes}, {"write", r.seconds_write}}}};
+          {"seconds",
+           {{"prune", r.seconds_prune}, {"meshes", r.seconds_meshes}, {"write", r.seconds_write}}}};
 }
 
-void PackOne(Job& job, const std::vector<std::string>& inputs, const PackOptions& options, bool force, ProgressLine& progress) {
+void PackOne(Job& job, const std::vector<std::string>& inputs, const PackOptions& options,
+             bool force, ProgressLine& progress) {
   Result<Scene> scene = ReadScene(job.input);
   if (!scene.ok()) {
     job.error = scene.status().message();
@@ -169,7 +175,9 @@ int RunPackCommand(const std::vector<std::string>& args) {
       if (!value(&v) || !ParseDouble(a, v, 1e-9, 0.5, &options.hull_error)) return kExitUsage;
     } else if (a == "--qp" || a == "--qn" || a == "--qt") {
       if (!value(&v) || !ParseInt(a, v, 1, 30, &n)) return kExitUsage;
-      (a == "--qp" ? options.position_bits : a == "--qn" ? options.normal_bits : options.uv_bits) = static_cast<int>(n);
+      (a == "--qp"   ? options.position_bits
+       : a == "--qn" ? options.normal_bits
+                     : options.uv_bits) = static_cast<int>(n);
     } else if (a == "--ascii") {
       options.stream_type = o3dgc::StreamType::kAscii;
     } else if (a == "--keep-order") {
@@ -189,7 +197,8 @@ int RunPackCommand(const std::vector<std::string>& args) {
       } else if (v == "auto") {
         options.collision.policy = HullPolicy::kAuto;
       } else {
-        std::fprintf(stderr, "hullpack pack: --hulls takes all, none or auto, not '%s'\n", v.c_str());
+        std::fprintf(stderr, "hullpack pack: --hulls takes all, none or auto, not '%s'\n",
+                     v.c_str());
         return kExitUsage;
       }
     } else if (a == "--physics") {
@@ -239,7 +248,8 @@ int RunPackCommand(const std::vector<std::string>& args) {
   // One input and a file name: that file. Otherwise a folder of NAME.packed.glb.
   const bool to_folder = inputs.size() > 1 || output.back() == '/' || IsDirectory(output);
   if (!to_folder && FormatFromExtension(output) != FileFormat::kGlb) {
-    std::fprintf(stderr, "hullpack pack: %s: the output must be a .glb file or a folder\n", output.c_str());
+    std::fprintf(stderr, "hullpack pack: %s: the output must be a .glb file or a folder\n",
+                 output.c_str());
     return kExitUsage;
   }
   if (to_folder && !IsDirectory(output)) {
@@ -249,25 +259,29 @@ int RunPackCommand(const std::vector<std::string>& args) {
   std::vector<Job> work(inputs.size());
   for (size_t i = 0; i < inputs.size(); ++i) {
     work[i].input = inputs[i];
-    work[i].output = to_folder ? (output.back() == '/' ? output : output + "/") + FileStem(inputs[i]) + ".packed.glb" : output;
+    work[i].output = to_folder ? (output.back() == '/' ? output : output + "/") +
+                                     FileStem(inputs[i]) + ".packed.glb"
+                               : output;
   }
   for (size_t i = 0; i < work.size(); ++i) {  // two inputs with one stem would write one file twice
     for (size_t j = 0; j < i; ++j) {
       if (work[i].output == work[j].output) {
-        std::fprintf(stderr, "hullpack pack: %s and %s would both write %s\n", work[j].input.c_str(), work[i].input.c_str(),
-                     work[i].output.c_str());
+        std::fprintf(stderr, "hullpack pack: %s and %s would both write %s\n",
+                     work[j].input.c_str(), work[i].input.c_str(), work[i].output.c_str());
         return kExitUsage;
       }
     }
   }
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  const size_t threads = std::min<size_t>(work.size(), jobs > 0 ? static_cast<size_t>(jobs) : cores);
+  const size_t threads =
+      std::min<size_t>(work.size(), jobs > 0 ? static_cast<size_t>(jobs) : cores);
   // Several files at once: each decomposition on one thread (its result does not depend on it).
   if (threads > 1) p.num_threads = 1;
   ProgressLine progress(!quiet);
   std::atomic<size_t> next{0};
   auto worker = [&]() {
-    for (size_t i; (i = next.fetch_add(1)) < work.size();) PackOne(work[i], inputs, options, force, progress);
+    for (size_t i; (i = next.fetch_add(1)) < work.size();)
+      PackOne(work[i], inputs, options, force, progress);
   };
   std::vector<std::thread> pool;
   for (size_t t = 1; t < threads; ++t) pool.emplace_back(worker);
@@ -291,13 +305,16 @@ int RunPackCommand(const std::vector<std::string>& args) {
       before += m["bytes_before"].get<size_t>();
       after += m["bytes_after"].get<size_t>() + m["hull_bytes"].get<size_t>();
     }
-    std::printf("%s -> %s: %zu bytes (geometry %zu -> %zu bytes), %zu meshes, %zu hulls\n", job.input.c_str(),
-                job.output.c_str(), job.report["output_bytes"].get<size_t>(), before, after, job.report["meshes"].size(), hulls);
-    for (const auto& line : job.report["left_out"]) std::printf("  left out: %s\n", line.get<std::string>().c_str());
+    std::printf("%s -> %s: %zu bytes (geometry %zu -> %zu bytes), %zu meshes, %zu hulls\n",
+                job.input.c_str(), job.output.c_str(), job.report["output_bytes"].get<size_t>(),
+                before, after, job.report["meshes"].size(), hulls);
+    for (const auto& line : job.report["left_out"])
+      std::printf("  left out: %s\n", line.get<std::string>().c_str());
     if (job.report["images_embedded"].get<size_t>()) {
       std::printf("  embedded %zu external images\n", job.report["images_embedded"].get<size_t>());
     }
-    for (const auto& line : job.report["images_kept_as_references"]) std::printf("  %s\n", line.get<std::string>().c_str());
+    for (const auto& line : job.report["images_kept_as_references"])
+      std::printf("  %s\n", line.get<std::string>().c_str());
   }
   if (!report_path.empty()) {
     const nlohmann::json doc = work.size() == 1 ? reports[0] : nlohmann::json{{"files", reports}};

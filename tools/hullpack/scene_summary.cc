@@ -63,10 +63,14 @@ std::string TopologyLine(const TopologyReport& t) {
   }
   const bool manifold = t.non_manifold_edges == 0 && t.non_manifold_vertices == 0;
   o << ", " << (manifold ? "manifold" : "non-manifold");
-  if (!manifold) o << " (" << t.non_manifold_edges << " edges, " << t.non_manifold_vertices << " vertices)";
+  if (!manifold)
+    o << " (" << t.non_manifold_edges << " edges, " << t.non_manifold_vertices << " vertices)";
   o << ", " << t.components << (t.components == 1 ? " component" : " components");
   if (t.genus >= 0) o << ", genus " << t.genus;
-  o << ", " << (t.consistently_oriented ? "consistently oriented" : "inconsistent orientation (" + std::to_string(t.inconsistent_edges) + " edges)");
+  o << ", "
+    << (t.consistently_oriented
+            ? "consistently oriented"
+            : "inconsistent orientation (" + std::to_string(t.inconsistent_edges) + " edges)");
   return o.str();
 }
 
@@ -131,12 +135,13 @@ nlohmann::json SummaryToJson(const Scene& scene, const SceneSummary& s) {
   nlohmann::json meshes = nlohmann::json::array();
   for (size_t i = 0; i < scene.meshes.size(); ++i) {
     const Mesh& m = scene.meshes[i];
-    meshes.push_back({{"name", m.name},
-                      {"triangles", m.triangle_count()},
-                      {"vertices", m.vertex_count()},
-                      {"attributes", Attributes(!m.normals.empty(), m.uv_sets.size(), !m.colors.empty(),
-                                                !m.tangents.empty(), m.has_skin())},
-                      {"topology", TopologyJson(s.mesh_topology[i])}});
+    meshes.push_back(
+        {{"name", m.name},
+         {"triangles", m.triangle_count()},
+         {"vertices", m.vertex_count()},
+         {"attributes", Attributes(!m.normals.empty(), m.uv_sets.size(), !m.colors.empty(),
+                                   !m.tangents.empty(), m.has_skin())},
+         {"topology", TopologyJson(s.mesh_topology[i])}});
   }
   j["mesh_list"] = meshes;
   return j;
@@ -146,28 +151,31 @@ std::string SummaryToText(const Scene& scene, const SceneSummary& s) {
   const TopologyReport& t = s.total;
   std::ostringstream o;
   o << "  meshes " << s.meshes << ", triangles " << s.triangles << ", vertices " << s.file_vertices;
-  if (s.vertices != s.file_vertices) o << " in the file (" << s.vertices << " after attribute unification)";
-  o << "\n  materials " << scene.materials.size() << ", images " << scene.images.size() << ", skins "
-    << scene.skins.size() << ", nodes " << scene.nodes.size() << "\n";
-  o << "  attributes: " << Attributes(s.normals, s.max_uv_sets, s.colors, s.tangents, s.skin) << "\n";
-  const double dx = double(t.bbox_max[0]) - t.bbox_min[0], dy = double(t.bbox_max[1]) - t.bbox_min[1],
+  if (s.vertices != s.file_vertices)
+    o << " in the file (" << s.vertices << " after attribute unification)";
+  o << "\n  materials " << scene.materials.size() << ", images " << scene.images.size()
+    << ", skins " << scene.skins.size() << ", nodes " << scene.nodes.size() << "\n";
+  o << "  attributes: " << Attributes(s.normals, s.max_uv_sets, s.colors, s.tangents, s.skin)
+    << "\n";
+  const double dx = double(t.bbox_max[0]) - t.bbox_min[0],
+               dy = double(t.bbox_max[1]) - t.bbox_min[1],
                dz = double(t.bbox_max[2]) - t.bbox_min[2];
-  o << "  bounds: min (" << t.bbox_min[0] << ", " << t.bbox_min[1] << ", " << t.bbox_min[2] << ") max ("
-    << t.bbox_max[0] << ", " << t.bbox_max[1] << ", " << t.bbox_max[2] << "), diagonal "
-    << std::sqrt(dx * dx + dy * dy + dz * dz) << "\n";
+  o << "  bounds: min (" << t.bbox_min[0] << ", " << t.bbox_min[1] << ", " << t.bbox_min[2]
+    << ") max (" << t.bbox_max[0] << ", " << t.bbox_max[1] << ", " << t.bbox_max[2]
+    << "), diagonal " << std::sqrt(dx * dx + dy * dy + dz * dz) << "\n";
   o << "  topology: " << TopologyLine(t) << "\n";
   o << "  area " << t.area;
   if (t.closed_components > 0) o << ", volume " << t.volume << " (closed parts)";
   o << "\n";
   if (t.degenerate_triangles || t.duplicate_triangles || t.opposite_triangle_pairs) {
-    o << "  triangles: " << t.degenerate_triangles << " degenerate, " << t.duplicate_triangles << " duplicate, "
-      << t.opposite_triangle_pairs << " two-sided pairs\n";
+    o << "  triangles: " << t.degenerate_triangles << " degenerate, " << t.duplicate_triangles
+      << " duplicate, " << t.opposite_triangle_pairs << " two-sided pairs\n";
   }
   if (scene.meshes.size() > 1) {
     for (size_t i = 0; i < scene.meshes.size(); ++i) {
       const Mesh& m = scene.meshes[i];
-      o << "  mesh " << i << " '" << m.name << "': " << m.triangle_count() << " triangles, " << m.vertex_count()
-        << " vertices; " << TopologyLine(s.mesh_topology[i]) << "\n";
+      o << "  mesh " << i << " '" << m.name << "': " << m.triangle_count() << " triangles, "
+        << m.vertex_count() << " vertices; " << TopologyLine(s.mesh_topology[i]) << "\n";
     }
   }
   for (const std::string& d : scene.dropped) o << "  not kept: " << d << "\n";

@@ -15,7 +15,8 @@ const char kUsage[] =
     "usage: hullpack unpack PACKED.glb -o OUTPUT [--force]\n"
     "  OUTPUT .glb: the same glTF with every compressed primitive decoded into plain accessors\n"
     "               (collision-hull extensions kept);\n"
-    "  OUTPUT .obj .off .wrl .ply: the decoded meshes (hull meshes included, one `o` group each in OBJ)\n";
+    "  OUTPUT .obj .off .wrl .ply: the decoded meshes (hull meshes included, one `o` group each in "
+    "OBJ)\n";
 
 }  // namespace
 
@@ -47,7 +48,8 @@ int RunUnpackCommand(const std::vector<std::string>& args) {
   }
   const FileFormat out_format = FormatFromExtension(output);
   if (out_format == FileFormat::kUnknown) {
-    std::fprintf(stderr, "hullpack unpack: %s: unknown output format (.glb .obj .off .wrl .ply)\n", output.c_str());
+    std::fprintf(stderr, "hullpack unpack: %s: unknown output format (.glb .obj .off .wrl .ply)\n",
+                 output.c_str());
     return kExitUsage;
   }
   Status writable = CheckOutputPath(output, {input}, force);
@@ -61,7 +63,8 @@ int RunUnpackCommand(const std::vector<std::string>& args) {
     return 1;
   }
   GltfDocument plain;
-  Result<Scene> scene = ReadPackedGltf(bytes.value().data(), bytes.value().size(), input, "", &plain);
+  Result<Scene> scene =
+      ReadPackedGltf(bytes.value().data(), bytes.value().size(), input, "", &plain);
   if (!scene.ok()) {
     std::fprintf(stderr, "hullpack unpack: %s\n", scene.status().message().c_str());
     return 1;
@@ -77,8 +80,8 @@ int RunUnpackCommand(const std::vector<std::string>& args) {
     std::fprintf(stderr, "hullpack unpack: %s\n", written.message().c_str());
     return 1;
   }
-  std::printf("%s -> %s: %zu meshes, %zu triangles\n", input.c_str(), output.c_str(), scene->meshes.size(),
-              scene->triangle_count());
+  std::printf("%s -> %s: %zu meshes, %zu triangles\n", input.c_str(), output.c_str(),
+              scene->meshes.size(), scene->triangle_count());
   return 0;
 }
 

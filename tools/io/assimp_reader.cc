@@ -18,7 +18,8 @@ namespace {
 
 Matrix4 ToColumnMajor(const aiMatrix4x4& m) {
   // aiMatrix4x4 is row-major (a1..a4 is the first row).
-  return {m.a1, m.b1, m.c1, m.d1, m.a2, m.b2, m.c2, m.d2, m.a3, m.b3, m.c3, m.d3, m.a4, m.b4, m.c4, m.d4};
+  return {m.a1, m.b1, m.c1, m.d1, m.a2, m.b2, m.c2, m.d2,
+          m.a3, m.b3, m.c3, m.d3, m.a4, m.b4, m.c4, m.d4};
 }
 
 class AssimpConverter {
@@ -37,7 +38,8 @@ class AssimpConverter {
     Note(point_line_meshes_, "point or line primitives not kept: meshes hold triangles only");
     Note(morph_targets_, "morph targets not kept");
     Note(extra_color_sets_, "extra vertex colour sets not kept (the first is)");
-    Note(clipped_influences_, "vertices with more than 4 joint influences: the 4 largest kept, renormalized");
+    Note(clipped_influences_,
+         "vertices with more than 4 joint influences: the 4 largest kept, renormalized");
     for (const Mesh& m : scene_.meshes) scene_.source_vertex_records += m.vertex_count();
     return std::move(scene_);
   }
@@ -78,7 +80,9 @@ class AssimpConverter {
     TextureRef ref;
     aiString path;
     unsigned uv_index = 0;
-    if (m.GetTextureCount(type) == 0 || m.GetTexture(type, 0, &path, nullptr, &uv_index) != AI_SUCCESS) return ref;
+    if (m.GetTextureCount(type) == 0 ||
+        m.GetTexture(type, 0, &path, nullptr, &uv_index) != AI_SUCCESS)
+      return ref;
     ref.image = ImageFor(path);
     ref.uv_set = static_cast<int>(uv_index);
     return ref;
@@ -91,15 +95,18 @@ class AssimpConverter {
       aiString name;
       if (am.Get(AI_MATKEY_NAME, name) == AI_SUCCESS) m.name = name.C_Str();
       aiColor4D color;
-      if (am.Get(AI_MATKEY_BASE_COLOR, color) == AI_SUCCESS || am.Get(AI_MATKEY_COLOR_DIFFUSE, color) == AI_SUCCESS) {
+      if (am.Get(AI_MATKEY_BASE_COLOR, color) == AI_SUCCESS ||
+          am.Get(AI_MATKEY_COLOR_DIFFUSE, color) == AI_SUCCESS) {
         m.base_color = {color.r, color.g, color.b, color.a};
       }
       float opacity;
-      if (am.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS && opacity < 1.0f) m.base_color[3] = opacity;
+      if (am.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS && opacity < 1.0f)
+        m.base_color[3] = opacity;
       am.Get(AI_MATKEY_METALLIC_FACTOR, m.metallic);
       am.Get(AI_MATKEY_ROUGHNESS_FACTOR, m.roughness);
       aiColor3D emissive;
-      if (am.Get(AI_MATKEY_COLOR_EMISSIVE, emissive) == AI_SUCCESS) m.emissive = {emissive.r, emissive.g, emissive.b};
+      if (am.Get(AI_MATKEY_COLOR_EMISSIVE, emissive) == AI_SUCCESS)
+        m.emissive = {emissive.r, emissive.g, emissive.b};
       int two_sided = 0;
       if (am.Get(AI_MATKEY_TWOSIDED, two_sided) == AI_SUCCESS) m.double_sided = two_sided != 0;
       m.base_color_texture = Texture(am, aiTextureType_BASE_COLOR);
@@ -166,7 +173,8 @@ class AssimpConverter {
         m.colors[i * 4 + 3] = c.a;
       }
     }
-    for (unsigned k = 1; k < AI_MAX_NUMBER_OF_COLOR_SETS; ++k) extra_color_sets_ += am.HasVertexColors(k);
+    for (unsigned k = 1; k < AI_MAX_NUMBER_OF_COLOR_SETS; ++k)
+      extra_color_sets_ += am.HasVertexColors(k);
     morph_targets_ += am.mNumAnimMeshes;
     m.indices.reserve(static_cast<size_t>(am.mNumFaces) * 3);
     for (unsigned f = 0; f < am.mNumFaces; ++f) {
@@ -174,7 +182,8 @@ class AssimpConverter {
       if (face.mNumIndices != 3) continue;  // points/lines sorted into this mesh by SortByPType
       m.indices.insert(m.indices.end(), face.mIndices, face.mIndices + 3);
     }
-    if (ai_.mNumMaterials > 1 || (ai_.mNumMaterials == 1 && am.mMaterialIndex == 0 && HasNamedMaterial())) {
+    if (ai_.mNumMaterials > 1 ||
+        (ai_.mNumMaterials == 1 && am.mMaterialIndex == 0 && HasNamedMaterial())) {
       m.material_ids.assign(m.triangle_count(), am.mMaterialIndex);
     }
     if (am.HasBones()) ConvertBones(am, m);
@@ -184,7 +193,8 @@ class AssimpConverter {
 
   bool HasNamedMaterial() const {
     aiString name;
-    return ai_.mMaterials[0]->Get(AI_MATKEY_NAME, name) == AI_SUCCESS && std::string(name.C_Str()) != AI_DEFAULT_MATERIAL_NAME;
+    return ai_.mMaterials[0]->Get(AI_MATKEY_NAME, name) == AI_SUCCESS &&
+           std::string(name.C_Str()) != AI_DEFAULT_MATERIAL_NAME;
   }
 
   // Per vertex: the (up to) four largest influences, renormalized to sum to one.
@@ -259,7 +269,8 @@ class AssimpConverter {
         skin.inverse_bind_matrices.insert(skin.inverse_bind_matrices.end(), inv.begin(), inv.end());
       }
       if (std::find(skin.joints.begin(), skin.joints.end(), -1) != skin.joints.end()) {
-        scene_.dropped.push_back("skin of mesh '" + std::string(am->mName.C_Str()) + "' names joints with no node: skin not kept");
+        scene_.dropped.push_back("skin of mesh '" + std::string(am->mName.C_Str()) +
+                                 "' names joints with no node: skin not kept");
         scene_.meshes[mesh].joints.clear();
         scene_.meshes[mesh].weights.clear();
         continue;
@@ -267,7 +278,9 @@ class AssimpConverter {
       const int skin_index = static_cast<int>(scene_.skins.size());
       scene_.skins.push_back(std::move(skin));
       for (Node& node : scene_.nodes) {
-        if (std::find(node.meshes.begin(), node.meshes.end(), static_cast<int>(mesh)) != node.meshes.end()) node.skin = skin_index;
+        if (std::find(node.meshes.begin(), node.meshes.end(), static_cast<int>(mesh)) !=
+            node.meshes.end())
+          node.skin = skin_index;
       }
     }
   }
@@ -284,26 +297,37 @@ class AssimpConverter {
 
 unsigned FlagsFor(FileFormat format) {
   // FlipUVs: assimp's convention is v = 0 at the bottom, the scene model's is glTF's.
-  // ValidateDataStructure runs first and rejects broken importer output before other steps touch it.
-  unsigned flags = aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_FlipUVs;
+  // ValidateDataStructure runs first and rejects broken importer output before other steps touch
+  // it.
+  unsigned flags = aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_SortByPType |
+                   aiProcess_FlipUVs;
   // STL has no index buffer and only facet normals: drop those and weld the corners back together.
-  if (format == FileFormat::kStl) flags |= aiProcess_RemoveComponent | aiProcess_JoinIdenticalVertices;
+  if (format == FileFormat::kStl)
+    flags |= aiProcess_RemoveComponent | aiProcess_JoinIdenticalVertices;
   return flags;
 }
 
 void Configure(Assimp::Importer& importer, FileFormat format) {
-  if (format == FileFormat::kStl) importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, aiComponent_NORMALS);
+  if (format == FileFormat::kStl)
+    importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, aiComponent_NORMALS);
 }
 
 const char* HintFor(FileFormat format) {
   switch (format) {
-    case FileFormat::kGltf: return "gltf";
-    case FileFormat::kGlb: return "glb";
-    case FileFormat::kFbx: return "fbx";
-    case FileFormat::kDae: return "dae";
-    case FileFormat::kPly: return "ply";
-    case FileFormat::kStl: return "stl";
-    default: return "";
+    case FileFormat::kGltf:
+      return "gltf";
+    case FileFormat::kGlb:
+      return "glb";
+    case FileFormat::kFbx:
+      return "fbx";
+    case FileFormat::kDae:
+      return "dae";
+    case FileFormat::kPly:
+      return "ply";
+    case FileFormat::kStl:
+      return "stl";
+    default:
+      return "";
   }
 }
 
@@ -314,7 +338,8 @@ Result<Scene> Finish(const aiScene* ai, Assimp::Importer& importer, const std::s
     return Status(StatusCode::kParseError, name + ": " + why);
   }
   if (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) {
-    return Status(StatusCode::kParseError, name + ": incomplete scene (truncated or unsupported content)");
+    return Status(StatusCode::kParseError,
+                  name + ": incomplete scene (truncated or unsupported content)");
   }
   return AssimpConverter(*ai, name).Convert();
 }
@@ -328,7 +353,8 @@ Result<Scene> ReadWithAssimp(const std::string& path, FileFormat format) {
   return Finish(ai, importer, path);
 }
 
-Result<Scene> ReadWithAssimpFromMemory(const uint8_t* data, size_t size, FileFormat format, const std::string& name) {
+Result<Scene> ReadWithAssimpFromMemory(const uint8_t* data, size_t size, FileFormat format,
+                                       const std::string& name) {
   Assimp::Importer importer;
   Configure(importer, format);
   const aiScene* ai = importer.ReadFileFromMemory(data, size, FlagsFor(format), HintFor(format));

@@ -37,10 +37,10 @@ struct MeshBuilder {
 // Statements of the OBJ specification that carry nothing the scene model holds.
 bool IsIgnoredStatement(std::string_view k) {
   static const char* const kIgnored[] = {
-      "s",     "g",    "vp",      "cstype", "deg",    "bmat",     "step",      "curv",   "curv2",
-      "surf",  "parm", "trim",    "hole",   "scrv",   "sp",       "end",       "con",    "mg",
-      "lod",   "usemap", "maplib", "shadow_obj", "trace_obj", "ctech", "stech", "bevel",
-      "c_interp", "d_interp", "call", "csh"};
+      "s",     "g",     "vp",       "cstype",   "deg",    "bmat",       "step",      "curv",
+      "curv2", "surf",  "parm",     "trim",     "hole",   "scrv",       "sp",        "end",
+      "con",   "mg",    "lod",      "usemap",   "maplib", "shadow_obj", "trace_obj", "ctech",
+      "stech", "bevel", "c_interp", "d_interp", "call",   "csh"};
   for (const char* s : kIgnored) {
     if (k == s) return true;
   }
@@ -53,7 +53,8 @@ class ObjParser {
       : scan_(data, data + size), data_(data), size_(size), name_(name), options_(options) {}
 
   Result<Scene> Parse() {
-    if (std::memchr(data_, '\0', size_) != nullptr) return Error("binary data (NUL byte): not an OBJ file");
+    if (std::memchr(data_, '\0', size_) != nullptr)
+      return Error("binary data (NUL byte): not an OBJ file");
     builders_.emplace_back();
     while (!scan_.AtEnd()) {
       scan_.SkipBlanks();
@@ -71,7 +72,8 @@ class ObjParser {
 
  private:
   Status Error(const std::string& what) const {
-    return Status(StatusCode::kParseError, name_ + ": line " + std::to_string(scan_.line()) + ": " + what);
+    return Status(StatusCode::kParseError,
+                  name_ + ": line " + std::to_string(scan_.line()) + ": " + what);
   }
 
   Status ReadNumbers(double* out, int min_count, int max_count, int* count, const char* what) {
@@ -82,11 +84,13 @@ class ObjParser {
       double value;
       if (*count == max_count || !scan_.ParseDouble(&value)) {
         return Error(std::string("malformed ") + what + " (expected " + std::to_string(min_count) +
-                     (min_count == max_count ? "" : " to " + std::to_string(max_count)) + " numbers)");
+                     (min_count == max_count ? "" : " to " + std::to_string(max_count)) +
+                     " numbers)");
       }
       out[(*count)++] = value;
     }
-    if (*count < min_count) return Error(std::string(what) + " needs at least " + std::to_string(min_count) + " numbers");
+    if (*count < min_count)
+      return Error(std::string(what) + " needs at least " + std::to_string(min_count) + " numbers");
     return Status::Ok();
   }
 
@@ -98,7 +102,8 @@ class ObjParser {
       if (!s.ok()) return s;
       positions_.push_back({n[0], n[1], n[2]});
       if (count >= 6) {  // `v x y z r g b`; a 4-number line is `v x y z w`
-        if (colors_.empty() && positions_.size() > 1) colors_.resize(positions_.size() - 1, {1, 1, 1});
+        if (colors_.empty() && positions_.size() > 1)
+          colors_.resize(positions_.size() - 1, {1, 1, 1});
         colors_.push_back({n[3], n[4], n[5]});
       } else if (!colors_.empty()) {
         colors_.push_back({1, 1, 1});
@@ -199,7 +204,8 @@ class ObjParser {
       Status s = ParseCorner(&c);
       if (!s.ok()) return s;
       const char next = scan_.Peek();
-      if (next != ' ' && next != '\t' && next != '\r' && next != '\n' && next != '#' && !scan_.AtEnd()) {
+      if (next != ' ' && next != '\t' && next != '\r' && next != '\n' && next != '#' &&
+          !scan_.AtEnd()) {
         return Error("malformed face corner");
       }
       polygon_.push_back(c);
@@ -254,7 +260,8 @@ class ObjParser {
         } else {
           Result<std::string> text = options_.load_material_library(lib);
           if (!text.ok()) {
-            dropped_.push_back("material library '" + lib + "' not found: material colours and textures not kept");
+            dropped_.push_back("material library '" + lib +
+                               "' not found: material colours and textures not kept");
           } else {
             ParseMtl(text.value());
           }
@@ -305,13 +312,15 @@ class ObjParser {
         current->base_color[3] = static_cast<float>(v[0]);
       } else if (current && key == "Tr" && numbers(1)) {
         current->base_color[3] = static_cast<float>(1.0 - v[0]);
-      } else if (current && (key == "map_Kd" || key == "map_Bump" || key == "bump" || key == "norm")) {
+      } else if (current &&
+                 (key == "map_Kd" || key == "map_Bump" || key == "bump" || key == "norm")) {
         // The file name is the last word; options such as `-bm 1` come before it.
         std::string_view rest = s.RestOfLine();
         const size_t space = rest.find_last_of(" \t");
         const std::string file(space == std::string_view::npos ? rest : rest.substr(space + 1));
         if (!file.empty()) {
-          TextureRef& slot = key == "map_Kd" ? current->base_color_texture : current->normal_texture;
+          TextureRef& slot =
+              key == "map_Kd" ? current->base_color_texture : current->normal_texture;
           slot.image = ImageIndex(file);
         }
       }
@@ -359,7 +368,8 @@ class ObjParser {
         }
         if (has_normal) {
           if (c.vn >= 0) {
-            for (int k = 0; k < 3; ++k) m.normals[i * 3 + k] = static_cast<float>(normals_[c.vn][k]);
+            for (int k = 0; k < 3; ++k)
+              m.normals[i * 3 + k] = static_cast<float>(normals_[c.vn][k]);
           } else {
             if (lacks_normal.empty()) lacks_normal.resize(n, 0);
             lacks_normal[i] = 1;
@@ -436,16 +446,20 @@ class ObjParser {
       const float* c = &m.positions[m.indices[t + 2] * 3];
       const double u[3] = {double(b[0]) - a[0], double(b[1]) - a[1], double(b[2]) - a[2]};
       const double v[3] = {double(c[0]) - a[0], double(c[1]) - a[1], double(c[2]) - a[2]};
-      const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+      const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                           u[0] * v[1] - u[1] * v[0]};
       for (int k = 0; k < 3; ++k) {
         for (int j = 0; j < 3; ++j) acc[m.indices[t + k] * 3 + j] += n[j];
       }
     }
     for (size_t i = 0; i < lacks_normal.size(); ++i) {
       if (!lacks_normal[i]) continue;
-      const double len = std::sqrt(acc[i * 3] * acc[i * 3] + acc[i * 3 + 1] * acc[i * 3 + 1] + acc[i * 3 + 2] * acc[i * 3 + 2]);
+      const double len = std::sqrt(acc[i * 3] * acc[i * 3] + acc[i * 3 + 1] * acc[i * 3 + 1] +
+                                   acc[i * 3 + 2] * acc[i * 3 + 2]);
       for (int j = 0; j < 3; ++j) {
-        m.normals[i * 3 + j] = len > 0 && std::isfinite(len) ? static_cast<float>(acc[i * 3 + j] / len) : (j == 2 ? 1.0f : 0.0f);
+        m.normals[i * 3 + j] = len > 0 && std::isfinite(len)
+                                   ? static_cast<float>(acc[i * 3 + j] / len)
+                                   : (j == 2 ? 1.0f : 0.0f);
       }
     }
   }
@@ -464,13 +478,15 @@ class ObjParser {
   std::vector<Image> images_;
   static constexpr uint32_t kNoMaterial = 0xFFFFFFFFu;
   uint32_t current_material_ = kNoMaterial;
-  size_t dropped_lines_ = 0, dropped_points_ = 0, dropped_short_faces_ = 0, polygons_triangulated_ = 0;
+  size_t dropped_lines_ = 0, dropped_points_ = 0, dropped_short_faces_ = 0,
+         polygons_triangulated_ = 0;
   std::vector<std::string> dropped_;
 };
 
 }  // namespace
 
-Result<Scene> ParseObj(const char* data, size_t size, const std::string& name, const ObjParseOptions& options) {
+Result<Scene> ParseObj(const char* data, size_t size, const std::string& name,
+                       const ObjParseOptions& options) {
   return ObjParser(data, size, name, options).Parse();
 }
 

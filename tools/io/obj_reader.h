@@ -2,9 +2,9 @@
 //
 // Faces may mix `v`, `v/vt`, `v//vn` and `v/vt/vn` corners and use negative (relative) indices;
 // polygons are fan-triangulated. Each distinct (v, vt, vn) triple becomes one vertex, as in glTF.
-// `o` starts a new mesh, `usemtl` sets the per-triangle material id, `v x y z r g b` carries a colour.
-// Texture coordinates are flipped to the glTF convention (v' = 1 - v).
-// Trust model: any byte sequence is safe to parse; malformed input gives a kParseError naming the line.
+// `o` starts a new mesh, `usemtl` sets the per-triangle material id, `v x y z r g b` carries a
+// colour. Texture coordinates are flipped to the glTF convention (v' = 1 - v). Trust model: any
+// byte sequence is safe to parse; malformed input gives a kParseError naming the line.
 #ifndef HULLPACK_TOOLS_IO_OBJ_READER_H_
 #define HULLPACK_TOOLS_IO_OBJ_READER_H_
 

@@ -16,16 +16,20 @@ std::string EncodeObj(const Scene& scene) {
     const bool uvs = !m.uv_sets.empty() && m.uv_sets[0].size() == n * 2 && n > 0;
     const bool normals = m.normals.size() == n * 3 && n > 0;
     for (size_t i = 0; i < n; ++i) {
-      w << "v " << m.positions[i * 3] << ' ' << m.positions[i * 3 + 1] << ' ' << m.positions[i * 3 + 2];
-      if (colors) w << ' ' << m.colors[i * 4] << ' ' << m.colors[i * 4 + 1] << ' ' << m.colors[i * 4 + 2];
+      w << "v " << m.positions[i * 3] << ' ' << m.positions[i * 3 + 1] << ' '
+        << m.positions[i * 3 + 2];
+      if (colors)
+        w << ' ' << m.colors[i * 4] << ' ' << m.colors[i * 4 + 1] << ' ' << m.colors[i * 4 + 2];
       w << '\n';
     }
     if (uvs) {
-      for (size_t i = 0; i < n; ++i) w << "vt " << m.uv_sets[0][i * 2] << ' ' << (1.0f - m.uv_sets[0][i * 2 + 1]) << '\n';
+      for (size_t i = 0; i < n; ++i)
+        w << "vt " << m.uv_sets[0][i * 2] << ' ' << (1.0f - m.uv_sets[0][i * 2 + 1]) << '\n';
     }
     if (normals) {
       for (size_t i = 0; i < n; ++i) {
-        w << "vn " << m.normals[i * 3] << ' ' << m.normals[i * 3 + 1] << ' ' << m.normals[i * 3 + 2] << '\n';
+        w << "vn " << m.normals[i * 3] << ' ' << m.normals[i * 3 + 1] << ' ' << m.normals[i * 3 + 2]
+          << '\n';
       }
     }
     const bool materials = m.material_ids.size() == m.triangle_count();

@@ -10,16 +10,19 @@ namespace hullpack {
 Result<Scene> ParseOff(const char* data, size_t size, const std::string& name) {
   TextScanner s(data, data + size);
   auto error = [&](const std::string& what) {
-    return Status(StatusCode::kParseError, name + ": line " + std::to_string(s.line()) + ": " + what);
+    return Status(StatusCode::kParseError,
+                  name + ": line " + std::to_string(s.line()) + ": " + what);
   };
-  if (std::memchr(data, '\0', size) != nullptr) return error("binary data (NUL byte): not an OFF file");
+  if (std::memchr(data, '\0', size) != nullptr)
+    return error("binary data (NUL byte): not an OFF file");
   s.SkipWhitespace(true);
   const std::string_view magic = s.Word();
   bool colors = false;
   if (magic == "COFF") {
     colors = true;
   } else if (magic != "OFF") {
-    return error("missing OFF header (the file starts with '" + std::string(magic.substr(0, 16)) + "')");
+    return error("missing OFF header (the file starts with '" + std::string(magic.substr(0, 16)) +
+                 "')");
   }
   int64_t nv = 0, nf = 0, ne = 0;
   s.SkipWhitespace(true);
@@ -28,8 +31,10 @@ Result<Scene> ParseOff(const char* data, size_t size, const std::string& name) {
   if (!s.ParseInt64(&nf)) return error("missing face count");
   s.SkipWhitespace(true);
   if (!s.ParseInt64(&ne)) return error("missing edge count");
-  // Each vertex needs at least 6 bytes ("0 0 0\n") and each face 8: bound the allocations by the file.
-  if (nv < 0 || nf < 0 || static_cast<uint64_t>(nv) > size / 6 || static_cast<uint64_t>(nf) > size / 8) {
+  // Each vertex needs at least 6 bytes ("0 0 0\n") and each face 8: bound the allocations by the
+  // file.
+  if (nv < 0 || nf < 0 || static_cast<uint64_t>(nv) > size / 6 ||
+      static_cast<uint64_t>(nf) > size / 8) {
     return error("vertex/face counts " + std::to_string(nv) + "/" + std::to_string(nf) +
                  " do not fit in a file of " + std::to_string(size) + " bytes");
   }
@@ -42,7 +47,8 @@ Result<Scene> ParseOff(const char* data, size_t size, const std::string& name) {
       double v;
       s.SkipWhitespace(true);
       if (!s.ParseDouble(&v)) {
-        return error("vertex " + std::to_string(i) + " of " + std::to_string(nv) + " is malformed or missing (truncated file?)");
+        return error("vertex " + std::to_string(i) + " of " + std::to_string(nv) +
+                     " is malformed or missing (truncated file?)");
       }
       if (k < 3) {
         mesh.positions[i * 3 + k] = static_cast<float>(v);
@@ -58,7 +64,8 @@ Result<Scene> ParseOff(const char* data, size_t size, const std::string& name) {
     int64_t count;
     s.SkipWhitespace(true);
     if (!s.ParseInt64(&count) || count < 0 || count > nv + 2) {
-      return error("face " + std::to_string(f) + " of " + std::to_string(nf) + " is malformed or missing (truncated file?)");
+      return error("face " + std::to_string(f) + " of " + std::to_string(nf) +
+                   " is malformed or missing (truncated file?)");
     }
     polygon.clear();
     for (int64_t k = 0; k < count; ++k) {
@@ -66,7 +73,8 @@ Result<Scene> ParseOff(const char* data, size_t size, const std::string& name) {
       s.SkipBlanks();
       if (!s.ParseInt64(&index)) return error("face " + std::to_string(f) + " is truncated");
       if (index < 0 || index >= nv) {
-        return error("face " + std::to_string(f) + " refers to vertex " + std::to_string(index) + " of " + std::to_string(nv));
+        return error("face " + std::to_string(f) + " refers to vertex " + std::to_string(index) +
+                     " of " + std::to_string(nv));
       }
       polygon.push_back(static_cast<uint32_t>(index));
     }
@@ -79,7 +87,9 @@ Result<Scene> ParseOff(const char* data, size_t size, const std::string& name) {
       mesh.indices.insert(mesh.indices.end(), {polygon[0], polygon[k], polygon[k + 1]});
     }
   }
-  if (short_faces) scene.dropped.push_back(std::to_string(short_faces) + " faces with fewer than 3 corners not kept");
+  if (short_faces)
+    scene.dropped.push_back(std::to_string(short_faces) +
+                            " faces with fewer than 3 corners not kept");
   scene.source_vertex_records = static_cast<size_t>(nv);
   scene.meshes.push_back(std::move(mesh));
   AddRootNodeForAllMeshes(scene, name);
@@ -95,7 +105,8 @@ std::string EncodeOff(const Scene& scene) {
     colors = colors && m.colors.size() == m.vertex_count() * 4;
   }
   TextWriter w;
-  w << (colors ? "COFF\n" : "OFF\n") << static_cast<uint64_t>(nv) << ' ' << static_cast<uint64_t>(nf) << " 0\n";
+  w << (colors ? "COFF\n" : "OFF\n") << static_cast<uint64_t>(nv) << ' '
+    << static_cast<uint64_t>(nf) << " 0\n";
   for (const Mesh& m : scene.meshes) {
     for (size_t i = 0; i < m.vertex_count(); ++i) {
       w << m.positions[i * 3] << ' ' << m.positions[i * 3 + 1] << ' ' << m.positions[i * 3 + 2];

@@ -9,7 +9,8 @@ namespace hullpack {
 namespace {
 
 template <typename T>
-void Put(std::vector<uint8_t>& out, T value) {  // PLY binary_little_endian; this host is little-endian
+void Put(std::vector<uint8_t>& out,
+         T value) {  // PLY binary_little_endian; this host is little-endian
   uint8_t bytes[sizeof(T)];
   std::memcpy(bytes, &value, sizeof(T));
   out.insert(out.end(), bytes, bytes + sizeof(T));
@@ -32,12 +33,16 @@ std::vector<uint8_t> EncodePly(const Scene& scene) {
     uvs = uvs && !m.uv_sets.empty() && m.uv_sets[0].size() == m.vertex_count() * 2;
     colors = colors && m.colors.size() == m.vertex_count() * 4;
   }
-  std::string header = "ply\nformat binary_little_endian 1.0\ncomment written by hullpack\nelement vertex " +
-                       std::to_string(nv) + "\nproperty float x\nproperty float y\nproperty float z\n";
+  std::string header =
+      "ply\nformat binary_little_endian 1.0\ncomment written by hullpack\nelement vertex " +
+      std::to_string(nv) + "\nproperty float x\nproperty float y\nproperty float z\n";
   if (normals) header += "property float nx\nproperty float ny\nproperty float nz\n";
   if (uvs) header += "property float s\nproperty float t\n";
-  if (colors) header += "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\n";
-  header += "element face " + std::to_string(nf) + "\nproperty list uchar int vertex_indices\nend_header\n";
+  if (colors)
+    header +=
+        "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\n";
+  header += "element face " + std::to_string(nf) +
+            "\nproperty list uchar int vertex_indices\nend_header\n";
   std::vector<uint8_t> out(header.begin(), header.end());
   for (const Mesh& m : scene.meshes) {
     for (size_t i = 0; i < m.vertex_count(); ++i) {

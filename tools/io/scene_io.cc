@@ -25,14 +25,18 @@ Result<Scene> RequireTriangles(Result<Scene> scene, const std::string& name) {
   return scene;
 }
 
-Result<Scene> ParseOwnFormat(const uint8_t* data, size_t size, FileFormat format, const std::string& name,
-                             const ObjParseOptions& obj_options) {
+Result<Scene> ParseOwnFormat(const uint8_t* data, size_t size, FileFormat format,
+                             const std::string& name, const ObjParseOptions& obj_options) {
   const char* text = reinterpret_cast<const char*>(data);
   switch (format) {
-    case FileFormat::kObj: return ParseObj(text, size, name, obj_options);
-    case FileFormat::kOff: return ParseOff(text, size, name);
-    case FileFormat::kWrl: return ParseWrl(text, size, name);
-    default: return Status(StatusCode::kInternal, name + ": not a format of the project's own parsers");
+    case FileFormat::kObj:
+      return ParseObj(text, size, name, obj_options);
+    case FileFormat::kOff:
+      return ParseOff(text, size, name);
+    case FileFormat::kWrl:
+      return ParseWrl(text, size, name);
+    default:
+      return Status(StatusCode::kInternal, name + ": not a format of the project's own parsers");
   }
 }
 
@@ -58,16 +62,26 @@ FileFormat FormatFromExtension(const std::string& path) {
 
 const char* FormatName(FileFormat format) {
   switch (format) {
-    case FileFormat::kObj: return "OBJ";
-    case FileFormat::kOff: return "OFF";
-    case FileFormat::kWrl: return "VRML";
-    case FileFormat::kPly: return "PLY";
-    case FileFormat::kStl: return "STL";
-    case FileFormat::kGltf: return "glTF";
-    case FileFormat::kGlb: return "GLB";
-    case FileFormat::kFbx: return "FBX";
-    case FileFormat::kDae: return "COLLADA";
-    case FileFormat::kUnknown: break;
+    case FileFormat::kObj:
+      return "OBJ";
+    case FileFormat::kOff:
+      return "OFF";
+    case FileFormat::kWrl:
+      return "VRML";
+    case FileFormat::kPly:
+      return "PLY";
+    case FileFormat::kStl:
+      return "STL";
+    case FileFormat::kGltf:
+      return "glTF";
+    case FileFormat::kGlb:
+      return "GLB";
+    case FileFormat::kFbx:
+      return "FBX";
+    case FileFormat::kDae:
+      return "COLLADA";
+    case FileFormat::kUnknown:
+      break;
   }
   return "unknown";
 }
@@ -86,28 +100,34 @@ Result<Scene> ReadScene(const std::string& path) {
   if (HasOwnParser(format)) {
     ObjParseOptions obj_options;
     const std::string folder = Folder(path);
-    obj_options.load_material_library = [folder](const std::string& library) -> Result<std::string> {
+    obj_options.load_material_library =
+        [folder](const std::string& library) -> Result<std::string> {
       Result<std::vector<uint8_t>> mtl = ReadFileBytes(folder + library);
       if (!mtl.ok()) return mtl.status();
       return std::string(mtl.value().begin(), mtl.value().end());
     };
-    return RequireTriangles(ParseOwnFormat(bytes.value().data(), bytes.value().size(), format, path, obj_options), path);
+    return RequireTriangles(
+        ParseOwnFormat(bytes.value().data(), bytes.value().size(), format, path, obj_options),
+        path);
   }
   if (format == FileFormat::kGlb || format == FileFormat::kGltf) {
     // The project's own hardened reader; it also decodes HULLPACK_mesh_compression primitives.
     // External buffers resolve next to the file.
-    return RequireTriangles(
-        ReadPackedGltf(bytes.value().data(), bytes.value().size(), path, Folder(path).empty() ? "." : Folder(path), nullptr),
-        path);
+    return RequireTriangles(ReadPackedGltf(bytes.value().data(), bytes.value().size(), path,
+                                           Folder(path).empty() ? "." : Folder(path), nullptr),
+                            path);
   }
   // Through the file name, so that assimp finds companion files.
   return RequireTriangles(ReadWithAssimp(path, format), path);
 }
 
-Result<Scene> ReadSceneFromMemory(const uint8_t* data, size_t size, FileFormat format, const std::string& name) {
-  if (format == FileFormat::kUnknown) return Status(StatusCode::kUnknownFormat, name + ": unknown format");
+Result<Scene> ReadSceneFromMemory(const uint8_t* data, size_t size, FileFormat format,
+                                  const std::string& name) {
+  if (format == FileFormat::kUnknown)
+    return Status(StatusCode::kUnknownFormat, name + ": unknown format");
   if (size == 0) return Status(StatusCode::kParseError, name + ": empty file");
-  if (HasOwnParser(format)) return RequireTriangles(ParseOwnFormat(data, size, format, name, {}), name);
+  if (HasOwnParser(format))
+    return RequireTriangles(ParseOwnFormat(data, size, format, name, {}), name);
   if (format == FileFormat::kGlb || format == FileFormat::kGltf) {
     return RequireTriangles(ReadPackedGltf(data, size, name, "", nullptr), name);
   }
@@ -117,20 +137,28 @@ Result<Scene> ReadSceneFromMemory(const uint8_t* data, size_t size, FileFormat f
 Result<std::vector<uint8_t>> EncodeScene(const Scene& scene, FileFormat format) {
   auto bytes = [](std::string s) { return std::vector<uint8_t>(s.begin(), s.end()); };
   switch (format) {
-    case FileFormat::kObj: return bytes(EncodeObj(scene));
-    case FileFormat::kOff: return bytes(EncodeOff(scene));
-    case FileFormat::kWrl: return bytes(EncodeWrl(scene));
-    case FileFormat::kPly: return EncodePly(scene);
-    case FileFormat::kGlb: return EncodeGlb(scene);
-    default: break;
+    case FileFormat::kObj:
+      return bytes(EncodeObj(scene));
+    case FileFormat::kOff:
+      return bytes(EncodeOff(scene));
+    case FileFormat::kWrl:
+      return bytes(EncodeWrl(scene));
+    case FileFormat::kPly:
+      return EncodePly(scene);
+    case FileFormat::kGlb:
+      return EncodeGlb(scene);
+    default:
+      break;
   }
-  return Status(StatusCode::kUnsupported, std::string("writing ") + FormatName(format) + " is not supported");
+  return Status(StatusCode::kUnsupported,
+                std::string("writing ") + FormatName(format) + " is not supported");
 }
 
 Status WriteScene(const Scene& scene, const std::string& path) {
   const FileFormat format = FormatFromExtension(path);
   if (format == FileFormat::kUnknown) {
-    return Status(StatusCode::kUnknownFormat, path + ": unknown output format (writes .obj .off .wrl .ply .glb)");
+    return Status(StatusCode::kUnknownFormat,
+                  path + ": unknown output format (writes .obj .off .wrl .ply .glb)");
   }
   Result<std::vector<uint8_t>> bytes = EncodeScene(scene, format);
   if (!bytes.ok()) return Status(bytes.status().code(), path + ": " + bytes.status().message());

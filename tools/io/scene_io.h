@@ -1,12 +1,14 @@
 // Reading and writing whole scenes, dispatched by file extension (and, for reading, by content).
 //
-// Readers: OBJ (+MTL), OFF, VRML .wrl and glTF/GLB use the project's own parsers (GLB files packed by
-// `hullpack pack` are decoded on the way in); FBX, DAE, PLY and STL go through assimp. Every reader triangulates polygons, keeps what the scene model can hold and
-// lists in Scene::dropped what it could not keep. Errors name the file and the problem.
+// Readers: OBJ (+MTL), OFF, VRML .wrl and glTF/GLB use the project's own parsers (GLB files packed
+// by `hullpack pack` are decoded on the way in); FBX, DAE, PLY and STL go through assimp. Every
+// reader triangulates polygons, keeps what the scene model can hold and lists in Scene::dropped
+// what it could not keep. Errors name the file and the problem.
 //
-// Writers: .obj (one `o` group per mesh, `usemtl` per material id), .off, .wrl (one Shape per mesh),
-// .ply (binary little-endian) and .glb (plain, uncompressed glTF 2.0). A hull set is written as a scene
-// with one mesh per hull. Writes go to a temporary file in the target folder, then rename.
+// Writers: .obj (one `o` group per mesh, `usemtl` per material id), .off, .wrl (one Shape per
+// mesh), .ply (binary little-endian) and .glb (plain, uncompressed glTF 2.0). A hull set is written
+// as a scene with one mesh per hull. Writes go to a temporary file in the target folder, then
+// rename.
 #ifndef HULLPACK_TOOLS_IO_SCENE_IO_H_
 #define HULLPACK_TOOLS_IO_SCENE_IO_H_
 

@@ -14,7 +14,8 @@ void ShapeColor(size_t i, float rgb[3]) {
   const double f = (h - static_cast<int64_t>(h)) * 6.0;
   const int sector = static_cast<int>(f);
   const float x = static_cast<float>(f - sector);
-  const float table[6][3] = {{1, x, 0}, {1 - x, 1, 0}, {0, 1, x}, {0, 1 - x, 1}, {x, 0, 1}, {1, 0, 1 - x}};
+  const float table[6][3] = {{1, x, 0},     {1 - x, 1, 0}, {0, 1, x},
+                             {0, 1 - x, 1}, {x, 0, 1},     {1, 0, 1 - x}};
   for (int k = 0; k < 3; ++k) rgb[k] = 0.25f + 0.7f * table[sector % 6][k];
 }
 
@@ -27,17 +28,20 @@ std::string EncodeWrl(const Scene& scene) {
     const Mesh& m = scene.meshes[mi];
     float rgb[3];
     ShapeColor(mi, rgb);
-    w << "DEF " << "shape_" << static_cast<uint64_t>(mi) << " Shape {\n"
-      << "  appearance Appearance {\n    material Material {\n      diffuseColor " << rgb[0] << ' ' << rgb[1]
-      << ' ' << rgb[2] << "\n      transparency 0.5\n    }\n  }\n"
+    w << "DEF "
+      << "shape_" << static_cast<uint64_t>(mi) << " Shape {\n"
+      << "  appearance Appearance {\n    material Material {\n      diffuseColor " << rgb[0] << ' '
+      << rgb[1] << ' ' << rgb[2] << "\n      transparency 0.5\n    }\n  }\n"
       << "  geometry IndexedFaceSet {\n    ccw TRUE\n    solid TRUE\n    convex TRUE\n"
       << "    coord Coordinate {\n      point [\n";
     for (size_t i = 0; i < m.vertex_count(); ++i) {
-      w << "        " << m.positions[i * 3] << ' ' << m.positions[i * 3 + 1] << ' ' << m.positions[i * 3 + 2] << ",\n";
+      w << "        " << m.positions[i * 3] << ' ' << m.positions[i * 3 + 1] << ' '
+        << m.positions[i * 3 + 2] << ",\n";
     }
     w << "      ]\n    }\n    coordIndex [\n";
     for (size_t t = 0; t < m.triangle_count(); ++t) {
-      w << "      " << m.indices[t * 3] << ", " << m.indices[t * 3 + 1] << ", " << m.indices[t * 3 + 2] << ", -1,\n";
+      w << "      " << m.indices[t * 3] << ", " << m.indices[t * 3 + 1] << ", "
+        << m.indices[t * 3 + 2] << ", -1,\n";
     }
     w << "    ]\n  }\n}\n";
   }
@@ -47,10 +51,13 @@ std::string EncodeWrl(const Scene& scene) {
 Result<Scene> ParseWrl(const char* data, size_t size, const std::string& name) {
   TextScanner s(data, data + size);
   auto error = [&](const std::string& what) {
-    return Status(StatusCode::kParseError, name + ": line " + std::to_string(s.line()) + ": " + what);
+    return Status(StatusCode::kParseError,
+                  name + ": line " + std::to_string(s.line()) + ": " + what);
   };
-  if (size < 10 || std::strncmp(data, "#VRML V2.0", 10) != 0) return error("missing '#VRML V2.0' header");
-  if (std::memchr(data, '\0', size) != nullptr) return error("binary data (NUL byte): not a VRML file");
+  if (size < 10 || std::strncmp(data, "#VRML V2.0", 10) != 0)
+    return error("missing '#VRML V2.0' header");
+  if (std::memchr(data, '\0', size) != nullptr)
+    return error("binary data (NUL byte): not a VRML file");
   Scene scene;
   Mesh mesh;
   bool have_points = false;
@@ -58,7 +65,8 @@ Result<Scene> ParseWrl(const char* data, size_t size, const std::string& name) {
     if (!have_points) return Status::Ok();
     for (uint32_t i : mesh.indices) {
       if (i >= mesh.vertex_count()) {
-        return error("coordIndex " + std::to_string(i) + " out of range (" + std::to_string(mesh.vertex_count()) + " points)");
+        return error("coordIndex " + std::to_string(i) + " out of range (" +
+                     std::to_string(mesh.vertex_count()) + " points)");
       }
     }
     scene.source_vertex_records += mesh.vertex_count();
@@ -121,7 +129,9 @@ Result<Scene> ParseWrl(const char* data, size_t size, const std::string& name) {
   }
   Status st = finish_mesh();
   if (!st.ok()) return st;
-  if (short_faces) scene.dropped.push_back(std::to_string(short_faces) + " faces with fewer than 3 corners not kept");
+  if (short_faces)
+    scene.dropped.push_back(std::to_string(short_faces) +
+                            " faces with fewer than 3 corners not kept");
   AddRootNodeForAllMeshes(scene, name);
   return scene;
 }

@@ -4,7 +4,8 @@ namespace hullpack {
 
 Mesh MergeMeshes(const Scene& scene) {
   Mesh all;
-  bool normals = !scene.meshes.empty(), uvs = normals, colors = normals, skin = normals, materials = false;
+  bool normals = !scene.meshes.empty(), uvs = normals, colors = normals, skin = normals,
+       materials = false;
   for (const Mesh& m : scene.meshes) {
     normals = normals && !m.normals.empty();
     uvs = uvs && !m.uv_sets.empty();

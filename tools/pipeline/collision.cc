@@ -14,7 +14,8 @@ vhacd::Parameters PackCollisionParameters() {
 
 bool NameMarksNonColliding(const std::string& name) {
   std::string lower(name);
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   for (const char* mark : {"nocol", "no_col", "no-col", "nocollision", "-noimp"}) {
     if (lower.find(mark) != std::string::npos) return true;
   }
@@ -23,22 +24,28 @@ bool NameMarksNonColliding(const std::string& name) {
 
 std::string WhyNoHulls(const Mesh& mesh, const CollisionSettings& settings) {
   switch (settings.policy) {
-    case HullPolicy::kAll: return "";
-    case HullPolicy::kNone: return "--hulls none";
-    case HullPolicy::kAuto: break;
+    case HullPolicy::kAll:
+      return "";
+    case HullPolicy::kNone:
+      return "--hulls none";
+    case HullPolicy::kAuto:
+      break;
   }
   if (!mesh.collides) return "marked non-colliding in the source";
   if (NameMarksNonColliding(mesh.name)) return "named non-colliding ('" + mesh.name + "')";
-  if (mesh.has_skin() && !settings.skinned_meshes) return "skinned (use --hulls all to decompose its bind pose)";
+  if (mesh.has_skin() && !settings.skinned_meshes)
+    return "skinned (use --hulls all to decompose its bind pose)";
   return "";
 }
 
-Result<HullSet> DecomposeMesh(const Mesh& mesh, const vhacd::Parameters& parameters, vhacd::Observer* observer) {
-  const vhacd::MeshView view =
-      vhacd::MeshView::FromFloat(mesh.positions.data(), mesh.vertex_count(), mesh.indices.data(), mesh.triangle_count());
+Result<HullSet> DecomposeMesh(const Mesh& mesh, const vhacd::Parameters& parameters,
+                              vhacd::Observer* observer) {
+  const vhacd::MeshView view = vhacd::MeshView::FromFloat(
+      mesh.positions.data(), mesh.vertex_count(), mesh.indices.data(), mesh.triangle_count());
   vhacd::Result r = vhacd::Decompose(view, parameters, observer);
   if (!r.ok()) {
-    const StatusCode code = r.status == vhacd::Status::kCancelled ? StatusCode::kCancelled : StatusCode::kInvalidMesh;
+    const StatusCode code =
+        r.status == vhacd::Status::kCancelled ? StatusCode::kCancelled : StatusCode::kInvalidMesh;
     return Status(code, "mesh '" + mesh.name + "': decomposition: " + vhacd::StatusName(r.status) +
                             (r.message.empty() ? "" : " (" + r.message + ")"));
   }

@@ -46,7 +46,8 @@ struct HullSet {
 
 // Decomposes `mesh` with the settings' parameters. `observer` (may be null) gets progress and
 // can cancel.
-Result<HullSet> DecomposeMesh(const Mesh& mesh, const vhacd::Parameters& parameters, vhacd::Observer* observer);
+Result<HullSet> DecomposeMesh(const Mesh& mesh, const vhacd::Parameters& parameters,
+                              vhacd::Observer* observer);
 
 }  // namespace hullpack
 

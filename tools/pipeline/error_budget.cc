@@ -8,7 +8,9 @@ namespace hullpack {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double Seconds(Clock::time_point since) { return std::chrono::duration<double>(Clock::now() - since).count(); }
+double Seconds(Clock::time_point since) {
+  return std::chrono::duration<double>(Clock::now() - since).count();
+}
 
 // A measured error this far below the budget makes one bit fewer worth a try (one bit fewer about
 // doubles the error).
@@ -23,23 +25,35 @@ struct Candidate {
 
 const char* RangeModeName(o3dgc::RangeMode mode) {
   switch (mode) {
-    case o3dgc::RangeMode::kUniform: return "uniform";
-    case o3dgc::RangeMode::kPerAxis: return "per-axis";
-    case o3dgc::RangeMode::kDiagonal: return "diagonal";
+    case o3dgc::RangeMode::kUniform:
+      return "uniform";
+    case o3dgc::RangeMode::kPerAxis:
+      return "per-axis";
+    case o3dgc::RangeMode::kDiagonal:
+      return "diagonal";
   }
   return "?";
 }
 
-int GuaranteedPositionBits(o3dgc::RangeMode mode, const std::array<double, 3>& extent, double max_error) {
+int GuaranteedPositionBits(o3dgc::RangeMode mode, const std::array<double, 3>& extent,
+                           double max_error) {
   const double largest = std::max({extent[0], extent[1], extent[2]});
-  const double diagonal = std::sqrt(extent[0] * extent[0] + extent[1] * extent[1] + extent[2] * extent[2]);
+  const double diagonal =
+      std::sqrt(extent[0] * extent[0] + extent[1] * extent[1] + extent[2] * extent[2]);
   double reach = 0;  // the bound is reach / (2^b - 1)
   switch (mode) {
-    case o3dgc::RangeMode::kUniform: reach = std::sqrt(3.0) / 2 * largest; break;
-    case o3dgc::RangeMode::kPerAxis: reach = diagonal / 2; break;
-    case o3dgc::RangeMode::kDiagonal: reach = std::sqrt(3.0) / 2 * diagonal; break;
+    case o3dgc::RangeMode::kUniform:
+      reach = std::sqrt(3.0) / 2 * largest;
+      break;
+    case o3dgc::RangeMode::kPerAxis:
+      reach = diagonal / 2;
+      break;
+    case o3dgc::RangeMode::kDiagonal:
+      reach = std::sqrt(3.0) / 2 * diagonal;
+      break;
   }
-  if (!(reach > 0) || !(max_error > 0) || !std::isfinite(reach) || !std::isfinite(max_error)) return 1;
+  if (!(reach > 0) || !(max_error > 0) || !std::isfinite(reach) || !std::isfinite(max_error))
+    return 1;
   const int bits = static_cast<int>(std::ceil(std::log2(reach / max_error + 1.0)));
   return std::clamp(bits, 1, 30);
 }
@@ -66,10 +80,12 @@ Result<BudgetedEncoding> EncodeWithinError(const Mesh& mesh, const std::vector<u
     ++tried;
     Candidate c;
     t = Clock::now();
-    Result<Mesh> decoded = DecodeMesh(encoded->stream.data(), encoded->stream.size(), &c.e.groups, mesh.name);
+    Result<Mesh> decoded =
+        DecodeMesh(encoded->stream.data(), encoded->stream.size(), &c.e.groups, mesh.name);
     c.e.seconds_decode = Seconds(t);
     if (!decoded.ok()) {
-      return Status(StatusCode::kInternal, "mesh '" + mesh.name + "' does not decode: " + decoded.status().message());
+      return Status(StatusCode::kInternal,
+                    "mesh '" + mesh.name + "' does not decode: " + decoded.status().message());
     }
     c.e.max_error = MaxVertexDistance(mesh, decoded.value());
     c.ok = c.e.max_error <= max_error;
@@ -83,7 +99,8 @@ Result<BudgetedEncoding> EncodeWithinError(const Mesh& mesh, const std::vector<u
   const std::array<double, 3> extent = PositionExtent(mesh);
   const int uniform_bits = GuaranteedPositionBits(o3dgc::RangeMode::kUniform, extent, max_error);
   Candidate best;
-  for (o3dgc::RangeMode mode : {o3dgc::RangeMode::kPerAxis, o3dgc::RangeMode::kUniform, o3dgc::RangeMode::kDiagonal}) {
+  for (o3dgc::RangeMode mode :
+       {o3dgc::RangeMode::kPerAxis, o3dgc::RangeMode::kUniform, o3dgc::RangeMode::kDiagonal}) {
     int bits = GuaranteedPositionBits(mode, extent, max_error);
     // With more bits than kUniform needs, the diagonal grid is finer than the uniform one.
     if (mode == o3dgc::RangeMode::kDiagonal && bits > uniform_bits) continue;
@@ -101,10 +118,12 @@ Result<BudgetedEncoding> EncodeWithinError(const Mesh& mesh, const std::vector<u
       c = std::move(fewer);
       --bits;
     }
-    if (c->ok && (!best.ok || c->e.encoded.stream.size() < best.e.encoded.stream.size())) best = std::move(c.value());
+    if (c->ok && (!best.ok || c->e.encoded.stream.size() < best.e.encoded.stream.size()))
+      best = std::move(c.value());
   }
   if (!best.ok) {
-    return Status(StatusCode::kInternal, "mesh '" + mesh.name + "': no position grid keeps the error within the budget");
+    return Status(StatusCode::kInternal,
+                  "mesh '" + mesh.name + "': no position grid keeps the error within the budget");
   }
   best.e.streams_tried = tried;
   best.e.seconds_encode = seconds_encode;

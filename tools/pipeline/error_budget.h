@@ -24,7 +24,8 @@
 namespace hullpack {
 
 // Fewest bits (1..30) for which `mode` guarantees the bound above for a mesh of per-axis `extent`.
-int GuaranteedPositionBits(o3dgc::RangeMode mode, const std::array<double, 3>& extent, double max_error);
+int GuaranteedPositionBits(o3dgc::RangeMode mode, const std::array<double, 3>& extent,
+                           double max_error);
 
 // "uniform", "per-axis", "diagonal".
 const char* RangeModeName(o3dgc::RangeMode mode);
@@ -35,10 +36,10 @@ struct BudgetedEncoding {
   std::vector<uint32_t> groups;  // its decoded triangle groups
   int position_bits = 0;
   o3dgc::RangeMode position_range = o3dgc::RangeMode::kUniform;
-  double max_error = 0;          // reached, model units
+  double max_error = 0;  // reached, model units
   int streams_tried = 0;
-  double seconds_encode = 0;     // all candidates
-  double seconds_decode = 0;     // the chosen stream
+  double seconds_encode = 0;  // all candidates
+  double seconds_decode = 0;  // the chosen stream
 };
 
 // `settings` gives everything but the position grid. `max_error` > 0, model units (or 0 for a

@@ -14,12 +14,13 @@ Mesh WeldAcrossHulls(const std::vector<Mesh>& hulls, std::vector<uint32_t>* grou
   Mesh out;
   groups->clear();
   std::map<std::array<float, 3>, std::vector<uint32_t>> at;  // position -> welded vertices there
-  std::vector<uint32_t> last_hull;                            // per welded vertex: last hull using it
+  std::vector<uint32_t> last_hull;  // per welded vertex: last hull using it
   for (size_t h = 0; h < hulls.size(); ++h) {
     const Mesh& hull = hulls[h];
     std::vector<uint32_t> index(hull.vertex_count());
     for (size_t v = 0; v < hull.vertex_count(); ++v) {
-      const std::array<float, 3> p = {hull.positions[v * 3], hull.positions[v * 3 + 1], hull.positions[v * 3 + 2]};
+      const std::array<float, 3> p = {hull.positions[v * 3], hull.positions[v * 3 + 1],
+                                      hull.positions[v * 3 + 2]};
       std::vector<uint32_t>& there = at[p];
       uint32_t chosen = UINT32_MAX;
       for (uint32_t w : there) {
@@ -46,7 +47,8 @@ Mesh WeldAcrossHulls(const std::vector<Mesh>& hulls, std::vector<uint32_t>* grou
 namespace {
 
 // Encodes `all` (hull h = triangle group h) within the budget and extracts the hulls again.
-Result<EncodedHulls> EncodeGrouped(const Mesh& all, const std::vector<uint32_t>& groups, const std::vector<Mesh>& hulls,
+Result<EncodedHulls> EncodeGrouped(const Mesh& all, const std::vector<uint32_t>& groups,
+                                   const std::vector<Mesh>& hulls,
                                    const MeshCodecSettings& settings, double max_error) {
   Result<BudgetedEncoding> chosen = EncodeWithinError(all, groups, settings, max_error);
   if (!chosen.ok()) return chosen.status();
@@ -54,24 +56,29 @@ Result<EncodedHulls> EncodeGrouped(const Mesh& all, const std::vector<uint32_t>&
   out.position_bits = chosen->position_bits;
   out.position_range = chosen->position_range;
   out.stream_vertices = all.vertex_count();
-  // Per hull: the error a physics engine sees (EncodeWithinError measured it over all hulls' points).
+  // Per hull: the error a physics engine sees (EncodeWithinError measured it over all hulls'
+  // points).
   for (size_t h = 0; h < hulls.size(); ++h) {
     out.decoded.push_back(ExtractGroup(chosen->decoded, chosen->groups, static_cast<uint32_t>(h)));
     if (out.decoded[h].vertex_count() != hulls[h].vertex_count()) {
-      return Status(StatusCode::kInternal, "hull " + std::to_string(h) + " lost vertices in its stream");
+      return Status(StatusCode::kInternal,
+                    "hull " + std::to_string(h) + " lost vertices in its stream");
     }
     out.max_error = std::max(out.max_error, MaxVertexDistance(hulls[h], out.decoded[h]));
   }
-  if (out.max_error > max_error) return Status(StatusCode::kInternal, "hull vertices moved beyond their budget");
+  if (out.max_error > max_error)
+    return Status(StatusCode::kInternal, "hull vertices moved beyond their budget");
   out.encoded = std::move(chosen->encoded);
   return out;
 }
 
 }  // namespace
 
-Result<EncodedHulls> EncodeHulls(const std::vector<Mesh>& hulls, const MeshCodecSettings& settings, double max_error) {
+Result<EncodedHulls> EncodeHulls(const std::vector<Mesh>& hulls, const MeshCodecSettings& settings,
+                                 double max_error) {
   if (hulls.empty()) return Status(StatusCode::kInvalidArgument, "no hulls to encode");
-  if (!(max_error > 0) || !std::isfinite(max_error)) return Status(StatusCode::kInvalidArgument, "error budget must be positive");
+  if (!(max_error > 0) || !std::isfinite(max_error))
+    return Status(StatusCode::kInvalidArgument, "error budget must be positive");
   Mesh all;
   std::vector<uint32_t> groups;
   for (size_t h = 0; h < hulls.size(); ++h) {

@@ -18,8 +18,8 @@
 namespace hullpack {
 
 struct EncodedHulls {
-  EncodedMesh encoded;         // one stream; triangle group h holds hull h
-  std::vector<Mesh> decoded;   // hull h as a decoder extracts group h (ExtractGroup)
+  EncodedMesh encoded;        // one stream; triangle group h holds hull h
+  std::vector<Mesh> decoded;  // hull h as a decoder extracts group h (ExtractGroup)
   int position_bits = 0;
   o3dgc::RangeMode position_range = o3dgc::RangeMode::kUniform;
   double max_error = 0;        // largest hull vertex error reached, model units
@@ -29,7 +29,8 @@ struct EncodedHulls {
 
 // Encodes `hulls` (closed meshes, positions and indices only) so that every hull vertex moves by
 // at most `max_error` (model units, > 0). Hull names are not kept.
-Result<EncodedHulls> EncodeHulls(const std::vector<Mesh>& hulls, const MeshCodecSettings& settings, double max_error);
+Result<EncodedHulls> EncodeHulls(const std::vector<Mesh>& hulls, const MeshCodecSettings& settings,
+                                 double max_error);
 
 // One mesh of all `hulls` where bitwise-equal positions of different hulls share one vertex (never
 // two vertices of one hull), and `groups` gets the hull index of every triangle.

@@ -11,8 +11,8 @@
 namespace hullpack {
 namespace {
 
-o3dgc::FloatAttributeView FloatView(const std::vector<float>& values, uint32_t dimension, o3dgc::Semantic semantic,
-                                    int bits) {
+o3dgc::FloatAttributeView FloatView(const std::vector<float>& values, uint32_t dimension,
+                                    o3dgc::Semantic semantic, int bits) {
   o3dgc::FloatAttributeView v;
   v.data = values.data();
   v.stride = dimension * sizeof(float);
@@ -24,7 +24,8 @@ o3dgc::FloatAttributeView FloatView(const std::vector<float>& values, uint32_t d
 
 }  // namespace
 
-Result<EncodedMesh> EncodeMesh(const Mesh& mesh, const std::vector<uint32_t>& groups, const MeshCodecSettings& s) {
+Result<EncodedMesh> EncodeMesh(const Mesh& mesh, const std::vector<uint32_t>& groups,
+                               const MeshCodecSettings& s) {
   EncodedMesh out;
   o3dgc::MeshView view;
   view.positions = mesh.positions.data();
@@ -40,24 +41,28 @@ Result<EncodedMesh> EncodeMesh(const Mesh& mesh, const std::vector<uint32_t>& gr
     out.gltf_attributes.emplace_back("NORMAL", id++);
   }
   for (size_t k = 0; k < mesh.uv_sets.size(); ++k) {
-    view.float_attributes.push_back(FloatView(mesh.uv_sets[k], 2, o3dgc::Semantic::kTexCoord, s.uv_bits));
+    view.float_attributes.push_back(
+        FloatView(mesh.uv_sets[k], 2, o3dgc::Semantic::kTexCoord, s.uv_bits));
     out.gltf_attributes.emplace_back("TEXCOORD_" + std::to_string(k), id++);
   }
   if (!mesh.colors.empty()) {
-    view.float_attributes.push_back(FloatView(mesh.colors, 4, o3dgc::Semantic::kColor, s.color_bits));
+    view.float_attributes.push_back(
+        FloatView(mesh.colors, 4, o3dgc::Semantic::kColor, s.color_bits));
     out.gltf_attributes.emplace_back("COLOR_0", id++);
   }
   if (!mesh.weights.empty()) {
     // Skin weights are constant over large regions: the previous vertex predicts them better than
     // a parallelogram does. One range for the four (all in [0, 1]), as glTF's Draco extension has.
-    o3dgc::FloatAttributeView w = FloatView(mesh.weights, 4, o3dgc::Semantic::kWeight, s.weight_bits);
+    o3dgc::FloatAttributeView w =
+        FloatView(mesh.weights, 4, o3dgc::Semantic::kWeight, s.weight_bits);
     w.prediction = o3dgc::Prediction::kDifferential;
     w.range = o3dgc::RangeMode::kUniform;
     view.float_attributes.push_back(w);
     out.gltf_attributes.emplace_back("WEIGHTS_0", id++);
   }
   if (!mesh.tangents.empty()) {
-    view.float_attributes.push_back(FloatView(mesh.tangents, 4, o3dgc::Semantic::kGeneric, s.tangent_bits));
+    view.float_attributes.push_back(
+        FloatView(mesh.tangents, 4, o3dgc::Semantic::kGeneric, s.tangent_bits));
     out.gltf_attributes.emplace_back("TANGENT", id++);
   }
   std::vector<int32_t> joints(mesh.joints.begin(), mesh.joints.end());
@@ -71,8 +76,9 @@ Result<EncodedMesh> EncodeMesh(const Mesh& mesh, const std::vector<uint32_t>& gr
   }
   if (!groups.empty()) {
     if (groups.size() != mesh.triangle_count()) {
-      return Status(StatusCode::kInvalidArgument, "triangle groups: " + std::to_string(groups.size()) +
-                                                      " for " + std::to_string(mesh.triangle_count()) + " triangles");
+      return Status(StatusCode::kInvalidArgument,
+                    "triangle groups: " + std::to_string(groups.size()) + " for " +
+                        std::to_string(mesh.triangle_count()) + " triangles");
     }
     view.triangle_groups = groups.data();
   }
@@ -85,19 +91,21 @@ Result<EncodedMesh> EncodeMesh(const Mesh& mesh, const std::vector<uint32_t>& gr
   params.normal_bits = s.normal_bits;
   const o3dgc::Status st = o3dgc::Encode(view, params, &out.stream, &out.info);
   if (st != o3dgc::Status::kOk) {
-    return Status(StatusCode::kInvalidMesh, std::string("mesh '") + mesh.name + "': encoder: " + o3dgc::StatusName(st));
+    return Status(StatusCode::kInvalidMesh,
+                  std::string("mesh '") + mesh.name + "': encoder: " + o3dgc::StatusName(st));
   }
   return out;
 }
 
-Result<Mesh> DecodeMesh(const uint8_t* data, size_t size, std::vector<uint32_t>* groups, const std::string& name,
-                        o3dgc::StreamInfo* info) {
+Result<Mesh> DecodeMesh(const uint8_t* data, size_t size, std::vector<uint32_t>* groups,
+                        const std::string& name, o3dgc::StreamInfo* info) {
   o3dgc::DecodedMesh d;
   o3dgc::StreamInfo local_info;
   if (!info) info = &local_info;
   const o3dgc::Status st = o3dgc::Decode(data, size, o3dgc::DecodeOptions(), &d, info);
   if (st != o3dgc::Status::kOk) {
-    return Status(StatusCode::kParseError, name + ": compressed mesh stream: " + o3dgc::StatusName(st));
+    return Status(StatusCode::kParseError,
+                  name + ": compressed mesh stream: " + o3dgc::StatusName(st));
   }
   // The original Open3DGC tool coded texture coordinates as OBJ has them (v up); the scene model,
   // like glTF, has v down.
@@ -124,11 +132,14 @@ Result<Mesh> DecodeMesh(const uint8_t* data, size_t size, std::vector<uint32_t>*
     }
   }
   for (const o3dgc::DecodedIntAttribute& a : d.int_attributes) {
-    if (a.semantic != o3dgc::Semantic::kJointId || a.dimension != 4 || a.values.size() != n * 4) continue;
+    if (a.semantic != o3dgc::Semantic::kJointId || a.dimension != 4 || a.values.size() != n * 4)
+      continue;
     m.joints.resize(a.values.size());
     for (size_t i = 0; i < a.values.size(); ++i) {
       const int32_t j = a.values[i];
-      if (j < 0 || j > 65535) return Status(StatusCode::kParseError, name + ": joint index " + std::to_string(j) + " out of range");
+      if (j < 0 || j > 65535)
+        return Status(StatusCode::kParseError,
+                      name + ": joint index " + std::to_string(j) + " out of range");
       m.joints[i] = static_cast<uint16_t>(j);
     }
   }
@@ -154,7 +165,8 @@ Mesh ExtractGroup(const Mesh& mesh, const std::vector<uint32_t>& groups, uint32_
   auto gather = [&](const std::vector<float>& src, size_t width, std::vector<float>& dst) {
     if (src.empty()) return;
     dst.resize(kept.size() * width);
-    for (size_t i = 0; i < kept.size(); ++i) std::copy_n(&src[kept[i] * width], width, &dst[i * width]);
+    for (size_t i = 0; i < kept.size(); ++i)
+      std::copy_n(&src[kept[i] * width], width, &dst[i * width]);
   };
   gather(mesh.positions, 3, out.positions);
   gather(mesh.normals, 3, out.normals);
@@ -167,7 +179,8 @@ Mesh ExtractGroup(const Mesh& mesh, const std::vector<uint32_t>& groups, uint32_
   }
   if (!mesh.joints.empty()) {
     out.joints.resize(kept.size() * 4);
-    for (size_t i = 0; i < kept.size(); ++i) std::copy_n(&mesh.joints[kept[i] * 4], 4, &out.joints[i * 4]);
+    for (size_t i = 0; i < kept.size(); ++i)
+      std::copy_n(&mesh.joints[kept[i] * 4], 4, &out.joints[i * 4]);
   }
   for (size_t t = 0; t < mesh.triangle_count(); ++t) {
     if (groups[t] != group) continue;
@@ -178,7 +191,8 @@ Mesh ExtractGroup(const Mesh& mesh, const std::vector<uint32_t>& groups, uint32_
 }
 
 int PositionBitsForMaxError(double range, double max_error) {
-  if (!(range > 0) || !(max_error > 0) || !std::isfinite(range) || !std::isfinite(max_error)) return 14;
+  if (!(range > 0) || !(max_error > 0) || !std::isfinite(range) || !std::isfinite(max_error))
+    return 14;
   // Uniform cells of side range / (2^b - 1); the farthest a point lies from its cell centre is
   // half the cell diagonal: sqrt(3) / 2 * side.
   const double cells = std::sqrt(3.0) * range / (2.0 * max_error);
@@ -233,11 +247,13 @@ class VertexGrid {
       for (int64_t x = c[0] - r; x <= c[0] + r; ++x) {
         for (int64_t y = c[1] - r; y <= c[1] + r; ++y) {
           for (int64_t z = c[2] - r; z <= c[2] + r; ++z) {
-            if (std::max({std::llabs(x - c[0]), std::llabs(y - c[1]), std::llabs(z - c[2])}) != r) continue;
+            if (std::max({std::llabs(x - c[0]), std::llabs(y - c[1]), std::llabs(z - c[2])}) != r)
+              continue;
             auto it = cells_.find(Key({x, y, z}));
             if (it == cells_.end()) continue;
             for (uint32_t i : it->second) {
-              const double dx = double(p_[i * 3]) - q[0], dy = double(p_[i * 3 + 1]) - q[1], dz = double(p_[i * 3 + 2]) - q[2];
+              const double dx = double(p_[i * 3]) - q[0], dy = double(p_[i * 3 + 1]) - q[1],
+                           dz = double(p_[i * 3 + 2]) - q[2];
               best = std::min(best, dx * dx + dy * dy + dz * dz);
             }
           }
@@ -247,7 +263,8 @@ class VertexGrid {
     }
     if (!std::isfinite(best)) {  // the query lies far outside the grid: look at every point
       for (size_t i = 0; i < p_.size() / 3; ++i) {
-        const double dx = double(p_[i * 3]) - q[0], dy = double(p_[i * 3 + 1]) - q[1], dz = double(p_[i * 3 + 2]) - q[2];
+        const double dx = double(p_[i * 3]) - q[0], dy = double(p_[i * 3 + 1]) - q[1],
+                     dz = double(p_[i * 3 + 2]) - q[2];
         best = std::min(best, dx * dx + dy * dy + dz * dz);
       }
     }
@@ -264,8 +281,8 @@ class VertexGrid {
     return c;
   }
   static uint64_t Key(const std::array<int64_t, 3>& c) {
-    return (static_cast<uint64_t>(c[0] & 0x1FFFFF) << 42) | (static_cast<uint64_t>(c[1] & 0x1FFFFF) << 21) |
-           static_cast<uint64_t>(c[2] & 0x1FFFFF);
+    return (static_cast<uint64_t>(c[0] & 0x1FFFFF) << 42) |
+           (static_cast<uint64_t>(c[1] & 0x1FFFFF) << 21) | static_cast<uint64_t>(c[2] & 0x1FFFFF);
   }
   const std::vector<float>& p_;
   double lo_[3], hi_[3], cell_ = 1;
@@ -277,12 +294,15 @@ double OneWay(const Mesh& from, const Mesh& to) {
   if (from.positions.empty() || to.positions.empty()) return 0;
   const VertexGrid grid(to.positions);
   double worst = 0;
-  for (size_t i = 0; i < from.vertex_count(); ++i) worst = std::max(worst, grid.Nearest(&from.positions[i * 3]));
+  for (size_t i = 0; i < from.vertex_count(); ++i)
+    worst = std::max(worst, grid.Nearest(&from.positions[i * 3]));
   return worst;
 }
 
 }  // namespace
 
-double MaxVertexDistance(const Mesh& a, const Mesh& b) { return std::max(OneWay(a, b), OneWay(b, a)); }
+double MaxVertexDistance(const Mesh& a, const Mesh& b) {
+  return std::max(OneWay(a, b), OneWay(b, a));
+}
 
 }  // namespace hullpack

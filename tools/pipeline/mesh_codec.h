@@ -1,5 +1,6 @@
 // The one place where a scene mesh meets the o3dgc codec: which attribute goes into the stream
-// under which semantic and id, how many bits each gets, and how a decoded stream becomes a mesh again.
+// under which semantic and id, how many bits each gets, and how a decoded stream becomes a mesh
+// again.
 //
 // Stream attribute ids (what HULLPACK_mesh_compression's `attributes` map points at, see
 // docs/packed-gltf.md): positions 0, normals next when present, then the float attributes
@@ -20,7 +21,7 @@ namespace hullpack {
 
 struct MeshCodecSettings {
   o3dgc::StreamType stream_type = o3dgc::StreamType::kBinary;
-  bool keep_order = false;  // true: decoded vertex and triangle order equal the input's
+  bool keep_order = false;   // true: decoded vertex and triangle order equal the input's
   bool fast_decode = false;  // o3dgc::EncodeParams::fast_decode
   int position_bits = 14;
   // How the position quantization cube is sized: kUniform (largest extent) or kDiagonal (the
@@ -45,11 +46,11 @@ struct EncodedMesh {
 Result<EncodedMesh> EncodeMesh(const Mesh& mesh, const std::vector<uint32_t>& groups,
                                const MeshCodecSettings& settings);
 
-// Decodes a stream into a mesh (name, material ids left empty) and its triangle groups. Skin weights
-// are normalized (NormalizeSkinWeights), as every decoder of packed files does. Streams of the
-// original Open3DGC tool (StreamFormat::kOpen3dgc2013) carry OBJ-convention texture coordinates:
-// their v is flipped into the scene model's (glTF) convention.
-// Safe on untrusted bytes; `name` prefixes error messages. `info` (may be null) gets the part sizes.
+// Decodes a stream into a mesh (name, material ids left empty) and its triangle groups. Skin
+// weights are normalized (NormalizeSkinWeights), as every decoder of packed files does. Streams of
+// the original Open3DGC tool (StreamFormat::kOpen3dgc2013) carry OBJ-convention texture
+// coordinates: their v is flipped into the scene model's (glTF) convention. Safe on untrusted
+// bytes; `name` prefixes error messages. `info` (may be null) gets the part sizes.
 Result<Mesh> DecodeMesh(const uint8_t* data, size_t size, std::vector<uint32_t>* groups,
                         const std::string& name, o3dgc::StreamInfo* info = nullptr);
 

@@ -11,7 +11,9 @@ namespace hullpack {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double Seconds(Clock::time_point since) { return std::chrono::duration<double>(Clock::now() - since).count(); }
+double Seconds(Clock::time_point since) {
+  return std::chrono::duration<double>(Clock::now() - since).count();
+}
 
 // Bytes of the plain accessors the GLB writer would write for `m`.
 size_t PlainGeometryBytes(const Mesh& m) {
@@ -36,7 +38,8 @@ class DecomposeProgress : public vhacd::Observer {
     const int percent = static_cast<int>(overall);
     if (percent == last_percent_) return;
     last_percent_ = percent;
-    observer_->OnProgress(from_ + (to_ - from_) * overall / 100.0, prefix_ + "decompose " + std::to_string(percent) + "% (" + stage + ")");
+    observer_->OnProgress(from_ + (to_ - from_) * overall / 100.0,
+                          prefix_ + "decompose " + std::to_string(percent) + "% (" + stage + ")");
   }
   bool IsCancelled() override { return observer_ && observer_->IsCancelled(); }
 
@@ -62,7 +65,8 @@ MeshCodecSettings SettingsFor(const PackOptions& options) {
 Result<BudgetedEncoding> EncodeRenderMesh(const Mesh& mesh, const PackOptions& options) {
   MeshCodecSettings s = SettingsFor(options);
   if (options.position_bits <= 0) {
-    return EncodeWithinError(mesh, mesh.material_ids, s, options.max_error * BoundingBoxDiagonal(mesh));
+    return EncodeWithinError(mesh, mesh.material_ids, s,
+                             options.max_error * BoundingBoxDiagonal(mesh));
   }
   BudgetedEncoding out;
   s.position_bits = options.position_bits;
@@ -71,8 +75,11 @@ Result<BudgetedEncoding> EncodeRenderMesh(const Mesh& mesh, const PackOptions& o
   if (!encoded.ok()) return encoded.status();
   out.seconds_encode = Seconds(t);
   t = Clock::now();
-  Result<Mesh> decoded = DecodeMesh(encoded->stream.data(), encoded->stream.size(), &out.groups, mesh.name);
-  if (!decoded.ok()) return Status(StatusCode::kInternal, "mesh '" + mesh.name + "' does not decode: " + decoded.status().message());
+  Result<Mesh> decoded =
+      DecodeMesh(encoded->stream.data(), encoded->stream.size(), &out.groups, mesh.name);
+  if (!decoded.ok())
+    return Status(StatusCode::kInternal,
+                  "mesh '" + mesh.name + "' does not decode: " + decoded.status().message());
   out.seconds_decode = Seconds(t);
   out.encoded = std::move(encoded.value());
   out.decoded = std::move(decoded.value());
@@ -88,8 +95,9 @@ struct PackedMesh {
   std::vector<Mesh> hulls;
 };
 
-Status PackHulls(const Mesh& mesh, const PackOptions& options, PackObserver* observer, double from, double to,
-                 const std::string& prefix, PackedStreams& streams, PackedMesh& packed, MeshPackReport& report) {
+Status PackHulls(const Mesh& mesh, const PackOptions& options, PackObserver* observer, double from,
+                 double to, const std::string& prefix, PackedStreams& streams, PackedMesh& packed,
+                 MeshPackReport& report) {
   const auto t0 = Clock::now();
   DecomposeProgress progress(observer, from, to, prefix);
   Result<HullSet> set = DecomposeMesh(mesh, options.collision.parameters, &progress);
@@ -103,8 +111,11 @@ Status PackHulls(const Mesh& mesh, const PackOptions& options, PackObserver* obs
   for (const Mesh& hull : set->hulls) report.hull_vertices += hull.vertex_count();
   const double diagonal = BoundingBoxDiagonal(mesh);
   const auto t1 = Clock::now();
-  Result<EncodedHulls> encoded = EncodeHulls(set->hulls, SettingsFor(options), options.hull_error * diagonal);
-  if (!encoded.ok()) return Status(encoded.status().code(), "mesh '" + mesh.name + "': hulls: " + encoded.status().message());
+  Result<EncodedHulls> encoded =
+      EncodeHulls(set->hulls, SettingsFor(options), options.hull_error * diagonal);
+  if (!encoded.ok())
+    return Status(encoded.status().code(),
+                  "mesh '" + mesh.name + "': hulls: " + encoded.status().message());
   report.seconds_hull_encode = Seconds(t1);
   report.hull_quantization_error = diagonal > 0 ? encoded->max_error / diagonal : 0;
   report.hull_position_bits = encoded->position_bits;
@@ -132,10 +143,12 @@ Result<PackResult> PackScene(Scene scene, const PackOptions& options, PackObserv
   if (!(options.max_error > 0) && options.position_bits <= 0) {
     return Status(StatusCode::kInvalidArgument, "--max-error must be positive (or give --qp)");
   }
-  if (!(options.hull_error > 0)) return Status(StatusCode::kInvalidArgument, "--hull-error must be positive");
+  if (!(options.hull_error > 0))
+    return Status(StatusCode::kInvalidArgument, "--hull-error must be positive");
   for (size_t i = 0; i < scene.meshes.size(); ++i) {
     Status valid = ValidateMesh(scene.meshes[i]);
-    if (!valid.ok()) return Status(valid.code(), "mesh " + std::to_string(i) + ": " + valid.message());
+    if (!valid.ok())
+      return Status(valid.code(), "mesh " + std::to_string(i) + ": " + valid.message());
   }
   PackResult result;
   PackReport& report = result.report;
@@ -153,7 +166,8 @@ Result<PackResult> PackScene(Scene scene, const PackOptions& options, PackObserv
   for (size_t i = 0; i < n; ++i) {
     if (observer && observer->IsCancelled()) return Status(StatusCode::kCancelled, "cancelled");
     const Mesh& mesh = scene.meshes[i];
-    const std::string prefix = "mesh " + std::to_string(i + 1) + "/" + std::to_string(n) + " '" + mesh.name + "': ";
+    const std::string prefix =
+        "mesh " + std::to_string(i + 1) + "/" + std::to_string(n) + " '" + mesh.name + "': ";
     const double from = double(i) / n, to = double(i + 1) / n;
     MeshPackReport r;
     r.name = mesh.name;
@@ -171,7 +185,8 @@ Result<PackResult> PackScene(Scene scene, const PackOptions& options, PackObserv
     out = std::move(encoded->decoded);
     out.name = mesh.name;
     out.collides = mesh.collides;
-    out.material_ids = mesh.material_ids.empty() ? std::vector<uint32_t>() : std::move(encoded->groups);
+    out.material_ids =
+        mesh.material_ids.empty() ? std::vector<uint32_t>() : std::move(encoded->groups);
     r.max_error = encoded->max_error;
     const double diagonal = BoundingBoxDiagonal(mesh);
     r.max_error_fraction = diagonal > 0 ? r.max_error / diagonal : 0;

@@ -39,9 +39,9 @@ struct PackOptions {
 struct MeshPackReport {
   std::string name;
   size_t triangles = 0, vertices = 0;
-  size_t bytes_before = 0;        // the mesh's vertex and index data as plain glTF accessors
-  size_t bytes_after = 0;         // its compressed stream
-  double bits_per_vertex = 0;     // bytes_after * 8 / vertices
+  size_t bytes_before = 0;     // the mesh's vertex and index data as plain glTF accessors
+  size_t bytes_after = 0;      // its compressed stream
+  double bits_per_vertex = 0;  // bytes_after * 8 / vertices
   int position_bits = 0;
   std::string position_range;     // the quantization grid: "uniform", "per-axis" or "diagonal"
   double max_error = 0;           // largest position error reached, in model units
@@ -49,10 +49,10 @@ struct MeshPackReport {
   std::string no_hulls_reason;    // why the mesh has no hulls, "" when it has some
   size_t hull_count = 0;
   size_t hull_vertices = 0;
-  size_t hull_bytes = 0;          // the hull stream
+  size_t hull_bytes = 0;  // the hull stream
   int hull_position_bits = 0;
   std::string hull_position_range;
-  double hull_concavity = -1;     // vhacd's report (fractions of the diagonal); -1 = not measured
+  double hull_concavity = -1;  // vhacd's report (fractions of the diagonal); -1 = not measured
   double hull_iou = -1;
   double hull_quantization_error = 0;  // hull vertex error after quantization, fraction of diagonal
   // encode: the render stream, every quantization grid tried; decode: the chosen stream once;
@@ -72,7 +72,8 @@ struct PackReport {
 class PackObserver {
  public:
   virtual ~PackObserver() = default;
-  // fraction in [0, 1] of the whole scene; stage says what runs ("mesh 3/7 'wheel': decompose 40%").
+  // fraction in [0, 1] of the whole scene; stage says what runs ("mesh 3/7 'wheel': decompose
+  // 40%").
   virtual void OnProgress(double fraction, const std::string& stage) {}
   virtual bool IsCancelled() { return false; }
 };
@@ -83,7 +84,8 @@ struct PackResult {
 };
 
 // Packs `scene` (consumed). Errors name the mesh and the problem.
-Result<PackResult> PackScene(Scene scene, const PackOptions& options, PackObserver* observer = nullptr);
+Result<PackResult> PackScene(Scene scene, const PackOptions& options,
+                             PackObserver* observer = nullptr);
 
 }  // namespace hullpack
 

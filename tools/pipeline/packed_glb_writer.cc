@@ -13,8 +13,9 @@ void StripData(nlohmann::json& accessor) {
 
 // Adds HULLPACK_mesh_compression to every primitive of `gltf_mesh`; without fallback the accessors
 // the stream supplies lose their data.
-void CompressPrimitives(GltfDocument& doc, int gltf_mesh, const MeshSource& source, const EncodedMesh& stream,
-                        int stream_view, const GltfSceneLayout::MeshLayout& layout, bool fallback) {
+void CompressPrimitives(GltfDocument& doc, int gltf_mesh, const MeshSource& source,
+                        const EncodedMesh& stream, int stream_view,
+                        const GltfSceneLayout::MeshLayout& layout, bool fallback) {
   nlohmann::json& json = doc.json();
   nlohmann::json& primitives = json["meshes"][gltf_mesh]["primitives"];
   for (size_t p = 0; p < primitives.size(); ++p) {
@@ -30,15 +31,18 @@ void CompressPrimitives(GltfDocument& doc, int gltf_mesh, const MeshSource& sour
     if (source.hull) {
       ext["group"] = source.hull_group;
       ext["compactVertices"] = true;
-    } else if (source.grouped && p < layout.primitives.size() && layout.primitives[p].material >= 0) {
+    } else if (source.grouped && p < layout.primitives.size() &&
+               layout.primitives[p].material >= 0) {
       ext["group"] = layout.primitives[p].material;
     }
-    if (!fallback && prim.contains("indices")) StripData(json["accessors"][prim["indices"].get<int>()]);
+    if (!fallback && prim.contains("indices"))
+      StripData(json["accessors"][prim["indices"].get<int>()]);
     prim["extensions"][kMeshCompressionExtension] = std::move(ext);
   }
 }
 
-void AddColliders(GltfDocument& doc, const PackedStreams& streams, const GltfSceneLayout& layout, PhysicsForm physics) {
+void AddColliders(GltfDocument& doc, const PackedStreams& streams, const GltfSceneLayout& layout,
+                  PhysicsForm physics) {
   nlohmann::json& json = doc.json();
   nlohmann::json shapes = nlohmann::json::array();
   for (size_t m = 0; m < streams.hulls_of.size(); ++m) {
@@ -51,7 +55,8 @@ void AddColliders(GltfDocument& doc, const PackedStreams& streams, const GltfSce
     for (int node : layout.mesh_nodes[m]) {
       for (size_t k = 0; k < hull_shapes.size(); ++k) {
         const int gltf_hull_mesh = layout.meshes[streams.hulls_of[m][k]].gltf_mesh;
-        nlohmann::json collider = {{"name", json["nodes"][node].value("name", std::string("node")) + "_collider_" + std::to_string(k)}};
+        nlohmann::json collider = {{"name", json["nodes"][node].value("name", std::string("node")) +
+                                                "_collider_" + std::to_string(k)}};
         if (physics == PhysicsForm::kOmi) {
           collider["extensions"]["OMI_physics_body"] = {{"collider", {{"shape", hull_shapes[k]}}}};
         } else {
@@ -85,7 +90,8 @@ Result<std::vector<uint8_t>> WritePackedGlb(const Scene& decoded, const PackedSt
   Status built = BuildGltfDocument(decoded, GlbWriteOptions(), &doc, &layout);
   if (!built.ok()) return built;
   std::vector<int> stream_views;
-  for (const EncodedMesh& s : streams.streams) stream_views.push_back(doc.AddBufferView(s.stream, 4));
+  for (const EncodedMesh& s : streams.streams)
+    stream_views.push_back(doc.AddBufferView(s.stream, 4));
   bool any = false;
   for (size_t m = 0; m < decoded.meshes.size(); ++m) {
     const MeshSource& source = streams.sources[m];

@@ -19,16 +19,16 @@ enum class PhysicsForm { kOmi, kKhr };
 
 // Where each mesh of the decoded scene comes from.
 struct MeshSource {
-  int stream = -1;          // index into PackedStreams::streams
-  bool grouped = false;     // the stream has triangle groups: primitives select theirs
-  bool hull = false;        // a collision hull: group = hull_group, compactVertices
+  int stream = -1;       // index into PackedStreams::streams
+  bool grouped = false;  // the stream has triangle groups: primitives select theirs
+  bool hull = false;     // a collision hull: group = hull_group, compactVertices
   uint32_t hull_group = 0;
 };
 
 struct PackedStreams {
   std::vector<EncodedMesh> streams;
-  std::vector<MeshSource> sources;        // one per decoded-scene mesh
-  std::vector<std::vector<int>> hulls_of; // per decoded-scene mesh: indices of its hull meshes
+  std::vector<MeshSource> sources;         // one per decoded-scene mesh
+  std::vector<std::vector<int>> hulls_of;  // per decoded-scene mesh: indices of its hull meshes
 };
 
 struct PackedGlbOptions {

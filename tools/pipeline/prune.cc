@@ -10,8 +10,8 @@ namespace hullpack {
 namespace {
 
 std::array<const TextureRef*, 5> TextureSlots(const Material& m) {
-  return {&m.base_color_texture, &m.metallic_roughness_texture, &m.normal_texture, &m.occlusion_texture,
-          &m.emissive_texture};
+  return {&m.base_color_texture, &m.metallic_roughness_texture, &m.normal_texture,
+          &m.occlusion_texture, &m.emissive_texture};
 }
 
 // Materials a mesh's triangles use; with no material ids, none.
@@ -59,11 +59,13 @@ void FoldConstantColors(Scene& scene, Mesh& mesh, PruneReport& report) {
     Material m;
     m.name = mesh.name + "_color";
     scene.materials.push_back(m);
-    mesh.material_ids.assign(mesh.triangle_count(), static_cast<uint32_t>(scene.materials.size() - 1));
+    mesh.material_ids.assign(mesh.triangle_count(),
+                             static_cast<uint32_t>(scene.materials.size() - 1));
   }
   std::vector<std::pair<uint32_t, uint32_t>> copies;  // old id -> tinted copy
   for (uint32_t& id : mesh.material_ids) {
-    auto it = std::find_if(copies.begin(), copies.end(), [&](const auto& p) { return p.first == id; });
+    auto it =
+        std::find_if(copies.begin(), copies.end(), [&](const auto& p) { return p.first == id; });
     if (it == copies.end()) {
       Material tinted = id < scene.materials.size() ? scene.materials[id] : Material();
       for (int k = 0; k < 4; ++k) tinted.base_color[k] *= c[k];
@@ -78,7 +80,9 @@ void FoldConstantColors(Scene& scene, Mesh& mesh, PruneReport& report) {
 void RemoveUnusedSkinData(const Scene& scene, size_t mesh_index, Mesh& mesh, PruneReport& report) {
   if (mesh.joints.empty() && mesh.weights.empty()) return;
   for (const Node& node : scene.nodes) {
-    if (node.skin >= 0 && std::find(node.meshes.begin(), node.meshes.end(), static_cast<int>(mesh_index)) != node.meshes.end()) return;
+    if (node.skin >= 0 && std::find(node.meshes.begin(), node.meshes.end(),
+                                    static_cast<int>(mesh_index)) != node.meshes.end())
+      return;
   }
   mesh.joints.clear();
   mesh.weights.clear();
@@ -104,7 +108,8 @@ void RemoveUnreferencedMeshes(Scene& scene, PruneReport& report) {
   for (Node& node : scene.nodes) {
     std::vector<int> meshes;
     for (int m : node.meshes) {
-      if (m >= 0 && static_cast<size_t>(m) < new_index.size() && new_index[m] >= 0) meshes.push_back(new_index[m]);
+      if (m >= 0 && static_cast<size_t>(m) < new_index.size() && new_index[m] >= 0)
+        meshes.push_back(new_index[m]);
     }
     node.meshes = std::move(meshes);
   }
@@ -150,7 +155,8 @@ void RemoveUnreferencedImages(Scene& scene, PruneReport& report) {
   for (Material& m : scene.materials) {
     for (TextureRef* t : {&m.base_color_texture, &m.metallic_roughness_texture, &m.normal_texture,
                           &m.occlusion_texture, &m.emissive_texture}) {
-      if (t->used()) t->image = static_cast<size_t>(t->image) < new_index.size() ? new_index[t->image] : -1;
+      if (t->used())
+        t->image = static_cast<size_t>(t->image) < new_index.size() ? new_index[t->image] : -1;
     }
   }
 }
@@ -177,9 +183,11 @@ PruneReport LeaveOutUnused(Scene& scene, const PruneOptions& options) {
     if (options.unused_tangents) RemoveUnusedTangents(scene, mesh, report);
     if (options.unused_skin_data) RemoveUnusedSkinData(scene, i, mesh, report);
     if (options.normalize_skin_weights && mesh.weights.size() == mesh.vertex_count() * 4) {
-      report.skin_weights_normalized += NormalizeSkinWeights(mesh.weights.data(), mesh.vertex_count());
+      report.skin_weights_normalized +=
+          NormalizeSkinWeights(mesh.weights.data(), mesh.vertex_count());
     }
-    if (options.clear_unweighted_joints && mesh.has_skin() && mesh.joints.size() == mesh.weights.size()) {
+    if (options.clear_unweighted_joints && mesh.has_skin() &&
+        mesh.joints.size() == mesh.weights.size()) {
       // glTF validators warn about them, and zeros code smaller.
       for (size_t k = 0; k < mesh.joints.size(); ++k) {
         if (mesh.weights[k] == 0 && mesh.joints[k] != 0) {
@@ -209,7 +217,8 @@ PruneReport LeaveOutUnused(Scene& scene, const PruneOptions& options) {
                            " joint indices that carry no weight");
   }
   if (report.skin_weights_normalized) {
-    report.lines.push_back("renormalized the skin weights of " + std::to_string(report.skin_weights_normalized) +
+    report.lines.push_back("renormalized the skin weights of " +
+                           std::to_string(report.skin_weights_normalized) +
                            " vertices (their sum was not 1)");
   }
   return report;

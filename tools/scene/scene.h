@@ -25,8 +25,8 @@ struct Image {
 
 // A reference from a material slot to an image, read through one UV set.
 struct TextureRef {
-  int image = -1;   // index into Scene::images; -1 = no texture in this slot
-  int uv_set = 0;   // which Mesh::uv_sets entry the texture is sampled with
+  int image = -1;  // index into Scene::images; -1 = no texture in this slot
+  int uv_set = 0;  // which Mesh::uv_sets entry the texture is sampled with
   bool used() const { return image >= 0; }
 };
 
@@ -48,16 +48,16 @@ struct Material {
 // vertex_count() entries of its width; material_ids is empty or one per triangle.
 struct Mesh {
   std::string name;
-  std::vector<float> positions;               // 3 per vertex
-  std::vector<uint32_t> indices;              // 3 per triangle
-  std::vector<float> normals;                 // 3 per vertex, or empty
-  std::vector<float> tangents;                // 4 per vertex (xyz, handedness), or empty
-  std::vector<std::vector<float>> uv_sets;    // each 2 per vertex; glTF convention (v = 0 at the top)
-  std::vector<float> colors;                  // 4 per vertex (RGBA, 0..1), or empty
-  std::vector<uint16_t> joints;               // 4 per vertex (indices into the skin's joints), or empty
-  std::vector<float> weights;                 // 4 per vertex, or empty
-  std::vector<uint32_t> material_ids;         // 1 per triangle (index into Scene::materials), or empty
-  bool collides = true;                       // false when the source marks it as non-colliding
+  std::vector<float> positions;             // 3 per vertex
+  std::vector<uint32_t> indices;            // 3 per triangle
+  std::vector<float> normals;               // 3 per vertex, or empty
+  std::vector<float> tangents;              // 4 per vertex (xyz, handedness), or empty
+  std::vector<std::vector<float>> uv_sets;  // each 2 per vertex; glTF convention (v = 0 at the top)
+  std::vector<float> colors;                // 4 per vertex (RGBA, 0..1), or empty
+  std::vector<uint16_t> joints;        // 4 per vertex (indices into the skin's joints), or empty
+  std::vector<float> weights;          // 4 per vertex, or empty
+  std::vector<uint32_t> material_ids;  // 1 per triangle (index into Scene::materials), or empty
+  bool collides = true;                // false when the source marks it as non-colliding
 
   size_t vertex_count() const { return positions.size() / 3; }
   size_t triangle_count() const { return indices.size() / 3; }
@@ -66,18 +66,18 @@ struct Mesh {
 
 struct Skin {
   std::string name;
-  std::vector<int> joints;                    // node indices
-  std::vector<float> inverse_bind_matrices;   // 16 per joint (column-major), or empty
-  int skeleton = -1;                          // root node, or -1
+  std::vector<int> joints;                   // node indices
+  std::vector<float> inverse_bind_matrices;  // 16 per joint (column-major), or empty
+  int skeleton = -1;                         // root node, or -1
 };
 
 struct Node {
   std::string name;
-  int parent = -1;                            // -1 for a root
+  int parent = -1;  // -1 for a root
   std::vector<int> children;
   Matrix4 local_transform = kIdentity;
-  std::vector<int> meshes;                    // indices into Scene::meshes
-  int skin = -1;                              // index into Scene::skins, or -1
+  std::vector<int> meshes;  // indices into Scene::meshes
+  int skin = -1;            // index into Scene::skins, or -1
 };
 
 struct Scene {
@@ -85,10 +85,11 @@ struct Scene {
   std::vector<Material> materials;
   std::vector<Image> images;
   std::vector<Skin> skins;
-  std::vector<Node> nodes;                    // nodes[0..] in any order; roots have parent -1
+  std::vector<Node> nodes;  // nodes[0..] in any order; roots have parent -1
   // What a reader could not keep, one human-readable line each ("dropped 2 animations: ...").
   std::vector<std::string> dropped;
-  // Vertex records the file held (OBJ `v` lines, OFF/PLY vertices, ...) before unification; 0 = unknown.
+  // Vertex records the file held (OBJ `v` lines, OFF/PLY vertices, ...) before unification; 0 =
+  // unknown.
   size_t source_vertex_records = 0;
 
   size_t triangle_count() const {

@@ -36,7 +36,10 @@ bool ReadObj(const std::string& path, Obj* obj) {
     std::istringstream s(line);
     std::string tag, tok;
     s >> tag;
-    std::vector<std::string>* dst = tag == "v" ? &obj->v : tag == "vn" ? &obj->vn : tag == "vt" ? &obj->vt : nullptr;
+    std::vector<std::string>* dst = tag == "v"    ? &obj->v
+                                    : tag == "vn" ? &obj->vn
+                                    : tag == "vt" ? &obj->vt
+                                                  : nullptr;
     if (dst) {
       while (s >> tok) dst->push_back(tok);
     } else if (tag == "f") {
@@ -57,7 +60,8 @@ struct Compare {
   bool count_ok = true;
 };
 
-void CompareValues(const std::vector<float>& ours, const std::vector<std::string>& printed, Compare* c) {
+void CompareValues(const std::vector<float>& ours, const std::vector<std::string>& printed,
+                   Compare* c) {
   if (ours.size() != printed.size()) {
     c->count_ok = false;
     return;
@@ -97,14 +101,17 @@ int main(int argc, char** argv) {
   for (const std::string& name : names) {
     const std::string stem = name.substr(0, name.size() - 4);
     std::ifstream in(dir + "/" + name, std::ios::binary);
-    const std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)),
+                                     std::istreambuf_iterator<char>());
     Obj obj;
     const bool have_obj = ReadObj(dir + "/" + stem + "_dec.obj", &obj);
     o3dgc::DecodedMesh m;
     o3dgc::StreamInfo info;
-    const o3dgc::Status s = o3dgc::Decode(bytes.data(), bytes.size(), o3dgc::DecodeOptions(), &m, &info);
+    const o3dgc::Status s =
+        o3dgc::Decode(bytes.data(), bytes.size(), o3dgc::DecodeOptions(), &m, &info);
     if (s != o3dgc::Status::kOk || !have_obj) {
-      std::printf("%-36s FAIL: %s\n", name.c_str(), have_obj ? o3dgc::StatusName(s) : "no readable _dec.obj");
+      std::printf("%-36s FAIL: %s\n", name.c_str(),
+                  have_obj ? o3dgc::StatusName(s) : "no readable _dec.obj");
       ++failures;
       continue;
     }
@@ -123,7 +130,8 @@ int main(int argc, char** argv) {
     std::printf("%-36s %-6s %7zu %9zu %9zu %7zu %8zu %9zu %.3g%s%s%s\n", name.c_str(),
                 info.stream_type == o3dgc::StreamType::kAscii ? "ascii" : "binary", bytes.size(),
                 m.num_triangles(), m.num_vertices(), m.normals.size() / 3, uv ? uv->size() / 2 : 0,
-                c.reprinted, c.max_units, ok ? "  pass" : "  FAIL", triangles_ok ? "" : " (triangles differ)",
+                c.reprinted, c.max_units, ok ? "  pass" : "  FAIL",
+                triangles_ok ? "" : " (triangles differ)",
                 c.count_ok ? "" : " (value counts differ)");
   }
   std::printf("%zu streams, %d failed\n", names.size(), failures);

@@ -19,8 +19,8 @@
 #include "common/file_util.h"
 #include "io/scene_io.h"
 #include "mesh/merge.h"
-#include "pipeline/mesh_codec.h"
 #include "o3dgc/o3dgc.h"
+#include "pipeline/mesh_codec.h"
 #include "scene/scene.h"
 
 namespace {
@@ -73,13 +73,15 @@ int Compress(const std::string& input, const hullpack::MeshCodecSettings& settin
     return 1;
   }
   const hullpack::Mesh all = hullpack::MergeMeshes(scene.value());
-  std::printf("Mesh info\n  vertices %zu\n  triangles %zu\n  normals %s\n  uv %s\n  colors %s\n"
-              "  skin %s\n  groups %s\n",
-              all.vertex_count(), all.triangle_count(), all.normals.empty() ? "no" : "yes",
-              all.uv_sets.empty() ? "no" : "yes", all.colors.empty() ? "no" : "yes", all.has_skin() ? "yes" : "no",
-              all.material_ids.empty() ? "no" : "yes");
+  std::printf(
+      "Mesh info\n  vertices %zu\n  triangles %zu\n  normals %s\n  uv %s\n  colors %s\n"
+      "  skin %s\n  groups %s\n",
+      all.vertex_count(), all.triangle_count(), all.normals.empty() ? "no" : "yes",
+      all.uv_sets.empty() ? "no" : "yes", all.colors.empty() ? "no" : "yes",
+      all.has_skin() ? "yes" : "no", all.material_ids.empty() ? "no" : "yes");
   const auto t0 = Clock::now();
-  hullpack::Result<hullpack::EncodedMesh> encoded = hullpack::EncodeMesh(all, all.material_ids, settings);
+  hullpack::Result<hullpack::EncodedMesh> encoded =
+      hullpack::EncodeMesh(all, all.material_ids, settings);
   const auto t1 = Clock::now();
   if (!encoded.ok()) {
     std::fprintf(stderr, "%s: %s\n", input.c_str(), encoded.status().message().c_str());
@@ -97,7 +99,8 @@ int Compress(const std::string& input, const hullpack::MeshCodecSettings& settin
     return 1;
   }
   std::printf("Encode time %.2f ms\nStream %s (%s), %zu bytes\n", Ms(t0, t1), out.c_str(),
-              settings.stream_type == o3dgc::StreamType::kAscii ? "ascii" : "binary", encoded->stream.size());
+              settings.stream_type == o3dgc::StreamType::kAscii ? "ascii" : "binary",
+              encoded->stream.size());
   PrintParts(encoded->info, all.vertex_count());
   return 0;
 }
@@ -116,7 +119,8 @@ bool ReadLegacyMaterials(const std::string& path, LegacyMaterials* m) {
   std::istringstream in(std::string(bytes->begin(), bytes->end()));
   std::string tag;
   size_t n = 0;
-  if (!(in >> tag) || tag != "MaterialLib" || !(in >> m->library >> tag) || tag != "Materials" || !(in >> n)) {
+  if (!(in >> tag) || tag != "MaterialLib" || !(in >> m->library >> tag) || tag != "Materials" ||
+      !(in >> n)) {
     return false;
   }
   for (size_t i = 0; i < n; ++i) {
@@ -137,10 +141,12 @@ int DecompressLegacy(const std::string& input, const std::vector<uint8_t>& strea
   o3dgc::DecodedMesh m;
   o3dgc::StreamInfo info;
   const auto t0 = Clock::now();
-  const o3dgc::Status st = o3dgc::Decode(stream.data(), stream.size(), o3dgc::DecodeOptions(), &m, &info);
+  const o3dgc::Status st =
+      o3dgc::Decode(stream.data(), stream.size(), o3dgc::DecodeOptions(), &m, &info);
   const auto t1 = Clock::now();
   if (st != o3dgc::Status::kOk) {
-    std::fprintf(stderr, "decode failed: %s: original Open3DGC stream: %s\n", input.c_str(), o3dgc::StatusName(st));
+    std::fprintf(stderr, "decode failed: %s: original Open3DGC stream: %s\n", input.c_str(),
+                 o3dgc::StatusName(st));
     return 1;
   }
   const std::vector<float>* uv = nullptr;
@@ -149,12 +155,14 @@ int DecompressLegacy(const std::string& input, const std::vector<uint8_t>& strea
   }
   LegacyMaterials mat;
   const bool materials = ReadLegacyMaterials(Stem(input) + ".mat", &mat);
-  std::string obj = "# decoded by hullpack test_o3dgc from " + input + " (original Open3DGC stream)\n";
+  std::string obj =
+      "# decoded by hullpack test_o3dgc from " + input + " (original Open3DGC stream)\n";
   char line[160];
   auto add = [&](const char* tag, const std::vector<float>& v, size_t dim) {
     for (size_t i = 0; i + dim <= v.size(); i += dim) {
       int n = std::snprintf(line, sizeof line, "%s", tag);
-      for (size_t k = 0; k < dim; ++k) n += std::snprintf(line + n, sizeof line - size_t(n), " %.9g", double(v[i + k]));
+      for (size_t k = 0; k < dim; ++k)
+        n += std::snprintf(line + n, sizeof line - size_t(n), " %.9g", double(v[i + k]));
       obj.append(line).push_back('\n');
     }
   };
@@ -162,12 +170,15 @@ int DecompressLegacy(const std::string& input, const std::vector<uint8_t>& strea
   add("vn", m.normals, 3);
   if (uv) add("vt", *uv, 2);
   if (materials && !mat.library.empty()) obj += "mtllib " + mat.library + "\n";
-  std::vector<uint32_t> material_of;  // per triangle, from the runs (the original's name lookup: by id)
+  std::vector<uint32_t>
+      material_of;  // per triangle, from the runs (the original's name lookup: by id)
   for (size_t i = 0; materials && i < mat.counts.size(); ++i) {
-    for (uint32_t c = 0; c < mat.counts[i] && material_of.size() < m.num_triangles(); ++c) material_of.push_back(mat.ids[i]);
+    for (uint32_t c = 0; c < mat.counts[i] && material_of.size() < m.num_triangles(); ++c)
+      material_of.push_back(mat.ids[i]);
   }
   for (size_t t = 0; t < m.num_triangles(); ++t) {
-    if (t < material_of.size() && (t == 0 || material_of[t] != material_of[t - 1]) && material_of[t] < mat.names.size()) {
+    if (t < material_of.size() && (t == 0 || material_of[t] != material_of[t - 1]) &&
+        material_of[t] < mat.names.size()) {
       obj += "usemtl " + mat.names[material_of[t]] + "\n";
     }
     obj += "f";
@@ -192,10 +203,13 @@ int DecompressLegacy(const std::string& input, const std::vector<uint8_t>& strea
     std::fprintf(stderr, "%s\n", w.message().c_str());
     return 1;
   }
-  std::printf("Original Open3DGC stream (%s)\nMesh info\n  vertices %zu\n  triangles %zu\n  normals %s\n  uv %s\n"
-              "Decode time %.2f ms\nWrote %s\n",
-              info.stream_type == o3dgc::StreamType::kAscii ? "ascii" : "binary", m.num_vertices(),
-              m.num_triangles(), m.normals.empty() ? "no" : "yes", uv ? "yes" : "no", Ms(t0, t1), out.c_str());
+  std::printf(
+      "Original Open3DGC stream (%s)\nMesh info\n  vertices %zu\n  triangles %zu\n  normals %s\n  "
+      "uv %s\n"
+      "Decode time %.2f ms\nWrote %s\n",
+      info.stream_type == o3dgc::StreamType::kAscii ? "ascii" : "binary", m.num_vertices(),
+      m.num_triangles(), m.normals.empty() ? "no" : "yes", uv ? "yes" : "no", Ms(t0, t1),
+      out.c_str());
   PrintParts(info, m.num_vertices());
   return 0;
 }
@@ -244,7 +258,8 @@ int Decompress(const std::string& input) {
       m.material_ids = groups;
       for (uint32_t g = 0; g <= max_id; ++g) {
         hullpack::Material material;
-        material.name = g < names.size() && !names[g].empty() ? names[g] : "group_" + std::to_string(g);
+        material.name =
+            g < names.size() && !names[g].empty() ? names[g] : "group_" + std::to_string(g);
         scene.materials.push_back(material);
       }
     }
@@ -258,8 +273,8 @@ int Decompress(const std::string& input) {
     std::fprintf(stderr, "%s\n", w.ToString().c_str());
     return 1;
   }
-  std::printf("Mesh info\n  vertices %zu\n  triangles %zu\nDecode time %.2f ms\nWrote %s\n", vertices, triangles,
-              Ms(t0, t1), out.c_str());
+  std::printf("Mesh info\n  vertices %zu\n  triangles %zu\nDecode time %.2f ms\nWrote %s\n",
+              vertices, triangles, Ms(t0, t1), out.c_str());
   PrintParts(info, vertices);
   return 0;
 }

@@ -30,14 +30,17 @@ namespace {
 
 int Usage(const char* why) {
   if (why != nullptr) std::fprintf(stderr, "testVHACD: %s\n", why);
-  std::fprintf(stderr,
-               "usage: testVHACD input resolution depth concavity planeDownsampling convexhullDownsampling "
-               "alpha beta gamma pca mode maxNumVerticesPerCH minVolumePerCH output log\n"
-               "       testVHACD input [-o hulls.obj|.wrl|.glb] [--report report.json] [--log log.txt]\n"
-               "                 [--preset|--quality default|high] [--resolution N] [--depth N] [--concavity X]\n"
-               "                 [--plane-downsampling N] [--convexhull-downsampling N] [--alpha X]\n"
-               "                 [--beta X] [--gamma X] [--pca 0|1] [--mode 0|1|voxel|tetra] [--max-vertices N]\n"
-               "                 [--min-volume X] [--max-hulls N] [--max-distance X] [--threads N]\n");
+  std::fprintf(
+      stderr,
+      "usage: testVHACD input resolution depth concavity planeDownsampling convexhullDownsampling "
+      "alpha beta gamma pca mode maxNumVerticesPerCH minVolumePerCH output log\n"
+      "       testVHACD input [-o hulls.obj|.wrl|.glb] [--report report.json] [--log log.txt]\n"
+      "                 [--preset|--quality default|high] [--resolution N] [--depth N] "
+      "[--concavity X]\n"
+      "                 [--plane-downsampling N] [--convexhull-downsampling N] [--alpha X]\n"
+      "                 [--beta X] [--gamma X] [--pca 0|1] [--mode 0|1|voxel|tetra] "
+      "[--max-vertices N]\n"
+      "                 [--min-volume X] [--max-hulls N] [--max-distance X] [--threads N]\n");
   return 2;
 }
 
@@ -63,12 +66,14 @@ class Progress : public vhacd::Observer {
     if (!log_path.empty()) log_.open(log_path.c_str());
   }
   bool log_ok() const { return log_.good(); }
-  void OnProgress(double overall, double stage, double, const char* stage_name, const char* operation) override {
+  void OnProgress(double overall, double stage, double, const char* stage_name,
+                  const char* operation) override {
     const int pct = static_cast<int>(overall + 0.5);
     if (pct == last_ && stage_name == last_stage_) return;
     last_ = pct;
     last_stage_ = stage_name;
-    std::fprintf(stderr, "\r%3d%% [%-16s %3d%%] %-24s", pct, stage_name, static_cast<int>(stage + 0.5), operation);
+    std::fprintf(stderr, "\r%3d%% [%-16s %3d%%] %-24s", pct, stage_name,
+                 static_cast<int>(stage + 0.5), operation);
     if (pct >= 100) std::fprintf(stderr, "\n");
   }
   void OnLog(const char* message) override {
@@ -107,15 +112,21 @@ bool WriteReport(const std::string& path, const std::string& input, const vhacd:
   f << "  \"voxel_count\": " << rep.voxel_count << ",\n";
   f << "  \"tetrahedron_count\": " << rep.tetrahedron_count << ",\n";
   f << "  \"parts_before_merge\": " << rep.parts_before_merge << ",\n";
-  f << "  \"seconds\": {\"voxelize\": " << JsonNumber(rep.seconds_voxelize) << ", \"fill\": " << JsonNumber(rep.seconds_fill)
-    << ", \"tetrahedra\": " << JsonNumber(rep.seconds_tetrahedra) << ", \"distance\": " << JsonNumber(rep.seconds_distance) << ", \"clip\": " << JsonNumber(rep.seconds_clip) << ", \"hulls\": " << JsonNumber(rep.seconds_hulls)
-    << ", \"merge\": " << JsonNumber(rep.seconds_merge) << ", \"simplify\": " << JsonNumber(rep.seconds_simplify)
-    << ", \"report\": " << JsonNumber(rep.seconds_report) << ", \"total\": " << JsonNumber(rep.seconds_total) << "},\n";
+  f << "  \"seconds\": {\"voxelize\": " << JsonNumber(rep.seconds_voxelize)
+    << ", \"fill\": " << JsonNumber(rep.seconds_fill)
+    << ", \"tetrahedra\": " << JsonNumber(rep.seconds_tetrahedra)
+    << ", \"distance\": " << JsonNumber(rep.seconds_distance)
+    << ", \"clip\": " << JsonNumber(rep.seconds_clip)
+    << ", \"hulls\": " << JsonNumber(rep.seconds_hulls)
+    << ", \"merge\": " << JsonNumber(rep.seconds_merge)
+    << ", \"simplify\": " << JsonNumber(rep.seconds_simplify)
+    << ", \"report\": " << JsonNumber(rep.seconds_report)
+    << ", \"total\": " << JsonNumber(rep.seconds_total) << "},\n";
   f << "  \"hulls\": [";
   for (size_t i = 0; i < rep.hulls.size(); ++i) {
     f << (i ? ",\n    " : "\n    ") << "{\"vertices\": " << rep.hulls[i].vertex_count
-      << ", \"volume\": " << JsonNumber(rep.hulls[i].volume) << ", \"concavity\": " << JsonNumber(rep.hulls[i].concavity)
-      << "}";
+      << ", \"volume\": " << JsonNumber(rep.hulls[i].volume)
+      << ", \"concavity\": " << JsonNumber(rep.hulls[i].concavity) << "}";
   }
   f << (rep.hulls.empty() ? "]\n" : "\n  ]\n") << "}\n";
   return f.good();
@@ -135,10 +146,12 @@ int main(int argc, char** argv) {
   }
   if (positional) {
     uint32_t pca = 0, mode = 0;
-    if (!ParseUint(argv[2], &p.resolution) || !ParseUint(argv[3], &p.depth) || !ParseDouble(argv[4], &p.concavity) ||
-        !ParseUint(argv[5], &p.plane_downsampling) || !ParseUint(argv[6], &p.convexhull_downsampling) ||
-        !ParseDouble(argv[7], &p.alpha) || !ParseDouble(argv[8], &p.beta) || !ParseDouble(argv[9], &p.gamma) ||
-        !ParseUint(argv[10], &pca) || !ParseUint(argv[11], &mode) || !ParseUint(argv[12], &p.max_vertices_per_hull) ||
+    if (!ParseUint(argv[2], &p.resolution) || !ParseUint(argv[3], &p.depth) ||
+        !ParseDouble(argv[4], &p.concavity) || !ParseUint(argv[5], &p.plane_downsampling) ||
+        !ParseUint(argv[6], &p.convexhull_downsampling) || !ParseDouble(argv[7], &p.alpha) ||
+        !ParseDouble(argv[8], &p.beta) || !ParseDouble(argv[9], &p.gamma) ||
+        !ParseUint(argv[10], &pca) || !ParseUint(argv[11], &mode) ||
+        !ParseUint(argv[12], &p.max_vertices_per_hull) ||
         !ParseDouble(argv[13], &p.min_volume_per_hull))
       return Usage("bad number in the positional parameters");
     if (pca > 1 || mode > 1) return Usage("pca and mode must be 0 or 1");
@@ -151,9 +164,12 @@ int main(int argc, char** argv) {
     for (int i = 2; i + 1 < argc; i += 2) {
       const std::string a = argv[i];
       if (a != "--preset" && a != "--quality") continue;
-      if (std::strcmp(argv[i + 1], "high") == 0) p = vhacd::Parameters::High();
-      else if (std::strcmp(argv[i + 1], "default") == 0) p = vhacd::Parameters();
-      else return Usage(("bad value for " + a).c_str());
+      if (std::strcmp(argv[i + 1], "high") == 0)
+        p = vhacd::Parameters::High();
+      else if (std::strcmp(argv[i + 1], "default") == 0)
+        p = vhacd::Parameters();
+      else
+        return Usage(("bad value for " + a).c_str());
     }
     for (int i = 2; i < argc; ++i) {
       const std::string a = argv[i];
@@ -162,31 +178,53 @@ int main(int argc, char** argv) {
       uint32_t u = 0;
       double d = 0;
       bool ok = true;
-      if (a == "-o" || a == "--output") output = v;
-      else if (a == "--report") report_path = v;
-      else if (a == "--log") log_path = v;
-      else if (a == "--preset" || a == "--quality") continue;  // applied above
-      else if (a == "--resolution") ok = ParseUint(v, &p.resolution);
-      else if (a == "--depth") ok = ParseUint(v, &p.depth);
-      else if (a == "--concavity") ok = ParseDouble(v, &p.concavity);
-      else if (a == "--plane-downsampling") ok = ParseUint(v, &p.plane_downsampling);
-      else if (a == "--convexhull-downsampling") ok = ParseUint(v, &p.convexhull_downsampling);
-      else if (a == "--alpha") ok = ParseDouble(v, &p.alpha);
-      else if (a == "--beta") ok = ParseDouble(v, &p.beta);
-      else if (a == "--gamma") ok = ParseDouble(v, &p.gamma);
-      else if (a == "--pca") { ok = ParseUint(v, &u) && u <= 1; p.pca = u == 1; }
-      else if (a == "--mode") {
-        if (std::strcmp(v, "tetra") == 0 || std::strcmp(v, "tetrahedron") == 0) u = 1;
-        else if (std::strcmp(v, "voxel") == 0) u = 0;
-        else ok = ParseUint(v, &u) && u <= 1;
+      if (a == "-o" || a == "--output")
+        output = v;
+      else if (a == "--report")
+        report_path = v;
+      else if (a == "--log")
+        log_path = v;
+      else if (a == "--preset" || a == "--quality")
+        continue;  // applied above
+      else if (a == "--resolution")
+        ok = ParseUint(v, &p.resolution);
+      else if (a == "--depth")
+        ok = ParseUint(v, &p.depth);
+      else if (a == "--concavity")
+        ok = ParseDouble(v, &p.concavity);
+      else if (a == "--plane-downsampling")
+        ok = ParseUint(v, &p.plane_downsampling);
+      else if (a == "--convexhull-downsampling")
+        ok = ParseUint(v, &p.convexhull_downsampling);
+      else if (a == "--alpha")
+        ok = ParseDouble(v, &p.alpha);
+      else if (a == "--beta")
+        ok = ParseDouble(v, &p.beta);
+      else if (a == "--gamma")
+        ok = ParseDouble(v, &p.gamma);
+      else if (a == "--pca") {
+        ok = ParseUint(v, &u) && u <= 1;
+        p.pca = u == 1;
+      } else if (a == "--mode") {
+        if (std::strcmp(v, "tetra") == 0 || std::strcmp(v, "tetrahedron") == 0)
+          u = 1;
+        else if (std::strcmp(v, "voxel") == 0)
+          u = 0;
+        else
+          ok = ParseUint(v, &u) && u <= 1;
         p.mode = static_cast<vhacd::Mode>(u);
-      }
-      else if (a == "--max-vertices") ok = ParseUint(v, &p.max_vertices_per_hull);
-      else if (a == "--min-volume") ok = ParseDouble(v, &p.min_volume_per_hull);
-      else if (a == "--max-hulls") ok = ParseUint(v, &p.max_convex_hulls);
-      else if (a == "--max-distance") ok = ParseDouble(v, &d) && (p.max_distance = d, true);
-      else if (a == "--threads") ok = ParseUint(v, &p.num_threads);
-      else return Usage(("unknown option " + a).c_str());
+      } else if (a == "--max-vertices")
+        ok = ParseUint(v, &p.max_vertices_per_hull);
+      else if (a == "--min-volume")
+        ok = ParseDouble(v, &p.min_volume_per_hull);
+      else if (a == "--max-hulls")
+        ok = ParseUint(v, &p.max_convex_hulls);
+      else if (a == "--max-distance")
+        ok = ParseDouble(v, &d) && (p.max_distance = d, true);
+      else if (a == "--threads")
+        ok = ParseUint(v, &p.num_threads);
+      else
+        return Usage(("unknown option " + a).c_str());
       if (!ok) return Usage(("bad value for " + a).c_str());
     }
   }
@@ -201,25 +239,30 @@ int main(int argc, char** argv) {
   std::vector<double> points;
   std::vector<uint32_t> indices;
   hullpack::FlattenScene(scene.value(), &points, &indices);
-  std::printf("input: %s, %zu points, %zu triangles\n", input.c_str(), points.size() / 3, indices.size() / 3);
+  std::printf("input: %s, %zu points, %zu triangles\n", input.c_str(), points.size() / 3,
+              indices.size() / 3);
 
   Progress progress(log_path);
   if (!log_path.empty() && !progress.log_ok()) {
     std::fprintf(stderr, "testVHACD: cannot write %s\n", log_path.c_str());
     return 1;
   }
-  const vhacd::Result r = vhacd::Decompose(
-      vhacd::MeshView::FromDouble(points.data(), points.size() / 3, indices.data(), indices.size() / 3), p, &progress);
+  const vhacd::Result r =
+      vhacd::Decompose(vhacd::MeshView::FromDouble(points.data(), points.size() / 3, indices.data(),
+                                                   indices.size() / 3),
+                       p, &progress);
   if (!r.ok()) {
     std::fprintf(stderr, "\ntestVHACD: %s: %s\n", vhacd::StatusName(r.status), r.message.c_str());
     if (!report_path.empty()) WriteReport(report_path, input, r);
     return 1;
   }
   const vhacd::Report& rep = r.report;
-  std::printf("hulls: %zu (from %u parts), concavity %.4f (mesh->hulls %.4f, hulls->mesh %.4f), IoU %s, %.2f s\n",
-              r.hulls.size(), rep.parts_before_merge, rep.concavity, rep.hausdorff_mesh_to_hulls,
-              rep.hausdorff_hulls_to_mesh, rep.volume_iou >= 0 ? JsonNumber(rep.volume_iou).c_str() : "n/a",
-              rep.seconds_total);
+  std::printf(
+      "hulls: %zu (from %u parts), concavity %.4f (mesh->hulls %.4f, hulls->mesh %.4f), IoU %s, "
+      "%.2f s\n",
+      r.hulls.size(), rep.parts_before_merge, rep.concavity, rep.hausdorff_mesh_to_hulls,
+      rep.hausdorff_hulls_to_mesh, rep.volume_iou >= 0 ? JsonNumber(rep.volume_iou).c_str() : "n/a",
+      rep.seconds_total);
 
   if (!report_path.empty()) {
     if (!WriteReport(report_path, input, r)) {

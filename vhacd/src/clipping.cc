@@ -152,7 +152,8 @@ bool ClipRecursively(Part root, const ClipParams& params, Context* ctx, ClipOutp
     if (params.convexhull_downsampling > 1) {
       std::vector<uint32_t> blind;
       for (size_t k = 0; k < m; ++k)
-        if (best[k].axis >= 0 && best_cost[k] >= conc[split[k]] && coarse_cost[k] < 0.5 * best_cost[k])
+        if (best[k].axis >= 0 && best_cost[k] >= conc[split[k]] &&
+            coarse_cost[k] < 0.5 * best_cost[k])
           blind.push_back(static_cast<uint32_t>(k));
       if (!blind.empty()) {
         tasks.clear();
@@ -175,14 +176,16 @@ bool ClipRecursively(Part root, const ClipParams& params, Context* ctx, ClipOutp
             next[2 * k] = std::move(p);
             return;
           }
-          for (const Voxel& v : p.voxels) (v.c[a] < c ? next[2 * k] : next[2 * k + 1]).voxels.push_back(v);
+          for (const Voxel& v : p.voxels)
+            (v.c[a] < c ? next[2 * k] : next[2 * k + 1]).voxels.push_back(v);
           std::vector<Voxel>().swap(p.voxels);
           for (int side = 0; side < 2; ++side) {
             next[2 * k + side].ComputeBounds();
             next[2 * k + side].tetra = p.tetra;
           }
           if (p.tetra) {
-            for (const SurfaceCell& cell : p.cells) (cell.c[a] < c ? next[2 * k] : next[2 * k + 1]).cells.push_back(cell);
+            for (const SurfaceCell& cell : p.cells)
+              (cell.c[a] < c ? next[2 * k] : next[2 * k + 1]).cells.push_back(cell);
             std::vector<SurfaceCell>().swap(p.cells);
             next[2 * k].ComputeCellVolume();
             next[2 * k + 1].ComputeCellVolume();

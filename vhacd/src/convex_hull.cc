@@ -3,8 +3,8 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <cstdint>
+#include <limits>
 
 namespace vhacd {
 namespace internal {
@@ -198,12 +198,18 @@ class QuickHull {
 
 const char* HullStatusName(HullStatus status) {
   switch (status) {
-    case HullStatus::kOk: return "ok";
-    case HullStatus::kTooFewPoints: return "too few points";
-    case HullStatus::kNonFinite: return "non-finite coordinate";
-    case HullStatus::kCollinear: return "collinear points";
-    case HullStatus::kCoplanar: return "coplanar points";
-    case HullStatus::kFailed: return "numerical failure";
+    case HullStatus::kOk:
+      return "ok";
+    case HullStatus::kTooFewPoints:
+      return "too few points";
+    case HullStatus::kNonFinite:
+      return "non-finite coordinate";
+    case HullStatus::kCollinear:
+      return "collinear points";
+    case HullStatus::kCoplanar:
+      return "coplanar points";
+    case HullStatus::kFailed:
+      return "numerical failure";
   }
   return "unknown";
 }
@@ -276,8 +282,10 @@ HullStatus ComputeConvexHull(const std::vector<Vec3>& points, double tolerance, 
 
     QuickHull qh(points, eps);
     if (qh.Run(init, out) == Attempt::kOk) return HullStatus::kOk;
-    if (tolerance == 0.0) eps = 1e-12 * (maxabs.sum() + (hi - lo).norm());
-    else eps *= 100.0;
+    if (tolerance == 0.0)
+      eps = 1e-12 * (maxabs.sum() + (hi - lo).norm());
+    else
+      eps *= 100.0;
   }
   out->vertices.clear();
   out->triangles.clear();
@@ -334,7 +342,8 @@ HullPlanes::HullPlanes(const HullMesh& hull) {
     bmax = bmax.cwiseMax(p);
   }
   for (const auto& t : hull.triangles) {
-    Vec3 nrm = (hull.vertices[t[1]] - hull.vertices[t[0]]).cross(hull.vertices[t[2]] - hull.vertices[t[0]]);
+    Vec3 nrm = (hull.vertices[t[1]] - hull.vertices[t[0]])
+                   .cross(hull.vertices[t[2]] - hull.vertices[t[0]]);
     const double len = nrm.norm();
     if (!(len > 0)) continue;
     nrm /= len;
@@ -345,7 +354,8 @@ HullPlanes::HullPlanes(const HullMesh& hull) {
 
 double HullPlanes::SignedDistanceBound(const Vec3& p) const {
   double worst = -std::numeric_limits<double>::infinity();
-  for (size_t i = 0; i < normals.size(); ++i) worst = std::max(worst, normals[i].dot(p) - offsets[i]);
+  for (size_t i = 0; i < normals.size(); ++i)
+    worst = std::max(worst, normals[i].dot(p) - offsets[i]);
   return worst;
 }
 
@@ -368,7 +378,8 @@ double PointTriangleDistance(const Vec3& p, const Vec3& a, const Vec3& b, const 
   const Vec3 ab = b - a, ac = c - a, ap = p - a;
   // Degenerate (collinear) triangles: distance to the three segments.
   if (!(ab.cross(ac).squaredNorm() > 1e-24 * ab.squaredNorm() * ac.squaredNorm()))
-    return std::min({PointSegmentDistance(p, a, b), PointSegmentDistance(p, b, c), PointSegmentDistance(p, c, a)});
+    return std::min({PointSegmentDistance(p, a, b), PointSegmentDistance(p, b, c),
+                     PointSegmentDistance(p, c, a)});
   // Closest point by Voronoi regions (Ericson, Real-Time Collision Detection, 5.1.5).
   const double d1 = ab.dot(ap), d2 = ac.dot(ap);
   if (d1 <= 0 && d2 <= 0) return ap.norm();

@@ -25,15 +25,24 @@ namespace vhacd {
 
 const char* StatusName(Status status) {
   switch (status) {
-    case Status::kOk: return "ok";
-    case Status::kInvalidParameter: return "invalid parameter";
-    case Status::kEmptyMesh: return "empty mesh";
-    case Status::kInvalidMesh: return "invalid mesh";
-    case Status::kIndexOutOfRange: return "index out of range";
-    case Status::kUnsupported: return "unsupported";
-    case Status::kCancelled: return "cancelled";
-    case Status::kOutOfMemory: return "out of memory";
-    case Status::kInternalError: return "internal error";
+    case Status::kOk:
+      return "ok";
+    case Status::kInvalidParameter:
+      return "invalid parameter";
+    case Status::kEmptyMesh:
+      return "empty mesh";
+    case Status::kInvalidMesh:
+      return "invalid mesh";
+    case Status::kIndexOutOfRange:
+      return "index out of range";
+    case Status::kUnsupported:
+      return "unsupported";
+    case Status::kCancelled:
+      return "cancelled";
+    case Status::kOutOfMemory:
+      return "out of memory";
+    case Status::kInternalError:
+      return "internal error";
   }
   return "unknown";
 }
@@ -57,10 +66,12 @@ Status ValidateParameters(const Parameters& p, std::string* why) {
     return Status::kInvalidParameter;
   };
   auto in01 = [](double v, double hi) { return std::isfinite(v) && v >= 0.0 && v <= hi; };
-  if (p.resolution < 10000 || p.resolution > 64000000) return bad("resolution must be in [10000, 64000000]");
+  if (p.resolution < 10000 || p.resolution > 64000000)
+    return bad("resolution must be in [10000, 64000000]");
   if (p.depth < 1 || p.depth > 32) return bad("depth must be in [1, 32]");
   if (!in01(p.concavity, 1.0)) return bad("concavity must be in [0, 1]");
-  if (p.plane_downsampling < 1 || p.plane_downsampling > 16) return bad("plane_downsampling must be in [1, 16]");
+  if (p.plane_downsampling < 1 || p.plane_downsampling > 16)
+    return bad("plane_downsampling must be in [1, 16]");
   if (p.convexhull_downsampling < 1 || p.convexhull_downsampling > 16)
     return bad("convexhull_downsampling must be in [1, 16]");
   if (!in01(p.alpha, 1.0)) return bad("alpha must be in [0, 1]");
@@ -99,8 +110,8 @@ Result Fail(Status s, std::string message) {
 }
 
 struct InputMesh {
-  std::vector<Vec3> points;                          // welded, referenced only
-  std::vector<std::array<uint32_t, 3>> triangles;    // no degenerate, no duplicate
+  std::vector<Vec3> points;                        // welded, referenced only
+  std::vector<std::array<uint32_t, 3>> triangles;  // no degenerate, no duplicate
   bool closed = false;
 };
 
@@ -295,7 +306,9 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   gmesh.points.resize(pn.size());
   for (size_t i = 0; i < pn.size(); ++i) gmesh.points[i] = (pn[i] - place.origin) / place.h;
   // grid -> world: center + scale * rot^T * (origin + h * g)
-  auto to_world = [&](const Vec3& g) -> Vec3 { return center + scale * (rot.transpose() * (place.origin + place.h * g)); };
+  auto to_world = [&](const Vec3& g) -> Vec3 {
+    return center + scale * (rot.transpose() * (place.origin + place.h * g));
+  };
   const double diag_grid = (nhi - nlo).norm() / place.h;
 
   // Voxelization.
@@ -322,7 +335,8 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   clock.Lap();
   if (params.mode == Mode::kTetrahedron) {
     // Mode 1: the surface voxels become trimmed tetrahedra (see tetrahedron_set.h).
-    if (!internal::BuildSurfaceCells(gmesh, grid, &ctx, &root.cells)) return Fail(Status::kCancelled, "cancelled");
+    if (!internal::BuildSurfaceCells(gmesh, grid, &ctx, &root.cells))
+      return Fail(Status::kCancelled, "cancelled");
     if (root.cells.size() != rep.surface_voxel_count)
       return Fail(Status::kInternalError, "surface cells do not match the surface voxels");
     root.tetra = true;
@@ -349,8 +363,9 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
       rep.tetrahedron_count += c.tetrahedra;
       trimmed += c.volume < 1.0f;
     }
-    ctx.Log(std::to_string(rep.tetrahedron_count) + " tetrahedra, " + std::to_string(trimmed) + " of " +
-            std::to_string(root.cells.size()) + " surface voxels trimmed to the surface, " +
+    ctx.Log(std::to_string(rep.tetrahedron_count) + " tetrahedra, " + std::to_string(trimmed) +
+            " of " + std::to_string(root.cells.size()) +
+            " surface voxels trimmed to the surface, " +
             std::to_string(rep.surface_voxel_count - root.cells.size()) + " left empty");
   }
   rep.seconds_tetrahedra = clock.Lap();
@@ -362,7 +377,8 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   if (!field.Build(grid, &ctx)) return Fail(Status::kCancelled, "cancelled");
   // A hull surface point is at most ~half a voxel farther from the input than the deepest outside
   // voxel centre the hull contains: compare depths with that margin taken off.
-  const double max_depth = params.max_distance > 0 ? std::max(0.25, params.max_distance * diag_grid - 0.5) : 0.0;
+  const double max_depth =
+      params.max_distance > 0 ? std::max(0.25, params.max_distance * diag_grid - 0.5) : 0.0;
   rep.seconds_distance = clock.Lap();
 
   // Clipping.
@@ -377,7 +393,8 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   cp.field = &field;
   cp.max_depth = max_depth;
   internal::ClipOutput clip;
-  if (!internal::ClipRecursively(std::move(root), cp, &ctx, &clip)) return Fail(Status::kCancelled, "cancelled");
+  if (!internal::ClipRecursively(std::move(root), cp, &ctx, &clip))
+    return Fail(Status::kCancelled, "cancelled");
   rep.parts_before_merge = static_cast<uint32_t>(clip.parts.size());
   rep.seconds_clip = clock.Lap();
 
@@ -386,11 +403,13 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   std::vector<internal::HullMesh> hulls(clip.parts.size());
   {
     const internal::TriangleIndex index(gmesh, grid.dims, 8);
-    if (!internal::ParallelFor(&ctx, clip.parts.size(),
-                               [&](size_t i) { hulls[i] = internal::BuildPartHull(clip.parts[i], index); }))
+    if (!internal::ParallelFor(&ctx, clip.parts.size(), [&](size_t i) {
+          hulls[i] = internal::BuildPartHull(clip.parts[i], index);
+        }))
       return Fail(Status::kCancelled, "cancelled");
   }
-  hulls.erase(std::remove_if(hulls.begin(), hulls.end(), [](const internal::HullMesh& h) { return h.empty(); }),
+  hulls.erase(std::remove_if(hulls.begin(), hulls.end(),
+                             [](const internal::HullMesh& h) { return h.empty(); }),
               hulls.end());
   std::vector<internal::Part>().swap(clip.parts);
   rep.seconds_hulls = clock.Lap();
@@ -402,8 +421,9 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   const double min_volume = params.min_volume_per_hull * clip.volume0;
   constexpr double kMaxRelativeLoss = 0.002;
   if (!internal::ParallelFor(&ctx, hulls.size(), [&](size_t i) {
-        hulls[i] = internal::SimplifyHull(hulls[i], params.max_vertices_per_hull,
-                                          std::min(min_volume, kMaxRelativeLoss * hulls[i].Volume()));
+        hulls[i] =
+            internal::SimplifyHull(hulls[i], params.max_vertices_per_hull,
+                                   std::min(min_volume, kMaxRelativeLoss * hulls[i].Volume()));
       }))
     return Fail(Status::kCancelled, "cancelled");
 
@@ -422,8 +442,9 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   // Simplification.
   ctx.BeginStage("Simplification", 85, 90);
   if (!internal::ParallelFor(&ctx, hulls.size(), [&](size_t i) {
-        hulls[i] = internal::SimplifyHull(hulls[i], params.max_vertices_per_hull,
-                                          std::min(min_volume, kMaxRelativeLoss * hulls[i].Volume()));
+        hulls[i] =
+            internal::SimplifyHull(hulls[i], params.max_vertices_per_hull,
+                                   std::min(min_volume, kMaxRelativeLoss * hulls[i].Volume()));
       }))
     return Fail(Status::kCancelled, "cancelled");
   rep.seconds_simplify = clock.Lap();
@@ -452,7 +473,8 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
       const Vec3 w = to_world(g);
       out.points.insert(out.points.end(), {w[0], w[1], w[2]});
     }
-    for (const auto& t : hulls[i].triangles) out.triangles.insert(out.triangles.end(), {t[0], t[1], t[2]});
+    for (const auto& t : hulls[i].triangles)
+      out.triangles.insert(out.triangles.end(), {t[0], t[1], t[2]});
     // Volumes of extreme-scale inputs may leave the double range: clamp, never return Inf.
     out.volume = std::min(hulls[i].Volume() * vol_scale, std::numeric_limits<double>::max());
     const Vec3 c = to_world(hulls[i].Centroid());

@@ -32,7 +32,8 @@ void Edt1D(const double* f, double* out, int n, int* v, double* z) {
     double s;
     for (;;) {
       const int p = v[k];
-      s = ((f[q] + static_cast<double>(q) * q) - (f[p] + static_cast<double>(p) * p)) / (2.0 * (q - p));
+      s = ((f[q] + static_cast<double>(q) * q) - (f[p] + static_cast<double>(p) * p)) /
+          (2.0 * (q - p));
       if (s <= z[k] && k > 0) {
         --k;
         continue;
@@ -58,8 +59,10 @@ bool DistanceField::Build(const VoxelGrid& grid, Context* ctx) {
   const size_t n = grid.size();
   // Squared distances in float: ample precision here, half the memory of double.
   std::vector<float> sq(n);
-  for (size_t i = 0; i < n; ++i) sq[i] = grid.cell[i] == kCellOutside ? std::numeric_limits<float>::infinity() : 0.0f;
-  const size_t stride[3] = {1, static_cast<size_t>(dims_[0]), static_cast<size_t>(dims_[0]) * dims_[1]};
+  for (size_t i = 0; i < n; ++i)
+    sq[i] = grid.cell[i] == kCellOutside ? std::numeric_limits<float>::infinity() : 0.0f;
+  const size_t stride[3] = {1, static_cast<size_t>(dims_[0]),
+                            static_cast<size_t>(dims_[0]) * dims_[1]};
   for (int axis = 0; axis < 3; ++axis) {
     const int u = (axis + 1) % 3, w = (axis + 2) % 3;
     const size_t nlines = static_cast<size_t>(dims_[u]) * dims_[w];
@@ -120,9 +123,11 @@ double DistanceField::Interpolate(const Vec3& p) const {
   }
   double acc = 0.0;
   for (int k = 0; k < 8; ++k) {
-    const int x = std::min(i0[0] + (k & 1), dims_[0] - 1), y = std::min(i0[1] + ((k >> 1) & 1), dims_[1] - 1),
+    const int x = std::min(i0[0] + (k & 1), dims_[0] - 1),
+              y = std::min(i0[1] + ((k >> 1) & 1), dims_[1] - 1),
               z = std::min(i0[2] + ((k >> 2) & 1), dims_[2] - 1);
-    const double w = ((k & 1) ? f[0] : 1 - f[0]) * (((k >> 1) & 1) ? f[1] : 1 - f[1]) * (((k >> 2) & 1) ? f[2] : 1 - f[2]);
+    const double w = ((k & 1) ? f[0] : 1 - f[0]) * (((k >> 1) & 1) ? f[1] : 1 - f[1]) *
+                     (((k >> 2) & 1) ? f[2] : 1 - f[2]);
     acc += w * d_[(static_cast<size_t>(z) * dims_[1] + y) * dims_[0] + x];
   }
   return acc;

@@ -9,7 +9,8 @@
 namespace vhacd {
 namespace internal {
 
-TriangleLocator::TriangleLocator(const GridMesh& mesh, double cell_size) : mesh_(mesh), cell_(cell_size) {
+TriangleLocator::TriangleLocator(const GridMesh& mesh, double cell_size)
+    : mesh_(mesh), cell_(cell_size) {
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (const auto& t : mesh.triangles)
     for (uint32_t v : t) {
@@ -18,7 +19,8 @@ TriangleLocator::TriangleLocator(const GridMesh& mesh, double cell_size) : mesh_
     }
   if (mesh.triangles.empty()) lo = hi = Vec3::Zero();
   origin_ = lo;
-  for (int a = 0; a < 3; ++a) dims_[a] = std::max(1, static_cast<int>(std::ceil((hi[a] - lo[a]) / cell_)) + 1);
+  for (int a = 0; a < 3; ++a)
+    dims_[a] = std::max(1, static_cast<int>(std::ceil((hi[a] - lo[a]) / cell_)) + 1);
   const size_t ncell = static_cast<size_t>(dims_[0]) * dims_[1] * dims_[2];
   start_.assign(ncell + 1, 0);
   auto range = [&](const std::array<uint32_t, 3>& t, int* clo, int* chi) {
@@ -46,8 +48,10 @@ TriangleLocator::TriangleLocator(const GridMesh& mesh, double cell_size) : mesh_
         for (int y = clo[1]; y <= chi[1]; ++y)
           for (int x = clo[0]; x <= chi[0]; ++x) {
             const size_t c = (static_cast<size_t>(z) * dims_[1] + y) * dims_[0] + x;
-            if (pass == 0) ++start_[c + 1];
-            else ids_[fill[c]++] = ti;
+            if (pass == 0)
+              ++start_[c + 1];
+            else
+              ids_[fill[c]++] = ti;
           }
     }
   }
@@ -69,11 +73,14 @@ double TriangleLocator::Distance(const Vec3& p) const {
       for (int y = lo[1]; y <= hi[1]; ++y)
         for (int x = lo[0]; x <= hi[0]; ++x) {
           // Only the shell of the block is new.
-          if (r > 0 && std::abs(x - c0[0]) < r && std::abs(y - c0[1]) < r && std::abs(z - c0[2]) < r) continue;
+          if (r > 0 && std::abs(x - c0[0]) < r && std::abs(y - c0[1]) < r &&
+              std::abs(z - c0[2]) < r)
+            continue;
           const size_t c = (static_cast<size_t>(z) * dims_[1] + y) * dims_[0] + x;
           for (uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
             const auto& t = mesh_.triangles[ids_[k]];
-            best = std::min(best, PointTriangleDistance(p, mesh_.points[t[0]], mesh_.points[t[1]], mesh_.points[t[2]]));
+            best = std::min(best, PointTriangleDistance(p, mesh_.points[t[0]], mesh_.points[t[1]],
+                                                        mesh_.points[t[2]]));
           }
         }
     // Distance from p to the space outside the visited block (infinite beyond the grid).
@@ -90,7 +97,8 @@ double TriangleLocator::Distance(const Vec3& p) const {
 namespace {
 
 // Distance from p to the union of hulls (0 inside one).
-double DistanceToHulls(const Vec3& p, const std::vector<HullMesh>& hulls, const std::vector<HullPlanes>& planes) {
+double DistanceToHulls(const Vec3& p, const std::vector<HullMesh>& hulls,
+                       const std::vector<HullPlanes>& planes) {
   double best = std::numeric_limits<double>::infinity();
   for (size_t h = 0; h < hulls.size(); ++h) {
     const HullPlanes& hp = planes[h];
@@ -100,8 +108,9 @@ double DistanceToHulls(const Vec3& p, const std::vector<HullMesh>& hulls, const 
     if (s <= 1e-9) return 0.0;
     if (s >= best) continue;
     for (const auto& t : hulls[h].triangles)
-      best = std::min(best, PointTriangleDistance(p, hulls[h].vertices[t[0]], hulls[h].vertices[t[1]],
-                                                  hulls[h].vertices[t[2]]));
+      best =
+          std::min(best, PointTriangleDistance(p, hulls[h].vertices[t[0]], hulls[h].vertices[t[1]],
+                                               hulls[h].vertices[t[2]]));
   }
   return best;
 }
@@ -110,7 +119,8 @@ double DistanceToHulls(const Vec3& p, const std::vector<HullMesh>& hulls, const 
 double HullSurfaceDistance(const Vec3& p, const HullMesh& hull, double limit) {
   double best = limit;
   for (const auto& t : hull.triangles)
-    best = std::min(best, PointTriangleDistance(p, hull.vertices[t[0]], hull.vertices[t[1]], hull.vertices[t[2]]));
+    best = std::min(best, PointTriangleDistance(p, hull.vertices[t[0]], hull.vertices[t[1]],
+                                                hull.vertices[t[2]]));
   return best;
 }
 
@@ -122,8 +132,10 @@ constexpr double kGap = 0.002;
 // Points about `spacing` apart inside the triangle, in rows parallel to its longest edge (linear
 // in the area, and empty for a degenerate triangle).
 void SampleTriangle(Vec3 a, Vec3 b, Vec3 c, double spacing, std::vector<Vec3>* out) {
-  if ((c - b).norm() > (b - a).norm() && (c - b).norm() >= (a - c).norm()) std::swap(a, c);
-  else if ((a - c).norm() > (b - a).norm()) std::swap(b, c);
+  if ((c - b).norm() > (b - a).norm() && (c - b).norm() >= (a - c).norm())
+    std::swap(a, c);
+  else if ((a - c).norm() > (b - a).norm())
+    std::swap(b, c);
   const double ab = (b - a).norm();
   if (!(ab > 0)) return;
   const double height = (c - a).cross(b - a).norm() / ab;
@@ -139,13 +151,16 @@ void SampleTriangle(Vec3 a, Vec3 b, Vec3 c, double spacing, std::vector<Vec3>* o
 std::vector<Vec3> SampleSurface(const GridMesh& mesh, size_t count) {
   double area = 0.0;
   for (const auto& t : mesh.triangles)
-    area += 0.5 * (mesh.points[t[1]] - mesh.points[t[0]]).cross(mesh.points[t[2]] - mesh.points[t[0]]).norm();
+    area +=
+        0.5 *
+        (mesh.points[t[1]] - mesh.points[t[0]]).cross(mesh.points[t[2]] - mesh.points[t[0]]).norm();
   std::vector<Vec3> out;
   // Vertices (a deterministic stride of them), then rows across each triangle.
   const size_t vstride = std::max<size_t>(1, mesh.points.size() / (count / 2 + 1));
   for (size_t i = 0; i < mesh.points.size(); i += vstride) out.push_back(mesh.points[i]);
   const double spacing = std::max(1e-9, std::sqrt(2.0 * area / std::max<size_t>(1, count / 2)));
-  for (const auto& t : mesh.triangles) SampleTriangle(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], spacing, &out);
+  for (const auto& t : mesh.triangles)
+    SampleTriangle(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], spacing, &out);
   return out;
 }
 
@@ -164,7 +179,8 @@ bool ComputeErrorReport(const MetricsInput& in, Context* ctx, Report* report) {
   for (size_t h = 0; h < hulls.size(); ++h) {
     int lo[3], hi[3];
     for (int a = 0; a < 3; ++a) {
-      lo[a] = std::clamp(static_cast<int>(std::floor(planes[h].bmin[a] - 0.5)), 0, grid.dims[a] - 1);
+      lo[a] =
+          std::clamp(static_cast<int>(std::floor(planes[h].bmin[a] - 0.5)), 0, grid.dims[a] - 1);
       hi[a] = std::clamp(static_cast<int>(std::ceil(planes[h].bmax[a] - 0.5)), 0, grid.dims[a] - 1);
     }
     for (int z = lo[2]; z <= hi[2]; ++z)
@@ -211,20 +227,25 @@ bool ComputeErrorReport(const MetricsInput& in, Context* ctx, Report* report) {
   double total_area = 0.0;
   for (const HullMesh& h : hulls)
     for (const auto& t : h.triangles)
-      total_area += 0.5 * (h.vertices[t[1]] - h.vertices[t[0]]).cross(h.vertices[t[2]] - h.vertices[t[0]]).norm();
+      total_area +=
+          0.5 *
+          (h.vertices[t[1]] - h.vertices[t[0]]).cross(h.vertices[t[2]] - h.vertices[t[0]]).norm();
   const double spacing = std::max(0.25, std::sqrt(2.0 * total_area / 30000.0));
   std::vector<std::pair<uint32_t, Vec3>> hs;  // (hull, point)
   std::vector<Vec3> tmp;
   for (uint32_t hi = 0; hi < hulls.size(); ++hi) {
     const HullMesh& h = hulls[hi];
     tmp.assign(h.vertices.begin(), h.vertices.end());
-    for (const auto& t : h.triangles) SampleTriangle(h.vertices[t[0]], h.vertices[t[1]], h.vertices[t[2]], spacing, &tmp);
+    for (const auto& t : h.triangles)
+      SampleTriangle(h.vertices[t[0]], h.vertices[t[1]], h.vertices[t[2]], spacing, &tmp);
     for (const Vec3& p : tmp) hs.emplace_back(hi, p);
   }
   // Buckets of a few triangles each: about 3 mean triangle sizes, at most 4 voxels.
   double mesh_area = 0.0;
   for (const auto& t : in.mesh->triangles)
-    mesh_area += 0.5 * (in.mesh->points[t[1]] - in.mesh->points[t[0]]).cross(in.mesh->points[t[2]] - in.mesh->points[t[0]]).norm();
+    mesh_area += 0.5 * (in.mesh->points[t[1]] - in.mesh->points[t[0]])
+                           .cross(in.mesh->points[t[2]] - in.mesh->points[t[0]])
+                           .norm();
   double cell = 3.0 * std::sqrt(2.0 * mesh_area / std::max<size_t>(1, in.mesh->triangles.size()));
   const double cells_at_one = static_cast<double>(grid.dims[0]) * grid.dims[1] * grid.dims[2];
   cell = std::clamp(cell, std::max(0.5, std::cbrt(cells_at_one / 8e6)), 4.0);
@@ -241,8 +262,10 @@ bool ComputeErrorReport(const MetricsInput& in, Context* ctx, Report* report) {
           for (size_t h = 0; h < hulls.size() && !interior; ++h) {
             if (h == hs[k].first) continue;
             const double s = planes[h].SignedDistanceBound(p);
-            if (s <= 0) interior = true;
-            else if (s < gap) interior = HullSurfaceDistance(p, hulls[h], gap) < gap;
+            if (s <= 0)
+              interior = true;
+            else if (s < gap)
+              interior = HullSurfaceDistance(p, hulls[h], gap) < gap;
           }
           if (!interior) {
             const double dd = locator.Distance(p);

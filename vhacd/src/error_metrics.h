@@ -8,8 +8,8 @@
 
 #include "context.h"
 #include "convex_hull.h"
-#include "voxelizer.h"
 #include "vhacd/vhacd.h"
+#include "voxelizer.h"
 
 namespace vhacd {
 namespace internal {
@@ -32,8 +32,8 @@ struct MetricsInput {
   const GridMesh* mesh = nullptr;
   const VoxelGrid* grid = nullptr;
   const std::vector<HullMesh>* hulls = nullptr;
-  double diagonal = 1.0;   // bounding-box diagonal of the input, grid units
-  double volume0 = 1.0;    // concavity normalization, voxel units
+  double diagonal = 1.0;  // bounding-box diagonal of the input, grid units
+  double volume0 = 1.0;   // concavity normalization, voxel units
   bool closed = false;
 };
 

@@ -39,7 +39,8 @@ HullMesh SimplifyHull(const HullMesh& hull, uint32_t max_vertices, double min_vo
     std::vector<Vec3> fn(cur.triangles.size());
     for (size_t f = 0; f < cur.triangles.size(); ++f) {
       const auto& t = cur.triangles[f];
-      fn[f] = (cur.vertices[t[1]] - cur.vertices[t[0]]).cross(cur.vertices[t[2]] - cur.vertices[t[0]]);
+      fn[f] =
+          (cur.vertices[t[1]] - cur.vertices[t[0]]).cross(cur.vertices[t[2]] - cur.vertices[t[0]]);
     }
     double best = 0.0;
     size_t best_i = n;

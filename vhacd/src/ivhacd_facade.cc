@@ -3,7 +3,7 @@
 #include <limits>
 #include <vector>
 
-#include "vhacd/VHACD.h"
+#include "vhacd/ivhacd.h"
 
 namespace VHACD {
 namespace {
@@ -31,22 +31,26 @@ class VHACDImpl : public IVHACD {
  public:
   void Cancel() override { cancel_.store(true); }
 
-  bool Compute(const float* const points, const unsigned int stridePoints, const unsigned int countPoints,
-               const int* const triangles, const unsigned int strideTriangles,
-               const unsigned int countTriangles, const Parameters& params) override {
+  bool Compute(const float* const points, const unsigned int stridePoints,
+               const unsigned int countPoints, const int* const triangles,
+               const unsigned int strideTriangles, const unsigned int countTriangles,
+               const Parameters& params) override {
     vhacd::MeshView view;
     view.points_f = points;
     return Run(view, stridePoints, countPoints, triangles, strideTriangles, countTriangles, params);
   }
-  bool Compute(const double* const points, const unsigned int stridePoints, const unsigned int countPoints,
-               const int* const triangles, const unsigned int strideTriangles,
-               const unsigned int countTriangles, const Parameters& params) override {
+  bool Compute(const double* const points, const unsigned int stridePoints,
+               const unsigned int countPoints, const int* const triangles,
+               const unsigned int strideTriangles, const unsigned int countTriangles,
+               const Parameters& params) override {
     vhacd::MeshView view;
     view.points_d = points;
     return Run(view, stridePoints, countPoints, triangles, strideTriangles, countTriangles, params);
   }
 
-  unsigned int GetNConvexHulls() const override { return static_cast<unsigned int>(result_.hulls.size()); }
+  unsigned int GetNConvexHulls() const override {
+    return static_cast<unsigned int>(result_.hulls.size());
+  }
 
   void GetConvexHull(const unsigned int index, ConvexHull& ch) const override {
     ch = ConvexHull();
@@ -73,8 +77,9 @@ class VHACDImpl : public IVHACD {
   const vhacd::Report& GetReport() const override { return result_.report; }
 
  private:
-  bool Run(vhacd::MeshView view, unsigned int stridePoints, unsigned int countPoints, const int* triangles,
-           unsigned int strideTriangles, unsigned int countTriangles, const Parameters& p) {
+  bool Run(vhacd::MeshView view, unsigned int stridePoints, unsigned int countPoints,
+           const int* triangles, unsigned int strideTriangles, unsigned int countTriangles,
+           const Parameters& p) {
     Clean();
     cancel_.store(false);
     view.point_count = countPoints;
@@ -88,7 +93,8 @@ class VHACDImpl : public IVHACD {
       for (size_t t = 0; t < countTriangles; ++t)
         for (int k = 0; k < 3; ++k) {
           const int v = triangles[t * strideTriangles + k];
-          indices[t * 3 + k] = v < 0 ? std::numeric_limits<uint32_t>::max() : static_cast<uint32_t>(v);
+          indices[t * 3 + k] =
+              v < 0 ? std::numeric_limits<uint32_t>::max() : static_cast<uint32_t>(v);
         }
       view.indices = indices.data();
     } else if (strideTriangles < 3) {

@@ -1,9 +1,9 @@
 #include "merge.h"
 
 #include <algorithm>
+#include <functional>
 #include <limits>
 #include <queue>
-#include <functional>
 
 #include "thread_pool.h"
 
@@ -23,7 +23,8 @@ struct Box {
   Vec3 lo, hi;
 };
 Box BoxOf(const HullMesh& h) {
-  Box b{h.vertices.empty() ? Vec3::Zero() : h.vertices[0], h.vertices.empty() ? Vec3::Zero() : h.vertices[0]};
+  Box b{h.vertices.empty() ? Vec3::Zero() : h.vertices[0],
+        h.vertices.empty() ? Vec3::Zero() : h.vertices[0]};
   for (const Vec3& p : h.vertices) {
     b.lo = b.lo.cwiseMin(p);
     b.hi = b.hi.cwiseMax(p);
@@ -74,20 +75,24 @@ bool MergeHulls(std::vector<HullMesh>* hulls_io, const MergeParams& params, Cont
           const double c = std::max(0.0, m.Volume() - vol[i] - vol[j]) / params.volume0;
           cost[k] = c;
           // The exact depth only matters for the budget; otherwise whether it exceeds the limit.
-          if (!use_depth) depth[k] = 0.0;
-          else if (budget) depth[k] = std::max(params.field->SurfaceDepth(m), params.field->HullDepth(m));
+          if (!use_depth)
+            depth[k] = 0.0;
+          else if (budget)
+            depth[k] = std::max(params.field->SurfaceDepth(m), params.field->HullDepth(m));
           else if (c < params.gamma) {
             depth[k] = params.field->SurfaceDepth(m, params.max_depth);
-            if (depth[k] <= params.max_depth) depth[k] = std::max(depth[k], params.field->HullDepth(m, params.max_depth));
-          }
-          else depth[k] = kInf;
+            if (depth[k] <= params.max_depth)
+              depth[k] = std::max(depth[k], params.field->HullDepth(m, params.max_depth));
+          } else
+            depth[k] = kInf;
         }))
       return false;
     for (size_t k = 0; k < pairs.size(); ++k) {
       const uint32_t i = pairs[k].first, j = pairs[k].second;
       if (cost[k] < params.gamma && (!use_depth || depth[k] <= params.max_depth))
         under.push({cost[k], 0.0, i, j, version[i], version[j]});
-      if (budget) over.push({use_depth ? depth[k] : cost[k], cost[k], i, j, version[i], version[j]});
+      if (budget)
+        over.push({use_depth ? depth[k] : cost[k], cost[k], i, j, version[i], version[j]});
     }
     return true;
   };
@@ -127,7 +132,8 @@ bool MergeHulls(std::vector<HullMesh>* hulls_io, const MergeParams& params, Cont
         std::vector<std::pair<uint32_t, uint32_t>> pairs;
         for (uint32_t i = 0; i < n; ++i)
           for (uint32_t j = i + 1; j < n; ++j)
-            if (alive[i] && alive[j] && BoxGap(box[i], box[j]) > params.adjacency) pairs.emplace_back(i, j);
+            if (alive[i] && alive[j] && BoxGap(box[i], box[j]) > params.adjacency)
+              pairs.emplace_back(i, j);
         if (!evaluate(pairs)) return false;
         continue;
       }

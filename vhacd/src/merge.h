@@ -12,11 +12,11 @@ namespace vhacd {
 namespace internal {
 
 struct MergeParams {
-  double gamma = 0.00125;   // merge while the cost is below this
-  uint32_t max_hulls = 0;   // then keep merging while more hulls remain (0 = no budget)
-  double volume0 = 1.0;     // cost normalization
-  double adjacency = 1.0;   // pairs whose boxes are farther apart than this are not merged
-                            // under gamma (they still are to meet max_hulls)
+  double gamma = 0.00125;  // merge while the cost is below this
+  uint32_t max_hulls = 0;  // then keep merging while more hulls remain (0 = no budget)
+  double volume0 = 1.0;    // cost normalization
+  double adjacency = 1.0;  // pairs whose boxes are farther apart than this are not merged
+                           // under gamma (they still are to meet max_hulls)
   // When set, a merge under gamma also needs the merged hull to stick out of the solid by at most
   // max_depth voxels; over the budget, the pair with the smallest depth is merged.
   const DistanceField* field = nullptr;

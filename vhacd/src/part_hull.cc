@@ -6,7 +6,8 @@
 namespace vhacd {
 namespace internal {
 
-TriangleIndex::TriangleIndex(const GridMesh& mesh, const int dims[3], int cell) : mesh_(mesh), cell_(cell) {
+TriangleIndex::TriangleIndex(const GridMesh& mesh, const int dims[3], int cell)
+    : mesh_(mesh), cell_(cell) {
   for (int a = 0; a < 3; ++a) dims_[a] = std::max(1, (dims[a] + cell - 1) / cell);
   const size_t ncell = static_cast<size_t>(dims_[0]) * dims_[1] * dims_[2];
   const size_t nt = mesh.triangles.size();
@@ -20,11 +21,13 @@ TriangleIndex::TriangleIndex(const GridMesh& mesh, const int dims[3], int cell) 
     thi_[t] = mesh.points[tr[0]].cwiseMax(mesh.points[tr[1]]).cwiseMax(mesh.points[tr[2]]);
     for (int a = 0; a < 3; ++a) {
       range[t][a] = std::clamp(static_cast<int>(std::floor(tlo_[t][a])) / cell, 0, dims_[a] - 1);
-      range[t][a + 3] = std::clamp(static_cast<int>(std::floor(thi_[t][a])) / cell, 0, dims_[a] - 1);
+      range[t][a + 3] =
+          std::clamp(static_cast<int>(std::floor(thi_[t][a])) / cell, 0, dims_[a] - 1);
     }
     for (int z = range[t][2]; z <= range[t][5]; ++z)
       for (int y = range[t][1]; y <= range[t][4]; ++y)
-        for (int x = range[t][0]; x <= range[t][3]; ++x) ++start_[(static_cast<size_t>(z) * dims_[1] + y) * dims_[0] + x + 1];
+        for (int x = range[t][0]; x <= range[t][3]; ++x)
+          ++start_[(static_cast<size_t>(z) * dims_[1] + y) * dims_[0] + x + 1];
   }
   for (size_t c = 0; c < ncell; ++c) start_[c + 1] += start_[c];
   ids_.resize(start_[ncell]);
@@ -33,7 +36,8 @@ TriangleIndex::TriangleIndex(const GridMesh& mesh, const int dims[3], int cell) 
     for (int z = range[t][2]; z <= range[t][5]; ++z)
       for (int y = range[t][1]; y <= range[t][4]; ++y)
         for (int x = range[t][0]; x <= range[t][3]; ++x)
-          ids_[fill[(static_cast<size_t>(z) * dims_[1] + y) * dims_[0] + x]++] = static_cast<uint32_t>(t);
+          ids_[fill[(static_cast<size_t>(z) * dims_[1] + y) * dims_[0] + x]++] =
+              static_cast<uint32_t>(t);
 }
 
 void ClipTriangleToBox(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& lo, const Vec3& hi,
@@ -85,11 +89,14 @@ HullMesh BuildPartHull(const Part& part, const TriangleIndex& index) {
     std::fill(stamp.begin(), stamp.end(), 0);
     mark = 1;
   }
-  // Triangles inside the box contribute their vertices (each once), the others their clipped polygon.
+  // Triangles inside the box contribute their vertices (each once), the others their clipped
+  // polygon.
   thread_local std::vector<uint32_t> vstamp;
   if (vstamp.size() != mesh.points.size()) vstamp.assign(mesh.points.size(), 0);
   if (mark == 1) std::fill(vstamp.begin(), vstamp.end(), 0);
-  auto inside = [&](const Vec3& q) { return (q.array() >= lo.array()).all() && (q.array() <= hi.array()).all(); };
+  auto inside = [&](const Vec3& q) {
+    return (q.array() >= lo.array()).all() && (q.array() <= hi.array()).all();
+  };
   index.ForEachInBox(lo, hi, &stamp, mark, [&](uint32_t t) {
     const auto& tr = mesh.triangles[t];
     if (inside(mesh.points[tr[0]]) && inside(mesh.points[tr[1]]) && inside(mesh.points[tr[2]])) {

@@ -20,7 +20,8 @@ class TriangleIndex {
   TriangleIndex(const GridMesh& mesh, const int dims[3], int cell);
   // Calls fn(t) once for every triangle whose bounding box meets [lo, hi].
   template <typename Fn>
-  void ForEachInBox(const Vec3& lo, const Vec3& hi, std::vector<uint32_t>* stamp, uint32_t mark, Fn fn) const;
+  void ForEachInBox(const Vec3& lo, const Vec3& hi, std::vector<uint32_t>* stamp, uint32_t mark,
+                    Fn fn) const;
 
   const GridMesh& mesh() const { return mesh_; }
 
@@ -41,8 +42,8 @@ void ClipTriangleToBox(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& 
 HullMesh BuildPartHull(const Part& part, const TriangleIndex& index);
 
 template <typename Fn>
-void TriangleIndex::ForEachInBox(const Vec3& lo, const Vec3& hi, std::vector<uint32_t>* stamp, uint32_t mark,
-                                 Fn fn) const {
+void TriangleIndex::ForEachInBox(const Vec3& lo, const Vec3& hi, std::vector<uint32_t>* stamp,
+                                 uint32_t mark, Fn fn) const {
   int clo[3], chi[3];
   for (int a = 0; a < 3; ++a) {
     clo[a] = std::max(0, std::min(dims_[a] - 1, static_cast<int>(lo[a]) / cell_));
@@ -56,7 +57,8 @@ void TriangleIndex::ForEachInBox(const Vec3& lo, const Vec3& hi, std::vector<uin
           const uint32_t t = ids_[k];
           if ((*stamp)[t] == mark) continue;
           (*stamp)[t] = mark;
-          if ((tlo_[t].array() > hi.array()).any() || (thi_[t].array() < lo.array()).any()) continue;
+          if ((tlo_[t].array() > hi.array()).any() || (thi_[t].array() < lo.array()).any())
+            continue;
           fn(t);
         }
       }

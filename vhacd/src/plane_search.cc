@@ -39,7 +39,8 @@ RevolutionHint ComputeRevolutionHint(const Part& part) {
 }
 
 double CutCost(const Part& part, const AxisLines& lines, int c, int hull_downsample,
-               const CutWeights& w, const RevolutionHint& hint, double part_concavity, const TetraAxis* tetra) {
+               const CutWeights& w, const RevolutionHint& hint, double part_concavity,
+               const TetraAxis* tetra) {
   const int a = lines.axis;
   const double symmetry = w.beta * hint.weight * std::fabs(hint.axis[a]) * part_concavity;
   if (tetra != nullptr && hull_downsample <= 1) {

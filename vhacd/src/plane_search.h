@@ -10,9 +10,9 @@ namespace vhacd {
 namespace internal {
 
 struct CutWeights {
-  double alpha = 0.05;  // balance
-  double beta = 0.05;   // revolution axis
-  double volume0 = 1.0; // normalization: volume of the hull of the whole voxel set
+  double alpha = 0.05;   // balance
+  double beta = 0.05;    // revolution axis
+  double volume0 = 1.0;  // normalization: volume of the hull of the whole voxel set
 };
 
 // Revolution axis of a part from the eigenvalues of its inertia: `weight` in [0, 1] is 1 when two

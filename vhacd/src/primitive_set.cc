@@ -43,7 +43,8 @@ class CornerSet {
  public:
   // `lines` bounds the number of Add() calls: when the (u, v) grid would be much larger than the
   // lines it holds (a sparse, wide part), faces are emitted directly instead.
-  CornerSet(int axis, int umin, int umax, int vmin, int vmax, int step, size_t lines, std::vector<Vec3>* out)
+  CornerSet(int axis, int umin, int umax, int vmin, int vmax, int step, size_t lines,
+            std::vector<Vec3>* out)
       : axis_(axis), step_(step), out_(out) {
     u0_ = umin - ((umin % step) + step) % step;
     v0_ = vmin - ((vmin % step) + step) % step;
@@ -63,7 +64,8 @@ class CornerSet {
     if (direct_) {
       for (int along : {lo, hi})
         for (int dv = 0; dv <= step_; dv += step_)
-          for (int du = 0; du <= step_; du += step_) out_->push_back(MakePoint(axis_, along, u + du, v + dv));
+          for (int du = 0; du <= step_; du += step_)
+            out_->push_back(MakePoint(axis_, along, u + du, v + dv));
       return;
     }
     const int iu = (u - u0_) / step_, iv = (v - v0_) / step_;
@@ -141,8 +143,9 @@ TetraAxis BuildTetraAxis(const Part& part, int axis) {
   const size_t slices = hi >= lo ? static_cast<size_t>(hi - lo + 1) : 0;
   T.order.resize(part.cells.size());
   for (size_t i = 0; i < T.order.size(); ++i) T.order[i] = static_cast<uint32_t>(i);
-  std::stable_sort(T.order.begin(), T.order.end(),
-                   [&](uint32_t a, uint32_t b) { return part.cells[a].c[axis] < part.cells[b].c[axis]; });
+  std::stable_sort(T.order.begin(), T.order.end(), [&](uint32_t a, uint32_t b) {
+    return part.cells[a].c[axis] < part.cells[b].c[axis];
+  });
   T.slice_start.assign(slices + 1, 0);
   std::vector<double> volume(slices, 0.0);
   for (const SurfaceCell& c : part.cells) {
@@ -156,8 +159,8 @@ TetraAxis BuildTetraAxis(const Part& part, int axis) {
   return T;
 }
 
-void TetraSideHullPoints(const Part& part, const TetraAxis& ta, int c, bool left, std::vector<Vec3>* out,
-                         double* volume) {
+void TetraSideHullPoints(const Part& part, const TetraAxis& ta, int c, bool left,
+                         std::vector<Vec3>* out, double* volume) {
   SideHullPoints(ta.interior, c, left, 1, out);
   const int axis = ta.interior.axis;
   const int lo = part.bmin[axis];
@@ -167,7 +170,8 @@ void TetraSideHullPoints(const Part& part, const TetraAxis& ta, int c, bool left
   const uint32_t e = left ? ta.slice_start[split] : ta.slice_start[slices];
   for (uint32_t k = b; k < e; ++k) {
     const SurfaceCell& cell = part.cells[ta.order[k]];
-    for (int i = 0; i < cell.point_count; ++i) out->emplace_back(cell.p[i][0], cell.p[i][1], cell.p[i][2]);
+    for (int i = 0; i < cell.point_count; ++i)
+      out->emplace_back(cell.p[i][0], cell.p[i][1], cell.p[i][2]);
   }
   if (volume != nullptr)
     *volume = left ? ta.prefix_volume[split] : ta.prefix_volume[slices] - ta.prefix_volume[split];
@@ -227,7 +231,8 @@ void PrimitiveHullPoints(const Part& part, std::vector<Vec3>* out) {
   }
   PartHullPoints(part, true, out);
   for (const SurfaceCell& cell : part.cells)
-    for (int i = 0; i < cell.point_count; ++i) out->emplace_back(cell.p[i][0], cell.p[i][1], cell.p[i][2]);
+    for (int i = 0; i < cell.point_count; ++i)
+      out->emplace_back(cell.p[i][0], cell.p[i][1], cell.p[i][2]);
 }
 
 bool PrimitiveHull(const Part& part, const std::vector<Vec3>& points, HullMesh* out) {

@@ -41,10 +41,10 @@ struct Part {
 // The voxels of one part sorted into lines parallel to `axis`.
 struct AxisLines {
   int axis = 0;
-  std::vector<uint32_t> start;     // line l holds coords[start[l] .. start[l+1])
-  std::vector<uint16_t> coords;    // sorted coordinates along `axis`
-  std::vector<uint16_t> lu, lv;    // the line's coordinates on the two other axes
-  std::vector<uint32_t> slice_count;  // voxels per slice, from bmin[axis] to bmax[axis]
+  std::vector<uint32_t> start;                 // line l holds coords[start[l] .. start[l+1])
+  std::vector<uint16_t> coords;                // sorted coordinates along `axis`
+  std::vector<uint16_t> lu, lv;                // the line's coordinates on the two other axes
+  std::vector<uint32_t> slice_count;           // voxels per slice, from bmin[axis] to bmax[axis]
   int umin = 0, umax = 0, vmin = 0, vmax = 0;  // bounds of lu and lv
 
   size_t line_count() const { return lu.size(); }
@@ -57,8 +57,8 @@ AxisLines BuildAxisLines(const Part& part, int axis);
 // multiples of d are used, each standing for a d x d bundle of lines (its faces are widened to
 // d x d): the hull and *volume (when non-null) then describe the same coarse shape, so their
 // difference is a consistent concavity estimate. d = 1 is exact.
-void SideHullPoints(const AxisLines& lines, int c, bool left, int downsample, std::vector<Vec3>* out,
-                    double* volume = nullptr);
+void SideHullPoints(const AxisLines& lines, int c, bool left, int downsample,
+                    std::vector<Vec3>* out, double* volume = nullptr);
 
 // Exact hull of a part's voxels (of only its non-surface voxels when interior_only).
 void PartHullPoints(const Part& part, bool interior_only, std::vector<Vec3>* out);
@@ -79,8 +79,8 @@ struct TetraAxis {
 };
 TetraAxis BuildTetraAxis(const Part& part, int axis);
 // Hull points and volume of the part's primitives below (left) or at/above the plane c.
-void TetraSideHullPoints(const Part& part, const TetraAxis& ta, int c, bool left, std::vector<Vec3>* out,
-                         double* volume);
+void TetraSideHullPoints(const Part& part, const TetraAxis& ta, int c, bool left,
+                         std::vector<Vec3>* out, double* volume);
 
 // Volume of the exact hull of the points (0 when degenerate).
 double ExactHullVolume(const std::vector<Vec3>& points);

@@ -12,7 +12,8 @@ namespace internal {
 
 // Corner k of the unit cube is (k & 1, (k >> 1) & 1, (k >> 2) & 1). The central tetrahedron uses
 // the corners 1, 2, 4, 7; the four others cut off the corners 0, 3, 5, 6.
-const int kCubeTetrahedra[5][4] = {{1, 2, 7, 4}, {0, 1, 2, 4}, {3, 2, 1, 7}, {5, 1, 4, 7}, {6, 4, 2, 7}};
+const int kCubeTetrahedra[5][4] = {
+    {1, 2, 7, 4}, {0, 1, 2, 4}, {3, 2, 1, 7}, {5, 1, 4, 7}, {6, 4, 2, 7}};
 
 namespace {
 
@@ -34,7 +35,8 @@ Vec3 Crossing(const Vec3& p, double sp, const Vec3& q, double sq) {
 // Prism with end triangles (a0, a1, a2) and (b0, b1, b2), ai joined to bi: three tetrahedra.
 void SplitPrism(const Vec3 (&a)[3], const Vec3 (&b)[3], double* volume, int* count,
                 std::vector<std::array<Vec3, 4>>* pieces) {
-  const std::array<Vec3, 4> t[3] = {{a[0], a[1], a[2], b[0]}, {a[1], a[2], b[0], b[1]}, {a[2], b[0], b[1], b[2]}};
+  const std::array<Vec3, 4> t[3] = {
+      {a[0], a[1], a[2], b[0]}, {a[1], a[2], b[0], b[1]}, {a[2], b[0], b[1], b[2]}};
   for (const auto& q : t) {
     const double v = TetVolume(q[0], q[1], q[2], q[3]);
     if (!(v > 0)) continue;
@@ -46,15 +48,17 @@ void SplitPrism(const Vec3 (&a)[3], const Vec3 (&b)[3], double* volume, int* cou
 
 }  // namespace
 
-double ClipTetrahedron(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& n, double d0,
-                       int* count, std::vector<std::array<Vec3, 4>>* pieces) {
+double ClipTetrahedron(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& n,
+                       double d0, int* count, std::vector<std::array<Vec3, 4>>* pieces) {
   const Vec3 P[4] = {a, b, c, d};
   double s[4];
   int in[4], out[4], ni = 0, no = 0;
   for (int k = 0; k < 4; ++k) {
     s[k] = n.dot(P[k]) - d0;
-    if (s[k] <= 0) in[ni++] = k;
-    else out[no++] = k;
+    if (s[k] <= 0)
+      in[ni++] = k;
+    else
+      out[no++] = k;
   }
   *count = 0;
   double volume = 0.0;
@@ -75,15 +79,18 @@ double ClipTetrahedron(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& 
   } else if (ni == 2) {
     // Wedge: the inside edge (i0, i1) and the crossings of the four edges towards the outside.
     const int i0 = in[0], i1 = in[1], o0 = out[0], o1 = out[1];
-    const Vec3 e0[3] = {P[i0], Crossing(P[i0], s[i0], P[o0], s[o0]), Crossing(P[i0], s[i0], P[o1], s[o1])};
-    const Vec3 e1[3] = {P[i1], Crossing(P[i1], s[i1], P[o0], s[o0]), Crossing(P[i1], s[i1], P[o1], s[o1])};
+    const Vec3 e0[3] = {P[i0], Crossing(P[i0], s[i0], P[o0], s[o0]),
+                        Crossing(P[i0], s[i0], P[o1], s[o1])};
+    const Vec3 e1[3] = {P[i1], Crossing(P[i1], s[i1], P[o0], s[o0]),
+                        Crossing(P[i1], s[i1], P[o1], s[o1])};
     SplitPrism(e0, e1, &volume, count, pieces);
   } else if (ni == 3) {
     // The tetrahedron minus the corner beyond the plane: a prism between the inside face and its
     // crossings.
     const int o = out[0];
     const Vec3 f0[3] = {P[in[0]], P[in[1]], P[in[2]]};
-    const Vec3 f1[3] = {Crossing(P[in[0]], s[in[0]], P[o], s[o]), Crossing(P[in[1]], s[in[1]], P[o], s[o]),
+    const Vec3 f1[3] = {Crossing(P[in[0]], s[in[0]], P[o], s[o]),
+                        Crossing(P[in[1]], s[in[1]], P[o], s[o]),
                         Crossing(P[in[2]], s[in[2]], P[o], s[o])};
     SplitPrism(f0, f1, &volume, count, pieces);
   }
@@ -131,10 +138,12 @@ bool AddConvexPiece(const HalfSpace* hs, int count, SurfaceCell* cell, double* v
   for (int h = 0; h < count; ++h) {
     next.clear();
     int n = 0;
-    for (const auto& q : pieces) ClipTetrahedron(q[0], q[1], q[2], q[3], hs[h].n, hs[h].d, &n, &next);
+    for (const auto& q : pieces)
+      ClipTetrahedron(q[0], q[1], q[2], q[3], hs[h].n, hs[h].d, &n, &next);
     pieces.swap(next);
   }
-  for (const auto& q : pieces) *volume += std::fabs((q[1] - q[0]).dot((q[2] - q[0]).cross(q[3] - q[0]))) / 6.0;
+  for (const auto& q : pieces)
+    *volume += std::fabs((q[1] - q[0]).dot((q[2] - q[0]).cross(q[3] - q[0]))) / 6.0;
   *tets += static_cast<int>(pieces.size());
   // A zero-volume piece (the surface on a voxel face) still contributes its face: take the points
   // of the pieces before dropping flat ones, which ClipTetrahedron already did; so also test the
@@ -147,7 +156,8 @@ bool AddConvexPiece(const HalfSpace* hs, int count, SurfaceCell* cell, double* v
     for (int h = 0; h < count; ++h)
       for (int axis = 0; axis < 3; ++axis) {
         if (k & (1 << axis)) continue;
-        const Vec3 cj = o + Vec3((k | (1 << axis)) & 1, ((k | (1 << axis)) >> 1) & 1, ((k | (1 << axis)) >> 2) & 1);
+        const Vec3 cj = o + Vec3((k | (1 << axis)) & 1, ((k | (1 << axis)) >> 1) & 1,
+                                 ((k | (1 << axis)) >> 2) & 1);
         const double sk = hs[h].n.dot(ck) - hs[h].d, sj = hs[h].n.dot(cj) - hs[h].d;
         if ((sk <= 0) != (sj <= 0)) cand.push_back(Crossing(ck, sk, cj, sj));
       }
@@ -162,7 +172,8 @@ bool AddConvexPiece(const HalfSpace* hs, int count, SurfaceCell* cell, double* v
       active += std::fabs(s) <= 1e-9;
     }
     if (!inside || active < 3) continue;
-    const float f[3] = {static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])};
+    const float f[3] = {static_cast<float>(p[0]), static_cast<float>(p[1]),
+                        static_cast<float>(p[2])};
     bool dup = false;
     for (int i = 0; i < cell->point_count && !dup; ++i)
       dup = cell->p[i][0] == f[0] && cell->p[i][1] == f[1] && cell->p[i][2] == f[2];
@@ -176,7 +187,8 @@ bool AddConvexPiece(const HalfSpace* hs, int count, SurfaceCell* cell, double* v
 
 }  // namespace
 
-SurfaceCell TrimmedCell(int x, int y, int z, const HalfSpace* planes, int count, bool union_of_two) {
+SurfaceCell TrimmedCell(int x, int y, int z, const HalfSpace* planes, int count,
+                        bool union_of_two) {
   const Vec3 o(x, y, z);
   bool whole = true;  // every corner inside every half-space: nothing to trim
   for (int h = 0; h < count; ++h)
@@ -192,7 +204,8 @@ SurfaceCell TrimmedCell(int x, int y, int z, const HalfSpace* planes, int count,
   } else {
     // A concave edge: the solid is H0 ∪ H1 = H0 + (H1 minus H0), two convex pieces.
     const HalfSpace second[2] = {planes[1], {-planes[0].n, -planes[0].d}};
-    ok = AddConvexPiece(planes, 1, &cell, &volume, &tets) && AddConvexPiece(second, 2, &cell, &volume, &tets);
+    ok = AddConvexPiece(planes, 1, &cell, &volume, &tets) &&
+         AddConvexPiece(second, 2, &cell, &volume, &tets);
   }
   if (!ok) return FullCell(x, y, z);
   cell.tetrahedra = static_cast<uint8_t>(std::min(tets, 255));
@@ -241,13 +254,15 @@ int FindSheet(const CellStats& st, const Vec3& n, double* sign) {
 
 double PolygonArea(const std::vector<Vec3>& poly) {
   double area = 0.0;
-  for (size_t k = 1; k + 1 < poly.size(); ++k) area += 0.5 * (poly[k] - poly[0]).cross(poly[k + 1] - poly[0]).norm();
+  for (size_t k = 1; k + 1 < poly.size(); ++k)
+    area += 0.5 * (poly[k] - poly[0]).cross(poly[k + 1] - poly[0]).norm();
   return area;
 }
 
 }  // namespace
 
-bool BuildSurfaceCells(const GridMesh& mesh, const VoxelGrid& grid, Context* ctx, std::vector<SurfaceCell>* cells) {
+bool BuildSurfaceCells(const GridMesh& mesh, const VoxelGrid& grid, Context* ctx,
+                       std::vector<SurfaceCell>* cells) {
   cells->clear();
   const int* dims = grid.dims;
   // Surface voxels in grid order, and their linear indices for lookups.
@@ -282,7 +297,8 @@ bool BuildSurfaceCells(const GridMesh& mesh, const VoxelGrid& grid, Context* ctx
       range[t][a] = std::clamp(static_cast<int>(std::ceil(lo[a])) - 1, 0, dims[a] - 1);
       range[t][a + 3] = std::clamp(static_cast<int>(std::floor(hi[a])), 0, dims[a] - 1);
     }
-    for (int s = range[t][2] / kSlab; s <= range[t][5] / kSlab; ++s) by_slab[s].push_back(static_cast<uint32_t>(t));
+    for (int s = range[t][2] / kSlab; s <= range[t][5] / kSlab; ++s)
+      by_slab[s].push_back(static_cast<uint32_t>(t));
   }
   // Visits, for every slab, the clipped polygon of each triangle in each surface voxel it meets.
   auto for_each_piece = [&](auto fn) {
@@ -346,10 +362,14 @@ bool BuildSurfaceCells(const GridMesh& mesh, const VoxelGrid& grid, Context* ctx
               if (dx == 0 && dy == 0 && dz == 0) continue;
               const int X = x + dx, Y = y + dy, Z = z + dz;
               const Vec3 dir = Vec3(dx, dy, dz).normalized();
-              const bool out_of_grid = X < 0 || Y < 0 || Z < 0 || X >= dims[0] || Y >= dims[1] || Z >= dims[2];
-              const uint8_t c = out_of_grid ? static_cast<uint8_t>(kCellOutside) : grid.cell[grid.Index(X, Y, Z)];
-              if (c == kCellInside) towards_solid += dir;
-              else if (c == kCellOutside) towards_solid -= dir;
+              const bool out_of_grid =
+                  X < 0 || Y < 0 || Z < 0 || X >= dims[0] || Y >= dims[1] || Z >= dims[2];
+              const uint8_t c =
+                  out_of_grid ? static_cast<uint8_t>(kCellOutside) : grid.cell[grid.Index(X, Y, Z)];
+              if (c == kCellInside)
+                towards_solid += dir;
+              else if (c == kCellOutside)
+                towards_solid -= dir;
             }
         double total = 0.0;
         for (int c = 0; c < st.clusters; ++c) total += st.area[c];
@@ -366,7 +386,8 @@ bool BuildSurfaceCells(const GridMesh& mesh, const VoxelGrid& grid, Context* ctx
           st.sheet_of[st.planes] = c;
           st.plane[st.planes].n = side > 0 ? Vec3(-nn) : nn;  // outward
           st.plane[st.planes].d = -std::numeric_limits<double>::infinity();
-          for (int j = 0; j < kMaxClusters; ++j) st.reach[st.planes][j] = -std::numeric_limits<double>::infinity();
+          for (int j = 0; j < kMaxClusters; ++j)
+            st.reach[st.planes][j] = -std::numeric_limits<double>::infinity();
           ++st.planes;
         }
       }))
@@ -379,7 +400,8 @@ bool BuildSurfaceCells(const GridMesh& mesh, const VoxelGrid& grid, Context* ctx
         const int c = FindSheet(*st, nt, &sign);
         if (c < 0) return;
         for (int h = 0; h < st->planes; ++h)
-          for (const Vec3& p : poly) st->reach[h][c] = std::max(st->reach[h][c], st->plane[h].n.dot(p));
+          for (const Vec3& p : poly)
+            st->reach[h][c] = std::max(st->reach[h][c], st->plane[h].n.dot(p));
       }))
     return false;
   cells->resize(n);
@@ -407,9 +429,12 @@ bool BuildSurfaceCells(const GridMesh& mesh, const VoxelGrid& grid, Context* ctx
         if (r > st.plane[h].d + kTol) convex = false;   // sheet g pokes out of plane h
         if (r < st.plane[h].d - kTol) concave = false;  // sheet g lies inside plane h
       }
-    if (convex) (*cells)[i] = TrimmedCell(x, y, z, st.plane, st.planes, false);
-    else if (concave) (*cells)[i] = TrimmedCell(x, y, z, st.plane, 2, true);
-    else (*cells)[i] = FullCell(x, y, z);
+    if (convex)
+      (*cells)[i] = TrimmedCell(x, y, z, st.plane, st.planes, false);
+    else if (concave)
+      (*cells)[i] = TrimmedCell(x, y, z, st.plane, 2, true);
+    else
+      (*cells)[i] = FullCell(x, y, z);
   });
 }
 

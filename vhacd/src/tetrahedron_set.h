@@ -32,16 +32,16 @@ struct SurfaceCell {
   static constexpr int kMaxPoints = 16;
   uint16_t c[3] = {0, 0, 0};  // the voxel
   uint8_t point_count = 0;
-  uint8_t tetrahedra = 0;      // number of (trimmed) tetrahedra
-  float volume = 0.0f;         // their total volume, in voxels (<= 1)
-  float p[kMaxPoints][3];      // distinct vertices, grid coordinates
+  uint8_t tetrahedra = 0;  // number of (trimmed) tetrahedra
+  float volume = 0.0f;     // their total volume, in voxels (<= 1)
+  float p[kMaxPoints][3];  // distinct vertices, grid coordinates
 };
 
 // Volume of tetrahedron (a, b, c, d) clipped to the half-space n.x <= d0, and the number of
 // tetrahedra the clipped solid is split into (0 when nothing is left). When `pieces` is non-null
 // the pieces are appended (4 points each).
-double ClipTetrahedron(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& n, double d0,
-                       int* count, std::vector<std::array<Vec3, 4>>* pieces = nullptr);
+double ClipTetrahedron(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& n,
+                       double d0, int* count, std::vector<std::array<Vec3, 4>>* pieces = nullptr);
 
 // The 5 tetrahedra of the unit cube [0,1]^3 (corner k at (k & 1, (k >> 1) & 1, (k >> 2) & 1)).
 extern const int kCubeTetrahedra[5][4];
@@ -61,7 +61,8 @@ SurfaceCell TrimmedCell(int x, int y, int z, const Vec3& n, double d0);
 SurfaceCell FullCell(int x, int y, int z);
 
 // One cell per surface voxel of `grid`, in grid order (z, then y, then x). False when cancelled.
-bool BuildSurfaceCells(const GridMesh& mesh, const VoxelGrid& grid, Context* ctx, std::vector<SurfaceCell>* cells);
+bool BuildSurfaceCells(const GridMesh& mesh, const VoxelGrid& grid, Context* ctx,
+                       std::vector<SurfaceCell>* cells);
 
 }  // namespace internal
 }  // namespace vhacd

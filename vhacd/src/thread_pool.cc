@@ -12,8 +12,8 @@ namespace internal {
 
 bool ParallelFor(Context* ctx, size_t n, const std::function<void(size_t)>& fn) {
   if (n == 0) return ctx == nullptr || !ctx->Cancelled();
-  const size_t threads =
-      std::min<size_t>(n, ctx != nullptr ? static_cast<size_t>(std::max(1, ctx->num_threads())) : 1);
+  const size_t threads = std::min<size_t>(
+      n, ctx != nullptr ? static_cast<size_t>(std::max(1, ctx->num_threads())) : 1);
   std::atomic<size_t> next{0};
   std::atomic<bool> stop{false};
   std::exception_ptr error;

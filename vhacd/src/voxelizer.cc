@@ -40,7 +40,8 @@ GridPlacement ChooseGrid(const Vec3& bmin, const Vec3& bmax, uint32_t resolution
   return g;
 }
 
-bool TriangleBoxOverlap(const Vec3& center, double half, const Vec3& a, const Vec3& b, const Vec3& c) {
+bool TriangleBoxOverlap(const Vec3& center, double half, const Vec3& a, const Vec3& b,
+                        const Vec3& c) {
   const Vec3 v0 = a - center, v1 = b - center, v2 = c - center;
   // Box face normals.
   for (int k = 0; k < 3; ++k) {
@@ -131,7 +132,8 @@ void CollectCrossings(const GridMesh& mesh, const int dims[3], int axis, size_t 
 
 }  // namespace
 
-bool Voxelize(const GridMesh& mesh, const int dims[3], Context* ctx, VoxelGrid* grid, double* fill_seconds) {
+bool Voxelize(const GridMesh& mesh, const int dims[3], Context* ctx, VoxelGrid* grid,
+              double* fill_seconds) {
   for (int a = 0; a < 3; ++a) grid->dims[a] = dims[a];
   const size_t nvox = static_cast<size_t>(dims[0]) * dims[1] * dims[2];
   const size_t ntri = mesh.triangles.size();
@@ -154,11 +156,14 @@ bool Voxelize(const GridMesh& mesh, const int dims[3], Context* ctx, VoxelGrid* 
       const Vec3& d = mesh.points[mesh.triangles[t][2]];
       int lo[3], hi[3];
       for (int k = 0; k < 3; ++k) {
-        lo[k] = std::clamp(static_cast<int>(std::floor(std::min({a[k], b[k], d[k]}) - 1e-9)), 0, dims[k] - 1);
-        hi[k] = std::clamp(static_cast<int>(std::floor(std::max({a[k], b[k], d[k]}) + 1e-9)), 0, dims[k] - 1);
+        lo[k] = std::clamp(static_cast<int>(std::floor(std::min({a[k], b[k], d[k]}) - 1e-9)), 0,
+                           dims[k] - 1);
+        hi[k] = std::clamp(static_cast<int>(std::floor(std::max({a[k], b[k], d[k]}) + 1e-9)), 0,
+                           dims[k] - 1);
       }
       if (slo < 0) {
-        if (static_cast<double>(hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1) > kBig) {
+        if (static_cast<double>(hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1) >
+            kBig) {
           big[chunk].push_back(static_cast<uint32_t>(t));
           return;
         }
@@ -215,7 +220,8 @@ bool Voxelize(const GridMesh& mesh, const int dims[3], Context* ctx, VoxelGrid* 
     for (int z = 0; z < dims[2]; ++z)
       for (int y = 0; y < dims[1]; ++y)
         for (int x = 0; x < dims[0]; ++x)
-          if (x == 0 || y == 0 || z == 0 || x == dims[0] - 1 || y == dims[1] - 1 || z == dims[2] - 1)
+          if (x == 0 || y == 0 || z == 0 || x == dims[0] - 1 || y == dims[1] - 1 ||
+              z == dims[2] - 1)
             push(x, y, z);
     const size_t sx = 1, sy = dims[0], sz = static_cast<size_t>(dims[0]) * dims[1];
     size_t popped = 0;
@@ -250,7 +256,8 @@ bool Voxelize(const GridMesh& mesh, const int dims[3], Context* ctx, VoxelGrid* 
     if (!ok) return false;
     // Bucket the crossings by line (counting sort), then sort each line's few crossings.
     const size_t nlines = static_cast<size_t>(dims[u]) * dims[v];
-    std::vector<uint32_t> start(nlines + 1, 0);  // fewer than 2^32 crossings: one per line and triangle pair
+    std::vector<uint32_t> start(nlines + 1,
+                                0);  // fewer than 2^32 crossings: one per line and triangle pair
     for (const auto& p : parts)
       for (const Crossing& c : p) ++start[c.line + 1];
     for (size_t l = 0; l < nlines; ++l) start[l + 1] += start[l];
@@ -292,7 +299,8 @@ bool Voxelize(const GridMesh& mesh, const int dims[3], Context* ctx, VoxelGrid* 
     if (grid->cell[i] != kCellSurface && (grid->enclosed[i] || grid->votes[i] >= 4))
       grid->cell[i] = kCellInside;
   if (fill_seconds != nullptr)
-    *fill_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - fill_start).count();
+    *fill_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - fill_start).count();
   return true;
 }
 

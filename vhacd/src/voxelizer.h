@@ -34,8 +34,8 @@ enum : uint8_t { kCellOutside = 0, kCellSurface = 1, kCellInside = 2 };
 
 struct VoxelGrid {
   int dims[3] = {0, 0, 0};
-  std::vector<uint8_t> cell;   // kCellOutside / kCellSurface / kCellInside
-  std::vector<uint8_t> votes;  // number of the 6 axis rays from the centre with odd crossings
+  std::vector<uint8_t> cell;      // kCellOutside / kCellSurface / kCellInside
+  std::vector<uint8_t> votes;     // number of the 6 axis rays from the centre with odd crossings
   std::vector<uint8_t> enclosed;  // 1 when not reachable from outside through non-surface cells
 
   size_t Index(int x, int y, int z) const {
@@ -47,7 +47,8 @@ struct VoxelGrid {
 };
 
 // Exact separating-axis test between a triangle and the axis-aligned box centre +/- half.
-bool TriangleBoxOverlap(const Vec3& center, double half, const Vec3& a, const Vec3& b, const Vec3& c);
+bool TriangleBoxOverlap(const Vec3& center, double half, const Vec3& a, const Vec3& b,
+                        const Vec3& c);
 
 // Marks surface voxels and fills the interior. Returns false when cancelled. *fill_seconds (when
 // non-null) receives the time spent on the interior fill.

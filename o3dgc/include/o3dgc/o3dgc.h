@@ -49,15 +49,15 @@ constexpr uint32_t kStreamVersion = 7;
 
 enum class Status : uint8_t {
   kOk = 0,
-  kInvalidArgument,    // Encode: bad MeshView/EncodeParams (null pointer, index out of range, NaN...)
-  kUnsupported,        // a feature/option this version cannot encode or decode
-  kBadMagic,           // Decode: not an o3dgc stream
-  kBadVersion,         // Decode: stream of another format version
-  kTruncated,          // Decode: the stream ends before its declared content
-  kCorrupt,            // Decode: inconsistent content (bad count, value out of range, ...)
-  kChecksumMismatch,   // Decode: CRC32 of the stream does not match
-  kLimitExceeded,      // Decode: declared sizes exceed DecodeOptions limits or what the stream holds
-  kCancelled,          // the progress callback asked to stop
+  kInvalidArgument,  // Encode: bad MeshView/EncodeParams (null pointer, index out of range, NaN...)
+  kUnsupported,      // a feature/option this version cannot encode or decode
+  kBadMagic,         // Decode: not an o3dgc stream
+  kBadVersion,       // Decode: stream of another format version
+  kTruncated,        // Decode: the stream ends before its declared content
+  kCorrupt,          // Decode: inconsistent content (bad count, value out of range, ...)
+  kChecksumMismatch,  // Decode: CRC32 of the stream does not match
+  kLimitExceeded,     // Decode: declared sizes exceed DecodeOptions limits or what the stream holds
+  kCancelled,         // the progress callback asked to stop
 };
 
 // Stable name of a status ("ok", "corrupt", ...); never null.
@@ -102,9 +102,9 @@ enum class RangeMode : uint8_t {
 struct FloatAttributeView {
   const float* data = nullptr;
   size_t stride = 0;
-  uint32_t dimension = 2;           // 1..4
+  uint32_t dimension = 2;  // 1..4
   Semantic semantic = Semantic::kGeneric;
-  int bits = 12;                    // quantization bits per component, 1..30
+  int bits = 12;  // quantization bits per component, 1..30
   Prediction prediction = Prediction::kDefault;
   RangeMode range = RangeMode::kPerAxis;
 };
@@ -112,8 +112,8 @@ struct FloatAttributeView {
 // A per-vertex int attribute (joint ids, generic); coded exactly.
 struct IntAttributeView {
   const int32_t* data = nullptr;
-  size_t stride = 0;                // 0 means dimension * sizeof(int32_t)
-  uint32_t dimension = 4;           // 1..4
+  size_t stride = 0;       // 0 means dimension * sizeof(int32_t)
+  uint32_t dimension = 4;  // 1..4
   Semantic semantic = Semantic::kJointId;
   Prediction prediction = Prediction::kDefault;  // kNone or kDifferential (default)
 };
@@ -151,19 +151,19 @@ struct EncodeParams {
   // finds the most parallelograms. About 2-5 % more bytes; decoding takes about 0.85x the time
   // natively and 0.8x in WebAssembly (igea), because the decoder no longer jumps over the mesh.
   bool fast_decode = false;
-  int position_bits = 14;                           // 1..30
+  int position_bits = 14;  // 1..30
   Prediction position_prediction = Prediction::kParallelogram;
   RangeMode position_range = RangeMode::kUniform;
-  int normal_bits = 10;                             // 1..30
+  int normal_bits = 10;  // 1..30
   Prediction normal_prediction = Prediction::kSurfaceNormal;
-  ProgressFn progress;                              // optional
+  ProgressFn progress;  // optional
 };
 
 struct DecodeOptions {
   bool verify_checksum = true;
   size_t max_vertices = size_t(1) << 28;
   size_t max_triangles = size_t(1) << 28;
-  ProgressFn progress;                              // optional
+  ProgressFn progress;  // optional
 };
 
 struct DecodedFloatAttribute {
@@ -179,12 +179,12 @@ struct DecodedIntAttribute {
 };
 
 struct DecodedMesh {
-  std::vector<float> positions;          // 3 per vertex
-  std::vector<uint32_t> indices;         // 3 per triangle
-  std::vector<float> normals;            // 3 per vertex or empty
+  std::vector<float> positions;                         // 3 per vertex
+  std::vector<uint32_t> indices;                        // 3 per triangle
+  std::vector<float> normals;                           // 3 per vertex or empty
   std::vector<DecodedFloatAttribute> float_attributes;  // in MeshView order
   std::vector<DecodedIntAttribute> int_attributes;      // in MeshView order
-  std::vector<uint32_t> triangle_groups; // 1 per triangle or empty
+  std::vector<uint32_t> triangle_groups;                // 1 per triangle or empty
   size_t num_vertices() const { return positions.size() / 3; }
   size_t num_triangles() const { return indices.size() / 3; }
 };
@@ -207,8 +207,8 @@ struct StreamInfo {
   size_t num_vertices = 0;
   size_t num_triangles = 0;
   size_t total = 0;
-  size_t header = 0;         // magic, version, counts, quantization parameters, checksum
-  size_t connectivity = 0;   // triangles, seams, duplicates (and order tables in keep_order mode)
+  size_t header = 0;        // magic, version, counts, quantization parameters, checksum
+  size_t connectivity = 0;  // triangles, seams, duplicates (and order tables in keep_order mode)
   size_t positions = 0;
   size_t normals = 0;
   std::vector<size_t> float_attributes;
@@ -217,7 +217,8 @@ struct StreamInfo {
 };
 
 // Encodes `mesh`. On success `*out` holds the stream (replacing its content) and, if `info` is not
-// null, the per-part sizes. Returns kInvalidArgument for null pointers with non-zero counts, indices
+// null, the per-part sizes. Returns kInvalidArgument for null pointers with non-zero counts,
+// indices
 // >= num_vertices, bits outside 1..30, dimensions outside 1..4, non-finite values, or counts above
 // 2^28.
 Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint8_t>* out,
@@ -228,7 +229,8 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
 // decoded too: values as stored, triangles in the encoder's input order when the stream keeps it
 // (see src/legacy_decoder.h); verify_checksum does not apply to them (they have none), and as they
 // are not padded the allocation guard allows them 256 elements per byte instead of 64. Safe on
-// untrusted input. On success `*out` is replaced by the mesh; on failure its content is unspecified.
+// untrusted input. On success `*out` is replaced by the mesh; on failure its content is
+// unspecified.
 Status Decode(const uint8_t* data, size_t size, const DecodeOptions& options, DecodedMesh* out,
               StreamInfo* info = nullptr);
 

@@ -49,7 +49,7 @@ TEST(MergeGeometryTest, WeldsVerticesThatDifferedOnlyInColourButRepairsNothingEl
   Scene scene;
   Mesh m = SeamQuad();
   m.colors.assign(4 * m.vertex_count(), 1.0f);
-  m.colors[4 * 4] = 0.0f;  // vertex 4 differs from vertex 1 in colour only
+  m.colors[4 * 4] = 0.0f;                        // vertex 4 differs from vertex 1 in colour only
   m.indices.insert(m.indices.end(), {0, 1, 4});  // degenerate once 4 is welded to 1: kept
   m.positions.insert(m.positions.end(), {5, 5, 5});  // unreferenced: kept
   m.colors.insert(m.colors.end(), {1, 1, 1, 1});
@@ -58,7 +58,8 @@ TEST(MergeGeometryTest, WeldsVerticesThatDifferedOnlyInColourButRepairsNothingEl
   EXPECT_TRUE(out.colors.empty());
   EXPECT_EQ(out.vertex_count(), 5u);
   EXPECT_EQ(out.indices, (std::vector<uint32_t>{0, 1, 2, 1, 3, 2, 0, 1, 1}));
-  EXPECT_EQ(std::vector<float>(out.positions.end() - 3, out.positions.end()), (std::vector<float>{5, 5, 5}));
+  EXPECT_EQ(std::vector<float>(out.positions.end() - 3, out.positions.end()),
+            (std::vector<float>{5, 5, 5}));
 }
 
 }  // namespace

@@ -21,10 +21,21 @@ TEST(CodecError, ExactOnHandMadeDifferences) {
   d.positions = positions;
   d.positions[0] += 0x1p-10f;  // vertex 0: 2^-10 along x
   d.positions[4] -= 0x1p-9f;   // vertex 1: 2^-9 along y
-  // Normals rotated about x by 1 and 3 degrees, one unchanged, and one without an original direction.
+  // Normals rotated about x by 1 and 3 degrees, one unchanged, and one without an original
+  // direction.
   const double a1 = 1 * kPi / 180, a3 = 3 * kPi / 180;
-  d.normals = {0, -float(std::sin(a1)), float(std::cos(a1)), 0, -float(std::sin(a3)), float(std::cos(a3)), 0, 0, 1,
-               1, 0, 0};
+  d.normals = {0,
+               -float(std::sin(a1)),
+               float(std::cos(a1)),
+               0,
+               -float(std::sin(a3)),
+               float(std::cos(a3)),
+               0,
+               0,
+               1,
+               1,
+               0,
+               0};
   o3dgc::DecodedFloatAttribute uv;
   uv.semantic = o3dgc::Semantic::kTexCoord;
   uv.dimension = 2;
@@ -95,7 +106,8 @@ TEST(CodecError, AngleIsAccurateForTinyAngles) {
 // since the codec maps [min, min + range] onto 0..2^bits - 1) except two vertices, 0.25 and 0.125
 // off the grid: the codec's error is known exactly.
 struct GridMesh {
-  std::vector<float> positions = {0, 0, 0,  15, 0, 0,  0, 15, 0,  0, 0, 15,  3.25f, 7, 2,  6, 2.125f, 9,  15, 15, 15};
+  std::vector<float> positions = {0,  0,     0, 15, 0, 0,      0, 15, 0,  0, 0,
+                                  15, 3.25f, 7, 2,  6, 2.125f, 9, 15, 15, 15};
   std::vector<uint32_t> indices = {0, 1, 2, 0, 1, 3, 0, 2, 3, 1, 2, 6, 4, 1, 2, 5, 1, 3, 6, 3, 2};
   // UVs on a 15-unit square at 4 bits (steps of 1), one 0.25 off.
   std::vector<float> uvs = {0, 0, 15, 0, 0, 15, 15, 15, 2.25f, 3, 7, 8, 1, 1};
@@ -123,7 +135,8 @@ o3dgc::DecodedMesh RoundTrip(const GridMesh& m, int bits, bool keep_order) {
   std::vector<uint8_t> stream;
   EXPECT_EQ(o3dgc::Encode(View(m, bits), p, &stream), o3dgc::Status::kOk);
   o3dgc::DecodedMesh d;
-  EXPECT_EQ(o3dgc::Decode(stream.data(), stream.size(), o3dgc::DecodeOptions(), &d), o3dgc::Status::kOk);
+  EXPECT_EQ(o3dgc::Decode(stream.data(), stream.size(), o3dgc::DecodeOptions(), &d),
+            o3dgc::Status::kOk);
   return d;
 }
 
@@ -162,7 +175,8 @@ TEST(CodecError, WithinTheQuantizationBoundAtEveryBitCount) {
 TEST(CodecError, ReorderedStreamDecodesToTheSameVertexRecords) {
   const GridMesh m;
   for (int bits : {4, 11}) {
-    const o3dgc::DecodedMesh reordered = RoundTrip(m, bits, false), ordered = RoundTrip(m, bits, true);
+    const o3dgc::DecodedMesh reordered = RoundTrip(m, bits, false),
+                             ordered = RoundTrip(m, bits, true);
     EXPECT_TRUE(SameVertexRecords(reordered, ordered)) << bits;
   }
 }

@@ -44,7 +44,8 @@ std::string XmlProblem(const std::string& xml) {
     if (lt == std::string::npos) break;
     if (open.empty()) {
       for (size_t k = i; k < lt; ++k) {
-        if (!std::isspace(static_cast<unsigned char>(xml[k]))) return "text outside the root element";
+        if (!std::isspace(static_cast<unsigned char>(xml[k])))
+          return "text outside the root element";
       }
     }
     const size_t gt = xml.find('>', lt);
@@ -67,10 +68,12 @@ std::string XmlProblem(const std::string& xml) {
         while (k < tag.size() && std::isspace(static_cast<unsigned char>(tag[k]))) ++k;
         if (k >= tag.size()) break;
         const size_t eq = tag.find('=', k);
-        if (eq == std::string::npos || eq + 1 >= tag.size() || tag[eq + 1] != '"') return "unquoted attribute in " + name;
+        if (eq == std::string::npos || eq + 1 >= tag.size() || tag[eq + 1] != '"')
+          return "unquoted attribute in " + name;
         const size_t end = tag.find('"', eq + 2);
         if (end == std::string::npos) return "unterminated attribute in " + name;
-        if (tag.substr(eq + 2, end - eq - 2).find('<') != std::string::npos) return "'<' in an attribute";
+        if (tag.substr(eq + 2, end - eq - 2).find('<') != std::string::npos)
+          return "'<' in an attribute";
         k = end + 1;
       }
       if (open.empty()) ++roots;
@@ -92,7 +95,8 @@ size_t Count(const std::string& text, const std::string& what) {
 // The (cx, cy) of every data marker (markers carry a <title>; legend markers do not).
 std::vector<std::pair<double, double>> Markers(const std::string& svg) {
   std::vector<std::pair<double, double>> out;
-  for (size_t at = svg.find("<circle cx=\""); at != std::string::npos; at = svg.find("<circle cx=\"", at + 1)) {
+  for (size_t at = svg.find("<circle cx=\""); at != std::string::npos;
+       at = svg.find("<circle cx=\"", at + 1)) {
     const size_t close = svg.find('>', at);
     if (svg.compare(close + 1, 7, "<title>") != 0) continue;
     const double cx = std::strtod(svg.c_str() + at + 12, nullptr);
@@ -156,7 +160,8 @@ TEST(SvgPlot, PointsALogAxisCannotShowAreLeftOut) {
   p.y = {"y", false};
   PlotSeries s;
   s.name = "s";
-  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  const double nan = std::numeric_limits<double>::quiet_NaN(),
+               inf = std::numeric_limits<double>::infinity();
   s.points = {{0, 1}, {-1, 2}, {1, 1}, {10, 3}, {nan, 1}, {100, inf}, {1000, -4}};
   p.series = {s};
   size_t drawn = 0;

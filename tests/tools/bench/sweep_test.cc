@@ -66,7 +66,8 @@ std::string ClosedBoxObj() {
           ++count;
         }
       }
-      // (i, j) -> (i + 1, j) -> (i + 1, j + 1) turns from u to v: counter-clockwise seen from +axis.
+      // (i, j) -> (i + 1, j) -> (i + 1, j + 1) turns from u to v: counter-clockwise seen from
+      // +axis.
       for (int i = 0; i < n; ++i) {
         for (int j = 0; j < n; ++j) {
           const int a = base + i * (n + 1) + j, b = a + n + 1, c = b + 1, d = a + 1;
@@ -90,18 +91,21 @@ std::string WavySheetObj() {
   const int n = 10;
   for (int i = 0; i <= n; ++i) {
     for (int j = 0; j <= n; ++j) {
-      const double x = double(i) / n, y = double(j) / n, z = 0.2 * std::sin(6 * x) * std::cos(4 * y);
-      const double dx = 1.2 * std::cos(6 * x) * std::cos(4 * y), dy = -0.8 * std::sin(6 * x) * std::sin(4 * y);
+      const double x = double(i) / n, y = double(j) / n,
+                   z = 0.2 * std::sin(6 * x) * std::cos(4 * y);
+      const double dx = 1.2 * std::cos(6 * x) * std::cos(4 * y),
+                   dy = -0.8 * std::sin(6 * x) * std::sin(4 * y);
       const double len = std::sqrt(dx * dx + dy * dy + 1);
-      std::snprintf(line, sizeof(line), "v %.6f %.6f %.6f\nvt %.6f %.6f\nvn %.6f %.6f %.6f\n", x, y, z, x, y,
-                    -dx / len, -dy / len, 1 / len);
+      std::snprintf(line, sizeof(line), "v %.6f %.6f %.6f\nvt %.6f %.6f\nvn %.6f %.6f %.6f\n", x, y,
+                    z, x, y, -dx / len, -dy / len, 1 / len);
       obj += line;
     }
   }
   for (int i = 0; i < n; ++i) {
     for (int j = 0; j < n; ++j) {
       const int a = i * (n + 1) + j + 1, b = a + n + 1, c = b + 1, d = a + 1;
-      std::snprintf(line, sizeof(line), "f %d/%d/%d %d/%d/%d %d/%d/%d\nf %d/%d/%d %d/%d/%d %d/%d/%d\n", a, a, a, b, b,
+      std::snprintf(line, sizeof(line),
+                    "f %d/%d/%d %d/%d/%d %d/%d/%d\nf %d/%d/%d %d/%d/%d %d/%d/%d\n", a, a, a, b, b,
                     b, c, c, c, a, a, a, c, c, c, d, d, d);
       obj += line;
     }
@@ -180,11 +184,34 @@ TEST(Sweep, TwoMeshFolderGivesTheExpectedRowsAndColumns) {
   EXPECT_EQ(rows[0], SweepCsvColumns());
   std::map<std::string, size_t> column;
   for (size_t c = 0; c < rows[0].size(); ++c) column[rows[0][c]] = c;
-  for (const char* name : {"mesh", "stage", "sweep", "status", "resolution", "concavity", "max_hulls", "position_bits",
-                           "normal_bits", "uv_bits", "hausdorff_mesh_to_hulls", "hausdorff_hulls_to_mesh", "iou",
-                           "hull_count", "coverage", "invalid_hulls", "position_max_error", "position_rms_error", "normal_max_deg",
-                           "normal_mean_deg", "uv_max_error", "bytes", "bits_per_vertex", "time_ms", "cpu_ms",
-                           "peak_mb", "decode_ms", "decode_peak_mb"}) {
+  for (const char* name : {"mesh",
+                           "stage",
+                           "sweep",
+                           "status",
+                           "resolution",
+                           "concavity",
+                           "max_hulls",
+                           "position_bits",
+                           "normal_bits",
+                           "uv_bits",
+                           "hausdorff_mesh_to_hulls",
+                           "hausdorff_hulls_to_mesh",
+                           "iou",
+                           "hull_count",
+                           "coverage",
+                           "invalid_hulls",
+                           "position_max_error",
+                           "position_rms_error",
+                           "normal_max_deg",
+                           "normal_mean_deg",
+                           "uv_max_error",
+                           "bytes",
+                           "bits_per_vertex",
+                           "time_ms",
+                           "cpu_ms",
+                           "peak_mb",
+                           "decode_ms",
+                           "decode_peak_mb"}) {
     EXPECT_TRUE(column.count(name)) << name;
   }
   std::map<std::string, int> per_mesh_stage;
@@ -213,7 +240,8 @@ TEST(Sweep, TwoMeshFolderGivesTheExpectedRowsAndColumns) {
     } else {
       const int qp = std::stoi(row[column["position_bits"]]);
       // Within half a cell per axis (cell = largest extent / (2^bits - 1), the extent <= diagonal).
-      EXPECT_LE(std::stod(row[column["position_max_error"]]), 0.5 * std::sqrt(3.0) / ((1 << qp) - 1) + 1e-6);
+      EXPECT_LE(std::stod(row[column["position_max_error"]]),
+                0.5 * std::sqrt(3.0) / ((1 << qp) - 1) + 1e-6);
       EXPECT_EQ(row[column["same_values"]], "1");
       EXPECT_EQ(row[column["normal_max_deg"]].empty(), row[column["mesh"]] == "box");
       EXPECT_EQ(row[column["uv_max_error"]].empty(), row[column["mesh"]] == "box");
@@ -227,8 +255,9 @@ TEST(Sweep, TwoMeshFolderGivesTheExpectedRowsAndColumns) {
   EXPECT_EQ(per_mesh_stage["sheet/codec"], 4);
 
   // Plots and summary.
-  for (const char* svg : {"decompose_resolution.svg", "decompose_median.svg", "codec_position_size.svg",
-                          "codec_position_time.svg", "codec_normal_size.svg", "codec_uv_size.svg"}) {
+  for (const char* svg :
+       {"decompose_resolution.svg", "decompose_median.svg", "codec_position_size.svg",
+        "codec_position_time.svg", "codec_normal_size.svg", "codec_uv_size.svg"}) {
     const std::string text = ReadText(out_dir + "/" + svg);
     EXPECT_EQ(text.compare(0, 5, "<?xml"), 0) << svg;
     EXPECT_NE(text.find("</svg>"), std::string::npos) << svg;
@@ -237,7 +266,8 @@ TEST(Sweep, TwoMeshFolderGivesTheExpectedRowsAndColumns) {
   EXPECT_NE(md.find("sweep_bench IN -o OUT"), std::string::npos);
   EXPECT_NE(md.find("| box |"), std::string::npos);
   EXPECT_NE(md.find("| sheet |"), std::string::npos);
-  EXPECT_NE(md.find("![codec: size against position error](codec_position_size.svg)"), std::string::npos);
+  EXPECT_NE(md.find("![codec: size against position error](codec_position_size.svg)"),
+            std::string::npos);
 }
 
 TEST(Sweep, MissingFolderIsAnError) {

@@ -13,7 +13,9 @@ namespace hullpack {
 namespace {
 
 void WriteBytes(const std::string& path, const std::vector<uint8_t>& bytes) {
-  std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  std::ofstream(path, std::ios::binary)
+      .write(reinterpret_cast<const char*>(bytes.data()),
+             static_cast<std::streamsize>(bytes.size()));
 }
 
 TEST(ExternalImages, ImagesBesideTheFileAreEmbeddedOthersKeptWithAReason) {
@@ -29,7 +31,8 @@ TEST(ExternalImages, ImagesBesideTheFileAreEmbeddedOthersKeptWithAReason) {
   WriteBytes(root + "/outside.png", png);
 
   Scene scene;
-  for (const char* uri : {"sub/wood%20dark.png", "missing.png", "notes.txt", "../outside.png", "/etc/hostname"}) {
+  for (const char* uri :
+       {"sub/wood%20dark.png", "missing.png", "notes.txt", "../outside.png", "/etc/hostname"}) {
     Image image;
     image.uri = uri;
     scene.images.push_back(image);

@@ -65,8 +65,9 @@ TEST(GlbHostileTest, EveryTruncationIsAnError) {
     }
   }
   // A .gltf JSON text cut anywhere.
-  const std::string text = R"({"asset":{"version":"2.0"},"nodes":[{"name":"a","children":[1]},{"matrix":)"
-                           R"([1,0,0,0,0,1,0,0,0,0,1,0,0,0,0,1]}],"scenes":[{"nodes":[0]}]})";
+  const std::string text =
+      R"({"asset":{"version":"2.0"},"nodes":[{"name":"a","children":[1]},{"matrix":)"
+      R"([1,0,0,0,0,1,0,0,0,0,1,0,0,0,0,1]}],"scenes":[{"nodes":[0]}]})";
   ASSERT_TRUE(DecodeGlb(reinterpret_cast<const uint8_t*>(text.data()), text.size(), "t.gltf").ok());
   for (size_t len = 0; len < text.size(); ++len) {
     Result<Scene> s = DecodeGlb(reinterpret_cast<const uint8_t*>(text.data()), len, "t.gltf");
@@ -143,15 +144,32 @@ TEST(GlbHostileTest, HostileNumbersInTheJsonNeverCrash) {
   const std::vector<uint8_t> glb = RichGlb();
   Result<GltfDocument> doc = DecodeGlbDocument(glb.data(), glb.size(), "n.glb");
   ASSERT_TRUE(doc.ok());
-  const json values[] = {0, 1, 3, -1, 255, 65535, 65536, 4294967295ull, 4294967296ull, 18446744073709551615ull,
-                         9223372036854775807ll, -9223372036854775807ll, 1.5, 1e300, "7", nullptr, json::array(),
-                         json::object(), true};
+  const json values[] = {0,
+                         1,
+                         3,
+                         -1,
+                         255,
+                         65535,
+                         65536,
+                         4294967295ull,
+                         4294967296ull,
+                         18446744073709551615ull,
+                         9223372036854775807ll,
+                         -9223372036854775807ll,
+                         1.5,
+                         1e300,
+                         "7",
+                         nullptr,
+                         json::array(),
+                         json::object(),
+                         true};
   std::mt19937 rng(777);
   size_t errors = 0;
   for (int iter = 0; iter < 3000; ++iter) {
     json j = doc->json();
     const int edits = 1 + static_cast<int>(rng() % 3);
-    for (int e = 0; e < edits; ++e) MutateRandomNumber(j, rng, values[rng() % (sizeof values / sizeof values[0])]);
+    for (int e = 0; e < edits; ++e)
+      MutateRandomNumber(j, rng, values[rng() % (sizeof values / sizeof values[0])]);
     GltfDocument mutated(j, doc->binary(), true, glb.size());
     Result<Scene> s = DecodeGltfDocument(mutated, "n.glb");
     if (!s.ok()) {
@@ -203,7 +221,8 @@ TEST(GlbHostileTest, HeaderProblems) {
     PutU32(b, 12, bad);  // JSON chunk length past the end
     Result<Scene> s = DecodeGlb(b.data(), b.size(), "chunk.glb");
     ASSERT_FALSE(s.ok());
-    EXPECT_NE(s.status().message().find("chunk 0 declares"), std::string::npos) << s.status().ToString();
+    EXPECT_NE(s.status().message().find("chunk 0 declares"), std::string::npos)
+        << s.status().ToString();
   }
   {
     std::vector<uint8_t> b = glb;
@@ -211,7 +230,8 @@ TEST(GlbHostileTest, HeaderProblems) {
     PutU32(b, bin_header, 0x7FFFFFFF);  // BIN chunk length past the end
     Result<Scene> s = DecodeGlb(b.data(), b.size(), "bin.glb");
     ASSERT_FALSE(s.ok());
-    EXPECT_NE(s.status().message().find("chunk 1 declares"), std::string::npos) << s.status().ToString();
+    EXPECT_NE(s.status().message().find("chunk 1 declares"), std::string::npos)
+        << s.status().ToString();
   }
   {
     std::vector<uint8_t> b = glb;
@@ -223,34 +243,34 @@ TEST(GlbHostileTest, HeaderProblems) {
 }
 
 TEST(GlbHostileTest, AccessorAndViewBounds) {
-  ExpectError(DecodeMutated([](json& j) { j["accessors"][0]["count"] = 1000000; }), StatusCode::kParseError,
-              "accessors[0]: byteOffset 0 + count 1000000");
+  ExpectError(DecodeMutated([](json& j) { j["accessors"][0]["count"] = 1000000; }),
+              StatusCode::kParseError, "accessors[0]: byteOffset 0 + count 1000000");
   ExpectError(DecodeMutated([](json& j) { j["accessors"][0]["count"] = 18446744073709551615ull; }),
               StatusCode::kParseError, "accessors[0]");
-  ExpectError(DecodeMutated([](json& j) { j["accessors"][0]["count"] = 0; }), StatusCode::kParseError,
-              "count is 0");
-  ExpectError(DecodeMutated([](json& j) { j["accessors"][0]["byteOffset"] = 4; }), StatusCode::kParseError,
-              "exceeds bufferViews[");
-  ExpectError(DecodeMutated([](json& j) { j["accessors"][0]["componentType"] = 5124; }), StatusCode::kParseError,
-              "unknown componentType 5124");
-  ExpectError(DecodeMutated([](json& j) { j["accessors"][0]["type"] = "VEC7"; }), StatusCode::kParseError,
-              "unknown type");
-  ExpectError(DecodeMutated([](json& j) { j["accessors"][0]["bufferView"] = 999; }), StatusCode::kParseError,
-              "bufferView 999 does not exist");
+  ExpectError(DecodeMutated([](json& j) { j["accessors"][0]["count"] = 0; }),
+              StatusCode::kParseError, "count is 0");
+  ExpectError(DecodeMutated([](json& j) { j["accessors"][0]["byteOffset"] = 4; }),
+              StatusCode::kParseError, "exceeds bufferViews[");
+  ExpectError(DecodeMutated([](json& j) { j["accessors"][0]["componentType"] = 5124; }),
+              StatusCode::kParseError, "unknown componentType 5124");
+  ExpectError(DecodeMutated([](json& j) { j["accessors"][0]["type"] = "VEC7"; }),
+              StatusCode::kParseError, "unknown type");
+  ExpectError(DecodeMutated([](json& j) { j["accessors"][0]["bufferView"] = 999; }),
+              StatusCode::kParseError, "bufferView 999 does not exist");
   ExpectError(DecodeMutated([](json& j) { j["bufferViews"][1]["byteOffset"] = 1u << 30; }),
               StatusCode::kParseError, "exceed buffers[0]");
   ExpectError(DecodeMutated([](json& j) { j["bufferViews"][1]["byteLength"] = 4294967295ull; }),
               StatusCode::kParseError, "exceed buffers[0]");
-  ExpectError(DecodeMutated([](json& j) { j["bufferViews"][1]["byteStride"] = 2; }), StatusCode::kParseError,
-              "byteStride 2");
-  ExpectError(DecodeMutated([](json& j) { j["buffers"][0]["byteLength"] = 1u << 30; }), StatusCode::kParseError,
-              "exceeds the GLB binary chunk");
-  ExpectError(DecodeMutated([](json& j) { j["buffers"][0]["byteLength"] = -5; }), StatusCode::kParseError,
-              "not a non-negative integer");
-  ExpectError(DecodeMutated([](json& j) { j["accessors"] = json::object(); }), StatusCode::kParseError,
-              "'accessors' is not an array");
-  ExpectError(DecodeMutated([](json& j) { j["accessors"][0]["normalized"] = true; }), StatusCode::kParseError,
-              "normalized");
+  ExpectError(DecodeMutated([](json& j) { j["bufferViews"][1]["byteStride"] = 2; }),
+              StatusCode::kParseError, "byteStride 2");
+  ExpectError(DecodeMutated([](json& j) { j["buffers"][0]["byteLength"] = 1u << 30; }),
+              StatusCode::kParseError, "exceeds the GLB binary chunk");
+  ExpectError(DecodeMutated([](json& j) { j["buffers"][0]["byteLength"] = -5; }),
+              StatusCode::kParseError, "not a non-negative integer");
+  ExpectError(DecodeMutated([](json& j) { j["accessors"] = json::object(); }),
+              StatusCode::kParseError, "'accessors' is not an array");
+  ExpectError(DecodeMutated([](json& j) { j["accessors"][0]["normalized"] = true; }),
+              StatusCode::kParseError, "normalized");
 }
 
 TEST(GlbHostileTest, IndexAndReferenceBounds) {
@@ -265,36 +285,38 @@ TEST(GlbHostileTest, IndexAndReferenceBounds) {
   std::vector<uint8_t> bin = doc->binary();
   bin[offset] = 4;  // the tetrahedron has 4 vertices (UNSIGNED_SHORT indices)
   bin[offset + 1] = 0;
-  ExpectError(DecodeGltfDocument(GltfDocument(j, bin, true, glb.size()), "mutated.glb"), StatusCode::kParseError,
-              "index 0 is 4 but the primitive has 4 vertices");
+  ExpectError(DecodeGltfDocument(GltfDocument(j, bin, true, glb.size()), "mutated.glb"),
+              StatusCode::kParseError, "index 0 is 4 but the primitive has 4 vertices");
 
   ExpectError(DecodeMutated([](json& js) { js["meshes"][0]["primitives"][0]["material"] = 2; }),
               StatusCode::kParseError, "material 2 does not exist");
   ExpectError(DecodeMutated([](json& js) { js["nodes"][0]["mesh"] = 3; }), StatusCode::kParseError,
               "mesh 3 does not exist");
-  ExpectError(DecodeMutated([](json& js) { js["nodes"][0]["children"].push_back(0); }), StatusCode::kParseError,
-              "lists itself");
-  ExpectError(DecodeMutated([](json& js) { js["nodes"][4]["children"].push_back(2); }), StatusCode::kParseError,
-              "already has parent");
+  ExpectError(DecodeMutated([](json& js) { js["nodes"][0]["children"].push_back(0); }),
+              StatusCode::kParseError, "lists itself");
+  ExpectError(DecodeMutated([](json& js) { js["nodes"][4]["children"].push_back(2); }),
+              StatusCode::kParseError, "already has parent");
   ExpectError(DecodeMutated([](json& js) {
                 js["nodes"][2]["children"] = {0};  // 0 -> 1 -> 2 -> 0
               }),
               StatusCode::kParseError, "cycle");
-  ExpectError(DecodeMutated([](json& js) { js["skins"][0]["joints"] = {1}; }), StatusCode::kParseError,
-              "inverseBindMatrices has 2 matrices for 1 joints");
+  ExpectError(DecodeMutated([](json& js) { js["skins"][0]["joints"] = {1}; }),
+              StatusCode::kParseError, "inverseBindMatrices has 2 matrices for 1 joints");
   ExpectError(DecodeMutated([](json& js) {
                 js["skins"][0]["joints"] = {1};
                 js["skins"][0].erase("inverseBindMatrices");
               }),
               StatusCode::kParseError, "uses joint 1 but skin 0 has 1");
-  ExpectError(DecodeMutated([](json& js) { js["skins"][0]["joints"] = {1, 1}; }), StatusCode::kParseError,
-              "twice");
+  ExpectError(DecodeMutated([](json& js) {
+                js["skins"][0]["joints"] = {1, 1};
+              }),
+              StatusCode::kParseError, "twice");
   ExpectError(DecodeMutated([](json& js) { js["materials"][0]["normalTexture"]["index"] = 40; }),
               StatusCode::kParseError, "texture 40 does not exist");
-  ExpectError(DecodeMutated([](json& js) { js["textures"][0]["source"] = 40; }), StatusCode::kParseError,
-              "source image 40");
-  ExpectError(DecodeMutated([](json& js) { js["images"][0]["bufferView"] = -1; }), StatusCode::kParseError,
-              "images[0]");
+  ExpectError(DecodeMutated([](json& js) { js["textures"][0]["source"] = 40; }),
+              StatusCode::kParseError, "source image 40");
+  ExpectError(DecodeMutated([](json& js) { js["images"][0]["bufferView"] = -1; }),
+              StatusCode::kParseError, "images[0]");
   ExpectError(DecodeMutated([](json& js) {
                 js["meshes"][0]["primitives"][0]["attributes"]["TANGENT"] =
                     js["meshes"][0]["primitives"][0]["attributes"]["POSITION"];
@@ -314,7 +336,8 @@ TEST(GlbHostileTest, AttributeCountsMustAgree) {
 TEST(GlbHostileTest, AmplificationIsCapped) {
   // A zero-filled accessor (no bufferView) of 100 million vertices in a 5 KB file.
   Result<Scene> s = DecodeMutated([](json& js) {
-    js["accessors"].push_back({{"componentType", gltf::kFloat}, {"count", 100000000}, {"type", "VEC3"}});
+    js["accessors"].push_back(
+        {{"componentType", gltf::kFloat}, {"count", 100000000}, {"type", "VEC3"}});
     js["meshes"][2]["primitives"][0]["attributes"]["POSITION"] = js["accessors"].size() - 1;
     js["meshes"][2]["primitives"][0].erase("indices");
   });
@@ -386,50 +409,62 @@ TEST(GlbHostileTest, ExpansionLimitIsAnOption) {
   ASSERT_TRUE(doc.ok());
   EXPECT_TRUE(DecodeGltfDocument(doc.value(), "large.glb").ok());
   GltfReadOptions tight;
-  tight.max_expansion = 1;  // decoded floats + 32-bit indices exceed the 16-bit-index file plus 1 MiB
+  tight.max_expansion =
+      1;  // decoded floats + 32-bit indices exceed the 16-bit-index file plus 1 MiB
   Result<Scene> s = DecodeGltfDocument(doc.value(), "large.glb", tight);
   ASSERT_FALSE(s.ok());
   EXPECT_EQ(s.status().code(), StatusCode::kUnsupported);
-  EXPECT_NE(s.status().message().find("exceed the limit of 1 bytes per input byte"), std::string::npos)
+  EXPECT_NE(s.status().message().find("exceed the limit of 1 bytes per input byte"),
+            std::string::npos)
       << s.status().ToString();
 }
 
 TEST(GlbHostileTest, DeeplyNestedJsonIsAnErrorNotAStackOverflow) {
   std::string text = R"({"asset":{"version":"2.0"},"extras":)";
   text += std::string(200000, '[') + std::string(200000, ']') + "}";
-  Result<Scene> s = DecodeGlb(reinterpret_cast<const uint8_t*>(text.data()), text.size(), "deep.gltf");
+  Result<Scene> s =
+      DecodeGlb(reinterpret_cast<const uint8_t*>(text.data()), text.size(), "deep.gltf");
   ASSERT_FALSE(s.ok());
   EXPECT_EQ(s.status().code(), StatusCode::kParseError);
-  EXPECT_NE(s.status().message().find("nests deeper than 256"), std::string::npos) << s.status().ToString();
+  EXPECT_NE(s.status().message().find("nests deeper than 256"), std::string::npos)
+      << s.status().ToString();
   // 200 levels of extras are fine.
   std::string ok_text = R"({"asset":{"version":"2.0"},"extras":)";
   ok_text += std::string(200, '[') + std::string(200, ']') + "}";
-  EXPECT_TRUE(DecodeGlb(reinterpret_cast<const uint8_t*>(ok_text.data()), ok_text.size(), "ok.gltf").ok());
+  EXPECT_TRUE(
+      DecodeGlb(reinterpret_cast<const uint8_t*>(ok_text.data()), ok_text.size(), "ok.gltf").ok());
   // Brackets inside strings (with escaped quotes) do not count.
-  std::string in_string = R"({"asset":{"version":"2.0"},"nodes":[{"name":"\")" + std::string(1000, '[') + R"("}]})";
-  Result<Scene> named = DecodeGlb(reinterpret_cast<const uint8_t*>(in_string.data()), in_string.size(), "s.gltf");
+  std::string in_string =
+      R"({"asset":{"version":"2.0"},"nodes":[{"name":"\")" + std::string(1000, '[') + R"("}]})";
+  Result<Scene> named =
+      DecodeGlb(reinterpret_cast<const uint8_t*>(in_string.data()), in_string.size(), "s.gltf");
   ASSERT_TRUE(named.ok()) << named.status().ToString();
   EXPECT_EQ(named->nodes[0].name, "\"" + std::string(1000, '['));
   std::string unclosed = std::string(100000, '[');
-  Result<Scene> u = DecodeGlb(reinterpret_cast<const uint8_t*>(unclosed.data()), unclosed.size(), "deep.gltf");
+  Result<Scene> u =
+      DecodeGlb(reinterpret_cast<const uint8_t*>(unclosed.data()), unclosed.size(), "deep.gltf");
   ASSERT_FALSE(u.ok());
   EXPECT_EQ(u.status().code(), StatusCode::kParseError);
 }
 
 TEST(GlbHostileTest, JsonShapeErrors) {
-  for (const char* text : {"", "null", "[]", "42", R"({"asset":1})", R"({"asset":{"version":2}})",
-                           R"({"asset":{"version":"2.0"},"meshes":[1]})",
-                           R"({"asset":{"version":"2.0"},"meshes":[{"primitives":{}}]})",
-                           R"({"asset":{"version":"2.0"},"meshes":[{"primitives":[{"attributes":{}}]}]})",
-                           R"({"asset":{"version":"2.0"},"nodes":[{"children":[5]}]})",
-                           R"({"asset":{"version":"2.0"},"nodes":[{"matrix":[1,2]}]})",
-                           R"({"asset":{"version":"2.0"},"nodes":[{"translation":[1,"x",3]}]})",
-                           R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":4}],"bufferViews":[{"buffer":0,"byteLength":4}],
+  for (
+      const char* text :
+      {"", "null", "[]", "42", R"({"asset":1})", R"({"asset":{"version":2}})",
+       R"({"asset":{"version":"2.0"},"meshes":[1]})",
+       R"({"asset":{"version":"2.0"},"meshes":[{"primitives":{}}]})",
+       R"({"asset":{"version":"2.0"},"meshes":[{"primitives":[{"attributes":{}}]}]})",
+       R"({"asset":{"version":"2.0"},"nodes":[{"children":[5]}]})",
+       R"({"asset":{"version":"2.0"},"nodes":[{"matrix":[1,2]}]})",
+       R"({"asset":{"version":"2.0"},"nodes":[{"translation":[1,"x",3]}]})",
+       R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":4}],"bufferViews":[{"buffer":0,"byteLength":4}],
                                "accessors":[{"bufferView":0,"componentType":5126,"count":1,"type":"SCALAR"}],
                                "meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}]})"}) {
-    Result<Scene> s = DecodeGlb(reinterpret_cast<const uint8_t*>(text), std::strlen(text), "shape.gltf");
+    Result<Scene> s =
+        DecodeGlb(reinterpret_cast<const uint8_t*>(text), std::strlen(text), "shape.gltf");
     ASSERT_FALSE(s.ok()) << text;
-    EXPECT_EQ(s.status().code(), StatusCode::kParseError) << text << " -> " << s.status().ToString();
+    EXPECT_EQ(s.status().code(), StatusCode::kParseError)
+        << text << " -> " << s.status().ToString();
     EXPECT_EQ(s.status().message().rfind("shape.gltf: ", 0), 0u) << s.status().message();
   }
 }

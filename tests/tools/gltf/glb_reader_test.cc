@@ -31,7 +31,8 @@ void Pad4(std::vector<uint8_t>& bin) {
   while (bin.size() % 4 != 0) bin.push_back(0);
 }
 
-Result<Scene> Decode(const json& j, const std::vector<uint8_t>& bin, const std::string& name = "test.glb") {
+Result<Scene> Decode(const json& j, const std::vector<uint8_t>& bin,
+                     const std::string& name = "test.glb") {
   GltfDocument doc(j, bin, !bin.empty(), 0);
   Result<std::vector<uint8_t>> glb = doc.Serialize();
   EXPECT_TRUE(glb.ok());
@@ -47,13 +48,15 @@ bool Contains(const std::vector<std::string>& lines, const std::string& needle) 
 
 TEST(GlbReaderTest, NormalizedAndQuantizedAttributes) {
   std::vector<uint8_t> bin;
-  Put<int16_t>(bin, {0, 0, 0, 100, 0, 0, 0, -200, 0, 0});                 // 0: POSITION SHORT (+pad)
-  Put<int8_t>(bin, {0, 0, 127, 0, 0, 0, -127, 0, -128, 0, 0, 0});       // 20: NORMAL BYTE norm (stride 4)
-  Put<uint16_t>(bin, {0, 65535, 65535, 0, 32768, 0});                    // 32: TEXCOORD USHORT norm
+  Put<int16_t>(bin, {0, 0, 0, 100, 0, 0, 0, -200, 0, 0});  // 0: POSITION SHORT (+pad)
+  Put<int8_t>(bin,
+              {0, 0, 127, 0, 0, 0, -127, 0, -128, 0, 0, 0});  // 20: NORMAL BYTE norm (stride 4)
+  Put<uint16_t>(bin, {0, 65535, 65535, 0, 32768, 0});         // 32: TEXCOORD USHORT norm
   Pad4(bin);
-  Put<uint8_t>(bin, {255, 0, 0, 0, 0, 255, 0, 0, 0, 51, 102, 0});        // 44: COLOR VEC3 UBYTE norm (stride 4)
-  Put<uint8_t>(bin, {255, 0, 0, 0, 128, 127, 0, 0, 0, 0, 0, 255});       // 56: WEIGHTS UBYTE norm
-  Put<uint8_t>(bin, {0, 1, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0});               // 68: JOINTS UBYTE
+  Put<uint8_t>(
+      bin, {255, 0, 0, 0, 0, 255, 0, 0, 0, 51, 102, 0});  // 44: COLOR VEC3 UBYTE norm (stride 4)
+  Put<uint8_t>(bin, {255, 0, 0, 0, 128, 127, 0, 0, 0, 0, 0, 255});  // 56: WEIGHTS UBYTE norm
+  Put<uint8_t>(bin, {0, 1, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0});          // 68: JOINTS UBYTE
   json j = {
       {"asset", {{"version", "2.0"}}},
       {"extensionsUsed", {"KHR_mesh_quantization"}},
@@ -67,24 +70,51 @@ TEST(GlbReaderTest, NormalizedAndQuantizedAttributes) {
         {{"buffer", 0}, {"byteOffset", 56}, {"byteLength", 24}}}},
       {"accessors",
        {{{"bufferView", 0}, {"componentType", gltf::kShort}, {"count", 3}, {"type", "VEC3"}},
-        {{"bufferView", 1}, {"componentType", gltf::kByte}, {"normalized", true}, {"count", 3}, {"type", "VEC3"}},
-        {{"bufferView", 2}, {"componentType", gltf::kUnsignedShort}, {"normalized", true}, {"count", 3}, {"type", "VEC2"}},
-        {{"bufferView", 3}, {"componentType", gltf::kUnsignedByte}, {"normalized", true}, {"count", 3}, {"type", "VEC3"}},
-        {{"bufferView", 4}, {"componentType", gltf::kUnsignedByte}, {"normalized", true}, {"count", 3}, {"type", "VEC4"}},
-        {{"bufferView", 4}, {"byteOffset", 12}, {"componentType", gltf::kUnsignedByte}, {"count", 3}, {"type", "VEC4"}}}},
+        {{"bufferView", 1},
+         {"componentType", gltf::kByte},
+         {"normalized", true},
+         {"count", 3},
+         {"type", "VEC3"}},
+        {{"bufferView", 2},
+         {"componentType", gltf::kUnsignedShort},
+         {"normalized", true},
+         {"count", 3},
+         {"type", "VEC2"}},
+        {{"bufferView", 3},
+         {"componentType", gltf::kUnsignedByte},
+         {"normalized", true},
+         {"count", 3},
+         {"type", "VEC3"}},
+        {{"bufferView", 4},
+         {"componentType", gltf::kUnsignedByte},
+         {"normalized", true},
+         {"count", 3},
+         {"type", "VEC4"}},
+        {{"bufferView", 4},
+         {"byteOffset", 12},
+         {"componentType", gltf::kUnsignedByte},
+         {"count", 3},
+         {"type", "VEC4"}}}},
       {"meshes",
        {{{"primitives",
           {{{"attributes",
-             {{"POSITION", 0}, {"NORMAL", 1}, {"TEXCOORD_0", 2}, {"COLOR_0", 3}, {"WEIGHTS_0", 4}, {"JOINTS_0", 5}}}}}}}}},
+             {{"POSITION", 0},
+              {"NORMAL", 1},
+              {"TEXCOORD_0", 2},
+              {"COLOR_0", 3},
+              {"WEIGHTS_0", 4},
+              {"JOINTS_0", 5}}}}}}}}},
       {"nodes", {{{"mesh", 0}}}},
   };
-  // The SHORT positions use a stride of 8: (0,0,0) (100,0,0) (0,-200,0) at offsets 0, 8, 16... but the
-  // view holds 20 bytes, so element 2 starts at 16 and its 6 bytes end at 22 > 20: rejected.
+  // The SHORT positions use a stride of 8: (0,0,0) (100,0,0) (0,-200,0) at offsets 0, 8, 16... but
+  // the view holds 20 bytes, so element 2 starts at 16 and its 6 bytes end at 22 > 20: rejected.
   Result<Scene> too_short = Decode(j, bin);
   ASSERT_FALSE(too_short.ok());
   EXPECT_EQ(too_short.status().code(), StatusCode::kParseError);
-  EXPECT_NE(too_short.status().message().find("accessors[0]"), std::string::npos) << too_short.status().ToString();
-  // With a 6-byte element pitch the layout is tight (the stride is dropped): (0,0,0) (100,0,0) (0,-200,0)
+  EXPECT_NE(too_short.status().message().find("accessors[0]"), std::string::npos)
+      << too_short.status().ToString();
+  // With a 6-byte element pitch the layout is tight (the stride is dropped): (0,0,0) (100,0,0)
+  // (0,-200,0)
   j["bufferViews"][0].erase("byteStride");
   j["bufferViews"][0]["byteLength"] = 18;
   Result<Scene> s = Decode(j, bin);
@@ -114,10 +144,15 @@ TEST(GlbReaderTest, NormalBytesClampAtMinusOne) {
   json j = {{"asset", {{"version", "2.0"}}},
             {"buffers", {{{"byteLength", bin.size()}}}},
             {"bufferViews",
-             {{{"buffer", 0}, {"byteLength", 36}}, {{"buffer", 0}, {"byteOffset", 36}, {"byteLength", 12}, {"byteStride", 4}}}},
+             {{{"buffer", 0}, {"byteLength", 36}},
+              {{"buffer", 0}, {"byteOffset", 36}, {"byteLength", 12}, {"byteStride", 4}}}},
             {"accessors",
              {{{"bufferView", 0}, {"componentType", gltf::kFloat}, {"count", 3}, {"type", "VEC3"}},
-              {{"bufferView", 1}, {"componentType", gltf::kByte}, {"normalized", true}, {"count", 3}, {"type", "VEC3"}}}},
+              {{"bufferView", 1},
+               {"componentType", gltf::kByte},
+               {"normalized", true},
+               {"count", 3},
+               {"type", "VEC3"}}}},
             {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}}}}}}}}}};
   Result<Scene> s = Decode(j, bin);
   ASSERT_TRUE(s.ok()) << s.status().ToString();
@@ -127,11 +162,12 @@ TEST(GlbReaderTest, NormalBytesClampAtMinusOne) {
 // Four vertices, interleaved POSITION+NORMAL (stride 24), and three primitives.
 json InterleavedQuad(std::vector<uint8_t>* bin) {
   for (int v = 0; v < 4; ++v) {
-    Put<float>(*bin, {static_cast<float>(v & 1), static_cast<float>(v >> 1), 0.0f, 0.0f, 0.0f, 1.0f});
+    Put<float>(*bin,
+               {static_cast<float>(v & 1), static_cast<float>(v >> 1), 0.0f, 0.0f, 0.0f, 1.0f});
   }
-  Put<uint8_t>(*bin, {0, 1, 2, 3});        // 96: strip
-  Put<uint16_t>(*bin, {0, 1, 3, 2});       // 100: fan
-  Put<uint32_t>(*bin, {0, 1, 3});          // 108: triangles
+  Put<uint8_t>(*bin, {0, 1, 2, 3});   // 96: strip
+  Put<uint16_t>(*bin, {0, 1, 3, 2});  // 100: fan
+  Put<uint32_t>(*bin, {0, 1, 3});     // 108: triangles
   return {{"asset", {{"version", "2.0"}}},
           {"buffers", {{{"byteLength", bin->size()}}}},
           {"bufferViews",
@@ -139,15 +175,33 @@ json InterleavedQuad(std::vector<uint8_t>* bin) {
             {{"buffer", 0}, {"byteOffset", 96}, {"byteLength", 24}}}},
           {"accessors",
            {{{"bufferView", 0}, {"componentType", gltf::kFloat}, {"count", 4}, {"type", "VEC3"}},
-            {{"bufferView", 0}, {"byteOffset", 12}, {"componentType", gltf::kFloat}, {"count", 4}, {"type", "VEC3"}},
-            {{"bufferView", 1}, {"componentType", gltf::kUnsignedByte}, {"count", 4}, {"type", "SCALAR"}},
-            {{"bufferView", 1}, {"byteOffset", 4}, {"componentType", gltf::kUnsignedShort}, {"count", 4}, {"type", "SCALAR"}},
-            {{"bufferView", 1}, {"byteOffset", 12}, {"componentType", gltf::kUnsignedInt}, {"count", 3}, {"type", "SCALAR"}}}},
+            {{"bufferView", 0},
+             {"byteOffset", 12},
+             {"componentType", gltf::kFloat},
+             {"count", 4},
+             {"type", "VEC3"}},
+            {{"bufferView", 1},
+             {"componentType", gltf::kUnsignedByte},
+             {"count", 4},
+             {"type", "SCALAR"}},
+            {{"bufferView", 1},
+             {"byteOffset", 4},
+             {"componentType", gltf::kUnsignedShort},
+             {"count", 4},
+             {"type", "SCALAR"}},
+            {{"bufferView", 1},
+             {"byteOffset", 12},
+             {"componentType", gltf::kUnsignedInt},
+             {"count", 3},
+             {"type", "SCALAR"}}}},
           {"materials", {{{"name", "red"}}}},
           {"meshes",
            {{{"name", "quad"},
              {"primitives",
-              {{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}}}, {"indices", 2}, {"mode", 5}, {"material", 0}},
+              {{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}}},
+                {"indices", 2},
+                {"mode", 5},
+                {"material", 0}},
                {{"attributes", {{"POSITION", 0}, {"NORMAL", 1}}}, {"indices", 3}, {"mode", 6}},
                {{"attributes", {{"POSITION", 0}}}, {"indices", 4}, {"material", 0}}}}}}},
           {"nodes",
@@ -164,17 +218,16 @@ TEST(GlbReaderTest, StridesStripsFansAndMixedPrimitives) {
   ASSERT_TRUE(s.ok()) << s.status().ToString();
   const Mesh& m = s->meshes[0];
   EXPECT_EQ(m.name, "quad");
-  // Primitives 1 and 2 share (POSITION 0, NORMAL 1); primitive 3 has a different set, so its vertices
-  // are appended and get zero normals.
+  // Primitives 1 and 2 share (POSITION 0, NORMAL 1); primitive 3 has a different set, so its
+  // vertices are appended and get zero normals.
   ASSERT_EQ(m.vertex_count(), 8u);
   EXPECT_EQ(std::vector<float>(m.positions.begin(), m.positions.begin() + 12),
             std::vector<float>({0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0}));
   EXPECT_EQ(m.normals[2], 1.0f);
   EXPECT_EQ(m.normals[3 * 4 + 2], 0.0f);
-  const std::vector<uint32_t> expected = {
-      0, 1, 2, 1, 3, 2,  // strip 0 1 2 3 -> (0 1 2) (1 3 2)
-      1, 3, 0, 3, 2, 0,  // fan 0 1 3 2 -> (1 3 0) (3 2 0)
-      4, 5, 7};          // triangles, offset by the appended block
+  const std::vector<uint32_t> expected = {0, 1, 2, 1, 3, 2,  // strip 0 1 2 3 -> (0 1 2) (1 3 2)
+                                          1, 3, 0, 3, 2, 0,  // fan 0 1 3 2 -> (1 3 0) (3 2 0)
+                                          4, 5, 7};  // triangles, offset by the appended block
   EXPECT_EQ(m.indices, expected);
   // The primitive without a material gets an added default material.
   ASSERT_EQ(s->materials.size(), 2u);
@@ -298,7 +351,8 @@ TEST_F(GltfFileTest, DataUriBuffersAndImages) {
   std::vector<uint8_t> bin;
   json j = InterleavedQuad(&bin);
   j["buffers"][0]["uri"] = "data:application/octet-stream;base64," + Base64(bin);
-  j["images"] = {{{"uri", "data:image/png;base64," + Base64({0x89, 'P', 'N', 'G'})}}, {{"uri", "tex/a%20b.png"}}};
+  j["images"] = {{{"uri", "data:image/png;base64," + Base64({0x89, 'P', 'N', 'G'})}},
+                 {{"uri", "tex/a%20b.png"}}};
   const std::string path = Write("quad.gltf", j.dump());
   Result<Scene> s = ReadGltfFile(path);
   ASSERT_TRUE(s.ok()) << s.status().ToString();
@@ -311,7 +365,8 @@ TEST_F(GltfFileTest, DataUriBuffersAndImages) {
   j["buffers"][0]["uri"] = "data:application/octet-stream;base64,@@@@";
   Result<Scene> bad = ReadGltfFile(Write("bad.gltf", j.dump()));
   ASSERT_FALSE(bad.ok());
-  EXPECT_NE(bad.status().message().find("buffers[0]"), std::string::npos) << bad.status().ToString();
+  EXPECT_NE(bad.status().message().find("buffers[0]"), std::string::npos)
+      << bad.status().ToString();
 }
 
 TEST_F(GltfFileTest, ExternalBinNextToTheFile) {
@@ -329,12 +384,14 @@ TEST_F(GltfFileTest, ExternalBinNextToTheFile) {
   ASSERT_FALSE(big.ok());
   EXPECT_EQ(big.status().code(), StatusCode::kParseError);
   // URIs that would leave the folder are not followed.
-  for (const char* uri : {"../quad.bin", "sub/../../x.bin", "/etc/passwd", "file:///etc/passwd", "%2e%2e/x.bin"}) {
+  for (const char* uri :
+       {"../quad.bin", "sub/../../x.bin", "/etc/passwd", "file:///etc/passwd", "%2e%2e/x.bin"}) {
     j["buffers"][0]["uri"] = uri;
     j["buffers"][0]["byteLength"] = bin.size();
     Result<Scene> esc = ReadGltfFile(Write("escape.gltf", j.dump()));
     ASSERT_FALSE(esc.ok()) << uri;
-    EXPECT_EQ(esc.status().code(), StatusCode::kUnsupported) << uri << ": " << esc.status().ToString();
+    EXPECT_EQ(esc.status().code(), StatusCode::kUnsupported)
+        << uri << ": " << esc.status().ToString();
   }
   j["buffers"][0]["uri"] = "missing.bin";
   Result<Scene> missing = ReadGltfFile(Write("missing.gltf", j.dump()));

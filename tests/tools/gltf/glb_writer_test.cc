@@ -45,8 +45,8 @@ TEST(GlbWriterTest, RichSceneJsonLayout) {
   EXPECT_EQ(prims[1]["material"], 1);
   EXPECT_EQ(prims[0]["attributes"], prims[1]["attributes"]);
   EXPECT_NE(prims[0]["indices"], prims[1]["indices"]);
-  for (const char* a : {"POSITION", "NORMAL", "TANGENT", "TEXCOORD_0", "TEXCOORD_1", "COLOR_0", "JOINTS_0",
-                        "WEIGHTS_0"}) {
+  for (const char* a : {"POSITION", "NORMAL", "TANGENT", "TEXCOORD_0", "TEXCOORD_1", "COLOR_0",
+                        "JOINTS_0", "WEIGHTS_0"}) {
     EXPECT_TRUE(prims[0]["attributes"].contains(a)) << a;
   }
   const json& pos = j["accessors"][prims[0]["attributes"]["POSITION"].get<int>()];
@@ -104,7 +104,8 @@ TEST(GlbWriterTest, LargeMeshUsesUnsignedIntIndices) {
   ASSERT_TRUE(glb.ok()) << glb.status().ToString();
   const GltfDocument doc = Parse(glb.value());
   const json& prim = doc.json()["meshes"][0]["primitives"][0];
-  EXPECT_EQ(doc.json()["accessors"][prim["indices"].get<int>()]["componentType"], gltf::kUnsignedInt);
+  EXPECT_EQ(doc.json()["accessors"][prim["indices"].get<int>()]["componentType"],
+            gltf::kUnsignedInt);
   Result<Scene> back = DecodeGlb(glb->data(), glb->size(), "large.glb");
   ASSERT_TRUE(back.ok()) << back.status().ToString();
   ExpectScenesEqual(scene, back.value());
@@ -114,7 +115,8 @@ TEST(GlbWriterTest, IndexTypeSwitchesExactlyAt65536Vertices) {
   for (size_t vc : {65535u, 65536u}) {
     Scene s;
     Mesh m;
-    for (size_t v = 0; v < vc; ++v) m.positions.insert(m.positions.end(), {static_cast<float>(v), 0, 0});
+    for (size_t v = 0; v < vc; ++v)
+      m.positions.insert(m.positions.end(), {static_cast<float>(v), 0, 0});
     m.indices = {0, 1, static_cast<uint32_t>(vc - 1)};
     s.meshes.push_back(m);
     Result<std::vector<uint8_t>> glb = EncodeGlb(s);
@@ -205,18 +207,26 @@ TEST(GlbWriterTest, RejectsInconsistentScenes) {
     StatusCode code;
   };
   const Case cases[] = {
-      {"index out of range", [](Scene& s) { s.meshes[0].indices[4] = 1000; }, StatusCode::kInvalidMesh},
+      {"index out of range", [](Scene& s) { s.meshes[0].indices[4] = 1000; },
+       StatusCode::kInvalidMesh},
       {"short normals", [](Scene& s) { s.meshes[0].normals.pop_back(); }, StatusCode::kInvalidMesh},
       {"uv set size", [](Scene& s) { s.meshes[0].uv_sets[1].resize(3); }, StatusCode::kInvalidMesh},
-      {"NaN position", [](Scene& s) { s.meshes[1].positions[0] = std::nanf(""); }, StatusCode::kInvalidMesh},
+      {"NaN position", [](Scene& s) { s.meshes[1].positions[0] = std::nanf(""); },
+       StatusCode::kInvalidMesh},
       {"material id", [](Scene& s) { s.meshes[0].material_ids[0] = 7; }, StatusCode::kInvalidMesh},
       {"no triangles", [](Scene& s) { s.meshes[2].indices.clear(); }, StatusCode::kInvalidMesh},
-      {"weights without joints", [](Scene& s) { s.meshes[0].joints.clear(); }, StatusCode::kInvalidMesh},
-      {"texture image", [](Scene& s) { s.materials[0].normal_texture.image = 9; }, StatusCode::kInvalidArgument},
-      {"skin joint", [](Scene& s) { s.skins[0].joints.push_back(42); }, StatusCode::kInvalidArgument},
-      {"ibm count", [](Scene& s) { s.skins[0].inverse_bind_matrices.resize(20); }, StatusCode::kInvalidArgument},
-      {"joint index vs skin", [](Scene& s) { s.meshes[0].joints[0] = 5; }, StatusCode::kInvalidArgument},
-      {"child parent mismatch", [](Scene& s) { s.nodes[2].parent = 0; }, StatusCode::kInvalidArgument},
+      {"weights without joints", [](Scene& s) { s.meshes[0].joints.clear(); },
+       StatusCode::kInvalidMesh},
+      {"texture image", [](Scene& s) { s.materials[0].normal_texture.image = 9; },
+       StatusCode::kInvalidArgument},
+      {"skin joint", [](Scene& s) { s.skins[0].joints.push_back(42); },
+       StatusCode::kInvalidArgument},
+      {"ibm count", [](Scene& s) { s.skins[0].inverse_bind_matrices.resize(20); },
+       StatusCode::kInvalidArgument},
+      {"joint index vs skin", [](Scene& s) { s.meshes[0].joints[0] = 5; },
+       StatusCode::kInvalidArgument},
+      {"child parent mismatch", [](Scene& s) { s.nodes[2].parent = 0; },
+       StatusCode::kInvalidArgument},
       {"cycle",
        [](Scene& s) {
          s.nodes[0].parent = 2;
@@ -224,7 +234,8 @@ TEST(GlbWriterTest, RejectsInconsistentScenes) {
        },
        StatusCode::kInvalidArgument},
       {"node mesh", [](Scene& s) { s.nodes[4].meshes.push_back(3); }, StatusCode::kInvalidArgument},
-      {"image without data", [](Scene& s) { s.images[0].bytes.clear(); }, StatusCode::kInvalidArgument},
+      {"image without data", [](Scene& s) { s.images[0].bytes.clear(); },
+       StatusCode::kInvalidArgument},
   };
   for (const Case& c : cases) {
     Scene s = good;
@@ -238,7 +249,8 @@ TEST(GlbWriterTest, RejectsInconsistentScenes) {
 TEST(GlbWriterTest, ImageUrisAreMadeValidWithoutDoubleEncoding) {
   Scene s;
   s.meshes.push_back(testing_gltf::MakeGrid(1, 1, 1, 0.0f));
-  for (const char* uri : {"tex\\my wood.png", "a%20b.png", "caf\xC3\xA9|{x}.jpg", "plain/ok-_.~!$&'()*+,;=:@.png"}) {
+  for (const char* uri :
+       {"tex\\my wood.png", "a%20b.png", "caf\xC3\xA9|{x}.jpg", "plain/ok-_.~!$&'()*+,;=:@.png"}) {
     Image img;
     img.uri = uri;
     s.images.push_back(img);
@@ -266,7 +278,8 @@ TEST(GlbWriterTest, OptionsChangeGeneratorAndJointType) {
 }
 
 TEST(GlbWriterTest, PackerCanExtendTheDocument) {
-  // What the packaging stage does: build the plain document, add a compressed stream and extensions.
+  // What the packaging stage does: build the plain document, add a compressed stream and
+  // extensions.
   const Scene scene = testing_gltf::MakeRichScene();
   GltfDocument doc;
   GltfSceneLayout layout;
@@ -287,7 +300,8 @@ TEST(GlbWriterTest, PackerCanExtendTheDocument) {
   EXPECT_EQ(parsed.json()["extensionsRequired"], json({"EXT_hullpack_test"}));
   const json& v = parsed.json()["bufferViews"][view];
   EXPECT_EQ(v["byteOffset"].get<size_t>() % 8, 0u);
-  EXPECT_EQ(0, std::memcmp(parsed.binary().data() + v["byteOffset"].get<size_t>(), stream.data(), 5));
+  EXPECT_EQ(0,
+            std::memcmp(parsed.binary().data() + v["byteOffset"].get<size_t>(), stream.data(), 5));
   // The plain reader refuses the unknown required extension unless the caller handles it.
   Result<Scene> plain = DecodeGltfDocument(parsed, "ext.glb");
   ASSERT_FALSE(plain.ok());

@@ -78,7 +78,8 @@ TEST(GltfDocumentTest, FloatBoundsAreWrittenWithTheDigitsAFloatNeeds) {
   const json& acc = doc.json()["accessors"];
   EXPECT_EQ(acc[0]["min"][0].dump(), "0.1");
   EXPECT_EQ(acc[0]["min"][1].dump(), "-1234.5677");
-  for (int k = 0; k < 3; ++k) EXPECT_EQ(float(acc[0]["min"][k].get<double>()), float(a.min[k])) << k;
+  for (int k = 0; k < 3; ++k)
+    EXPECT_EQ(float(acc[0]["min"][k].get<double>()), float(a.min[k])) << k;
   EXPECT_EQ(acc[0]["max"][1].get<double>(), 1.0 / 3.0);
   EXPECT_EQ(acc[0]["max"][2].get<double>(), 16777217.0);
   EXPECT_EQ(acc[1]["max"][0].get<double>(), 4294967295.0);
@@ -127,7 +128,8 @@ TEST(GltfDocumentTest, ParseGlbSkipsUnknownChunks) {
   const std::vector<uint8_t> extra = {4, 0, 0, 0, 'X', 'T', 'R', 'A', 1, 2, 3, 4};
   b.insert(b.begin() + static_cast<std::ptrdiff_t>(bin_at), extra.begin(), extra.end());
   const uint32_t total = static_cast<uint32_t>(b.size());
-  for (int i = 0; i < 4; ++i) b[8 + static_cast<size_t>(i)] = static_cast<uint8_t>(total >> (8 * i));
+  for (int i = 0; i < 4; ++i)
+    b[8 + static_cast<size_t>(i)] = static_cast<uint8_t>(total >> (8 * i));
   Result<GltfDocument> back = ParseGlb(b.data(), b.size(), "chunks.glb");
   ASSERT_TRUE(back.ok()) << back.status().ToString();
   EXPECT_EQ(back->binary(), std::vector<uint8_t>({9, 8, 7, 6}));
@@ -179,7 +181,8 @@ TEST(GltfDocumentTest, ParseGltfBytesDetectsJson) {
   EXPECT_FALSE(doc->has_binary_chunk());
   EXPECT_EQ(doc->json()["nodes"].size(), 1u);
   const std::string bad = "[1,2";
-  Result<GltfDocument> broken = ParseGltfBytes(reinterpret_cast<const uint8_t*>(bad.data()), bad.size(), "b.gltf");
+  Result<GltfDocument> broken =
+      ParseGltfBytes(reinterpret_cast<const uint8_t*>(bad.data()), bad.size(), "b.gltf");
   ASSERT_FALSE(broken.ok());
   EXPECT_EQ(broken.status().code(), StatusCode::kParseError);
   EXPECT_EQ(broken.status().message().rfind("b.gltf: ", 0), 0u);

@@ -10,10 +10,11 @@ namespace testing_gltf {
 
 const std::vector<uint8_t>& TinyPng() {
   static const std::vector<uint8_t> kPng = {
-      0x89, 0x50, 0x4E, 0x47, 0x0D, 0x0A, 0x1A, 0x0A, 0x00, 0x00, 0x00, 0x0D, 0x49, 0x48, 0x44, 0x52, 0x00, 0x00,
-      0x00, 0x01, 0x00, 0x00, 0x00, 0x01, 0x08, 0x06, 0x00, 0x00, 0x00, 0x1F, 0x15, 0xC4, 0x89, 0x00, 0x00, 0x00,
-      0x0D, 0x49, 0x44, 0x41, 0x54, 0x78, 0x9C, 0x63, 0xF8, 0xDF, 0xC0, 0xF0, 0x1F, 0x00, 0x06, 0x80, 0x02, 0x7F,
-      0x10, 0x4C, 0x1B, 0xE1, 0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4E, 0x44, 0xAE, 0x42, 0x60, 0x82};
+      0x89, 0x50, 0x4E, 0x47, 0x0D, 0x0A, 0x1A, 0x0A, 0x00, 0x00, 0x00, 0x0D, 0x49, 0x48,
+      0x44, 0x52, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x00, 0x01, 0x08, 0x06, 0x00, 0x00,
+      0x00, 0x1F, 0x15, 0xC4, 0x89, 0x00, 0x00, 0x00, 0x0D, 0x49, 0x44, 0x41, 0x54, 0x78,
+      0x9C, 0x63, 0xF8, 0xDF, 0xC0, 0xF0, 0x1F, 0x00, 0x06, 0x80, 0x02, 0x7F, 0x10, 0x4C,
+      0x1B, 0xE1, 0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4E, 0x44, 0xAE, 0x42, 0x60, 0x82};
   return kPng;
 }
 
@@ -24,12 +25,13 @@ Mesh MakeGrid(int nx, int ny, int uv_sets, float z) {
     for (int x = 0; x <= nx; ++x) {
       const float fx = static_cast<float>(x) / static_cast<float>(nx);
       const float fy = static_cast<float>(y) / static_cast<float>(ny);
-      m.positions.insert(m.positions.end(), {fx * 2.0f - 1.0f, fy * 3.0f + 0.125f, z + 0.1f * fx * fy});
+      m.positions.insert(m.positions.end(),
+                         {fx * 2.0f - 1.0f, fy * 3.0f + 0.125f, z + 0.1f * fx * fy});
       m.normals.insert(m.normals.end(), {0.0f, 0.0f, 1.0f});
       m.tangents.insert(m.tangents.end(), {1.0f, 0.0f, 0.0f, (x % 2) ? -1.0f : 1.0f});
       for (int u = 0; u < uv_sets; ++u) {
         m.uv_sets[static_cast<size_t>(u)].insert(m.uv_sets[static_cast<size_t>(u)].end(),
-                                                  {fx * static_cast<float>(u + 1), 1.0f - fy});
+                                                 {fx * static_cast<float>(u + 1), 1.0f - fy});
       }
       m.colors.insert(m.colors.end(), {fx, fy, 0.5f, 1.0f - 0.25f * fx});
     }
@@ -86,7 +88,8 @@ Scene MakeRichScene() {
     skinned.weights.insert(skinned.weights.end(), {1.0f - w, w, 0.0f, 0.0f});
   }
   // Non-decreasing material ids: the first 10 triangles metal-free, the rest metal.
-  for (size_t t = 0; t < skinned.triangle_count(); ++t) skinned.material_ids.push_back(t < 10 ? 0 : 1);
+  for (size_t t = 0; t < skinned.triangle_count(); ++t)
+    skinned.material_ids.push_back(t < 10 ? 0 : 1);
   s.meshes.push_back(skinned);
 
   Mesh hull = MakeGrid(2, 2, 0, 1.0f);
@@ -169,7 +172,8 @@ void ExpectScenesEqual(const Scene& e, const Scene& a) {
     ExpectBitEqual(em.normals, am.normals, w + "normals");
     ExpectBitEqual(em.tangents, am.tangents, w + "tangents");
     ASSERT_EQ(em.uv_sets.size(), am.uv_sets.size()) << w;
-    for (size_t u = 0; u < em.uv_sets.size(); ++u) ExpectBitEqual(em.uv_sets[u], am.uv_sets[u], w + "uv");
+    for (size_t u = 0; u < em.uv_sets.size(); ++u)
+      ExpectBitEqual(em.uv_sets[u], am.uv_sets[u], w + "uv");
     ExpectBitEqual(em.colors, am.colors, w + "colors");
     ExpectBitEqual(em.joints, am.joints, w + "joints");
     ExpectBitEqual(em.weights, am.weights, w + "weights");
@@ -186,10 +190,10 @@ void ExpectScenesEqual(const Scene& e, const Scene& a) {
     EXPECT_EQ(em.roughness, am.roughness) << w;
     EXPECT_EQ(em.emissive, am.emissive) << w;
     EXPECT_EQ(em.double_sided, am.double_sided) << w;
-    const TextureRef* et[] = {&em.base_color_texture, &em.metallic_roughness_texture, &em.normal_texture,
-                              &em.occlusion_texture, &em.emissive_texture};
-    const TextureRef* at[] = {&am.base_color_texture, &am.metallic_roughness_texture, &am.normal_texture,
-                              &am.occlusion_texture, &am.emissive_texture};
+    const TextureRef* et[] = {&em.base_color_texture, &em.metallic_roughness_texture,
+                              &em.normal_texture, &em.occlusion_texture, &em.emissive_texture};
+    const TextureRef* at[] = {&am.base_color_texture, &am.metallic_roughness_texture,
+                              &am.normal_texture, &am.occlusion_texture, &am.emissive_texture};
     for (int k = 0; k < 5; ++k) {
       EXPECT_EQ(et[k]->image, at[k]->image) << w << " slot " << k;
       EXPECT_EQ(et[k]->uv_set, at[k]->uv_set) << w << " slot " << k;

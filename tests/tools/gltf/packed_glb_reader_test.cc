@@ -11,12 +11,12 @@
 #include <string>
 #include <vector>
 
+#include "../pipeline/packed_glb_test_util.h"
+#include "../pipeline/test_torus.h"
 #include "gltf/glb_reader.h"
 #include "gltf/gltf_document.h"
 #include "gltf/packed_glb_reader.h"
 #include "pipeline/pack.h"
-#include "../pipeline/packed_glb_test_util.h"
-#include "../pipeline/test_torus.h"
 
 namespace hullpack {
 namespace {
@@ -51,8 +51,10 @@ void ExpectParseErrorNamingFile(const std::vector<uint8_t>& glb, const std::stri
   ASSERT_FALSE(glb.empty()) << what;
   Result<Scene> scene = ReadPackedGltf(glb.data(), glb.size(), "hostile.glb", "", nullptr);
   ASSERT_FALSE(scene.ok()) << what;
-  EXPECT_EQ(scene.status().code(), StatusCode::kParseError) << what << ": " << scene.status().ToString();
-  EXPECT_NE(scene.status().message().find("hostile.glb"), std::string::npos) << scene.status().ToString();
+  EXPECT_EQ(scene.status().code(), StatusCode::kParseError)
+      << what << ": " << scene.status().ToString();
+  EXPECT_NE(scene.status().message().find("hostile.glb"), std::string::npos)
+      << scene.status().ToString();
 }
 
 TEST(PackedGlbReader, UntouchedFileReadsBack) {
@@ -72,17 +74,25 @@ TEST(PackedGlbReader, UntouchedFileReadsBack) {
 TEST(PackedGlbReader, AccessorMembersOfTheWrongTypeAreParseErrors) {
   const std::vector<uint8_t> glb = PackedTorus();
   const std::vector<std::pair<const char*, nlohmann::json>> cases = {
-      {"normalized", 1}, {"normalized", "yes"}, {"componentType", "float"}, {"componentType", -5126},
-      {"componentType", 5126.5}, {"type", 3}, {"type", nlohmann::json::array({"VEC3"})}};
+      {"normalized", 1},
+      {"normalized", "yes"},
+      {"componentType", "float"},
+      {"componentType", -5126},
+      {"componentType", 5126.5},
+      {"type", 3},
+      {"type", nlohmann::json::array({"VEC3"})}};
   for (bool indices : {false, true}) {
     for (const auto& [key, value] : cases) {
-      const std::string what = std::string(indices ? "index" : "position") + " accessor " + key + " = " + value.dump();
-      ExpectParseErrorNamingFile(Rewrite(glb,
-                                         [&, key = key, value = value](nlohmann::json& json) {
-                                           const PackedRefs refs = FindPackedRefs(json);
-                                           json["accessors"][indices ? refs.index_accessor : refs.position_accessor][key] = value;
-                                         }),
-                                 what);
+      const std::string what =
+          std::string(indices ? "index" : "position") + " accessor " + key + " = " + value.dump();
+      ExpectParseErrorNamingFile(
+          Rewrite(glb,
+                  [&, key = key, value = value](nlohmann::json& json) {
+                    const PackedRefs refs = FindPackedRefs(json);
+                    json["accessors"][indices ? refs.index_accessor : refs.position_accessor][key] =
+                        value;
+                  }),
+          what);
     }
   }
 }
@@ -90,38 +100,44 @@ TEST(PackedGlbReader, AccessorMembersOfTheWrongTypeAreParseErrors) {
 TEST(PackedGlbReader, StreamViewAndExtensionMembersOfTheWrongTypeAreParseErrors) {
   const std::vector<uint8_t> glb = PackedTorus();
   for (const char* key : {"byteOffset", "byteLength"}) {
-    for (const nlohmann::json& value : {nlohmann::json("0"), nlohmann::json(-1), nlohmann::json(0.5), nlohmann::json::object()}) {
-      ExpectParseErrorNamingFile(Rewrite(glb,
-                                         [&](nlohmann::json& json) {
-                                           json["bufferViews"][FindPackedRefs(json).stream_view][key] = value;
-                                         }),
-                                 std::string("stream bufferView ") + key + " = " + value.dump());
+    for (const nlohmann::json& value :
+         {nlohmann::json("0"), nlohmann::json(-1), nlohmann::json(0.5), nlohmann::json::object()}) {
+      ExpectParseErrorNamingFile(
+          Rewrite(glb,
+                  [&](nlohmann::json& json) {
+                    json["bufferViews"][FindPackedRefs(json).stream_view][key] = value;
+                  }),
+          std::string("stream bufferView ") + key + " = " + value.dump());
     }
   }
-  ExpectParseErrorNamingFile(Rewrite(glb,
-                                     [](nlohmann::json& json) {
-                                       for (auto& ext : json["meshes"][0]["primitives"][0]["extensions"]) {
-                                         ext["group"] = 0;
-                                         ext["compactVertices"] = "true";
-                                       }
-                                     }),
-                             "compactVertices = \"true\"");
+  ExpectParseErrorNamingFile(
+      Rewrite(glb,
+              [](nlohmann::json& json) {
+                for (auto& ext : json["meshes"][0]["primitives"][0]["extensions"]) {
+                  ext["group"] = 0;
+                  ext["compactVertices"] = "true";
+                }
+              }),
+      "compactVertices = \"true\"");
 }
 
 // Every file the fuzzers once crashed on must now give a Status (or a scene), in this build too.
 TEST(PackedGlbReader, FuzzFindingsAreHandled) {
-  const std::string dir = std::string(HULLPACK_SOURCE_DIR) + "/tests/fuzz/regressions/packed_glb_fuzzer";
+  const std::string dir =
+      std::string(HULLPACK_SOURCE_DIR) + "/tests/fuzz/regressions/packed_glb_fuzzer";
   DIR* d = opendir(dir.c_str());
   ASSERT_NE(d, nullptr) << dir;
   int files = 0;
   while (dirent* e = readdir(d)) {
     if (e->d_name[0] == '.') continue;
     std::ifstream in(dir + "/" + e->d_name, std::ios::binary);
-    const std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)),
+                                     std::istreambuf_iterator<char>());
     ASSERT_FALSE(bytes.empty()) << e->d_name;
     Result<Scene> scene = ReadPackedGltf(bytes.data(), bytes.size(), e->d_name, "", nullptr);
     if (!scene.ok()) {
-      EXPECT_NE(scene.status().message().find(e->d_name), std::string::npos) << scene.status().ToString();
+      EXPECT_NE(scene.status().message().find(e->d_name), std::string::npos)
+          << scene.status().ToString();
     }
     ++files;
   }

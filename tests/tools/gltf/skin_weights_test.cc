@@ -26,7 +26,8 @@ TEST(SkinWeights, QuantizedWeightsSumToOneAgain) {
   for (int a = 0; a <= 1023; a += 7) {
     for (int b = 0; a + b <= 1023; b += 61) {
       const int c = (1023 - a - b) / 3;
-      w.insert(w.end(), {float(a / 1023.0 + 0.0004), float(b / 1023.0), float(c / 1023.0), float((1023 - a - b - c) / 1023.0 - 0.0003)});
+      w.insert(w.end(), {float(a / 1023.0 + 0.0004), float(b / 1023.0), float(c / 1023.0),
+                         float((1023 - a - b - c) / 1023.0 - 0.0003)});
       for (int k = 1; k <= 4; ++k) w[w.size() - k] = std::max(0.0f, w[w.size() - k]);
     }
   }
@@ -40,7 +41,8 @@ TEST(SkinWeights, QuantizedWeightsSumToOneAgain) {
     EXPECT_TRUE(ValidatorAccepts(&w[v * 4])) << v;
     for (int k = 0; k < 4; ++k) {
       EXPECT_GE(w[v * 4 + k], 0);
-      EXPECT_NEAR(w[v * 4 + k], before[v * 4 + k], 1e-3) << v;  // a rescale, not a change of influences
+      EXPECT_NEAR(w[v * 4 + k], before[v * 4 + k], 1e-3)
+          << v;  // a rescale, not a change of influences
     }
   }
 }

@@ -61,7 +61,8 @@ int main(int argc, char** argv) {
   broken.json()["accessors"][0]["max"][0] = -5.0;
   Result<std::vector<uint8_t>> bytes = broken.Serialize();
   std::ofstream out(dir + "/broken.glb", std::ios::binary);
-  out.write(reinterpret_cast<const char*>(bytes->data()), static_cast<std::streamsize>(bytes->size()));
+  out.write(reinterpret_cast<const char*>(bytes->data()),
+            static_cast<std::streamsize>(bytes->size()));
   ok = ok && static_cast<bool>(out);
   return ok ? 0 : 1;
 }

@@ -1,5 +1,6 @@
-// Scenes and files the I/O tests share: generated meshes, temporary folders, and files in formats the
-// project does not write (DAE, STL, FBX, glTF) made with assimp's exporters from our own OBJ output.
+// Scenes and files the I/O tests share: generated meshes, temporary folders, and files in formats
+// the project does not write (DAE, STL, FBX, glTF) made with assimp's exporters from our own OBJ
+// output.
 #ifndef HULLPACK_TESTS_TOOLS_IO_IO_TEST_UTIL_H_
 #define HULLPACK_TESTS_TOOLS_IO_IO_TEST_UTIL_H_
 
@@ -21,7 +22,8 @@
 namespace hullpack::testing {
 
 // A torus with normals, one UV set and, optionally, colours and two materials (inner/outer half).
-inline Scene TorusScene(int rings = 16, int sides = 8, bool colors = false, bool materials = false) {
+inline Scene TorusScene(int rings = 16, int sides = 8, bool colors = false,
+                        bool materials = false) {
   Mesh m;
   m.name = "torus";
   m.uv_sets.emplace_back();
@@ -29,16 +31,19 @@ inline Scene TorusScene(int rings = 16, int sides = 8, bool colors = false, bool
   for (int i = 0; i < rings; ++i) {
     for (int j = 0; j < sides; ++j) {
       const double u = 2 * pi * i / rings, v = 2 * pi * j / sides;
-      const double x = (1 + 0.3 * std::cos(v)) * std::cos(u), y = (1 + 0.3 * std::cos(v)) * std::sin(u);
+      const double x = (1 + 0.3 * std::cos(v)) * std::cos(u),
+                   y = (1 + 0.3 * std::cos(v)) * std::sin(u);
       m.positions.insert(m.positions.end(), {float(x), float(y), float(0.3 * std::sin(v))});
-      m.normals.insert(m.normals.end(), {float(std::cos(v) * std::cos(u)), float(std::cos(v) * std::sin(u)), float(std::sin(v))});
+      m.normals.insert(m.normals.end(), {float(std::cos(v) * std::cos(u)),
+                                         float(std::cos(v) * std::sin(u)), float(std::sin(v))});
       m.uv_sets[0].insert(m.uv_sets[0].end(), {float(i) / rings, float(j) / sides});
       if (colors) m.colors.insert(m.colors.end(), {float(i) / rings, float(j) / sides, 0.5f, 1.0f});
     }
   }
   for (int i = 0; i < rings; ++i) {
     for (int j = 0; j < sides; ++j) {
-      const uint32_t a = i * sides + j, b = ((i + 1) % rings) * sides + j, c = ((i + 1) % rings) * sides + (j + 1) % sides,
+      const uint32_t a = i * sides + j, b = ((i + 1) % rings) * sides + j,
+                     c = ((i + 1) % rings) * sides + (j + 1) % sides,
                      d = i * sides + (j + 1) % sides;
       m.indices.insert(m.indices.end(), {a, b, c, a, c, d});
       if (materials) m.material_ids.insert(m.material_ids.end(), 2, j < sides / 2 ? 0u : 1u);
@@ -95,7 +100,8 @@ inline void WriteBytes(const std::string& path, const void* data, size_t size) {
 inline std::vector<uint8_t> ExportWithAssimp(const Scene& scene, const char* assimp_format) {
   const std::string obj = EncodeObj(scene);
   Assimp::Importer importer;
-  const aiScene* ai = importer.ReadFileFromMemory(obj.data(), obj.size(), aiProcess_Triangulate, "obj");
+  const aiScene* ai =
+      importer.ReadFileFromMemory(obj.data(), obj.size(), aiProcess_Triangulate, "obj");
   if (!ai) return {};
   Assimp::Exporter exporter;
   const aiExportDataBlob* blob = exporter.ExportToBlob(ai, assimp_format);

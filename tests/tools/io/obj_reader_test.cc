@@ -7,7 +7,9 @@
 namespace hullpack {
 namespace {
 
-Result<Scene> Parse(const std::string& text) { return ParseObj(text.data(), text.size(), "test.obj"); }
+Result<Scene> Parse(const std::string& text) {
+  return ParseObj(text.data(), text.size(), "test.obj");
+}
 
 TEST(ObjReader, MixedCornerFormatsUnifyIntoVertices) {
   const std::string text =
@@ -27,7 +29,8 @@ TEST(ObjReader, MixedCornerFormatsUnifyIntoVertices) {
   EXPECT_EQ(m.vertex_count(), 9u);
   ASSERT_EQ(m.uv_sets.size(), 1u);
   EXPECT_FLOAT_EQ(m.uv_sets[0][2 * 3 + 0], 1.0f);  // 2/2/1 has vt 1 0
-  EXPECT_FLOAT_EQ(m.uv_sets[0][2 * 6 + 1], 0.0f);  // 3/3/1 has vt 0 1, flipped to the glTF convention
+  EXPECT_FLOAT_EQ(m.uv_sets[0][2 * 6 + 1],
+                  0.0f);  // 3/3/1 has vt 0 1, flipped to the glTF convention
   EXPECT_EQ(m.indices[0], 0u);
   EXPECT_EQ(s->source_vertex_records, 4u);
   EXPECT_FALSE(s->dropped.empty());  // corners without vt/vn are reported
@@ -64,7 +67,8 @@ TEST(ObjReader, MaterialLibraryIsReadThroughTheCallback) {
     if (name != "a.mtl") return Status(StatusCode::kIoError, "missing");
     return std::string("newmtl skin\nKd 0.5 0.25 1\nd 0.5\nmap_Kd -bm 1 tex/skin.png\n");
   };
-  const std::string text = "mtllib a.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nusemtl skin\nf 1/1 2/1 3/1\n";
+  const std::string text =
+      "mtllib a.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nusemtl skin\nf 1/1 2/1 3/1\n";
   Result<Scene> s = ParseObj(text.data(), text.size(), "t.obj", options);
   ASSERT_TRUE(s.ok());
   ASSERT_EQ(s->materials.size(), 1u);
@@ -87,7 +91,8 @@ TEST(ObjReader, ErrorsNameTheLineAndTheProblem) {
       {"v 0 0 0\n\0v", "NUL"},
   };
   for (const Case& c : cases) {
-    const std::string text(c.text, c.text + std::char_traits<char>::length(c.text) + (std::string(c.expect) == "NUL" ? 2 : 0));
+    const std::string text(c.text, c.text + std::char_traits<char>::length(c.text) +
+                                       (std::string(c.expect) == "NUL" ? 2 : 0));
     Result<Scene> s = Parse(text);
     ASSERT_FALSE(s.ok()) << c.text;
     EXPECT_EQ(s.status().code(), StatusCode::kParseError);
@@ -97,7 +102,8 @@ TEST(ObjReader, ErrorsNameTheLineAndTheProblem) {
 }
 
 TEST(ObjReader, CommentsBlankLinesAndCrLf) {
-  Result<Scene> s = Parse("# c\r\n\r\nv 0 0 0 # trailing\r\nv 1 0 0\r\nv 0 1 0\r\ns off\r\ng grp\r\nf 1 2 3\r\n");
+  Result<Scene> s =
+      Parse("# c\r\n\r\nv 0 0 0 # trailing\r\nv 1 0 0\r\nv 0 1 0\r\ns off\r\ng grp\r\nf 1 2 3\r\n");
   ASSERT_TRUE(s.ok()) << s.status().ToString();
   EXPECT_EQ(s->meshes[0].triangle_count(), 1u);
 }

@@ -52,7 +52,8 @@ TEST(SceneIo, FormatsThroughAssimp) {
   struct Case {
     const char* assimp_id;
     const char* ext;
-  } cases[] = {{"collada", "dae"}, {"stlb", "stl"}, {"fbxa", "fbx"}, {"glb2", "glb"}, {"plyb", "ply"}};
+  } cases[] = {
+      {"collada", "dae"}, {"stlb", "stl"}, {"fbxa", "fbx"}, {"glb2", "glb"}, {"plyb", "ply"}};
   for (const Case& c : cases) {
     const std::vector<uint8_t> bytes = testing::ExportWithAssimp(in, c.assimp_id);
     ASSERT_FALSE(bytes.empty()) << c.assimp_id;
@@ -88,7 +89,8 @@ TEST(SceneIo, EmptyRandomAndTruncatedFilesGiveErrorsInEveryFormat) {
   };
   std::vector<Case> cases;
   for (const char* ext : {"obj", "off", "wrl", "ply"}) {
-    Result<std::vector<uint8_t>> bytes = EncodeScene(in, FormatFromExtension(std::string("x.") + ext));
+    Result<std::vector<uint8_t>> bytes =
+        EncodeScene(in, FormatFromExtension(std::string("x.") + ext));
     ASSERT_TRUE(bytes.ok());
     cases.push_back({ext, bytes.value()});
   }

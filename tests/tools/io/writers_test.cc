@@ -27,7 +27,8 @@ void ExpectSameGeometry(const Mesh& a, const Mesh& b) {
 TEST(ObjWriter, RoundTripKeepsAttributesAndMaterialGroups) {
   const Scene in = TorusScene(12, 6, /*colors=*/true, /*materials=*/true);
   const std::string text = EncodeObj(in);
-  Result<Scene> out = ReadSceneFromMemory(reinterpret_cast<const uint8_t*>(text.data()), text.size(), FileFormat::kObj, "rt.obj");
+  Result<Scene> out = ReadSceneFromMemory(reinterpret_cast<const uint8_t*>(text.data()),
+                                          text.size(), FileFormat::kObj, "rt.obj");
   ASSERT_TRUE(out.ok()) << out.status().ToString();
   ASSERT_EQ(out->meshes.size(), 1u);
   const Mesh& a = in.meshes[0];
@@ -35,7 +36,8 @@ TEST(ObjWriter, RoundTripKeepsAttributesAndMaterialGroups) {
   ExpectSameGeometry(a, b);
   EXPECT_EQ(a.normals, b.normals);
   ASSERT_EQ(b.uv_sets.size(), 1u);
-  for (size_t i = 0; i < a.uv_sets[0].size(); ++i) EXPECT_NEAR(a.uv_sets[0][i], b.uv_sets[0][i], 1e-6);
+  for (size_t i = 0; i < a.uv_sets[0].size(); ++i)
+    EXPECT_NEAR(a.uv_sets[0][i], b.uv_sets[0][i], 1e-6);
   for (size_t i = 0; i < a.colors.size(); ++i) {
     if (i % 4 != 3) {
       EXPECT_EQ(a.colors[i], b.colors[i]);
@@ -52,7 +54,8 @@ TEST(ObjWriter, HullSetIsOneObjectGroupPerHull) {
   size_t groups = 0;
   for (size_t p = text.find("\no "); p != std::string::npos; p = text.find("\no ", p + 1)) ++groups;
   EXPECT_EQ(groups, 3u);
-  Result<Scene> out = ReadSceneFromMemory(reinterpret_cast<const uint8_t*>(text.data()), text.size(), FileFormat::kObj, "h.obj");
+  Result<Scene> out = ReadSceneFromMemory(reinterpret_cast<const uint8_t*>(text.data()),
+                                          text.size(), FileFormat::kObj, "h.obj");
   ASSERT_TRUE(out.ok());
   ASSERT_EQ(out->meshes.size(), 3u);
   for (int k = 0; k < 3; ++k) {
@@ -70,7 +73,9 @@ TEST(OffFormat, RoundTripMergesMeshes) {
   EXPECT_EQ(out->meshes[0].triangle_count(), 8u);
   EXPECT_EQ(out->meshes[0].vertex_count(), 8u);
   EXPECT_EQ(out->meshes[0].indices[12], 4u);  // second tetrahedron's indices are offset
-  EXPECT_EQ(std::vector<float>(out->meshes[0].positions.begin() + 12, out->meshes[0].positions.end()), in.meshes[1].positions);
+  EXPECT_EQ(
+      std::vector<float>(out->meshes[0].positions.begin() + 12, out->meshes[0].positions.end()),
+      in.meshes[1].positions);
 }
 
 TEST(OffFormat, ColorsRoundTrip) {
@@ -106,7 +111,8 @@ TEST(PlyWriter, RoundTripThroughAssimp) {
   for (size_t t = 0; t < a.triangle_count(); ++t) {
     for (int k = 0; k < 3; ++k) {
       for (int c = 0; c < 3; ++c) {
-        EXPECT_EQ(a.positions[a.indices[t * 3 + k] * 3 + c], b.positions[b.indices[t * 3 + k] * 3 + c]);
+        EXPECT_EQ(a.positions[a.indices[t * 3 + k] * 3 + c],
+                  b.positions[b.indices[t * 3 + k] * 3 + c]);
       }
     }
   }

@@ -42,7 +42,8 @@ TEST(MergeMeshesTest, AppendsVerticesAndOffsetsIndices) {
 
 TEST(MergeMeshesTest, KeepsAVertexAttributeOnlyWhenEveryMeshHasIt) {
   Scene scene;
-  scene.meshes = {CubeWith(true, true, true, true, false, 0), CubeWith(true, false, true, false, false, 0)};
+  scene.meshes = {CubeWith(true, true, true, true, false, 0),
+                  CubeWith(true, false, true, false, false, 0)};
   const Mesh all = MergeMeshes(scene);
   EXPECT_EQ(all.normals.size(), 3 * all.vertex_count());
   EXPECT_EQ(all.colors.size(), 4 * all.vertex_count());
@@ -53,7 +54,8 @@ TEST(MergeMeshesTest, KeepsAVertexAttributeOnlyWhenEveryMeshHasIt) {
 
 TEST(MergeMeshesTest, KeepsTheFirstUvSetAndTheSkin) {
   Scene scene;
-  scene.meshes = {CubeWith(false, true, false, true, false, 0), CubeWith(false, true, false, true, false, 0)};
+  scene.meshes = {CubeWith(false, true, false, true, false, 0),
+                  CubeWith(false, true, false, true, false, 0)};
   const Mesh all = MergeMeshes(scene);
   ASSERT_EQ(all.uv_sets.size(), 1u);
   EXPECT_EQ(all.uv_sets[0].size(), 2 * all.vertex_count());
@@ -64,7 +66,8 @@ TEST(MergeMeshesTest, KeepsTheFirstUvSetAndTheSkin) {
 
 TEST(MergeMeshesTest, MaterialIdsAreKeptWhenAnyMeshHasThemAndZeroElsewhere) {
   Scene scene;
-  scene.meshes = {CubeWith(false, false, false, false, false, 0), CubeWith(false, false, false, false, true, 3)};
+  scene.meshes = {CubeWith(false, false, false, false, false, 0),
+                  CubeWith(false, false, false, false, true, 3)};
   const Mesh all = MergeMeshes(scene);
   const size_t per_cube = UnitCube().triangle_count();
   ASSERT_EQ(all.material_ids.size(), 2 * per_cube);

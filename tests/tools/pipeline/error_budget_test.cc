@@ -4,14 +4,15 @@
 
 #include "test_torus.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <algorithm>
 
 namespace hullpack {
 namespace {
 
-// A long thin torus (x stretched 6x, z squashed): extents far from a cube, so the three grids differ.
+// A long thin torus (x stretched 6x, z squashed): extents far from a cube, so the three grids
+// differ.
 Mesh Elongated() {
   Mesh m = testing::TorusMesh(48, 16);
   for (size_t v = 0; v < m.vertex_count(); ++v) {
@@ -27,7 +28,8 @@ double PerVertexError(const Mesh& a, const Mesh& b) {
   double worst = 0;
   for (size_t v = 0; v < a.vertex_count(); ++v) {
     double d = 0;
-    for (int k = 0; k < 3; ++k) d += std::pow(double(a.positions[v * 3 + k]) - b.positions[v * 3 + k], 2);
+    for (int k = 0; k < 3; ++k)
+      d += std::pow(double(a.positions[v * 3 + k]) - b.positions[v * 3 + k], 2);
     worst = std::max(worst, std::sqrt(d));
   }
   return worst;
@@ -48,7 +50,8 @@ TEST(ErrorBudget, GuaranteedBitsFollowTheBoundOfEachGrid) {
 TEST(ErrorBudget, EveryGridKeepsItsGuarantee) {
   const Mesh mesh = Elongated();
   const double budget = 0.0005 * BoundingBoxDiagonal(mesh);
-  for (o3dgc::RangeMode mode : {o3dgc::RangeMode::kUniform, o3dgc::RangeMode::kPerAxis, o3dgc::RangeMode::kDiagonal}) {
+  for (o3dgc::RangeMode mode :
+       {o3dgc::RangeMode::kUniform, o3dgc::RangeMode::kPerAxis, o3dgc::RangeMode::kDiagonal}) {
     MeshCodecSettings s;
     s.keep_order = true;
     s.position_range = mode;
@@ -72,24 +75,30 @@ TEST(ErrorBudget, ChoosesTheSmallestStreamWithinTheBudget) {
   EXPECT_LE(chosen->max_error, budget);
   EXPECT_LE(PerVertexError(mesh, chosen->decoded), budget);  // per vertex, not only as point sets
   // The decoded mesh is the stream's.
-  Result<Mesh> again = DecodeMesh(chosen->encoded.stream.data(), chosen->encoded.stream.size(), nullptr, "t");
+  Result<Mesh> again =
+      DecodeMesh(chosen->encoded.stream.data(), chosen->encoded.stream.size(), nullptr, "t");
   ASSERT_TRUE(again.ok());
   EXPECT_EQ(again->positions, chosen->decoded.positions);
   // Never larger than the plain uniform grid at its guaranteed bits (what a fixed rule would pick).
-  s.position_bits = GuaranteedPositionBits(o3dgc::RangeMode::kUniform, PositionExtent(mesh), budget);
+  s.position_bits =
+      GuaranteedPositionBits(o3dgc::RangeMode::kUniform, PositionExtent(mesh), budget);
   Result<EncodedMesh> uniform = EncodeMesh(mesh, {}, s);
   ASSERT_TRUE(uniform.ok());
   EXPECT_LE(chosen->encoded.stream.size(), uniform->stream.size());
   // On this stretched shape the per-axis grid needs fewer bits than the cube of the largest extent.
-  EXPECT_LT(GuaranteedPositionBits(o3dgc::RangeMode::kPerAxis, PositionExtent(mesh), budget), s.position_bits);
+  EXPECT_LT(GuaranteedPositionBits(o3dgc::RangeMode::kPerAxis, PositionExtent(mesh), budget),
+            s.position_bits);
 }
 
 TEST(ErrorBudget, TriesFewerBitsWhenTheMeasuredErrorLeavesRoom) {
   // A box's corners are the ends of every grid's range, so they decode exactly at any bit count:
   // the measured error stays 0 and the search walks down to 1 bit, far below the guarantee.
   Mesh box;
-  for (int c = 0; c < 8; ++c) box.positions.insert(box.positions.end(), {c & 1 ? 7.0f : 0.0f, c & 2 ? 3.0f : 0.0f, c & 4 ? 5.0f : 0.0f});
-  box.indices = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4, 2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
+  for (int c = 0; c < 8; ++c)
+    box.positions.insert(box.positions.end(),
+                         {c & 1 ? 7.0f : 0.0f, c & 2 ? 3.0f : 0.0f, c & 4 ? 5.0f : 0.0f});
+  box.indices = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
+                 2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
   Result<BudgetedEncoding> chosen = EncodeWithinError(box, {}, MeshCodecSettings(), 0.01);
   ASSERT_TRUE(chosen.ok()) << chosen.status().ToString();
   EXPECT_EQ(chosen->max_error, 0);
@@ -116,7 +125,8 @@ TEST(ErrorBudget, ZeroSizeMeshesMeetAZeroBudget) {
     ASSERT_TRUE(r.ok()) << r.status().ToString();
     EXPECT_EQ(r->max_error, 0);
     EXPECT_EQ(r->decoded.triangle_count(), mesh.triangle_count());
-    for (size_t i = 0; i < r->decoded.positions.size(); ++i) EXPECT_EQ(r->decoded.positions[i], point.positions[i % 3]);
+    for (size_t i = 0; i < r->decoded.positions.size(); ++i)
+      EXPECT_EQ(r->decoded.positions[i], point.positions[i % 3]);
   }
 }
 

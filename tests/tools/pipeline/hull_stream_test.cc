@@ -12,8 +12,10 @@ namespace {
 // The closed box [x0, x1] x [0, 1] x [0, h], outward triangles.
 Mesh Box(float x0, float x1, float h) {
   Mesh m;
-  for (int c = 0; c < 8; ++c) m.positions.insert(m.positions.end(), {c & 1 ? x1 : x0, c & 2 ? 1.0f : 0.0f, c & 4 ? h : 0.0f});
-  m.indices = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4, 2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
+  for (int c = 0; c < 8; ++c)
+    m.positions.insert(m.positions.end(), {c & 1 ? x1 : x0, c & 2 ? 1.0f : 0.0f, c & 4 ? h : 0.0f});
+  m.indices = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
+               2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
   return m;
 }
 
@@ -21,7 +23,8 @@ Mesh Box(float x0, float x1, float h) {
 // common face up to the lower box's height, as the hulls of a decomposition meet on their cuts.
 std::vector<Mesh> Row(int n) {
   std::vector<Mesh> hulls;
-  for (int i = 0; i < n; ++i) hulls.push_back(Box(float(i), float(i + 1), 1.0f + 0.25f * float(i % 3)));
+  for (int i = 0; i < n; ++i)
+    hulls.push_back(Box(float(i), float(i + 1), 1.0f + 0.25f * float(i % 3)));
   return hulls;
 }
 
@@ -61,10 +64,12 @@ TEST(HullStream, HullsDecodeClosedWithinTheBudgetAndWeldedWhenSmaller) {
   EXPECT_LT(e->stream_vertices, 96u);
   // A decoder sees the same hulls: group h of the stream, compacted.
   std::vector<uint32_t> groups;
-  Result<Mesh> all = DecodeMesh(e->encoded.stream.data(), e->encoded.stream.size(), &groups, "hulls");
+  Result<Mesh> all =
+      DecodeMesh(e->encoded.stream.data(), e->encoded.stream.size(), &groups, "hulls");
   ASSERT_TRUE(all.ok());
   for (size_t h = 0; h < hulls.size(); ++h) {
-    EXPECT_EQ(ExtractGroup(all.value(), groups, uint32_t(h)).positions, e->decoded[h].positions) << h;
+    EXPECT_EQ(ExtractGroup(all.value(), groups, uint32_t(h)).positions, e->decoded[h].positions)
+        << h;
   }
 }
 

@@ -39,7 +39,8 @@ TEST(MeshCodec, RoundTripKeepsEveryAttributeWithinItsBits) {
   Result<EncodedMesh> enc = EncodeMesh(in, {}, s);
   ASSERT_TRUE(enc.ok()) << enc.status().ToString();
   const std::vector<std::pair<std::string, int>> expect = {
-      {"POSITION", 0}, {"NORMAL", 1}, {"TEXCOORD_0", 2}, {"TEXCOORD_1", 3}, {"COLOR_0", 4}, {"WEIGHTS_0", 5}, {"JOINTS_0", 6}};
+      {"POSITION", 0}, {"NORMAL", 1},    {"TEXCOORD_0", 2}, {"TEXCOORD_1", 3},
+      {"COLOR_0", 4},  {"WEIGHTS_0", 5}, {"JOINTS_0", 6}};
   EXPECT_EQ(enc->gltf_attributes, expect);
   Result<Mesh> dec = DecodeMesh(enc->stream.data(), enc->stream.size(), nullptr, "t");
   ASSERT_TRUE(dec.ok()) << dec.status().ToString();
@@ -47,10 +48,14 @@ TEST(MeshCodec, RoundTripKeepsEveryAttributeWithinItsBits) {
   EXPECT_EQ(dec->joints, in.joints);
   ASSERT_EQ(dec->uv_sets.size(), 2u);
   const double step = PositionRange(in) / ((1 << s.position_bits) - 1);
-  for (size_t i = 0; i < in.positions.size(); ++i) EXPECT_LE(std::fabs(dec->positions[i] - in.positions[i]), step / 2 + 1e-6);
-  for (size_t i = 0; i < in.uv_sets[1].size(); ++i) EXPECT_LE(std::fabs(dec->uv_sets[1][i] - in.uv_sets[1][i]), 1.0 / 4095 / 2 + 1e-6);
-  for (size_t i = 0; i < in.colors.size(); ++i) EXPECT_NEAR(dec->colors[i], in.colors[i], 1.0 / 1023);
-  for (size_t i = 0; i < in.weights.size(); ++i) EXPECT_NEAR(dec->weights[i], in.weights[i], 1.0 / 1023);
+  for (size_t i = 0; i < in.positions.size(); ++i)
+    EXPECT_LE(std::fabs(dec->positions[i] - in.positions[i]), step / 2 + 1e-6);
+  for (size_t i = 0; i < in.uv_sets[1].size(); ++i)
+    EXPECT_LE(std::fabs(dec->uv_sets[1][i] - in.uv_sets[1][i]), 1.0 / 4095 / 2 + 1e-6);
+  for (size_t i = 0; i < in.colors.size(); ++i)
+    EXPECT_NEAR(dec->colors[i], in.colors[i], 1.0 / 1023);
+  for (size_t i = 0; i < in.weights.size(); ++i)
+    EXPECT_NEAR(dec->weights[i], in.weights[i], 1.0 / 1023);
   EXPECT_LE(MaxVertexDistance(in, dec.value()), std::sqrt(3.0) * step / 2 + 1e-6);
 }
 
@@ -99,14 +104,17 @@ TEST(MeshCodec, MaxVertexDistanceIsSymmetricAndOrderFree) {
 }
 
 // A stream of the original Open3DGC tool (tests/o3dgc/vectors) holds OBJ texture coordinates; the
-// mesh comes out in the scene model's convention, so writing it as OBJ gives the original's vt back.
+// mesh comes out in the scene model's convention, so writing it as OBJ gives the original's vt
+// back.
 TEST(MeshCodec, OriginalOpen3dgcStreamUvsComeOutInSceneConvention) {
   const std::string path = std::string(HULLPACK_SOURCE_DIR) + "/tests/o3dgc/vectors/fox.binary.s3d";
   std::ifstream file(path, std::ios::binary);
   ASSERT_TRUE(file.good()) << path;
-  const std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(file)),
+                                   std::istreambuf_iterator<char>());
   o3dgc::DecodedMesh raw;
-  ASSERT_EQ(o3dgc::Decode(bytes.data(), bytes.size(), o3dgc::DecodeOptions(), &raw), o3dgc::Status::kOk);
+  ASSERT_EQ(o3dgc::Decode(bytes.data(), bytes.size(), o3dgc::DecodeOptions(), &raw),
+            o3dgc::Status::kOk);
   ASSERT_FALSE(raw.float_attributes.empty());
   const std::vector<float>& obj_uv = raw.float_attributes[0].values;
   o3dgc::StreamInfo info;

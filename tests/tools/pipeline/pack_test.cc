@@ -27,7 +27,8 @@ Scene TestScene() {
   for (size_t v = 0; v < textured.vertex_count(); ++v) {
     textured.uv_sets[0].insert(textured.uv_sets[0].end(), {float(v % 32) / 32, float(v / 32) / 12});
   }
-  for (size_t t = 0; t < textured.triangle_count(); ++t) textured.material_ids.push_back(t % 7 == 0 ? 1 : 0);
+  for (size_t t = 0; t < textured.triangle_count(); ++t)
+    textured.material_ids.push_back(t % 7 == 0 ? 1 : 0);
   Mesh skinned = Torus(16, 8, 4);
   skinned.name = "arm";
   for (size_t v = 0; v < skinned.vertex_count(); ++v) {
@@ -62,7 +63,9 @@ Scene TestScene() {
   s.nodes = {root, wheel, arm, bone0, bone1};
   Skin skin;
   skin.joints = {3, 4};
-  for (int j = 0; j < 2; ++j) skin.inverse_bind_matrices.insert(skin.inverse_bind_matrices.end(), kIdentity.begin(), kIdentity.end());
+  for (int j = 0; j < 2; ++j)
+    skin.inverse_bind_matrices.insert(skin.inverse_bind_matrices.end(), kIdentity.begin(),
+                                      kIdentity.end());
   s.skins = {skin};
   return s;
 }
@@ -79,7 +82,8 @@ size_t Nearest(const Mesh& m, const float* p) {
   double best_d = 1e300;
   for (size_t i = 0; i < m.vertex_count(); ++i) {
     double d = 0;
-    for (int k = 0; k < 3; ++k) d += (double(m.positions[i * 3 + k]) - p[k]) * (double(m.positions[i * 3 + k]) - p[k]);
+    for (int k = 0; k < 3; ++k)
+      d += (double(m.positions[i * 3 + k]) - p[k]) * (double(m.positions[i * 3 + k]) - p[k]);
     if (d < best_d) best_d = d, best = i;
   }
   return best;
@@ -92,8 +96,8 @@ TEST(Pack, RoundTripKeepsGeometryWithinTheBudgetMaterialsSkinAndHierarchy) {
   ASSERT_TRUE(packed.ok()) << packed.status().ToString();
   const PackReport& r = packed->report;
   ASSERT_EQ(r.meshes.size(), 2u);
-  EXPECT_GT(r.meshes[0].hull_count, 1u);                    // the wheel collides
-  EXPECT_EQ(r.meshes[1].hull_count, 0u);                    // the skinned arm does not, under auto
+  EXPECT_GT(r.meshes[0].hull_count, 1u);  // the wheel collides
+  EXPECT_EQ(r.meshes[1].hull_count, 0u);  // the skinned arm does not, under auto
   EXPECT_NE(r.meshes[1].no_hulls_reason.find("skinned"), std::string::npos);
   EXPECT_GT(r.meshes[0].hull_quantization_error, 0);
   EXPECT_LE(r.meshes[0].hull_quantization_error, options.hull_error);
@@ -103,7 +107,8 @@ TEST(Pack, RoundTripKeepsGeometryWithinTheBudgetMaterialsSkinAndHierarchy) {
   }
 
   GltfDocument doc;
-  Result<Scene> out = ReadPackedGltf(packed->glb.data(), packed->glb.size(), "packed.glb", "", &doc);
+  Result<Scene> out =
+      ReadPackedGltf(packed->glb.data(), packed->glb.size(), "packed.glb", "", &doc);
   ASSERT_TRUE(out.ok()) << out.status().ToString();
   ASSERT_EQ(out->meshes.size(), 2 + r.meshes[0].hull_count);
   for (size_t i = 0; i < 2; ++i) {
@@ -115,7 +120,8 @@ TEST(Pack, RoundTripKeepsGeometryWithinTheBudgetMaterialsSkinAndHierarchy) {
     for (size_t v = 0; v < b.vertex_count(); ++v) {
       const size_t o = Nearest(a, &b.positions[v * 3]);
       double d = 0;
-      for (int k = 0; k < 3; ++k) d += std::pow(double(b.positions[v * 3 + k]) - a.positions[o * 3 + k], 2);
+      for (int k = 0; k < 3; ++k)
+        d += std::pow(double(b.positions[v * 3 + k]) - a.positions[o * 3 + k], 2);
       worst = std::max(worst, std::sqrt(d));
       if (!a.joints.empty()) {  // skin data travels with its vertex, exactly for joints
         for (int k = 0; k < 4; ++k) {
@@ -182,7 +188,8 @@ TEST(Pack, FallbackFilesReadWithoutTheExtension) {
   // The plain reader ignores the extension and reads the fallback: the decoded data.
   Result<Scene> plain = DecodeGltfDocument(doc.value(), "p.glb");
   ASSERT_TRUE(plain.ok()) << plain.status().ToString();
-  Result<Scene> decoded = ReadPackedGltf(packed->glb.data(), packed->glb.size(), "p.glb", "", nullptr);
+  Result<Scene> decoded =
+      ReadPackedGltf(packed->glb.data(), packed->glb.size(), "p.glb", "", nullptr);
   ASSERT_TRUE(decoded.ok());
   EXPECT_EQ(plain->meshes[0].positions, decoded->meshes[0].positions);
   EXPECT_EQ(plain->meshes[0].indices, decoded->meshes[0].indices);
@@ -198,7 +205,8 @@ TEST(Pack, KhrPhysicsForm) {
   const nlohmann::json& json = doc->json();
   EXPECT_FALSE(json.contains("extensions") && json["extensions"].contains("OMI_physics_shape"));
   const int child = json["nodes"][1]["children"][0];
-  const nlohmann::json& geometry = json["nodes"][child]["extensions"]["KHR_physics_rigid_bodies"]["collider"]["geometry"];
+  const nlohmann::json& geometry =
+      json["nodes"][child]["extensions"]["KHR_physics_rigid_bodies"]["collider"]["geometry"];
   EXPECT_TRUE(geometry["convexHull"].get<bool>());
   EXPECT_GE(geometry["mesh"].get<int>(), 2);
 }
@@ -219,7 +227,8 @@ TEST(Pack, KeepOrderAndExplicitBits) {
   for (uint32_t m : {0u, 1u}) {
     for (size_t t = 0; t < in.meshes[0].triangle_count(); ++t) {
       if (in.meshes[0].material_ids[t] != m) continue;
-      expected.insert(expected.end(), in.meshes[0].indices.begin() + t * 3, in.meshes[0].indices.begin() + t * 3 + 3);
+      expected.insert(expected.end(), in.meshes[0].indices.begin() + t * 3,
+                      in.meshes[0].indices.begin() + t * 3 + 3);
     }
   }
   EXPECT_EQ(out->meshes[0].indices, expected);

@@ -1,6 +1,6 @@
-// A real physics engine accepts the hulls as a packed file carries them: Bullet builds a compound of
-// convex hull shapes from them, drops the body on a plane, and it comes to rest where the mesh says
-// it should.
+// A real physics engine accepts the hulls as a packed file carries them: Bullet builds a compound
+// of convex hull shapes from them, drops the body on a plane, and it comes to rest where the mesh
+// says it should.
 #include <btBulletDynamicsCommon.h>
 #include <gtest/gtest.h>
 
@@ -43,7 +43,9 @@ Drop DropOnPlane(const Mesh& mesh, const std::vector<Mesh>& hulls, double height
   for (const Mesh& hull : hulls) {
     auto shape = std::make_unique<btConvexHullShape>();
     for (size_t v = 0; v < hull.vertex_count(); ++v) {
-      shape->addPoint(btVector3(hull.positions[v * 3], hull.positions[v * 3 + 1], hull.positions[v * 3 + 2]), false);
+      shape->addPoint(
+          btVector3(hull.positions[v * 3], hull.positions[v * 3 + 1], hull.positions[v * 3 + 2]),
+          false);
     }
     shape->recalcLocalAabb();
     shape->setMargin(0.001f);
@@ -61,14 +63,16 @@ Drop DropOnPlane(const Mesh& mesh, const std::vector<Mesh>& hulls, double height
   btDefaultMotionState motion(start);
   btRigidBody body(btRigidBody::btRigidBodyConstructionInfo(mass, &motion, &compound, inertia));
   world.addRigidBody(&body);
-  for (int step = 0; step < static_cast<int>(seconds * 240); ++step) world.stepSimulation(1.0 / 240, 1, 1.0 / 240);
+  for (int step = 0; step < static_cast<int>(seconds * 240); ++step)
+    world.stepSimulation(1.0 / 240, 1, 1.0 / 240);
 
   Drop d;
   btTransform end;
   motion.getWorldTransform(end);
   d.lowest_mesh_z = 1e300;
   for (size_t v = 0; v < mesh.vertex_count(); ++v) {
-    const btVector3 p = end * btVector3(mesh.positions[v * 3], mesh.positions[v * 3 + 1], mesh.positions[v * 3 + 2]);
+    const btVector3 p = end * btVector3(mesh.positions[v * 3], mesh.positions[v * 3 + 1],
+                                        mesh.positions[v * 3 + 2]);
     d.lowest_mesh_z = std::min<double>(d.lowest_mesh_z, p.z());
   }
   d.speed = body.getLinearVelocity().length();
@@ -90,7 +94,8 @@ std::vector<Mesh> PackedHulls(const Mesh& mesh) {
   Result<PackResult> packed = PackScene(scene, options);
   if (!packed.ok()) return {};
   GltfDocument doc;
-  Result<Scene> read = ReadPackedGltf(packed->glb.data(), packed->glb.size(), "torus.glb", "", &doc);
+  Result<Scene> read =
+      ReadPackedGltf(packed->glb.data(), packed->glb.size(), "torus.glb", "", &doc);
   if (!read.ok()) return {};
   return std::vector<Mesh>(read->meshes.begin() + 1, read->meshes.end());
 }
@@ -117,7 +122,9 @@ TEST(Physics, BulletDoesNotLetTheTorusFallThroughItsHole) {
   for (const Mesh& hull : hulls) {
     btConvexHullShape shape;
     for (size_t v = 0; v < hull.vertex_count(); ++v) {
-      shape.addPoint(btVector3(hull.positions[v * 3], hull.positions[v * 3 + 1], hull.positions[v * 3 + 2]), false);
+      shape.addPoint(
+          btVector3(hull.positions[v * 3], hull.positions[v * 3 + 1], hull.positions[v * 3 + 2]),
+          false);
     }
     shape.recalcLocalAabb();
     btVector3 lo, hi;

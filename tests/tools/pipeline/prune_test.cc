@@ -116,13 +116,15 @@ TEST(Prune, SkinWeightsSumToOneAndJointsWithoutWeightAreCleared) {
   const PruneReport r = LeaveOutUnused(s);
   EXPECT_EQ(r.skin_weights_normalized, 2u);
   EXPECT_EQ(r.unweighted_joints_cleared, 3u);  // joints 7 and 5 of vertex 0, 4 of vertex 3
-  EXPECT_EQ(s.meshes[0].joints, std::vector<uint16_t>({3, 0, 0, 0, 1, 2, 0, 0, 1, 2, 0, 0, 1, 2, 3, 0}));
+  EXPECT_EQ(s.meshes[0].joints,
+            std::vector<uint16_t>({3, 0, 0, 0, 1, 2, 0, 0, 1, 2, 0, 0, 1, 2, 3, 0}));
   const std::vector<float>& w = s.meshes[0].weights;
   EXPECT_FLOAT_EQ(w[8], 0.5f);
   EXPECT_FLOAT_EQ(w[12], 0.5f);
   EXPECT_FLOAT_EQ(w[13], 0.25f);
   bool reported = false;
-  for (const std::string& line : r.lines) reported |= line.find("renormalized the skin weights of 2 vertices") != std::string::npos;
+  for (const std::string& line : r.lines)
+    reported |= line.find("renormalized the skin weights of 2 vertices") != std::string::npos;
   EXPECT_TRUE(reported);
 }
 

@@ -16,15 +16,18 @@ inline Mesh TorusMesh(int rings, int sides, float cx = 0) {
   for (int i = 0; i < rings; ++i) {
     for (int j = 0; j < sides; ++j) {
       const double u = 2 * pi * i / rings, v = 2 * pi * j / sides;
-      m.positions.insert(m.positions.end(), {float(cx + (1 + 0.3 * std::cos(v)) * std::cos(u)),
-                                             float((1 + 0.3 * std::cos(v)) * std::sin(u)), float(0.3 * std::sin(v))});
-      m.normals.insert(m.normals.end(), {float(std::cos(v) * std::cos(u)), float(std::cos(v) * std::sin(u)), float(std::sin(v))});
+      m.positions.insert(m.positions.end(),
+                         {float(cx + (1 + 0.3 * std::cos(v)) * std::cos(u)),
+                          float((1 + 0.3 * std::cos(v)) * std::sin(u)), float(0.3 * std::sin(v))});
+      m.normals.insert(m.normals.end(), {float(std::cos(v) * std::cos(u)),
+                                         float(std::cos(v) * std::sin(u)), float(std::sin(v))});
     }
   }
   for (int i = 0; i < rings; ++i) {
     for (int j = 0; j < sides; ++j) {
       const uint32_t a = i * sides + j, b = ((i + 1) % rings) * sides + j,
-                     c = ((i + 1) % rings) * sides + (j + 1) % sides, d = i * sides + (j + 1) % sides;
+                     c = ((i + 1) % rings) * sides + (j + 1) % sides,
+                     d = i * sides + (j + 1) % sides;
       m.indices.insert(m.indices.end(), {a, b, c, a, c, d});
     }
   }

@@ -30,8 +30,10 @@
 //      voxel line, then refined voxel by voxel (exact hulls) around the best plane; when that cut
 //      removes no concavity although the coarse estimate said it would (a feature thinner than the
 //      downsampling, missed by the sampled lines), every plane is searched again with exact hulls;
-//   5. one convex hull per part: the input surface clipped to the part's box plus the corners of its
-//      interior voxels, so hulls hug the mesh, not the voxels (a flat part falls back to its voxels);
+//   5. one convex hull per part: the input surface clipped to the part's box plus the corners of
+//   its
+//      interior voxels, so hulls hug the mesh, not the voxels (a flat part falls back to its
+//      voxels);
 //   6. simplification of each hull to at most `max_vertices_per_hull` vertices, greedily keeping
 //      the point with the largest volume increment and stopping early when the increment falls
 //      below `min_volume_per_hull` times the volume of the hull of the whole voxel set (but never
@@ -77,24 +79,24 @@ enum class Status {
 const char* StatusName(Status status);
 
 enum class Mode : int {
-  kVoxel = 0,        // voxel-based decomposition
-  // Tetrahedron-based decomposition: every voxel is split into 5 tetrahedra and those of the surface
-  // voxels are trimmed to the input surface, so the clipping stage measures volumes and hulls on a
-  // solid that follows the surface within a voxel (slower than kVoxel).
+  kVoxel = 0,  // voxel-based decomposition
+  // Tetrahedron-based decomposition: every voxel is split into 5 tetrahedra and those of the
+  // surface voxels are trimmed to the input surface, so the clipping stage measures volumes and
+  // hulls on a solid that follows the surface within a voxel (slower than kVoxel).
   kTetrahedron = 1,
 };
 
 // Parameters with the defaults and ranges of V-HACD 2.0. Ranges are inclusive.
 struct Parameters {
-  uint32_t resolution = 100000;         // number of voxels of the grid [10000, 64000000]
-  uint32_t depth = 20;                  // maximum clipping depth [1, 32]
-  double concavity = 0.0025;            // maximum concavity of a part [0, 1]
-  uint32_t plane_downsampling = 4;      // coarse plane search step, in voxels [1, 16]
-  uint32_t convexhull_downsampling = 4; // hull precision during the plane search [1, 16]
-  double alpha = 0.05;                  // weight of the balance term [0, 1]
-  double beta = 0.05;                   // weight of the revolution-axis term [0, 1]
-  double gamma = 0.00125;               // maximum concavity of a merge [0, 1]
-  bool pca = false;                     // align the mesh on its principal axes first
+  uint32_t resolution = 100000;          // number of voxels of the grid [10000, 64000000]
+  uint32_t depth = 20;                   // maximum clipping depth [1, 32]
+  double concavity = 0.0025;             // maximum concavity of a part [0, 1]
+  uint32_t plane_downsampling = 4;       // coarse plane search step, in voxels [1, 16]
+  uint32_t convexhull_downsampling = 4;  // hull precision during the plane search [1, 16]
+  double alpha = 0.05;                   // weight of the balance term [0, 1]
+  double beta = 0.05;                    // weight of the revolution-axis term [0, 1]
+  double gamma = 0.00125;                // maximum concavity of a merge [0, 1]
+  bool pca = false;                      // align the mesh on its principal axes first
   Mode mode = Mode::kVoxel;
   uint32_t max_vertices_per_hull = 64;  // [4, 1024]
   double min_volume_per_hull = 0.0001;  // adaptive hull sampling [0, 0.01]
@@ -103,8 +105,8 @@ struct Parameters {
   // the bounding-box diagonal; parts are split further and merges refused beyond it (measured on
   // the voxel grid, so it is only as precise as a voxel). 0 disables it (pure V-HACD 2.0). [0, 1]
   double max_distance = 0.03;
-  uint32_t num_threads = 0;             // 0 = std::thread::hardware_concurrency() [0, 256]
-  bool compute_report = true;           // fill Result::report's error measures (costs time)
+  uint32_t num_threads = 0;    // 0 = std::thread::hardware_concurrency() [0, 256]
+  bool compute_report = true;  // fill Result::report's error measures (costs time)
 
   // The V-HACD 2.0 defaults (same as a default-constructed Parameters).
   static Parameters Default() { return Parameters(); }
@@ -173,10 +175,10 @@ struct HullReport {
 // input; -1 means "not measured" (report disabled, or IoU of an open mesh).
 struct Report {
   std::vector<HullReport> hulls;
-  bool closed_input = false;      // every edge of the input is shared by exactly two triangles
-  double volume_iou = -1.0;       // |solid ∩ hulls| / |solid ∪ hulls| on the voxel centres
-  // |solid ∩ hulls| / |solid| on the voxel centres, where the solid is the filled voxel set (see the
-  // fill rule above); measured for open meshes too.
+  bool closed_input = false;  // every edge of the input is shared by exactly two triangles
+  double volume_iou = -1.0;   // |solid ∩ hulls| / |solid ∪ hulls| on the voxel centres
+  // |solid ∩ hulls| / |solid| on the voxel centres, where the solid is the filled voxel set (see
+  // the fill rule above); measured for open meshes too.
   double solid_coverage = -1.0;
   // One-sided Hausdorff distances on samples of both surfaces. mesh -> hulls counts 0 for a mesh
   // point inside a hull; hulls -> mesh uses only points of the boundary of the union of hulls (a
@@ -184,21 +186,23 @@ struct Report {
   // narrower than that between hulls are ignored).
   double hausdorff_mesh_to_hulls = -1.0;
   double hausdorff_hulls_to_mesh = -1.0;
-  double concavity = -1.0;        // max of the two Hausdorff distances
-  uint64_t voxel_count = 0;       // surface + inside voxels
+  double concavity = -1.0;   // max of the two Hausdorff distances
+  uint64_t voxel_count = 0;  // surface + inside voxels
   uint64_t surface_voxel_count = 0;
-  uint64_t tetrahedron_count = 0;  // mode 1: 5 per interior voxel + the surface voxels' trimmed ones
+  uint64_t tetrahedron_count =
+      0;  // mode 1: 5 per interior voxel + the surface voxels' trimmed ones
   uint32_t parts_before_merge = 0;
   // Wall-clock seconds per stage (distance: the distance transform used by max_distance).
   // tetrahedra: mode 1's trimmed tetrahedra of the surface voxels.
-  double seconds_voxelize = 0.0, seconds_fill = 0.0, seconds_tetrahedra = 0.0, seconds_distance = 0.0, seconds_clip = 0.0, seconds_hulls = 0.0,
-         seconds_merge = 0.0, seconds_simplify = 0.0, seconds_report = 0.0, seconds_total = 0.0;
+  double seconds_voxelize = 0.0, seconds_fill = 0.0, seconds_tetrahedra = 0.0,
+         seconds_distance = 0.0, seconds_clip = 0.0, seconds_hulls = 0.0, seconds_merge = 0.0,
+         seconds_simplify = 0.0, seconds_report = 0.0, seconds_total = 0.0;
 };
 
 struct Result {
   Status status = Status::kOk;
-  std::string message;               // human-readable detail for a non-ok status
-  std::vector<ConvexHull> hulls;     // empty unless status == kOk
+  std::string message;            // human-readable detail for a non-ok status
+  std::vector<ConvexHull> hulls;  // empty unless status == kOk
   Report report;
 
   bool ok() const { return status == Status::kOk; }

@@ -3,9 +3,8 @@
 //   IVHACD::Parameters params;
 //   IVHACD* v = CreateVHACD();
 //   bool ok = v->Compute(points, 3, nPoints, triangles, 3, nTriangles, params);
-//   for (unsigned p = 0; p < v->GetNConvexHulls(); ++p) { IVHACD::ConvexHull ch; v->GetConvexHull(p, ch); }
-//   v->Clean();
-//   v->Release();
+//   for (unsigned p = 0; p < v->GetNConvexHulls(); ++p) { IVHACD::ConvexHull ch;
+//   v->GetConvexHull(p, ch); } v->Clean(); v->Release();
 //
 // Compute() returns false on any error (see GetStatus()/GetMessage() for why) and on cancellation.
 // Cancel() may be called from any thread while Compute() runs (a Cancel() before Compute() starts
