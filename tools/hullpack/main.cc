@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "hullpack/batch_command.h"
 #include "hullpack/cli_util.h"
 #include "hullpack/info_command.h"
 #include "hullpack/pack_command.h"
@@ -17,6 +18,7 @@ void PrintUsage(FILE* out) {
       "usage: hullpack COMMAND [options]\n"
       "commands:\n"
       "  pack IN... -o OUT    compressed meshes + convex collision hulls in one GLB per input\n"
+      "  batch IN... -o DIR   many inputs: cached, resumable, sharded, Slurm job arrays\n"
       "  unpack IN.glb -o OUT decode a packed GLB back to plain glTF, OBJ, ...\n"
       "  info FILE [--json]   counts, attributes, bounds and topology of a mesh or scene file\n"
       "run 'hullpack COMMAND --help' for a command's options\n");
@@ -31,6 +33,7 @@ int main(int argc, char** argv) {
   }
   const std::string command = argv[1];
   const std::vector<std::string> args(argv + 2, argv + argc);
+  if (command == "batch") return hullpack::RunBatchCommand(args);
   if (command == "info") return hullpack::RunInfoCommand(args);
   if (command == "pack") return hullpack::RunPackCommand(args);
   if (command == "unpack") return hullpack::RunUnpackCommand(args);

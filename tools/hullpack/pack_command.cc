@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdio>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <thread>
 
@@ -37,6 +38,7 @@ const char kUsage[] =
     "  --resolution N --max-hulls N --max-vertices N --concavity F   decomposition parameters\n"
     "  --report FILE.json per mesh: bytes before/after, bits per vertex, error, hulls, times\n"
     "  --jobs N           inputs packed at once (default: every core)\n"
+    "  --cache DIR        reuse the outputs of unchanged inputs (a content-addressed cache)\n"
     "  --force            replace existing outputs\n"
     "  --quiet            no progress line\n";
 
@@ -106,24 +108,23 @@ nlohmann::json ReportJson(const PackReport& r) {
            {{"prune", r.seconds_prune}, {"meshes", r.seconds_meshes}, {"write", r.seconds_write}}}};
 }
 
+// Options that only steer the run (where to write, how many threads), never the output's bytes.
+bool IsRunOnlyOption(const std::string& a) {
+  return a == "-o" || a == "--output" || a == "--report" || a == "--jobs" || a == "--force" ||
+         a == "--quiet" || a == "--cache";
+}
+
 void PackOne(Job& job, const std::vector<std::string>& inputs, const PackOptions& options,
-             bool force, ProgressLine& progress) {
-  Result<Scene> scene = ReadScene(job.input);
-  if (!scene.ok()) {
-    job.error = scene.status().message();
-    return;
-  }
+             bool force, const AssetCache* cache, ProgressLine& progress) {
   Status writable = CheckOutputPath(job.output, inputs, force);
   if (!writable.ok()) {
     job.error = writable.message();
     return;
   }
-  // One GLB for web delivery: textures beside the input go inside it.
-  const EmbedReport images = EmbedExternalImages(scene.value(), FolderOf(job.input));
   ProgressForwarder observer(progress, FileStem(job.input));
-  Result<PackResult> packed = PackScene(std::move(scene.value()), options, &observer);
+  Result<CachedPack> packed = PackFileCached(job.input, options, cache, &observer);
   if (!packed.ok()) {
-    job.error = job.input + ": " + packed.status().message();
+    job.error = packed.status().message();
     return;
   }
   Status written = WriteFileAtomically(job.output, packed->glb);
@@ -131,9 +132,7 @@ void PackOne(Job& job, const std::vector<std::string>& inputs, const PackOptions
     job.error = written.message();
     return;
   }
-  job.report = ReportJson(packed->report);
-  job.report["images_embedded"] = images.embedded;
-  job.report["images_kept_as_references"] = images.kept_as_references;
+  job.report = std::move(packed->report);
   job.report["input"] = job.input;
   job.report["output"] = job.output;
   job.ok = true;
@@ -141,29 +140,80 @@ void PackOne(Job& job, const std::vector<std::string>& inputs, const PackOptions
 
 }  // namespace
 
-int RunPackCommand(const std::vector<std::string>& args) {
-  std::vector<std::string> inputs;
-  std::string output, report_path;
-  PackOptions options;
-  bool force = false, quiet = false;
-  long jobs = 0;
+Result<PackedFile> PackFile(const std::string& input, const PackOptions& options,
+                            PackObserver* observer) {
+  Result<Scene> scene = ReadScene(input);
+  if (!scene.ok()) return scene.status();
+  PackedFile out;
+  for (const Image& image : scene->images)
+    if (!image.uri.empty()) out.image_uris.push_back(image.uri);
+  // One GLB for web delivery: textures beside the input go inside it.
+  const EmbedReport images = EmbedExternalImages(scene.value(), FolderOf(input));
+  Result<PackResult> packed = PackScene(std::move(scene.value()), options, observer);
+  if (!packed.ok()) return Status(packed.status().code(), input + ": " + packed.status().message());
+  out.glb = std::move(packed->glb);
+  out.report = ReportJson(packed->report);
+  out.report["images_embedded"] = images.embedded;
+  out.report["images_kept_as_references"] = images.kept_as_references;
+  return out;
+}
+
+Result<CachedPack> PackFileCached(const std::string& input, const PackOptions& options,
+                                  const AssetCache* cache, PackObserver* observer) {
+  CachedPack out;
+  std::string input_key;
+  if (cache) {
+    Result<CacheProbe> probe = cache->Lookup(input);
+    if (!probe.ok()) return probe.status();
+    if (probe->hit) {
+      nlohmann::json meta = nlohmann::json::parse(probe->meta, nullptr, false);
+      if (!meta.is_discarded() && meta.is_object()) {
+        out.glb = std::move(probe->glb);
+        out.report = std::move(meta);
+        out.cache_hit = true;
+        return out;
+      }
+    }
+    input_key = probe->input_key;
+  }
+  Result<PackedFile> packed = PackFile(input, options, observer);
+  if (!packed.ok()) return packed.status();
+  out.glb = std::move(packed->glb);
+  out.report = std::move(packed->report);
+  if (cache) {
+    const std::string meta = out.report.dump();
+    Status stored =
+        cache->Store(input, input_key, ReferencedFiles(input, packed->image_uris), out.glb, meta);
+    if (!stored.ok()) return stored;
+  }
+  return out;
+}
+
+int ParsePackArgs(const std::vector<std::string>& args, const char* command, const char* usage,
+                  PackArgs* out) {
+  std::vector<std::string>& inputs = out->inputs;
+  std::string &output = out->output, &report_path = out->report_path;
+  PackOptions& options = out->options;
+  bool &force = out->force, &quiet = out->quiet;
+  long& jobs = out->jobs;
   bool high_quality = false;
   long resolution = 0, max_hulls = -1, max_vertices = 0;
   double concavity = -1;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    auto value = [&](std::string* out) {
+    const size_t first = i;
+    auto value = [&](std::string* dest) {
       if (i + 1 >= args.size()) {
-        std::fprintf(stderr, "hullpack pack: %s needs a value\n", a.c_str());
+        std::fprintf(stderr, "hullpack %s: %s needs a value\n", command, a.c_str());
         return false;
       }
-      *out = args[++i];
+      *dest = args[++i];
       return true;
     };
     std::string v;
     long n = 0;
     if (a == "-h" || a == "--help") {
-      std::fputs(kUsage, stdout);
+      std::fputs(usage, stdout);
       return 0;
     } else if (a == "-o" || a == "--output") {
       if (!value(&output)) return kExitUsage;
@@ -223,20 +273,21 @@ int RunPackCommand(const std::vector<std::string>& args) {
       if (!value(&v) || !ParseDouble(a, v, 0, 1, &concavity)) return kExitUsage;
     } else if (a == "--jobs") {
       if (!value(&v) || !ParseInt(a, v, 1, 256, &jobs)) return kExitUsage;
+    } else if (a == "--cache") {
+      if (!value(&out->cache_dir)) return kExitUsage;
     } else if (a == "--force") {
       force = true;
     } else if (a == "--quiet") {
       quiet = true;
     } else if (!a.empty() && a[0] == '-') {
-      std::fprintf(stderr, "hullpack pack: unknown option '%s'\n%s", a.c_str(), kUsage);
+      std::fprintf(stderr, "hullpack %s: unknown option '%s'\n%s", command, a.c_str(), usage);
       return kExitUsage;
     } else {
       inputs.push_back(a);
     }
-  }
-  if (inputs.empty() || output.empty()) {
-    std::fputs(kUsage, stderr);
-    return kExitUsage;
+    // Every option that can change the output bytes, as given: part of the cache key.
+    if (a[0] == '-' && !IsRunOnlyOption(a))
+      out->output_args.insert(out->output_args.end(), args.begin() + first, args.begin() + i + 1);
   }
   vhacd::Parameters& p = options.collision.parameters;
   if (high_quality) p = vhacd::Parameters::High();
@@ -245,6 +296,23 @@ int RunPackCommand(const std::vector<std::string>& args) {
   if (max_vertices) p.max_vertices_per_hull = static_cast<uint32_t>(max_vertices);
   if (concavity >= 0) p.concavity = concavity;
 
+  return -1;
+}
+
+int RunPackCommand(const std::vector<std::string>& args) {
+  PackArgs parsed;
+  const int parse_exit = ParsePackArgs(args, "pack", kUsage, &parsed);
+  if (parse_exit >= 0) return parse_exit;
+  const std::vector<std::string>& inputs = parsed.inputs;
+  const std::string &output = parsed.output, &report_path = parsed.report_path;
+  PackOptions& options = parsed.options;
+  vhacd::Parameters& p = options.collision.parameters;
+  const bool force = parsed.force, quiet = parsed.quiet;
+  const long jobs = parsed.jobs;
+  if (inputs.empty() || output.empty()) {
+    std::fputs(kUsage, stderr);
+    return kExitUsage;
+  }
   // One input and a file name: that file. Otherwise a folder of NAME.packed.glb.
   const bool to_folder = inputs.size() > 1 || output.back() == '/' || IsDirectory(output);
   if (!to_folder && FormatFromExtension(output) != FileFormat::kGlb) {
@@ -277,11 +345,20 @@ int RunPackCommand(const std::vector<std::string>& args) {
       std::min<size_t>(work.size(), jobs > 0 ? static_cast<size_t>(jobs) : cores);
   // Several files at once: each decomposition on one thread (its result does not depend on it).
   if (threads > 1) p.num_threads = 1;
+  std::unique_ptr<AssetCache> cache;
+  if (!parsed.cache_dir.empty()) {
+    cache = std::make_unique<AssetCache>(parsed.cache_dir, CacheSalt(parsed.output_args));
+    Status ready = cache->Prepare();
+    if (!ready.ok()) {
+      std::fprintf(stderr, "hullpack pack: %s\n", ready.message().c_str());
+      return 1;
+    }
+  }
   ProgressLine progress(!quiet);
   std::atomic<size_t> next{0};
   auto worker = [&]() {
     for (size_t i; (i = next.fetch_add(1)) < work.size();)
-      PackOne(work[i], inputs, options, force, progress);
+      PackOne(work[i], inputs, options, force, cache.get(), progress);
   };
   std::vector<std::thread> pool;
   for (size_t t = 1; t < threads; ++t) pool.emplace_back(worker);
