@@ -25,12 +25,14 @@ PACKAGES=(
   libgmock-dev
   libgtest-dev
   make
+  munge
   ninja-build
   nlohmann-json3-dev
   node-acorn
   nodejs
   npm
   pkg-config
+  slurm-wlm
   zlib1g-dev
 )
 
@@ -107,7 +109,8 @@ configure_sanitized() {
 # test; LeakSanitizer on, with tests/sanitizers/lsan.supp for third-party leaks). Leaves out the
 # "heavy" label (the 2-million-triangle stability case: the plain run covers it, and it takes many
 # minutes under ASan) and web_browser (the WebAssembly decoder in Chromium, which no sanitizer sees;
-# the plain run covers it). HULLPACK_SANITIZE_TESTS=0 skips the stage.
+# the plain run covers it). The one-node Slurm cluster test (hullpack_batch_slurm, label "daemon") is
+# registered in the plain tree only. HULLPACK_SANITIZE_TESTS=0 skips the stage.
 sanitized_tests() {
   [ "${HULLPACK_SANITIZE_TESTS:-1}" = 0 ] && return 0
   log "building the sanitized tests ($JOBS jobs)"

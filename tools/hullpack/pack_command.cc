@@ -133,6 +133,7 @@ void PackOne(Job& job, const std::vector<std::string>& inputs, const PackOptions
     return;
   }
   job.report = std::move(packed->report);
+  if (cache) job.report["cache_hit"] = packed->cache_hit;
   job.report["input"] = job.input;
   job.report["output"] = job.output;
   job.ok = true;
