@@ -68,7 +68,7 @@ Result<std::vector<BatchAsset>> PlanBatch(const std::vector<std::string>& inputs
   // The deepest folder every input lies in.
   std::string common = assets[0].input.substr(0, assets[0].input.find_last_of('/') + 1);
   for (const BatchAsset& a : assets) {
-    while (a.input.compare(0, common.size(), common) != 0) {
+    while (!common.empty() && a.input.compare(0, common.size(), common) != 0) {
       common.pop_back();
       common = common.substr(0, common.find_last_of('/') + 1);
     }

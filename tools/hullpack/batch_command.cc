@@ -9,6 +9,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <set>
 #include <thread>
@@ -47,10 +48,17 @@ const char kUsage[] =
 
 constexpr char kWorkDir[] = ".hullpack-batch";
 
+// The cores this process may use: its CPU affinity, and no more than Slurm allocated to the task
+// (SLURM_CPUS_PER_TASK) where the cluster does not bind tasks to cores.
 size_t UsableCores() {
+  size_t cores = std::max(1u, std::thread::hardware_concurrency());
   cpu_set_t set;
-  if (sched_getaffinity(0, sizeof(set), &set) == 0) return std::max(1, CPU_COUNT(&set));
-  return std::max(1u, std::thread::hardware_concurrency());
+  if (sched_getaffinity(0, sizeof(set), &set) == 0) cores = std::max(1, CPU_COUNT(&set));
+  if (const char* slurm = std::getenv("SLURM_CPUS_PER_TASK")) {
+    const long n = std::atol(slurm);
+    if (n > 0) cores = std::min(cores, static_cast<size_t>(n));
+  }
+  return cores;
 }
 
 std::string Folder(const std::string& path) {

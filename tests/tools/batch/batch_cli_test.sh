@@ -71,7 +71,7 @@ check "--jobs 1 and --jobs 2 write the same bytes" 'same_outputs "$tmp/j1" "$tmp
 "$bin" batch "$tmp"/many/*.obj -o "$tmp/whole" --jobs 2 "${opts[@]}" >/dev/null 2>&1
 "$bin" batch "$tmp"/many/*.obj -o "$tmp/killed" --jobs 2 "${opts[@]}" >/dev/null 2>&1 &
 bg=$!
-for _ in $(seq 300); do
+for _ in $(seq 1200); do
   [ "$(ls "$tmp/killed" 2>/dev/null | grep -c 'packed.glb$')" -ge 8 ] && break
   sleep 0.05
 done
