@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <fstream>
 
 #include "common/file_util.h"
@@ -14,6 +15,7 @@ class AssetCacheTest : public testing::Test {
   void SetUp() override {
     root_ = testing::TempDir() + "/asset_cache_test_" +
             testing::UnitTest::GetInstance()->current_test_info()->name();
+    ASSERT_EQ(std::system(("rm -rf '" + root_ + "'").c_str()), 0);  // a previous run's cache
     ASSERT_TRUE(MakeDirectories(root_ + "/in").ok());
   }
   void Write(const std::string& name, const std::string& text) {
