@@ -69,7 +69,7 @@ nlohmann::json SummaryToJson(const BatchSummary& s) {
                         {"cache_hit", a.cache_hit},
                         {"seconds", a.seconds},
                         {"input_bytes", a.input_bytes}};
-    if (a.status == "failed") {
+    if (a.status == "failed" || a.status == "cancelled") {
       j["error"] = a.error;
     } else {
       j["output_bytes"] = a.output_bytes;
@@ -135,7 +135,7 @@ std::string SummaryToCsv(const BatchSummary& s) {
       "index,input,output,status,cache_hit,error,input_bytes,output_bytes,geometry_bytes_before,"
       "geometry_bytes_after,meshes,hulls,max_error_fraction,hull_quantization_error,seconds\n";
   for (const AssetOutcome& a : s.assets) {
-    const bool ok = a.status != "failed";
+    const bool ok = a.status == "packed" || a.status == "cached";
     out += std::to_string(a.index) + "," + CsvField(a.input) + "," + CsvField(a.output) + "," +
            a.status + "," + (a.cache_hit ? "1" : "0") + "," + CsvField(a.error) + "," +
            std::to_string(a.input_bytes) + "," + (ok ? std::to_string(a.output_bytes) : "") + "," +

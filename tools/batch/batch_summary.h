@@ -14,8 +14,9 @@ namespace hullpack {
 struct AssetOutcome {
   size_t index = 0;
   std::string input, output;  // output relative to the batch's output folder
-  std::string status;         // "packed", "cached" or "failed"
-  std::string error;          // why it failed
+  // "packed", "cached", "failed", or "cancelled" (the run was stopped before it finished)
+  std::string status;
+  std::string error;  // why it failed or was not finished
   uint64_t input_bytes = 0, output_bytes = 0;
   uint64_t geometry_bytes_before = 0, geometry_bytes_after = 0;  // meshes + hulls, as in --report
   size_t meshes = 0, hulls = 0;

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
@@ -29,7 +30,8 @@ const char kUsage[] =
     "usage: hullpack batch INPUT... | --manifest FILE  -o OUTDIR [options] [pack options]\n"
     "  Packs every input into OUTDIR/PATH.packed.glb, PATH being the input's path relative to the\n"
     "  folder all inputs share. Unchanged inputs come from the cache; a killed run, restarted,\n"
-    "  goes on where it stopped. Writes OUTDIR/summary.json and OUTDIR/summary.csv.\n"
+    "  goes on where it stopped. Writes OUTDIR/summary.json and OUTDIR/summary.csv. Ctrl-C or\n"
+    "  SIGTERM stops it gracefully (exit 130/143).\n"
     "options:\n"
     "  --manifest FILE    inputs, one path per line (relative to FILE's folder; '#' comments)\n"
     "  -o OUTDIR          output folder (created if missing)\n"
@@ -47,6 +49,20 @@ const char kUsage[] =
     "  --resolution --max-hulls --max-vertices --concavity\n";
 
 constexpr char kWorkDir[] = ".hullpack-batch";
+
+// SIGINT or SIGTERM (what Slurm sends at a time limit or scancel) stops the batch: assets being
+// packed are cancelled, none is started, the summary is written. A second signal ends the process.
+volatile sig_atomic_t g_stop_signal = 0;
+
+extern "C" void OnStopSignal(int signal_number) {
+  g_stop_signal = signal_number;
+  std::signal(signal_number, SIG_DFL);
+}
+
+class StopOnSignal : public PackObserver {
+ public:
+  bool IsCancelled() override { return g_stop_signal != 0; }
+};
 
 // The cores this process may use: its CPU affinity, and no more than Slurm allocated to the task
 // (SLURM_CPUS_PER_TASK) where the cluster does not bind tasks to cores.
@@ -122,9 +138,11 @@ Status WriteSummary(const BatchSummary& summary, const std::string& stem) {
 }
 
 void PrintCounts(const BatchSummary& s, const std::string& where) {
-  std::printf("%zu assets: %zu packed, %zu from the cache, %zu failed; summary %s.json and .csv\n",
-              s.assets.size(), s.Count("packed"), s.Count("cached"), s.Count("failed"),
-              where.c_str());
+  const size_t cancelled = s.Count("cancelled");
+  std::printf(
+      "%zu assets: %zu packed, %zu from the cache, %zu failed%s; summary %s.json and .csv\n",
+      s.assets.size(), s.Count("packed"), s.Count("cached"), s.Count("failed"),
+      cancelled ? (", " + std::to_string(cancelled) + " not done").c_str() : "", where.c_str());
 }
 
 std::string ShardStem(const std::string& out_dir, size_t k, size_t n) {
@@ -157,7 +175,7 @@ int Merge(const std::string& out_dir, size_t shards) {
     return 1;
   }
   PrintCounts(merged.value(), out_dir + "/summary");
-  return merged->Count("failed") ? 1 : 0;
+  return merged->Count("failed") + merged->Count("cancelled") ? 1 : 0;
 }
 
 struct BatchRun {
@@ -180,11 +198,15 @@ AssetOutcome RunOne(const BatchRun& run, const BatchAsset& asset) {
   Status s = MakeDirectories(Folder(path));
   if (s.ok() && stat(path.c_str(), &st) == 0 && run.input_files.count({st.st_dev, st.st_ino}))
     s = Status(StatusCode::kInvalidArgument, path + ": is an input file; refusing to overwrite it");
-  Result<CachedPack> packed = s.ok() ? PackFileCached(asset.input, *run.options, run.cache, nullptr)
-                                     : Result<CachedPack>(s);
+  StopOnSignal stop;
+  Result<CachedPack> packed =
+      s.ok() ? PackFileCached(asset.input, *run.options, run.cache, &stop) : Result<CachedPack>(s);
   if (packed.ok() && !SameBytes(path, packed->glb)) s = WriteFileAtomically(path, packed->glb);
   if (!packed.ok()) s = packed.status();
-  if (s.ok()) {
+  if (s.code() == StatusCode::kCancelled || (!s.ok() && g_stop_signal)) {
+    o.status = "cancelled";
+    o.error = asset.input + ": cancelled (the batch was stopped)";
+  } else if (s.ok()) {
     o.status = packed->cache_hit ? "cached" : "packed";
     o.cache_hit = packed->cache_hit;
     FillFromReport(packed->report, &o);
@@ -337,11 +359,21 @@ int RunBatchCommand(const std::vector<std::string>& args) {
   summary.shard_index = shard.index;
   summary.shard_count = shard.count;
   summary.assets.resize(assets.size());
+  for (size_t i = 0; i < assets.size(); ++i) {  // what a stopped run never reaches
+    AssetOutcome& o = summary.assets[i];
+    o.index = assets[i].index;
+    o.input = assets[i].input;
+    o.output = assets[i].output;
+    o.status = "cancelled";
+    o.error = assets[i].input + ": not started (the batch was stopped)";
+  }
+  std::signal(SIGINT, OnStopSignal);
+  std::signal(SIGTERM, OnStopSignal);
   ProgressLine progress(!parsed.quiet);
   const auto start = std::chrono::steady_clock::now();
   std::atomic<size_t> next{0}, done{0}, cached{0}, failed{0};
   auto worker = [&]() {
-    for (size_t i; (i = next.fetch_add(1)) < assets.size();) {
+    for (size_t i; !g_stop_signal && (i = next.fetch_add(1)) < assets.size();) {
       summary.assets[i] = RunOne(run, assets[i]);
       if (summary.assets[i].cache_hit) ++cached;
       if (summary.assets[i].status == "failed") ++failed;
@@ -366,6 +398,13 @@ int RunBatchCommand(const std::vector<std::string>& args) {
 
   for (const AssetOutcome& o : summary.assets)
     if (o.status == "failed") std::fprintf(stderr, "hullpack batch: %s\n", o.error.c_str());
+  const int stopped_by = g_stop_signal;
+  if (stopped_by) {
+    std::fprintf(stderr,
+                 "hullpack batch: stopped by signal %d; %zu assets not done (run the same command "
+                 "again to go on)\n",
+                 stopped_by, summary.Count("cancelled"));
+  }
   const std::string stem =
       sharded ? ShardStem(out_dir, shard.index, shard.count) : out_dir + "/summary";
   Status written = WriteSummary(summary, stem);
@@ -374,6 +413,7 @@ int RunBatchCommand(const std::vector<std::string>& args) {
     return 1;
   }
   PrintCounts(summary, stem);
+  if (stopped_by) return 128 + stopped_by;
   return summary.Count("failed") ? 1 : 0;
 }
 

@@ -89,6 +89,22 @@ check "the restart redoes no finished asset" '[ "$(count "$tmp/killed/summary.js
 check "the restart gives the uninterrupted run's outputs" 'same_outputs "$tmp/whole" "$tmp/killed"'
 check "no temporary file is left" '[ -z "$(find "$tmp/killed" -name "*.tmp-*")" ]'
 
+# SIGTERM (Ctrl-C, scancel, a Slurm time limit): a summary of what was done, exit 128+15.
+"$bin" batch "$tmp"/many/*.obj -o "$tmp/stopped" --jobs 2 "${opts[@]}" >"$tmp/o7" 2>&1 &
+bg=$!
+for _ in $(seq 1200); do
+  [ "$(ls "$tmp/stopped" 2>/dev/null | grep -c 'packed.glb$')" -ge 4 ] && break
+  sleep 0.05
+done
+kill -TERM "$bg"
+wait "$bg"
+rc=$?
+bg=
+check "SIGTERM: exit 143 (got $rc)" '[ $rc = 143 ]'
+check "SIGTERM: the summary lists every asset, some not done" '[ "$(grep -c "\"input\":" "$tmp/stopped/summary.json")" = 24 ] && [ "$(count "$tmp/stopped/summary.json" cancelled)" -ge 1 ]'
+"$bin" batch "$tmp"/many/*.obj -o "$tmp/stopped" --jobs 2 "${opts[@]}" >/dev/null 2>&1
+check "SIGTERM: the next run finishes the batch" '[ $? = 0 ] && same_outputs "$tmp/whole" "$tmp/stopped"'
+
 # Shards run apart and merged: every asset once, the same bytes.
 for k in 0 1 2; do
   "$bin" batch "$tmp"/many/*.obj -o "$tmp/sharded" --shard $k/3 --cache "$tmp/whole/.hullpack-cache" \
