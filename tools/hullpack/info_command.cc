@@ -20,7 +20,7 @@ int RunInfoCommand(const std::vector<std::string>& args) {
               "reader could not keep.");
   cli.VersionDetail(FormatVersionText());
   cli.Positional("FILE", &files, 1, 1);
-  cli.Flag("--json", &json, "the same as JSON");
+  cli.Flag("--json", &json, "print the report as JSON");
   if (std::optional<int> exit_code = cli.Parse(args)) return *exit_code;
   const std::string& path = files[0];
   Result<Scene> scene = ReadScene(path);
