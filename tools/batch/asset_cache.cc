@@ -6,11 +6,8 @@
 
 #include "batch/sha256.h"
 #include "common/file_util.h"
+#include "common/version.h"
 #include "gltf/glb_reader.h"
-
-#ifndef HULLPACK_VERSION
-#define HULLPACK_VERSION "unknown"
-#endif
 
 namespace hullpack {
 namespace {

@@ -21,10 +21,12 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "bench/bench_util.h"
+#include "common/cli_args.h"
 #include "common/file_util.h"
 #include "io/scene_io.h"
 
@@ -194,40 +196,22 @@ int main(int argc, char** argv) {
   std::string hullpack_bin, corpus, work = "/tmp/hullpack-batch-bench";
   long generated = 800, patches = 16, patch_triangles = 1500, jobs = 2, repeats = 1;
   std::vector<std::string> pack_options;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto next = [&]() -> std::string { return i + 1 < argc ? argv[++i] : ""; };
-    if (a == "--hullpack") {
-      hullpack_bin = next();
-    } else if (a == "--corpus") {
-      corpus = next();
-    } else if (a == "--work") {
-      work = next();
-    } else if (a == "--generated") {
-      generated = std::atol(next().c_str());
-    } else if (a == "--patches") {
-      patches = std::atol(next().c_str());
-    } else if (a == "--patch-triangles") {
-      patch_triangles = std::atol(next().c_str());
-    } else if (a == "--jobs") {
-      jobs = std::max(1L, std::atol(next().c_str()));
-    } else if (a == "--repeats") {
-      repeats = std::max(1L, std::atol(next().c_str()));
-    } else if (a == "--") {
-      pack_options.assign(argv + i + 1, argv + argc);
-      break;
-    } else {
-      std::fprintf(stderr,
-                   "usage: batch_bench --hullpack BIN [--corpus DIR] [--generated N] "
-                   "[--patches P] [--patch-triangles T] [--jobs J] [--repeats R] [--work DIR] "
-                   "[-- PACK OPTIONS]\n");
-      return 64;
-    }
-  }
-  if (hullpack_bin.empty()) {
-    std::fprintf(stderr, "batch_bench: --hullpack BIN is required\n");
-    return 64;
-  }
+  hullpack::CliArgs cli(
+      "batch_bench", "--hullpack BIN [options] [-- PACK OPTION...]",
+      "`hullpack batch` against `hullpack pack ALL -o DIR/` over generated and corpus-derived\n"
+      "  assets: wall and CPU seconds, assets/s, threads running or ready, the second (cached) "
+      "run.");
+  cli.String("--hullpack", "BIN", &hullpack_bin, "the hullpack program to measure").Required();
+  cli.String("--corpus", "DIR", &corpus, "meshes (.obj, .glb) to cut patches from");
+  cli.Int("--generated", "N", 0, 1000000, &generated, "generated parts (default 800)");
+  cli.Int("--patches", "P", 0, 10000, &patches, "patches per corpus mesh (default 16)");
+  cli.Int("--patch-triangles", "T", 4, 10000000, &patch_triangles,
+          "triangles per patch (default 1500)");
+  cli.Int("--jobs", "J", 1, 256, &jobs, "--jobs of both programs (default 2)");
+  cli.Int("--repeats", "R", 1, 100, &repeats, "runs of each; medians are reported (default 1)");
+  cli.String("--work", "DIR", &work, "scratch folder, emptied first (/tmp/hullpack-batch-bench)");
+  cli.Positional("PACK OPTION", &pack_options, 0);
+  if (std::optional<int> exit_code = cli.Parse(argc, argv)) return *exit_code;
   if (std::system(("rm -rf '" + work + "'").c_str()) != 0 ||
       !hullpack::MakeDirectories(work + "/assets").ok()) {
     std::fprintf(stderr, "batch_bench: cannot prepare %s\n", work.c_str());

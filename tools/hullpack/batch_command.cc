@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <optional>
 #include <set>
 #include <thread>
 
@@ -19,6 +20,7 @@
 #include "batch/batch_plan.h"
 #include "batch/batch_summary.h"
 #include "batch/slurm_submit.h"
+#include "common/cli_args.h"
 #include "common/file_util.h"
 #include "hullpack/cli_util.h"
 #include "hullpack/pack_command.h"
@@ -26,27 +28,11 @@
 namespace hullpack {
 namespace {
 
-const char kUsage[] =
-    "usage: hullpack batch INPUT... | --manifest FILE  -o OUTDIR [options] [pack options]\n"
-    "  Packs every input into OUTDIR/PATH.packed.glb, PATH being the input's path relative to the\n"
-    "  folder all inputs share. Unchanged inputs come from the cache; a killed run, restarted,\n"
-    "  goes on where it stopped. Writes OUTDIR/summary.json and OUTDIR/summary.csv. Ctrl-C or\n"
-    "  SIGTERM stops it gracefully (exit 130/143).\n"
-    "options:\n"
-    "  --manifest FILE    inputs, one path per line (relative to FILE's folder; '#' comments)\n"
-    "  -o OUTDIR          output folder (created if missing)\n"
-    "  --cache DIR        the content-addressed cache (default OUTDIR/.hullpack-cache); may be\n"
-    "                     shared by many batches, machines and `hullpack pack --cache`\n"
-    "  --jobs N           assets packed at once (default: every core this process may use)\n"
-    "  --shard K/N        run only the K-th of N slices (every N-th asset from the K-th); the\n"
-    "                     summary goes to OUTDIR/.hullpack-batch/summary-K-of-N.json\n"
-    "  --merge N          merge the N shard summaries into OUTDIR/summary.json and .csv\n"
-    "  --shards N --slurm [SBATCH OPTION...]   submit N shards as a Slurm job array plus a merge\n"
-    "                     job; every argument after --slurm goes to sbatch\n"
-    "  --quiet            no progress line\n"
-    "pack options (see hullpack pack --help): --max-error --hull-error --qp --qn --qt --ascii\n"
-    "  --keep-order --fast-decode --fallback --hulls --skinned-hulls --physics --quality\n"
-    "  --resolution --max-hulls --max-vertices --concavity\n";
+const char kSummary[] =
+    "Packs every input into OUTDIR/PATH.packed.glb, PATH being the input's path relative to the\n"
+    "  folder all inputs share, with pack's options (hullpack pack --help). Unchanged inputs come\n"
+    "  from the cache; a killed run, restarted, goes on where it stopped; Ctrl-C or SIGTERM stops\n"
+    "  it gracefully (exit 130/143). Writes OUTDIR/summary.json and OUTDIR/summary.csv.";
 
 constexpr char kWorkDir[] = ".hullpack-batch";
 
@@ -217,78 +203,86 @@ AssetOutcome RunOne(const BatchRun& run, const BatchAsset& asset) {
   return o;
 }
 
+struct BatchCommandLine {
+  std::vector<std::string> inputs;
+  std::string output, manifest, cache_dir;
+  PackOptions options;
+  size_t jobs = 0;  // 0: every core this process may use
+  bool quiet = false;
+  Shard shard;
+  bool sharded = false;
+  long merge = 0, shards = 0;
+  bool slurm = false;
+  std::vector<std::string> sbatch_options;
+  std::vector<std::string> output_args;  // the cache key's share of the command line
+};
+
 }  // namespace
 
-int RunBatchCommand(const std::vector<std::string>& args) {
-  std::vector<std::string> pack_args, sbatch_options;
-  std::string manifest;
-  Shard shard;
-  bool sharded = false, slurm = false;
-  long merge = 0, shards = 0;
-  for (size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    const bool has_value = i + 1 < args.size();
-    if (a == "-h" || a == "--help") {
-      std::fputs(kUsage, stdout);
-      return 0;
-    } else if (a == "--slurm") {
-      slurm = true;
-      sbatch_options.assign(args.begin() + static_cast<long>(i) + 1, args.end());
-      break;
-    } else if (a == "--manifest" || a == "--shard" || a == "--shards" || a == "--merge") {
-      if (!has_value) {
-        std::fprintf(stderr, "hullpack batch: %s needs a value\n", a.c_str());
-        return kExitUsage;
-      }
-      const std::string& v = args[++i];
-      if (a == "--manifest") {
-        manifest = v;
-      } else if (a == "--shard") {
-        if (!ParseShard(v, &shard)) {
-          std::fprintf(stderr, "hullpack batch: --shard takes K/N with 0 <= K < N, not '%s'\n",
-                       v.c_str());
-          return kExitUsage;
-        }
-        sharded = true;
-      } else if (!ParseInt(a, v, 1, 100000, a == "--merge" ? &merge : &shards)) {
-        return kExitUsage;
-      }
-    } else if (a == "--report") {
-      std::fprintf(stderr,
-                   "hullpack batch: --report is pack's; batch writes OUTDIR/summary.json\n");
-      return kExitUsage;
-    } else {
-      pack_args.push_back(a);
-    }
+int RunBatchCommand(const std::vector<std::string>& all_args) {
+  BatchCommandLine parsed;
+  // Everything after --slurm is sbatch's.
+  std::vector<std::string> args = all_args;
+  const auto slurm_at = std::find(args.begin(), args.end(), "--slurm");
+  if (slurm_at != args.end()) {
+    parsed.slurm = true;
+    parsed.sbatch_options.assign(slurm_at + 1, args.end());
+    args.erase(slurm_at + 1, args.end());
   }
-  PackArgs parsed;
-  const int parse_exit = ParsePackArgs(pack_args, "batch", kUsage, &parsed);
-  if (parse_exit >= 0) return parse_exit;
-  if (parsed.output.empty()) {
-    std::fprintf(stderr, "hullpack batch: -o OUTDIR is required\n%s", kUsage);
-    return kExitUsage;
-  }
+  CliArgs cli("hullpack batch", "INPUT... | --manifest FILE  -o OUTDIR [options] [pack options]",
+              kSummary);
+  cli.VersionDetail(FormatVersionText());
+  cli.Positional("INPUT", &parsed.inputs, 0);
+  cli.String("-o, --output", "OUTDIR", &parsed.output, "output folder (created if missing)")
+      .Required();
+  cli.String("--manifest", "FILE", &parsed.manifest,
+             "inputs, one path per line (relative to FILE's folder; '#' comments)");
+  cli.String("--cache", "DIR", &parsed.cache_dir,
+             "the content-addressed cache (default OUTDIR/.hullpack-cache); may be\n"
+             "shared by many batches, machines and `hullpack pack --cache`");
+  cli.Int("--jobs", "N", 1, 256, &parsed.jobs,
+          "assets packed at once (default: every core this process may use)");
+  cli.Value("--shard", "K/N",
+            "run only the K-th of N slices (every N-th asset from the K-th); its\n"
+            "summary goes to OUTDIR/.hullpack-batch/summary-K-of-N.json",
+            [&parsed](const std::string& v) {
+              if (!ParseShard(v, &parsed.shard))
+                return "takes K/N with 0 <= K < N, not '" + v + "'";
+              parsed.sharded = true;
+              return std::string();
+            });
+  cli.Int("--merge", "N", 1, 100000, &parsed.merge,
+          "merge the N shard summaries into OUTDIR/summary.json and .csv");
+  cli.Int("--shards", "N", 1, 100000, &parsed.shards, "with --slurm: how many array tasks");
+  cli.Action("--slurm",
+             "submit the shards as a Slurm job array plus a merge job; every\n"
+             "argument after --slurm goes to sbatch",
+             []() {});
+  cli.Flag("--quiet", &parsed.quiet, "no progress line");
+  AddPackOptions(cli, &parsed.options);
+  if (std::optional<int> exit_code = cli.Parse(args)) return *exit_code;
+  parsed.output_args = OutputArgs(args, parsed.inputs);
+  if (parsed.slurm) parsed.output_args.pop_back();  // "--slurm"
+  const long merge = parsed.merge, shards = parsed.shards;
+  const bool slurm = parsed.slurm, sharded = parsed.sharded;
+  const Shard shard = parsed.shard;
+  const std::vector<std::string>& sbatch_options = parsed.sbatch_options;
+  const std::string& manifest = parsed.manifest;
   const std::string out_dir = AbsolutePath(parsed.output);
   if (merge > 0) return Merge(out_dir, static_cast<size_t>(merge));
-  if (slurm != (shards > 0) || (slurm && sharded)) {
-    std::fprintf(stderr, "hullpack batch: --slurm needs --shards N (and no --shard)\n");
-    return kExitUsage;
-  }
+  if (slurm != (shards > 0) || (slurm && sharded))
+    return cli.UsageError("--slurm needs --shards N (and no --shard)");
 
   std::vector<std::string> inputs = parsed.inputs;
   if (!manifest.empty()) {
     Result<std::vector<std::string>> listed = ReadManifest(manifest);
-    if (!listed.ok()) {
-      std::fprintf(stderr, "hullpack batch: %s\n", listed.status().message().c_str());
-      return kExitUsage;
-    }
+    if (!listed.ok()) return cli.UsageError(listed.status().message());
     inputs.insert(inputs.end(), listed->begin(), listed->end());
   }
   Result<std::vector<BatchAsset>> plan = PlanBatch(inputs);
   if (!plan.ok()) {
-    std::fprintf(stderr, "hullpack batch: %s\n%s", plan.status().message().c_str(),
-                 inputs.empty() ? kUsage : "");
-    return kExitUsage;
+    return cli.UsageError(plan.status().message() +
+                          (inputs.empty() ? " (give INPUT... or --manifest FILE)" : ""));
   }
   const std::string cache_dir =
       AbsolutePath(parsed.cache_dir.empty() ? out_dir + "/.hullpack-cache" : parsed.cache_dir);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "batch/asset_cache.h"
+#include "common/cli_args.h"
 #include "common/status.h"
 #include "pipeline/pack.h"
 
@@ -16,21 +17,17 @@ namespace hullpack {
 // for a command-line mistake.
 int RunPackCommand(const std::vector<std::string>& args);
 
-// Pack's command line, parsed (`hullpack batch` takes the same pack options).
-struct PackArgs {
-  std::vector<std::string> inputs;
-  std::string output, report_path, cache_dir;
-  PackOptions options;
-  bool force = false, quiet = false;
-  long jobs = 0;  // 0 = every core
-  // The options that can change an output's bytes, as given: what the cache key holds.
-  std::vector<std::string> output_args;
-};
+// Declares the options that decide an output's bytes (--max-error, --qp/--qn/--qt, --hull-error,
+// --ascii, --keep-order, --fast-decode, --fallback, --hulls, --skinned-hulls, --physics, --quality,
+// --resolution, --max-hulls, --max-vertices, --concavity) on `cli`, applied to `options`.
+// `hullpack batch` takes the same.
+void AddPackOptions(CliArgs& cli, PackOptions* options);
 
-// Parses `args` into `out`. Returns -1 when they are well formed, 0 after printing `usage` for
-// --help, kExitUsage (message on stderr, naming `command`) for a mistake.
-int ParsePackArgs(const std::vector<std::string>& args, const char* command, const char* usage,
-                  PackArgs* out);
+// `args` without the operands and without the options that only steer a run (-o, --report,
+// --jobs, --cache, --force, --quiet, batch's --manifest/--shard/--shards/--merge, and their
+// values): what can change an output's bytes, as given. The cache key holds it.
+std::vector<std::string> OutputArgs(const std::vector<std::string>& args,
+                                    const std::vector<std::string>& operands);
 
 struct PackedFile {
   std::vector<uint8_t> glb;
