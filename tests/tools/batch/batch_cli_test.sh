@@ -23,7 +23,7 @@ same_outputs() {  # same_outputs DIR_A DIR_B: every .packed.glb of A is in B wit
   [ "$n" -gt 0 ] && [ "$n" = "$(cd "$2" && find . -name '*.packed.glb' | wc -l)" ]
 }
 
-opts=(--resolution 20000 --max-hulls 8 --quiet)
+opts=(--resolution 10000 --max-hulls 4 --quiet)
 "$src/tests/tools/batch/make_assets.sh" "$tmp/in" 10
 mkdir -p "$tmp/in/sub"
 mv "$tmp/in/asset009.obj" "$tmp/in/sub/"
