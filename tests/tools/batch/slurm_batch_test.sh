@@ -42,7 +42,12 @@ fail() {
 
 host=$(hostname -s)
 cpus=$(nproc)
-port=$((20000 + RANDOM % 20000))
+# Two free ports next to each other (a connect that succeeds means the port is taken).
+port_taken() { (exec 3<>"/dev/tcp/127.0.0.1/$1") 2>/dev/null; }
+for _ in $(seq 20); do
+  port=$((20000 + RANDOM % 20000))
+  port_taken "$port" || port_taken $((port + 1)) || break
+done
 mkdir -p "$tmp/state" "$tmp/spool"
 dd if=/dev/urandom of="$tmp/munge.key" bs=1024 count=1 status=none
 chmod 400 "$tmp/munge.key"
