@@ -17,6 +17,7 @@ PACKAGES=(
   cmake
   emscripten
   g++
+  ignition-tools
   libassimp-dev
   libbullet-dev
   libclang-rt-14-dev
@@ -24,6 +25,8 @@ PACKAGES=(
   libeigen3-dev
   libgmock-dev
   libgtest-dev
+  libsdformat-dev
+  liburdfdom-tools
   make
   ninja-build
   nlohmann-json3-dev
@@ -31,6 +34,11 @@ PACKAGES=(
   nodejs
   npm
   pkg-config
+  pybind11-dev
+  python3-dev
+  python3-numpy
+  python3-pybind11
+  python3-setuptools
   zlib1g-dev
 )
 

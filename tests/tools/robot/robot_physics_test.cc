@@ -1,0 +1,165 @@
+// The URDF as a simulator would load it: its collision meshes (read back from the STL files it
+// names, relative to it), its mass and inertia, into Bullet; a dropped body comes to rest where the
+// exact mesh rests, within 1 % of the mesh's height.
+#include <btBulletDynamicsCommon.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <memory>
+#include <string>
+
+#include "../pipeline/test_torus.h"
+#include "common/file_util.h"
+#include "io/scene_io.h"
+#include "robot/collision_export.h"
+
+namespace hullpack {
+namespace {
+
+struct LoadedUrdf {
+  double mass = 0, com[3] = {0, 0, 0}, inertia[3] = {0, 0, 0};
+  std::vector<Mesh> hulls;
+};
+
+std::string Attribute(const std::string& xml, size_t from, const std::string& name) {
+  const size_t at = xml.find(name + "=\"", from);
+  if (at == std::string::npos) return "";
+  const size_t start = at + name.size() + 2;
+  return xml.substr(start, xml.find('"', start) - start);
+}
+
+// Reads what a simulator takes from our URDF: the inertial and each <collision>'s mesh file.
+LoadedUrdf LoadUrdf(const std::string& dir, const std::string& file) {
+  LoadedUrdf u;
+  Result<std::vector<uint8_t>> bytes = ReadFileBytes(dir + "/" + file);
+  if (!bytes.ok()) return u;
+  const std::string xml(bytes->begin(), bytes->end());
+  const size_t inertial = xml.find("<inertial>");
+  u.mass = std::atof(Attribute(xml, inertial, "value").c_str());
+  std::sscanf(Attribute(xml, inertial, "xyz").c_str(), "%lf %lf %lf", &u.com[0], &u.com[1],
+              &u.com[2]);
+  u.inertia[0] = std::atof(Attribute(xml, inertial, "ixx").c_str());
+  u.inertia[1] = std::atof(Attribute(xml, inertial, "iyy").c_str());
+  u.inertia[2] = std::atof(Attribute(xml, inertial, "izz").c_str());
+  for (size_t at = xml.find("<collision"); at != std::string::npos;
+       at = xml.find("<collision", at + 1)) {
+    Result<Scene> mesh = ReadScene(dir + "/" + Attribute(xml, at, "filename"));
+    if (mesh.ok() && !mesh->meshes.empty()) u.hulls.push_back(mesh->meshes[0]);
+  }
+  return u;
+}
+
+// Drops the URDF's body from `drop` above the plane z = 0; returns the lowest point of `mesh`
+// moved by the body's final pose, and its tilt.
+void DropOnPlane(const Mesh& mesh, const LoadedUrdf& u, double drop, double* lowest, double* tilt) {
+  btDefaultCollisionConfiguration config;
+  btCollisionDispatcher dispatcher(&config);
+  btDbvtBroadphase broadphase;
+  btSequentialImpulseConstraintSolver solver;
+  btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &config);
+  world.setGravity(btVector3(0, 0, -9.81));
+  btStaticPlaneShape plane(btVector3(0, 0, 1), 0);
+  btRigidBody ground(btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &plane));
+  world.addRigidBody(&ground);
+
+  // Bullet's body frame is the centre of mass: the hulls are shifted by it.
+  btCompoundShape compound;
+  std::vector<std::unique_ptr<btConvexHullShape>> parts;
+  for (const Mesh& hull : u.hulls) {
+    auto shape = std::make_unique<btConvexHullShape>();
+    for (size_t v = 0; v < hull.vertex_count(); ++v) {
+      shape->addPoint(
+          btVector3(hull.positions[v * 3] - u.com[0], hull.positions[v * 3 + 1] - u.com[1],
+                    hull.positions[v * 3 + 2] - u.com[2]),
+          false);
+    }
+    shape->recalcLocalAabb();
+    shape->setMargin(0.001f);
+    btTransform identity;
+    identity.setIdentity();
+    compound.addChildShape(identity, shape.get());
+    parts.push_back(std::move(shape));
+  }
+  double min_z = 1e300;
+  for (size_t v = 0; v < mesh.vertex_count(); ++v)
+    min_z = std::min<double>(min_z, mesh.positions[v * 3 + 2]);
+  btTransform start;
+  start.setIdentity();
+  start.setOrigin(btVector3(0, 0, u.com[2] - min_z + drop));
+  btDefaultMotionState motion(start);
+  btRigidBody body(btRigidBody::btRigidBodyConstructionInfo(
+      u.mass, &motion, &compound, btVector3(u.inertia[0], u.inertia[1], u.inertia[2])));
+  world.addRigidBody(&body);
+  for (int step = 0; step < 3 * 240; ++step) world.stepSimulation(1.0 / 240, 1, 1.0 / 240);
+
+  btTransform end;
+  motion.getWorldTransform(end);
+  *lowest = 1e300;
+  for (size_t v = 0; v < mesh.vertex_count(); ++v) {
+    const btVector3 p =
+        end * btVector3(mesh.positions[v * 3] - u.com[0], mesh.positions[v * 3 + 1] - u.com[1],
+                        mesh.positions[v * 3 + 2] - u.com[2]);
+    *lowest = std::min<double>(*lowest, p.z());
+  }
+  const btVector3 up = end.getBasis() * btVector3(0, 0, 1);
+  *tilt = std::acos(std::min<btScalar>(1, std::max<btScalar>(-1, up.z())));
+  world.removeRigidBody(&body);
+  world.removeRigidBody(&ground);
+}
+
+// An L-shaped block (2 x 2 x 1 with a 1 x 1 notch), lying on its flat side.
+Mesh LBlock() {
+  const float p[6][2] = {{1, 1}, {1, 2}, {0, 2}, {0, 0}, {2, 0}, {2, 1}};
+  Mesh m;
+  m.name = "l_block";
+  for (float z : {0.0f, 1.0f})
+    for (const auto& q : p) m.positions.insert(m.positions.end(), {q[0], q[1], z});
+  for (uint32_t i = 1; i + 1 < 6; ++i) {
+    m.indices.insert(m.indices.end(), {0, i + 1, i});
+    m.indices.insert(m.indices.end(), {6, 6 + i, 6 + i + 1});
+  }
+  for (uint32_t i = 0; i < 6; ++i) {
+    const uint32_t j = (i + 1) % 6;
+    m.indices.insert(m.indices.end(), {i, j, 6 + j, i, 6 + j, 6 + i});
+  }
+  return m;
+}
+
+class RobotPhysics : public ::testing::TestWithParam<int> {};
+
+TEST_P(RobotPhysics, UrdfHullsRestWhereTheMeshRests) {
+  const Mesh mesh = GetParam() == 0 ? testing::TorusMesh(40, 16) : LBlock();
+  char dir_template[] = "/tmp/hullpack_robot_physics_XXXXXX";
+  ASSERT_NE(mkdtemp(dir_template), nullptr);
+  const std::string dir = dir_template;
+  Scene scene;
+  scene.meshes = {mesh};
+  AddRootNodeForAllMeshes(scene, mesh.name);
+  CollisionExportOptions options;
+  options.parameters.resolution = 50000;
+  Result<CollisionExportReport> r = ExportCollision(scene, mesh.name + ".obj", dir, options);
+  ASSERT_TRUE(r.ok()) << r.status().message();
+  const LoadedUrdf u = LoadUrdf(dir, mesh.name + ".urdf");
+  ASSERT_EQ(u.hulls.size(), r->hull_count);
+  ASSERT_GT(u.mass, 0);
+  double lo = 1e300, hi = -1e300;
+  for (size_t v = 0; v < mesh.vertex_count(); ++v) {
+    lo = std::min<double>(lo, mesh.positions[v * 3 + 2]);
+    hi = std::max<double>(hi, mesh.positions[v * 3 + 2]);
+  }
+  double lowest = 0, tilt = 0;
+  DropOnPlane(mesh, u, 0.3, &lowest, &tilt);
+  // The exact mesh lies flat with its lowest point on the plane.
+  EXPECT_NEAR(lowest, 0.0, 0.01 * (hi - lo));
+  EXPECT_LT(tilt, 0.02);
+  for (const std::string& f : r->files) unlink(f.c_str());
+  rmdir((dir + "/meshes").c_str());
+  rmdir(dir.c_str());
+}
+
+INSTANTIATE_TEST_SUITE_P(Shapes, RobotPhysics, ::testing::Values(0, 1));
+
+}  // namespace
+}  // namespace hullpack
