@@ -9,6 +9,7 @@
 #include "hullpack/cli_util.h"
 #include "hullpack/scene_summary.h"
 #include "io/scene_io.h"
+#include "mesh/merge.h"
 #include "mesh/validate.h"
 #include "pipeline/pack.h"
 #include "py_util.h"
@@ -296,6 +297,32 @@ py::dict Collision(const std::string& input, const std::string& output_dir,
   return d;
 }
 
+py::dict LoadMesh(const std::string& path) {
+  Status failed;
+  Mesh mesh;
+  {
+    py::gil_scoped_release release;
+    Result<Scene> scene = ReadScene(path);
+    if (!scene.ok()) {
+      failed = scene.status();
+    } else {
+      mesh = MergeMeshes(scene.value());
+      failed = ValidateMesh(mesh);
+      if (!failed.ok()) failed = Status(failed.code(), path + ": " + failed.message());
+    }
+  }
+  if (!failed.ok()) Raise(failed);
+  const size_t nv = mesh.vertex_count(), nt = mesh.triangle_count();
+  py::dict d;
+  d["vertices"] = OwnedArray(std::move(mesh.positions), nv, 3);
+  d["faces"] = OwnedArray(std::move(mesh.indices), nt, 3);
+  d["normals"] = mesh.normals.empty() ? py::object(py::none())
+                                      : py::object(OwnedArray(std::move(mesh.normals), nv, 3));
+  d["uvs"] = mesh.uv_sets.empty() ? py::object(py::none())
+                                  : py::object(OwnedArray(std::move(mesh.uv_sets[0]), nv, 2));
+  return d;
+}
+
 }  // namespace
 
 void BindFiles(py::module_& m) {
@@ -372,6 +399,25 @@ Returns
 dict
     "input", "output", "meshes", "triangles".)",
         py::arg("input"), py::arg("output"), py::kw_only(), py::arg("force") = false);
+  m.def("load_mesh", &LoadMesh, R"(Read a mesh or scene file into numpy arrays.
+
+Parameters
+----------
+path : str
+    .glb .gltf .fbx .obj .dae .ply .stl .off .wrl file.
+
+Returns
+-------
+dict
+    Every mesh of the file merged into one (node transforms are not applied): "vertices"
+    float32 (n, 3), "faces" uint32 (m, 3), "normals" float32 (n, 3) or None, "uvs" float32
+    (n, 2) or None (glTF convention, v = 0 at the top), ready for decompose and encode.
+
+Raises
+------
+OSError, ValueError
+    The file cannot be read, or holds an invalid mesh; the message names it.)",
+        py::arg("path"));
   m.def("info", &Info, R"(Counts, attributes, bounds and topology of a mesh or scene file.
 
 Parameters

@@ -14,4 +14,5 @@ PYBIND11_MODULE(_hullpack, m) {
   hullpack::python::BindDecompose(m);
   hullpack::python::BindCodec(m);
   hullpack::python::BindFiles(m);
+  hullpack::python::BindBench(m);
 }
