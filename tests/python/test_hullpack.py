@@ -197,6 +197,19 @@ class Files(unittest.TestCase):
         with self.assertRaises(OSError):
             hullpack.info(os.path.join(self.dir.name, "missing.obj"))
 
+    def test_load_mesh_feeds_decompose_and_encode(self):
+        mesh = hullpack.load_mesh(self.obj)
+        self.assertEqual(mesh["vertices"].dtype, np.float32)
+        self.assertEqual(mesh["faces"].shape, (24 * 12 * 2, 3))
+        hulls, _ = hullpack.decompose(mesh["vertices"], mesh["faces"], resolution=20000)
+        self.assertGreater(len(hulls), 2)
+        self.assertGreater(len(hullpack.encode(mesh["vertices"], mesh["faces"])), 0)
+        bad = os.path.join(self.dir.name, "bad.obj")
+        with open(bad, "w") as f:
+            f.write("v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n")
+        with self.assertRaises(ValueError):
+            hullpack.load_mesh(bad)
+
     def test_collision_writes_a_description(self):
         for fmt, ext in (("urdf", ".urdf"), ("mjcf", ".xml"), ("sdf", ".sdf")):
             with self.subTest(fmt):
