@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "hullpack/cli_util.h"
 #include "io/scene_io.h"
@@ -9,21 +10,6 @@
 
 namespace hullpack {
 namespace {
-
-const char kUsage[] =
-    "usage: hullpack collision INPUT -o DIR [--format urdf|mjcf|sdf] [options]\n"
-    "  writes DIR/NAME.urdf (or .xml for MJCF, .sdf) and DIR/meshes/: the visual mesh and one\n"
-    "  convex hull per file (STL for URDF and SDF, OBJ for MJCF), mass and inertia of the hulls\n"
-    "options:\n"
-    "  --format F         urdf (default), mjcf or sdf\n"
-    "  --name NAME        link/body/model name and file prefix (default: the input's stem)\n"
-    "  --density D        kg per cubic unit of the mesh (1000: water, in metres)\n"
-    "  --max-hull-vertices N   vertex cap per hull (64; at most 255 for URDF/SDF, 1024 for MJCF)\n"
-    "  --quality default|high  decomposition preset\n"
-    "  --resolution N --max-hulls N --concavity F   decomposition parameters\n"
-    "  --json             print the report as JSON\n"
-    "  --force            replace existing files\n"
-    "  --quiet            no progress line\n";
 
 class ProgressObserver : public vhacd::Observer {
  public:
@@ -41,79 +27,45 @@ class ProgressObserver : public vhacd::Observer {
 }  // namespace
 
 int RunCollisionCommand(const std::vector<std::string>& args) {
-  std::string input, output;
+  std::vector<std::string> inputs;
+  std::string output, format = "urdf", quality = "default";
   CollisionExportOptions options;
-  bool json = false, quiet = false, high_quality = false;
+  bool json = false, quiet = false;
   long resolution = 0, max_hulls = -1, cap = 0;
   double concavity = -1;
-  for (size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&](std::string* out) {
-      if (i + 1 >= args.size()) {
-        std::fprintf(stderr, "hullpack collision: %s needs a value\n", a.c_str());
-        return false;
-      }
-      *out = args[++i];
-      return true;
-    };
-    std::string v;
-    if (a == "-h" || a == "--help") {
-      std::fputs(kUsage, stdout);
-      return 0;
-    } else if (a == "-o" || a == "--output") {
-      if (!value(&output)) return kExitUsage;
-    } else if (a == "--format") {
-      if (!value(&v) || !ParseRobotFormat(v, &options.format)) {
-        std::fprintf(stderr, "hullpack collision: --format takes urdf, mjcf or sdf\n");
-        return kExitUsage;
-      }
-    } else if (a == "--name") {
-      if (!value(&options.name)) return kExitUsage;
-    } else if (a == "--density") {
-      if (!value(&v) || !ParseDouble(a, v, 1e-9, 1e12, &options.density)) return kExitUsage;
-    } else if (a == "--max-hull-vertices") {
-      if (!value(&v) || !ParseInt(a, v, 4, 1024, &cap)) return kExitUsage;
-    } else if (a == "--quality") {
-      if (!value(&v) || (v != "default" && v != "high")) {
-        std::fprintf(stderr, "hullpack collision: --quality takes default or high\n");
-        return kExitUsage;
-      }
-      high_quality = v == "high";
-    } else if (a == "--resolution") {
-      if (!value(&v) || !ParseInt(a, v, 10000, 64000000, &resolution)) return kExitUsage;
-    } else if (a == "--max-hulls") {
-      if (!value(&v) || !ParseInt(a, v, 0, 100000, &max_hulls)) return kExitUsage;
-    } else if (a == "--concavity") {
-      if (!value(&v) || !ParseDouble(a, v, 0, 1, &concavity)) return kExitUsage;
-    } else if (a == "--json") {
-      json = true;
-    } else if (a == "--force") {
-      options.force = true;
-    } else if (a == "--quiet") {
-      quiet = true;
-    } else if (!a.empty() && a[0] == '-') {
-      std::fprintf(stderr, "hullpack collision: unknown option '%s'\n%s", a.c_str(), kUsage);
-      return kExitUsage;
-    } else if (input.empty()) {
-      input = a;
-    } else {
-      std::fprintf(stderr, "hullpack collision: one input at a time ('%s' and '%s')\n",
-                   input.c_str(), a.c_str());
-      return kExitUsage;
-    }
-  }
-  if (input.empty() || output.empty()) {
-    std::fputs(kUsage, stderr);
-    return kExitUsage;
-  }
+  CliArgs cli(
+      "hullpack collision", "INPUT -o DIR [--format urdf|mjcf|sdf] [options]",
+      "Convex collision hulls as a robot description: DIR/NAME.urdf (.xml for MJCF, .sdf)\n"
+      "and DIR/meshes/ with the visual mesh and one convex hull per file (STL for URDF and\n"
+      "SDF, OBJ for MJCF), with the mass and inertia of the union of the hulls.");
+  cli.VersionDetail(FormatVersionText());
+  cli.Positional("INPUT", &inputs, 1, 1);
+  cli.String("-o, --output", "DIR", &output, "the folder to write into (created when missing)")
+      .Required();
+  cli.Choice("--format", {"urdf", "mjcf", "sdf"}, &format, "the description (urdf)");
+  cli.String("--name", "NAME", &options.name,
+             "link/body/model name and file prefix (default: the input's stem)");
+  cli.Double("--density", "D", 1e-9, 1e12, &options.density,
+             "mass per cubic unit of the mesh (1000: water in kg/m^3, for metres)");
+  cli.Int("--max-hull-vertices", "N", 4, 1024, &cap,
+          "vertex cap per hull (64; at most 255 for URDF/SDF, 1024 for MJCF)");
+  cli.Choice("--quality", {"default", "high"}, &quality, "decomposition preset").First();
+  cli.Int("--resolution", "N", 10000, 64000000, &resolution, "voxels of the decomposition");
+  cli.Int("--max-hulls", "N", 0, 100000, &max_hulls, "hull budget (0: none)");
+  cli.Double("--concavity", "F", 0, 1, &concavity, "largest concavity of a part");
+  cli.Flag("--json", &json, "print the report as JSON");
+  cli.Flag("--force", &options.force, "replace existing files");
+  cli.Flag("--quiet", &quiet, "no progress line");
+  if (std::optional<int> exit_code = cli.Parse(args)) return *exit_code;
+  const std::string& input = inputs[0];
+  ParseRobotFormat(format, &options.format);
   if (cap > MaxHullVerticesLimit(options.format)) {
-    std::fprintf(stderr, "hullpack collision: --max-hull-vertices is at most %d for %s\n",
-                 MaxHullVerticesLimit(options.format), RobotFormatName(options.format));
-    return kExitUsage;
+    return cli.UsageError("--max-hull-vertices is at most " +
+                          std::to_string(MaxHullVerticesLimit(options.format)) + " for " + format);
   }
   options.max_hull_vertices = static_cast<int>(cap);
   vhacd::Parameters& p = options.parameters;
-  if (high_quality) p = vhacd::Parameters::High();
+  if (quality == "high") p = vhacd::Parameters::High();
   if (resolution) p.resolution = static_cast<uint32_t>(resolution);
   if (max_hulls >= 0) p.max_convex_hulls = static_cast<uint32_t>(max_hulls);
   if (concavity >= 0) p.concavity = concavity;
