@@ -3,7 +3,7 @@
 
 For each mesh: hullpack.decompose (V-HACD, one thread), hullpack.encode and hullpack.decode are
 timed from Python, and the same library calls on the same arrays are timed inside C++
-(hullpack._hullpack._decompose_seconds / _codec_seconds), alternating, `--repeats` times (encode and
+(hullpack._hullpack._decompose_seconds / _codec_seconds), alternating which goes first, `--repeats` times (encode and
 decode averaged over as many calls as fill 50 ms each time), after one warm-up call, in
 process CPU time (all threads; steadier than wall time on a shared machine); the overhead is median(Python) / median(C++) - 1. Python's side includes reading the arrays, the
 worker thread and the Ctrl-C polling, and building the result arrays and dicts (decompose also
@@ -61,14 +61,21 @@ def main():
         decompose()  # warm-up: first-call costs (page faults, lazy binding) are not the binding's
         hullpack.decode(stream)
         codec_calls = calls_for(lambda: hullpack.encode(v, f))
-        for _ in range(args.repeats):
-            py_d.append(timed(decompose, 1))
-            cpp_d.append(_hullpack._decompose_seconds(v, f, args.resolution, 1))
-            py_e.append(timed(lambda: hullpack.encode(v, f), codec_calls))
-            py_x.append(timed(lambda: hullpack.decode(stream), codec_calls))
-            both = [_hullpack._codec_seconds(v, f) for _ in range(codec_calls)]
-            cpp_e.append(sum(e for e, _ in both) / codec_calls)
-            cpp_x.append(sum(x for _, x in both) / codec_calls)
+        for repeat in range(args.repeats):
+            def python_side():
+                py_d.append(timed(decompose, 1))
+                py_e.append(timed(lambda: hullpack.encode(v, f), codec_calls))
+                py_x.append(timed(lambda: hullpack.decode(stream), codec_calls))
+
+            def cpp_side():
+                cpp_d.append(_hullpack._decompose_seconds(v, f, args.resolution, 1, False))
+                both = [_hullpack._codec_seconds(v, f) for _ in range(codec_calls)]
+                cpp_e.append(sum(e for e, _ in both) / codec_calls)
+                cpp_x.append(sum(x for _, x in both) / codec_calls)
+
+            # Alternate which side runs first: caches and clock boosts favour neither.
+            for side in ((python_side, cpp_side) if repeat % 2 else (cpp_side, python_side)):
+                side()
         row = []
         for key, p, c in (("vhacd", py_d, cpp_d), ("enc", py_e, cpp_e), ("dec", py_x, cpp_x)):
             mp, mc = statistics.median(p), statistics.median(c)

@@ -21,8 +21,20 @@ double Seconds(const std::function<void()>& f) {
   return double(end.tv_sec - start.tv_sec) + 1e-9 * double(end.tv_nsec - start.tv_nsec);
 }
 
+// A C++ caller that wants progress and cancellation passes an observer too.
+class PollingObserver : public vhacd::Observer {
+ public:
+  void OnProgress(double overall, double, double, const char*, const char*) override {
+    last_ = overall;
+  }
+  bool IsCancelled() override { return false; }
+
+ private:
+  double last_ = 0;
+};
+
 double DecomposeSeconds(py::handle vertices, py::handle faces, uint32_t resolution,
-                        uint32_t num_threads) {
+                        uint32_t num_threads, bool observer) {
   const PointsIn points = ReadPoints(vertices, "vertices", 3, false);
   const IndicesIn triangles = ReadIndices(faces, "faces", points.count);
   vhacd::MeshView view =
@@ -34,7 +46,8 @@ double DecomposeSeconds(py::handle vertices, py::handle faces, uint32_t resoluti
   p.resolution = resolution;
   p.num_threads = num_threads;
   py::gil_scoped_release release;
-  return Seconds([&] { vhacd::Decompose(view, p); });
+  PollingObserver polling;
+  return Seconds([&] { vhacd::Decompose(view, p, observer ? &polling : nullptr); });
 }
 
 py::tuple CodecSeconds(py::handle vertices, py::handle faces) {
@@ -62,7 +75,7 @@ py::tuple CodecSeconds(py::handle vertices, py::handle faces) {
 
 void BindBench(py::module_& m) {
   m.def("_decompose_seconds", &DecomposeSeconds, py::arg("vertices"), py::arg("faces"),
-        py::arg("resolution"), py::arg("num_threads"));
+        py::arg("resolution"), py::arg("num_threads"), py::arg("observer"));
   m.def("_codec_seconds", &CodecSeconds, py::arg("vertices"), py::arg("faces"));
 }
 
