@@ -60,7 +60,7 @@ class Decompose(unittest.TestCase):
     def test_progress_is_reported_and_false_cancels(self):
         v, f = meshes.torus()
         seen = []
-        hullpack.decompose(v, f, resolution=400000, progress=lambda p, s: seen.append((p, s)))
+        hullpack.decompose(v, f, resolution=100000, progress=lambda p, s: seen.append((p, s)))
         self.assertTrue(seen)
         self.assertTrue(all(0 <= p <= 100 for p, _ in seen))
         start = time.monotonic()
