@@ -245,7 +245,7 @@ class Memory(unittest.TestCase):
         calls(1000)
         gc.collect()
         grown = rss_bytes() - before
-        self.assertLess(grown, 4 << 20, "RSS grew by %d bytes over 1000 calls" % grown)
+        self.assertLess(grown, 1 << 20, "RSS grew by %d bytes over 1000 calls" % grown)
 
 
 if __name__ == "__main__":
