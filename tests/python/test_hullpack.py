@@ -123,6 +123,27 @@ class Decompose(unittest.TestCase):
             self.assertIn("\n" + name + " :", doc)
 
 
+class Stubs(unittest.TestCase):
+    def test_stubs_declare_every_function_with_its_keywords(self):
+        import ast
+        import inspect
+        path = os.path.join(os.path.dirname(hullpack.__file__), "_hullpack.pyi")
+        with open(path) as f:
+            tree = ast.parse(f.read())
+        stubs = {n.name: n for n in tree.body if isinstance(n, ast.FunctionDef)}
+        for name in hullpack.__all__:
+            obj = getattr(hullpack, name)
+            if not callable(obj) or isinstance(obj, type):
+                continue
+            with self.subTest(name):
+                self.assertIn(name, stubs)
+                declared = [a.arg for a in stubs[name].args.args + stubs[name].args.kwonlyargs]
+                # pybind11 writes the signature as the docstring's first line.
+                signature = obj.__doc__.splitlines()[0]
+                for arg in declared:
+                    self.assertIn(arg + ":", signature)
+
+
 class Codec(unittest.TestCase):
     def test_round_trip_within_half_a_step(self):
         v, f, n, uv = meshes.sphere()
