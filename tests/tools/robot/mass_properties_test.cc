@@ -2,17 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include "common/test_shapes.h"
+
 namespace hullpack {
 namespace {
 
 Mesh Box(double x0, double y0, double z0, double x1, double y1, double z1) {
   Mesh m;
-  m.positions = {float(x0), float(y0), float(z0), float(x1), float(y0), float(z0),
-                 float(x1), float(y1), float(z0), float(x0), float(y1), float(z0),
-                 float(x0), float(y0), float(z1), float(x1), float(y0), float(z1),
-                 float(x1), float(y1), float(z1), float(x0), float(y1), float(z1)};
-  m.indices = {0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
-               1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7};
+  test_shapes::AppendTo(test_shapes::Box(x0, y0, z0, x1, y1, z1), &m);
   return m;
 }
 

@@ -14,8 +14,8 @@
 #include <memory>
 #include <string>
 
-#include "../pipeline/test_torus.h"
 #include "common/file_util.h"
+#include "common/test_shapes.h"
 #include "io/scene_io.h"
 #include "robot/collision_export.h"
 
@@ -156,7 +156,13 @@ Mesh LBlock() {
 class RobotPhysics : public ::testing::TestWithParam<int> {};
 
 TEST_P(RobotPhysics, UrdfHullsRestWhereTheMeshRests) {
-  const Mesh mesh = GetParam() == 0 ? testing::TorusMesh(40, 16) : LBlock();
+  Mesh mesh;
+  if (GetParam() == 0) {
+    test_shapes::AppendTo(test_shapes::Torus(1, 0.3, 40, 16), &mesh);
+    mesh.name = "torus";
+  } else {
+    mesh = LBlock();
+  }
   char dir_template[] = "/tmp/hullpack_robot_physics_XXXXXX";
   ASSERT_NE(mkdtemp(dir_template), nullptr);
   const std::string dir = dir_template;
