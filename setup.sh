@@ -17,6 +17,7 @@ PACKAGES=(
   cmake
   emscripten
   g++
+  ignition-tools
   libassimp-dev
   libbullet-dev
   libclang-rt-14-dev
@@ -24,6 +25,8 @@ PACKAGES=(
   libeigen3-dev
   libgmock-dev
   libgtest-dev
+  libsdformat-dev
+  liburdfdom-tools
   make
   munge
   ninja-build
@@ -32,6 +35,11 @@ PACKAGES=(
   nodejs
   npm
   pkg-config
+  pybind11-dev
+  python3-dev
+  python3-numpy
+  python3-pybind11
+  python3-setuptools
   slurm-wlm
   zlib1g-dev
 )

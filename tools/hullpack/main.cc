@@ -4,6 +4,7 @@
 
 #include "hullpack/batch_command.h"
 #include "hullpack/cli_util.h"
+#include "hullpack/collision_command.h"
 #include "hullpack/info_command.h"
 #include "hullpack/pack_command.h"
 #include "hullpack/unpack_command.h"
@@ -18,6 +19,7 @@ int main(int argc, char** argv) {
       "  batch INPUT... -o OUTDIR  many inputs: cached, resumable, sharded, Slurm job arrays\n"
       "  unpack IN.glb -o OUTPUT   decode a packed GLB back to plain glTF, OBJ, ...\n"
       "  info FILE [--json]        counts, attributes, bounds and topology of a mesh or scene\n"
+      "  collision IN -o DIR       convex collision hulls as a URDF, MJCF or SDF description\n"
       "run 'hullpack COMMAND --help' for a command's options");
   cli.VersionDetail(hullpack::FormatVersionText());
   std::vector<std::string> operands;
@@ -30,6 +32,7 @@ int main(int argc, char** argv) {
   const std::string& command = args[0];
   const std::vector<std::string> rest(args.begin() + 1, args.end());
   if (command == "batch") return hullpack::RunBatchCommand(rest);
+  if (command == "collision") return hullpack::RunCollisionCommand(rest);
   if (command == "info") return hullpack::RunInfoCommand(rest);
   if (command == "pack") return hullpack::RunPackCommand(rest);
   if (command == "unpack") return hullpack::RunUnpackCommand(rest);
