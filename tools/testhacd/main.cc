@@ -4,9 +4,9 @@
 //   testHACD input.obj minNClusters maxConcavity invertInputFaces addExtraDistPoints
 //            addFacesPoints ConnectedComponentsDist targetNTrianglesDecimatedMesh
 //   e.g. testHACD input.obj 2 100 0 1 1 30 2000
-// Named flags: see Usage below. Every mesh of the input (with its node transforms) is decomposed
-// as one soup. Progress goes to stderr; a summary to stdout.
-// Exit status: 0 success, 1 decomposition or I/O error, 64 usage error.
+// Named flags (after the input, or after the seven numbers): see kUsage below. Every mesh of the
+// input (with its node transforms) is decomposed as one soup. Progress goes to stderr; a summary to
+// stdout. Exit status: 0 success, 1 decomposition or I/O error, 64 usage error.
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -27,7 +27,7 @@ const char kUsage[] =
     "usage: testHACD input minNClusters maxConcavity invertInputFaces addExtraDistPoints\n"
     "                addFacesPoints ConnectedComponentsDist targetNTrianglesDecimatedMesh\n"
     "         e.g. testHACD input.obj 2 100 0 1 1 30 2000   (the recommended line)\n"
-    "       testHACD input [options]\n"
+    "       testHACD input [options]   (options may also follow the seven numbers)\n"
     "options (defaults: the HACD parameter table):\n"
     "  -o, --output FILE          hulls as .obj, .wrl, .glb, .off or .ply (one mesh per hull)\n"
     "  --report FILE.json         hull list, error measures, stage times\n"
@@ -85,8 +85,8 @@ int main(int argc, char** argv) {
   if (argv[1][0] == '-') return Usage("the input file comes first");
   std::string input = argv[1], output, report_path, log_path;
   vhacd::HacdParameters p;
-  // Positional form: exactly 7 numbers after the input.
-  bool positional = argc == 9;
+  // Positional form: 7 numbers after the input (named flags may follow).
+  bool positional = argc >= 9;
   for (int i = 2; positional && i < 9; ++i) {
     double d;
     positional = ParseDouble(argv[i], &d);
@@ -99,8 +99,10 @@ int main(int argc, char** argv) {
         !ParseDouble(argv[7], &connect) || !ParseUint(argv[8], &p.target_triangles))
       return Usage("bad number in the positional parameters (flags must be 0 or 1)");
     p.connect_distance = connect;
-  } else {
-    for (int i = 2; i + 1 < argc; i += 2) {
+  }
+  const int first_flag = positional ? 9 : 2;
+  {
+    for (int i = first_flag; i + 1 < argc; i += 2) {
       if (std::strcmp(argv[i], "--preset") != 0) continue;
       if (std::strcmp(argv[i + 1], "recommended") == 0)
         p = vhacd::HacdParameters::Recommended();
@@ -109,7 +111,7 @@ int main(int argc, char** argv) {
       else
         return Usage("--preset takes default or recommended");
     }
-    for (int i = 2; i < argc; ++i) {
+    for (int i = first_flag; i < argc; ++i) {
       const std::string a = argv[i];
       if (a == "--no-report") {
         p.compute_report = false;

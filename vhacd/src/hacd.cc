@@ -106,6 +106,7 @@ class Clustering {
     std::vector<uint32_t> dist;     // sorted distance point ids (ids < vertex count: mesh vertices)
     std::vector<Vec3> hull_points;  // points spanning its hull
     std::vector<uint32_t> edges;
+    std::vector<uint32_t> triangles;
     double area = 0.0, perimeter = 0.0;
     uint32_t version = 0;
     bool alive = true;
@@ -198,6 +199,8 @@ class Clustering {
                    std::back_inserter(merged));
     a.dist.swap(merged);
     std::vector<uint32_t>().swap(b.dist);
+    a.triangles.insert(a.triangles.end(), b.triangles.begin(), b.triangles.end());
+    std::vector<uint32_t>().swap(b.triangles);
     std::vector<Vec3>().swap(b.hull_points);
     // Re-attach b's edges to a, merging parallel ones.
     std::unordered_map<uint32_t, uint32_t> to;  // neighbour cluster -> edge of a
@@ -382,8 +385,12 @@ Result DecomposeHacdImpl(const MeshView& view, const HacdParameters& params, Obs
         face_id[t] = static_cast<uint32_t>(dist.size());
         dist.push_back({centroid[t], fnormal[t]});
       }
-  if (params.add_extra_dist_points) {
-    const internal::RayCaster caster(pts, tris);
+  // Rays from each triangle's centre along its inverted normal: the first surface hit gives the
+  // solid's depth behind the triangle (for the hulls) and, when that surface faces the same way,
+  // the extra distance point.
+  std::vector<double> depth(nt, 0.0);
+  const internal::RayCaster caster(pts, tris);
+  {
     std::vector<internal::DistPoint> extra(nt);
     std::vector<uint8_t> found(nt, 0);
     const double min_t = 1e-9 * diag;
@@ -393,16 +400,18 @@ Result DecomposeHacdImpl(const MeshView& view, const HacdParameters& params, Obs
           uint32_t hit = 0;
           double d = 0;
           if (!caster.Cast(centroid[t], dir, min_t, static_cast<uint32_t>(t), &hit, &d)) return;
+          depth[t] = d;
           if (!(fnormal[hit].dot(dir) > 0)) return;
           extra[t] = {centroid[t] + d * dir, fnormal[hit]};
           found[t] = 1;
         }))
       return Fail(Status::kCancelled, "cancelled");
-    for (size_t t = 0; t < nt; ++t)
-      if (found[t]) {
-        extra_id[t] = static_cast<uint32_t>(dist.size());
-        dist.push_back(extra[t]);
-      }
+    if (params.add_extra_dist_points)
+      for (size_t t = 0; t < nt; ++t)
+        if (found[t]) {
+          extra_id[t] = static_cast<uint32_t>(dist.size());
+          dist.push_back(extra[t]);
+        }
   }
 
   internal::HacdCostParams cp;
@@ -424,6 +433,7 @@ Result DecomposeHacdImpl(const MeshView& view, const HacdParameters& params, Obs
     std::sort(c.dist.begin(), c.dist.end());
     for (uint32_t v : tris[t]) c.hull_points.push_back(pts[v]);
     c.area = farea[t];
+    c.triangles.assign(1, static_cast<uint32_t>(t));
     for (int k = 0; k < 3; ++k) c.perimeter += (pts[tris[t][k]] - pts[tris[t][(k + 1) % 3]]).norm();
   }
   auto& edges = clustering.edges();
@@ -457,6 +467,22 @@ Result DecomposeHacdImpl(const MeshView& view, const HacdParameters& params, Obs
         for (uint32_t id : alive[i]->dist)
           if (id < nv) cp_pts.push_back(pts[id]);
         hulls[i] = ClusterHull(cp_pts, 1e-4 * diag, params.max_vertices_per_hull);
+        // Fill toward the middle of the solid behind the surface patch, so that the hulls of the
+        // patches around a solid meet inside it instead of leaving a hollow between them; kept
+        // only when what it adds lies inside the solid.
+        const size_t surface_points = cp_pts.size();
+        for (uint32_t t : alive[i]->triangles)
+          if (depth[t] > 0) cp_pts.push_back(centroid[t] - (0.5 * depth[t]) * fnormal[t]);
+        if (cp_pts.size() == surface_points || hulls[i].empty()) return;
+        internal::HullMesh filled = ClusterHull(cp_pts, 1e-4 * diag, params.max_vertices_per_hull);
+        if (filled.empty()) return;
+        const internal::HullPlanes before(hulls[i]);
+        const Vec3 c = filled.Centroid();
+        std::vector<Vec3> probes{c};
+        for (const Vec3& v : filled.vertices) probes.push_back(0.5 * (v + c));
+        for (const Vec3& q : probes)
+          if (!before.Contains(q, 1e-4 * diag) && !caster.Inside(q)) return;
+        hulls[i] = std::move(filled);
       }))
     return Fail(Status::kCancelled, "cancelled");
   hulls.erase(std::remove_if(hulls.begin(), hulls.end(),

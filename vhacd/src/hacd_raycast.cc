@@ -114,5 +114,56 @@ bool RayCaster::Cast(const Vec3& origin, const Vec3& dir, double min_t, uint32_t
   return true;
 }
 
+int RayCaster::CountHits(const Vec3& origin, const Vec3& dir) const {
+  if (nodes_.empty()) return 0;
+  int hits = 0;
+  const Vec3 inv(1.0 / dir[0], 1.0 / dir[1], 1.0 / dir[2]);
+  std::vector<uint32_t> stack{0};
+  while (!stack.empty()) {
+    const Node& n = nodes_[stack.back()];
+    stack.pop_back();
+    double t0 = 0.0, t1 = HUGE_VAL;
+    bool miss = false;
+    for (int k = 0; k < 3 && !miss; ++k) {
+      double a = (n.lo[k] - origin[k]) * inv[k], b = (n.hi[k] - origin[k]) * inv[k];
+      if (a > b) std::swap(a, b);
+      t0 = std::max(t0, a);
+      t1 = std::min(t1, b);
+      miss = !(t0 <= t1);
+    }
+    if (miss) continue;
+    if (n.count == 0) {
+      stack.push_back(n.left);
+      stack.push_back(n.right);
+      continue;
+    }
+    for (uint32_t i = n.first; i < n.first + n.count; ++i) {
+      const uint32_t tri = order_[i];
+      const Vec3& a = points_[triangles_[tri][0]];
+      const Vec3 e1 = points_[triangles_[tri][1]] - a, e2 = points_[triangles_[tri][2]] - a;
+      const Vec3 pv = dir.cross(e2);
+      const double det = e1.dot(pv);
+      if (!(std::fabs(det) > 1e-300)) continue;
+      const Vec3 tv = origin - a;
+      const double u = tv.dot(pv) / det;
+      if (u < 0 || u > 1) continue;
+      const Vec3 qv = tv.cross(e1);
+      const double v = dir.dot(qv) / det;
+      if (v < 0 || u + v > 1) continue;
+      if (e2.dot(qv) / det > 0) ++hits;
+    }
+  }
+  return hits;
+}
+
+bool RayCaster::Inside(const Vec3& p) const {
+  static const Vec3 dirs[3] = {Vec3(1.0, 0.1234, 0.0567).normalized(),
+                               Vec3(-0.0789, 1.0, 0.1357).normalized(),
+                               Vec3(0.1111, -0.0987, -1.0).normalized()};
+  int votes = 0;
+  for (const Vec3& d : dirs) votes += CountHits(p, d) & 1;
+  return votes >= 2;
+}
+
 }  // namespace internal
 }  // namespace vhacd

@@ -22,12 +22,17 @@ class RayCaster {
   bool Cast(const Vec3& origin, const Vec3& dir, double min_t, uint32_t skip, uint32_t* triangle,
             double* t) const;
 
+  // Whether p is inside the surface: at least two of three fixed, slightly skewed rays cross it an
+  // odd number of times (exact for closed surfaces, a vote for open ones).
+  bool Inside(const Vec3& p) const;
+
  private:
   struct Node {
     Vec3 lo, hi;
     uint32_t first = 0, count = 0;  // leaf: order_[first, first + count)
     uint32_t left = 0, right = 0;
   };
+  int CountHits(const Vec3& origin, const Vec3& dir) const;
   uint32_t Build(uint32_t first, uint32_t count, const std::vector<Vec3>& centroids);
   const std::vector<Vec3>& points_;
   const std::vector<std::array<uint32_t, 3>>& triangles_;

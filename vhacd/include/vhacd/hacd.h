@@ -31,8 +31,13 @@
 //      an edge is collapsed while its concavity is below `concavity` and more than
 //      `min_clusters` clusters remain, and always when one of its clusters is smaller than
 //      small_cluster_threshold % of the total area (the blog's Simplify);
-//   7. one convex hull per cluster (a flat cluster is given a thickness of 1e-4 of the diagonal),
-//      reduced to max_vertices_per_hull vertices by largest volume increment;
+//   7. one convex hull per cluster (a flat cluster is given a thickness of 1e-4 of the diagonal).
+//      Extension: the hull is also extended halfway through the solid behind its surface patch
+//      (to the midpoint of the inward ray from each triangle's centre), so that the hulls of the
+//      patches around a solid meet inside it instead of leaving a hollow between them; the
+//      extension is kept only when the points it adds (the centroid of the extended hull and the
+//      midpoints between it and each vertex) lie inside the surface (ray-parity vote). Each hull
+//      is then reduced to max_vertices_per_hull vertices by largest volume increment;
 //   8. an error report (as Decompose's, measured on a voxel grid of the input).
 //
 // Determinism: the output is identical for any num_threads and from run to run.
