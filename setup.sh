@@ -19,6 +19,7 @@ PACKAGES=(
   g++
   libassimp-dev
   libbullet-dev
+  libbullet-extras-dev
   libclang-rt-14-dev
   libdraco-dev
   libeigen3-dev

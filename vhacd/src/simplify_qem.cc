@@ -41,6 +41,7 @@ class Collapser {
     locked_.assign(n, 0);
     seam_nbrs_.resize(n);
     tri_dead_.assign(tris_.size(), 0);
+    orig_normal_.assign(tris_.size(), Vec3::Zero());
     alive_tris_ = tris_.size();
     for (uint32_t t = 0; t < tris_.size(); ++t) {
       const Tri& tri = tris_[t];
@@ -49,6 +50,7 @@ class Collapser {
       const double len = nrm.norm();
       if (!(len > 0)) continue;
       nrm /= len;
+      orig_normal_[t] = nrm;
       const double area = 0.5 * len;
       for (uint32_t v : tri) {
         AddPlane(v, nrm, pos_[tri[0]], area);
@@ -259,6 +261,8 @@ class Collapser {
         const double l0 = n0.norm(), l1 = n1.norm();
         if (!(l1 > 1e-12 * (q[1] - q[0]).squaredNorm()) || !(l1 > 0)) return false;
         if (l0 > 0 && n0.dot(n1) < kMinNormalCos * l0 * l1) return false;
+        // Nor drift, collapse after collapse, away from the input triangle it comes from.
+        if (n1.dot(orig_normal_[t]) < kMinNormalCos * l1) return false;
       }
     return true;
   }
@@ -336,6 +340,7 @@ class Collapser {
   std::vector<uint32_t> stamp_;
   std::vector<uint8_t> dead_, border_, locked_, tri_dead_;
   std::vector<uint64_t> unique_edges_;
+  std::vector<Vec3> orig_normal_;
   size_t alive_tris_ = 0;
   double error_ = 0.0;
   std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> heap_;
