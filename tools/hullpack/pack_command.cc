@@ -31,6 +31,8 @@ const char kUsage[] =
     "  --hulls all|none|auto   which meshes get collision hulls (auto)\n"
     "  --skinned-hulls    with --hulls auto, decompose skinned meshes too\n"
     "  --physics omi|khr  OMI_physics_shape/body (default) or the KHR_physics_rigid_bodies draft\n"
+    "  --method vhacd|hacd     decomposer: V-HACD 2.0 (voxels, default) or HACD (surface\n"
+    "                     clustering, `testHACD 2 100 0 1 1 30 2000`; open and thin shapes)\n"
     "  --quality default|high  decomposition preset (default: V-HACD 2.0's, hulls merged while "
     "they\n"
     "                     stick out by at most 3 % of the diagonal, at most 24 vertices per hull)\n"
@@ -207,6 +209,13 @@ int RunPackCommand(const std::vector<std::string>& args) {
         return kExitUsage;
       }
       options.glb.physics = v == "omi" ? PhysicsForm::kOmi : PhysicsForm::kKhr;
+    } else if (a == "--method") {
+      if (!value(&v) || (v != "vhacd" && v != "hacd")) {
+        std::fprintf(stderr, "hullpack pack: --method takes vhacd or hacd\n");
+        return kExitUsage;
+      }
+      options.collision.method =
+          v == "hacd" ? DecompositionMethod::kHacd : DecompositionMethod::kVhacd;
     } else if (a == "--quality") {
       if (!value(&v) || (v != "default" && v != "high")) {
         std::fprintf(stderr, "hullpack pack: --quality takes default or high\n");
@@ -243,6 +252,8 @@ int RunPackCommand(const std::vector<std::string>& args) {
   if (resolution) p.resolution = static_cast<uint32_t>(resolution);
   if (max_hulls >= 0) p.max_convex_hulls = static_cast<uint32_t>(max_hulls);
   if (max_vertices) p.max_vertices_per_hull = static_cast<uint32_t>(max_vertices);
+  if (max_vertices)
+    options.collision.hacd_parameters.max_vertices_per_hull = static_cast<uint32_t>(max_vertices);
   if (concavity >= 0) p.concavity = concavity;
 
   // One input and a file name: that file. Otherwise a folder of NAME.packed.glb.
