@@ -41,12 +41,14 @@
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "bench_util.h"
+#include "common/cli_args.h"
 #include "hull_metrics.h"
 #include "hull_program.h"
 #include "vhacd/hacd.h"
@@ -612,36 +614,41 @@ int SimplifyBench(const std::string& folder, const std::map<std::string, std::st
   return 0;
 }
 
-int Usage(FILE* out, int code) {
-  std::fprintf(
-      out,
-      "usage: hacd_bench FOLDER [--hacd '2 100 0 1 1 30 2000'] [--only A,B] [--repeats N]\n"
-      "                  [--timeout S] [--samples N] [--threads N] [--csv FILE]\n"
-      "                  [--no-bullet] [--no-vhacd]\n"
-      "       hacd_bench --timing MESH [--targets 500,1000,...] [--hacd LINE] [--hulls DIR]\n"
-      "       hacd_bench --simplify FOLDER [--only A,B] [--node NODE_MODULES] [--samples N]\n");
-  return code;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
   std::map<std::string, std::string> opt;
   std::vector<std::string> pos;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "-h" || a == "--help") return Usage(stdout, 0);
-    if (a == "--no-bullet" || a == "--no-vhacd") {
-      opt[a] = "1";
-    } else if (a.rfind("--", 0) == 0) {
-      if (i + 1 >= argc) return Usage(stderr, 64);
-      opt[a] = argv[++i];
-    } else {
-      pos.push_back(a);
-    }
-  }
+  hullpack::CliArgs cli(
+      "hacd_bench", "FOLDER [options] | --timing MESH | --simplify FOLDER",
+      "hullpack's HACD, V-HACD and Bullet's HACD side by side on every mesh of "
+      "FOLDER, measured by\nhull_metrics; the blog's timing table; the simplifier "
+      "against meshoptimizer's.");
+  cli.Positional("FOLDER", &pos, 0, 1);
+  auto text = [&](const char* names, const char* value, const char* help) {
+    const std::string key = std::string(names).substr(std::string(names).rfind(' ') + 1);
+    cli.Value(names, value, help, [&opt, key](const std::string& v) {
+      opt[key] = v;
+      return std::string();
+    });
+  };
+  text("--hacd", "LINE", "the seven testHACD numbers (default '2 100 0 1 1 30 2000')");
+  text("--only", "A,B", "only these meshes (file names without extension)");
+  text("--repeats", "N", "runs per method and mesh; times are medians (1)");
+  text("--timeout", "S", "seconds before a run is stopped (600)");
+  text("--samples", "N", "surface samples per measure");
+  text("--threads", "N", "threads of hullpack's methods (decomposition 1, timing 0 = every core)");
+  text("--csv", "FILE", "every row as CSV");
+  text("--timing", "MESH", "the blog's timing table on MESH (bunny)");
+  text("--targets", "LIST", "triangle counts of --timing (500,1000,2000,4000,8000,16000)");
+  text("--hulls", "DIR", "with --timing, write each row's hulls there");
+  text("--simplify", "FOLDER", "the simplifier against meshoptimizer's at 50 % and 5 %");
+  text("--node", "DIR", "the node_modules folder holding meshoptimizer (node_modules)");
+  cli.Action("--no-bullet", "leave Bullet's HACD out", [&opt]() { opt["--no-bullet"] = "1"; });
+  cli.Action("--no-vhacd", "leave V-HACD out", [&opt]() { opt["--no-vhacd"] = "1"; });
+  if (std::optional<int> exit_code = cli.Parse(argc, argv)) return *exit_code;
   if (opt.count("--timing")) return Timing(opt.at("--timing"), opt);
   if (opt.count("--simplify")) return SimplifyBench(opt.at("--simplify"), opt);
-  if (pos.size() != 1) return Usage(stderr, 64);
+  if (pos.size() != 1) return cli.UsageError("give FOLDER, --timing MESH or --simplify FOLDER");
   return Decomposition(pos[0], opt);
 }

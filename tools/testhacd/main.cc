@@ -4,167 +4,130 @@
 //   testHACD input.obj minNClusters maxConcavity invertInputFaces addExtraDistPoints
 //            addFacesPoints ConnectedComponentsDist targetNTrianglesDecimatedMesh
 //   e.g. testHACD input.obj 2 100 0 1 1 30 2000
-// Named flags (after the input, or after the seven numbers): see kUsage below. Every mesh of the
+// Named options (after the input, or after the seven numbers): see --help. Every mesh of the
 // input (with its node transforms) is decomposed as one soup. Progress goes to stderr; a summary to
 // stdout. Exit status: 0 success, 1 decomposition or I/O error, 64 usage error.
 #include <cstdio>
-#include <cstring>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "common/cli_args.h"
 #include "hull_program.h"
 #include "vhacd/hacd.h"
 #include "vhacd/vhacd.h"
 
 namespace {
 
-using hullpack::ParseDouble;
-using hullpack::ParseUint;
+constexpr char kPositionalForm[] =
+    "The original tool's positional form (seven numbers after INPUT; options may follow):\n"
+    "  testHACD INPUT minNClusters maxConcavity invertInputFaces addExtraDistPoints\n"
+    "           addFacesPoints ConnectedComponentsDist targetNTrianglesDecimatedMesh\n"
+    "  e.g. testHACD in.obj 2 100 0 1 1 30 2000   (the recommended line; --preset recommended)";
 
-constexpr int kUsageError = 64;
+struct CommandLine {
+  std::string input, output, report_path, log_path;
+  vhacd::HacdParameters parameters;
+};
 
-const char kUsage[] =
-    "usage: testHACD input minNClusters maxConcavity invertInputFaces addExtraDistPoints\n"
-    "                addFacesPoints ConnectedComponentsDist targetNTrianglesDecimatedMesh\n"
-    "         e.g. testHACD input.obj 2 100 0 1 1 30 2000   (the recommended line)\n"
-    "       testHACD input [options]   (options may also follow the seven numbers)\n"
-    "options (defaults: the HACD parameter table):\n"
-    "  -o, --output FILE          hulls as .obj, .wrl, .glb, .off or .ply (one mesh per hull)\n"
-    "  --report FILE.json         hull list, error measures, stage times\n"
-    "  --log FILE                 the library's log messages\n"
-    "  --preset default|recommended   the parameter table / `2 100 0 1 1 30 2000`\n"
-    "  --min-clusters N           NClusters: fewest hulls [1, 100000] (1)\n"
-    "  --concavity X              Concavity: largest concavity of a merge, in units of a\n"
-    "                             2*scale-factor diagonal [0, 1e7] (100)\n"
-    "  --invert-faces 0|1         invertInputFaces (0)\n"
-    "  --extra-dist-points 0|1    AddExtraDistPoints: rays for bowl-like shapes (1)\n"
-    "  --face-points 0|1          AddFacesPoints: a ray per triangle centre (1)\n"
-    "  --connect-dist X           ConnectDist: join pieces closer than this; -1 = never [-1, 1e7] "
-    "(30)\n"
-    "  --target-triangles N       NTargetTrianglesDecimatedMesh: decimate first; 0 = off (1000)\n"
-    "  --max-vertices N           NVerticesPerCH [4, 1024] (100)\n"
-    "  --scale-factor X           ScaleFactor [1, 1e6] (1000)\n"
-    "  --small-cluster X          SmallClusterThreshold, % of the area [0, 100] (0.25)\n"
-    "  --volume-weight X          VolumeWeight [0, 1000] (0)\n"
-    "  --compacity-weight X       CompacityWeight [0, 1000] (0.0001)\n"
-    "  --flat-threshold X         FlatRegionThreshold, % of ScaleFactor [0, 100] (1)\n"
-    "  --computation-weight X     ComputationWeight [0, 1000] (0.01)\n"
-    "  --threads N                0 = every core (0)\n"
-    "  --no-report                skip the error measures (faster)\n"
-    "  -h, --help                 this text\n"
-    "  --version                  the library version\n";
-
-int Usage(const char* why) {
-  if (why != nullptr) std::fprintf(stderr, "testHACD: %s\n", why);
-  std::fputs(kUsage, stderr);
-  return kUsageError;
+// The seven numbers of the positional form, or nothing when args[1..7] are not all numbers.
+bool IsPositionalForm(const std::vector<std::string>& args) {
+  if (args.size() < 8) return false;
+  double d = 0;
+  for (size_t i = 1; i <= 7; ++i)
+    if (!hullpack::CliArgs::ParseNumber(args[i], -1e300, 1e300, &d).empty()) return false;
+  return true;
 }
 
-bool ParseBool(const char* s, bool* out) {
-  uint32_t u = 0;
-  if (!ParseUint(s, &u) || u > 1) return false;
-  *out = u == 1;
-  return true;
+std::optional<int> ParseCommandLine(std::vector<std::string> args, CommandLine* cmd) {
+  vhacd::HacdParameters& p = cmd->parameters;
+  std::vector<std::string> inputs;
+  hullpack::CliArgs cli("testHACD", "INPUT [-o HULLS] [options]",
+                        "HACD convex decomposition (dual-graph clustering of the surface, after "
+                        "quadric\nsimplification) of every mesh of INPUT, as one soup. Defaults: "
+                        "the HACD parameter table.");
+  cli.Positional("INPUT", &inputs, 1, 1);
+  cli.String("-o, --output", "HULLS", &cmd->output,
+             "the hulls, one mesh each (.obj .wrl .glb .off .ply)");
+  cli.String("--report", "FILE.json", &cmd->report_path,
+             "hull count, error measures, per-stage seconds, per-hull volume");
+  cli.String("--log", "FILE", &cmd->log_path, "the library's log messages");
+  cli.Value("--preset", "default|recommended",
+            "the parameter table, or the recommended line 2 100 0 1 1 30 2000",
+            [&p](const std::string& v) {
+              if (v != "default" && v != "recommended")
+                return "takes default or recommended, not '" + v + "'";
+              p = v == "recommended" ? vhacd::HacdParameters::Recommended()
+                                     : vhacd::HacdParameters();
+              return std::string();
+            })
+      .First();
+  auto flag01 = [&cli](const char* names, bool* out, const char* help) {
+    cli.Value(names, "0|1", help, [out](const std::string& v) {
+      if (v != "0" && v != "1") return "takes 0 or 1, not '" + v + "'";
+      *out = v == "1";
+      return std::string();
+    });
+  };
+  cli.Int("--min-clusters", "N", 1, 100000, &p.min_clusters, "NClusters: fewest hulls (1)");
+  cli.Double("--concavity", "X", 0, 1e7, &p.concavity,
+             "Concavity: largest concavity of a merge, in units of a diagonal of\n"
+             "2 * scale-factor (100)");
+  flag01("--invert-faces", &p.invert_input_faces, "invertInputFaces (0)");
+  flag01("--extra-dist-points", &p.add_extra_dist_points,
+         "AddExtraDistPoints: rays for bowl-like shapes (1)");
+  flag01("--face-points", &p.add_face_points, "AddFacesPoints: a ray per triangle centre (1)");
+  cli.Double("--connect-dist", "X", -1, 1e7, &p.connect_distance,
+             "ConnectDist: join pieces closer than this; -1: never (30)");
+  cli.Int("--target-triangles", "N", 0, 2147483647LL, &p.target_triangles,
+          "NTargetTrianglesDecimatedMesh: simplify first; 0: off (1000)");
+  cli.Int("--max-vertices", "N", 4, 1024, &p.max_vertices_per_hull, "NVerticesPerCH (100)");
+  cli.Double("--scale-factor", "X", 1, 1e6, &p.scale_factor, "ScaleFactor (1000)");
+  cli.Double("--small-cluster", "X", 0, 100, &p.small_cluster_threshold,
+             "SmallClusterThreshold, % of the area (0.25)");
+  cli.Double("--volume-weight", "X", 0, 1e3, &p.volume_weight, "VolumeWeight (0)");
+  cli.Double("--compacity-weight", "X", 0, 1e3, &p.compacity_weight, "CompacityWeight (0.0001)");
+  cli.Double("--flat-threshold", "X", 0, 100, &p.flat_region_threshold,
+             "FlatRegionThreshold, % of ScaleFactor (1)");
+  cli.Double("--computation-weight", "X", 0, 1e3, &p.computation_weight,
+             "ComputationWeight (0.01)");
+  cli.Int("--threads", "N", 0, 256, &p.num_threads, "worker threads (0: every core)");
+  cli.Action("--no-report", "skip the error measures (faster)",
+             [&p]() { p.compute_report = false; });
+  cli.Epilog(kPositionalForm);
+  std::vector<std::string> rest = args;
+  if (IsPositionalForm(args)) {
+    // The seven numbers become the named options they stand for, so that options given after
+    // them refine them.
+    const char* names[7] = {"--min-clusters",      "--concavity",   "--invert-faces",
+                            "--extra-dist-points", "--face-points", "--connect-dist",
+                            "--target-triangles"};
+    rest.assign(1, args[0]);
+    for (int i = 0; i < 7; ++i) {
+      rest.push_back(names[i]);
+      rest.push_back(args[1 + i]);
+    }
+    rest.insert(rest.end(), args.begin() + 8, args.end());
+  }
+  if (std::optional<int> exit_code = cli.Parse(rest)) return exit_code;
+  cmd->input = inputs[0];
+  std::string why;
+  if (vhacd::ValidateHacdParameters(p, &why) != vhacd::Status::kOk) return cli.UsageError(why);
+  return std::nullopt;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "-h") == 0 || std::strcmp(argv[i], "--help") == 0) {
-      std::fputs(kUsage, stdout);
-      return 0;
-    }
-    if (std::strcmp(argv[i], "--version") == 0) {
-      std::printf("testHACD (vhacd %d.%d.%d)\n", VHACD_VERSION / 10000, VHACD_VERSION / 100 % 100,
-                  VHACD_VERSION % 100);
-      return 0;
-    }
-  }
-  if (argc < 2) return Usage(nullptr);
-  if (argv[1][0] == '-') return Usage("the input file comes first");
-  std::string input = argv[1], output, report_path, log_path;
-  vhacd::HacdParameters p;
-  // Positional form: 7 numbers after the input (named flags may follow).
-  bool positional = argc >= 9;
-  for (int i = 2; positional && i < 9; ++i) {
-    double d;
-    positional = ParseDouble(argv[i], &d);
-  }
-  if (positional) {
-    double connect = 0;
-    if (!ParseUint(argv[2], &p.min_clusters) || !ParseDouble(argv[3], &p.concavity) ||
-        !ParseBool(argv[4], &p.invert_input_faces) ||
-        !ParseBool(argv[5], &p.add_extra_dist_points) || !ParseBool(argv[6], &p.add_face_points) ||
-        !ParseDouble(argv[7], &connect) || !ParseUint(argv[8], &p.target_triangles))
-      return Usage("bad number in the positional parameters (flags must be 0 or 1)");
-    p.connect_distance = connect;
-  }
-  const int first_flag = positional ? 9 : 2;
-  {
-    for (int i = first_flag; i + 1 < argc; i += 2) {
-      if (std::strcmp(argv[i], "--preset") != 0) continue;
-      if (std::strcmp(argv[i + 1], "recommended") == 0)
-        p = vhacd::HacdParameters::Recommended();
-      else if (std::strcmp(argv[i + 1], "default") == 0)
-        p = vhacd::HacdParameters();
-      else
-        return Usage("--preset takes default or recommended");
-    }
-    for (int i = first_flag; i < argc; ++i) {
-      const std::string a = argv[i];
-      if (a == "--no-report") {
-        p.compute_report = false;
-        continue;
-      }
-      if (i + 1 >= argc) return Usage(("missing value after " + a).c_str());
-      const char* v = argv[++i];
-      bool ok = true;
-      if (a == "-o" || a == "--output")
-        output = v;
-      else if (a == "--report")
-        report_path = v;
-      else if (a == "--log")
-        log_path = v;
-      else if (a == "--preset")
-        continue;
-      else if (a == "--min-clusters")
-        ok = ParseUint(v, &p.min_clusters);
-      else if (a == "--concavity")
-        ok = ParseDouble(v, &p.concavity);
-      else if (a == "--invert-faces")
-        ok = ParseBool(v, &p.invert_input_faces);
-      else if (a == "--extra-dist-points")
-        ok = ParseBool(v, &p.add_extra_dist_points);
-      else if (a == "--face-points")
-        ok = ParseBool(v, &p.add_face_points);
-      else if (a == "--connect-dist")
-        ok = ParseDouble(v, &p.connect_distance);
-      else if (a == "--target-triangles")
-        ok = ParseUint(v, &p.target_triangles);
-      else if (a == "--max-vertices")
-        ok = ParseUint(v, &p.max_vertices_per_hull);
-      else if (a == "--scale-factor")
-        ok = ParseDouble(v, &p.scale_factor);
-      else if (a == "--small-cluster")
-        ok = ParseDouble(v, &p.small_cluster_threshold);
-      else if (a == "--volume-weight")
-        ok = ParseDouble(v, &p.volume_weight);
-      else if (a == "--compacity-weight")
-        ok = ParseDouble(v, &p.compacity_weight);
-      else if (a == "--flat-threshold")
-        ok = ParseDouble(v, &p.flat_region_threshold);
-      else if (a == "--computation-weight")
-        ok = ParseDouble(v, &p.computation_weight);
-      else if (a == "--threads")
-        ok = ParseUint(v, &p.num_threads);
-      else
-        return Usage(("unknown option " + a).c_str());
-      if (!ok) return Usage(("bad value for " + a).c_str());
-    }
-  }
-  std::string why;
-  if (vhacd::ValidateHacdParameters(p, &why) != vhacd::Status::kOk) return Usage(why.c_str());
+  CommandLine cmd;
+  if (std::optional<int> exit_code =
+          ParseCommandLine(std::vector<std::string>(argv + 1, argv + argc), &cmd))
+    return *exit_code;
+  const std::string& input = cmd.input;
+  const std::string& output = cmd.output;
+  const std::string& report_path = cmd.report_path;
+  const std::string& log_path = cmd.log_path;
+  const vhacd::HacdParameters& p = cmd.parameters;
 
   std::vector<double> points;
   std::vector<uint32_t> indices;
@@ -190,13 +153,17 @@ int main(int argc, char** argv) {
     return 1;
   }
   const vhacd::Report& rep = r.report;
-  std::printf(
-      "hulls: %zu (from %u triangles), concavity %.4f (mesh->hulls %.4f, hulls->mesh %.4f), IoU "
-      "%s, %.2f s\n",
-      r.hulls.size(), rep.parts_before_merge, rep.concavity, rep.hausdorff_mesh_to_hulls,
-      rep.hausdorff_hulls_to_mesh,
-      rep.volume_iou >= 0 ? hullpack::JsonNumber(rep.volume_iou).c_str() : "n/a",
-      rep.seconds_total);
+  if (rep.concavity >= 0)
+    std::printf(
+        "hulls: %zu (from %u triangles), concavity %.4f (mesh->hulls %.4f, hulls->mesh %.4f), "
+        "IoU %s, %.2f s\n",
+        r.hulls.size(), rep.parts_before_merge, rep.concavity, rep.hausdorff_mesh_to_hulls,
+        rep.hausdorff_hulls_to_mesh,
+        rep.volume_iou >= 0 ? hullpack::JsonNumber(rep.volume_iou).c_str() : "n/a",
+        rep.seconds_total);
+  else
+    std::printf("hulls: %zu (from %u triangles), %.2f s\n", r.hulls.size(), rep.parts_before_merge,
+                rep.seconds_total);
   if (!report_path.empty()) {
     if (!hullpack::WriteDecompositionReport(report_path, input, "hacd", r)) {
       std::fprintf(stderr, "testHACD: cannot write %s\n", report_path.c_str());

@@ -10,22 +10,6 @@
 
 namespace hullpack {
 
-bool ParseDouble(const char* s, double* out) {
-  char* end = nullptr;
-  const double v = std::strtod(s, &end);
-  if (end == s || *end != '\0' || !std::isfinite(v)) return false;
-  *out = v;
-  return true;
-}
-
-bool ParseUint(const char* s, uint32_t* out) {
-  char* end = nullptr;
-  const long long v = std::strtoll(s, &end, 10);
-  if (end == s || *end != '\0' || v < 0 || v > 0xffffffffLL) return false;
-  *out = static_cast<uint32_t>(v);
-  return true;
-}
-
 ProgressLine::ProgressLine(const std::string& log_path) {
   if (!log_path.empty()) log_.open(log_path.c_str());
 }

@@ -1,5 +1,5 @@
-// Pieces shared by the decomposition programs (testVHACD, testHACD): number parsing, the progress
-// line and log file, the JSON report and the hull scene writer.
+// Pieces shared by the decomposition programs (testVHACD, testHACD): the progress line and log
+// file, the JSON report and the hull scene writer.
 #ifndef HULLPACK_TOOLS_TESTVHACD_HULL_PROGRAM_H_
 #define HULLPACK_TOOLS_TESTVHACD_HULL_PROGRAM_H_
 
@@ -11,11 +11,6 @@
 #include "vhacd/vhacd.h"
 
 namespace hullpack {
-
-// Whole-string, finite number; false otherwise.
-bool ParseDouble(const char* s, double* out);
-// Whole-string integer in [0, 2^32); false otherwise.
-bool ParseUint(const char* s, uint32_t* out);
 
 // One progress line on stderr ("\r" updates) and, with a path, every log message to a file.
 class ProgressLine : public vhacd::Observer {
