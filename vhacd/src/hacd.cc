@@ -470,19 +470,28 @@ Result DecomposeHacdImpl(const MeshView& view, const HacdParameters& params, Obs
         // Fill toward the middle of the solid behind the surface patch, so that the hulls of the
         // patches around a solid meet inside it instead of leaving a hollow between them; kept
         // only when what it adds lies inside the solid.
-        const size_t surface_points = cp_pts.size();
-        for (uint32_t t : alive[i]->triangles)
-          if (depth[t] > 0) cp_pts.push_back(centroid[t] - (0.5 * depth[t]) * fnormal[t]);
-        if (cp_pts.size() == surface_points || hulls[i].empty()) return;
-        internal::HullMesh filled = ClusterHull(cp_pts, 1e-4 * diag, params.max_vertices_per_hull);
-        if (filled.empty()) return;
+        if (hulls[i].empty()) return;
         const internal::HullPlanes before(hulls[i]);
-        const Vec3 c = filled.Centroid();
-        std::vector<Vec3> probes{c};
-        for (const Vec3& v : filled.vertices) probes.push_back(0.5 * (v + c));
-        for (const Vec3& q : probes)
-          if (!before.Contains(q, 1e-4 * diag) && !caster.Inside(q)) return;
-        hulls[i] = std::move(filled);
+        const size_t surface_points = cp_pts.size();
+        for (double fraction : {0.5, 0.25}) {
+          cp_pts.resize(surface_points);
+          for (uint32_t t : alive[i]->triangles)
+            if (depth[t] > 0) cp_pts.push_back(centroid[t] - (fraction * depth[t]) * fnormal[t]);
+          if (cp_pts.size() == surface_points) return;
+          internal::HullMesh filled =
+              ClusterHull(cp_pts, 1e-4 * diag, params.max_vertices_per_hull);
+          if (filled.empty()) return;
+          const Vec3 c = filled.Centroid();
+          bool inside = true;
+          for (size_t k = 0; k <= filled.vertices.size() && inside; ++k) {
+            const Vec3 q = k == 0 ? c : Vec3(0.5 * (filled.vertices[k - 1] + c));
+            inside = before.Contains(q, 1e-4 * diag) || caster.Inside(q);
+          }
+          if (inside) {
+            hulls[i] = std::move(filled);
+            return;
+          }
+        }
       }))
     return Fail(Status::kCancelled, "cancelled");
   hulls.erase(std::remove_if(hulls.begin(), hulls.end(),

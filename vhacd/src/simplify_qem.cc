@@ -1,6 +1,7 @@
 #include "simplify_qem.h"
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <queue>
@@ -21,8 +22,14 @@ struct Candidate {
   double cost = 0.0;
   uint32_t from = 0, to = 0;  // `from` is removed, `to` moves to `pos`
   Vec3 pos = Vec3::Zero();
+};
+
+// A heap entry (small: the heap is the hot spot); the position is recomputed when it is popped.
+struct Entry {
+  double cost = 0.0;
+  uint32_t from = 0, to = 0;
   uint32_t stamp_from = 0, stamp_to = 0;
-  bool operator>(const Candidate& o) const {
+  bool operator>(const Entry& o) const {
     return std::tie(cost, from, to) > std::tie(o.cost, o.from, o.to);
   }
 };
@@ -98,11 +105,13 @@ class Collapser {
         const double span = static_cast<double>(start - std::min(start, opt_.target_triangles));
         if (span > 0) ctx->Progress(100.0 * (start - alive_tris_) / span, "collapsing edges");
       }
-      const Candidate c = heap_.top();
+      const Entry e = heap_.top();
       heap_.pop();
-      if (dead_[c.from] || dead_[c.to] || stamp_[c.from] != c.stamp_from ||
-          stamp_[c.to] != c.stamp_to)
+      if (dead_[e.from] || dead_[e.to] || stamp_[e.from] != e.stamp_from ||
+          stamp_[e.to] != e.stamp_to)
         continue;
+      Candidate c;
+      if (!Best(e.from, e.to, &c)) continue;
       const double err = ErrorOf(c);
       if (opt_.max_error > 0 && err > opt_.max_error) break;
       if (!Valid(c)) continue;
@@ -162,8 +171,15 @@ class Collapser {
   static bool Has(const Tri& t, uint32_t v) { return t[0] == v || t[1] == v || t[2] == v; }
 
   void Push(uint32_t a, uint32_t b) {
-    if (dead_[a] || dead_[b] || a == b) return;
-    if (locked_[a] && locked_[b]) return;
+    Candidate best;
+    if (!Best(a, b, &best)) return;
+    heap_.push({best.cost, best.from, best.to, stamp_[best.from], stamp_[best.to]});
+  }
+
+  // The cheapest collapse of edge (a, b) allowed by the border, seam and lock rules.
+  bool Best(uint32_t a, uint32_t b, Candidate* out) const {
+    if (dead_[a] || dead_[b] || a == b) return false;
+    if (locked_[a] && locked_[b]) return false;
     const Eigen::Matrix4d q = quadric_[a] + quadric_[b];
     Candidate best;
     best.cost = -1;
@@ -182,7 +198,7 @@ class Collapser {
     } else if (locked_[b]) {
       consider(a, b, pos_[b]);
     } else if (ba && bb) {
-      if (SharedTriangles(a, b) != 1 && !IsSeamEdge(a, b)) return;
+      if (SharedTriangles(a, b) != 1 && !IsSeamEdge(a, b)) return false;
       consider(b, a, pos_[a]);
       consider(a, b, pos_[b]);
     } else if (ba) {
@@ -193,10 +209,12 @@ class Collapser {
       const Vec3 mid = 0.5 * (pos_[a] + pos_[b]);
       const Eigen::Matrix3d m = q.topLeftCorner<3, 3>();
       const Vec3 rhs = -q.topRightCorner<3, 1>();
-      Eigen::FullPivLU<Eigen::Matrix3d> lu(m);
-      lu.setThreshold(1e-9);
-      if (lu.isInvertible()) {
-        const Vec3 x = lu.solve(rhs);
+      // Cramer's rule, refused when the matrix is near singular (a flat or straight region).
+      const Vec3 c0 = m.col(1).cross(m.col(2)), c1 = m.col(2).cross(m.col(0)),
+                 c2 = m.col(0).cross(m.col(1));
+      const double det = m.col(0).dot(c0);
+      if (std::fabs(det) > 1e-9 * m.squaredNorm() * std::sqrt(m.squaredNorm())) {
+        const Vec3 x = Vec3(c0.dot(rhs), c1.dot(rhs), c2.dot(rhs)) / det;
         const double reach = 2.0 * (pos_[a] - pos_[b]).norm();
         if (x.allFinite() && (x - mid).norm() <= reach) consider(b, a, x);
       }
@@ -204,10 +222,9 @@ class Collapser {
       consider(a, b, pos_[b]);
       consider(b, a, mid);
     }
-    if (best.cost < 0) return;
-    best.stamp_from = stamp_[best.from];
-    best.stamp_to = stamp_[best.to];
-    heap_.push(best);
+    if (best.cost < 0) return false;
+    *out = best;
+    return true;
   }
 
   void Neighbours(uint32_t v, std::vector<uint32_t>* out) const {
@@ -343,7 +360,7 @@ class Collapser {
   std::vector<Vec3> orig_normal_;
   size_t alive_tris_ = 0;
   double error_ = 0.0;
-  std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> heap_;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap_;
   std::vector<uint32_t> nu_, nv_, common_;
 };
 
