@@ -170,6 +170,8 @@ TEST(SimplifyTest, DeterministicAndErrorsAsValues) {
   ASSERT_TRUE(a.ok() && b.ok());
   EXPECT_EQ(a.points, b.points);
   EXPECT_EQ(a.indices, b.indices);
+  ASSERT_EQ(a.triangle_source.size(), a.triangle_count());
+  for (uint32_t t : a.triangle_source) EXPECT_LT(t, torus.triangle_count());
   EXPECT_GT(a.error, 0.0);
   EXPECT_LT(a.error, 0.05);
 

@@ -562,9 +562,11 @@ int SimplifyBench(const std::string& folder, const std::map<std::string, std::st
   const std::string node_modules =
       opt.count("--node") ? opt.at("--node") : std::string("node_modules");
   const size_t samples = opt.count("--samples") ? std::atol(opt.at("--samples").c_str()) : 50000;
-  std::printf("%-20s %8s %6s %9s %9s %10s %10s %8s %8s\n", "mesh", "tris", "ratio", "ours_tris",
-              "mo_tris", "ours_hd", "mo_hd", "ours_s", "mo_s");
-  std::map<double, std::vector<double>> ours_hd, mo_hd;
+  std::printf("%-20s %8s %6s %9s %9s %10s %10s %8s %8s %6s\n", "mesh", "tris", "ratio", "ours_tris",
+              "mo_tris", "ours_hd", "mo_hd", "ours_s", "mo_s", "flips");
+  // All meshes, and only those where both reach the same count (within 5 %: meshoptimizer stops
+  // early on some borders and seams).
+  std::map<double, std::vector<double>> ours_hd, mo_hd, ours_same, mo_same;
   for (const std::string& name : MeshFiles(folder, opt.count("--only") ? opt.at("--only") : "")) {
     Mesh mesh;
     if (!LoadMesh(folder + "/" + name, &mesh)) continue;
@@ -599,14 +601,31 @@ int SimplifyBench(const std::string& folder, const std::map<std::string, std::st
                diag;
       };
       const double a = s.ok() ? hd(ours) : -1, b = mo_ok ? hd(mo) : -1;
+      size_t flips = 0;
+      for (size_t t = 0; t < s.triangle_count(); ++t) {
+        const auto& tri = ours.triangles[t];
+        const V3 n = (ours.points[tri[1]] - ours.points[tri[0]])
+                         .cross(ours.points[tri[2]] - ours.points[tri[0]]);
+        // Flipped: facing away from the input triangle it descends from.
+        const auto& src = in.triangles[s.triangle_source[t]];
+        const V3 m =
+            (in.points[src[1]] - in.points[src[0]]).cross(in.points[src[2]] - in.points[src[0]]);
+        flips += n.dot(m) <= 0;
+      }
       if (a >= 0 && b >= 0) {
         ours_hd[ratio].push_back(a);
         mo_hd[ratio].push_back(b);
+        const double na = static_cast<double>(ours.triangles.size()),
+                     nb = static_cast<double>(mo.triangles.size());
+        if (std::fabs(na - nb) <= 0.05 * std::max(na, nb)) {
+          ours_same[ratio].push_back(a);
+          mo_same[ratio].push_back(b);
+        }
       }
-      std::printf("%-20s %8zu %6.2f %9zu %9zu %10s %10s %8.3f %8s\n",
+      std::printf("%-20s %8zu %6.2f %9zu %9zu %10s %10s %8.3f %8s %6zu\n",
                   name.substr(0, name.rfind('.')).c_str(), in.triangles.size(), ratio,
                   ours.triangles.size(), mo.triangles.size(), Fmt(a, "%.5f").c_str(),
-                  Fmt(b, "%.5f").c_str(), ours_s, Fmt(mo_s, "%.3f").c_str());
+                  Fmt(b, "%.5f").c_str(), ours_s, Fmt(mo_s, "%.3f").c_str(), flips);
       std::fflush(stdout);
     }
   }
@@ -615,6 +634,12 @@ int SimplifyBench(const std::string& folder, const std::map<std::string, std::st
         "median symmetric Hausdorff at %.0f %%: hullpack %s, meshoptimizer %s (%zu meshes)\n",
         ratio * 100, Fmt(Median(ours_hd[ratio]), "%.5f").c_str(),
         Fmt(Median(mo_hd[ratio]), "%.5f").c_str(), ours_hd[ratio].size());
+  for (double ratio : {0.5, 0.05})
+    std::printf(
+        "  where both reach the same count at %.0f %%: hullpack %s, meshoptimizer %s (%zu "
+        "meshes)\n",
+        ratio * 100, Fmt(Median(ours_same[ratio]), "%.5f").c_str(),
+        Fmt(Median(mo_same[ratio]), "%.5f").c_str(), ours_same[ratio].size());
   return 0;
 }
 

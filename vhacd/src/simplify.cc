@@ -109,6 +109,7 @@ SimplifyResult SimplifyImpl(const MeshView& view, const SimplifyParameters& para
     r.point_source.push_back(input.point_source[out.source[i]]);
   }
   for (const auto& t : out.triangles) r.indices.insert(r.indices.end(), {t[0], t[1], t[2]});
+  for (uint32_t t : out.triangle_source) r.triangle_source.push_back(input.triangle_source[t]);
   r.error = diag > 0 ? std::min(1.0, out.error / diag) : 0.0;
   ctx.Progress(100, "done");
   return r;

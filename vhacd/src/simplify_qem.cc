@@ -332,8 +332,10 @@ class Collapser {
     out->points.clear();
     out->triangles.clear();
     out->source.clear();
+    out->triangle_source.clear();
     for (size_t t = 0; t < tris_.size(); ++t) {
       if (tri_dead_[t]) continue;
+      out->triangle_source.push_back(static_cast<uint32_t>(t));
       Tri tri = tris_[t];
       for (uint32_t& w : tri) {
         if (remap[w] == UINT32_MAX) {

@@ -23,7 +23,8 @@ struct QemMesh {
   std::vector<Vec3> points;
   std::vector<std::array<uint32_t, 3>> triangles;
   std::vector<uint32_t> source;  // output only: the input point each output point comes from
-  double error = 0.0;            // output only: largest collapse error (absolute distance)
+  std::vector<uint32_t> triangle_source;  // output only: the input triangle of each triangle
+  double error = 0.0;                     // output only: largest collapse error (absolute distance)
 };
 
 // `seam_edges` holds (min << 32 | max) keys of edges to keep like boundaries (any order).

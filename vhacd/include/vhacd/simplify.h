@@ -50,6 +50,9 @@ struct SimplifyResult {
   std::vector<double> points;     // 3 per point
   std::vector<uint32_t> indices;  // 3 per triangle
   std::vector<uint32_t> point_source;
+  // Input triangle each output triangle descends from (its material, its normal: an output
+  // triangle never turns more than ~78 degrees away from it).
+  std::vector<uint32_t> triangle_source;
   double error = 0.0;  // largest collapse error made, fraction of the bounding-box diagonal
 
   bool ok() const { return status == Status::kOk; }
