@@ -3,7 +3,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <sstream>
 
+#include "common/file_util.h"
 #include "io/scene_io.h"
 #include "scene/scene.h"
 #include "scene_soup.h"
@@ -38,8 +40,7 @@ std::string JsonNumber(double v) {
 
 bool WriteDecompositionReport(const std::string& path, const std::string& input,
                               const std::string& method, const vhacd::Result& r) {
-  std::ofstream f(path.c_str());
-  if (!f) return false;
+  std::ostringstream f;
   const vhacd::Report& rep = r.report;
   f << "{\n  \"input\": \"";
   for (char c : input) {
@@ -74,7 +75,8 @@ bool WriteDecompositionReport(const std::string& path, const std::string& input,
       << ", \"concavity\": " << JsonNumber(rep.hulls[i].concavity) << "}";
   }
   f << (rep.hulls.empty() ? "]\n" : "\n  ]\n") << "}\n";
-  return f.good();
+  const std::string text = f.str();
+  return WriteFileAtomically(path, text.data(), text.size()).ok();
 }
 
 std::string WriteHullScene(const vhacd::Result& r, const std::string& output) {

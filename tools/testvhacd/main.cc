@@ -10,6 +10,7 @@
 #include <cstring>
 #include <fstream>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -139,38 +140,34 @@ std::optional<int> ParseCommandLine(const std::vector<std::string>& args, Comman
   return std::nullopt;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  CommandLine cmd;
-  if (std::optional<int> exit_code =
-          ParseCommandLine(std::vector<std::string>(argv + 1, argv + argc), &cmd))
-    return *exit_code;
-  const std::string& input = cmd.input;
-  const std::string &output = cmd.output, &report_path = cmd.report_path, &log_path = cmd.log_path;
-  const vhacd::Parameters& p = cmd.parameters;
+// Reads every mesh of the input as one soup and decomposes it. An exit code when it cannot.
+std::optional<int> Run(const CommandLine& cmd, vhacd::Result* result) {
   std::vector<double> points;
   std::vector<uint32_t> indices;
-  const std::string read_error = hullpack::ReadSoup(input, &points, &indices);
+  const std::string read_error = hullpack::ReadSoup(cmd.input, &points, &indices);
   if (!read_error.empty()) {
     std::fprintf(stderr, "testVHACD: %s\n", read_error.c_str());
     return 1;
   }
-  std::printf("input: %s, %zu points, %zu triangles\n", input.c_str(), points.size() / 3,
+  std::printf("input: %s, %zu points, %zu triangles\n", cmd.input.c_str(), points.size() / 3,
               indices.size() / 3);
-
-  hullpack::ProgressLine progress(log_path);
-  if (!log_path.empty() && !progress.log_ok()) {
-    std::fprintf(stderr, "testVHACD: cannot write %s\n", log_path.c_str());
+  hullpack::ProgressLine progress(cmd.log_path);
+  if (!cmd.log_path.empty() && !progress.log_ok()) {
+    std::fprintf(stderr, "testVHACD: cannot write %s\n", cmd.log_path.c_str());
     return 1;
   }
-  const vhacd::Result r =
-      vhacd::Decompose(vhacd::MeshView::FromDouble(points.data(), points.size() / 3, indices.data(),
-                                                   indices.size() / 3),
-                       p, &progress);
+  *result = vhacd::Decompose(vhacd::MeshView::FromDouble(points.data(), points.size() / 3,
+                                                         indices.data(), indices.size() / 3),
+                             cmd.parameters, &progress);
+  return std::nullopt;
+}
+
+// The summary line on stdout, the report and the hulls; returns the exit code.
+int Report(const CommandLine& cmd, const vhacd::Result& r) {
   if (!r.ok()) {
     std::fprintf(stderr, "\ntestVHACD: %s: %s\n", vhacd::StatusName(r.status), r.message.c_str());
-    if (!report_path.empty()) hullpack::WriteDecompositionReport(report_path, input, "vhacd", r);
+    if (!cmd.report_path.empty())
+      hullpack::WriteDecompositionReport(cmd.report_path, cmd.input, "vhacd", r);
     return 1;
   }
   const vhacd::Report& rep = r.report;
@@ -181,21 +178,32 @@ int main(int argc, char** argv) {
       rep.hausdorff_hulls_to_mesh,
       rep.volume_iou >= 0 ? hullpack::JsonNumber(rep.volume_iou).c_str() : "n/a",
       rep.seconds_total);
-
-  if (!report_path.empty()) {
-    if (!hullpack::WriteDecompositionReport(report_path, input, "vhacd", r)) {
-      std::fprintf(stderr, "testVHACD: cannot write %s\n", report_path.c_str());
+  if (!cmd.report_path.empty()) {
+    if (!hullpack::WriteDecompositionReport(cmd.report_path, cmd.input, "vhacd", r)) {
+      std::fprintf(stderr, "testVHACD: cannot write %s\n", cmd.report_path.c_str());
       return 1;
     }
-    std::printf("wrote %s\n", report_path.c_str());
+    std::printf("wrote %s\n", cmd.report_path.c_str());
   }
-  if (!output.empty()) {
-    const std::string write_error = hullpack::WriteHullScene(r, output);
+  if (!cmd.output.empty()) {
+    const std::string write_error = hullpack::WriteHullScene(r, cmd.output);
     if (!write_error.empty()) {
       std::fprintf(stderr, "testVHACD: %s\n", write_error.c_str());
       return 1;
     }
-    std::printf("wrote %s\n", output.c_str());
+    std::printf("wrote %s\n", cmd.output.c_str());
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CommandLine cmd;
+  if (std::optional<int> exit_code =
+          ParseCommandLine(std::vector<std::string>(argv + 1, argv + argc), &cmd))
+    return *exit_code;
+  vhacd::Result result;
+  if (std::optional<int> exit_code = Run(cmd, &result)) return *exit_code;
+  return Report(cmd, result);
 }
