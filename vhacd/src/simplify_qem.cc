@@ -48,6 +48,7 @@ class Collapser {
     locked_.assign(n, 0);
     seam_nbrs_.resize(n);
     tri_dead_.assign(tris_.size(), 0);
+    mark_.assign(n, 0);
     orig_normal_.assign(tris_.size(), Vec3::Zero());
     alive_tris_ = tris_.size();
     for (uint32_t t = 0; t < tris_.size(); ++t) {
@@ -240,11 +241,24 @@ class Collapser {
   bool Valid(const Candidate& c) {
     const uint32_t u = c.from, v = c.to;
     // Link condition: the common neighbours are exactly the apexes of the edge's triangles.
-    Neighbours(u, &nu_);
-    Neighbours(v, &nv_);
-    common_.clear();
-    std::set_intersection(nu_.begin(), nu_.end(), nv_.begin(), nv_.end(),
-                          std::back_inserter(common_));
+    // Neighbours of u get mark `first`; those also around v are moved to `first + 1` and counted.
+    if (mark_generation_ > UINT32_MAX - 4) {
+      std::fill(mark_.begin(), mark_.end(), 0u);
+      mark_generation_ = 0;
+    }
+    const uint32_t first = mark_generation_ += 2, common = first + 1;
+    for (uint32_t t : vtris_[u])
+      if (!tri_dead_[t])
+        for (uint32_t w : tris_[t])
+          if (w != u) mark_[w] = first;
+    size_t common_count = 0;
+    for (uint32_t t : vtris_[v])
+      if (!tri_dead_[t])
+        for (uint32_t w : tris_[t])
+          if (w != v && mark_[w] == first) {
+            mark_[w] = common;
+            ++common_count;
+          }
     size_t edge_tris = 0, other_tris = 0;
     for (uint32_t t : vtris_[u]) {
       if (tri_dead_[t]) continue;
@@ -253,12 +267,12 @@ class Collapser {
         uint32_t apex = 0;
         for (uint32_t w : tris_[t])
           if (w != u && w != v) apex = w;
-        if (!std::binary_search(common_.begin(), common_.end(), apex)) return false;
+        if (mark_[apex] != common) return false;
       } else {
         ++other_tris;
       }
     }
-    if (edge_tris == 0 || common_.size() != edge_tris) return false;
+    if (edge_tris == 0 || common_count != edge_tris) return false;
     for (uint32_t t : vtris_[v])
       if (!tri_dead_[t] && !Has(tris_[t], u)) ++other_tris;
     if (other_tris == 0) return false;  // the collapse would delete a whole piece
@@ -363,7 +377,9 @@ class Collapser {
   size_t alive_tris_ = 0;
   double error_ = 0.0;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap_;
-  std::vector<uint32_t> nu_, nv_, common_;
+  std::vector<uint32_t> nv_;
+  std::vector<uint32_t> mark_;  // link-condition marks, see Valid()
+  uint32_t mark_generation_ = 0;
 };
 
 }  // namespace
