@@ -4,7 +4,6 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <queue>
 #include <tuple>
 
 namespace vhacd {
@@ -96,6 +95,7 @@ class Collapser {
   }
 
   bool Run(Context* ctx, QemMesh* out) {
+    heap_.reserve(unique_edges_.size());
     for (uint64_t key : unique_edges_) Push(static_cast<uint32_t>(key >> 32), uint32_t(key));
     std::vector<uint64_t>().swap(unique_edges_);
     const size_t start = alive_tris_;
@@ -106,8 +106,9 @@ class Collapser {
         const double span = static_cast<double>(start - std::min(start, opt_.target_triangles));
         if (span > 0) ctx->Progress(100.0 * (start - alive_tris_) / span, "collapsing edges");
       }
-      const Entry e = heap_.top();
-      heap_.pop();
+      std::pop_heap(heap_.begin(), heap_.end(), std::greater<Entry>());
+      const Entry e = heap_.back();
+      heap_.pop_back();
       if (dead_[e.from] || dead_[e.to] || stamp_[e.from] != e.stamp_from ||
           stamp_[e.to] != e.stamp_to)
         continue;
@@ -174,7 +175,20 @@ class Collapser {
   void Push(uint32_t a, uint32_t b) {
     Candidate best;
     if (!Best(a, b, &best)) return;
-    heap_.push({best.cost, best.from, best.to, stamp_[best.from], stamp_[best.to]});
+    heap_.push_back({best.cost, best.from, best.to, stamp_[best.from], stamp_[best.to]});
+    std::push_heap(heap_.begin(), heap_.end(), std::greater<Entry>());
+    // Superseded entries pile up (each collapse re-pushes the edges around the kept vertex); a
+    // heap several times larger than the mesh's edge count is mostly cache misses, so drop them.
+    if (heap_.size() > 64 && heap_.size() > 4 * alive_tris_) {
+      heap_.erase(std::remove_if(heap_.begin(), heap_.end(),
+                                 [&](const Entry& x) {
+                                   return dead_[x.from] || dead_[x.to] ||
+                                          stamp_[x.from] != x.stamp_from ||
+                                          stamp_[x.to] != x.stamp_to;
+                                 }),
+                  heap_.end());
+      std::make_heap(heap_.begin(), heap_.end(), std::greater<Entry>());
+    }
   }
 
   // The cheapest collapse of edge (a, b) allowed by the border, seam and lock rules.
@@ -376,7 +390,7 @@ class Collapser {
   std::vector<Vec3> orig_normal_;
   size_t alive_tris_ = 0;
   double error_ = 0.0;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap_;
+  std::vector<Entry> heap_;  // a binary min-heap (std::push_heap / pop_heap)
   std::vector<uint32_t> nv_;
   std::vector<uint32_t> mark_;  // link-condition marks, see Valid()
   uint32_t mark_generation_ = 0;
