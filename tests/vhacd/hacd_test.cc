@@ -9,6 +9,7 @@
 #include <limits>
 #include <thread>
 
+#include "common/test_shapes.h"
 #include "test_meshes.h"
 
 namespace {
@@ -22,23 +23,10 @@ vhacd::HacdParameters Recommended() {
   return p;
 }
 
-// The upper half of a UV sphere, as one open sheet.
-Mesh Hemisphere(double radius, int nu = 48, int nv = 12) {
-  Mesh m;
-  for (int j = 0; j < nv; ++j)
-    for (int i = 0; i < nu; ++i) {
-      const double th = 0.5 * M_PI * j / nv, ph = 2 * M_PI * i / nu;
-      m.AddPoint(radius * std::cos(th) * std::cos(ph), radius * std::cos(th) * std::sin(ph),
-                 radius * std::sin(th));
-    }
-  const uint32_t top = m.AddPoint(0, 0, radius);
-  for (int j = 0; j + 1 < nv; ++j)
-    for (int i = 0; i < nu; ++i) {
-      const uint32_t a = j * nu + i, b = j * nu + (i + 1) % nu;
-      m.AddQuad(a, b, b + nu, a + nu);
-    }
-  for (int i = 0; i < nu; ++i) m.AddTriangle((nv - 1) * nu + i, (nv - 1) * nu + (i + 1) % nu, top);
-  return m;
+// The upper half of a UV sphere (the shared test sphere without its southern rows), one open sheet.
+Mesh Hemisphere(double radius, int slices, int stacks) {
+  return vhacd_test::FromShape(test_shapes::Sphere(
+      radius, slices, stacks, [stacks](int row, int) { return row <= stacks / 2; }));
 }
 
 Mesh Dumbbell() {
@@ -91,7 +79,7 @@ TEST(HacdTest, BowlKeepsItsCavityEmpty) {
 TEST(HacdTest, OpenHemisphereIsOneHull) {
   vhacd::HacdParameters p = Recommended();
   p.min_clusters = 1;
-  const vhacd::Result r = vhacd::DecomposeHacd(Hemisphere(1.0, 32, 8).View(), p);
+  const vhacd::Result r = vhacd::DecomposeHacd(Hemisphere(1.0, 32, 16).View(), p);
   ExpectValid(r);
   EXPECT_EQ(r.hulls.size(), 1u);
 }

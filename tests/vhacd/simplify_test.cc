@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 
+#include "common/test_shapes.h"
 #include "test_meshes.h"
 
 namespace {
@@ -34,24 +35,26 @@ double Volume(const Mesh& m) {
   return v / 6.0;
 }
 
-// A flat n x n grid of unit squares in z = 0, facing +z; with `seam`, the vertices of the column
-// x = n / 2 are duplicated for the triangles on its right (split attributes).
+// The shared flat n x n grid (z = 0, facing +z); with `seam`, the vertices of the column x = n / 2
+// are duplicated for the triangles on its right (split attributes).
 Mesh Grid(int n, bool seam = false) {
-  Mesh m;
-  for (int y = 0; y <= n; ++y)
-    for (int x = 0; x <= n; ++x) m.AddPoint(x, y, 0);
-  std::map<int, uint32_t> copy;
-  if (seam)
-    for (int y = 0; y <= n; ++y) copy[y] = m.AddPoint(n / 2, y, 0);
-  auto id = [&](int x, int y, bool right) {
-    if (seam && right && x == n / 2) return copy[y];
-    return static_cast<uint32_t>(y * (n + 1) + x);
-  };
-  for (int y = 0; y < n; ++y)
-    for (int x = 0; x < n; ++x) {
-      const bool right = x >= n / 2;
-      m.AddQuad(id(x, y, right), id(x + 1, y, right), id(x + 1, y + 1, right), id(x, y + 1, right));
+  Mesh m = vhacd_test::FromShape(test_shapes::Grid(n, n));
+  if (!seam) return m;
+  std::map<uint32_t, uint32_t> copy;
+  const size_t original = m.point_count();
+  for (size_t t = 0; t < m.triangle_count(); ++t) {
+    double cx = 0;
+    for (int k = 0; k < 3; ++k) cx += m.points[3 * m.indices[3 * t + k]] / 3.0;
+    if (cx < n / 2) continue;
+    for (int k = 0; k < 3; ++k) {
+      uint32_t& v = m.indices[3 * t + k];
+      if (v >= original || m.points[3 * v] != n / 2) continue;
+      auto it = copy.find(v);
+      if (it == copy.end())
+        it = copy.emplace(v, m.AddPoint(m.points[3 * v], m.points[3 * v + 1], 0.0)).first;
+      v = it->second;
     }
+  }
   return m;
 }
 
@@ -138,6 +141,7 @@ TEST(SimplifyTest, OpenBorderIsKept) {
 
 TEST(SimplifyTest, AttributeSeamIsKept) {
   const Mesh grid = Grid(16, /*seam=*/true);
+  ASSERT_EQ(grid.point_count(), 17u * 17u + 17u);  // the seam column is split
   vhacd::SimplifyParameters p;
   p.target_triangles = 40;
   const vhacd::SimplifyResult r = vhacd::Simplify(grid.View(), p);
