@@ -1,11 +1,13 @@
 """hullpack: convex collision hulls, compressed meshes and robot descriptions.
 
     import hullpack
-    hulls, report = hullpack.decompose(vertices, faces)          # V-HACD 2.0
-    stream = hullpack.encode(vertices, faces, position_bits=14)  # o3dgc bytes
-    mesh = hullpack.decode(stream)                                # dict of numpy arrays
-    hullpack.collision("part.obj", "out", format="urdf")          # URDF + one STL per hull
-    hullpack.pack("scene.glb", "scene.packed.glb")                # compressed GLB with hulls
+    hulls, report = hullpack.decompose(vertices, faces)                # V-HACD 2.0
+    hulls, report = hullpack.decompose(vertices, faces, method="hacd")  # HACD
+    v, f, info = hullpack.simplify(vertices, faces, target_triangles=1000)  # QEM
+    stream = hullpack.encode(vertices, faces, position_bits=14)        # o3dgc bytes
+    mesh = hullpack.decode(stream)                                      # dict of numpy arrays
+    hullpack.collision("part.obj", "out", format="urdf")                # URDF + one STL per hull
+    hullpack.pack("scene.glb", "scene.packed.glb")                      # compressed GLB with hulls
 
 Every function takes numpy arrays (or file paths), releases the GIL while it works, stops on
 Ctrl-C, and raises ValueError naming the problem for bad input. help(hullpack.decompose) lists
@@ -23,6 +25,7 @@ from ._hullpack import (  # noqa: F401
     info,
     load_mesh,
     pack,
+    simplify,
     stream_info,
     unpack,
 )
@@ -40,6 +43,7 @@ __all__ = [
     "info",
     "load_mesh",
     "pack",
+    "simplify",
     "stream_info",
     "unpack",
 ]

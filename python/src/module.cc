@@ -6,12 +6,13 @@
 PYBIND11_MODULE(_hullpack, m) {
   namespace py = pybind11;
   m.doc() =
-      "Convex decomposition (V-HACD 2.0), mesh compression (o3dgc) and packaging for "
-      "simulators and the web.";
+      "Convex decomposition (V-HACD 2.0, HACD), mesh simplification (QEM), mesh compression "
+      "(o3dgc) and packaging for simulators and the web.";
   m.attr("VHACD_VERSION") = VHACD_VERSION;
   m.attr("STREAM_VERSION") = o3dgc::kStreamVersion;
   hullpack::python::RegisterExceptions(m);
   hullpack::python::BindDecompose(m);
+  hullpack::python::BindSimplify(m);
   hullpack::python::BindCodec(m);
   hullpack::python::BindFiles(m);
   hullpack::python::BindBench(m);

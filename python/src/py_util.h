@@ -87,6 +87,7 @@ class Watch {
 };
 
 void BindDecompose(py::module_& m);
+void BindSimplify(py::module_& m);
 void BindCodec(py::module_& m);
 void BindFiles(py::module_& m);
 void BindBench(py::module_& m);

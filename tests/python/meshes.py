@@ -84,3 +84,64 @@ def inside_hull(hull_vertices, hull_faces, point, eps=1e-9):
     c = hull_vertices[hull_faces[:, 2]]
     n = np.cross(b - a, c - a)
     return bool(np.all(np.einsum("ij,ij->i", n, point - a) <= eps))
+
+
+def merge(*parts):
+    """One soup of several (vertices, faces) meshes."""
+    vs, fs, offset = [], [], 0
+    for v, f in parts:
+        vs.append(v)
+        fs.append(f + offset)
+        offset += len(v)
+    return np.concatenate(vs), np.concatenate(fs).astype(np.uint32)
+
+
+def dumbbell():
+    """Two 2-unit boxes 2 apart, joined by a thin 0.2 x 0.2 bar (three closed boxes, a soup)."""
+    return merge(box((0, 0, 0), (2, 2, 2)), box((4, 0, 0), (6, 2, 2)),
+                 box((2, 0.9, 0.9), (4, 1.1, 1.1)))
+
+
+def grid(n=20):
+    """A flat n x n square of 2 n^2 triangles in the plane z = 0, facing +z."""
+    x, y = np.meshgrid(np.linspace(0, 1, n + 1), np.linspace(0, 1, n + 1), indexing="ij")
+    v = np.stack([x.ravel(), y.ravel(), np.zeros(x.size)], axis=-1)
+    f = []
+    for i in range(n):
+        for j in range(n):
+            a = i * (n + 1) + j
+            b = a + n + 1
+            f += [[a, b, b + 1], [a, b + 1, a + 1]]
+    return v, np.array(f, dtype=np.uint32)
+
+
+def closed_sphere(rings=32, segments=64):
+    """A welded UV sphere of radius 1: one vertex per pole, no seam; outward-facing."""
+    v = [[0.0, 0.0, 1.0]]
+    for i in range(1, rings):
+        t = np.pi * i / rings
+        for j in range(segments):
+            p = 2 * np.pi * j / segments
+            v.append([np.sin(t) * np.cos(p), np.sin(t) * np.sin(p), np.cos(t)])
+    v.append([0.0, 0.0, -1.0])
+    south = len(v) - 1
+
+    def ring(i, j):
+        return 1 + (i - 1) * segments + j % segments
+
+    f = []
+    for j in range(segments):
+        f.append([0, ring(1, j), ring(1, j + 1)])
+        f.append([south, ring(rings - 1, j + 1), ring(rings - 1, j)])
+    for i in range(1, rings - 1):
+        for j in range(segments):
+            a, b = ring(i, j), ring(i, j + 1)
+            c, d = ring(i + 1, j), ring(i + 1, j + 1)
+            f += [[a, c, d], [a, d, b]]
+    return np.array(v), np.array(f, dtype=np.uint32)
+
+
+def volume(v, f):
+    """Signed volume enclosed by a closed outward-facing mesh."""
+    a, b, c = v[f[:, 0]], v[f[:, 1]], v[f[:, 2]]
+    return float(np.einsum("ij,ij->i", a, np.cross(b, c)).sum() / 6.0)

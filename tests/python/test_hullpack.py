@@ -110,7 +110,7 @@ class Decompose(unittest.TestCase):
             hullpack.decompose(v, np.zeros((0, 3), np.uint32))
         with self.assertRaisesRegex(ValueError, "resolution"):
             hullpack.decompose(v, f, resolution=5)
-        with self.assertRaisesRegex(ValueError, "method"):
+        with self.assertRaisesRegex(ValueError, "method must be 'vhacd' or 'hacd'"):
             hullpack.decompose(v, f, method="coacd")
 
     def test_help_explains_every_parameter(self):
@@ -255,6 +255,8 @@ class Memory(unittest.TestCase):
                 hulls, _ = hullpack.decompose(v, f, resolution=10000, compute_report=False)
                 data = hullpack.encode(sv, sf, normals=sn)
                 hullpack.decode(data)
+                hullpack.simplify(sv, sf, target_triangles=50)
+                hullpack.decompose(v, f, method="hacd", compute_report=False)
                 try:
                     hullpack.decompose(v[:, :2], f)
                 except ValueError:
