@@ -100,6 +100,7 @@ def pack(
     fallback: bool = False,
     hulls: str = "auto",
     physics: str = "omi",
+    method: str = "vhacd",
     quality: str = "default",
     resolution: Optional[int] = None,
     max_hulls: Optional[int] = None,

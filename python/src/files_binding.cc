@@ -118,10 +118,10 @@ void ApplyDecomposition(vhacd::Parameters* p, const std::string& quality,
 py::dict Pack(const std::string& input, const std::string& output, double max_error,
               double hull_error, std::optional<int> position_bits, int normal_bits, int uv_bits,
               bool ascii, bool keep_order, bool fast_decode, bool fallback,
-              const std::string& hulls, const std::string& physics, const std::string& quality,
-              std::optional<uint32_t> resolution, std::optional<uint32_t> max_hulls,
-              std::optional<uint32_t> max_vertices, std::optional<double> concavity, bool force,
-              py::object progress) {
+              const std::string& hulls, const std::string& physics, const std::string& method,
+              const std::string& quality, std::optional<uint32_t> resolution,
+              std::optional<uint32_t> max_hulls, std::optional<uint32_t> max_vertices,
+              std::optional<double> concavity, bool force, py::object progress) {
   PackOptions o;
   if (!(max_error > 0 && max_error <= 0.5)) throw py::value_error("max_error must be in (0, 0.5]");
   if (!(hull_error > 0 && hull_error <= 0.5))
@@ -147,8 +147,25 @@ py::dict Pack(const std::string& input, const std::string& output, double max_er
   if (physics != "omi" && physics != "khr")
     throw py::value_error("physics must be 'omi' or 'khr', not '" + physics + "'");
   o.glb.physics = physics == "omi" ? PhysicsForm::kOmi : PhysicsForm::kKhr;
+  if (method == "hacd") {
+    // As `hullpack pack --method hacd`: testHACD's recommended line; the V-HACD options do not
+    // apply, so giving one is an error rather than silently ignored.
+    o.collision.method = DecompositionMethod::kHacd;
+    if (quality != "default" || resolution || max_hulls || concavity) {
+      throw py::value_error(
+          "quality, resolution, max_hulls and concavity are V-HACD options (method=\"vhacd\"), "
+          "not options of method=\"hacd\"");
+    }
+  } else if (method != "vhacd") {
+    throw py::value_error("method must be 'vhacd' or 'hacd', not '" + method + "'");
+  }
   ApplyDecomposition(&o.collision.parameters, quality, resolution, max_hulls, concavity);
-  if (max_vertices) o.collision.parameters.max_vertices_per_hull = *max_vertices;
+  if (max_vertices) {
+    if (*max_vertices < 4 || *max_vertices > 1024)
+      throw py::value_error("max_vertices must be in [4, 1024]");
+    o.collision.parameters.max_vertices_per_hull = *max_vertices;
+    o.collision.hacd_parameters.max_vertices_per_hull = *max_vertices;
+  }
   if (FormatFromExtension(output) != FileFormat::kGlb)
     throw py::value_error(output + ": the output must be a .glb file");
 
@@ -350,10 +367,16 @@ hulls : str
     Which meshes get hulls: "auto" (default), "all" or "none".
 physics : str
     "omi" (OMI_physics_shape/body, default) or "khr" (the KHR_physics_rigid_bodies draft).
+method : str
+    Decomposer: "vhacd" (V-HACD 2.0, default) or "hacd" (HACD with testHACD's recommended
+    settings and 24 vertices per hull; for open and thin shapes). quality, resolution,
+    max_hulls and concavity are V-HACD options: giving one with "hacd" raises ValueError.
 quality : str
     Decomposition preset: "default" or "high".
-resolution, max_hulls, max_vertices : int, optional
-    Voxels, hull budget, vertex cap per hull.
+resolution, max_hulls : int, optional
+    Voxels and hull budget.
+max_vertices : int, optional
+    Vertex cap per hull, 4 to 1024 (both methods).
 concavity : float, optional
     Largest concavity of a part (0 to 1).
 force : bool
@@ -378,10 +401,11 @@ OSError
         py::arg("hull_error") = 0.002, py::arg("position_bits") = py::none(),
         py::arg("normal_bits") = 10, py::arg("uv_bits") = 12, py::arg("ascii") = false,
         py::arg("keep_order") = false, py::arg("fast_decode") = false, py::arg("fallback") = false,
-        py::arg("hulls") = "auto", py::arg("physics") = "omi", py::arg("quality") = "default",
-        py::arg("resolution") = py::none(), py::arg("max_hulls") = py::none(),
-        py::arg("max_vertices") = py::none(), py::arg("concavity") = py::none(),
-        py::arg("force") = false, py::arg("progress") = py::none());
+        py::arg("hulls") = "auto", py::arg("physics") = "omi", py::arg("method") = "vhacd",
+        py::arg("quality") = "default", py::arg("resolution") = py::none(),
+        py::arg("max_hulls") = py::none(), py::arg("max_vertices") = py::none(),
+        py::arg("concavity") = py::none(), py::arg("force") = false,
+        py::arg("progress") = py::none());
   m.def("unpack", &Unpack, R"(Decode a packed GLB back to plain glTF (.glb) or a mesh file.
 
 Parameters

@@ -1,6 +1,9 @@
 """Tests of hullpack.decompose(method="hacd") and hullpack.simplify, on meshes generated here."""
 
+import threading
+import time
 import unittest
+import _thread
 
 import numpy as np
 
@@ -58,6 +61,18 @@ class Hacd(unittest.TestCase):
         self.assertTrue(all(0 <= p <= 100 for p, _ in seen))
         with self.assertRaises(hullpack.Cancelled):  # 0.1 to 0.3 s of work
             hullpack.decompose(v, f, method="hacd", target_triangles=0, progress=lambda p, s: False)
+
+    def test_ctrl_c_stops_a_run(self):
+        v, f = meshes.torus(120, 48)  # 3 s of clustering when not stopped
+        timer = threading.Timer(0.1, _thread.interrupt_main)
+        start = time.monotonic()
+        timer.start()
+        try:
+            with self.assertRaises(KeyboardInterrupt):
+                hullpack.decompose(v, f, method="hacd", target_triangles=0, compute_report=False)
+        finally:
+            timer.cancel()
+        self.assertLess(time.monotonic() - start, 1.5)
 
     def test_keyword_of_the_other_method_raises_value_error(self):
         v, f = meshes.box()

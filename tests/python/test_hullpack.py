@@ -218,6 +218,20 @@ class Files(unittest.TestCase):
         with self.assertRaises(OSError):
             hullpack.info(os.path.join(self.dir.name, "missing.obj"))
 
+    def test_pack_with_hacd(self):
+        hacd = os.path.join(self.dir.name, "hacd.glb")
+        vhacd = os.path.join(self.dir.name, "vhacd.glb")
+        report = hullpack.pack(self.obj, hacd, method="hacd", max_vertices=8)["meshes"][0]
+        self.assertGreater(report["hull_count"], 2)
+        self.assertLessEqual(report["hull_vertices"], 8 * report["hull_count"])
+        hullpack.pack(self.obj, vhacd, resolution=20000, max_vertices=8)
+        with open(hacd, "rb") as a, open(vhacd, "rb") as b:
+            self.assertNotEqual(a.read(), b.read())  # the method reached the decomposer
+        with self.assertRaisesRegex(ValueError, "V-HACD options"):
+            hullpack.pack(self.obj, vhacd + "2.glb", method="hacd", resolution=20000)
+        with self.assertRaisesRegex(ValueError, "'vhacd' or 'hacd'"):
+            hullpack.pack(self.obj, vhacd + "3.glb", method="coacd")
+
     def test_load_mesh_feeds_decompose_and_encode(self):
         mesh = hullpack.load_mesh(self.obj)
         self.assertEqual(mesh["vertices"].dtype, np.float32)
