@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstring>
 #include <unordered_map>
-#include <unordered_set>
 
 #include "io/text_scanner.h"
 
@@ -17,21 +16,35 @@ struct Corner {
   int64_t v = -1, vt = -1, vn = -1;
   bool operator==(const Corner& o) const { return v == o.v && vt == o.vt && vn == o.vn; }
 };
-struct CornerHash {
-  size_t operator()(const Corner& c) const {
-    uint64_t h = static_cast<uint64_t>(c.v) * 0x9E3779B97F4A7C15ull;
-    h ^= static_cast<uint64_t>(c.vt + 1) * 0xC2B2AE3D27D4EB4Full + (h << 6) + (h >> 2);
-    h ^= static_cast<uint64_t>(c.vn + 1) * 0x165667B19E3779F9ull + (h << 6) + (h >> 2);
-    return static_cast<size_t>(h);
-  }
-};
+
+constexpr uint32_t kNone = 0xFFFFFFFFu;
 
 struct MeshBuilder {
   std::string name;
-  std::unordered_map<Corner, uint32_t, CornerHash> vertex_of;
+  // Output vertices by position: first_of_v[v] is the first vertex made from `v`, next_same_v
+  // chains the others (other texture coordinates or normals). Most positions have one or two, so
+  // a lookup is a short walk, and the index costs 4 bytes per position and per vertex.
+  std::vector<uint32_t> first_of_v;
+  std::vector<uint32_t> next_same_v;
   std::vector<Corner> corners;  // one per output vertex
   std::vector<uint32_t> indices;
   std::vector<uint32_t> material_ids;
+
+  // The output vertex of `c`, made on first use (so vertices are numbered in order of first use).
+  uint32_t VertexOf(const Corner& c) {
+    const size_t v = static_cast<size_t>(c.v);
+    if (v >= first_of_v.size()) first_of_v.resize(std::max(v + 1, first_of_v.size() * 2), kNone);
+    uint32_t* link = &first_of_v[v];
+    while (*link != kNone) {
+      if (corners[*link] == c) return *link;
+      link = &next_same_v[*link];
+    }
+    const uint32_t id = static_cast<uint32_t>(corners.size());
+    *link = id;
+    corners.push_back(c);
+    next_same_v.push_back(kNone);
+    return id;
+  }
 };
 
 // Statements of the OBJ specification that carry nothing the scene model holds.
@@ -100,11 +113,11 @@ class ObjParser {
     if (key == "v") {
       Status s = ReadNumbers(n, 3, 7, &count, "vertex");
       if (!s.ok()) return s;
-      positions_.push_back({n[0], n[1], n[2]});
+      positions_.push_back({float(n[0]), float(n[1]), float(n[2])});
       if (count >= 6) {  // `v x y z r g b`; a 4-number line is `v x y z w`
         if (colors_.empty() && positions_.size() > 1)
           colors_.resize(positions_.size() - 1, {1, 1, 1});
-        colors_.push_back({n[3], n[4], n[5]});
+        colors_.push_back({float(n[3]), float(n[4]), float(n[5])});
       } else if (!colors_.empty()) {
         colors_.push_back({1, 1, 1});
       }
@@ -119,7 +132,7 @@ class ObjParser {
     if (key == "vn") {
       Status s = ReadNumbers(n, 3, 3, &count, "normal");
       if (!s.ok()) return s;
-      normals_.push_back({n[0], n[1], n[2]});
+      normals_.push_back({float(n[0]), float(n[1]), float(n[2])});
       return Status::Ok();
     }
     if (key == "f" || key == "fo") return Face();
@@ -216,14 +229,7 @@ class ObjParser {
     }
     MeshBuilder& b = builders_.back();
     uint32_t ids[3];
-    auto vertex = [&](const Corner& c) {
-      auto it = b.vertex_of.find(c);
-      if (it != b.vertex_of.end()) return it->second;
-      const uint32_t id = static_cast<uint32_t>(b.corners.size());
-      b.vertex_of.emplace(c, id);
-      b.corners.push_back(c);
-      return id;
-    };
+    auto vertex = [&](const Corner& c) { return b.VertexOf(c); };
     ids[0] = vertex(polygon_[0]);
     for (size_t i = 1; i + 1 < polygon_.size(); ++i) {  // fan triangulation
       ids[1] = vertex(polygon_[i]);
@@ -337,6 +343,8 @@ class ObjParser {
     size_t missing_uv = 0, missing_normal = 0;
     for (MeshBuilder& b : builders_) {
       if (b.indices.empty()) continue;
+      b.first_of_v = std::vector<uint32_t>();
+      b.next_same_v = std::vector<uint32_t>();
       KeepFileOrder(b);
       Mesh m;
       m.name = b.name;
@@ -469,7 +477,8 @@ class ObjParser {
   size_t size_;
   const std::string& name_;
   const ObjParseOptions& options_;
-  std::vector<std::array<double, 3>> positions_, colors_, normals_;
+  // Kept as the floats the meshes get (texture coordinates stay double: v is flipped first).
+  std::vector<std::array<float, 3>> positions_, colors_, normals_;
   std::vector<std::array<double, 2>> texcoords_;
   std::vector<MeshBuilder> builders_;
   std::vector<Corner> polygon_;
