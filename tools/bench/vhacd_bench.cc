@@ -339,7 +339,7 @@ int MeasureOne(int argc, char** argv) {
   }
   std::vector<double> pts;
   std::vector<uint32_t> idx;
-  hullpack::FlattenScene(scene.value(), &pts, &idx);
+  hullpack::SceneSoup(scene.value(), &pts, &idx);
   Soup soup;
   for (size_t i = 0; i < pts.size(); i += 3)
     soup.points.emplace_back(pts[i], pts[i + 1], pts[i + 2]);
@@ -381,7 +381,7 @@ int Subdivide(int argc, char** argv) {
   }
   std::vector<double> pts;
   std::vector<uint32_t> idx;
-  hullpack::FlattenScene(scene.value(), &pts, &idx);
+  hullpack::SceneSoup(scene.value(), &pts, &idx);
   Soup s;
   for (size_t i = 0; i < pts.size(); i += 3) s.points.emplace_back(pts[i], pts[i + 1], pts[i + 2]);
   // Weld identical positions so that shared edges get one midpoint.
@@ -553,7 +553,7 @@ int main(int argc, char** argv) {
     }
     std::vector<double> pts;
     std::vector<uint32_t> idx;
-    hullpack::FlattenScene(scene.value(), &pts, &idx);
+    hullpack::SceneSoup(scene.value(), &pts, &idx);
     Soup soup;
     for (size_t i = 0; i < pts.size(); i += 3)
       soup.points.emplace_back(pts[i], pts[i + 1], pts[i + 2]);

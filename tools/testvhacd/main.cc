@@ -238,7 +238,7 @@ int main(int argc, char** argv) {
   }
   std::vector<double> points;
   std::vector<uint32_t> indices;
-  hullpack::FlattenScene(scene.value(), &points, &indices);
+  hullpack::SceneSoup(scene.value(), &points, &indices);
   std::printf("input: %s, %zu points, %zu triangles\n", input.c_str(), points.size() / 3,
               indices.size() / 3);
 
