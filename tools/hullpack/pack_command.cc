@@ -7,7 +7,6 @@
 #include <thread>
 
 #include "common/file_util.h"
-#include "gltf/external_images.h"
 #include "hullpack/cli_util.h"
 #include "io/scene_io.h"
 #include "pipeline/pack.h"
@@ -37,6 +36,8 @@ const char kUsage[] =
     "  --resolution N --max-hulls N --max-vertices N --concavity F   decomposition parameters\n"
     "  --report FILE.json per mesh: bytes before/after, bits per vertex, error, hulls, times\n"
     "  --jobs N           inputs packed at once (default: every core)\n"
+    "  --threads N        threads for each input's stages (default: every core, 1 with several\n"
+    "                     inputs at once); the output bytes are the same for any N\n"
     "  --force            replace existing outputs\n"
     "  --quiet            no progress line\n";
 
@@ -46,12 +47,6 @@ struct Job {
   std::string error;
   nlohmann::json report;
 };
-
-std::string FolderOf(const std::string& path) {
-  const size_t slash = path.find_last_of('/');
-  if (slash == std::string::npos) return ".";
-  return slash == 0 ? "/" : path.substr(0, slash);
-}
 
 class ProgressForwarder : public PackObserver {
  public:
@@ -102,38 +97,32 @@ nlohmann::json ReportJson(const PackReport& r) {
           {"left_out", r.left_out},
           {"not_kept", r.not_kept},
           {"output_bytes", r.output_bytes},
+          {"images_embedded", r.images_embedded},
+          {"images_kept_as_references", r.images_kept_outside},
           {"seconds",
-           {{"prune", r.seconds_prune}, {"meshes", r.seconds_meshes}, {"write", r.seconds_write}}}};
+           {{"load", r.seconds_load},
+            {"repair", r.seconds_repair},
+            {"prune", r.seconds_prune},
+            {"meshes", r.seconds_meshes},
+            {"assemble", r.seconds_assemble},
+            {"write", r.seconds_write},
+            {"total", r.seconds_total}}}};
 }
 
 void PackOne(Job& job, const std::vector<std::string>& inputs, const PackOptions& options,
              bool force, ProgressLine& progress) {
-  Result<Scene> scene = ReadScene(job.input);
-  if (!scene.ok()) {
-    job.error = scene.status().message();
-    return;
-  }
   Status writable = CheckOutputPath(job.output, inputs, force);
   if (!writable.ok()) {
     job.error = writable.message();
     return;
   }
-  // One GLB for web delivery: textures beside the input go inside it.
-  const EmbedReport images = EmbedExternalImages(scene.value(), FolderOf(job.input));
   ProgressForwarder observer(progress, FileStem(job.input));
-  Result<PackResult> packed = PackScene(std::move(scene.value()), options, &observer);
+  Result<PackReport> packed = PackFile(job.input, job.output, options, &observer);
   if (!packed.ok()) {
-    job.error = job.input + ": " + packed.status().message();
+    job.error = packed.status().message();
     return;
   }
-  Status written = WriteFileAtomically(job.output, packed->glb);
-  if (!written.ok()) {
-    job.error = written.message();
-    return;
-  }
-  job.report = ReportJson(packed->report);
-  job.report["images_embedded"] = images.embedded;
-  job.report["images_kept_as_references"] = images.kept_as_references;
+  job.report = ReportJson(packed.value());
   job.report["input"] = job.input;
   job.report["output"] = job.output;
   job.ok = true;
@@ -146,7 +135,7 @@ int RunPackCommand(const std::vector<std::string>& args) {
   std::string output, report_path;
   PackOptions options;
   bool force = false, quiet = false;
-  long jobs = 0;
+  long jobs = 0, threads_per_input = 0;
   bool high_quality = false;
   long resolution = 0, max_hulls = -1, max_vertices = 0;
   double concavity = -1;
@@ -223,6 +212,8 @@ int RunPackCommand(const std::vector<std::string>& args) {
       if (!value(&v) || !ParseDouble(a, v, 0, 1, &concavity)) return kExitUsage;
     } else if (a == "--jobs") {
       if (!value(&v) || !ParseInt(a, v, 1, 256, &jobs)) return kExitUsage;
+    } else if (a == "--threads") {
+      if (!value(&v) || !ParseInt(a, v, 1, 256, &threads_per_input)) return kExitUsage;
     } else if (a == "--force") {
       force = true;
     } else if (a == "--quiet") {
@@ -275,8 +266,14 @@ int RunPackCommand(const std::vector<std::string>& args) {
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   const size_t threads =
       std::min<size_t>(work.size(), jobs > 0 ? static_cast<size_t>(jobs) : cores);
-  // Several files at once: each decomposition on one thread (its result does not depend on it).
-  if (threads > 1) p.num_threads = 1;
+  // Several files at once: each one's stages on one thread (their results do not depend on it).
+  if (threads_per_input > 0) {
+    options.threads = static_cast<int>(threads_per_input);
+    p.num_threads = static_cast<uint32_t>(threads_per_input);
+  } else if (threads > 1) {
+    options.threads = 1;
+    p.num_threads = 1;
+  }
   ProgressLine progress(!quiet);
   std::atomic<size_t> next{0};
   auto worker = [&]() {
