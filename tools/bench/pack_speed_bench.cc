@@ -5,6 +5,7 @@
 // OUT/pack_speed.svg (time per triangle against triangles).
 //
 //   pack_speed_bench MESH... -o OUT [--levels 0,1,2] [--repeats 3] [--timeout S]
+//   e.g. pack_speed_bench bunny.obj igea.obj -o /tmp/speed --levels 0,1,2
 //
 // Each MESH (any format hullpack reads; a scene is flattened with its node transforms) is
 // subdivided 0, 1, 2, ... times (each level: 4x the triangles) and written as OBJ under OUT, so the
@@ -14,11 +15,13 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "bench/child_process.h"
 #include "bench/svg_plot.h"
+#include "common/cli_args.h"
 #include "common/file_util.h"
 #include "hullpack/cli_util.h"
 #include "io/scene_io.h"
@@ -31,16 +34,6 @@ namespace {
 using hullpack::ChildResult;
 using hullpack::PayloadReader;
 using hullpack::PayloadWriter;
-
-int Usage(FILE* out, int code) {
-  std::fprintf(out,
-               "usage: pack_speed_bench MESH... -o OUT [--levels 0,1,2] [--repeats 3] "
-               "[--timeout S]\n"
-               "  packs each MESH subdivided 0, 1, 2, ... times (4x the triangles per level) at\n"
-               "  defaults with hulls, each run in its own process; writes OUT/pack_speed.csv and\n"
-               "  OUT/pack_speed.svg\n");
-  return code;
-}
 
 double Median(std::vector<double> v) {
   if (v.empty()) return 0;
@@ -137,44 +130,33 @@ struct Row {
 
 int main(int argc, char** argv) {
   std::vector<std::string> meshes;
-  std::string out;
-  std::vector<int> levels = {0, 1, 2};
+  std::string out, level_list = "0,1,2";
   int repeats = 3;
   double timeout = 900;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    const bool has_value = i + 1 < argc;
-    if (a == "-h" || a == "--help") return Usage(stdout, 0);
-    if (a == "--version") {
-      std::printf("pack_speed_bench 1\n");
-      return 0;
+  hullpack::CliArgs cli("pack_speed_bench", "MESH... -o OUT [options]",
+                        "hullpack pack at defaults (with hulls) on each MESH subdivided 0, 1, 2, "
+                        "... times\n"
+                        "  (4x the triangles per level), each run in its own process; writes\n"
+                        "  OUT/pack_speed.csv and OUT/pack_speed.svg");
+  cli.Positional("MESH", &meshes, 1);
+  cli.String("-o, --output", "OUT", &out, "an existing folder for the meshes, CSV and plot")
+      .Required();
+  cli.String("--levels", "L,L,...", &level_list, "subdivision levels (default 0,1,2; each 0-6)");
+  cli.Int("--repeats", "N", 1, 100, &repeats, "runs per mesh, median (default 3)");
+  cli.Double("--timeout", "S", 1, 1e6, &timeout, "longest run, seconds (default 900)");
+  if (std::optional<int> exit_code = cli.Parse(argc, argv)) return *exit_code;
+  std::vector<int> levels;
+  for (const char* p = level_list.c_str(); *p;) {
+    char* end = nullptr;
+    const long v = std::strtol(p, &end, 10);
+    if (end == p || v < 0 || v > 6 || (*end && *end != ',')) {
+      return cli.UsageError("--levels takes levels 0-6 separated by commas, not '" + level_list +
+                            "'");
     }
-    if ((a == "-o" || a == "--out") && has_value) {
-      out = argv[++i];
-    } else if (a == "--levels" && has_value) {
-      levels.clear();
-      for (const char* p = argv[++i]; *p;) {
-        char* end = nullptr;
-        const long v = std::strtol(p, &end, 10);
-        if (end == p || v < 0 || v > 6) return Usage(stderr, 64);
-        levels.push_back(static_cast<int>(v));
-        p = *end == ',' ? end + 1 : end;
-      }
-    } else if (a == "--repeats" && has_value) {
-      repeats = std::max(1, std::atoi(argv[++i]));
-    } else if (a == "--timeout" && has_value) {
-      timeout = std::atof(argv[++i]);
-    } else if (!a.empty() && a[0] == '-') {
-      return Usage(stderr, 64);
-    } else {
-      meshes.push_back(a);
-    }
+    levels.push_back(static_cast<int>(v));
+    p = *end == ',' ? end + 1 : end;
   }
-  if (meshes.empty() || out.empty() || levels.empty()) return Usage(stderr, 64);
-  if (!hullpack::IsDirectory(out)) {
-    std::fprintf(stderr, "pack_speed_bench: %s: no such folder\n", out.c_str());
-    return 64;
-  }
+  if (!hullpack::IsDirectory(out)) return cli.UsageError(out + ": no such folder");
 
   std::vector<Row> rows;
   for (const std::string& mesh : meshes) {
