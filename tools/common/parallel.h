@@ -36,6 +36,37 @@ inline void ParallelFor(size_t count, int threads, const std::function<void(size
   for (std::thread& t : pool) t.join();
 }
 
+// std::sort of [first, last) with parts sorted on up to `threads` threads, then merged. `less` must
+// be a strict total order (no two elements equivalent, e.g. ties broken by an index): then the
+// result is the one std::sort gives, whatever the thread count.
+template <typename Iterator, typename Less>
+void ParallelSort(Iterator first, Iterator last, Less less, int threads) {
+  const size_t n = static_cast<size_t>(last - first);
+  size_t parts = std::min<size_t>(static_cast<size_t>(std::max(1, threads)), n / 4096 + 1);
+  if (parts <= 1) {
+    std::sort(first, last, less);
+    return;
+  }
+  std::vector<size_t> bounds(parts + 1);
+  for (size_t k = 0; k <= parts; ++k) bounds[k] = n * k / parts;
+  ParallelFor(parts, threads, [&](size_t k) {
+    std::sort(first + static_cast<ptrdiff_t>(bounds[k]),
+              first + static_cast<ptrdiff_t>(bounds[k + 1]), less);
+  });
+  // Merge neighbouring runs until one is left, the merges of a round in parallel.
+  for (size_t width = 1; width < parts; width *= 2) {
+    const size_t merges = (parts + 2 * width - 1) / (2 * width);
+    ParallelFor(merges, threads, [&](size_t m) {
+      const size_t lo = m * 2 * width, mid = std::min(lo + width, parts),
+                   hi = std::min(lo + 2 * width, parts);
+      if (mid >= hi) return;
+      std::inplace_merge(first + static_cast<ptrdiff_t>(bounds[lo]),
+                         first + static_cast<ptrdiff_t>(bounds[mid]),
+                         first + static_cast<ptrdiff_t>(bounds[hi]), less);
+    });
+  }
+}
+
 }  // namespace hullpack
 
 #endif  // HULLPACK_TOOLS_COMMON_PARALLEL_H_

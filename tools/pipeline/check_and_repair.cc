@@ -21,6 +21,9 @@ Result<CheckRepairReport> CheckAndRepair(Scene& scene, const CheckRepairOptions&
   const size_t n = scene.meshes.size();
   std::vector<Status> valid(n);
   std::vector<CheckRepairReport> per_mesh(n);
+  // One mesh (or few): the threads sort inside RepairMesh instead.
+  RepairOptions repairs = options.repairs;
+  if (n < static_cast<size_t>(threads)) repairs.threads = threads;
   ParallelFor(n, threads, [&](size_t i) {
     Mesh& mesh = scene.meshes[i];
     valid[i] = ValidateMesh(mesh);
@@ -37,7 +40,7 @@ Result<CheckRepairReport> CheckAndRepair(Scene& scene, const CheckRepairOptions&
         }
       }
     }
-    r.repairs = RepairMesh(mesh, options.repairs);
+    r.repairs = RepairMesh(mesh, repairs);
   });
   CheckRepairReport report;
   for (size_t i = 0; i < n; ++i) {
