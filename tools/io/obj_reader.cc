@@ -179,7 +179,17 @@ class ObjParser {
       return Error("binary data (NUL byte): not an OBJ file");
     builders_.emplace_back();
     if (size_ >= kReadAheadBytes && options_.threads != 1) StartReadAhead();
+    // Progress about every 1 % of the text (checked every 4096 lines).
+    const size_t step = std::max<size_t>(size_ / 100, 1);
+    size_t lines = 0, reported = 0;
     while (!scan_.AtEnd()) {
+      if (options_.progress && (++lines & 4095) == 0) {
+        const size_t at = static_cast<size_t>(scan_.position() - data_);
+        if (at >= reported + step) {
+          reported = at;
+          options_.progress(static_cast<double>(at) / static_cast<double>(size_));
+        }
+      }
       scan_.SkipBlanks();
       if (scan_.AtLineEnd()) {
         scan_.SkipLine();

@@ -23,6 +23,8 @@ struct ObjParseOptions {
   // Threads that read the numbers of a large text ahead (0 = every core, 1 = none); the scene
   // does not depend on it.
   int threads = 0;
+  // Called now and then with the fraction of the text parsed (may be empty).
+  std::function<void(double)> progress;
 };
 
 // Parses OBJ text. `name` prefixes error messages (usually the path).

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <mutex>
 
 #include "common/parallel.h"
 
@@ -102,10 +103,21 @@ Result<BudgetedEncoding> EncodeWithinError(const Mesh& mesh, const std::vector<u
                   "mesh '" + mesh.name + "': no position grid keeps the error within the budget");
   }
   auto t = Clock::now();
+  std::mutex progress_mutex;
+  std::vector<float> done(candidates.size(), 0.0f);
   ParallelFor(candidates.size(), threads, [&](size_t i) {
     MeshCodecSettings s = settings;
     s.position_bits = candidates[i].bits;
     s.position_range = candidates[i].mode;
+    if (settings.progress) {
+      s.progress = [&, i](float f) {
+        std::lock_guard<std::mutex> lock(progress_mutex);
+        done[i] = f;
+        float sum = 0;
+        for (float d : done) sum += d;
+        return settings.progress(sum / static_cast<float>(done.size()));
+      };
+    }
     candidates[i].encoded = EncodeMesh(mesh, groups, s);
   });
   BudgetedEncoding out;

@@ -50,7 +50,8 @@ double PositionGridError(const Mesh& mesh, o3dgc::RangeMode mode, int bits);
 
 // `settings` gives everything but the position grid. `max_error` > 0, model units (or 0 for a
 // mesh of zero size, which every grid keeps exactly). Candidates are encoded on up to `threads`
-// threads; the result does not depend on it.
+// threads; the result does not depend on it. settings.progress, when set, sees the fraction of all
+// candidates encoded (from any of those threads, one call at a time).
 Result<BudgetedEncoding> EncodeWithinError(const Mesh& mesh, const std::vector<uint32_t>& groups,
                                            const MeshCodecSettings& settings, double max_error,
                                            int threads = 1);

@@ -11,8 +11,11 @@ std::string FolderOf(const std::string& path) {
   return slash == 0 ? "/" : path.substr(0, slash);
 }
 
-Result<LoadedScene> LoadScene(const std::string& path) {
-  Result<Scene> scene = ReadScene(path);
+Result<LoadedScene> LoadScene(const std::string& path,
+                              const std::function<void(double)>& progress) {
+  ReadOptions options;
+  options.progress = progress;
+  Result<Scene> scene = ReadScene(path, options);
   if (!scene.ok()) return scene.status();
   LoadedScene out;
   out.scene = std::move(scene.value());

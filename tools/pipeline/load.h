@@ -4,6 +4,7 @@
 #ifndef HULLPACK_TOOLS_PIPELINE_LOAD_H_
 #define HULLPACK_TOOLS_PIPELINE_LOAD_H_
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -18,8 +19,9 @@ struct LoadedScene {
   std::vector<std::string> images_kept_outside;  // one line per image left as a URI, and why
 };
 
-// Errors start with the path.
-Result<LoadedScene> LoadScene(const std::string& path);
+// Errors start with the path. `progress` (may be empty) gets the fraction of the file read.
+Result<LoadedScene> LoadScene(const std::string& path,
+                              const std::function<void(double)>& progress = {});
 
 // The folder part of `path` ("." when it has none).
 std::string FolderOf(const std::string& path);

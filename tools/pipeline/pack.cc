@@ -1,6 +1,7 @@
 #include "pipeline/pack.h"
 
 #include <chrono>
+#include <functional>
 
 #include "common/file_util.h"
 #include "common/parallel.h"
@@ -80,8 +81,15 @@ Result<PackResult> PackScene(Scene scene, const PackOptions& options, PackObserv
 Result<PackReport> PackFile(const std::string& input, const std::string& output,
                             const PackOptions& options, PackObserver* observer) {
   const auto start = Clock::now();
+  // The whole line is the pipeline after loading; loading shows its own percentage.
   if (observer) observer->OnProgress(0, "load");
-  Result<LoadedScene> loaded = LoadScene(input);
+  std::function<void(double)> load_progress;
+  if (observer) {
+    load_progress = [observer](double f) {
+      observer->OnProgress(0, "load " + std::to_string(static_cast<int>(f * 100)) + "%");
+    };
+  }
+  Result<LoadedScene> loaded = LoadScene(input, load_progress);
   if (!loaded.ok()) return loaded.status();
   const double seconds_load = Seconds(start);
   Result<PackResult> packed = PackLoaded(std::move(loaded->scene), options, observer);

@@ -95,10 +95,11 @@ class DecomposeProgress : public vhacd::Observer {
 
 // The render mesh's stream: explicit bits (uniform grid, as given), or the smallest stream within
 // the error budget.
-// `threads` for the candidate grids.
+// `threads` for the candidate grids; `progress` (may be empty) gets the fraction encoded.
 Status EncodeRenderMesh(const Mesh& mesh, const PackOptions& options, int threads,
-                        PackedMesh& out) {
+                        const o3dgc::ProgressFn& progress, PackedMesh& out) {
   MeshCodecSettings s = SettingsFor(options);
+  s.progress = progress;
   Result<BudgetedEncoding> encoded = Status(StatusCode::kInternal, "");
   if (options.position_bits <= 0) {
     encoded = EncodeWithinError(mesh, mesh.material_ids, s,
@@ -234,7 +235,11 @@ Result<std::vector<PackedMesh>> PackMeshes(const Scene& scene, const PackOptions
       // arrays of about the mesh's size, and the decomposition keeps the other core busy.
       const int threads =
           packed[task.mesh].report.no_hulls_reason.empty() ? 1 : ThreadCount(options.threads);
-      status[k] = EncodeRenderMesh(mesh, options, threads, packed[task.mesh]);
+      const o3dgc::ProgressFn progress = [&board, k, &prefix](float f) {
+        board.Set(k, f, prefix + "encode " + std::to_string(static_cast<int>(f * 100)) + "%");
+        return !board.Cancelled();
+      };
+      status[k] = EncodeRenderMesh(mesh, options, threads, progress, packed[task.mesh]);
       board.Set(k, 1, prefix + "encoded");
     }
   });
