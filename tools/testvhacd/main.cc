@@ -10,10 +10,12 @@
 #include <cstring>
 #include <fstream>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "common/cli_args.h"
+#include "common/file_util.h"
 #include "io/scene_io.h"
 #include "scene/scene.h"
 #include "scene_soup.h"
@@ -174,9 +176,9 @@ std::string JsonNumber(double v) {
   return buf;
 }
 
+// The report as JSON, written to a temporary file and renamed into place.
 bool WriteReport(const std::string& path, const std::string& input, const vhacd::Result& r) {
-  std::ofstream f(path.c_str());
-  if (!f) return false;
+  std::ostringstream f;
   const vhacd::Report& rep = r.report;
   f << "{\n  \"input\": \"";
   for (char c : input) {
@@ -210,20 +212,13 @@ bool WriteReport(const std::string& path, const std::string& input, const vhacd:
       << ", \"concavity\": " << JsonNumber(rep.hulls[i].concavity) << "}";
   }
   f << (rep.hulls.empty() ? "]\n" : "\n  ]\n") << "}\n";
-  return f.good();
+  const std::string text = f.str();
+  return hullpack::WriteFileAtomically(path, text.data(), text.size()).ok();
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  CommandLine cmd;
-  if (std::optional<int> exit_code =
-          ParseCommandLine(std::vector<std::string>(argv + 1, argv + argc), &cmd))
-    return *exit_code;
-  const std::string& input = cmd.input;
-  const std::string &output = cmd.output, &report_path = cmd.report_path, &log_path = cmd.log_path;
-  const vhacd::Parameters& p = cmd.parameters;
-  hullpack::Result<hullpack::Scene> scene = hullpack::ReadScene(input);
+// Reads every mesh of the input as one soup and decomposes it. An exit code when it cannot.
+std::optional<int> Run(const CommandLine& cmd, vhacd::Result* result) {
+  hullpack::Result<hullpack::Scene> scene = hullpack::ReadScene(cmd.input);
   if (!scene.ok()) {
     std::fprintf(stderr, "testVHACD: %s\n", scene.status().ToString().c_str());
     return 1;
@@ -231,21 +226,25 @@ int main(int argc, char** argv) {
   std::vector<double> points;
   std::vector<uint32_t> indices;
   hullpack::SceneSoup(scene.value(), &points, &indices);
-  std::printf("input: %s, %zu points, %zu triangles\n", input.c_str(), points.size() / 3,
+  std::printf("input: %s, %zu points, %zu triangles
+", cmd.input.c_str(), points.size() / 3,
               indices.size() / 3);
-
-  Progress progress(log_path);
-  if (!log_path.empty() && !progress.log_ok()) {
-    std::fprintf(stderr, "testVHACD: cannot write %s\n", log_path.c_str());
+  Progress progress(cmd.log_path);
+  if (!cmd.log_path.empty() && !progress.log_ok()) {
+    std::fprintf(stderr, "testVHACD: cannot write %s\n", cmd.log_path.c_str());
     return 1;
   }
-  const vhacd::Result r =
-      vhacd::Decompose(vhacd::MeshView::FromDouble(points.data(), points.size() / 3, indices.data(),
-                                                   indices.size() / 3),
-                       p, &progress);
+  *result = vhacd::Decompose(vhacd::MeshView::FromDouble(points.data(), points.size() / 3,
+                                                         indices.data(), indices.size() / 3),
+                             cmd.parameters, &progress);
+  return std::nullopt;
+}
+
+// The summary line on stdout, the report and the hulls; returns the exit code.
+int Report(const CommandLine& cmd, const vhacd::Result& r) {
   if (!r.ok()) {
     std::fprintf(stderr, "\ntestVHACD: %s: %s\n", vhacd::StatusName(r.status), r.message.c_str());
-    if (!report_path.empty()) WriteReport(report_path, input, r);
+    if (!cmd.report_path.empty()) WriteReport(cmd.report_path, cmd.input, r);
     return 1;
   }
   const vhacd::Report& rep = r.report;
@@ -255,15 +254,14 @@ int main(int argc, char** argv) {
       r.hulls.size(), rep.parts_before_merge, rep.concavity, rep.hausdorff_mesh_to_hulls,
       rep.hausdorff_hulls_to_mesh, rep.volume_iou >= 0 ? JsonNumber(rep.volume_iou).c_str() : "n/a",
       rep.seconds_total);
-
-  if (!report_path.empty()) {
-    if (!WriteReport(report_path, input, r)) {
-      std::fprintf(stderr, "testVHACD: cannot write %s\n", report_path.c_str());
+  if (!cmd.report_path.empty()) {
+    if (!WriteReport(cmd.report_path, cmd.input, r)) {
+      std::fprintf(stderr, "testVHACD: cannot write %s\n", cmd.report_path.c_str());
       return 1;
     }
-    std::printf("wrote %s\n", report_path.c_str());
+    std::printf("wrote %s\n", cmd.report_path.c_str());
   }
-  if (!output.empty()) {
+  if (!cmd.output.empty()) {
     hullpack::Scene out;
     for (size_t h = 0; h < r.hulls.size(); ++h) {
       hullpack::Mesh m;
@@ -273,12 +271,24 @@ int main(int argc, char** argv) {
       out.meshes.push_back(std::move(m));
     }
     hullpack::AddRootNodeForAllMeshes(out, "hulls");
-    const hullpack::Status st = hullpack::WriteScene(out, output);
+    const hullpack::Status st = hullpack::WriteScene(out, cmd.output);
     if (!st.ok()) {
       std::fprintf(stderr, "testVHACD: %s\n", st.ToString().c_str());
       return 1;
     }
-    std::printf("wrote %s\n", output.c_str());
+    std::printf("wrote %s\n", cmd.output.c_str());
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CommandLine cmd;
+  if (std::optional<int> exit_code =
+          ParseCommandLine(std::vector<std::string>(argv + 1, argv + argc), &cmd))
+    return *exit_code;
+  vhacd::Result result;
+  if (std::optional<int> exit_code = Run(cmd, &result)) return *exit_code;
+  return Report(cmd, result);
 }
