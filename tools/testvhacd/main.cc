@@ -226,8 +226,7 @@ std::optional<int> Run(const CommandLine& cmd, vhacd::Result* result) {
   std::vector<double> points;
   std::vector<uint32_t> indices;
   hullpack::SceneSoup(scene.value(), &points, &indices);
-  std::printf("input: %s, %zu points, %zu triangles
-", cmd.input.c_str(), points.size() / 3,
+  std::printf("input: %s, %zu points, %zu triangles\n", cmd.input.c_str(), points.size() / 3,
               indices.size() / 3);
   Progress progress(cmd.log_path);
   if (!cmd.log_path.empty() && !progress.log_ok()) {
