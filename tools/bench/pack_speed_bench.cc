@@ -264,6 +264,9 @@ int main(int argc, char** argv) {
   if (hi > 0)
     std::printf("\ntime per triangle (wall) from 100k triangles up: max / min = %.2f\n", hi / lo);
   std::printf("bytes identical to a single-thread run: %s\n", all_identical ? "yes" : "NO");
+  // One line from the smallest mesh to the largest, whichever input each came from.
+  for (hullpack::PlotSeries* series : {&wall, &cpu})
+    std::sort(series->points.begin(), series->points.end());
   plot.series = {wall, cpu};
   plot.note = "each point: median of the runs of one subdivided mesh; " + std::to_string(repeats) +
               " runs, each in its own process";
