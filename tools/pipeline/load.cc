@@ -19,6 +19,8 @@ Result<LoadedScene> LoadScene(const std::string& path,
   if (!scene.ok()) return scene.status();
   LoadedScene out;
   out.scene = std::move(scene.value());
+  for (const Image& image : out.scene.images)
+    if (!image.uri.empty()) out.image_uris.push_back(image.uri);
   const EmbedReport images = EmbedExternalImages(out.scene, FolderOf(path));
   out.images_embedded = images.embedded;
   out.images_kept_outside = images.kept_as_references;

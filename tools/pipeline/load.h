@@ -15,6 +15,7 @@ namespace hullpack {
 
 struct LoadedScene {
   Scene scene;
+  std::vector<std::string> image_uris;  // every image URI the file referenced, before embedding
   size_t images_embedded = 0;
   std::vector<std::string> images_kept_outside;  // one line per image left as a URI, and why
 };

@@ -3,7 +3,6 @@
 #include <chrono>
 #include <functional>
 
-#include "common/file_util.h"
 #include "common/parallel.h"
 #include "pipeline/assemble.h"
 #include "pipeline/check_and_repair.h"
@@ -78,8 +77,8 @@ Result<PackResult> PackScene(Scene scene, const PackOptions& options, PackObserv
   return result;
 }
 
-Result<PackReport> PackFile(const std::string& input, const std::string& output,
-                            const PackOptions& options, PackObserver* observer) {
+Result<PackResult> PackInput(const std::string& input, const PackOptions& options,
+                             PackObserver* observer) {
   const auto start = Clock::now();
   // The whole line is the pipeline after loading; loading shows its own percentage.
   if (observer) observer->OnProgress(0, "load");
@@ -94,17 +93,14 @@ Result<PackReport> PackFile(const std::string& input, const std::string& output,
   const double seconds_load = Seconds(start);
   Result<PackResult> packed = PackLoaded(std::move(loaded->scene), options, observer);
   if (!packed.ok()) return Status(packed.status().code(), input + ": " + packed.status().message());
-  const auto t = Clock::now();
-  Status written = WriteFileAtomically(output, packed->glb);
-  if (!written.ok()) return written;
-  PackReport report = std::move(packed->report);
+  PackReport& report = packed->report;
   report.images_embedded = loaded->images_embedded;
   report.images_kept_outside = std::move(loaded->images_kept_outside);
+  report.image_uris = std::move(loaded->image_uris);
   report.seconds_load = seconds_load;
-  report.seconds_write = Seconds(t);
   report.seconds_total = Seconds(start);
   if (observer) observer->OnProgress(1.0, "done");
-  return report;
+  return packed;
 }
 
 }  // namespace hullpack

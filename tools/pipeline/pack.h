@@ -4,8 +4,9 @@
 //   -> leave out what is unused (prune.h)
 //   -> per mesh: decompose and encode (pack_mesh.h)
 //   -> write (assemble.h: the packed GLB; then the file, atomically).
-// PackFile runs all of it, as `hullpack pack` does; PackScene runs the stages between load and
-// writing the file, for a scene already in memory. docs/architecture.md shows where each arrow is.
+// PackInput runs load and the stages after it, as `hullpack pack` does (the command then writes the
+// GLB atomically); PackScene runs the stages after load, for a scene already in memory.
+// docs/architecture.md shows where each arrow is.
 #ifndef HULLPACK_TOOLS_PIPELINE_PACK_H_
 #define HULLPACK_TOOLS_PIPELINE_PACK_H_
 
@@ -29,11 +30,10 @@ struct PackResult {
 Result<PackResult> PackScene(Scene scene, const PackOptions& options,
                              PackObserver* observer = nullptr);
 
-// Loads `input`, packs it and writes the GLB to `output` atomically (a temporary file, then
-// rename). Errors start with the path concerned. The report's stage seconds include load and
-// write.
-Result<PackReport> PackFile(const std::string& input, const std::string& output,
-                            const PackOptions& options, PackObserver* observer = nullptr);
+// Loads `input` (LoadScene: external images embedded) and packs it. Errors start with the path.
+// The report's stage seconds include loading (write is the caller's: 0 here).
+Result<PackResult> PackInput(const std::string& input, const PackOptions& options,
+                             PackObserver* observer = nullptr);
 
 }  // namespace hullpack
 

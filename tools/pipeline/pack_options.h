@@ -66,11 +66,13 @@ struct PackReport {
   // What the repair and prune stages changed or removed, one line per kind.
   std::vector<std::string> left_out;
   std::vector<std::string> not_kept;             // what the reader could not keep (Scene::dropped)
-  size_t images_embedded = 0;                    // external images put inside (PackFile)
-  std::vector<std::string> images_kept_outside;  // ... and those that could not be (PackFile)
+  size_t images_embedded = 0;                    // external images put inside (PackInput)
+  std::vector<std::string> images_kept_outside;  // ... and those that could not be (PackInput)
+  std::vector<std::string> image_uris;           // every image URI the file referenced (PackInput)
   size_t output_bytes = 0;
-  // Wall seconds of each stage, in pipeline order; they add up to seconds_total. load and write
-  // are PackFile's (0 from PackScene); assemble is the packed GLB's making.
+  // Wall seconds of each stage, in pipeline order; they add up to seconds_total. load is
+  // PackInput's (0 from PackScene), write the caller's who writes the file; assemble is the packed
+  // GLB's making.
   double seconds_load = 0, seconds_repair = 0, seconds_prune = 0, seconds_meshes = 0,
          seconds_assemble = 0, seconds_write = 0, seconds_total = 0;
 };
