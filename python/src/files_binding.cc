@@ -9,7 +9,7 @@
 #include "hullpack/cli_util.h"
 #include "hullpack/scene_summary.h"
 #include "io/scene_io.h"
-#include "mesh/merge.h"
+#include "mesh/flatten.h"
 #include "mesh/validate.h"
 #include "pipeline/pack.h"
 #include "py_util.h"
@@ -323,7 +323,7 @@ py::dict LoadMesh(const std::string& path) {
     if (!scene.ok()) {
       failed = scene.status();
     } else {
-      mesh = MergeMeshes(scene.value());
+      mesh = FlattenScene(scene.value());
       failed = ValidateMesh(mesh);
       if (!failed.ok()) failed = Status(failed.code(), path + ": " + failed.message());
     }

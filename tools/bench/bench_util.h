@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "common/file_util.h"
-#include "mesh/merge.h"
+#include "mesh/flatten.h"
 #include "mesh/repair.h"
 #include "scene/scene.h"
 
@@ -47,12 +47,12 @@ double MedianMs(int repeats, F&& run) {
 }
 
 // Every mesh of a scene as one, with the attributes the benchmarks compare (positions, normals,
-// the first UV set: what both codecs and the decomposition are given); see MergeMeshes. Vertices
+// the first UV set: what both codecs and the decomposition are given); see FlattenScene. Vertices
 // that differed only in an attribute left out (a UV set only some meshes have, colours) are welded,
 // as Draco's mesh builder welds them, so that every codec is given the same vertices; nothing
 // else is repaired.
 inline Mesh MergeGeometry(const Scene& scene) {
-  Mesh out = MergeMeshes(scene);
+  Mesh out = FlattenScene(scene);
   out.colors.clear();
   out.joints.clear();
   out.weights.clear();

@@ -24,6 +24,7 @@
 #include "gltf/packed_glb_reader.h"
 #include "io/scene_io.h"
 #include "o3dgc/o3dgc.h"
+#include "pipeline/check_and_repair.h"
 #include "pipeline/pack.h"
 
 namespace {
@@ -90,8 +91,9 @@ int main(int argc, char** argv) {
       ++failures;
       continue;
     }
-    // Draco gets the same meshes the packer encoded (after leaving out what is unused).
+    // Draco gets the same meshes the packer encoded (after repairs and leaving out what is unused).
     hullpack::Scene pruned = scene.value();
+    if (!hullpack::CheckAndRepair(pruned, options.repair).ok()) continue;  // PackScene succeeded
     hullpack::LeaveOutUnused(pruned, options.prune);
     // unpack(pack(x)) against x: the GLB read back as any user reads it; same triangle and vertex
     // counts (connectivity kept), skin attributes present, worst position error.

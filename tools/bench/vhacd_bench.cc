@@ -317,7 +317,7 @@ int MeasureOne(const std::string& mesh_path, const std::string& hulls_path,
   }
   std::vector<double> pts;
   std::vector<uint32_t> idx;
-  hullpack::FlattenScene(scene.value(), &pts, &idx);
+  hullpack::SceneSoup(scene.value(), &pts, &idx);
   Soup soup;
   for (size_t i = 0; i < pts.size(); i += 3)
     soup.points.emplace_back(pts[i], pts[i + 1], pts[i + 2]);
@@ -357,7 +357,7 @@ int Subdivide(const std::string& in, const std::string& out, size_t target) {
   }
   std::vector<double> pts;
   std::vector<uint32_t> idx;
-  hullpack::FlattenScene(scene.value(), &pts, &idx);
+  hullpack::SceneSoup(scene.value(), &pts, &idx);
   Soup s;
   for (size_t i = 0; i < pts.size(); i += 3) s.points.emplace_back(pts[i], pts[i + 1], pts[i + 2]);
   // Weld identical positions so that shared edges get one midpoint.
@@ -554,7 +554,7 @@ int main(int argc, char** argv) {
     }
     std::vector<double> pts;
     std::vector<uint32_t> idx;
-    hullpack::FlattenScene(scene.value(), &pts, &idx);
+    hullpack::SceneSoup(scene.value(), &pts, &idx);
     Soup soup;
     for (size_t i = 0; i < pts.size(); i += 3)
       soup.points.emplace_back(pts[i], pts[i + 1], pts[i + 2]);

@@ -11,7 +11,6 @@
 
 #include "common/cli_args.h"
 #include "common/file_util.h"
-#include "gltf/external_images.h"
 #include "hullpack/cli_util.h"
 #include "io/scene_io.h"
 #include "pipeline/pack.h"
@@ -25,12 +24,6 @@ struct Job {
   std::string error;
   nlohmann::json report;
 };
-
-std::string FolderOf(const std::string& path) {
-  const size_t slash = path.find_last_of('/');
-  if (slash == std::string::npos) return ".";
-  return slash == 0 ? "/" : path.substr(0, slash);
-}
 
 class ProgressForwarder : public PackObserver {
  public:
@@ -81,8 +74,16 @@ nlohmann::json ReportJson(const PackReport& r) {
           {"left_out", r.left_out},
           {"not_kept", r.not_kept},
           {"output_bytes", r.output_bytes},
+          {"images_embedded", r.images_embedded},
+          {"images_kept_as_references", r.images_kept_outside},
           {"seconds",
-           {{"prune", r.seconds_prune}, {"meshes", r.seconds_meshes}, {"write", r.seconds_write}}}};
+           {{"load", r.seconds_load},
+            {"repair", r.seconds_repair},
+            {"prune", r.seconds_prune},
+            {"meshes", r.seconds_meshes},
+            {"assemble", r.seconds_assemble},
+            {"write", r.seconds_write},
+            {"total", r.seconds_total}}}};
 }
 
 void PackOne(Job& job, const std::vector<std::string>& inputs, const PackOptions& options,
@@ -118,6 +119,7 @@ struct PackCommandLine {
   std::string cache_dir;
   bool force = false, quiet = false;
   size_t jobs = 0;                       // 0: every core
+  size_t threads = 0;                    // per input; 0: every core (one input at a time) or 1
   std::vector<std::string> output_args;  // what can change an output's bytes: the cache key
 };
 
@@ -140,6 +142,9 @@ std::optional<int> ParsePackCommandLine(const std::vector<std::string>& args,
   cli.String("--cache", "DIR", &cmd->cache_dir,
              "reuse the outputs of unchanged inputs (a content-addressed cache)");
   cli.Int("--jobs", "N", 1, 256, &cmd->jobs, "inputs packed at once (default: every core)");
+  cli.Int("--threads", "N", 1, 256, &cmd->threads,
+          "threads for each input's stages (default: every core, 1 with several\n"
+          "inputs at once); the output bytes are the same for any N");
   cli.Flag("--force", &cmd->force, "replace existing outputs");
   cli.Flag("--quiet", &cmd->quiet, "no progress line");
   if (std::optional<int> exit_code = cli.Parse(args)) return exit_code;
@@ -184,8 +189,15 @@ std::optional<int> PlanJobs(const PackCommandLine& cmd, std::vector<Job>* work) 
 void RunJobs(PackCommandLine& cmd, std::vector<Job>& work, const AssetCache* cache) {
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   const size_t threads = std::min<size_t>(work.size(), cmd.jobs > 0 ? cmd.jobs : cores);
-  // Several files at once: each decomposition on one thread (its result does not depend on it).
-  if (threads > 1) cmd.options.collision.parameters.num_threads = 1;
+  // Several files at once: each one's stages on one thread (their results do not depend on it).
+  PackOptions& o = cmd.options;
+  if (cmd.threads > 0) {
+    o.threads = static_cast<int>(cmd.threads);
+    o.collision.parameters.num_threads = static_cast<uint32_t>(cmd.threads);
+  } else if (threads > 1) {
+    o.threads = 1;
+    o.collision.parameters.num_threads = 1;
+  }
   ProgressLine progress(!cmd.quiet);
   std::atomic<size_t> next{0};
   auto worker = [&]() {
@@ -319,9 +331,9 @@ std::vector<std::string> OutputArgs(const std::vector<std::string>& args,
                                     const std::vector<std::string>& operands) {
   // Options that only steer the run (where to write, how many threads, which slice), never the
   // bytes of an output; the first group takes a value.
-  static const char* const kWithValue[] = {"-o",      "--output", "--report",
-                                           "--jobs",  "--cache",  "--manifest",
-                                           "--shard", "--shards", "--merge"};
+  static const char* const kWithValue[] = {"-o",       "--output",  "--report",   "--jobs",
+                                           "--cache",  "--threads", "--manifest", "--shard",
+                                           "--shards", "--merge"};
   static const char* const kFlags[] = {"--force", "--quiet", "--"};
   std::vector<std::string> out;
   for (size_t i = 0; i < args.size(); ++i) {
@@ -344,19 +356,12 @@ std::vector<std::string> OutputArgs(const std::vector<std::string>& args,
 
 Result<PackedFile> PackFile(const std::string& input, const PackOptions& options,
                             PackObserver* observer) {
-  Result<Scene> scene = ReadScene(input);
-  if (!scene.ok()) return scene.status();
+  Result<PackResult> packed = PackInput(input, options, observer);
+  if (!packed.ok()) return packed.status();
   PackedFile out;
-  for (const Image& image : scene->images)
-    if (!image.uri.empty()) out.image_uris.push_back(image.uri);
-  // One GLB for web delivery: textures beside the input go inside it.
-  const EmbedReport images = EmbedExternalImages(scene.value(), FolderOf(input));
-  Result<PackResult> packed = PackScene(std::move(scene.value()), options, observer);
-  if (!packed.ok()) return Status(packed.status().code(), input + ": " + packed.status().message());
   out.glb = std::move(packed->glb);
   out.report = ReportJson(packed->report);
-  out.report["images_embedded"] = images.embedded;
-  out.report["images_kept_as_references"] = images.kept_as_references;
+  out.image_uris = std::move(packed->report.image_uris);
   return out;
 }
 

@@ -2,11 +2,17 @@
 
 #include <algorithm>
 #include <array>
+#include <climits>
 #include <cmath>
 #include <cstring>
 #include <unordered_map>
-#include <unordered_set>
 
+#include <atomic>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
+
+#include "common/parallel.h"
 #include "io/text_scanner.h"
 
 namespace hullpack {
@@ -17,21 +23,45 @@ struct Corner {
   int64_t v = -1, vt = -1, vn = -1;
   bool operator==(const Corner& o) const { return v == o.v && vt == o.vt && vn == o.vn; }
 };
-struct CornerHash {
-  size_t operator()(const Corner& c) const {
-    uint64_t h = static_cast<uint64_t>(c.v) * 0x9E3779B97F4A7C15ull;
-    h ^= static_cast<uint64_t>(c.vt + 1) * 0xC2B2AE3D27D4EB4Full + (h << 6) + (h >> 2);
-    h ^= static_cast<uint64_t>(c.vn + 1) * 0x165667B19E3779F9ull + (h << 6) + (h >> 2);
-    return static_cast<size_t>(h);
-  }
-};
+
+constexpr uint32_t kNone = 0xFFFFFFFFu;
 
 struct MeshBuilder {
   std::string name;
-  std::unordered_map<Corner, uint32_t, CornerHash> vertex_of;
+  // Output vertices by position: first_of_v[v - v_base] is the first vertex made from `v`,
+  // next_same_v chains the others (other texture coordinates or normals). Most positions have one
+  // or two, so a lookup is a short walk; the index costs 4 bytes per position of the range this
+  // mesh uses (an `o` object usually uses its own run of `v` lines) and per vertex.
+  std::vector<uint32_t> first_of_v;
+  size_t v_base = 0;
+  std::vector<uint32_t> next_same_v;
   std::vector<Corner> corners;  // one per output vertex
   std::vector<uint32_t> indices;
   std::vector<uint32_t> material_ids;
+
+  // The output vertex of `c`, made on first use (so vertices are numbered in order of first use).
+  uint32_t VertexOf(const Corner& c) {
+    const size_t v = static_cast<size_t>(c.v);
+    if (first_of_v.empty()) v_base = v;
+    if (v < v_base) {  // grow downwards, with room for more
+      const size_t grow = std::max(v_base - v, first_of_v.size());
+      const size_t new_base = v_base > grow ? v_base - grow : 0;
+      first_of_v.insert(first_of_v.begin(), v_base - new_base, kNone);
+      v_base = new_base;
+    }
+    const size_t at = v - v_base;
+    if (at >= first_of_v.size()) first_of_v.resize(std::max(at + 1, first_of_v.size() * 2), kNone);
+    uint32_t* link = &first_of_v[at];
+    while (*link != kNone) {
+      if (corners[*link] == c) return *link;
+      link = &next_same_v[*link];
+    }
+    const uint32_t id = static_cast<uint32_t>(corners.size());
+    *link = id;
+    corners.push_back(c);
+    next_same_v.push_back(kNone);
+    return id;
+  }
 };
 
 // Statements of the OBJ specification that carry nothing the scene model holds.
@@ -47,6 +77,98 @@ bool IsIgnoredStatement(std::string_view k) {
   return false;
 }
 
+// A face corner as written: raw (1-based or negative) indices; kAbsent when not given.
+constexpr int32_t kAbsent = INT32_MIN;
+
+// The numbers of a `v`, `vt` or `vn` line, as ObjParser::ReadNumbers reads them; false where it
+// would report an error.
+bool ReadLineNumbers(TextScanner& s, double* out, int min_count, int max_count, int* count) {
+  *count = 0;
+  for (;;) {
+    s.SkipBlanks();
+    if (s.AtLineEnd()) break;
+    double value;
+    if (*count == max_count || !s.ParseDouble(&value)) return false;
+    out[(*count)++] = value;
+  }
+  return *count >= min_count;
+}
+
+// The corners of an `f` line, as ObjParser::Face reads them, unresolved; false where it would
+// report a malformed corner.
+// Indices that do not fit 32 bits are left to the sequential pass too.
+bool ReadFaceCorners(TextScanner& s, std::vector<int32_t>* raw, uint32_t* corners) {
+  *corners = 0;
+  for (;;) {
+    s.SkipBlanks();
+    if (s.AtLineEnd()) return true;
+    int64_t v = kAbsent, vt = kAbsent, vn = kAbsent;  // kAbsent widened
+    if (!s.ParseInt64(&v)) return false;
+    if (s.Consume('/')) {
+      if (s.Peek() != '/' && !s.ParseInt64(&vt)) return false;
+      if (s.Consume('/') && !s.ParseInt64(&vn)) return false;
+    }
+    const char next = s.Peek();
+    if (next != ' ' && next != '\t' && next != '\r' && next != '\n' && next != '#' && !s.AtEnd())
+      return false;
+    for (int64_t x : {v, vt, vn}) {
+      if (x != kAbsent && (x <= INT32_MIN || x > INT32_MAX)) return false;
+      raw->push_back(x == kAbsent ? kAbsent : static_cast<int32_t>(x));
+    }
+    ++*corners;
+  }
+}
+
+// The numbers of the `v`, `vt`, `vn` and `f` lines of one part of the text (split at line starts),
+// read ahead on several threads; the sequential pass takes them in order instead of reading the
+// text again. A part with a line the read-ahead would not read as the sequential pass does (any
+// malformed line) is marked not ok: the sequential pass reads it itself and reports the error.
+struct ReadAhead {
+  const char* begin = nullptr;
+  const char* end = nullptr;
+  bool ok = true;
+  // The numbers of the v/vt/vn lines, in order: as the floats they become (v, vn), or as read
+  // (vt: v is flipped in double first).
+  std::vector<float> floats;
+  std::vector<double> doubles;
+  std::vector<uint8_t> counts;     // numbers per v/vt/vn line
+  std::vector<int32_t> corners;    // 3 raw indices per face corner
+  std::vector<uint32_t> per_face;  // corners per f line
+  size_t next_line = 0, next_float = 0, next_double = 0, next_face = 0, next_corner = 0;
+
+  void Read() {
+    TextScanner s(begin, end);
+    while (ok && !s.AtEnd()) {
+      s.SkipBlanks();
+      if (s.AtLineEnd()) {
+        s.SkipLine();
+        continue;
+      }
+      const std::string_view key = s.Word();
+      double n[7];
+      int count = 0;
+      uint32_t face_corners = 0;
+      if (key == "v" || key == "vt" || key == "vn") {
+        const int lo = key == "vt" ? 1 : 3, hi = key == "v" ? 7 : 3;
+        ok = ReadLineNumbers(s, n, lo, hi, &count);
+        if (key == "vt") {
+          doubles.insert(doubles.end(), n, n + count);
+        } else {
+          for (int k = 0; k < count; ++k) floats.push_back(static_cast<float>(n[k]));
+        }
+        counts.push_back(static_cast<uint8_t>(count));
+      } else if (key == "f" || key == "fo") {
+        ok = ReadFaceCorners(s, &corners, &face_corners);
+        per_face.push_back(face_corners);
+      }
+      s.SkipLine();
+    }
+  }
+};
+
+// Texts at least this large are read ahead in parallel.
+constexpr size_t kReadAheadBytes = size_t(1) << 20;
+
 class ObjParser {
  public:
   ObjParser(const char* data, size_t size, const std::string& name, const ObjParseOptions& options)
@@ -56,7 +178,18 @@ class ObjParser {
     if (std::memchr(data_, '\0', size_) != nullptr)
       return Error("binary data (NUL byte): not an OBJ file");
     builders_.emplace_back();
+    if (size_ >= kReadAheadBytes && options_.threads != 1) StartReadAhead();
+    // Progress about every 1 % of the text (checked every 4096 lines).
+    const size_t step = std::max<size_t>(size_ / 100, 1);
+    size_t lines = 0, reported = 0;
     while (!scan_.AtEnd()) {
+      if (options_.progress && (++lines & 4095) == 0) {
+        const size_t at = static_cast<size_t>(scan_.position() - data_);
+        if (at >= reported + step) {
+          reported = at;
+          options_.progress(static_cast<double>(at) / static_cast<double>(size_));
+        }
+      }
       scan_.SkipBlanks();
       if (scan_.AtLineEnd()) {
         scan_.SkipLine();
@@ -67,10 +200,90 @@ class ObjParser {
       if (!s.ok()) return s;
       scan_.SkipLine();
     }
+    StopReadAhead();
+    ahead_.clear();
     return Finish();
   }
+  ~ObjParser() { StopReadAhead(); }
 
  private:
+  // Splits the text at line starts into a few parts per thread and starts reading their numbers
+  // ahead, in order, while the sequential pass consumes the parts already read.
+  void StartReadAhead() {
+    const int threads = ThreadCount(options_.threads);
+    const size_t parts = static_cast<size_t>(threads) * 16;
+    const char* end = data_ + size_;
+    for (size_t k = 0; k < parts; ++k) {
+      const char* begin = ahead_.empty() ? data_ : ahead_.back().end;
+      const char* stop = k + 1 == parts ? end : data_ + size_ * (k + 1) / parts;
+      if (stop < begin) stop = begin;
+      const void* nl = std::memchr(stop, '\n', static_cast<size_t>(end - stop));
+      stop = nl ? static_cast<const char*>(nl) + 1 : end;
+      ahead_.emplace_back();
+      ahead_.back().begin = begin;
+      ahead_.back().end = stop;
+      if (stop == end) break;
+    }
+    ready_.assign(ahead_.size(), 0);
+    const size_t window = 2 * static_cast<size_t>(threads);
+    for (int t = 0; t < threads; ++t) {
+      readers_.emplace_back([this, window] {
+        for (size_t k; (k = next_to_read_.fetch_add(1)) < ahead_.size();) {
+          {
+            // At most a few parts ahead of the sequential pass: their numbers take memory.
+            std::unique_lock<std::mutex> lock(ready_mutex_);
+            ready_changed_.wait(lock, [&] { return stopping_ || k < consumed_ + window; });
+            if (stopping_) return;
+          }
+          ahead_[k].Read();
+          std::lock_guard<std::mutex> lock(ready_mutex_);
+          ready_[k] = 1;
+          ready_changed_.notify_all();
+        }
+      });
+    }
+  }
+
+  void StopReadAhead() {
+    {
+      std::lock_guard<std::mutex> lock(ready_mutex_);
+      stopping_ = true;
+      ready_changed_.notify_all();
+    }
+    for (std::thread& t : readers_) t.join();
+    readers_.clear();
+  }
+
+  // The read-ahead part holding the line at `at`, once read, when it read it; null otherwise.
+  // Parts left behind are freed.
+  ReadAhead* AheadAt(const char* at) {
+    while (ahead_at_ < ahead_.size() && ahead_[ahead_at_].end <= at) {
+      WaitUntilRead(ahead_at_);  // a reader may still be writing it
+      ahead_[ahead_at_] = ReadAhead();
+      ++ahead_at_;
+      std::lock_guard<std::mutex> lock(ready_mutex_);
+      consumed_ = ahead_at_;
+      ready_changed_.notify_all();
+    }
+    if (ahead_at_ == ahead_.size()) return nullptr;
+    WaitUntilRead(ahead_at_);
+    return ahead_[ahead_at_].ok ? &ahead_[ahead_at_] : nullptr;
+  }
+
+  void WaitUntilRead(size_t part) {
+    std::unique_lock<std::mutex> lock(ready_mutex_);
+    ready_changed_.wait(lock, [&] { return ready_[part] != 0; });
+  }
+
+  // The next read-ahead v/vt/vn line's numbers.
+  int TakeNumbers(ReadAhead& a, bool as_double, double* out) {
+    const int count = a.counts[a.next_line++];
+    for (int k = 0; k < count; ++k)
+      out[k] = as_double ? a.doubles[a.next_double++] : a.floats[a.next_float++];
+    scan_.SkipToLineEnd();
+    return count;
+  }
+
   Status Error(const std::string& what) const {
     return Status(StatusCode::kParseError,
                   name_ + ": line " + std::to_string(scan_.line()) + ": " + what);
@@ -97,32 +310,47 @@ class ObjParser {
   Status Statement(std::string_view key) {
     double n[7];
     int count = 0;
+    ReadAhead* ahead = nullptr;
+    if (!ahead_.empty() && (key == "v" || key == "vt" || key == "vn" || key == "f" || key == "fo"))
+      ahead = AheadAt(scan_.position());
     if (key == "v") {
-      Status s = ReadNumbers(n, 3, 7, &count, "vertex");
-      if (!s.ok()) return s;
-      positions_.push_back({n[0], n[1], n[2]});
+      if (ahead) {
+        count = TakeNumbers(*ahead, false, n);
+      } else {
+        Status s = ReadNumbers(n, 3, 7, &count, "vertex");
+        if (!s.ok()) return s;
+      }
+      positions_.push_back({float(n[0]), float(n[1]), float(n[2])});
       if (count >= 6) {  // `v x y z r g b`; a 4-number line is `v x y z w`
         if (colors_.empty() && positions_.size() > 1)
           colors_.resize(positions_.size() - 1, {1, 1, 1});
-        colors_.push_back({n[3], n[4], n[5]});
+        colors_.push_back({float(n[3]), float(n[4]), float(n[5])});
       } else if (!colors_.empty()) {
         colors_.push_back({1, 1, 1});
       }
       return Status::Ok();
     }
     if (key == "vt") {
-      Status s = ReadNumbers(n, 1, 3, &count, "texture coordinate");
-      if (!s.ok()) return s;
+      if (ahead) {
+        count = TakeNumbers(*ahead, true, n);
+      } else {
+        Status s = ReadNumbers(n, 1, 3, &count, "texture coordinate");
+        if (!s.ok()) return s;
+      }
       texcoords_.push_back({n[0], count > 1 ? n[1] : 0.0});
       return Status::Ok();
     }
     if (key == "vn") {
-      Status s = ReadNumbers(n, 3, 3, &count, "normal");
-      if (!s.ok()) return s;
-      normals_.push_back({n[0], n[1], n[2]});
+      if (ahead) {
+        count = TakeNumbers(*ahead, false, n);
+      } else {
+        Status s = ReadNumbers(n, 3, 3, &count, "normal");
+        if (!s.ok()) return s;
+      }
+      normals_.push_back({float(n[0]), float(n[1]), float(n[2])});
       return Status::Ok();
     }
-    if (key == "f" || key == "fo") return Face();
+    if (key == "f" || key == "fo") return ahead ? FaceReadAhead(*ahead) : Face();
     if (key == "o") {
       StartMesh(std::string(scan_.RestOfLine()));
       return Status::Ok();
@@ -210,20 +438,43 @@ class ObjParser {
       }
       polygon_.push_back(c);
     }
+    return AddPolygon();
+  }
+
+  // The next read-ahead face, its indices resolved as ParseCorner resolves them.
+  Status FaceReadAhead(ReadAhead& a) {
+    polygon_.clear();
+    const uint32_t n = a.per_face[a.next_face++];
+    for (uint32_t k = 0; k < n; ++k) {
+      const int32_t* raw = &a.corners[(a.next_corner++) * 3];
+      Corner c;
+      if (!Resolve(raw[0], positions_.size(), &c.v)) {
+        return Error("face refers to vertex " + std::to_string(raw[0]) + " but only " +
+                     std::to_string(positions_.size()) + " are defined");
+      }
+      if (raw[1] != kAbsent && !Resolve(raw[1], texcoords_.size(), &c.vt)) {
+        return Error("face refers to texture coordinate " + std::to_string(raw[1]) + " but only " +
+                     std::to_string(texcoords_.size()) + " are defined");
+      }
+      if (raw[2] != kAbsent && !Resolve(raw[2], normals_.size(), &c.vn)) {
+        return Error("face refers to normal " + std::to_string(raw[2]) + " but only " +
+                     std::to_string(normals_.size()) + " are defined");
+      }
+      polygon_.push_back(c);
+    }
+    scan_.SkipToLineEnd();
+    return AddPolygon();
+  }
+
+  // polygon_, fan-triangulated into the current mesh.
+  Status AddPolygon() {
     if (polygon_.size() < 3) {
       ++dropped_short_faces_;
       return Status::Ok();
     }
     MeshBuilder& b = builders_.back();
     uint32_t ids[3];
-    auto vertex = [&](const Corner& c) {
-      auto it = b.vertex_of.find(c);
-      if (it != b.vertex_of.end()) return it->second;
-      const uint32_t id = static_cast<uint32_t>(b.corners.size());
-      b.vertex_of.emplace(c, id);
-      b.corners.push_back(c);
-      return id;
-    };
+    auto vertex = [&](const Corner& c) { return b.VertexOf(c); };
     ids[0] = vertex(polygon_[0]);
     for (size_t i = 1; i + 1 < polygon_.size(); ++i) {  // fan triangulation
       ids[1] = vertex(polygon_[i]);
@@ -337,6 +588,8 @@ class ObjParser {
     size_t missing_uv = 0, missing_normal = 0;
     for (MeshBuilder& b : builders_) {
       if (b.indices.empty()) continue;
+      b.first_of_v = std::vector<uint32_t>();
+      b.next_same_v = std::vector<uint32_t>();
       KeepFileOrder(b);
       Mesh m;
       m.name = b.name;
@@ -465,11 +718,22 @@ class ObjParser {
   }
 
   TextScanner scan_;
+  std::vector<ReadAhead> ahead_;
+  size_t ahead_at_ = 0;
+  std::vector<std::thread> readers_;
+  std::atomic<size_t> next_to_read_{0};
+  // Guarded by ready_mutex_: per part, read; the parts the sequential pass is done with; stop.
+  std::vector<char> ready_;
+  size_t consumed_ = 0;
+  bool stopping_ = false;
+  std::mutex ready_mutex_;
+  std::condition_variable ready_changed_;
   const char* data_;
   size_t size_;
   const std::string& name_;
   const ObjParseOptions& options_;
-  std::vector<std::array<double, 3>> positions_, colors_, normals_;
+  // Kept as the floats the meshes get (texture coordinates stay double: v is flipped first).
+  std::vector<std::array<float, 3>> positions_, colors_, normals_;
   std::vector<std::array<double, 2>> texcoords_;
   std::vector<MeshBuilder> builders_;
   std::vector<Corner> polygon_;

@@ -20,6 +20,11 @@ struct ObjParseOptions {
   // Returns the text of a material library named by `mtllib`; unset = libraries are not read
   // (and that is reported in Scene::dropped).
   std::function<Result<std::string>(const std::string& library_name)> load_material_library;
+  // Threads that read the numbers of a large text ahead (0 = every core, 1 = none); the scene
+  // does not depend on it.
+  int threads = 0;
+  // Called now and then with the fraction of the text parsed (may be empty).
+  std::function<void(double)> progress;
 };
 
 // Parses OBJ text. `name` prefixes error messages (usually the path).

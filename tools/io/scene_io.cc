@@ -86,7 +86,7 @@ const char* FormatName(FileFormat format) {
   return "unknown";
 }
 
-Result<Scene> ReadScene(const std::string& path) {
+Result<Scene> ReadScene(const std::string& path, const ReadOptions& options) {
   const FileFormat format = FormatFromExtension(path);
   if (format == FileFormat::kUnknown) {
     const std::string ext = LowerExtension(path);
@@ -99,6 +99,7 @@ Result<Scene> ReadScene(const std::string& path) {
   if (bytes.value().empty()) return Status(StatusCode::kParseError, path + ": empty file");
   if (HasOwnParser(format)) {
     ObjParseOptions obj_options;
+    obj_options.progress = options.progress;
     const std::string folder = Folder(path);
     obj_options.load_material_library =
         [folder](const std::string& library) -> Result<std::string> {

@@ -13,6 +13,7 @@
 #define HULLPACK_TOOLS_IO_SCENE_IO_H_
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -27,8 +28,14 @@ enum class FileFormat { kUnknown, kObj, kOff, kWrl, kPly, kStl, kGltf, kGlb, kFb
 FileFormat FormatFromExtension(const std::string& path);
 const char* FormatName(FileFormat format);
 
+struct ReadOptions {
+  // Called with the fraction of the file read so far (from the reading thread; the OBJ parser
+  // calls it as it goes, other formats once at the end). May be empty.
+  std::function<void(double)> progress;
+};
+
 // Reads any supported file. The Status message starts with the path.
-Result<Scene> ReadScene(const std::string& path);
+Result<Scene> ReadScene(const std::string& path, const ReadOptions& options = {});
 
 // Reads a file already in memory; `format` must not be kUnknown. `name` is used in messages.
 Result<Scene> ReadSceneFromMemory(const uint8_t* data, size_t size, FileFormat format,

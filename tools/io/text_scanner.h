@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <string_view>
 
 namespace hullpack {
@@ -45,6 +46,12 @@ class TextScanner {
     }
   }
   bool AtLineEnd() const { return p_ >= end_ || *p_ == '\n' || *p_ == '#'; }
+  const char* position() const { return p_; }
+  // Moves to the end of the line (its '\n', or the end of the text), not past it.
+  void SkipToLineEnd() {
+    const void* nl = std::memchr(p_, '\n', static_cast<size_t>(end_ - p_));
+    p_ = nl ? static_cast<const char*>(nl) : end_;
+  }
   void SkipLine() {
     while (p_ < end_ && *p_ != '\n') ++p_;
     if (p_ < end_) {

@@ -4,8 +4,11 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <numeric>
 #include <vector>
+
+#include "common/parallel.h"
 
 namespace hullpack {
 namespace {
@@ -24,7 +27,7 @@ void AppendFloats(const std::vector<float>& values, size_t width, size_t vertex,
 }
 
 // For each vertex, the lowest-numbered vertex with identical attributes (itself if none).
-std::vector<uint32_t> FindIdenticalVertices(const Mesh& mesh) {
+std::vector<uint32_t> FindIdenticalVertices(const Mesh& mesh, int threads) {
   const size_t n = mesh.vertex_count();
   // All attributes of a vertex as one row of 32-bit words; rows of equal vertices are equal.
   std::vector<uint32_t> rows;
@@ -51,10 +54,13 @@ std::vector<uint32_t> FindIdenticalVertices(const Mesh& mesh) {
 
   std::vector<uint32_t> order(n);
   std::iota(order.begin(), order.end(), 0u);
-  std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
-    const int c = std::memcmp(&*row_of(a), &*row_of(b), width * sizeof(uint32_t));
-    return c != 0 ? c < 0 : a < b;
-  });
+  ParallelSort(
+      order.begin(), order.end(),
+      [&](uint32_t a, uint32_t b) {
+        const int c = std::memcmp(&*row_of(a), &*row_of(b), width * sizeof(uint32_t));
+        return c != 0 ? c < 0 : a < b;
+      },
+      threads);
   std::vector<uint32_t> representative(n);
   for (size_t i = 0; i < n; ++i) {
     const bool same_as_previous =
@@ -116,7 +122,7 @@ void MarkDuplicateTriangles(const Mesh& mesh, const RepairOptions& options,
                      next > prev,
                      static_cast<uint32_t>(t)});
   }
-  std::sort(canon.begin(), canon.end());
+  ParallelSort(canon.begin(), canon.end(), std::less<Canonical>(), options.threads);
   for (size_t i = 0; i < canon.size();) {
     size_t j = i;
     size_t per_winding[2] = {0, 0};
@@ -157,7 +163,7 @@ RepairReport RepairMesh(Mesh& mesh, const RepairOptions& options) {
 
   std::vector<uint32_t> representative(vertex_count);
   if (options.weld_duplicate_vertices) {
-    representative = FindIdenticalVertices(mesh);
+    representative = FindIdenticalVertices(mesh, options.threads);
     for (uint32_t& index : mesh.indices) index = representative[index];
   } else {
     std::iota(representative.begin(), representative.end(), 0u);

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <mutex>
+
+#include "common/parallel.h"
 
 namespace hullpack {
 namespace {
@@ -11,15 +14,6 @@ using Clock = std::chrono::steady_clock;
 double Seconds(Clock::time_point since) {
   return std::chrono::duration<double>(Clock::now() - since).count();
 }
-
-// A measured error this far below the budget makes one bit fewer worth a try (one bit fewer about
-// doubles the error).
-constexpr double kTryFewerBits = 0.6;
-
-struct Candidate {
-  bool ok = false;
-  BudgetedEncoding e;
-};
 
 }  // namespace
 
@@ -58,76 +52,98 @@ int GuaranteedPositionBits(o3dgc::RangeMode mode, const std::array<double, 3>& e
   return std::clamp(bits, 1, 30);
 }
 
+double PositionGridError(const Mesh& mesh, o3dgc::RangeMode mode, int bits) {
+  return o3dgc::PositionQuantizationError(mesh.positions.data(), 3 * sizeof(float),
+                                          mesh.vertex_count(), bits, mode);
+}
+
 Result<BudgetedEncoding> EncodeWithinError(const Mesh& mesh, const std::vector<uint32_t>& groups,
-                                           const MeshCodecSettings& settings, double max_error) {
+                                           const MeshCodecSettings& settings, double max_error,
+                                           int threads) {
   // Every grid keeps a mesh of zero size (empty, or all positions equal) exactly, so such a mesh
   // meets even a zero budget (max_error x its diagonal of 0).
   const bool zero_size = PositionRange(mesh) == 0;
   if (!(max_error > 0 || (max_error == 0 && zero_size)) || !std::isfinite(max_error)) {
     return Status(StatusCode::kInvalidArgument, "error budget must be positive");
   }
-  double seconds_encode = 0;
-  int tried = 0;
-  // Encodes and measures one grid.
-  auto attempt = [&](o3dgc::RangeMode mode, int bits) -> Result<Candidate> {
-    MeshCodecSettings s = settings;
-    s.position_bits = bits;
-    s.position_range = mode;
-    auto t = Clock::now();
-    Result<EncodedMesh> encoded = EncodeMesh(mesh, groups, s);
-    seconds_encode += Seconds(t);
-    if (!encoded.ok()) return encoded.status();
-    ++tried;
-    Candidate c;
-    t = Clock::now();
-    Result<Mesh> decoded =
-        DecodeMesh(encoded->stream.data(), encoded->stream.size(), &c.e.groups, mesh.name);
-    c.e.seconds_decode = Seconds(t);
-    if (!decoded.ok()) {
-      return Status(StatusCode::kInternal,
-                    "mesh '" + mesh.name + "' does not decode: " + decoded.status().message());
-    }
-    c.e.max_error = MaxVertexDistance(mesh, decoded.value());
-    c.ok = c.e.max_error <= max_error;
-    c.e.encoded = std::move(encoded.value());
-    c.e.decoded = std::move(decoded.value());
-    c.e.position_bits = bits;
-    c.e.position_range = mode;
-    return c;
+  struct Candidate {
+    o3dgc::RangeMode mode;
+    int bits;
+    double error;
+    Result<EncodedMesh> encoded = Status(StatusCode::kInternal, "not encoded");
   };
-
+  std::vector<Candidate> candidates;
   const std::array<double, 3> extent = PositionExtent(mesh);
   const int uniform_bits = GuaranteedPositionBits(o3dgc::RangeMode::kUniform, extent, max_error);
-  Candidate best;
   for (o3dgc::RangeMode mode :
        {o3dgc::RangeMode::kPerAxis, o3dgc::RangeMode::kUniform, o3dgc::RangeMode::kDiagonal}) {
     int bits = GuaranteedPositionBits(mode, extent, max_error);
     // With more bits than kUniform needs, the diagonal grid is finer than the uniform one.
     if (mode == o3dgc::RangeMode::kDiagonal && bits > uniform_bits) continue;
-    Result<Candidate> c = attempt(mode, bits);
-    if (!c.ok()) return c.status();
-    // Float rounding of the decoded values can push a guaranteed grid just past the budget.
-    while (!c->ok && bits < 30) {
-      c = attempt(mode, ++bits);
-      if (!c.ok()) return c.status();
+    double error = PositionGridError(mesh, mode, bits);
+    if (error < 0) {
+      return Status(StatusCode::kInvalidMesh,
+                    "mesh '" + mesh.name + "': positions the encoder cannot quantize");
     }
-    while (c->ok && bits > 1 && c->e.max_error <= kTryFewerBits * max_error) {
-      Result<Candidate> fewer = attempt(mode, bits - 1);
-      if (!fewer.ok()) return fewer.status();
-      if (!fewer->ok) break;
-      c = std::move(fewer);
+    // Float rounding of the decoded values can push a guaranteed grid just past the budget.
+    while (error > max_error && bits < 30) error = PositionGridError(mesh, mode, ++bits);
+    if (error > max_error) continue;
+    // A budget well above the guarantee's bound (points off the grid's worst case) may allow
+    // fewer bits.
+    while (bits > 1) {
+      const double fewer = PositionGridError(mesh, mode, bits - 1);
+      if (!(fewer <= max_error)) break;
+      error = fewer;
       --bits;
     }
-    if (c->ok && (!best.ok || c->e.encoded.stream.size() < best.e.encoded.stream.size()))
-      best = std::move(c.value());
+    candidates.push_back({mode, bits, error});
   }
-  if (!best.ok) {
+  if (candidates.empty()) {
     return Status(StatusCode::kInternal,
                   "mesh '" + mesh.name + "': no position grid keeps the error within the budget");
   }
-  best.e.streams_tried = tried;
-  best.e.seconds_encode = seconds_encode;
-  return std::move(best.e);
+  auto t = Clock::now();
+  std::mutex progress_mutex;
+  std::vector<float> done(candidates.size(), 0.0f);
+  ParallelFor(candidates.size(), threads, [&](size_t i) {
+    MeshCodecSettings s = settings;
+    s.position_bits = candidates[i].bits;
+    s.position_range = candidates[i].mode;
+    if (settings.progress) {
+      s.progress = [&, i](float f) {
+        std::lock_guard<std::mutex> lock(progress_mutex);
+        done[i] = f;
+        float sum = 0;
+        for (float d : done) sum += d;
+        return settings.progress(sum / static_cast<float>(done.size()));
+      };
+    }
+    candidates[i].encoded = EncodeMesh(mesh, groups, s);
+  });
+  BudgetedEncoding out;
+  out.seconds_encode = Seconds(t);
+  // The smallest stream; on a tie the first candidate, whatever the thread count.
+  size_t best = 0;
+  for (size_t i = 0; i < candidates.size(); ++i) {
+    if (!candidates[i].encoded.ok()) return candidates[i].encoded.status();
+    if (candidates[i].encoded->stream.size() < candidates[best].encoded->stream.size()) best = i;
+  }
+  Candidate& chosen = candidates[best];
+  t = Clock::now();
+  Result<Mesh> decoded = DecodeMesh(chosen.encoded->stream.data(), chosen.encoded->stream.size(),
+                                    &out.groups, mesh.name);
+  if (!decoded.ok()) {
+    return Status(StatusCode::kInternal,
+                  "mesh '" + mesh.name + "' does not decode: " + decoded.status().message());
+  }
+  out.seconds_decode = Seconds(t);
+  out.encoded = std::move(chosen.encoded.value());
+  out.decoded = std::move(decoded.value());
+  out.position_bits = chosen.bits;
+  out.position_range = chosen.mode;
+  out.max_error = chosen.error;
+  out.streams_tried = static_cast<int>(candidates.size());
+  return out;
 }
 
 }  // namespace hullpack

@@ -8,9 +8,10 @@
 //   kPerAxis   (cells ex, ey, ez / (2^b - 1)):               D / 2 / (2^b - 1)
 //   kDiagonal  (cubic cells of side D / (2^b - 1)):        sqrt(3) / 2 * D / (2^b - 1)
 // A budget usually falls between two bit counts of one mode, so the three modes land at different
-// distances below it. EncodeWithinError encodes the fewest-bit grid each mode guarantees, and one
-// bit fewer when the measured error leaves room for it, decodes each, measures the error reached
-// (MaxVertexDistance) and keeps the smallest stream within the budget.
+// distances below it. The error of a grid is known without coding (o3dgc::PositionQuantizationError
+// applies the encoder's quantizer and the decoder's reconstruction to every vertex), so
+// EncodeWithinError finds, for each mode, the fewest bits whose error is within the budget, encodes
+// only those candidates (at most three, in parallel) and keeps the smallest stream.
 #ifndef HULLPACK_TOOLS_PIPELINE_ERROR_BUDGET_H_
 #define HULLPACK_TOOLS_PIPELINE_ERROR_BUDGET_H_
 
@@ -36,16 +37,24 @@ struct BudgetedEncoding {
   std::vector<uint32_t> groups;  // its decoded triangle groups
   int position_bits = 0;
   o3dgc::RangeMode position_range = o3dgc::RangeMode::kUniform;
-  double max_error = 0;  // reached, model units
+  // Reached, model units: the largest distance between a vertex and its decoded position.
+  double max_error = 0;
   int streams_tried = 0;
-  double seconds_encode = 0;  // all candidates
+  double seconds_encode = 0;  // all candidates (wall time, they run in parallel)
   double seconds_decode = 0;  // the chosen stream
 };
 
+// The position error of `mesh` coded with `bits` on the `mode` grid, model units; -1 when the
+// encoder would reject the positions.
+double PositionGridError(const Mesh& mesh, o3dgc::RangeMode mode, int bits);
+
 // `settings` gives everything but the position grid. `max_error` > 0, model units (or 0 for a
-// mesh of zero size, which every grid keeps exactly).
+// mesh of zero size, which every grid keeps exactly). Candidates are encoded on up to `threads`
+// threads; the result does not depend on it. settings.progress, when set, sees the fraction of all
+// candidates encoded (from any of those threads, one call at a time).
 Result<BudgetedEncoding> EncodeWithinError(const Mesh& mesh, const std::vector<uint32_t>& groups,
-                                           const MeshCodecSettings& settings, double max_error);
+                                           const MeshCodecSettings& settings, double max_error,
+                                           int threads = 1);
 
 }  // namespace hullpack
 

@@ -89,7 +89,9 @@ Result<EncodedMesh> EncodeMesh(const Mesh& mesh, const std::vector<uint32_t>& gr
   params.position_bits = s.position_bits;
   params.position_range = s.position_range;
   params.normal_bits = s.normal_bits;
+  params.progress = s.progress;
   const o3dgc::Status st = o3dgc::Encode(view, params, &out.stream, &out.info);
+  if (st == o3dgc::Status::kCancelled) return Status(StatusCode::kCancelled, "cancelled");
   if (st != o3dgc::Status::kOk) {
     return Status(StatusCode::kInvalidMesh,
                   std::string("mesh '") + mesh.name + "': encoder: " + o3dgc::StatusName(st));

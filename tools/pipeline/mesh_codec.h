@@ -32,6 +32,8 @@ struct MeshCodecSettings {
   int color_bits = 10;
   int weight_bits = 10;
   int tangent_bits = 10;
+  // Encoding progress (a fraction; false cancels: kCancelled); may be empty.
+  o3dgc::ProgressFn progress;
 };
 
 struct EncodedMesh {

@@ -1,90 +1,38 @@
-// The packaging pipeline for one scene, stage after stage:
-//   checks (ValidateMesh) -> leave out what is unused (prune.h) -> per mesh: quantization from the
-//   error budget, encode + decode (mesh_codec.h), decompose (collision.h) and encode the hulls ->
-//   assemble the packed GLB (packed_glb_writer.h).
-// Loading and writing files is the caller's (tools/hullpack/pack_command.cc).
+// The packaging pipeline, one stage per file, called in this order:
+//   load (load.h: read the file, embed external images)
+//   -> checks and repairs (check_and_repair.h)
+//   -> leave out what is unused (prune.h)
+//   -> per mesh: decompose and encode (pack_mesh.h)
+//   -> write (assemble.h: the packed GLB; then the file, atomically).
+// PackInput runs load and the stages after it, as `hullpack pack` does (the command then writes the
+// GLB atomically); PackScene runs the stages after load, for a scene already in memory.
+// docs/architecture.md shows where each arrow is.
 #ifndef HULLPACK_TOOLS_PIPELINE_PACK_H_
 #define HULLPACK_TOOLS_PIPELINE_PACK_H_
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
 #include "common/status.h"
-#include "pipeline/collision.h"
-#include "pipeline/mesh_codec.h"
-#include "pipeline/packed_glb_writer.h"
-#include "pipeline/prune.h"
+#include "pipeline/pack_options.h"
 #include "scene/scene.h"
 
 namespace hullpack {
-
-struct PackOptions {
-  // Largest position error allowed, as a fraction of each mesh's bounding-box diagonal; it sets the
-  // position bits unless position_bits is given.
-  double max_error = 0.0005;
-  // The same for collision-hull vertices. Hulls already stand off the surface by their concavity
-  // (typically 0.01-0.03 of the diagonal), so they need far fewer bits than the render mesh.
-  double hull_error = 0.002;
-  int position_bits = 0;  // 0 = from max_error
-  int normal_bits = 10;
-  int uv_bits = 12;
-  o3dgc::StreamType stream_type = o3dgc::StreamType::kBinary;
-  bool keep_order = false;
-  bool fast_decode = false;  // o3dgc::EncodeParams::fast_decode, for render meshes and hulls
-  PackedGlbOptions glb;
-  CollisionSettings collision;
-  PruneOptions prune;
-};
-
-struct MeshPackReport {
-  std::string name;
-  size_t triangles = 0, vertices = 0;
-  size_t bytes_before = 0;     // the mesh's vertex and index data as plain glTF accessors
-  size_t bytes_after = 0;      // its compressed stream
-  double bits_per_vertex = 0;  // bytes_after * 8 / vertices
-  int position_bits = 0;
-  std::string position_range;     // the quantization grid: "uniform", "per-axis" or "diagonal"
-  double max_error = 0;           // largest position error reached, in model units
-  double max_error_fraction = 0;  // ... as a fraction of the bounding-box diagonal
-  std::string no_hulls_reason;    // why the mesh has no hulls, "" when it has some
-  size_t hull_count = 0;
-  size_t hull_vertices = 0;
-  size_t hull_bytes = 0;  // the hull stream
-  int hull_position_bits = 0;
-  std::string hull_position_range;
-  double hull_concavity = -1;  // vhacd's report (fractions of the diagonal); -1 = not measured
-  double hull_iou = -1;
-  double hull_quantization_error = 0;  // hull vertex error after quantization, fraction of diagonal
-  // encode: the render stream, every quantization grid tried; decode: the chosen stream once;
-  // hull_encode: quantizing, welding and encoding the hulls.
-  double seconds_encode = 0, seconds_decode = 0, seconds_decompose = 0, seconds_hull_encode = 0;
-};
-
-struct PackReport {
-  std::vector<MeshPackReport> meshes;
-  std::vector<std::string> left_out;  // what the prune stage removed, one line per kind
-  std::vector<std::string> not_kept;  // what the reader could not keep (Scene::dropped)
-  size_t output_bytes = 0;
-  double seconds_prune = 0, seconds_meshes = 0, seconds_write = 0;
-};
-
-// Progress and cancellation for a long pack. Called from the packing thread only.
-class PackObserver {
- public:
-  virtual ~PackObserver() = default;
-  // fraction in [0, 1] of the whole scene; stage says what runs ("mesh 3/7 'wheel': decompose
-  // 40%").
-  virtual void OnProgress(double fraction, const std::string& stage) {}
-  virtual bool IsCancelled() { return false; }
-};
 
 struct PackResult {
   std::vector<uint8_t> glb;
   PackReport report;
 };
 
-// Packs `scene` (consumed). Errors name the mesh and the problem.
+// Packs `scene` (consumed; LoadScene gives one with its external images embedded). Errors name the
+// mesh and the problem.
 Result<PackResult> PackScene(Scene scene, const PackOptions& options,
+                             PackObserver* observer = nullptr);
+
+// Loads `input` (LoadScene: external images embedded) and packs it. Errors start with the path.
+// The report's stage seconds include loading (write is the caller's: 0 here).
+Result<PackResult> PackInput(const std::string& input, const PackOptions& options,
                              PackObserver* observer = nullptr);
 
 }  // namespace hullpack

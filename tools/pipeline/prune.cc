@@ -4,7 +4,7 @@
 #include <array>
 #include <set>
 
-#include "gltf/skin_weights.h"
+#include "pipeline/check_and_repair.h"
 
 namespace hullpack {
 namespace {
@@ -75,6 +75,12 @@ void FoldConstantColors(Scene& scene, Mesh& mesh, PruneReport& report) {
     }
     id = it->second;
   }
+}
+
+// Vertex attribute arrays present (UV sets count one each).
+size_t VertexAttributeCount(const Mesh& m) {
+  return !m.normals.empty() + !m.tangents.empty() + !m.colors.empty() + !m.joints.empty() +
+         !m.weights.empty() + m.uv_sets.size();
 }
 
 void RemoveUnusedSkinData(const Scene& scene, size_t mesh_index, Mesh& mesh, PruneReport& report) {
@@ -161,16 +167,6 @@ void RemoveUnreferencedImages(Scene& scene, PruneReport& report) {
   }
 }
 
-void Sum(RepairReport& total, const RepairReport& r) {
-  total.welded_vertices += r.welded_vertices;
-  total.degenerate_triangles_removed += r.degenerate_triangles_removed;
-  total.zero_area_triangles_removed += r.zero_area_triangles_removed;
-  total.duplicate_triangles_removed += r.duplicate_triangles_removed;
-  total.opposite_triangle_pairs += r.opposite_triangle_pairs;
-  total.opposite_triangles_removed += r.opposite_triangles_removed;
-  total.unused_vertices_removed += r.unused_vertices_removed;
-}
-
 }  // namespace
 
 PruneReport LeaveOutUnused(Scene& scene, const PruneOptions& options) {
@@ -178,25 +174,13 @@ PruneReport LeaveOutUnused(Scene& scene, const PruneOptions& options) {
   if (options.unreferenced_meshes) RemoveUnreferencedMeshes(scene, report);
   for (size_t i = 0; i < scene.meshes.size(); ++i) {
     Mesh& mesh = scene.meshes[i];
+    const size_t attributes_before = VertexAttributeCount(mesh);
     if (options.constant_colors) FoldConstantColors(scene, mesh, report);
     if (options.unused_uv_sets) RemoveUnusedUvSets(scene, mesh, report);
     if (options.unused_tangents) RemoveUnusedTangents(scene, mesh, report);
     if (options.unused_skin_data) RemoveUnusedSkinData(scene, i, mesh, report);
-    if (options.normalize_skin_weights && mesh.weights.size() == mesh.vertex_count() * 4) {
-      report.skin_weights_normalized +=
-          NormalizeSkinWeights(mesh.weights.data(), mesh.vertex_count());
-    }
-    if (options.clear_unweighted_joints && mesh.has_skin() &&
-        mesh.joints.size() == mesh.weights.size()) {
-      // glTF validators warn about them, and zeros code smaller.
-      for (size_t k = 0; k < mesh.joints.size(); ++k) {
-        if (mesh.weights[k] == 0 && mesh.joints[k] != 0) {
-          mesh.joints[k] = 0;
-          ++report.unweighted_joints_cleared;
-        }
-      }
-    }
-    Sum(report.repairs, RepairMesh(mesh, options.repairs));
+    if (VertexAttributeCount(mesh) != attributes_before)
+      AddRepairs(report.repairs, RepairMesh(mesh, options.reweld));
   }
   if (options.unreferenced_materials) RemoveUnreferencedMaterials(scene, report);
   if (options.unreferenced_images) RemoveUnreferencedImages(scene, report);
@@ -211,16 +195,6 @@ PruneReport LeaveOutUnused(Scene& scene, const PruneOptions& options) {
   line(report.meshes_removed, "meshes no node shows");
   line(report.materials_removed, "materials no triangle uses");
   line(report.images_removed, "images no material uses");
-  if (report.repairs.changed()) report.lines.push_back(DescribeRepairs(report.repairs));
-  if (report.unweighted_joints_cleared) {
-    report.lines.push_back("cleared " + std::to_string(report.unweighted_joints_cleared) +
-                           " joint indices that carry no weight");
-  }
-  if (report.skin_weights_normalized) {
-    report.lines.push_back("renormalized the skin weights of " +
-                           std::to_string(report.skin_weights_normalized) +
-                           " vertices (their sum was not 1)");
-  }
   return report;
 }
 

@@ -1,5 +1,6 @@
-// "Leave out what the scene does not need": the pipeline stage between checks/repairs and encoding.
-// Every removal is counted and described so the user sees what was left out and why.
+// "Leave out what the scene does not need": the pipeline stage between checks and repairs
+// (check_and_repair.h) and the per-mesh work (pack_mesh.h). Every removal is counted and described
+// so the user sees what was left out and why.
 #ifndef HULLPACK_TOOLS_PIPELINE_PRUNE_H_
 #define HULLPACK_TOOLS_PIPELINE_PRUNE_H_
 
@@ -12,16 +13,16 @@
 namespace hullpack {
 
 struct PruneOptions {
-  bool unused_uv_sets = true;           // UV sets no texture of the mesh's materials samples
-  bool unused_tangents = true;          // tangents when no material of the mesh has a normal map
-  bool constant_colors = true;          // one colour on every vertex: folded into the material
-  bool unused_skin_data = true;         // joints/weights of a mesh no skinned node shows
-  bool normalize_skin_weights = true;   // weights whose sum is not 1 (glTF requires it) are scaled
-  bool clear_unweighted_joints = true;  // joint indices with weight 0 become 0 (they do nothing)
-  bool unreferenced_meshes = true;      // meshes no node shows (when the scene has nodes)
+  bool unused_uv_sets = true;       // UV sets no texture of the mesh's materials samples
+  bool unused_tangents = true;      // tangents when no material of the mesh has a normal map
+  bool constant_colors = true;      // one colour on every vertex: folded into the material
+  bool unused_skin_data = true;     // joints/weights of a mesh no skinned node shows
+  bool unreferenced_meshes = true;  // meshes no node shows (when the scene has nodes)
   bool unreferenced_materials = true;
   bool unreferenced_images = true;
-  RepairOptions repairs;  // degenerate/duplicate triangles, unused vertices
+  // A mesh that lost a vertex attribute may now hold vertices equal in every attribute left: they
+  // are welded again (RepairMesh with these options), as if the attribute had never been there.
+  RepairOptions reweld;
 };
 
 struct PruneReport {
@@ -29,16 +30,14 @@ struct PruneReport {
   size_t tangent_sets_removed = 0;
   size_t constant_color_sets_folded = 0;
   size_t skin_data_removed = 0;
-  size_t skin_weights_normalized = 0;    // vertices
-  size_t unweighted_joints_cleared = 0;  // joint indices
   size_t meshes_removed = 0;
   size_t materials_removed = 0;
   size_t images_removed = 0;
-  RepairReport repairs;            // summed over meshes
-  std::vector<std::string> lines;  // human-readable, one per kind of removal
+  RepairReport repairs;            // the welds after removals, summed over meshes
+  std::vector<std::string> lines;  // human-readable, one per kind of removal (not the welds)
 };
 
-// Prunes `scene` in place. Precondition: every mesh passed ValidateMesh.
+// Prunes `scene` in place. Precondition: every mesh passed ValidateMesh (CheckAndRepair).
 PruneReport LeaveOutUnused(Scene& scene, const PruneOptions& options = {});
 
 }  // namespace hullpack

@@ -6,7 +6,7 @@
 #include <cstring>
 
 #include "common/file_util.h"
-#include "mesh/merge.h"
+#include "mesh/flatten.h"
 #include "mesh/validate.h"
 #include "robot/hull_files.h"
 #include "robot/mjcf_writer.h"
@@ -59,7 +59,7 @@ Result<CollisionExportReport> ExportCollision(const Scene& scene, const std::str
   if (scene.meshes.empty() || scene.triangle_count() == 0)
     return Status(StatusCode::kInvalidMesh, input_path + ": no triangles");
 
-  Mesh merged = MergeMeshes(scene);
+  Mesh merged = FlattenScene(scene);
   merged.name = SanitizeName(options.name.empty() ? Stem(input_path) : options.name);
   Status valid = ValidateMesh(merged);
   if (!valid.ok()) return Status(valid.code(), input_path + ": " + valid.message());

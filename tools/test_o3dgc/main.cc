@@ -21,7 +21,7 @@
 #include "common/cli_args.h"
 #include "common/file_util.h"
 #include "io/scene_io.h"
-#include "mesh/merge.h"
+#include "mesh/flatten.h"
 #include "o3dgc/o3dgc.h"
 #include "pipeline/mesh_codec.h"
 #include "scene/scene.h"
@@ -68,7 +68,7 @@ int Compress(const std::string& input, const hullpack::MeshCodecSettings& settin
     std::fprintf(stderr, "%s\n", scene.status().ToString().c_str());
     return 1;
   }
-  const hullpack::Mesh all = hullpack::MergeMeshes(scene.value());
+  const hullpack::Mesh all = hullpack::FlattenScene(scene.value());
   std::printf(
       "Mesh info\n  vertices %zu\n  triangles %zu\n  normals %s\n  uv %s\n  colors %s\n"
       "  skin %s\n  groups %s\n",

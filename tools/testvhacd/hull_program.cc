@@ -97,7 +97,7 @@ std::string ReadSoup(const std::string& input, std::vector<double>* points,
                      std::vector<uint32_t>* indices) {
   Result<Scene> scene = ReadScene(input);
   if (!scene.ok()) return scene.status().ToString();
-  FlattenScene(scene.value(), points, indices);
+  SceneSoup(scene.value(), points, indices);
   return "";
 }
 

@@ -235,6 +235,13 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
 Status Decode(const uint8_t* data, size_t size, const DecodeOptions& options, DecodedMesh* out,
               StreamInfo* info = nullptr);
 
+// The largest Euclidean distance (computed in double) between one of `num_vertices` positions
+// (3 floats at positions + i * stride bytes) and the position Decode returns for it, when Encode
+// quantizes them with `bits` bits and `range`: a stream's position error, known without coding.
+// Returns -1 for bits outside 1..30, a null pointer with vertices, or values Encode rejects.
+double PositionQuantizationError(const float* positions, size_t stride, size_t num_vertices,
+                                 int bits, RangeMode range);
+
 // Parses only the header and section table of a stream (no checksum check, no decoding); for an
 // original Open3DGC stream, its header (info->format says which).
 Status ReadStreamInfo(const uint8_t* data, size_t size, StreamInfo* info);

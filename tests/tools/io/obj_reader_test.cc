@@ -108,5 +108,64 @@ TEST(ObjReader, CommentsBlankLinesAndCrLf) {
   EXPECT_EQ(s->meshes[0].triangle_count(), 1u);
 }
 
+// A text of a few megabytes with every kind of line: v (with colours and w), vt, vn, faces with
+// all corner forms, negative indices, polygons, objects, comments.
+std::string LargeText(size_t blocks) {
+  std::string text = "# large\n";
+  for (size_t b = 0; b < blocks; ++b) {
+    const float x = 0.001f * static_cast<float>(b);
+    text += "o part" + std::to_string(b % 7) + "\n";
+    text += "v " + std::to_string(x) + " 0 0 0.5 0.25 1\nv 1 " + std::to_string(x) + " 0\nv 0 1 " +
+            std::to_string(x) + " 1\nv 1 1 0.5\n";
+    text += "vt 0 0\nvt 1 0 0\nvt " + std::to_string(x) + "\nvn 0 0 1\n";
+    text += "f -4/-3/-1 -3/-2/-1 -2/-1/-1\n  f -3 -1 -2 # comment\nf -4//-1 -3//-1 -1//-1 -2//-1\n";
+    text += "f -4/-3 -1/-1 -2/-2\n\n";
+  }
+  return text;
+}
+
+// Large texts are read ahead on several threads: the scene is the one a single thread reads.
+TEST(ObjReader, ReadingAheadOnThreadsGivesTheSameScene) {
+  const std::string text = LargeText(10000);
+  ASSERT_GT(text.size(), 1u << 20);  // read ahead from 1 MB
+  ObjParseOptions one, many;
+  one.threads = 1;
+  many.threads = 3;
+  Result<Scene> a = ParseObj(text.data(), text.size(), "a.obj", one);
+  Result<Scene> b = ParseObj(text.data(), text.size(), "b.obj", many);
+  ASSERT_TRUE(a.ok()) << a.status().ToString();
+  ASSERT_TRUE(b.ok()) << b.status().ToString();
+  ASSERT_EQ(a->meshes.size(), b->meshes.size());
+  for (size_t i = 0; i < a->meshes.size(); ++i) {
+    EXPECT_EQ(a->meshes[i].positions, b->meshes[i].positions);
+    EXPECT_EQ(a->meshes[i].normals, b->meshes[i].normals);
+    EXPECT_EQ(a->meshes[i].uv_sets, b->meshes[i].uv_sets);
+    EXPECT_EQ(a->meshes[i].colors, b->meshes[i].colors);
+    EXPECT_EQ(a->meshes[i].indices, b->meshes[i].indices);
+  }
+  EXPECT_EQ(a->dropped, b->dropped);
+}
+
+// An error deep in a large text is reported as a single thread reports it, line included.
+TEST(ObjReader, ReadingAheadReportsTheSameErrors) {
+  const std::string good = LargeText(10000);
+  ASSERT_GT(good.size() / 2, 1u << 20);
+  for (const std::string& bad :
+       {std::string("f 1 2 x\n"), std::string("v 1 2\n"), std::string("f 1 2 999999999\n"),
+        std::string("f 1/2/3/4 1 1\n"), std::string("f 1 2 99999999999\n")}) {
+    std::string text = good.substr(0, good.size() / 2);
+    text = text.substr(0, text.rfind('\n') + 1) + bad + good.substr(good.size() / 2);
+    ObjParseOptions one, many;
+    one.threads = 1;
+    many.threads = 2;
+    Result<Scene> a = ParseObj(text.data(), text.size(), "x.obj", one);
+    Result<Scene> b = ParseObj(text.data(), text.size(), "x.obj", many);
+    ASSERT_FALSE(a.ok()) << bad;
+    ASSERT_FALSE(b.ok()) << bad;
+    EXPECT_EQ(a.status().message(), b.status().message());
+    EXPECT_NE(a.status().message().find("line "), std::string::npos);
+  }
+}
+
 }  // namespace
 }  // namespace hullpack

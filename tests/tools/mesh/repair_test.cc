@@ -217,3 +217,35 @@ TEST(RepairTest, EmptyMesh) {
 
 }  // namespace
 }  // namespace hullpack
+
+namespace hullpack {
+namespace {
+
+// The sorts run on several threads for large meshes: the repaired mesh is the same.
+TEST(RepairMesh, TheResultDoesNotDependOnTheThreadCount) {
+  Mesh m;
+  for (uint32_t i = 0; i < 30000; ++i) {
+    // Positions repeat every 1000 vertices (welds); a few triangles repeat (duplicates).
+    const float x = static_cast<float>(i % 1000);
+    m.positions.insert(m.positions.end(), {x, x * 0.5f, 1.0f});
+  }
+  for (uint32_t t = 0; t + 2 < 30000; ++t) {
+    const uint32_t a = (t * 7919u) % 30000u, b = (t * 104729u + 1) % 30000u, c = (t + 5) % 30000u;
+    m.indices.insert(m.indices.end(), {a, b, c});
+    if (t % 97 == 0) m.indices.insert(m.indices.end(), {b, c, a});
+  }
+  Mesh one = m, many = m;
+  RepairOptions single, threaded;
+  threaded.threads = 3;
+  const RepairReport r1 = RepairMesh(one, single);
+  const RepairReport r3 = RepairMesh(many, threaded);
+  EXPECT_GT(r1.welded_vertices, 0u);
+  EXPECT_GT(r1.duplicate_triangles_removed, 0u);
+  EXPECT_EQ(r1.welded_vertices, r3.welded_vertices);
+  EXPECT_EQ(r1.duplicate_triangles_removed, r3.duplicate_triangles_removed);
+  EXPECT_EQ(one.positions, many.positions);
+  EXPECT_EQ(one.indices, many.indices);
+}
+
+}  // namespace
+}  // namespace hullpack

@@ -255,5 +255,48 @@ TEST(Pack, CancelStopsIt) {
   EXPECT_EQ(r.status().code(), StatusCode::kCancelled);
 }
 
+// Every stage's threads (meshes and decompositions in parallel, candidate grids in parallel,
+// repairs in parallel) leave the bytes as one thread writes them; the progress still reaches 1.
+TEST(Pack, TheBytesDoNotDependOnTheThreadCount) {
+  struct Progress : PackObserver {
+    void OnProgress(double fraction, const std::string&) override {
+      last = fraction;
+      ++calls;
+    }
+    double last = -1;
+    int calls = 0;
+  };
+  std::vector<uint8_t> first;
+  for (int threads : {1, 2, 5}) {
+    PackOptions options = FastOptions();
+    options.collision.policy = HullPolicy::kAll;
+    options.threads = threads;
+    options.collision.parameters.num_threads = static_cast<uint32_t>(threads);
+    Progress progress;
+    Result<PackResult> r = PackScene(TestScene(), options, &progress);
+    ASSERT_TRUE(r.ok()) << r.status().message();
+    EXPECT_EQ(r->report.meshes.size(), 2u);
+    EXPECT_GT(r->report.meshes[0].hull_count, 0u);
+    EXPECT_EQ(progress.last, 1.0);
+    EXPECT_GT(progress.calls, 3);
+    if (first.empty()) {
+      first = r->glb;
+    } else {
+      EXPECT_EQ(r->glb, first) << threads << " threads";
+    }
+  }
+}
+
+// The stage seconds are the whole run's: none is hidden.
+TEST(Pack, StageSecondsAddUpToTheTotal) {
+  Result<PackResult> r = PackScene(TestScene(), FastOptions());
+  ASSERT_TRUE(r.ok());
+  const PackReport& p = r->report;
+  const double stages = p.seconds_repair + p.seconds_prune + p.seconds_meshes + p.seconds_assemble;
+  EXPECT_GT(p.seconds_total, 0);
+  EXPECT_LE(stages, p.seconds_total);
+  EXPECT_GT(stages, 0.95 * p.seconds_total - 1e-3);
+}
+
 }  // namespace
 }  // namespace hullpack

@@ -107,48 +107,23 @@ TEST(Prune, SkinDataWithoutASkinnedNodeGoes) {
   EXPECT_FALSE(skinned.meshes[0].joints.empty());
 }
 
-TEST(Prune, SkinWeightsSumToOneAndJointsWithoutWeightAreCleared) {
-  Scene s = OneQuadScene();
-  s.skins.resize(1);
-  s.nodes[0].skin = 0;
-  s.meshes[0].weights = {1, 0, 0, 0, 0.5f, 0.5f, 0, 0, 0.1f, 0.1f, 0, 0, 0.6f, 0.3f, 0.3f, 0};
-  s.meshes[0].joints = {3, 7, 0, 5, 1, 2, 0, 0, 1, 2, 0, 0, 1, 2, 3, 4};
-  const PruneReport r = LeaveOutUnused(s);
-  EXPECT_EQ(r.skin_weights_normalized, 2u);
-  EXPECT_EQ(r.unweighted_joints_cleared, 3u);  // joints 7 and 5 of vertex 0, 4 of vertex 3
-  EXPECT_EQ(s.meshes[0].joints,
-            std::vector<uint16_t>({3, 0, 0, 0, 1, 2, 0, 0, 1, 2, 0, 0, 1, 2, 3, 0}));
-  const std::vector<float>& w = s.meshes[0].weights;
-  EXPECT_FLOAT_EQ(w[8], 0.5f);
-  EXPECT_FLOAT_EQ(w[12], 0.5f);
-  EXPECT_FLOAT_EQ(w[13], 0.25f);
-  bool reported = false;
-  for (const std::string& line : r.lines)
-    reported |= line.find("renormalized the skin weights of 2 vertices") != std::string::npos;
-  EXPECT_TRUE(reported);
-}
-
-TEST(Prune, RepairsRemoveDegenerateAndDuplicateTrianglesAndUnusedVertices) {
+// Two vertices that differ only in a UV set nothing samples are one vertex once the set is gone.
+TEST(Prune, VerticesEqualOnceAnAttributeIsLeftOutAreWelded) {
   Scene s = OneQuadScene();
   Mesh& m = s.meshes[0];
-  m.positions.insert(m.positions.end(), {9, 9, 9});  // unused vertex 4
-  for (int k = 0; k < 3; ++k) {
-    m.normals.push_back(0);
-    m.uv_sets[0].push_back(0);
-    m.uv_sets[1].push_back(0);
-  }
-  m.uv_sets[0].pop_back();
-  m.uv_sets[1].pop_back();
-  m.colors.insert(m.colors.end(), {0.5f, 1, 1, 1});
-  m.tangents.insert(m.tangents.end(), {1, 0, 0, 1});
-  m.indices.insert(m.indices.end(), {0, 1, 2, 0, 0, 1});  // a duplicate and a degenerate
-  m.material_ids.insert(m.material_ids.end(), {0, 0});
+  m.tangents.clear();
+  m.colors.clear();
+  m.uv_sets.resize(1);
+  // Vertex 4: vertex 0 again with other texture coordinates (a UV seam).
+  m.positions.insert(m.positions.end(), {0, 0, 0});
+  m.normals.insert(m.normals.end(), {0, 0, 1});
+  m.uv_sets[0].insert(m.uv_sets[0].end(), {0.5f, 0.5f});
+  m.indices[3] = 4;
   const PruneReport r = LeaveOutUnused(s);
-  EXPECT_EQ(s.meshes[0].triangle_count(), 2u);
+  EXPECT_TRUE(s.meshes[0].uv_sets.empty());
   EXPECT_EQ(s.meshes[0].vertex_count(), 4u);
-  EXPECT_EQ(r.repairs.duplicate_triangles_removed, 1u);
-  EXPECT_EQ(r.repairs.degenerate_triangles_removed, 1u);
-  EXPECT_EQ(r.repairs.unused_vertices_removed, 1u);
+  EXPECT_EQ(s.meshes[0].indices[3], 0u);
+  EXPECT_EQ(r.repairs.welded_vertices, 1u);
 }
 
 }  // namespace

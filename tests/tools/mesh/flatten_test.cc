@@ -1,0 +1,151 @@
+#include "mesh/flatten.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "test_meshes.h"
+
+namespace hullpack {
+namespace {
+
+using testing_meshes::UnitCube;
+
+Mesh CubeWith(bool normals, bool uvs, bool colors, bool skin, bool materials, uint32_t material) {
+  Mesh mesh = UnitCube();
+  const size_t n = mesh.vertex_count();
+  if (normals) mesh.normals.assign(3 * n, 0.5f);
+  if (uvs) mesh.uv_sets.assign(2, std::vector<float>(2 * n, 0.25f));
+  if (colors) mesh.colors.assign(4 * n, 1.0f);
+  if (skin) {
+    mesh.joints.assign(4 * n, 1);
+    mesh.weights.assign(4 * n, 0.25f);
+  }
+  if (materials) mesh.material_ids.assign(mesh.triangle_count(), material);
+  return mesh;
+}
+
+TEST(FlattenSceneTest, AppendsVerticesAndOffsetsIndices) {
+  Scene scene;
+  scene.meshes = {UnitCube(), UnitCube()};
+  const Mesh all = FlattenScene(scene);
+  const Mesh cube = UnitCube();
+  ASSERT_EQ(all.vertex_count(), 2 * cube.vertex_count());
+  ASSERT_EQ(all.triangle_count(), 2 * cube.triangle_count());
+  for (size_t i = 0; i < cube.indices.size(); ++i) {
+    EXPECT_EQ(all.indices[i], cube.indices[i]);
+    EXPECT_EQ(all.indices[cube.indices.size() + i], cube.indices[i] + cube.vertex_count());
+  }
+  EXPECT_EQ(std::vector<float>(all.positions.begin() + cube.positions.size(), all.positions.end()),
+            cube.positions);
+}
+
+TEST(FlattenSceneTest, KeepsAVertexAttributeOnlyWhenEveryMeshHasIt) {
+  Scene scene;
+  scene.meshes = {CubeWith(true, true, true, true, false, 0),
+                  CubeWith(true, false, true, false, false, 0)};
+  const Mesh all = FlattenScene(scene);
+  EXPECT_EQ(all.normals.size(), 3 * all.vertex_count());
+  EXPECT_EQ(all.colors.size(), 4 * all.vertex_count());
+  EXPECT_TRUE(all.uv_sets.empty());
+  EXPECT_TRUE(all.joints.empty());
+  EXPECT_TRUE(all.weights.empty());
+}
+
+TEST(FlattenSceneTest, KeepsTheFirstUvSetAndTheSkin) {
+  Scene scene;
+  scene.meshes = {CubeWith(false, true, false, true, false, 0),
+                  CubeWith(false, true, false, true, false, 0)};
+  const Mesh all = FlattenScene(scene);
+  ASSERT_EQ(all.uv_sets.size(), 1u);
+  EXPECT_EQ(all.uv_sets[0].size(), 2 * all.vertex_count());
+  EXPECT_EQ(all.joints.size(), 4 * all.vertex_count());
+  EXPECT_EQ(all.weights.size(), 4 * all.vertex_count());
+  EXPECT_TRUE(all.normals.empty());
+}
+
+TEST(FlattenSceneTest, MaterialIdsAreKeptWhenAnyMeshHasThemAndZeroElsewhere) {
+  Scene scene;
+  scene.meshes = {CubeWith(false, false, false, false, false, 0),
+                  CubeWith(false, false, false, false, true, 3)};
+  const Mesh all = FlattenScene(scene);
+  const size_t per_cube = UnitCube().triangle_count();
+  ASSERT_EQ(all.material_ids.size(), 2 * per_cube);
+  for (size_t t = 0; t < per_cube; ++t) {
+    EXPECT_EQ(all.material_ids[t], 0u);
+    EXPECT_EQ(all.material_ids[per_cube + t], 3u);
+  }
+}
+
+TEST(FlattenSceneTest, AnEmptySceneGivesAnEmptyMesh) {
+  const Mesh all = FlattenScene(Scene{});
+  EXPECT_EQ(all.vertex_count(), 0u);
+  EXPECT_TRUE(all.indices.empty());
+  EXPECT_TRUE(all.uv_sets.empty());
+  EXPECT_TRUE(all.material_ids.empty());
+}
+
+// A node transform moves, scales and rotates its meshes' instances; a parent's applies too; one
+// mesh shown by two nodes appears twice; a mesh no node shows comes last, untransformed.
+TEST(FlattenSceneTest, AppliesNodeTransformsToEveryInstance) {
+  Scene scene;
+  scene.meshes = {CubeWith(true, false, false, false, false, 0),
+                  CubeWith(true, false, false, false, false, 0)};
+  Node parent, child, other;
+  parent.local_transform = kIdentity;
+  parent.local_transform[12] = 10;  // translate x by 10
+  parent.children = {1};
+  child.parent = 0;
+  // Rotate 90 degrees about z (x -> y, y -> -x), then scale by 2.
+  child.local_transform = {0, 2, 0, 0, -2, 0, 0, 0, 0, 0, 2, 0, 0, 0, 0, 1};
+  child.meshes = {0};
+  other.meshes = {0};  // the same mesh again, as stored
+  scene.nodes = {parent, child, other};
+  const Mesh cube = scene.meshes[0];
+  const Mesh all = FlattenScene(scene);
+  const size_t n = cube.vertex_count();
+  ASSERT_EQ(all.vertex_count(), 3 * n);
+  ASSERT_EQ(all.triangle_count(), 3 * cube.triangle_count());
+  for (size_t v = 0; v < n; ++v) {
+    const float* p = &cube.positions[v * 3];
+    EXPECT_FLOAT_EQ(all.positions[v * 3], 10 - 2 * p[1]) << v;
+    EXPECT_FLOAT_EQ(all.positions[v * 3 + 1], 2 * p[0]) << v;
+    EXPECT_FLOAT_EQ(all.positions[v * 3 + 2], 2 * p[2]) << v;
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_EQ(all.positions[(n + v) * 3 + k], p[k]);      // node 2: as stored
+      EXPECT_EQ(all.positions[(2 * n + v) * 3 + k], p[k]);  // mesh 1: no node shows it
+    }
+  }
+  // Normals turn with the instance and stay unit length.
+  EXPECT_NEAR(all.normals[1], 0.5f / std::sqrt(0.75f) * 1.0f, 1e-6);
+}
+
+// A mirroring transform reverses the winding, so a closed mesh keeps a positive volume.
+TEST(FlattenSceneTest, AMirroredInstanceKeepsItsTrianglesFacingOut) {
+  Scene scene;
+  scene.meshes = {UnitCube()};
+  Node mirror;
+  mirror.local_transform = {-1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  mirror.meshes = {0};
+  scene.nodes = {mirror};
+  auto volume = [](const Mesh& m) {
+    double v = 0;
+    for (size_t t = 0; t < m.triangle_count(); ++t) {
+      const float* a = &m.positions[m.indices[t * 3] * 3];
+      const float* b = &m.positions[m.indices[t * 3 + 1] * 3];
+      const float* c = &m.positions[m.indices[t * 3 + 2] * 3];
+      v += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+            a[2] * (b[0] * c[1] - b[1] * c[0])) /
+           6.0;
+    }
+    return v;
+  };
+  const Mesh all = FlattenScene(scene);
+  EXPECT_GT(volume(UnitCube()), 0);
+  EXPECT_NEAR(volume(all), volume(UnitCube()), 1e-9);
+  EXPECT_EQ(all.positions[0], -UnitCube().positions[0]);
+}
+
+}  // namespace
+}  // namespace hullpack

@@ -1,0 +1,72 @@
+// Runs independent tasks on a few threads. Each task writes only its own result, so what the
+// tasks compute does not depend on the thread count or on the order they run in.
+#ifndef HULLPACK_TOOLS_COMMON_PARALLEL_H_
+#define HULLPACK_TOOLS_COMMON_PARALLEL_H_
+
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <functional>
+#include <thread>
+#include <vector>
+
+namespace hullpack {
+
+// Threads to use for `requested` (0 = every core), at least 1.
+inline int ThreadCount(int requested) {
+  if (requested > 0) return requested;
+  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+// Calls task(0) .. task(count - 1) on up to `threads` threads (the calling one included) and
+// returns when all have returned. Tasks must not throw.
+inline void ParallelFor(size_t count, int threads, const std::function<void(size_t)>& task) {
+  const size_t n = std::min<size_t>(count, static_cast<size_t>(std::max(1, threads)));
+  if (n <= 1) {
+    for (size_t i = 0; i < count; ++i) task(i);
+    return;
+  }
+  std::atomic<size_t> next{0};
+  auto worker = [&] {
+    for (size_t i; (i = next.fetch_add(1)) < count;) task(i);
+  };
+  std::vector<std::thread> pool;
+  for (size_t t = 1; t < n; ++t) pool.emplace_back(worker);
+  worker();
+  for (std::thread& t : pool) t.join();
+}
+
+// std::sort of [first, last) with parts sorted on up to `threads` threads, then merged. `less` must
+// be a strict total order (no two elements equivalent, e.g. ties broken by an index): then the
+// result is the one std::sort gives, whatever the thread count.
+template <typename Iterator, typename Less>
+void ParallelSort(Iterator first, Iterator last, Less less, int threads) {
+  const size_t n = static_cast<size_t>(last - first);
+  size_t parts = std::min<size_t>(static_cast<size_t>(std::max(1, threads)), n / 4096 + 1);
+  if (parts <= 1) {
+    std::sort(first, last, less);
+    return;
+  }
+  std::vector<size_t> bounds(parts + 1);
+  for (size_t k = 0; k <= parts; ++k) bounds[k] = n * k / parts;
+  ParallelFor(parts, threads, [&](size_t k) {
+    std::sort(first + static_cast<ptrdiff_t>(bounds[k]),
+              first + static_cast<ptrdiff_t>(bounds[k + 1]), less);
+  });
+  // Merge neighbouring runs until one is left, the merges of a round in parallel.
+  for (size_t width = 1; width < parts; width *= 2) {
+    const size_t merges = (parts + 2 * width - 1) / (2 * width);
+    ParallelFor(merges, threads, [&](size_t m) {
+      const size_t lo = m * 2 * width, mid = std::min(lo + width, parts),
+                   hi = std::min(lo + 2 * width, parts);
+      if (mid >= hi) return;
+      std::inplace_merge(first + static_cast<ptrdiff_t>(bounds[lo]),
+                         first + static_cast<ptrdiff_t>(bounds[mid]),
+                         first + static_cast<ptrdiff_t>(bounds[hi]), less);
+    });
+  }
+}
+
+}  // namespace hullpack
+
+#endif  // HULLPACK_TOOLS_COMMON_PARALLEL_H_

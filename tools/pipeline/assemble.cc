@@ -1,0 +1,41 @@
+#include "pipeline/assemble.h"
+
+namespace hullpack {
+
+Result<std::vector<uint8_t>> AssemblePackedGlb(Scene scene, std::vector<PackedMesh> packed,
+                                               const PackedGlbOptions& options) {
+  const size_t n = packed.size();
+  Scene decoded;
+  decoded.materials = std::move(scene.materials);
+  decoded.images = std::move(scene.images);
+  decoded.skins = std::move(scene.skins);
+  decoded.nodes = std::move(scene.nodes);
+  PackedStreams streams;
+  for (size_t i = 0; i < n; ++i) {
+    MeshSource source;
+    source.stream = static_cast<int>(streams.streams.size());
+    source.grouped = packed[i].grouped;
+    streams.streams.push_back(std::move(packed[i].stream));
+    streams.sources.push_back(source);
+    decoded.meshes.push_back(std::move(packed[i].decoded));
+  }
+  streams.hulls_of.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    if (!packed[i].has_hulls) continue;
+    const int stream = static_cast<int>(streams.streams.size());
+    streams.streams.push_back(std::move(packed[i].hull_stream));
+    for (size_t h = 0; h < packed[i].hulls.size(); ++h) {
+      streams.hulls_of[i].push_back(static_cast<int>(decoded.meshes.size()));
+      decoded.meshes.push_back(std::move(packed[i].hulls[h]));
+      MeshSource source;
+      source.stream = stream;
+      source.hull = true;
+      source.hull_group = static_cast<uint32_t>(h);
+      streams.sources.push_back(source);
+    }
+  }
+  streams.hulls_of.resize(decoded.meshes.size());
+  return WritePackedGlb(decoded, streams, options);
+}
+
+}  // namespace hullpack

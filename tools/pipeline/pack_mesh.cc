@@ -1,0 +1,259 @@
+#include "pipeline/pack_mesh.h"
+
+#include <algorithm>
+#include <chrono>
+#include <mutex>
+
+#include "common/parallel.h"
+#include "pipeline/collision.h"
+#include "pipeline/error_budget.h"
+#include "pipeline/hull_stream.h"
+
+namespace hullpack {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double Seconds(Clock::time_point since) {
+  return std::chrono::duration<double>(Clock::now() - since).count();
+}
+
+// Bytes of the plain accessors the GLB writer would write for `m`.
+size_t PlainGeometryBytes(const Mesh& m) {
+  size_t per_vertex = 12;
+  if (!m.normals.empty()) per_vertex += 12;
+  if (!m.tangents.empty()) per_vertex += 16;
+  per_vertex += 8 * m.uv_sets.size();
+  if (!m.colors.empty()) per_vertex += 16;
+  if (!m.weights.empty()) per_vertex += 16;
+  if (!m.joints.empty()) per_vertex += 8;
+  const size_t index_size = m.vertex_count() < 65536 ? 2 : 4;
+  return m.vertex_count() * per_vertex + m.indices.size() * index_size;
+}
+
+MeshCodecSettings SettingsFor(const PackOptions& options) {
+  MeshCodecSettings s;
+  s.stream_type = options.stream_type;
+  s.keep_order = options.keep_order;
+  s.fast_decode = options.fast_decode;
+  s.normal_bits = options.normal_bits;
+  s.uv_bits = options.uv_bits;
+  return s;
+}
+
+// The progress of every task at once, forwarded to the observer one call at a time.
+class ProgressBoard {
+ public:
+  ProgressBoard(PackObserver* observer, std::vector<double> weights, double from, double to)
+      : observer_(observer),
+        weights_(std::move(weights)),
+        done_(weights_.size(), 0),
+        from_(from),
+        to_(to) {
+    for (double w : weights_) total_ += w;
+  }
+  void Set(size_t task, double fraction, const std::string& stage) {
+    if (!observer_) return;
+    std::lock_guard<std::mutex> lock(mutex_);
+    done_[task] = std::clamp(fraction, 0.0, 1.0);
+    double sum = 0;
+    for (size_t i = 0; i < done_.size(); ++i) sum += weights_[i] * done_[i];
+    observer_->OnProgress(from_ + (to_ - from_) * (total_ > 0 ? sum / total_ : 1.0), stage);
+  }
+  bool Cancelled() {
+    if (!observer_) return false;
+    std::lock_guard<std::mutex> lock(mutex_);
+    return observer_->IsCancelled();
+  }
+
+ private:
+  PackObserver* observer_;
+  std::vector<double> weights_, done_;
+  double from_, to_, total_ = 0;
+  std::mutex mutex_;
+};
+
+// Forwards vhacd's progress to one task of the board.
+class DecomposeProgress : public vhacd::Observer {
+ public:
+  DecomposeProgress(ProgressBoard& board, size_t task, std::string prefix)
+      : board_(board), task_(task), prefix_(std::move(prefix)) {}
+  void OnProgress(double overall, double, double, const char* stage, const char*) override {
+    const int percent = static_cast<int>(overall);
+    if (percent == last_percent_) return;
+    last_percent_ = percent;
+    board_.Set(task_, overall / 100.0,
+               prefix_ + "decompose " + std::to_string(percent) + "% (" + stage + ")");
+  }
+  bool IsCancelled() override { return board_.Cancelled(); }
+
+ private:
+  ProgressBoard& board_;
+  size_t task_;
+  std::string prefix_;
+  int last_percent_ = -1;
+};
+
+// The render mesh's stream: explicit bits (uniform grid, as given), or the smallest stream within
+// the error budget.
+// `threads` for the candidate grids; `progress` (may be empty) gets the fraction encoded.
+Status EncodeRenderMesh(const Mesh& mesh, const PackOptions& options, int threads,
+                        const o3dgc::ProgressFn& progress, PackedMesh& out) {
+  MeshCodecSettings s = SettingsFor(options);
+  s.progress = progress;
+  Result<BudgetedEncoding> encoded = Status(StatusCode::kInternal, "");
+  if (options.position_bits <= 0) {
+    encoded = EncodeWithinError(mesh, mesh.material_ids, s,
+                                options.max_error * BoundingBoxDiagonal(mesh), threads);
+  } else {
+    BudgetedEncoding e;
+    s.position_bits = options.position_bits;
+    auto t = Clock::now();
+    Result<EncodedMesh> stream = EncodeMesh(mesh, mesh.material_ids, s);
+    if (!stream.ok()) return stream.status();
+    e.seconds_encode = Seconds(t);
+    t = Clock::now();
+    Result<Mesh> decoded =
+        DecodeMesh(stream->stream.data(), stream->stream.size(), &e.groups, mesh.name);
+    if (!decoded.ok())
+      return Status(StatusCode::kInternal,
+                    "mesh '" + mesh.name + "' does not decode: " + decoded.status().message());
+    e.seconds_decode = Seconds(t);
+    e.encoded = std::move(stream.value());
+    e.decoded = std::move(decoded.value());
+    e.position_bits = s.position_bits;
+    e.position_range = s.position_range;
+    e.max_error = PositionGridError(mesh, s.position_range, s.position_bits);
+    e.streams_tried = 1;
+    encoded = std::move(e);
+  }
+  if (!encoded.ok()) return encoded.status();
+  MeshPackReport& r = out.report;
+  r.position_bits = encoded->position_bits;
+  r.position_range = RangeModeName(encoded->position_range);
+  r.seconds_encode = encoded->seconds_encode;
+  r.seconds_decode = encoded->seconds_decode;
+  r.max_error = encoded->max_error;
+  const double diagonal = BoundingBoxDiagonal(mesh);
+  r.max_error_fraction = diagonal > 0 ? r.max_error / diagonal : 0;
+  r.bytes_after = encoded->encoded.stream.size();
+  r.bits_per_vertex = r.vertices ? 8.0 * r.bytes_after / r.vertices : 0;
+  out.decoded = std::move(encoded->decoded);
+  out.decoded.name = mesh.name;
+  out.decoded.collides = mesh.collides;
+  out.grouped = !mesh.material_ids.empty();
+  out.decoded.material_ids = out.grouped ? std::move(encoded->groups) : std::vector<uint32_t>();
+  out.stream = std::move(encoded->encoded);
+  return Status::Ok();
+}
+
+// The decomposition, all hulls in one stream (one group per hull) quantized to the hull budget.
+Status MakeHulls(const Mesh& mesh, const PackOptions& options, vhacd::Observer* progress,
+                 PackedMesh& out) {
+  MeshPackReport& r = out.report;
+  const auto t0 = Clock::now();
+  Result<HullSet> set = DecomposeMesh(mesh, options.collision, progress);
+  if (!set.ok()) return set.status();
+  r.seconds_decompose = Seconds(t0);
+  r.hull_count = set->hulls.size();
+  r.hull_concavity = set->report.concavity;
+  r.hull_iou = set->report.volume_iou;
+  if (set->hulls.empty()) return Status::Ok();
+  for (const Mesh& hull : set->hulls) r.hull_vertices += hull.vertex_count();
+  const double diagonal = BoundingBoxDiagonal(mesh);
+  const auto t1 = Clock::now();
+  Result<EncodedHulls> encoded =
+      EncodeHulls(set->hulls, SettingsFor(options), options.hull_error * diagonal);
+  if (!encoded.ok())
+    return Status(encoded.status().code(),
+                  "mesh '" + mesh.name + "': hulls: " + encoded.status().message());
+  r.seconds_hull_encode = Seconds(t1);
+  r.hull_quantization_error = diagonal > 0 ? encoded->max_error / diagonal : 0;
+  r.hull_position_bits = encoded->position_bits;
+  r.hull_position_range = RangeModeName(encoded->position_range);
+  r.hull_bytes = encoded->encoded.stream.size();
+  out.has_hulls = true;
+  out.hull_stream = std::move(encoded->encoded);
+  for (size_t h = 0; h < set->hulls.size(); ++h) {
+    Mesh hull = std::move(encoded->decoded[h]);
+    hull.name = mesh.name + "_hull_" + std::to_string(h);
+    hull.material_ids.clear();
+    out.hulls.push_back(std::move(hull));
+  }
+  return Status::Ok();
+}
+
+}  // namespace
+
+Result<std::vector<PackedMesh>> PackMeshes(const Scene& scene, const PackOptions& options,
+                                           PackObserver* observer, double from, double to) {
+  const size_t n = scene.meshes.size();
+  std::vector<PackedMesh> packed(n);
+  struct Task {
+    size_t mesh;
+    bool hulls;
+    double weight;  // for progress and scheduling: triangles
+  };
+  std::vector<Task> tasks;
+  for (size_t i = 0; i < n; ++i) {
+    const Mesh& mesh = scene.meshes[i];
+    MeshPackReport& r = packed[i].report;
+    r.name = mesh.name;
+    r.triangles = mesh.triangle_count();
+    r.vertices = mesh.vertex_count();
+    r.bytes_before = PlainGeometryBytes(mesh);
+    r.no_hulls_reason = WhyNoHulls(mesh, options.collision);
+    const double weight = 1.0 + static_cast<double>(mesh.triangle_count());
+    tasks.push_back({i, false, weight});
+    if (r.no_hulls_reason.empty()) tasks.push_back({i, true, weight});
+  }
+  // Largest first (decompositions before encodes of the same size): the last task to finish is
+  // then a small one. Each task writes only its own mesh's fields.
+  std::stable_sort(tasks.begin(), tasks.end(), [](const Task& a, const Task& b) {
+    return a.weight != b.weight ? a.weight > b.weight : a.hulls > b.hulls;
+  });
+  std::vector<double> weights;
+  for (const Task& t : tasks) weights.push_back(t.weight);
+  ProgressBoard board(observer, weights, from, to);
+  std::vector<Status> status(tasks.size());
+  ParallelFor(tasks.size(), ThreadCount(options.threads), [&](size_t k) {
+    const Task& task = tasks[k];
+    if (board.Cancelled()) {
+      status[k] = Status(StatusCode::kCancelled, "cancelled");
+      return;
+    }
+    const Mesh& mesh = scene.meshes[task.mesh];
+    const std::string prefix = "mesh " + std::to_string(task.mesh + 1) + "/" + std::to_string(n) +
+                               " '" + mesh.name + "': ";
+    if (task.hulls) {
+      board.Set(k, 0, prefix + "decompose");
+      DecomposeProgress progress(board, k, prefix);
+      status[k] = MakeHulls(mesh, options, &progress, packed[task.mesh]);
+      board.Set(k, 1, prefix + "hulls encoded");
+    } else {
+      board.Set(k, 0, prefix + "encode");
+      // Beside a decomposition, the candidates one after another: each encoder holds working
+      // arrays of about the mesh's size, and the decomposition keeps the other core busy.
+      const int threads =
+          packed[task.mesh].report.no_hulls_reason.empty() ? 1 : ThreadCount(options.threads);
+      const o3dgc::ProgressFn progress = [&board, k, &prefix](float f) {
+        board.Set(k, f, prefix + "encode " + std::to_string(static_cast<int>(f * 100)) + "%");
+        return !board.Cancelled();
+      };
+      status[k] = EncodeRenderMesh(mesh, options, threads, progress, packed[task.mesh]);
+      board.Set(k, 1, prefix + "encoded");
+    }
+  });
+  // The first error in mesh order, whatever order the tasks ran in.
+  const Status* first = nullptr;
+  size_t first_mesh = n;
+  for (size_t k = 0; k < tasks.size(); ++k) {
+    if (!status[k].ok() && tasks[k].mesh < first_mesh) {
+      first = &status[k];
+      first_mesh = tasks[k].mesh;
+    }
+  }
+  if (first) return *first;
+  return packed;
+}
+
+}  // namespace hullpack

@@ -1,0 +1,36 @@
+// "Per mesh: decompose and encode": the pipeline stage after leaving out the unused. Each mesh gets
+// its render stream (the smallest within the position error budget, error_budget.h) and, when the
+// collision policy gives it hulls, its decomposition (collision.h) as one hull stream
+// (hull_stream.h). The render streams and decompositions of all meshes are independent tasks run
+// on the pipeline's threads, largest first; each writes only its own mesh's result, so the output
+// does not depend on the thread count.
+#ifndef HULLPACK_TOOLS_PIPELINE_PACK_MESH_H_
+#define HULLPACK_TOOLS_PIPELINE_PACK_MESH_H_
+
+#include <vector>
+
+#include "common/status.h"
+#include "pipeline/mesh_codec.h"
+#include "pipeline/pack_options.h"
+#include "scene/scene.h"
+
+namespace hullpack {
+
+struct PackedMesh {
+  MeshPackReport report;
+  EncodedMesh stream;    // the render stream
+  Mesh decoded;          // as a decoder reads it back (name, collides; material ids = its groups)
+  bool grouped = false;  // the stream has triangle groups (the mesh had material ids)
+  bool has_hulls = false;
+  EncodedMesh hull_stream;  // one group per hull
+  std::vector<Mesh> hulls;  // hull h as a decoder extracts group h, named MESH_hull_h
+};
+
+// Packs every mesh of `scene`. `observer` (may be null) sees progress as fractions between `from`
+// and `to` and can cancel. Errors name the mesh.
+Result<std::vector<PackedMesh>> PackMeshes(const Scene& scene, const PackOptions& options,
+                                           PackObserver* observer, double from, double to);
+
+}  // namespace hullpack
+
+#endif  // HULLPACK_TOOLS_PIPELINE_PACK_MESH_H_
