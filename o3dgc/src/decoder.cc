@@ -24,14 +24,14 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
   StreamHeader sh;
   Status s = ParseHeader(data, size, &sh);
   if (s != Status::kOk) return s;
-  if (options.verify_checksum &&
-      Crc32(data + kCrcOffset + kCrcSize, size - kCrcOffset - kCrcSize) != sh.crc) {
+  if (options.verify_checksum && StreamCrc(data, size) != sh.crc) {
     return Status::kChecksumMismatch;
   }
   auto progress = [&](float f) { return !options.progress || options.progress(f); };
   ArithmeticDecoder dec(data + sh.payload_offset, sh.payload_size);
   StreamInfo si;
-  si.version = sh.version;
+  si.version_major = sh.major;
+  si.version_minor = sh.minor;
   si.keep_order = sh.keep_order;
   si.fast_decode = sh.fast_decode;
   const CodingOrder::Kind order = CodingOrder::ForStream(sh.fast_decode);
@@ -337,7 +337,8 @@ Status ReadStreamInfo(const uint8_t* data, size_t size, StreamInfo* info) {
   if ((s = DecodePayloadHeader(&dec, &h)) != Status::kOk) return s;
   *info = StreamInfo();
   info->stream_type = type;
-  info->version = sh.version;
+  info->version_major = sh.major;
+  info->version_minor = sh.minor;
   info->keep_order = sh.keep_order;
   info->fast_decode = sh.fast_decode;
   info->num_vertices = size_t(h.num_vertices);
@@ -345,6 +346,12 @@ Status ReadStreamInfo(const uint8_t* data, size_t size, StreamInfo* info) {
   info->total = size;
   info->header = sh.payload_offset + dec.BytesConsumed();
   return Status::kOk;
+}
+
+const char* FormatVersionString() {
+  static_assert(kFormatMajor < 10 && kFormatMinor < 10, "update the version string");
+  static const char kText[] = {char('0' + kFormatMajor), '.', char('0' + kFormatMinor), 0};
+  return kText;
 }
 
 const char* StatusName(Status status) {

@@ -385,7 +385,8 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
   FinalizeCrc(out);
   si.header += byte_header;
   si.stream_type = params.stream_type;
-  si.version = kStreamVersion;
+  si.version_major = kFormatMajor;
+  si.version_minor = kFormatMinor;
   si.keep_order = params.keep_order;
   si.fast_decode = params.fast_decode;
   si.num_vertices = nv;

@@ -213,7 +213,7 @@ TEST(RoundTrip, FastDecodeGivesTheSameMeshFromAnotherStream) {
         p.fast_decode = true;
         ASSERT_EQ(Encode(v, p, &fast, &si), Status::kOk);
         EXPECT_TRUE(si.fast_decode);
-        EXPECT_EQ(fast[5], keep ? 3 : 2);  // the flags byte
+        EXPECT_EQ(fast[6], keep ? 3 : 2);  // the flags byte
         if (t.nv() > 100) EXPECT_NE(slow, fast);
         const DecodedMesh a = DecodeOk(slow);
         DecodedMesh b;
@@ -413,6 +413,10 @@ TEST(RoundTrip, DeterministicAndStreamInfoAddsUp) {
   ASSERT_EQ(ReadStreamInfo(a.data(), a.size(), &read), Status::kOk);
   EXPECT_EQ(read.num_vertices, t.nv());
   EXPECT_EQ(read.num_triangles, t.nt());
+  EXPECT_EQ(read.version_major, kFormatMajor);
+  EXPECT_EQ(read.version_minor, kFormatMinor);
+  EXPECT_EQ(info.version_major, 1u);
+  EXPECT_STREQ(FormatVersionString(), "1.0");
 }
 
 TEST(RoundTrip, RejectsInvalidInput) {

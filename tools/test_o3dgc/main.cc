@@ -3,6 +3,7 @@
 //   test_o3dgc -c -i bunny.obj [-st binary|ascii] [-qc 14] [-qn 10] [-qt 12] [-keep]
 //       writes bunny.s3d next to the input
 //   test_o3dgc -d -i bunny.s3d
+//   test_o3dgc --version       prints the program and the o3dgc stream format version
 //       writes bunny_dec.obj next to the input; also reads streams of the original Open3DGC tool
 //       (2013), written out in that tool's OBJ layout
 // Material names (the stream keeps only per-triangle group ids) go to a side file bunny.mat, one
@@ -32,9 +33,10 @@ double Ms(Clock::time_point a, Clock::time_point b) {
 }
 
 int Usage() {
-  std::fprintf(stderr,
-               "usage: test_o3dgc -c -i <mesh> [-st binary|ascii] [-qc bits] [-qn bits] [-qt bits] "
-               "[-keep] [-fast]\n       test_o3dgc -d -i <stream.s3d>\n");
+  std::fprintf(
+      stderr,
+      "usage: test_o3dgc -c -i <mesh> [-st binary|ascii] [-qc bits] [-qn bits] [-qt bits] "
+      "[-keep] [-fast]\n       test_o3dgc -d -i <stream.s3d>\n       test_o3dgc --version\n");
   return 2;
 }
 
@@ -293,6 +295,10 @@ int main(int argc, char** argv) {
       *v = std::atoi(argv[++i]);
       return true;
     };
+    if (a == "--version") {
+      std::printf("test_o3dgc (hullpack) o3dgc stream format %s\n", o3dgc::FormatVersionString());
+      return 0;
+    }
     if (a == "-c") {
       compress = true;
     } else if (a == "-d") {
