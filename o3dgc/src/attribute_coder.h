@@ -76,6 +76,19 @@ ClassShifts ChooseClassShifts(const ClassHistograms& histograms);
 void EncodeClassShifts(ArithmeticEncoder* enc, const ClassShifts& shifts);
 void DecodeClassShifts(ArithmeticDecoder* dec, ClassShifts* shifts);
 
+// Parallelogram selection (a bit at the start of every multi-parallelogram section): when set,
+// every vertex with two or more parallelograms first codes which prediction it uses: symbol 0 the
+// combination of all of them (as without selection), symbol 1 + i the i-th parallelogram alone
+// (i < kMaxSelected, in wedge order). On CAD meshes one parallelogram (across a flat wall, along a
+// strip of slivers) is often exact while the others span a crease, and their median is not.
+// The symbol's model is chosen by the number of parallelograms (2, 3, 4 or more).
+constexpr int kMaxSelected = 7;
+constexpr int kSelectionContexts = 3;
+struct SelectionModels {
+  SymbolModelN<8> symbol[kSelectionContexts];
+  static int Context(int n_par) { return n_par >= 4 ? 2 : n_par - 2; }
+};
+
 // Residual models indexed by (component, prediction kind, magnitude context, intra context);
 // only the components and kinds a coder uses are allocated. Quantized attributes use
 // ResidualModel (one multi-symbol decision per magnitude: fast to decode), surface-normal residuals

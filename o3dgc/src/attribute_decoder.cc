@@ -19,10 +19,11 @@ namespace {
 template <int kDim, bool kRawLow, bool kShifted>
 Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges,
                            CodingOrder::Kind kind, int64_t maxq, int coarse, ResidualModels& models,
-                           const ClassShifts& shifts, int32_t* q, uint32_t* mags) {
+                           const ClassShifts& shifts, bool select, int32_t* q, uint32_t* mags) {
   ArithmeticDecoder dec = *dec_in;
   Status status = Status::kOk;
   CodingOrder order(wedges, kind);
+  std::unique_ptr<SelectionModels> selection(select ? new SelectionModels : nullptr);
   // A truncated stream reads as zeros (bounded work: one pass over the vertices), found by the
   // check after the loop.
   for (uint32_t c; (c = order.Next()) != kNoVertex;) {
@@ -31,6 +32,20 @@ Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges,
     const int n_par = order.Visit(c);
     const PredictionContext pc = PredictFromParallelograms<kDim>(
         order.parallelograms(), n_par, wedges, order.done(), c, previous, q, mags, pred);
+    if (select && n_par >= 2) {
+      const int symbol = dec.Decode(selection->symbol[SelectionModels::Context(n_par)]);
+      if (symbol > 0) {
+        if (symbol > n_par || symbol > kMaxSelected) {
+          status = Status::kCorrupt;
+          break;
+        }
+        const Wedge* w = order.parallelograms()[symbol - 1];
+        for (int k = 0; k < kDim; ++k) {
+          pred[k] = int64_t(q[size_t(w->u) * kDim + k]) + q[size_t(w->w) * kDim + k] -
+                    q[size_t(w->x) * kDim + k];
+        }
+      }
+    }
     const int mctx = MagContext(pc.neighbour_magnitude) >> coarse;
     // Component k's context: same (kind, magnitude), its own component (all share component 0
     // for tiny meshes), the previous component's residual (not for small meshes).
@@ -70,9 +85,10 @@ Status DecodeParallelogramFor(bool raw, ArithmeticDecoder* dec, const WedgeTable
                               CodingOrder::Kind kind, int64_t maxq, int coarse,
                               ResidualModels& models, int32_t* q, uint32_t* mags) {
   ClassShifts shifts;
+  const bool select = dec->DecodeBits(1) != 0;
   if (!raw) {
     return DecodeParallelogram<kDim, false, false>(dec, wedges, kind, maxq, coarse, models, shifts,
-                                                   q, mags);
+                                                   select, q, mags);
   }
   DecodeClassShifts(dec, &shifts);
   // Positions (and normals predicted as values) have a loop of their own for tables of zeros; other
@@ -80,11 +96,11 @@ Status DecodeParallelogramFor(bool raw, ArithmeticDecoder* dec, const WedgeTable
   if constexpr (kDim == 3) {
     if (!shifts.any()) {
       return DecodeParallelogram<kDim, true, false>(dec, wedges, kind, maxq, coarse, models, shifts,
-                                                    q, mags);
+                                                    select, q, mags);
     }
   }
-  return DecodeParallelogram<kDim, true, true>(dec, wedges, kind, maxq, coarse, models, shifts, q,
-                                               mags);
+  return DecodeParallelogram<kDim, true, true>(dec, wedges, kind, maxq, coarse, models, shifts,
+                                               select, q, mags);
 }
 
 }  // namespace

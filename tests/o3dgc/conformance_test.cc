@@ -217,11 +217,21 @@ std::vector<Vector> Vectors() {
        [](EncodeParams* p) { p->fast_decode = true; }},
       {"ascii", [] { return CubeSphere(3, true); },
        [](EncodeParams* p) { p->stream_type = StreamType::kAscii; }},
-      // 4374 vertices: above the vertex count from which residual low bits are coded raw.
+      // Above the vertex count from which residual low bits are coded raw (kRawLowBitsMesh):
+      // 4706 position vertices once the cube's edges are welded (parallelogram selection on), and
+      // a smooth torus of 4800 (selection off).
       {"large_raw_bits",
        [] {
-         TestMesh t = CubeSphere(26, true);
+         TestMesh t = CubeSphere(28, false);
          t.normals.clear();
+         return t;
+       },
+       none},
+      {"large_raw_bits_smooth",
+       [] {
+         TestMesh t = RationalTorus(80, 60);
+         t.colors.clear();
+         t.joints.clear();
          return t;
        },
        none},
