@@ -83,6 +83,9 @@ void DecodeClassShifts(ArithmeticDecoder* dec, ClassShifts* shifts);
 // strip of slivers) is often exact while the others span a crease, and their median is not.
 // The symbol's model is chosen by the number of parallelograms (2, 3, 4 or more).
 constexpr int kMaxSelected = 7;
+// Residuals against a selected parallelogram have models of their own (often exactly zero).
+constexpr int kSelectedKind = 3;
+constexpr int kResidualKinds = 4;
 constexpr int kSelectionContexts = 3;
 struct SelectionModels {
   SymbolModelN<8> symbol[kSelectionContexts];

@@ -32,6 +32,7 @@ Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges,
     const int n_par = order.Visit(c);
     const PredictionContext pc = PredictFromParallelograms<kDim>(
         order.parallelograms(), n_par, wedges, order.done(), c, previous, q, mags, pred);
+    int kind = pc.kind;
     if (select && n_par >= 2) {
       const int symbol = dec.Decode(selection->symbol[SelectionModels::Context(n_par)]);
       if (symbol > 0) {
@@ -39,6 +40,7 @@ Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges,
           status = Status::kCorrupt;
           break;
         }
+        kind = kSelectedKind;
         const Wedge* w = order.parallelograms()[symbol - 1];
         for (int k = 0; k < kDim; ++k) {
           pred[k] = int64_t(q[size_t(w->u) * kDim + k]) + q[size_t(w->w) * kDim + k] -
@@ -49,9 +51,9 @@ Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges,
     const int mctx = MagContext(pc.neighbour_magnitude) >> coarse;
     // Component k's context: same (kind, magnitude), its own component (all share component 0
     // for tiny meshes), the previous component's residual (not for small meshes).
-    ResidualModel* const row = &models.at(0, pc.kind, mctx, 0);
+    ResidualModel* const row = &models.at(0, kind, mctx, 0);
     const size_t stride = coarse == 2 ? 0 : models.component_stride();
-    const int shift = kShifted ? shifts.shift[pc.kind][mctx] : 0;
+    const int shift = kShifted && kind != kSelectedKind ? shifts.shift[kind][mctx] : 0;
     int64_t r[kDim];
     bool ok = true;
     int intra = 0;
@@ -119,7 +121,7 @@ Status DecodeQuantized(ArithmeticDecoder* dec_in, const WedgeTable* wedges, uint
     }
     return dec->failed() ? Status::kTruncated : Status::kOk;
   }
-  std::unique_ptr<ResidualModels> models(new ResidualModels(dim, 3));
+  std::unique_ptr<ResidualModels> models(new ResidualModels(dim, kResidualKinds));
   std::vector<uint32_t> mags(n, 0);
   const int coarse = n < kTinyMesh ? 2 : (n < kSmallMesh ? 1 : 0);
   const bool raw = RawLowBits(n);

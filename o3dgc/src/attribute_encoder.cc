@@ -142,7 +142,7 @@ void EncodeParallelogram(ArithmeticEncoder* enc, const WedgeTable& wedges, Codin
                        q[size_t(w->x) * kDim + k]);
         }
         const int b = cost(r);
-        if (b + 2 < best) {  // a clear gain only: symbol 0 stays the common, cheap one
+        if (b < best) {
           best = b;
           v.selected = uint8_t(1 + i);
           std::copy(r, r + kDim, v.best);
@@ -176,6 +176,7 @@ void EncodeParallelogram(ArithmeticEncoder* enc, const WedgeTable& wedges, Codin
   if (kRawLow) {
     ClassHistograms histograms;
     for (const Vertex& v : coded) {
+      if (select && v.selected) continue;
       for (int k = 0; k < kDim; ++k) histograms.Add(v.kind, v.mctx, v.r[k]);
     }
     shifts = ChooseClassShifts(histograms);
@@ -187,8 +188,9 @@ void EncodeParallelogram(ArithmeticEncoder* enc, const WedgeTable& wedges, Codin
     if (select && v.choices) {
       enc->Encode(v.selected, selection->symbol[SelectionModels::Context(v.choices)]);
     }
-    ResidualModel* const row = &models.at(0, v.kind, v.mctx, 0);
-    const int shift = kRawLow ? shifts.shift[v.kind][v.mctx] : 0;
+    const bool own = select && v.selected;
+    ResidualModel* const row = &models.at(0, own ? kSelectedKind : v.kind, v.mctx, 0);
+    const int shift = kRawLow && !own ? shifts.shift[v.kind][v.mctx] : 0;
     int intra = 0;
     for (int k = 0; k < kDim; ++k) {
       EncodeResidual<kRawLow>(*enc, row[stride * k + intra], models.escape, v.r[k], shift);
@@ -219,7 +221,7 @@ void EncodeQuantized(ArithmeticEncoder* enc, const WedgeTable* wedges,
     for (int32_t v : q) enc->EncodeBits(uint32_t(v), bits);
     return;
   }
-  std::unique_ptr<ResidualModels> models(new ResidualModels(dim, 3));
+  std::unique_ptr<ResidualModels> models(new ResidualModels(dim, kResidualKinds));
   std::vector<uint32_t> mags(n, 0);
   const int64_t maxq = (int64_t(1) << bits) - 1;
   const int coarse = n < kTinyMesh ? 2 : (n < kSmallMesh ? 1 : 0);

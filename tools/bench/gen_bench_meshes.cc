@@ -197,6 +197,8 @@ void ExtrudeCells(const std::vector<Cell>& cells, double height, ObjMesh* m) {
     double depth;
   };
   std::vector<Pocket> pockets;
+  std::vector<uint8_t> mirrored;  // per top triangle: repeated on the bottom face
+  std::vector<std::vector<uint32_t>> solid_bottoms;  // outer loops of cells with a pocket
   for (const Cell& cell : cells) {
     std::vector<uint32_t> outer, inner;
     for (Vec2 p : cell.outer) outer.push_back(id(p));
@@ -207,9 +209,13 @@ void ExtrudeCells(const std::vector<Cell>& cells, double height, ObjMesh* m) {
     } else {
       for (Vec2 p : cell.hole) inner.push_back(id(p));
       RingStrip(outer, inner, pts, cell.center, &tri);
-      if (!cell.through) pockets.push_back({inner, cell.depth});
+      if (!cell.through) {
+        pockets.push_back({inner, cell.depth});
+        solid_bottoms.push_back(outer);
+      }
     }
     top.insert(top.end(), tri.begin(), tri.end());
+    mirrored.insert(mirrored.end(), tri.size() / 3, uint8_t(cell.hole.empty() || cell.through));
   }
   for (size_t t = 0; t < top.size(); t += 3) {
     for (int k = 0; k < 3; ++k) {
@@ -240,17 +246,22 @@ void ExtrudeCells(const std::vector<Cell>& cells, double height, ObjMesh* m) {
     }
     (void)pocket_triangle;
   }
-  // Bottom face: the top face's triangulation mirrored, pockets closed (their floor is inside the
-  // part, the bottom is whole): the pocket loop's interior is fanned at z = 0 as well.
+  // Bottom face: under through holes the top face's triangulation mirrored; under a pocket the
+  // bottom is whole (an exporter tessellates each face alone: no pocket outline there), the cell's
+  // outer loop fanned.
   for (size_t t = 0; t < top.size(); t += 3) {
-    m->Tri(v3(top[t], 0), v3(top[t + 2], 0), v3(top[t + 1], 0));
+    if (mirrored[t / 3]) m->Tri(v3(top[t], 0), v3(top[t + 2], 0), v3(top[t + 1], 0));
+  }
+  for (const std::vector<uint32_t>& loop : solid_bottoms) {
+    for (size_t k = 1; k + 1 < loop.size(); ++k) {
+      m->Tri(v3(loop[0], 0), v3(loop[k + 1], 0), v3(loop[k], 0));
+    }
   }
   for (const Pocket& p : pockets) {
     const double zf = height - p.depth;
-    // The pocket's loop is counter-clockwise: its floor faces +z, the bottom under it -z.
+    // The pocket's loop is counter-clockwise: its floor faces +z.
     for (size_t k = 1; k + 1 < p.loop.size(); ++k) {
       m->Tri(v3(p.loop[0], zf), v3(p.loop[k], zf), v3(p.loop[k + 1], zf));
-      m->Tri(v3(p.loop[0], 0), v3(p.loop[k + 1], 0), v3(p.loop[k], 0));
     }
   }
 }
