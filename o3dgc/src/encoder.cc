@@ -21,6 +21,7 @@ namespace {
 
 constexpr uint32_t kNone = 0xFFFFFFFFu;
 constexpr size_t kMaxCount = size_t(1) << 28;
+constexpr double kAutoFastDecodeCost = 1.025;  // see EncodeParams::auto_fast_decode
 
 Prediction ResolveFloat(Prediction p, Semantic s) {
   if (p != Prediction::kDefault) return p;
@@ -69,7 +70,8 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
     if (mesh.indices[i] >= nv) return Status::kInvalidArgument;
   }
   auto progress = [&](float f) { return !params.progress || params.progress(f); };
-  const CodingOrder::Kind order = CodingOrder::ForStream(params.fast_decode);
+  bool fast_decode = params.fast_decode;
+  CodingOrder::Kind order = CodingOrder::ForStream(fast_decode);
 
   // Descriptors.
   PayloadHeader h;
@@ -297,6 +299,21 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
       wedges.BuildFromOppositeVertices(conn.triangles, nw, conn.opposite_vertices,
                                        &conn.vertex_triangles);
     }
+    if (!fast_decode && params.auto_fast_decode &&
+        h.position.prediction == Prediction::kParallelogram && RawLowBits(nw)) {
+      // The bytes of the positions alone in each order (see EncodeParams::auto_fast_decode).
+      auto size_in = [&](CodingOrder::Kind kind) {
+        std::vector<uint8_t> scratch;
+        ArithmeticEncoder e(&scratch);
+        EncodeQuantized(&e, &wedges, qpos, 3, h.position.bits, h.position.prediction, kind);
+        e.Finish();
+        return double(scratch.size());
+      };
+      if (size_in(CodingOrder::kVertexId) <= kAutoFastDecodeCost * size_in(CodingOrder::kGreedy)) {
+        fast_decode = true;
+        order = CodingOrder::kVertexId;
+      }
+    }
     EncodeQuantized(&enc, &wedges, qpos, 3, h.position.bits, h.position.prediction, order);
   }
   si.positions = enc.BytesSoFar() - mark;
@@ -379,7 +396,7 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
   AddTailBytes(h, payload.size() > mark ? payload.size() - mark : 0, &si);
 
   out->clear();
-  WriteHeader(params.keep_order, params.fast_decode, payload.size(), out);
+  WriteHeader(params.keep_order, fast_decode, payload.size(), out);
   const size_t byte_header = out->size();
   out->insert(out->end(), payload.begin(), payload.end());
   FinalizeCrc(out);
@@ -388,7 +405,7 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
   si.version_major = kFormatMajor;
   si.version_minor = kFormatMinor;
   si.keep_order = params.keep_order;
-  si.fast_decode = params.fast_decode;
+  si.fast_decode = fast_decode;
   si.num_vertices = nv;
   si.num_triangles = nt;
   if (params.stream_type == StreamType::kAscii) *out = PackAscii(*out);

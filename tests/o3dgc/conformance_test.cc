@@ -234,7 +234,7 @@ std::vector<Vector> Vectors() {
          t.joints.clear();
          return t;
        },
-       none},
+       [](EncodeParams* p) { p->auto_fast_decode = false; }},
   };
 }
 

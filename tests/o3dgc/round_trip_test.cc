@@ -207,9 +207,17 @@ TEST(RoundTrip, FastDecodeGivesTheSameMeshFromAnotherStream) {
         EncodeParams p;
         p.keep_order = keep;
         p.normal_prediction = np;
-        std::vector<uint8_t> slow, fast;
+        p.auto_fast_decode = false;
+        std::vector<uint8_t> slow, fast, automatic;
         StreamInfo si;
         ASSERT_EQ(Encode(v, p, &slow), Status::kOk);
+        EXPECT_EQ(slow[6], keep ? 1 : 0);
+        // The automatic choice writes one of the two streams, and says which in its flags.
+        p.auto_fast_decode = true;
+        StreamInfo ai;
+        ASSERT_EQ(Encode(v, p, &automatic, &ai), Status::kOk);
+        EXPECT_EQ(automatic[6] == (keep ? 3 : 2), ai.fast_decode);
+        p.auto_fast_decode = false;
         p.fast_decode = true;
         ASSERT_EQ(Encode(v, p, &fast, &si), Status::kOk);
         EXPECT_TRUE(si.fast_decode);
@@ -233,6 +241,7 @@ TEST(RoundTrip, FastDecodeGivesTheSameMeshFromAnotherStream) {
           EXPECT_EQ(a.int_attributes[i].values, b.int_attributes[i].values);
         }
         EXPECT_EQ(a.triangle_groups, b.triangle_groups);
+        EXPECT_TRUE(automatic == (ai.fast_decode ? fast : slow));
       }
     }
   }
