@@ -76,7 +76,8 @@ ClassShifts ChooseClassShifts(const ClassHistograms& histograms);
 void EncodeClassShifts(ArithmeticEncoder* enc, const ClassShifts& shifts);
 void DecodeClassShifts(ArithmeticDecoder* dec, ClassShifts* shifts);
 
-// Parallelogram selection (a bit at the start of every multi-parallelogram section): when set,
+// Parallelogram selection (a bit at the start of every multi-parallelogram section; in format 1.0
+// it may be set for 3-component values only: positions and normals coded as values): when set,
 // every vertex with two or more parallelograms first codes which prediction it uses: symbol 0 the
 // combination of all of them (as without selection), symbol 1 + i the i-th parallelogram alone
 // (i < kMaxSelected, in wedge order). On CAD meshes one parallelogram (across a flat wall, along a

@@ -33,7 +33,9 @@ Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges,
     const PredictionContext pc = PredictFromParallelograms<kDim>(
         order.parallelograms(), n_par, wedges, order.done(), c, previous, q, mags, pred);
     int kind = pc.kind;
-    if (select && n_par >= 2) {
+    // Selection is defined for 3 components only (DecodeParallelogramFor rejects the flag for
+    // others): the other loops stay without its code.
+    if (kDim == 3 && select && n_par >= 2) {
       const int symbol = dec.Decode(selection->symbol[SelectionModels::Context(n_par)]);
       if (symbol > 0) {
         if (symbol > n_par || symbol > kMaxSelected) {
@@ -88,6 +90,7 @@ Status DecodeParallelogramFor(bool raw, ArithmeticDecoder* dec, const WedgeTable
                               ResidualModels& models, int32_t* q, uint32_t* mags) {
   ClassShifts shifts;
   const bool select = dec->DecodeBits(1) != 0;
+  if (select && kDim != 3) return Status::kCorrupt;
   if (!raw) {
     return DecodeParallelogram<kDim, false, false>(dec, wedges, kind, maxq, coarse, models, shifts,
                                                    select, q, mags);

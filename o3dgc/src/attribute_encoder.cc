@@ -165,12 +165,12 @@ void EncodeParallelogram(ArithmeticEncoder* enc, const WedgeTable& wedges, Codin
     }
   };
   double combined_bits, selected_bits;
-  analyse(true, &combined_bits, &selected_bits);
+  analyse(kDim == 3, &combined_bits, &selected_bits);
   // Selection costs decoding time (a symbol per vertex: 5-8 % on bunny): on large meshes, where
   // decoding time matters (see RawLowBits), it is used only when it spares a tenth of the
   // estimated bits (CAD parts: 25-70 %; smooth scans: 1-9 %), on smaller ones from 2 %.
-  const bool select = selected_bits < (kRawLow ? 0.90 : 0.98) * combined_bits;
-  if (!select) analyse(false, &combined_bits, &selected_bits);
+  const bool select = kDim == 3 && selected_bits < (kRawLow ? 0.90 : 0.98) * combined_bits;
+  if (kDim == 3 && !select) analyse(false, &combined_bits, &selected_bits);
   enc->EncodeBits(select ? 1 : 0, 1);
   ClassShifts shifts;
   if (kRawLow) {

@@ -18,11 +18,12 @@
 //    multi-component meshes and isolated vertices all code losslessly;
 //  - seams: per position vertex its number of attribute vertices and, per corner, which one;
 //  - attributes are quantized, predicted (parallelogram mode: multi-parallelogram in
-//    max-prediction-degree order; texture coordinates (Semantic::kTexCoord, 2 components) are
-//    predicted from the 3D shape instead; surface-normal mode: octahedral coordinates against the
-//    normal of the decoded surface) and the residuals are coded with context-adaptive binary
-//    arithmetic coding (from 4096 vertices on, a residual's sign and low bits are read raw: 13-20 %
-//    faster decoding for 0-3 % more bytes on large meshes);
+//    max-prediction-degree order, where a vertex may select a single parallelogram when the
+//    combination spans a crease, as on CAD parts; texture coordinates (Semantic::kTexCoord, 2
+//    components) are predicted from the 3D shape instead; surface-normal mode: octahedral
+//    coordinates against the normal of the decoded surface) and the residuals are coded with
+//    context-adaptive binary arithmetic coding (from 4096 vertices on, a residual's sign and low
+//    bits are read raw: 13-20 % faster decoding for 0-3 % more bytes on large meshes);
 //  - stream: "O3DG", format version (major, minor), flags, CRC32, payload length, one
 //    arithmetic-coded payload. The ASCII form ("O3DA") is the same stream repacked 7 bits per
 //    byte. The format is specified in docs/o3dgc-stream-format.md.
