@@ -157,6 +157,10 @@ struct NormalGeometry {
 void EncodeQuantized(ArithmeticEncoder* enc, const WedgeTable* wedges,
                      const std::vector<int32_t>& q, int dim, int bits, Prediction mode,
                      CodingOrder::Kind order, const std::vector<double>* geometry = nullptr);
+// Estimated bits of 3-component parallelogram-predicted values coded in `order` (nothing coded):
+// the encoder's choice between the two orders (EncodeParams::auto_fast_decode).
+double EstimatePositionBits(const WedgeTable& wedges, const std::vector<int32_t>& q, int bits,
+                            CodingOrder::Kind order);
 Status DecodeQuantized(ArithmeticDecoder* dec, const WedgeTable* wedges, uint32_t n, int dim,
                        int bits, Prediction mode, CodingOrder::Kind order, std::vector<int32_t>* q,
                        const std::vector<double>* geometry = nullptr);
