@@ -32,7 +32,7 @@ Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges,
     const int n_par = order.Visit(c);
     const PredictionContext pc = PredictFromParallelograms<kDim>(
         order.parallelograms(), n_par, wedges, order.done(), c, previous, q, mags, pred);
-    int kind = pc.kind;
+    int residual_kind = pc.kind;
     // Selection is defined for 3 components only (DecodeParallelogramFor rejects the flag for
     // others): the other loops stay without its code.
     if (kDim == 3 && select && n_par >= 2) {
@@ -42,7 +42,7 @@ Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges,
           status = Status::kCorrupt;
           break;
         }
-        kind = kSelectedKind;
+        residual_kind = kSelectedKind;
         const Wedge* w = order.parallelograms()[symbol - 1];
         for (int k = 0; k < kDim; ++k) {
           pred[k] = int64_t(q[size_t(w->u) * kDim + k]) + q[size_t(w->w) * kDim + k] -
@@ -53,9 +53,10 @@ Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges,
     const int mctx = MagContext(pc.neighbour_magnitude) >> coarse;
     // Component k's context: same (kind, magnitude), its own component (all share component 0
     // for tiny meshes), the previous component's residual (not for small meshes).
-    ResidualModel* const row = &models.at(0, kind, mctx, 0);
+    ResidualModel* const row = &models.at(0, residual_kind, mctx, 0);
     const size_t stride = coarse == 2 ? 0 : models.component_stride();
-    const int shift = kShifted && kind != kSelectedKind ? shifts.shift[kind][mctx] : 0;
+    const int shift =
+        kShifted && residual_kind != kSelectedKind ? shifts.shift[residual_kind][mctx] : 0;
     int64_t r[kDim];
     bool ok = true;
     int intra = 0;

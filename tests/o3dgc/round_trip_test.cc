@@ -222,7 +222,9 @@ TEST(RoundTrip, FastDecodeGivesTheSameMeshFromAnotherStream) {
         ASSERT_EQ(Encode(v, p, &fast, &si), Status::kOk);
         EXPECT_TRUE(si.fast_decode);
         EXPECT_EQ(fast[6], keep ? 3 : 2);  // the flags byte
-        if (t.nv() > 100) EXPECT_NE(slow, fast);
+        if (t.nv() > 100) {
+          EXPECT_NE(slow, fast);
+        }
         const DecodedMesh a = DecodeOk(slow);
         DecodedMesh b;
         StreamInfo di;

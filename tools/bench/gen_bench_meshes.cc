@@ -17,10 +17,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "common/cli_args.h"
 #include "common/file_util.h"
 
 namespace {
@@ -583,11 +585,14 @@ ObjMesh Icosahedron() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2 || argv[1][0] == '-') {
-    std::fprintf(stderr, "usage: gen_bench_meshes OUT_FOLDER\n");
-    return 64;
-  }
-  const std::string dir = argv[1];
+  std::vector<std::string> operands;
+  hullpack::CliArgs cli("gen_bench_meshes", "OUT_FOLDER",
+                        "Writes the second codec benchmark set (22 meshes generated in code: CAD\n"
+                        "parts as exported to STL, noisy scans, UV-mapped scenes, tiny meshes) as\n"
+                        "OBJ files into OUT_FOLDER, for codec_bench.");
+  cli.Positional("OUT_FOLDER", &operands, 1, 1);
+  if (std::optional<int> exit_code = cli.Parse(argc, argv)) return *exit_code;
+  const std::string dir = operands[0];
   std::vector<std::pair<std::string, ObjMesh>> meshes;
   meshes.emplace_back("cad_plate_4x4", Plate(4, 4, 25, 7, 32, 6, true));
   meshes.emplace_back("cad_plate_12x8", Plate(12, 8, 10, 3, 24, 4, true));
