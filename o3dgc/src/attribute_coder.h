@@ -76,6 +76,23 @@ ClassShifts ChooseClassShifts(const ClassHistograms& histograms);
 void EncodeClassShifts(ArithmeticEncoder* enc, const ClassShifts& shifts);
 void DecodeClassShifts(ArithmeticDecoder* dec, ClassShifts* shifts);
 
+// Parallelogram selection (a bit at the start of every multi-parallelogram section; in format 1.0
+// it may be set for 3-component values only: positions and normals coded as values): when set,
+// every vertex with two or more parallelograms first codes which prediction it uses: symbol 0 the
+// combination of all of them (as without selection), symbol 1 + i the i-th parallelogram alone
+// (i < kMaxSelected, in wedge order). On CAD meshes one parallelogram (across a flat wall, along a
+// strip of slivers) is often exact while the others span a crease, and their median is not.
+// The symbol's model is chosen by the number of parallelograms (2, 3, 4 or more).
+constexpr int kMaxSelected = 7;
+// Residuals against a selected parallelogram have models of their own (often exactly zero).
+constexpr int kSelectedKind = 3;
+constexpr int kResidualKinds = 4;
+constexpr int kSelectionContexts = 3;
+struct SelectionModels {
+  SymbolModelN<8> symbol[kSelectionContexts];
+  static int Context(int n_par) { return n_par >= 4 ? 2 : n_par - 2; }
+};
+
 // Residual models indexed by (component, prediction kind, magnitude context, intra context);
 // only the components and kinds a coder uses are allocated. Quantized attributes use
 // ResidualModel (one multi-symbol decision per magnitude: fast to decode), surface-normal residuals
@@ -140,6 +157,10 @@ struct NormalGeometry {
 void EncodeQuantized(ArithmeticEncoder* enc, const WedgeTable* wedges,
                      const std::vector<int32_t>& q, int dim, int bits, Prediction mode,
                      CodingOrder::Kind order, const std::vector<double>* geometry = nullptr);
+// Estimated bits of 3-component parallelogram-predicted values coded in `order` (nothing coded):
+// the encoder's choice between the two orders (EncodeParams::auto_fast_decode).
+double EstimatePositionBits(const WedgeTable& wedges, const std::vector<int32_t>& q, int bits,
+                            CodingOrder::Kind order);
 Status DecodeQuantized(ArithmeticDecoder* dec, const WedgeTable* wedges, uint32_t n, int dim,
                        int bits, Prediction mode, CodingOrder::Kind order, std::vector<int32_t>* q,
                        const std::vector<double>* geometry = nullptr);

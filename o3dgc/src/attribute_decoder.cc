@@ -19,10 +19,11 @@ namespace {
 template <int kDim, bool kRawLow, bool kShifted>
 Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges,
                            CodingOrder::Kind kind, int64_t maxq, int coarse, ResidualModels& models,
-                           const ClassShifts& shifts, int32_t* q, uint32_t* mags) {
+                           const ClassShifts& shifts, bool select, int32_t* q, uint32_t* mags) {
   ArithmeticDecoder dec = *dec_in;
   Status status = Status::kOk;
   CodingOrder order(wedges, kind);
+  std::unique_ptr<SelectionModels> selection(select ? new SelectionModels : nullptr);
   // A truncated stream reads as zeros (bounded work: one pass over the vertices), found by the
   // check after the loop.
   for (uint32_t c; (c = order.Next()) != kNoVertex;) {
@@ -31,12 +32,31 @@ Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges,
     const int n_par = order.Visit(c);
     const PredictionContext pc = PredictFromParallelograms<kDim>(
         order.parallelograms(), n_par, wedges, order.done(), c, previous, q, mags, pred);
+    int residual_kind = pc.kind;
+    // Selection is defined for 3 components only (DecodeParallelogramFor rejects the flag for
+    // others): the other loops stay without its code.
+    if (kDim == 3 && select && n_par >= 2) {
+      const int symbol = dec.Decode(selection->symbol[SelectionModels::Context(n_par)]);
+      if (symbol > 0) {
+        if (symbol > n_par || symbol > kMaxSelected) {
+          status = Status::kCorrupt;
+          break;
+        }
+        residual_kind = kSelectedKind;
+        const Wedge* w = order.parallelograms()[symbol - 1];
+        for (int k = 0; k < kDim; ++k) {
+          pred[k] = int64_t(q[size_t(w->u) * kDim + k]) + q[size_t(w->w) * kDim + k] -
+                    q[size_t(w->x) * kDim + k];
+        }
+      }
+    }
     const int mctx = MagContext(pc.neighbour_magnitude) >> coarse;
     // Component k's context: same (kind, magnitude), its own component (all share component 0
     // for tiny meshes), the previous component's residual (not for small meshes).
-    ResidualModel* const row = &models.at(0, pc.kind, mctx, 0);
+    ResidualModel* const row = &models.at(0, residual_kind, mctx, 0);
     const size_t stride = coarse == 2 ? 0 : models.component_stride();
-    const int shift = kShifted ? shifts.shift[pc.kind][mctx] : 0;
+    const int shift =
+        kShifted && residual_kind != kSelectedKind ? shifts.shift[residual_kind][mctx] : 0;
     int64_t r[kDim];
     bool ok = true;
     int intra = 0;
@@ -70,9 +90,11 @@ Status DecodeParallelogramFor(bool raw, ArithmeticDecoder* dec, const WedgeTable
                               CodingOrder::Kind kind, int64_t maxq, int coarse,
                               ResidualModels& models, int32_t* q, uint32_t* mags) {
   ClassShifts shifts;
+  const bool select = dec->DecodeBits(1) != 0;
+  if (select && kDim != 3) return Status::kCorrupt;
   if (!raw) {
     return DecodeParallelogram<kDim, false, false>(dec, wedges, kind, maxq, coarse, models, shifts,
-                                                   q, mags);
+                                                   select, q, mags);
   }
   DecodeClassShifts(dec, &shifts);
   // Positions (and normals predicted as values) have a loop of their own for tables of zeros; other
@@ -80,11 +102,11 @@ Status DecodeParallelogramFor(bool raw, ArithmeticDecoder* dec, const WedgeTable
   if constexpr (kDim == 3) {
     if (!shifts.any()) {
       return DecodeParallelogram<kDim, true, false>(dec, wedges, kind, maxq, coarse, models, shifts,
-                                                    q, mags);
+                                                    select, q, mags);
     }
   }
-  return DecodeParallelogram<kDim, true, true>(dec, wedges, kind, maxq, coarse, models, shifts, q,
-                                               mags);
+  return DecodeParallelogram<kDim, true, true>(dec, wedges, kind, maxq, coarse, models, shifts,
+                                               select, q, mags);
 }
 
 }  // namespace
@@ -103,7 +125,7 @@ Status DecodeQuantized(ArithmeticDecoder* dec_in, const WedgeTable* wedges, uint
     }
     return dec->failed() ? Status::kTruncated : Status::kOk;
   }
-  std::unique_ptr<ResidualModels> models(new ResidualModels(dim, 3));
+  std::unique_ptr<ResidualModels> models(new ResidualModels(dim, kResidualKinds));
   std::vector<uint32_t> mags(n, 0);
   const int coarse = n < kTinyMesh ? 2 : (n < kSmallMesh ? 1 : 0);
   const bool raw = RawLowBits(n);

@@ -19,24 +19,50 @@ namespace {
 
 constexpr uint32_t kNone = 0xFFFFFFFFu;
 
-Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& options,
-                    DecodedMesh* out, StreamInfo* info) {
+// What the stages of one decode share. The stages follow the payload's parts (payload_header.h),
+// each the mirror of the encoder's.
+struct DecodeState {
   StreamHeader sh;
-  Status s = ParseHeader(data, size, &sh);
+  PayloadHeader h;
+  ArithmeticDecoder dec{nullptr, 0};
+  StreamInfo si;
+  CodingOrder::Kind order = CodingOrder::kGreedy;
+  uint32_t nv = 0;
+  size_t nt = 0;
+  std::unique_ptr<SideModels> sm{new SideModels};
+  // Connectivity, over position vertices.
+  std::vector<uint32_t> tris, opposite, opposite_vertices, vertex_triangles;
+  uint32_t nc = 0;
+  // Seams: the position vertex of each attribute vertex, the attribute mesh when it differs.
+  bool has_seams = false;
+  std::vector<uint32_t> welded_of, seam_tris;
+  uint32_t nw = 0;
+  const std::vector<uint32_t>& attr_tris() const { return has_seams ? seam_tris : tris; }
+  // Exact order (keep_order).
+  std::vector<uint32_t> vertex_perm, triangle_perm;
+  std::vector<uint8_t> rotation;
+  // Quantized positions per position vertex.
+  std::vector<int32_t> qpos;
+};
+
+// The stream header, the checksum, the counts and descriptors, checked against the limits and
+// against what the payload can hold before anything is allocated.
+Status DecodeHeaders(const uint8_t* data, size_t size, const DecodeOptions& options,
+                     DecodeState& st) {
+  Status s = ParseHeader(data, size, &st.sh);
   if (s != Status::kOk) return s;
-  if (options.verify_checksum &&
-      Crc32(data + kCrcOffset + kCrcSize, size - kCrcOffset - kCrcSize) != sh.crc) {
+  if (options.verify_checksum && StreamCrc(data, size) != st.sh.crc) {
     return Status::kChecksumMismatch;
   }
-  auto progress = [&](float f) { return !options.progress || options.progress(f); };
-  ArithmeticDecoder dec(data + sh.payload_offset, sh.payload_size);
-  StreamInfo si;
-  si.version = sh.version;
-  si.keep_order = sh.keep_order;
-  si.fast_decode = sh.fast_decode;
-  const CodingOrder::Kind order = CodingOrder::ForStream(sh.fast_decode);
-  PayloadHeader h;
-  if ((s = DecodePayloadHeader(&dec, &h)) != Status::kOk) return s;
+  const StreamHeader& sh = st.sh;
+  st.dec = ArithmeticDecoder(data + sh.payload_offset, sh.payload_size);
+  st.si.version_major = sh.major;
+  st.si.version_minor = sh.minor;
+  st.si.keep_order = sh.keep_order;
+  st.si.fast_decode = sh.fast_decode;
+  st.order = CodingOrder::ForStream(sh.fast_decode);
+  PayloadHeader& h = st.h;
+  if ((s = DecodePayloadHeader(&st.dec, &h)) != Status::kOk) return s;
   if (h.num_vertices > options.max_vertices || h.num_triangles > options.max_triangles) {
     return Status::kLimitExceeded;
   }
@@ -46,33 +72,38 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
   if (h.Budget() > kElementsPerByte * (sh.payload_size + kBudgetSlackBytes)) {
     return Status::kLimitExceeded;
   }
-  const uint32_t nv = uint32_t(h.num_vertices);
-  const size_t nt = size_t(h.num_triangles);
-  si.num_vertices = nv;
-  si.num_triangles = nt;
-  si.header = sh.payload_offset + dec.BytesConsumed();
-  size_t mark = dec.BytesConsumed();
+  st.nv = uint32_t(h.num_vertices);
+  st.nt = size_t(h.num_triangles);
+  st.si.num_vertices = st.nv;
+  st.si.num_triangles = st.nt;
+  st.si.header = sh.payload_offset + st.dec.BytesConsumed();
+  return Status::kOk;
+}
 
-  // Connectivity.
-  std::vector<uint32_t> tris, opposite, opposite_vertices, vertex_triangles;
-  uint32_t nc = 0;
+Status DecodeTriangles(DecodeState& st) {
+  const PayloadHeader& h = st.h;
   // The neighbour triangles themselves are needed only by parallelogram-predicted attributes
   // (across seams); positions use the opposite vertices.
   bool attribute_wedges = h.has_normals && h.normal.prediction == Prediction::kParallelogram;
   for (const AttributeDesc& d : h.floats)
     attribute_wedges |= d.prediction == Prediction::kParallelogram;
-  if ((s = DecodeConnectivity(&dec, nt, nv, &tris, &nc, attribute_wedges ? &opposite : nullptr,
-                              &opposite_vertices, &vertex_triangles)) != Status::kOk) {
-    return s;
-  }
+  return DecodeConnectivity(&st.dec, st.nt, st.nv, &st.tris, &st.nc,
+                            attribute_wedges ? &st.opposite : nullptr, &st.opposite_vertices,
+                            &st.vertex_triangles);
+}
 
-  // Seams.
-  std::unique_ptr<SideModels> sm(new SideModels);
-  const bool has_seams = dec.DecodeBits(1) != 0;
-  std::vector<uint32_t> welded_of(nv);
-  std::vector<uint32_t> seam_tris;  // the attribute mesh, when seams make it differ
-  uint32_t nw = nc;
-  if (!has_seams) {
+Status DecodeSeams(DecodeState& st) {
+  ArithmeticDecoder& dec = st.dec;
+  const uint32_t nv = st.nv, nc = st.nc;
+  const size_t nt = st.nt;
+  const std::vector<uint32_t>& tris = st.tris;
+  std::vector<uint32_t>& welded_of = st.welded_of;
+  std::vector<uint32_t>& seam_tris = st.seam_tris;
+  uint32_t& nw = st.nw;
+  st.has_seams = dec.DecodeBits(1) != 0;
+  welded_of.resize(nv);
+  nw = nc;
+  if (!st.has_seams) {
     // One attribute vertex per welded vertex. Both numberings follow first use in the triangle
     // list, so the attribute mesh is the welded one; unreferenced vertices follow in order.
     for (uint32_t v = 0; v < nv; ++v) welded_of[v] = v;
@@ -80,7 +111,7 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
   } else {
     std::vector<uint32_t> split_count(nc), split_base(size_t(nc) + 1, 0);
     for (uint32_t w = 0; w < nc; ++w) {
-      const uint64_t k = DecodeEG(dec, sm->seam_count) + 1;
+      const uint64_t k = DecodeEG(dec, st.sm->seam_count) + 1;
       if (k > nv || split_base[w] + k > nv) return Status::kCorrupt;
       split_count[w] = uint32_t(k);
       split_base[w + 1] = split_base[w] + uint32_t(k);
@@ -96,9 +127,9 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
       uint32_t sidx;
       if (seen[w] == 0) {
         sidx = kNone;
-      } else if (split_count[w] == 1 || dec.Decode(sm->seam_same)) {
+      } else if (split_count[w] == 1 || dec.Decode(st.sm->seam_same)) {
         sidx = last[w];
-      } else if (seen[w] < split_count[w] && dec.Decode(sm->seam_new)) {
+      } else if (seen[w] < split_count[w] && dec.Decode(st.sm->seam_new)) {
         sidx = kNone;
       } else {
         if (seen[w] < 2) return Status::kCorrupt;
@@ -119,73 +150,80 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
     if (next_vertex != referenced) return Status::kCorrupt;
     for (uint32_t v = referenced; v < nv; ++v) welded_of[v] = nw++;
   }
-  const std::vector<uint32_t>& attr_tris = has_seams ? seam_tris : tris;
+  return Status::kOk;
+}
 
-  // Exact order.
-  std::vector<uint32_t> vertex_perm, triangle_perm;
-  std::vector<uint8_t> rotation;
-  if (sh.keep_order) {
-    vertex_perm.resize(nv);
-    std::vector<uint8_t> used(nv, 0);
-    int64_t prev = -1;
-    for (uint32_t i = 0; i < nv; ++i) {
-      const int64_t v = prev + 1 + UnZigZag(DecodeEG(dec, sm->perm_vertex));
-      if (v < 0 || v >= int64_t(nv) || used[size_t(v)]) return Status::kCorrupt;
-      used[size_t(v)] = 1;
-      vertex_perm[i] = uint32_t(v);
-      prev = v;
-      if ((i & 1023) == 0 && dec.failed()) return Status::kTruncated;
-    }
-    triangle_perm.resize(nt);
-    rotation.resize(nt);
-    std::vector<uint8_t> tused(nt, 0);
-    prev = -1;
-    for (size_t j = 0; j < nt; ++j) {
-      const int64_t t = prev + 1 + UnZigZag(DecodeEG(dec, sm->perm_triangle));
-      if (t < 0 || t >= int64_t(nt) || tused[size_t(t)]) return Status::kCorrupt;
-      tused[size_t(t)] = 1;
-      triangle_perm[j] = uint32_t(t);
-      prev = t;
-      rotation[j] = 0;
-      if (dec.Decode(sm->rotation[0])) rotation[j] = dec.Decode(sm->rotation[1]) ? 2 : 1;
-      if ((j & 1023) == 0 && dec.failed()) return Status::kTruncated;
-    }
+Status DecodeExactOrder(DecodeState& st) {
+  ArithmeticDecoder& dec = st.dec;
+  const uint32_t nv = st.nv;
+  const size_t nt = st.nt;
+  std::vector<uint32_t>& vertex_perm = st.vertex_perm;
+  std::vector<uint32_t>& triangle_perm = st.triangle_perm;
+  std::vector<uint8_t>& rotation = st.rotation;
+  vertex_perm.resize(nv);
+  std::vector<uint8_t> used(nv, 0);
+  int64_t prev = -1;
+  for (uint32_t i = 0; i < nv; ++i) {
+    const int64_t v = prev + 1 + UnZigZag(DecodeEG(dec, st.sm->perm_vertex));
+    if (v < 0 || v >= int64_t(nv) || used[size_t(v)]) return Status::kCorrupt;
+    used[size_t(v)] = 1;
+    vertex_perm[i] = uint32_t(v);
+    prev = v;
+    if ((i & 1023) == 0 && dec.failed()) return Status::kTruncated;
   }
-  if (dec.failed()) return Status::kTruncated;
-  si.connectivity = dec.BytesConsumed() - mark;
-  if (!progress(0.4f)) return Status::kCancelled;
+  triangle_perm.resize(nt);
+  rotation.resize(nt);
+  std::vector<uint8_t> tused(nt, 0);
+  prev = -1;
+  for (size_t j = 0; j < nt; ++j) {
+    const int64_t t = prev + 1 + UnZigZag(DecodeEG(dec, st.sm->perm_triangle));
+    if (t < 0 || t >= int64_t(nt) || tused[size_t(t)]) return Status::kCorrupt;
+    tused[size_t(t)] = 1;
+    triangle_perm[j] = uint32_t(t);
+    prev = t;
+    rotation[j] = 0;
+    if (dec.Decode(st.sm->rotation[0])) rotation[j] = dec.Decode(st.sm->rotation[1]) ? 2 : 1;
+    if ((j & 1023) == 0 && dec.failed()) return Status::kTruncated;
+  }
+  return Status::kOk;
+}
 
-  // Positions.
-  mark = dec.BytesConsumed();
-  std::vector<int32_t> qpos;
+Status DecodePositions(DecodeState& st, DecodedMesh* m) {
+  const PayloadHeader& h = st.h;
   {
     WedgeTable wedges;
     if (h.position.prediction == Prediction::kParallelogram) {
-      wedges.BuildFromOppositeVertices(tris, nw, opposite_vertices, &vertex_triangles);
+      wedges.BuildFromOppositeVertices(st.tris, st.nw, st.opposite_vertices, &st.vertex_triangles);
     }
-    if ((s = DecodeQuantized(&dec, &wedges, nw, 3, h.position.bits, h.position.prediction, order,
-                             &qpos)) != Status::kOk) {
-      return s;
-    }
+    const Status s = DecodeQuantized(&st.dec, &wedges, st.nw, 3, h.position.bits,
+                                     h.position.prediction, st.order, &st.qpos);
+    if (s != Status::kOk) return s;
   }
-  si.positions = dec.BytesConsumed() - mark;
-  if (!progress(0.6f)) return Status::kCancelled;
+  m->positions.resize(size_t(st.nv) * 3);
+  h.position.quant.DequantizeAll(st.qpos.data(), st.has_seams ? st.welded_of.data() : nullptr,
+                                 st.nv, m->positions.data());
+  return Status::kOk;
+}
 
-  DecodedMesh m;
-  m.positions.resize(size_t(nv) * 3);
-  h.position.quant.DequantizeAll(qpos.data(), has_seams ? welded_of.data() : nullptr, nv,
-                                 m.positions.data());
+// Normals, float attributes and int attributes, over the attribute vertices.
+Status DecodeAttributes(DecodeState& st, DecodedMesh* m) {
+  const PayloadHeader& h = st.h;
+  ArithmeticDecoder& dec = st.dec;
+  StreamInfo& si = st.si;
+  const uint32_t nv = st.nv;
+  const std::vector<uint32_t>& attr_tris = st.attr_tris();
+  Status s;
   MeshAdjacency attr_adj;
   if (h.has_normals && h.normal.prediction == Prediction::kSurfaceNormal)
     attr_adj.Build(attr_tris, nv);
   WedgeTable attr_wedges;
   bool attr_wedges_built = false;
   NormalGeometry geo;
-  geo.positions = qpos.data();
+  geo.positions = st.qpos.data();
   for (int k = 0; k < 3; ++k) {
     geo.scale[k] = double(h.position.quant.range[k]) / double(h.position.quant.max_q());
   }
-  geo.position_of = welded_of.data();
+  geo.position_of = st.welded_of.data();
   std::vector<double> attr_geometry;
   auto decode_float = [&](const AttributeDesc& d, std::vector<float>* values) {
     std::vector<int32_t> q;
@@ -193,22 +231,22 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
                           d.prediction == Prediction::kParallelogram;
     if (texcoord && attr_geometry.empty()) attr_geometry = AttributeGeometry(geo, nv);
     if (d.prediction == Prediction::kParallelogram && !attr_wedges_built) {
-      attr_wedges.Build(attr_tris, nv, opposite, has_seams);
+      attr_wedges.Build(attr_tris, nv, st.opposite, st.has_seams);
       attr_wedges_built = true;
     }
-    const Status st = DecodeQuantized(&dec, &attr_wedges, nv, int(d.dimension), d.bits,
-                                      d.prediction, order, &q, texcoord ? &attr_geometry : nullptr);
-    if (st != Status::kOk) return st;
+    const Status r = DecodeQuantized(&dec, &attr_wedges, nv, int(d.dimension), d.bits, d.prediction,
+                                     st.order, &q, texcoord ? &attr_geometry : nullptr);
+    if (r != Status::kOk) return r;
     values->resize(q.size());
     d.quant.DequantizeAll(q.data(), nullptr, nv, values->data());
     return Status::kOk;
   };
-  mark = dec.BytesConsumed();
+  size_t mark = dec.BytesConsumed();
   if (h.has_normals) {
     if (h.normal.prediction == Prediction::kSurfaceNormal) {
-      s = DecodeOctNormals(&dec, attr_adj, geo, nv, h.normal.bits, &m.normals);
+      s = DecodeOctNormals(&dec, attr_adj, geo, nv, h.normal.bits, &m->normals);
     } else {
-      s = decode_float(h.normal, &m.normals);
+      s = decode_float(h.normal, &m->normals);
     }
     if (s != Status::kOk) return s;
   }
@@ -219,7 +257,7 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
     a.semantic = d.semantic;
     a.dimension = d.dimension;
     if ((s = decode_float(d, &a.values)) != Status::kOk) return s;
-    m.float_attributes.push_back(std::move(a));
+    m->float_attributes.push_back(std::move(a));
     si.float_attributes.push_back(dec.BytesConsumed() - mark);
   }
   for (const AttributeDesc& d : h.ints) {
@@ -230,66 +268,102 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
     if ((s = DecodeInts(&dec, nv, int(d.dimension), d.prediction, &a.values)) != Status::kOk) {
       return s;
     }
-    m.int_attributes.push_back(std::move(a));
+    m->int_attributes.push_back(std::move(a));
     si.int_attributes.push_back(dec.BytesConsumed() - mark);
   }
+  return Status::kOk;
+}
+
+Status DecodeGroups(DecodeState& st, DecodedMesh* m) {
+  ArithmeticDecoder& dec = st.dec;
+  if (!st.h.has_groups) return Status::kOk;
+  m->triangle_groups.resize(st.nt);
+  uint32_t prev = 0;
+  for (size_t j = 0; j < st.nt; ++j) {
+    if (!dec.Decode(st.sm->group_same)) {
+      const uint64_t g = DecodeEG(dec, st.sm->group_value);
+      if (g > 0xFFFFFFFFu) return Status::kCorrupt;
+      prev = uint32_t(g);
+    }
+    m->triangle_groups[j] = prev;
+    if ((j & 1023) == 0 && dec.failed()) return Status::kTruncated;
+  }
+  return Status::kOk;
+}
+
+// New vertex i is input vertex vertex_perm[i]; decoded triangle j is input triangle
+// triangle_perm[j] starting at corner rotation[j].
+void ApplyExactOrder(const DecodeState& st, DecodedMesh* mesh) {
+  const uint32_t nv = st.nv;
+  const size_t nt = st.nt;
+  const std::vector<uint32_t>& vertex_perm = st.vertex_perm;
+  DecodedMesh& m = *mesh;
+  DecodedMesh o;
+  auto permute_f = [&](const std::vector<float>& v, uint32_t dim) {
+    std::vector<float> r(v.size());
+    for (uint32_t i = 0; i < nv; ++i) {
+      std::memcpy(&r[size_t(vertex_perm[i]) * dim], &v[size_t(i) * dim], dim * sizeof(float));
+    }
+    return r;
+  };
+  o.positions = permute_f(m.positions, 3);
+  if (!m.normals.empty()) o.normals = permute_f(m.normals, 3);
+  for (auto& a : m.float_attributes) {
+    a.values = permute_f(a.values, a.dimension);
+  }
+  for (auto& a : m.int_attributes) {
+    std::vector<int32_t> r(a.values.size());
+    for (uint32_t i = 0; i < nv; ++i) {
+      std::memcpy(&r[size_t(vertex_perm[i]) * a.dimension], &a.values[size_t(i) * a.dimension],
+                  a.dimension * sizeof(int32_t));
+    }
+    a.values = std::move(r);
+  }
+  o.float_attributes = std::move(m.float_attributes);
+  o.int_attributes = std::move(m.int_attributes);
+  o.indices.resize(3 * nt);
+  if (st.h.has_groups) o.triangle_groups.resize(nt);
+  for (size_t j = 0; j < nt; ++j) {
+    const uint32_t t = st.triangle_perm[j];
+    for (int k = 0; k < 3; ++k) {
+      o.indices[3 * size_t(t) + k] = vertex_perm[m.indices[3 * j + (st.rotation[j] + k) % 3]];
+    }
+    if (st.h.has_groups) o.triangle_groups[t] = m.triangle_groups[j];
+  }
+  m = std::move(o);
+}
+
+Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& options,
+                    DecodedMesh* out, StreamInfo* info) {
+  auto progress = [&](float f) { return !options.progress || options.progress(f); };
+  DecodeState st;
+  Status s = DecodeHeaders(data, size, options, st);
+  if (s != Status::kOk) return s;
+  ArithmeticDecoder& dec = st.dec;
+  StreamInfo& si = st.si;
+  size_t mark = dec.BytesConsumed();
+  if ((s = DecodeTriangles(st)) != Status::kOk) return s;
+  if ((s = DecodeSeams(st)) != Status::kOk) return s;
+  if (st.sh.keep_order && (s = DecodeExactOrder(st)) != Status::kOk) return s;
+  if (dec.failed()) return Status::kTruncated;
+  si.connectivity = dec.BytesConsumed() - mark;
+  if (!progress(0.4f)) return Status::kCancelled;
+
+  DecodedMesh m;
+  mark = dec.BytesConsumed();
+  if ((s = DecodePositions(st, &m)) != Status::kOk) return s;
+  si.positions = dec.BytesConsumed() - mark;
+  if (!progress(0.6f)) return Status::kCancelled;
+
+  if ((s = DecodeAttributes(st, &m)) != Status::kOk) return s;
   if (!progress(0.9f)) return Status::kCancelled;
 
   mark = dec.BytesConsumed();
-  if (h.has_groups) {
-    m.triangle_groups.resize(nt);
-    uint32_t prev = 0;
-    for (size_t j = 0; j < nt; ++j) {
-      if (!dec.Decode(sm->group_same)) {
-        const uint64_t g = DecodeEG(dec, sm->group_value);
-        if (g > 0xFFFFFFFFu) return Status::kCorrupt;
-        prev = uint32_t(g);
-      }
-      m.triangle_groups[j] = prev;
-      if ((j & 1023) == 0 && dec.failed()) return Status::kTruncated;
-    }
-  }
+  if ((s = DecodeGroups(st, &m)) != Status::kOk) return s;
   if (dec.failed()) return Status::kTruncated;
-  AddTailBytes(h, sh.payload_size > mark ? sh.payload_size - mark : 0, &si);
-  m.indices = has_seams ? std::move(seam_tris) : std::move(tris);
-
-  if (sh.keep_order) {
-    // New vertex i is input vertex vertex_perm[i]; decoded triangle j is input triangle
-    // triangle_perm[j] starting at corner rotation[j].
-    DecodedMesh o;
-    auto permute_f = [&](const std::vector<float>& v, uint32_t dim) {
-      std::vector<float> r(v.size());
-      for (uint32_t i = 0; i < nv; ++i) {
-        std::memcpy(&r[size_t(vertex_perm[i]) * dim], &v[size_t(i) * dim], dim * sizeof(float));
-      }
-      return r;
-    };
-    o.positions = permute_f(m.positions, 3);
-    if (!m.normals.empty()) o.normals = permute_f(m.normals, 3);
-    for (auto& a : m.float_attributes) {
-      a.values = permute_f(a.values, a.dimension);
-    }
-    for (auto& a : m.int_attributes) {
-      std::vector<int32_t> r(a.values.size());
-      for (uint32_t i = 0; i < nv; ++i) {
-        std::memcpy(&r[size_t(vertex_perm[i]) * a.dimension], &a.values[size_t(i) * a.dimension],
-                    a.dimension * sizeof(int32_t));
-      }
-      a.values = std::move(r);
-    }
-    o.float_attributes = std::move(m.float_attributes);
-    o.int_attributes = std::move(m.int_attributes);
-    o.indices.resize(3 * nt);
-    if (h.has_groups) o.triangle_groups.resize(nt);
-    for (size_t j = 0; j < nt; ++j) {
-      const uint32_t t = triangle_perm[j];
-      for (int k = 0; k < 3; ++k) {
-        o.indices[3 * size_t(t) + k] = vertex_perm[m.indices[3 * j + (rotation[j] + k) % 3]];
-      }
-      if (h.has_groups) o.triangle_groups[t] = m.triangle_groups[j];
-    }
-    m = std::move(o);
-  }
+  AddTailBytes(st.h, st.sh.payload_size > mark ? st.sh.payload_size - mark : 0, &si);
+  m.indices = st.has_seams ? std::move(st.seam_tris) : std::move(st.tris);
+  if (st.sh.keep_order) ApplyExactOrder(st, &m);
   *out = std::move(m);
   si.total = size;
   if (info) *info = si;
@@ -337,7 +411,8 @@ Status ReadStreamInfo(const uint8_t* data, size_t size, StreamInfo* info) {
   if ((s = DecodePayloadHeader(&dec, &h)) != Status::kOk) return s;
   *info = StreamInfo();
   info->stream_type = type;
-  info->version = sh.version;
+  info->version_major = sh.major;
+  info->version_minor = sh.minor;
   info->keep_order = sh.keep_order;
   info->fast_decode = sh.fast_decode;
   info->num_vertices = size_t(h.num_vertices);
@@ -345,6 +420,12 @@ Status ReadStreamInfo(const uint8_t* data, size_t size, StreamInfo* info) {
   info->total = size;
   info->header = sh.payload_offset + dec.BytesConsumed();
   return Status::kOk;
+}
+
+const char* FormatVersionString() {
+  static_assert(kFormatMajor < 10 && kFormatMinor < 10, "update the version string");
+  static const char kText[] = {char('0' + kFormatMajor), '.', char('0' + kFormatMinor), 0};
+  return kText;
 }
 
 const char* StatusName(Status status) {

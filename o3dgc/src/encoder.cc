@@ -21,6 +21,8 @@ namespace {
 
 constexpr uint32_t kNone = 0xFFFFFFFFu;
 constexpr size_t kMaxCount = size_t(1) << 28;
+constexpr double kAutoFastDecodeCost = 1.025;  // see EncodeParams::auto_fast_decode
+constexpr double kAutoFastDecodeTry = 1.05;    // estimated bits from which the id order loses
 
 Prediction ResolveFloat(Prediction p, Semantic s) {
   if (p != Prediction::kDefault) return p;
@@ -54,11 +56,49 @@ std::vector<float> Reorder(const std::vector<float>& v, uint32_t dim,
   return out;
 }
 
-}  // namespace
+// What the stages of one encode share. The stages follow the payload's parts (payload_header.h);
+// decoder.cc mirrors each.
+struct EncodeState {
+  EncodeState(const MeshView& m, const EncodeParams& p)
+      : mesh(m),
+        params(p),
+        nv(m.num_vertices),
+        nt(m.num_triangles),
+        fast_decode(p.fast_decode),
+        order(CodingOrder::ForStream(p.fast_decode)) {}
+  const MeshView& mesh;
+  const EncodeParams& params;
+  const size_t nv, nt;
+  bool fast_decode;  // the stream's flag (EncodeParams::fast_decode or auto_fast_decode)
+  CodingOrder::Kind order;
+  PayloadHeader h;
+  // The input's values, dense.
+  std::vector<float> positions, normals;
+  std::vector<std::vector<float>> floats;
+  std::vector<std::vector<int32_t>> ints;
+  // Welding: input vertex -> welded vertex (kNone if unreferenced), the triangles over them.
+  std::vector<uint32_t> weld;
+  uint32_t num_welded = 0;
+  std::vector<uint32_t> welded_tris;
+  std::vector<uint8_t> payload;
+  ArithmeticEncoder enc{&payload};
+  StreamInfo si;
+  // Connectivity: the decoder's numbering of welded vertices, the input vertex at each decoded
+  // corner, the rotation of each decoded triangle.
+  ConnectivityEncoding conn;
+  uint32_t nc = 0;
+  std::vector<uint32_t> welded_new, corner_vertex;
+  std::vector<uint8_t> rotation;
+  std::unique_ptr<SideModels> sm{new SideModels};
+  // Seams: new (decoded) vertex id of each input vertex and back, the position vertex of each,
+  // an input vertex for each position vertex.
+  std::vector<uint32_t> orig_new, old_of_orig, welded_of_orig, rep_of_welded;
+  uint32_t nw = 0;
+  std::vector<int32_t> qpos;  // quantized positions per position vertex
+};
 
-Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint8_t>* out,
-              StreamInfo* info) {
-  if (!out) return Status::kInvalidArgument;
+// The checks that need no copy of the input.
+Status Validate(const MeshView& mesh, const EncodeParams& params) {
   const size_t nv = mesh.num_vertices, nt = mesh.num_triangles;
   if (nv > kMaxCount || nt > kMaxCount) return Status::kInvalidArgument;
   if ((nv > 0 && !mesh.positions) || (nt > 0 && !mesh.indices)) return Status::kInvalidArgument;
@@ -68,11 +108,21 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
   for (size_t i = 0; i < 3 * nt; ++i) {
     if (mesh.indices[i] >= nv) return Status::kInvalidArgument;
   }
-  auto progress = [&](float f) { return !params.progress || params.progress(f); };
-  const CodingOrder::Kind order = CodingOrder::ForStream(params.fast_decode);
+  return Status::kOk;
+}
 
+// Attribute descriptors and quantizers; the input's values copied densely (and checked).
+Status Describe(EncodeState& st) {
+  const MeshView& mesh = st.mesh;
+  const EncodeParams& params = st.params;
+  const size_t nv = st.nv;
+  const size_t nt = st.nt;
+  PayloadHeader& h = st.h;
+  std::vector<float>& positions = st.positions;
+  std::vector<float>& normals = st.normals;
+  std::vector<std::vector<float>>& floats = st.floats;
+  std::vector<std::vector<int32_t>>& ints = st.ints;
   // Descriptors.
-  PayloadHeader h;
   h.num_vertices = nv;
   h.num_triangles = nt;
   h.has_normals = mesh.normals != nullptr;
@@ -84,10 +134,8 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
                               ? Prediction::kParallelogram
                               : params.position_prediction;
   h.position.range = params.position_range;
-  std::vector<float> positions =
-      nv ? Gather(mesh.positions, mesh.position_stride, 3, nv) : std::vector<float>();
+  positions = nv ? Gather(mesh.positions, mesh.position_stride, 3, nv) : std::vector<float>();
   if (!AllFinite(positions)) return Status::kInvalidArgument;
-  std::vector<float> normals;
   if (h.has_normals) {
     h.normal.semantic = Semantic::kNormal;
     h.normal.dimension = 3;
@@ -99,7 +147,6 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
     normals = Gather(mesh.normals, mesh.normal_stride, 3, nv);
     if (!AllFinite(normals)) return Status::kInvalidArgument;
   }
-  std::vector<std::vector<float>> floats;
   for (const FloatAttributeView& a : mesh.float_attributes) {
     if (a.dimension < 1 || a.dimension > 4 || a.bits < 1 || a.bits > 30) {
       return Status::kInvalidArgument;
@@ -118,7 +165,6 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
     floats.push_back(nv ? Gather(a.data, a.stride, a.dimension, nv) : std::vector<float>());
     if (!AllFinite(floats.back())) return Status::kInvalidArgument;
   }
-  std::vector<std::vector<int32_t>> ints;
   for (const IntAttributeView& a : mesh.int_attributes) {
     if (a.dimension < 1 || a.dimension > 4 || (nv > 0 && !a.data) ||
         uint8_t(a.semantic) > uint8_t(Semantic::kJointId)) {
@@ -156,9 +202,20 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
     if (!d.quant.Valid()) return Status::kUnsupported;
   }
 
+  return Status::kOk;
+}
+
+void Weld(EncodeState& st) {
+  const MeshView& mesh = st.mesh;
+  const size_t nv = st.nv;
+  const size_t nt = st.nt;
+  std::vector<float>& positions = st.positions;
+  std::vector<uint32_t>& weld = st.weld;
+  uint32_t& num_welded = st.num_welded;
+  std::vector<uint32_t>& welded_tris = st.welded_tris;
   // Weld referenced vertices with bitwise equal positions.
-  std::vector<uint32_t> weld(nv, kNone);
-  uint32_t num_welded = 0;
+  weld.assign(nv, kNone);
+  num_welded = 0;
   {
     std::vector<uint8_t> referenced(nv, 0);
     for (size_t i = 0; i < 3 * nt; ++i) referenced[mesh.indices[i]] = 1;
@@ -169,31 +226,36 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
       weld[v] = first == v ? num_welded++ : weld[first];
     }
   }
-  std::vector<uint32_t> welded_tris(3 * nt);
+  welded_tris.resize(3 * nt);
   for (size_t i = 0; i < 3 * nt; ++i) welded_tris[i] = weld[mesh.indices[i]];
+}
 
-  std::vector<uint8_t> payload;
-  ArithmeticEncoder enc(&payload);
-  StreamInfo si;
-  EncodePayloadHeader(&enc, h);
-  si.header = enc.BytesSoFar();
-
+void EncodeTriangles(EncodeState& st) {
+  const MeshView& mesh = st.mesh;
+  const size_t nt = st.nt;
+  PayloadHeader& h = st.h;
+  std::vector<uint32_t>& weld = st.weld;
+  uint32_t& num_welded = st.num_welded;
+  std::vector<uint32_t>& welded_tris = st.welded_tris;
+  ArithmeticEncoder& enc = st.enc;
+  ConnectivityEncoding& conn = st.conn;
+  uint32_t& nc = st.nc;
+  std::vector<uint32_t>& welded_new = st.welded_new;
+  std::vector<uint32_t>& corner_vertex = st.corner_vertex;
+  std::vector<uint8_t>& rotation = st.rotation;
   // Connectivity over welded vertices.
-  ConnectivityEncoding conn;
   // The neighbour triangles themselves are needed only by parallelogram-predicted attributes
   // besides positions (across seams; positions use the opposite vertices).
   bool attribute_wedges = h.has_normals && h.normal.prediction == Prediction::kParallelogram;
   for (const AttributeDesc& d : h.floats)
     attribute_wedges |= d.prediction == Prediction::kParallelogram;
   EncodeConnectivity(welded_tris, num_welded, &enc, &conn, attribute_wedges);
-  const uint32_t nc = uint32_t(conn.old_of_new.size());
-  std::vector<uint32_t> welded_new(num_welded, kNone);
+  nc = uint32_t(conn.old_of_new.size());
+  welded_new.assign(num_welded, kNone);
   for (uint32_t i = 0; i < nc; ++i) welded_new[conn.old_of_new[i]] = i;
-  if (!progress(0.2f)) return Status::kCancelled;
-
   // Original corner of every decoded corner, and the rotation of every decoded triangle.
-  std::vector<uint32_t> corner_vertex(3 * nt);
-  std::vector<uint8_t> rotation(nt, 0);
+  corner_vertex.resize(3 * nt);
+  rotation.assign(nt, 0);
   for (size_t j = 0; j < nt; ++j) {
     const uint32_t s = conn.source[j];
     const uint32_t* o = &mesh.indices[3 * size_t(s)];
@@ -210,9 +272,23 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
       if (m == 0) rotation[j] = uint8_t(k);
     }
   }
+}
 
+void EncodeSeams(EncodeState& st) {
+  const size_t nv = st.nv;
+  const size_t nt = st.nt;
+  std::vector<uint32_t>& weld = st.weld;
+  ArithmeticEncoder& enc = st.enc;
+  uint32_t& nc = st.nc;
+  std::vector<uint32_t>& welded_new = st.welded_new;
+  std::vector<uint32_t>& corner_vertex = st.corner_vertex;
+  SideModels* const sm = st.sm.get();
+  std::vector<uint32_t>& orig_new = st.orig_new;
+  std::vector<uint32_t>& old_of_orig = st.old_of_orig;
+  std::vector<uint32_t>& welded_of_orig = st.welded_of_orig;
+  std::vector<uint32_t>& rep_of_welded = st.rep_of_welded;
+  uint32_t& nw = st.nw;
   // Seams: attribute vertices per welded vertex, and which one each corner uses.
-  std::unique_ptr<SideModels> sm(new SideModels);
   std::vector<uint32_t> split_count(nc, 0);
   for (size_t v = 0; v < nv; ++v) {
     if (weld[v] != kNone) ++split_count[welded_new[weld[v]]];
@@ -223,9 +299,9 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
   if (has_seams) {
     for (uint32_t w = 0; w < nc; ++w) EncodeEG(enc, sm->seam_count, split_count[w] - 1);
   }
-  std::vector<uint32_t> orig_new(nv, kNone), split_index(nv, kNone);
+  orig_new.assign(nv, kNone);
+  std::vector<uint32_t> split_index(nv, kNone);
   std::vector<uint32_t> seen(nc, 0), last(nc, 0);
-  std::vector<uint32_t> old_of_orig;  // original vertex of each new vertex id
   old_of_orig.reserve(nv);
   for (size_t i = 0; i < 3 * nt; ++i) {
     const uint32_t o = corner_vertex[i];
@@ -246,16 +322,16 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
     last[w] = split_index[o];
   }
   // Unreferenced vertices follow, each its own welded vertex.
-  std::vector<uint32_t> welded_of_orig(nv);  // new vertex id -> welded new id
+  welded_of_orig.resize(nv);
   for (uint32_t i = 0; i < old_of_orig.size(); ++i) {
     welded_of_orig[i] = welded_new[weld[old_of_orig[i]]];
   }
-  std::vector<uint32_t> rep_of_welded(nc, kNone);
+  rep_of_welded.assign(nc, kNone);
   for (uint32_t i = 0; i < old_of_orig.size(); ++i) {
     if (rep_of_welded[welded_of_orig[i]] == kNone)
       rep_of_welded[welded_of_orig[i]] = old_of_orig[i];
   }
-  uint32_t nw = nc;
+  nw = nc;
   for (size_t v = 0; v < nv; ++v) {
     if (weld[v] != kNone) continue;
     orig_new[v] = uint32_t(old_of_orig.size());
@@ -263,28 +339,44 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
     old_of_orig.push_back(uint32_t(v));
     rep_of_welded.push_back(uint32_t(v));
   }
+}
 
-  // Exact order.
-  if (params.keep_order) {
-    int64_t prev = -1;
-    for (uint32_t i = 0; i < nv; ++i) {
-      EncodeEG(enc, sm->perm_vertex, ZigZag(int64_t(old_of_orig[i]) - (prev + 1)));
-      prev = old_of_orig[i];
-    }
-    prev = -1;
-    for (size_t j = 0; j < nt; ++j) {
-      EncodeEG(enc, sm->perm_triangle, ZigZag(int64_t(conn.source[j]) - (prev + 1)));
-      prev = conn.source[j];
-      enc.Encode(rotation[j] != 0, sm->rotation[0]);
-      if (rotation[j] != 0) enc.Encode(rotation[j] == 2, sm->rotation[1]);
-    }
+// The input order (keep_order): vertex and triangle permutations, corner rotations.
+void EncodeExactOrder(EncodeState& st) {
+  const size_t nv = st.nv;
+  const size_t nt = st.nt;
+  ArithmeticEncoder& enc = st.enc;
+  ConnectivityEncoding& conn = st.conn;
+  std::vector<uint8_t>& rotation = st.rotation;
+  SideModels* const sm = st.sm.get();
+  std::vector<uint32_t>& old_of_orig = st.old_of_orig;
+  int64_t prev = -1;
+  for (uint32_t i = 0; i < nv; ++i) {
+    EncodeEG(enc, sm->perm_vertex, ZigZag(int64_t(old_of_orig[i]) - (prev + 1)));
+    prev = old_of_orig[i];
   }
-  si.connectivity = enc.BytesSoFar() - si.header;
-  if (!progress(0.4f)) return Status::kCancelled;
+  prev = -1;
+  for (size_t j = 0; j < nt; ++j) {
+    EncodeEG(enc, sm->perm_triangle, ZigZag(int64_t(conn.source[j]) - (prev + 1)));
+    prev = conn.source[j];
+    enc.Encode(rotation[j] != 0, sm->rotation[0]);
+    if (rotation[j] != 0) enc.Encode(rotation[j] == 2, sm->rotation[1]);
+  }
+}
 
-  // Positions, per welded vertex.
-  size_t mark = enc.BytesSoFar();
-  std::vector<int32_t> qpos(size_t(nw) * 3);
+// Positions, per position (welded) vertex.
+void EncodePositions(EncodeState& st) {
+  const EncodeParams& params = st.params;
+  bool& fast_decode = st.fast_decode;
+  CodingOrder::Kind& order = st.order;
+  PayloadHeader& h = st.h;
+  std::vector<float>& positions = st.positions;
+  ArithmeticEncoder& enc = st.enc;
+  ConnectivityEncoding& conn = st.conn;
+  std::vector<uint32_t>& rep_of_welded = st.rep_of_welded;
+  uint32_t& nw = st.nw;
+  std::vector<int32_t>& qpos = st.qpos;
+  qpos.resize(size_t(nw) * 3);
   for (uint32_t w = 0; w < nw; ++w) {
     for (uint32_t k = 0; k < 3; ++k) {
       qpos[3 * size_t(w) + k] =
@@ -297,12 +389,49 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
       wedges.BuildFromOppositeVertices(conn.triangles, nw, conn.opposite_vertices,
                                        &conn.vertex_triangles);
     }
+    if (!fast_decode && params.auto_fast_decode &&
+        h.position.prediction == Prediction::kParallelogram && RawLowBits(nw)) {
+      // The bytes of the positions alone in each order (see EncodeParams::auto_fast_decode). The
+      // estimates (a pass without coding) rule out the meshes where the id order is clearly
+      // larger (CAD parts: 1.7-2.5x, igea 1.10x); they are too coarse to decide the close ones
+      // (bunny: +0.7 % estimated, +4 % coded; a noisy scan: +0.6 %, +2.4 %).
+      auto bits_in = [&](CodingOrder::Kind kind) {
+        return EstimatePositionBits(wedges, qpos, h.position.bits, kind);
+      };
+      auto size_in = [&](CodingOrder::Kind kind) {
+        std::vector<uint8_t> scratch;
+        ArithmeticEncoder e(&scratch);
+        EncodeQuantized(&e, &wedges, qpos, 3, h.position.bits, h.position.prediction, kind);
+        e.Finish();
+        return double(scratch.size());
+      };
+      if (bits_in(CodingOrder::kVertexId) <= kAutoFastDecodeTry * bits_in(CodingOrder::kGreedy) &&
+          size_in(CodingOrder::kVertexId) <= kAutoFastDecodeCost * size_in(CodingOrder::kGreedy)) {
+        fast_decode = true;
+        order = CodingOrder::kVertexId;
+      }
+    }
     EncodeQuantized(&enc, &wedges, qpos, 3, h.position.bits, h.position.prediction, order);
   }
-  si.positions = enc.BytesSoFar() - mark;
-  if (!progress(0.6f)) return Status::kCancelled;
+}
 
-  // Per-vertex attributes over the attribute-vertex mesh.
+// Normals, float and int attributes, over the attribute vertices.
+void EncodeAttributes(EncodeState& st) {
+  const size_t nv = st.nv;
+  const size_t nt = st.nt;
+  CodingOrder::Kind& order = st.order;
+  PayloadHeader& h = st.h;
+  std::vector<float>& normals = st.normals;
+  std::vector<std::vector<float>>& floats = st.floats;
+  std::vector<std::vector<int32_t>>& ints = st.ints;
+  ArithmeticEncoder& enc = st.enc;
+  StreamInfo& si = st.si;
+  ConnectivityEncoding& conn = st.conn;
+  std::vector<uint32_t>& corner_vertex = st.corner_vertex;
+  std::vector<uint32_t>& orig_new = st.orig_new;
+  std::vector<uint32_t>& old_of_orig = st.old_of_orig;
+  std::vector<uint32_t>& welded_of_orig = st.welded_of_orig;
+  std::vector<int32_t>& qpos = st.qpos;
   std::vector<uint32_t> attr_tris;  // only attributes beside positions need it
   if (h.has_normals || !h.floats.empty()) {
     attr_tris.resize(3 * nt);
@@ -335,7 +464,7 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
     EncodeQuantized(&enc, &attr_wedges, q, int(d.dimension), d.bits, d.prediction, order,
                     texcoord ? &attr_geometry : nullptr);
   };
-  mark = enc.BytesSoFar();
+  size_t mark = enc.BytesSoFar();
   if (h.has_normals) {
     if (h.normal.prediction == Prediction::kSurfaceNormal) {
       EncodeOctNormals(&enc, attr_adj, geo, Reorder(normals, 3, old_of_orig), h.normal.bits);
@@ -359,10 +488,15 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
     EncodeInts(&enc, v, int(dim), h.ints[i].prediction);
     si.int_attributes.push_back(enc.BytesSoFar() - mark);
   }
-  if (!progress(0.9f)) return Status::kCancelled;
+}
 
-  // Triangle groups.
-  mark = enc.BytesSoFar();
+void EncodeGroups(EncodeState& st) {
+  const MeshView& mesh = st.mesh;
+  const size_t nt = st.nt;
+  PayloadHeader& h = st.h;
+  ArithmeticEncoder& enc = st.enc;
+  ConnectivityEncoding& conn = st.conn;
+  SideModels* const sm = st.sm.get();
   if (h.has_groups) {
     uint32_t prev = 0;
     for (size_t j = 0; j < nt; ++j) {
@@ -372,24 +506,57 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
       prev = g;
     }
   }
+}
+
+}  // namespace
+
+Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint8_t>* out,
+              StreamInfo* info) {
+  if (!out) return Status::kInvalidArgument;
+  Status s = Validate(mesh, params);
+  if (s != Status::kOk) return s;
+  auto progress = [&](float f) { return !params.progress || params.progress(f); };
+  std::unique_ptr<EncodeState> state(new EncodeState(mesh, params));
+  EncodeState& st = *state;
+  if ((s = Describe(st)) != Status::kOk) return s;
+  Weld(st);
+  ArithmeticEncoder& enc = st.enc;
+  StreamInfo& si = st.si;
+  EncodePayloadHeader(&enc, st.h);
+  si.header = enc.BytesSoFar();
+  EncodeTriangles(st);
+  if (!progress(0.2f)) return Status::kCancelled;
+  EncodeSeams(st);
+  if (params.keep_order) EncodeExactOrder(st);
+  si.connectivity = enc.BytesSoFar() - si.header;
+  if (!progress(0.4f)) return Status::kCancelled;
+  size_t mark = enc.BytesSoFar();
+  EncodePositions(st);
+  si.positions = enc.BytesSoFar() - mark;
+  if (!progress(0.6f)) return Status::kCancelled;
+  EncodeAttributes(st);
+  if (!progress(0.9f)) return Status::kCancelled;
+  mark = enc.BytesSoFar();
+  EncodeGroups(st);
   // Pad so that the decoder's size check holds (only pathological meshes need it).
+  const PayloadHeader& h = st.h;
   const uint64_t budget = h.Budget();
   const uint64_t min_payload = (budget + kElementsPerByte - 1) / kElementsPerByte;
   enc.Finish(min_payload > kBudgetSlackBytes ? size_t(min_payload - kBudgetSlackBytes) : 0);
-  AddTailBytes(h, payload.size() > mark ? payload.size() - mark : 0, &si);
-
+  AddTailBytes(h, st.payload.size() > mark ? st.payload.size() - mark : 0, &si);
   out->clear();
-  WriteHeader(params.keep_order, params.fast_decode, payload.size(), out);
+  WriteHeader(params.keep_order, st.fast_decode, st.payload.size(), out);
   const size_t byte_header = out->size();
-  out->insert(out->end(), payload.begin(), payload.end());
+  out->insert(out->end(), st.payload.begin(), st.payload.end());
   FinalizeCrc(out);
   si.header += byte_header;
   si.stream_type = params.stream_type;
-  si.version = kStreamVersion;
+  si.version_major = kFormatMajor;
+  si.version_minor = kFormatMinor;
   si.keep_order = params.keep_order;
-  si.fast_decode = params.fast_decode;
-  si.num_vertices = nv;
-  si.num_triangles = nt;
+  si.fast_decode = st.fast_decode;
+  si.num_vertices = st.nv;
+  si.num_triangles = st.nt;
   if (params.stream_type == StreamType::kAscii) *out = PackAscii(*out);
   si.total = out->size();
   if (info) *info = si;

@@ -34,7 +34,8 @@ void FillInfo(const LegacyHeader& h, size_t size, StreamInfo* info) {
   info->format = StreamFormat::kOpen3dgc2013;
   info->stream_type =
       h.encoding == LegacyEncoding::kAscii ? StreamType::kAscii : StreamType::kBinary;
-  info->version = 0;
+  info->version_major = 0;
+  info->version_minor = 0;
   info->num_vertices = size_t(h.coord.count);
   info->num_triangles = size_t(h.num_triangles);
   info->total = size;

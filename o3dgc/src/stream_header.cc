@@ -50,7 +50,8 @@ uint32_t Crc32(const uint8_t* data, size_t size, uint32_t crc) {
 void WriteHeader(bool keep_order, bool fast_decode, size_t payload_size,
                  std::vector<uint8_t>* out) {
   out->insert(out->end(), kMagic, kMagic + 4);
-  out->push_back(uint8_t(kStreamVersion));
+  out->push_back(uint8_t(kFormatMajor));
+  out->push_back(uint8_t(kFormatMinor));
   out->push_back(uint8_t((keep_order ? 1 : 0) | (fast_decode ? 2 : 0)));
   for (size_t i = 0; i < kCrcSize; ++i) out->push_back(0);
   uint64_t v = payload_size;
@@ -62,22 +63,28 @@ void WriteHeader(bool keep_order, bool fast_decode, size_t payload_size,
   } while (v);
 }
 
+uint32_t StreamCrc(const uint8_t* data, size_t size) {
+  const size_t after = kCrcOffset + kCrcSize;
+  return Crc32(data + after, size - after, Crc32(data, kCrcOffset));
+}
+
 void FinalizeCrc(std::vector<uint8_t>* stream) {
-  const size_t start = kCrcOffset + kCrcSize;
-  const uint32_t crc = Crc32(stream->data() + start, stream->size() - start);
+  const uint32_t crc = StreamCrc(stream->data(), stream->size());
   for (size_t i = 0; i < 4; ++i) (*stream)[kCrcOffset + i] = uint8_t(crc >> (8 * i));
 }
 
 Status ParseHeader(const uint8_t* data, size_t size, StreamHeader* header) {
   if (size < 4 || std::memcmp(data, kMagic, 4) != 0) return Status::kBadMagic;
   if (size < kCrcOffset + kCrcSize + 1) return Status::kTruncated;
-  header->version = data[4];
-  if (header->version != kStreamVersion) return Status::kBadVersion;
-  if (data[5] & ~3u) return Status::kCorrupt;
-  header->keep_order = (data[5] & 1) != 0;
-  header->fast_decode = (data[5] & 2) != 0;
-  header->crc = uint32_t(data[6]) | uint32_t(data[7]) << 8 | uint32_t(data[8]) << 16 |
-                uint32_t(data[9]) << 24;
+  header->major = data[kVersionOffset];
+  header->minor = data[kVersionOffset + 1];
+  if (header->major != kFormatMajor || header->minor > kFormatMinor) return Status::kBadVersion;
+  const uint8_t flags = data[kFlagsOffset];
+  if (flags & ~3u) return Status::kCorrupt;
+  header->keep_order = (flags & 1) != 0;
+  header->fast_decode = (flags & 2) != 0;
+  const uint8_t* c = data + kCrcOffset;
+  header->crc = uint32_t(c[0]) | uint32_t(c[1]) << 8 | uint32_t(c[2]) << 16 | uint32_t(c[3]) << 24;
   uint64_t v = 0;
   size_t pos = kCrcOffset + kCrcSize;
   for (int i = 0;; ++i) {

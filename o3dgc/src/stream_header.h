@@ -1,10 +1,12 @@
 // The byte header of an o3dgc stream and its checksum.
 //
 // Binary stream layout:
-//   bytes 0..3  magic "O3DG"
-//   byte  4     format version (kStreamVersion)
-//   byte  5     flags (bit 0: keep_order; bit 1: fast_decode; other bits must be 0)
-//   bytes 6..9  CRC32 (IEEE, little endian) of every byte after this field
+//   bytes 0..3   magic "O3DG"
+//   byte  4      format major version (kFormatMajor)
+//   byte  5      format minor version (kFormatMinor)
+//   byte  6      flags (bit 0: keep_order; bit 1: fast_decode; other bits must be 0 in 1.0)
+//   bytes 7..10  CRC32 (IEEE, little endian) of every other byte of the stream (bytes 0..6, then
+//                every byte after this field)
 //   varint      payload length in bytes (LEB128, at most 5 bytes)
 //   payload     one arithmetic-coded bit stream (see encoder.cc for its content)
 #ifndef O3DGC_SRC_STREAM_HEADER_H_
@@ -19,11 +21,14 @@
 namespace o3dgc {
 
 constexpr uint8_t kMagic[4] = {'O', '3', 'D', 'G'};
-constexpr size_t kCrcOffset = 6;
+constexpr size_t kVersionOffset = 4;
+constexpr size_t kFlagsOffset = 6;
+constexpr size_t kCrcOffset = 7;
 constexpr size_t kCrcSize = 4;
 
 struct StreamHeader {
-  uint32_t version = kStreamVersion;
+  uint32_t major = kFormatMajor;
+  uint32_t minor = kFormatMinor;
   bool keep_order = false;
   bool fast_decode = false;  // parallelogram-predicted values coded in vertex id order
   size_t payload_offset = 0;
@@ -33,13 +38,18 @@ struct StreamHeader {
 
 uint32_t Crc32(const uint8_t* data, size_t size, uint32_t crc = 0);
 
+// The CRC a binary stream of `size` bytes (at least kCrcOffset + kCrcSize) carries: over every
+// byte but the CRC field, so that the version and flags are covered too.
+uint32_t StreamCrc(const uint8_t* data, size_t size);
+
 // Appends the header for a payload of `payload_size` bytes; the CRC field is left zero and filled
 // by FinalizeCrc once the payload is appended.
 void WriteHeader(bool keep_order, bool fast_decode, size_t payload_size, std::vector<uint8_t>* out);
 void FinalizeCrc(std::vector<uint8_t>* stream);
 
 // Parses and checks the header of a binary stream of `size` bytes; the payload must end exactly at
-// the end of the stream.
+// the end of the stream. A stream of another major version, or of a minor version above
+// kFormatMinor, is kBadVersion.
 Status ParseHeader(const uint8_t* data, size_t size, StreamHeader* header);
 
 }  // namespace o3dgc

@@ -5,7 +5,7 @@ import numpy as np
 import numpy.typing as npt
 
 VHACD_VERSION: int
-STREAM_VERSION: int
+STREAM_VERSION: str
 
 class Cancelled(RuntimeError): ...
 

@@ -165,7 +165,7 @@ py::dict InfoDict(const o3dgc::StreamInfo& i) {
   py::dict d;
   d["format"] = i.format == o3dgc::StreamFormat::kNative ? "o3dgc" : "open3dgc-2013";
   d["ascii"] = i.stream_type == o3dgc::StreamType::kAscii;
-  d["version"] = i.version;
+  d["version"] = std::to_string(i.version_major) + "." + std::to_string(i.version_minor);
   d["keep_order"] = i.keep_order;
   d["fast_decode"] = i.fast_decode;
   d["vertices"] = i.num_vertices;

@@ -9,7 +9,7 @@ PYBIND11_MODULE(_hullpack, m) {
       "Convex decomposition (V-HACD 2.0, HACD), mesh simplification (QEM), mesh compression "
       "(o3dgc) and packaging for simulators and the web.";
   m.attr("VHACD_VERSION") = VHACD_VERSION;
-  m.attr("STREAM_VERSION") = o3dgc::kStreamVersion;
+  m.attr("STREAM_VERSION") = o3dgc::FormatVersionString();
   hullpack::python::RegisterExceptions(m);
   hullpack::python::BindDecompose(m);
   hullpack::python::BindSimplify(m);

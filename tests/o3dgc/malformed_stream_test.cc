@@ -222,9 +222,15 @@ TEST(Malformed, HeaderChecks) {
   c = s;
   c[4] = 99;
   EXPECT_EQ(Decode(c.data(), c.size(), DecodeOptions(), &m), Status::kBadVersion);
+  c = s;
+  c[4] = 7;  // the pre-1.0 development format
+  EXPECT_EQ(Decode(c.data(), c.size(), DecodeOptions(), &m), Status::kBadVersion);
+  c = s;
+  c[5] = kFormatMinor + 1;  // a later minor version
+  EXPECT_EQ(Decode(c.data(), c.size(), DecodeOptions(), &m), Status::kBadVersion);
   for (const uint8_t flag : {4, 8, 128}) {  // bits 0 (keep_order) and 1 (fast_decode) are defined
     c = s;
-    c[5] |= flag;
+    c[6] |= flag;
     EXPECT_EQ(Decode(c.data(), c.size(), DecodeOptions(), &m), Status::kCorrupt) << int(flag);
   }
   c = s;

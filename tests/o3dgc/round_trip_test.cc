@@ -207,14 +207,24 @@ TEST(RoundTrip, FastDecodeGivesTheSameMeshFromAnotherStream) {
         EncodeParams p;
         p.keep_order = keep;
         p.normal_prediction = np;
-        std::vector<uint8_t> slow, fast;
+        p.auto_fast_decode = false;
+        std::vector<uint8_t> slow, fast, automatic;
         StreamInfo si;
         ASSERT_EQ(Encode(v, p, &slow), Status::kOk);
+        EXPECT_EQ(slow[6], keep ? 1 : 0);
+        // The automatic choice writes one of the two streams, and says which in its flags.
+        p.auto_fast_decode = true;
+        StreamInfo ai;
+        ASSERT_EQ(Encode(v, p, &automatic, &ai), Status::kOk);
+        EXPECT_EQ(automatic[6] == (keep ? 3 : 2), ai.fast_decode);
+        p.auto_fast_decode = false;
         p.fast_decode = true;
         ASSERT_EQ(Encode(v, p, &fast, &si), Status::kOk);
         EXPECT_TRUE(si.fast_decode);
-        EXPECT_EQ(fast[5], keep ? 3 : 2);  // the flags byte
-        if (t.nv() > 100) EXPECT_NE(slow, fast);
+        EXPECT_EQ(fast[6], keep ? 3 : 2);  // the flags byte
+        if (t.nv() > 100) {
+          EXPECT_NE(slow, fast);
+        }
         const DecodedMesh a = DecodeOk(slow);
         DecodedMesh b;
         StreamInfo di;
@@ -233,6 +243,7 @@ TEST(RoundTrip, FastDecodeGivesTheSameMeshFromAnotherStream) {
           EXPECT_EQ(a.int_attributes[i].values, b.int_attributes[i].values);
         }
         EXPECT_EQ(a.triangle_groups, b.triangle_groups);
+        EXPECT_TRUE(automatic == (ai.fast_decode ? fast : slow));
       }
     }
   }
@@ -413,6 +424,10 @@ TEST(RoundTrip, DeterministicAndStreamInfoAddsUp) {
   ASSERT_EQ(ReadStreamInfo(a.data(), a.size(), &read), Status::kOk);
   EXPECT_EQ(read.num_vertices, t.nv());
   EXPECT_EQ(read.num_triangles, t.nt());
+  EXPECT_EQ(read.version_major, kFormatMajor);
+  EXPECT_EQ(read.version_minor, kFormatMinor);
+  EXPECT_EQ(info.version_major, 1u);
+  EXPECT_STREQ(FormatVersionString(), "1.0");
 }
 
 TEST(RoundTrip, RejectsInvalidInput) {

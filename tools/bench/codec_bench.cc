@@ -175,7 +175,7 @@ int main(int argc, char** argv) {
       "The o3dgc coder and Draco (-cl 7 and -cl 10) side by side on every .obj of FOLDER, at the\n"
       "same quantization: bytes, encode and decode time (median of interleaved repeats), largest\n"
       "position error, gzip'd ASCII stream bytes. Prints a table; --csv writes it.");
-  cli.VersionDetail("o3dgc stream version " + std::to_string(o3dgc::kStreamVersion));
+  cli.VersionDetail(std::string("o3dgc stream format ") + o3dgc::FormatVersionString());
   cli.Positional("FOLDER", &folders, 1, 1);
   cli.Int("--repeats", "N", 1, 1000, &s.repeats, "interleaved runs per codec, median time (5)");
   cli.String("--csv", "FILE", &s.csv, "also write the table as CSV");

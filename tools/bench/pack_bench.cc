@@ -47,7 +47,7 @@ int main(int argc, char** argv) {
       "`hullpack pack` against Draco at equal error on every .obj/.glb of FOLDER: packed geometry\n"
       "bytes (meshes + hulls) against Draco -cl 7 without hulls, the error reached, a round trip\n"
       "check and seconds per stage.");
-  cli.VersionDetail("o3dgc stream version " + std::to_string(o3dgc::kStreamVersion));
+  cli.VersionDetail(std::string("o3dgc stream format ") + o3dgc::FormatVersionString());
   cli.Positional("FOLDER", &folders, 1, 1);
   cli.Double("--max-error", "F", 1e-9, 0.5, &options.max_error,
              "largest position error, fraction of each mesh's bbox diagonal (0.0005)");

@@ -58,9 +58,10 @@ Status CheckOutputPath(const std::string& output, const std::vector<std::string>
 }
 
 std::string FormatVersionText() {
-  return "writes o3dgc streams version " + std::to_string(o3dgc::kStreamVersion) +
-         " in glTF 2.0 binary (GLB version 2); reads o3dgc streams version " +
-         std::to_string(o3dgc::kStreamVersion) + " and original Open3DGC (2013) streams";
+  return std::string("writes o3dgc stream format ") + o3dgc::FormatVersionString() +
+         " in glTF 2.0 binary (GLB version 2); reads o3dgc stream formats " +
+         std::to_string(o3dgc::kFormatMajor) + ".0 to " + o3dgc::FormatVersionString() +
+         " and original Open3DGC (2013) streams";
 }
 
 std::string FileStem(const std::string& path) {

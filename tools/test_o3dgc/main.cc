@@ -288,9 +288,9 @@ int main(int argc, char** argv) {
       "Compresses a mesh file (.obj .off .wrl .ply .stl .glb .gltf .fbx .dae) to an o3dgc stream\n"
       "INPUT.s3d, or decompresses a stream (this project's or the original Open3DGC tool's) to\n"
       "INPUT_dec.obj, both next to INPUT. The single-dash spellings are the original tool's.");
-  cli.VersionDetail("writes o3dgc streams version " + std::to_string(o3dgc::kStreamVersion) +
-                    "; reads o3dgc streams version " + std::to_string(o3dgc::kStreamVersion) +
-                    " and original Open3DGC (2013) streams");
+  cli.VersionDetail(std::string("writes o3dgc stream format ") + o3dgc::FormatVersionString() +
+                    "; reads formats " + std::to_string(o3dgc::kFormatMajor) + ".0 to " +
+                    o3dgc::FormatVersionString() + " and original Open3DGC (2013) streams");
   cli.Flag("-c, --compress", &compress, "compress INPUT to INPUT.s3d");
   cli.Flag("-d, --decompress", &decompress, "decompress the stream INPUT to INPUT_dec.obj");
   cli.String("-i, --input", "INPUT", &input, "the file to read (or give it as the operand)");

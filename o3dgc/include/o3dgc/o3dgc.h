@@ -18,13 +18,20 @@
 //    multi-component meshes and isolated vertices all code losslessly;
 //  - seams: per position vertex its number of attribute vertices and, per corner, which one;
 //  - attributes are quantized, predicted (parallelogram mode: multi-parallelogram in
-//    max-prediction-degree order; texture coordinates (Semantic::kTexCoord, 2 components) are
-//    predicted from the 3D shape instead; surface-normal mode: octahedral coordinates against the
-//    normal of the decoded surface) and the residuals are coded with context-adaptive binary
-//    arithmetic coding (from 4096 vertices on, a residual's sign and low bits are read raw: 13-20 %
-//    faster decoding for 0-3 % more bytes on large meshes);
-//  - stream: "O3DG", version, flags, CRC32, payload length, one arithmetic-coded payload. The
-//    ASCII form ("O3DA") is the same stream repacked 7 bits per byte.
+//    max-prediction-degree order, where a vertex may select a single parallelogram when the
+//    combination spans a crease, as on CAD parts; texture coordinates (Semantic::kTexCoord, 2
+//    components) are predicted from the 3D shape instead; surface-normal mode: octahedral
+//    coordinates against the normal of the decoded surface) and the residuals are coded with
+//    context-adaptive binary arithmetic coding (from 4096 vertices on, a residual's sign and low
+//    bits are read raw: 13-20 % faster decoding for 0-3 % more bytes on large meshes);
+//  - stream: "O3DG", format version (major, minor), flags, CRC32, payload length, one
+//    arithmetic-coded payload. The ASCII form ("O3DA") is the same stream repacked 7 bits per
+//    byte. The format is specified in docs/o3dgc-stream-format.md.
+//
+// Format versions: Encode writes version kFormatMajor.kFormatMinor. Decode reads every stream of
+// major version 1 up to its own minor version (a later feature is a new minor version or a new
+// flag, never a change of what an existing version means); a stream of another major version, or
+// of a later minor version than the decoder's, is kBadVersion.
 //
 // Trust model: Encode trusts nothing it cannot check cheaply but expects the pointers of a
 // MeshView to be valid for the sizes stated below (it is not hardened against hostile callers).
@@ -44,15 +51,19 @@
 
 namespace o3dgc {
 
-// Format version written by Encode and the only one Decode accepts.
-constexpr uint32_t kStreamVersion = 7;
+// Stream format version written by Encode (see "Format versions" above).
+constexpr uint32_t kFormatMajor = 1;
+constexpr uint32_t kFormatMinor = 0;
+
+// "1.0": the stream format version this library writes, for --version output.
+const char* FormatVersionString();
 
 enum class Status : uint8_t {
   kOk = 0,
   kInvalidArgument,  // Encode: bad MeshView/EncodeParams (null pointer, index out of range, NaN...)
   kUnsupported,      // a feature/option this version cannot encode or decode
   kBadMagic,         // Decode: not an o3dgc stream
-  kBadVersion,       // Decode: stream of another format version
+  kBadVersion,       // Decode: stream of another major version or of a later minor version
   kTruncated,        // Decode: the stream ends before its declared content
   kCorrupt,          // Decode: inconsistent content (bad count, value out of range, ...)
   kChecksumMismatch,  // Decode: CRC32 of the stream does not match
@@ -152,6 +163,12 @@ struct EncodeParams {
   // and writes the vertices in memory order instead of jumping over the mesh
   // (docs/decode-speed.md has the figures).
   bool fast_decode = false;
+  // With fast_decode false: on meshes of 4096 position vertices or more the encoder codes the
+  // positions in both orders and takes the vertex id order (the stream's fast_decode flag) when
+  // it costs at most 2.5 % more bytes for the positions. Noisy scans lose 0.3-2.4 % and decode in
+  // about 0.7x the time; CAD parts and most smooth meshes keep the default order. Encoding the
+  // positions three times takes longer.
+  bool auto_fast_decode = true;
   int position_bits = 14;  // 1..30
   Prediction position_prediction = Prediction::kParallelogram;
   RangeMode position_range = RangeMode::kUniform;
@@ -197,14 +214,16 @@ enum class StreamFormat : uint8_t {
 };
 
 // Byte sizes of the parts of a stream (binary form; for an ASCII stream `total` is the ASCII size).
-// For kOpen3dgc2013 streams the sizes are those of the stream as it is (either form), version is 0
-// and keep_order false.
+// For kOpen3dgc2013 streams the sizes are those of the stream as it is (either form), the version
+// is 0.0 and keep_order false.
 struct StreamInfo {
   StreamFormat format = StreamFormat::kNative;
   StreamType stream_type = StreamType::kBinary;
-  uint32_t version = 0;
+  uint32_t version_major = 0;  // format version of the stream (kNative)
+  uint32_t version_minor = 0;
   bool keep_order = false;
-  bool fast_decode = false;  // EncodeParams::fast_decode
+  bool fast_decode =
+      false;  // values in vertex id order (EncodeParams::fast_decode, auto_fast_decode)
   size_t num_vertices = 0;
   size_t num_triangles = 0;
   size_t total = 0;
@@ -242,8 +261,8 @@ Status Decode(const uint8_t* data, size_t size, const DecodeOptions& options, De
 double PositionQuantizationError(const float* positions, size_t stride, size_t num_vertices,
                                  int bits, RangeMode range);
 
-// Parses only the header and section table of a stream (no checksum check, no decoding); for an
-// original Open3DGC stream, its header (info->format says which).
+// Parses only the header and section table of a stream (no checksum check, no decoding): format
+// version, flags, counts; for an original Open3DGC stream, its header (info->format says which).
 Status ReadStreamInfo(const uint8_t* data, size_t size, StreamInfo* info);
 
 }  // namespace o3dgc

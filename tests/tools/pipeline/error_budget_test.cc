@@ -91,12 +91,14 @@ TEST(ErrorBudget, ChoosesTheSmallestStreamWithinTheBudget) {
 }
 
 TEST(ErrorBudget, TriesFewerBitsWhenTheMeasuredErrorLeavesRoom) {
-  // A box's corners are the ends of every grid's range, so they decode exactly at any bit count:
-  // the measured error stays 0 and the search walks down to 1 bit, far below the guarantee.
+  // A cube's corners are the ends of the per-axis and uniform grids' ranges, so they decode
+  // exactly at any bit count: the measured error stays 0 and the search walks down to 1 bit, far
+  // below the guarantee. (With unequal sides the uniform grid's corners are inexact, and its
+  // stream at 8 bits may be the smallest.)
   Mesh box;
   for (int c = 0; c < 8; ++c)
     box.positions.insert(box.positions.end(),
-                         {c & 1 ? 7.0f : 0.0f, c & 2 ? 3.0f : 0.0f, c & 4 ? 5.0f : 0.0f});
+                         {c & 1 ? 7.0f : 0.0f, c & 2 ? 7.0f : 0.0f, c & 4 ? 7.0f : 0.0f});
   box.indices = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
                  2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
   Result<BudgetedEncoding> chosen = EncodeWithinError(box, {}, MeshCodecSettings(), 0.01);
