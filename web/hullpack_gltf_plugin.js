@@ -40,7 +40,7 @@ const COMPONENT_LIMITS = {
 };
 
 // Converts decoded values to the accessor's component type as the C++ reader does
-// (tools/gltf/packed_glb_reader.cc): floats as they are; normalized integers scaled by the type's
+// (tools/packed/packed_glb_reader.cc): floats as they are; normalized integers scaled by the type's
 // maximum and rounded half away from zero; plain integers only when whole. A value the type cannot
 // hold is an error, not a wrapped number.
 function toAccessorArray(values, accessorDef, where) {

@@ -18,8 +18,8 @@
 #include <unordered_map>
 
 #include "convex_hull.h"  // vhacd/src: the reference hull for the dent depth of packed hulls
-#include "gltf/packed_glb_reader.h"
 #include "o3dgc/o3dgc.h"
+#include "packed/packed_glb_reader.h"
 #include "pipeline/mesh_codec.h"
 #include "pipeline/pack.h"
 #include "stability_cases.h"

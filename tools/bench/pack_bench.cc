@@ -19,8 +19,8 @@
 
 #include "bench/bench_util.h"
 #include "bench/draco_bridge.h"
-#include "gltf/packed_glb_reader.h"
 #include "io/scene_io.h"
+#include "packed/packed_glb_reader.h"
 #include "pipeline/pack.h"
 
 namespace {

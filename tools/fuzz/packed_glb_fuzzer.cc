@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <cstdlib>
 
-#include "gltf/packed_glb_reader.h"
+#include "packed/packed_glb_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   hullpack::Result<hullpack::Scene> scene =

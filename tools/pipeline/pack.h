@@ -12,7 +12,7 @@
 #include "common/status.h"
 #include "pipeline/collision.h"
 #include "pipeline/mesh_codec.h"
-#include "pipeline/packed_glb_writer.h"
+#include "packed/packed_glb_writer.h"
 #include "pipeline/prune.h"
 #include "scene/scene.h"
 

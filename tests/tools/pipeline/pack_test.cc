@@ -10,7 +10,7 @@
 #include <map>
 
 #include "gltf/glb_reader.h"
-#include "gltf/packed_glb_reader.h"
+#include "packed/packed_glb_reader.h"
 #include "mesh/topology.h"
 
 namespace hullpack {

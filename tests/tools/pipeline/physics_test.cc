@@ -9,7 +9,7 @@
 #include <cmath>
 #include <memory>
 
-#include "gltf/packed_glb_reader.h"
+#include "packed/packed_glb_reader.h"
 #include "pipeline/collision.h"
 #include "pipeline/pack.h"
 

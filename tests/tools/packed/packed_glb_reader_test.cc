@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "../pipeline/packed_glb_test_util.h"
 #include "../pipeline/test_torus.h"
 #include "gltf/glb_reader.h"
 #include "gltf/gltf_document.h"
-#include "gltf/packed_glb_reader.h"
+#include "packed/packed_glb_reader.h"
+#include "packed_glb_test_util.h"
 #include "pipeline/pack.h"
 
 namespace hullpack {

@@ -1,4 +1,4 @@
-#include "pipeline/packed_glb_writer.h"
+#include "packed/packed_glb_writer.h"
 
 #include "gltf/buffer_compaction.h"
 #include "gltf/glb_writer.h"

@@ -2,15 +2,15 @@
 // primitive pointing at its compressed stream through HULLPACK_mesh_compression, collision hulls as
 // OMI_physics_shape convex shapes on collider child nodes (or the KHR_physics_rigid_bodies draft).
 // The mirror image is packed_glb_reader.h.
-#ifndef HULLPACK_TOOLS_PIPELINE_PACKED_GLB_WRITER_H_
-#define HULLPACK_TOOLS_PIPELINE_PACKED_GLB_WRITER_H_
+#ifndef HULLPACK_TOOLS_PACKED_PACKED_GLB_WRITER_H_
+#define HULLPACK_TOOLS_PACKED_PACKED_GLB_WRITER_H_
 
 #include <cstdint>
 #include <vector>
 
 #include "common/status.h"
-#include "gltf/packed_glb_reader.h"
-#include "pipeline/mesh_codec.h"
+#include "packed/packed_glb_format.h"
+#include "packed/packed_glb_reader.h"
 #include "scene/scene.h"
 
 namespace hullpack {
@@ -43,4 +43,4 @@ Result<std::vector<uint8_t>> WritePackedGlb(const Scene& decoded, const PackedSt
 
 }  // namespace hullpack
 
-#endif  // HULLPACK_TOOLS_PIPELINE_PACKED_GLB_WRITER_H_
+#endif  // HULLPACK_TOOLS_PACKED_PACKED_GLB_WRITER_H_
