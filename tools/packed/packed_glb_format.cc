@@ -15,4 +15,11 @@ o3dgc::Status DecodePackedStream(const uint8_t* data, size_t size, o3dgc::Decode
   return st;
 }
 
+std::vector<float> DequantizeHull(const HullGrid& grid) {
+  std::vector<float> out(grid.local.size());
+  for (size_t i = 0; i < out.size(); ++i)
+    out[i] = static_cast<float>(grid.translation[i % 3] + grid.scale * double(grid.local[i]));
+  return out;
+}
+
 }  // namespace hullpack

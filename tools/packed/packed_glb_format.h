@@ -25,6 +25,18 @@ struct EncodedMesh {
   o3dgc::StreamInfo info;
 };
 
+// A collision hull stored as plain accessors quantized with KHR_mesh_quantization: unsigned integer
+// coordinates `local` (3 per vertex) that its collider node's translation and uniform scale map
+// into the body node's space.
+struct HullGrid {
+  double translation[3] = {0, 0, 0};
+  double scale = 1;
+  std::vector<uint16_t> local;
+};
+
+// The positions an engine computes from `grid`: float(translation + scale * local), in double.
+std::vector<float> DequantizeHull(const HullGrid& grid);
+
 // Decodes one HULLPACK_mesh_compression stream and applies the format's decode rule: every
 // attribute of semantic weight with 4 components is normalized per vertex (NormalizeSkinWeights),
 // so that WEIGHTS_0 sums to 1 as glTF wants. Safe on untrusted bytes.

@@ -463,9 +463,100 @@ void Transform(const nlohmann::json& node, const double p[3], double out[3]) {
   for (int k = 0; k < 3; ++k) out[k] = v[k] + 2 * (w * c[k] + cc[k]) + t[k];
 }
 
+// Reads accessor `index` of `doc` as doubles (components per element in *components), normalized
+// integers mapped as glTF says. Every offset and length is checked against the binary chunk.
+Status ReadAccessor(const GltfDocument& doc, int64_t index, const std::string& where,
+                    std::vector<double>* out, int* components) {
+  const nlohmann::json& json = doc.json();
+  auto bad = [&](const std::string& what) {
+    return Status(StatusCode::kParseError,
+                  where + ": accessors[" + std::to_string(index) + "]: " + what);
+  };
+  if (!json.contains("accessors") || !json["accessors"].is_array() || index < 0 ||
+      static_cast<uint64_t>(index) >= json["accessors"].size())
+    return bad("does not exist");
+  const nlohmann::json& a = json["accessors"][static_cast<size_t>(index)];
+  std::string type;
+  uint64_t ctype = 0, count = 0, offset = 0, view_index = 0;
+  bool normalized = false;
+  if (!gltf::GetStringMember(a, "type", &type) ||
+      !gltf::GetUintMember(a, "componentType", 0, &ctype) ||
+      !gltf::GetUintMember(a, "count", 0, &count) ||
+      !gltf::GetUintMember(a, "byteOffset", 0, &offset) ||
+      !gltf::GetBoolMember(a, "normalized", &normalized) ||
+      !gltf::GetUintMember(a, "bufferView", UINT64_MAX, &view_index))
+    return bad("a member has the wrong JSON type");
+  const int dims = gltf::ComponentCount(type);
+  const size_t csize = ctype <= 0xFFFF ? gltf::ComponentSize(static_cast<int>(ctype)) : 0;
+  if (dims == 0 || csize == 0) return bad("bad type or componentType");
+  if (view_index == UINT64_MAX || !json.contains("bufferViews") ||
+      view_index >= json["bufferViews"].size())
+    return bad("has no bufferView");
+  const nlohmann::json& v = json["bufferViews"][static_cast<size_t>(view_index)];
+  uint64_t view_offset = 0, view_length = 0, stride = 0, buffer = 0;
+  if (!gltf::GetUintMember(v, "byteOffset", 0, &view_offset) ||
+      !gltf::GetUintMember(v, "byteLength", 0, &view_length) ||
+      !gltf::GetUintMember(v, "byteStride", 0, &stride) ||
+      !gltf::GetUintMember(v, "buffer", 0, &buffer) || buffer != 0)
+    return bad("its bufferView is malformed or not on the binary chunk");
+  const uint64_t element = uint64_t(dims) * csize;
+  if (stride == 0) stride = element;
+  const std::vector<uint8_t>& bin = doc.binary();
+  if (view_offset > bin.size() || view_length > bin.size() - view_offset ||
+      (count > 0 &&
+       (offset > view_length || stride < element ||
+        (count - 1) > (view_length - offset - element) / stride || element > view_length - offset)))
+    return bad("lies outside its bufferView");
+  out->resize(count * dims);
+  *components = dims;
+  for (uint64_t i = 0; i < count; ++i) {
+    const uint8_t* e = bin.data() + view_offset + offset + i * stride;
+    for (int c = 0; c < dims; ++c) {
+      const uint8_t* p = e + c * csize;
+      double value = 0;
+      switch (ctype) {
+        case gltf::kFloat: {
+          float f;
+          std::memcpy(&f, p, 4);
+          value = f;
+          break;
+        }
+        case gltf::kUnsignedByte:
+          value = normalized ? p[0] / 255.0 : p[0];
+          break;
+        case gltf::kByte:
+          value = normalized ? std::max(int8_t(p[0]) / 127.0, -1.0) : int8_t(p[0]);
+          break;
+        case gltf::kUnsignedShort: {
+          uint16_t u;
+          std::memcpy(&u, p, 2);
+          value = normalized ? u / 65535.0 : u;
+          break;
+        }
+        case gltf::kShort: {
+          int16_t u;
+          std::memcpy(&u, p, 2);
+          value = normalized ? std::max(u / 32767.0, -1.0) : u;
+          break;
+        }
+        case gltf::kUnsignedInt: {
+          uint32_t u;
+          std::memcpy(&u, p, 4);
+          value = u;
+          break;
+        }
+        default:
+          return bad("unknown componentType");
+      }
+      (*out)[i * dims + c] = value;
+    }
+  }
+  return Status::Ok();
+}
+
 }  // namespace
 
-Result<std::vector<CollisionHull>> ReadCollisionHulls(const GltfDocument& doc, const Scene& scene,
+Result<std::vector<CollisionHull>> ReadCollisionHulls(const GltfDocument& doc,
                                                       const std::string& name) {
   std::vector<CollisionHull> out;
   const nlohmann::json& json = doc.json();
@@ -481,26 +572,57 @@ Result<std::vector<CollisionHull>> ReadCollisionHulls(const GltfDocument& doc, c
         parent[static_cast<size_t>(c.get<int64_t>())] = static_cast<int>(i);
     }
   }
+  const size_t meshes =
+      json.contains("meshes") && json["meshes"].is_array() ? json["meshes"].size() : 0;
   for (size_t i = 0; i < nodes.size(); ++i) {
     const std::string where = name + ": nodes[" + std::to_string(i) + "]";
     Result<int64_t> mesh = ColliderMesh(json, nodes[i], where);
     if (!mesh.ok()) return mesh.status();
     if (mesh.value() < 0) continue;
-    if (static_cast<uint64_t>(mesh.value()) >= scene.meshes.size())
+    if (static_cast<uint64_t>(mesh.value()) >= meshes)
       return Status(StatusCode::kParseError, where + ": collider mesh does not exist");
     CollisionHull h;
     h.body_node = parent[i];
     h.collider_node = static_cast<int>(i);
     h.gltf_mesh = static_cast<int>(mesh.value());
-    const Mesh& source = scene.meshes[static_cast<size_t>(mesh.value())];
-    h.hull.indices = source.indices;
-    h.hull.positions.resize(source.positions.size());
-    for (size_t v = 0; v < source.vertex_count(); ++v) {
-      const double p[3] = {source.positions[v * 3], source.positions[v * 3 + 1],
-                           source.positions[v * 3 + 2]};
-      double q[3];
-      Transform(nodes[i], p, q);
-      for (int k = 0; k < 3; ++k) h.hull.positions[v * 3 + k] = static_cast<float>(q[k]);
+    const nlohmann::json& m = json["meshes"][static_cast<size_t>(mesh.value())];
+    if (!m.is_object() || !m.contains("primitives") || !m["primitives"].is_array())
+      return Status(StatusCode::kParseError, where + ": collider mesh has no primitives");
+    for (const nlohmann::json& prim : m["primitives"]) {
+      int64_t position = -1, indices = -1;
+      uint64_t mode = gltf::kModeTriangles;
+      if (prim.is_object() && prim.contains("attributes") && prim["attributes"].is_object() &&
+          prim["attributes"].contains("POSITION") &&
+          prim["attributes"]["POSITION"].is_number_integer())
+        position = prim["attributes"]["POSITION"].get<int64_t>();
+      if (prim.is_object() && prim.contains("indices") && prim["indices"].is_number_integer())
+        indices = prim["indices"].get<int64_t>();
+      if (!gltf::GetUintMember(prim, "mode", gltf::kModeTriangles, &mode))
+        return Status(StatusCode::kParseError, where + ": collider primitive mode is malformed");
+      std::vector<double> p;
+      int dims = 0;
+      Status s = ReadAccessor(doc, position, where, &p, &dims);
+      if (!s.ok()) return s;
+      if (dims != 3) return Status(StatusCode::kParseError, where + ": POSITION is not VEC3");
+      const uint32_t base = static_cast<uint32_t>(h.hull.vertex_count());
+      for (size_t v = 0; v * 3 < p.size(); ++v) {
+        double q[3];
+        Transform(nodes[i], &p[v * 3], q);
+        for (int k = 0; k < 3; ++k) h.hull.positions.push_back(static_cast<float>(q[k]));
+      }
+      if (mode != gltf::kModeTriangles) continue;  // points: the engine builds the hull
+      std::vector<double> idx;
+      if (indices >= 0) {
+        s = ReadAccessor(doc, indices, where, &idx, &dims);
+        if (!s.ok()) return s;
+      } else {
+        for (size_t v = 0; v < p.size() / 3; ++v) idx.push_back(double(v));
+      }
+      for (double x : idx) {
+        if (!(x >= 0 && x < double(p.size() / 3)))
+          return Status(StatusCode::kParseError, where + ": collider index out of range");
+        h.hull.indices.push_back(base + static_cast<uint32_t>(x));
+      }
     }
     out.push_back(std::move(h));
   }

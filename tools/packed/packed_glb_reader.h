@@ -34,14 +34,15 @@ Result<Scene> ReadPackedGltf(const uint8_t* data, size_t size, const std::string
 struct CollisionHull {
   int body_node = -1;      // glTF node index of the collider's parent (-1: the collider is a root)
   int collider_node = -1;  // glTF node index
-  int gltf_mesh = -1;      // the hull's mesh (Scene::meshes index as well)
-  Mesh hull;               // positions (body-node space, rounded to float) and triangles
+  int gltf_mesh = -1;      // the hull's mesh
+  Mesh hull;  // positions (body-node space, rounded to float); triangles when the file has them
 };
 
 // Every OMI_physics_body / KHR_physics_rigid_bodies collider of an inflated document `doc` (as
-// ReadPackedGltf returns it, with `scene`) whose shape is a convex mesh, in node order. Covers the
-// hulls of every release: compressed streams (inflated to float accessors) and quantized accessors.
-Result<std::vector<CollisionHull>> ReadCollisionHulls(const GltfDocument& doc, const Scene& scene,
+// ReadPackedGltf returns it) whose shape is a convex mesh, in node order. Covers the hulls of every
+// release: compressed streams (inflated to float triangles) and quantized points (no triangles:
+// the hull of the points is the shape). The document is hostile: every index is checked.
+Result<std::vector<CollisionHull>> ReadCollisionHulls(const GltfDocument& doc,
                                                       const std::string& name);
 
 }  // namespace hullpack

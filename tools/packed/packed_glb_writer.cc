@@ -3,6 +3,8 @@
 #include "gltf/buffer_compaction.h"
 #include "gltf/glb_writer.h"
 
+#include <algorithm>
+
 namespace hullpack {
 namespace {
 
@@ -28,11 +30,7 @@ void CompressPrimitives(GltfDocument& doc, int gltf_mesh, const MeshSource& sour
       if (!fallback) StripData(json["accessors"][prim["attributes"][name].get<int>()]);
     }
     ext["attributes"] = std::move(attributes);
-    if (source.hull) {
-      ext["group"] = source.hull_group;
-      ext["compactVertices"] = true;
-    } else if (source.grouped && p < layout.primitives.size() &&
-               layout.primitives[p].material >= 0) {
+    if (source.grouped && p < layout.primitives.size() && layout.primitives[p].material >= 0) {
       ext["group"] = layout.primitives[p].material;
     }
     if (!fallback && prim.contains("indices"))
@@ -41,40 +39,109 @@ void CompressPrimitives(GltfDocument& doc, int gltf_mesh, const MeshSource& sour
   }
 }
 
+// A hull is a mesh of one POINTS primitive whose only attribute is its quantized POSITION (VEC3 of
+// unsigned bytes or shorts, padded to 4-byte elements): a convex shape is the hull of its points,
+// which every physics engine computes itself, so triangles would only add bytes. All hulls share
+// one bufferView per component type.
+class HullAccessors {
+ public:
+  // Appends the hull's accessor and mesh; returns the glTF mesh index.
+  int Add(GltfDocument& doc, const HullGrid& grid) {
+    uint16_t lo[3] = {65535, 65535, 65535}, hi[3] = {0, 0, 0};
+    for (size_t i = 0; i < grid.local.size(); ++i) {
+      lo[i % 3] = std::min(lo[i % 3], grid.local[i]);
+      hi[i % 3] = std::max(hi[i % 3], grid.local[i]);
+    }
+    const bool wide = std::max({hi[0], hi[1], hi[2]}) > 255;
+    Pending& p = positions_[wide];
+    const size_t csize = wide ? 2 : 1;
+    const size_t offset = p.bytes.size();
+    const size_t count = grid.local.size() / 3;
+    for (size_t v = 0; v < count; ++v) {
+      uint8_t element[8] = {};
+      for (int k = 0; k < 3; ++k) {
+        const uint16_t c = grid.local[v * 3 + k];
+        element[k * csize] = static_cast<uint8_t>(c & 0xFF);
+        if (wide) element[k * csize + 1] = static_cast<uint8_t>(c >> 8);
+      }
+      p.bytes.insert(p.bytes.end(), element, element + (wide ? 8 : 4));
+    }
+    nlohmann::json accessor = {{"componentType", wide ? gltf::kUnsignedShort : gltf::kUnsignedByte},
+                               {"count", count},
+                               {"type", "VEC3"},
+                               {"min", {lo[0], lo[1], lo[2]}},
+                               {"max", {hi[0], hi[1], hi[2]}}};
+    if (offset != 0) accessor["byteOffset"] = offset;
+    const int index = doc.Append("accessors", std::move(accessor));
+    p.accessors.push_back(index);
+    return doc.Append(
+        "meshes",
+        {{"primitives", {{{"attributes", {{"POSITION", index}}}, {"mode", gltf::kModePoints}}}}});
+  }
+
+  // Writes the shared bufferViews and points the accessors at them.
+  void Finish(GltfDocument& doc) {
+    for (int wide = 0; wide < 2; ++wide) {
+      if (positions_[wide].accessors.empty()) continue;
+      const int view =
+          doc.AddBufferView(positions_[wide].bytes, 4, gltf::kArrayBuffer, wide ? 8 : 4);
+      for (int a : positions_[wide].accessors) doc.json()["accessors"][a]["bufferView"] = view;
+    }
+  }
+
+  bool empty() const { return positions_[0].accessors.empty() && positions_[1].accessors.empty(); }
+
+ private:
+  struct Pending {
+    std::vector<uint8_t> bytes;
+    std::vector<int> accessors;
+  };
+  Pending positions_[2];  // bytes, shorts
+};
+
 void AddColliders(GltfDocument& doc, const PackedStreams& streams, const GltfSceneLayout& layout,
-                  PhysicsForm physics) {
+                  const std::vector<int>& hull_meshes, PhysicsForm physics) {
   nlohmann::json& json = doc.json();
   nlohmann::json shapes = nlohmann::json::array();
   for (size_t m = 0; m < streams.hulls_of.size(); ++m) {
     if (streams.hulls_of[m].empty()) continue;
-    std::vector<int> hull_shapes;
+    std::vector<int> hull_refs;  // per hull: OMI shape, or KHR geometry node
     for (int h : streams.hulls_of[m]) {
-      hull_shapes.push_back(static_cast<int>(shapes.size()));
-      shapes.push_back({{"type", "convex"}, {"convex", {{"mesh", layout.meshes[h].gltf_mesh}}}});
+      const int gltf_hull_mesh = hull_meshes[h];
+      if (physics == PhysicsForm::kOmi) {
+        hull_refs.push_back(static_cast<int>(shapes.size()));
+        shapes.push_back({{"type", "convex"}, {"convex", {{"mesh", gltf_hull_mesh}}}});
+      } else {  // a node outside the scene holds the mesh, so that nothing renders it
+        hull_refs.push_back(doc.Append("nodes", {{"mesh", gltf_hull_mesh}}));
+      }
     }
     for (int node : layout.mesh_nodes[m]) {
-      for (size_t k = 0; k < hull_shapes.size(); ++k) {
-        const int gltf_hull_mesh = layout.meshes[streams.hulls_of[m][k]].gltf_mesh;
-        nlohmann::json collider = {{"name", json["nodes"][node].value("name", std::string("node")) +
-                                                "_collider_" + std::to_string(k)}};
+      for (size_t k = 0; k < hull_refs.size(); ++k) {
+        const HullGrid& grid = streams.sources[streams.hulls_of[m][k]].hull_grid;
+        nlohmann::json collider = nlohmann::json::object();
+        if (grid.translation[0] != 0 || grid.translation[1] != 0 || grid.translation[2] != 0)
+          collider["translation"] = {grid.translation[0], grid.translation[1], grid.translation[2]};
+        if (grid.scale != 1) collider["scale"] = {grid.scale, grid.scale, grid.scale};
         if (physics == PhysicsForm::kOmi) {
-          collider["extensions"]["OMI_physics_body"] = {{"collider", {{"shape", hull_shapes[k]}}}};
+          collider["extensions"]["OMI_physics_body"] = {{"collider", {{"shape", hull_refs[k]}}}};
         } else {
           collider["extensions"]["KHR_physics_rigid_bodies"] = {
-              {"collider", {{"geometry", {{"mesh", gltf_hull_mesh}, {"convexHull", true}}}}}};
+              {"collider", {{"geometry", {{"node", hull_refs[k]}, {"convexHull", true}}}}}};
         }
         const int child = doc.Append("nodes", std::move(collider));
         json["nodes"][node]["children"].push_back(child);
       }
     }
   }
-  if (shapes.empty()) return;
   if (physics == PhysicsForm::kOmi) {
+    if (shapes.empty()) return;
     json["extensions"]["OMI_physics_shape"] = {{"shapes", std::move(shapes)}};
     doc.UseExtension("OMI_physics_shape", false);
     doc.UseExtension("OMI_physics_body", false);
-  } else {
-    doc.UseExtension("KHR_physics_rigid_bodies", false);
+  } else if (!streams.hulls_of.empty()) {
+    bool any = false;
+    for (const auto& h : streams.hulls_of) any |= !h.empty();
+    if (any) doc.UseExtension("KHR_physics_rigid_bodies", false);
   }
 }
 
@@ -85,15 +152,34 @@ Result<std::vector<uint8_t>> WritePackedGlb(const Scene& decoded, const PackedSt
   if (streams.sources.size() != decoded.meshes.size()) {
     return Status(StatusCode::kInternal, "packed GLB: one stream source per mesh expected");
   }
+  // The scene's glTF holds the render meshes; the hull meshes (last) get their own accessors.
+  size_t render_meshes = 0;
+  while (render_meshes < decoded.meshes.size() && !streams.sources[render_meshes].hull)
+    ++render_meshes;
+  for (size_t m = render_meshes; m < decoded.meshes.size(); ++m) {
+    if (!streams.sources[m].hull)
+      return Status(StatusCode::kInternal, "packed GLB: hull meshes must follow the render meshes");
+  }
   GltfDocument doc;
   GltfSceneLayout layout;
-  Status built = BuildGltfDocument(decoded, GlbWriteOptions(), &doc, &layout);
+  Status built;
+  if (render_meshes == decoded.meshes.size()) {
+    built = BuildGltfDocument(decoded, GlbWriteOptions(), &doc, &layout);
+  } else {
+    Scene render;
+    render.materials = decoded.materials;
+    render.images = decoded.images;
+    render.skins = decoded.skins;
+    render.nodes = decoded.nodes;
+    render.meshes.assign(decoded.meshes.begin(), decoded.meshes.begin() + render_meshes);
+    built = BuildGltfDocument(render, GlbWriteOptions(), &doc, &layout);
+  }
   if (!built.ok()) return built;
   std::vector<int> stream_views;
   for (const EncodedMesh& s : streams.streams)
     stream_views.push_back(doc.AddBufferView(s.stream, 4));
   bool any = false;
-  for (size_t m = 0; m < decoded.meshes.size(); ++m) {
+  for (size_t m = 0; m < render_meshes; ++m) {
     const MeshSource& source = streams.sources[m];
     if (source.stream < 0 || static_cast<size_t>(source.stream) >= streams.streams.size()) continue;
     CompressPrimitives(doc, layout.meshes[m].gltf_mesh, source, streams.streams[source.stream],
@@ -101,7 +187,16 @@ Result<std::vector<uint8_t>> WritePackedGlb(const Scene& decoded, const PackedSt
     any = true;
   }
   if (any) doc.UseExtension(kMeshCompressionExtension, !options.fallback);
-  AddColliders(doc, streams, layout, options.physics);
+  HullAccessors hulls;
+  std::vector<int> hull_meshes(decoded.meshes.size(), -1);
+  for (size_t m = render_meshes; m < decoded.meshes.size(); ++m)
+    hull_meshes[m] = hulls.Add(doc, streams.sources[m].hull_grid);
+  if (!hulls.empty()) {
+    hulls.Finish(doc);
+    // The specification (and the Khronos validator) make it required.
+    doc.UseExtension("KHR_mesh_quantization", true);
+  }
+  AddColliders(doc, streams, layout, hull_meshes, options.physics);
   Status compacted = CompactBufferViews(doc);
   if (!compacted.ok()) return compacted;
   return doc.Serialize();

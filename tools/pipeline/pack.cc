@@ -5,7 +5,7 @@
 
 #include "mesh/validate.h"
 #include "pipeline/error_budget.h"
-#include "pipeline/hull_stream.h"
+#include "pipeline/hull_quantize.h"
 
 namespace hullpack {
 namespace {
@@ -107,32 +107,28 @@ Status PackHulls(const Mesh& mesh, const PackOptions& options, PackObserver* obs
   report.hull_concavity = set->report.concavity;
   report.hull_iou = set->report.volume_iou;
   if (set->hulls.empty()) return Status::Ok();
-  // All hulls of the mesh in one stream, one group per hull, quantized to the hull budget.
+  // All hulls of the mesh on one grid within the hull budget, as plain quantized accessors.
   for (const Mesh& hull : set->hulls) report.hull_vertices += hull.vertex_count();
   const double diagonal = BoundingBoxDiagonal(mesh);
   const auto t1 = Clock::now();
-  Result<EncodedHulls> encoded =
-      EncodeHulls(set->hulls, SettingsFor(options), options.hull_error * diagonal);
-  if (!encoded.ok())
-    return Status(encoded.status().code(),
-                  "mesh '" + mesh.name + "': hulls: " + encoded.status().message());
+  Result<QuantizedHulls> quantized = QuantizeHulls(set->hulls, options.hull_error * diagonal);
+  if (!quantized.ok())
+    return Status(quantized.status().code(),
+                  "mesh '" + mesh.name + "': hulls: " + quantized.status().message());
   report.seconds_hull_encode = Seconds(t1);
-  report.hull_quantization_error = diagonal > 0 ? encoded->max_error / diagonal : 0;
-  report.hull_position_bits = encoded->position_bits;
-  report.hull_position_range = RangeModeName(encoded->position_range);
-  report.hull_bytes = encoded->encoded.stream.size();
-  const int stream = static_cast<int>(streams.streams.size());
-  streams.streams.push_back(std::move(encoded->encoded));
+  report.hull_quantization_error = diagonal > 0 ? quantized->max_error / diagonal : 0;
+  report.hull_position_bits = quantized->position_bits;
+  report.hull_position_range = "grid";
   for (size_t h = 0; h < set->hulls.size(); ++h) {
-    Mesh hull = std::move(encoded->decoded[h]);
+    Mesh hull = std::move(quantized->decoded[h]);
     hull.name = mesh.name + "_hull_" + std::to_string(h);
-    hull.material_ids.clear();
+    report.hull_bytes += hull.vertex_count() * (quantized->position_bits > 8 ? 8 : 4) +
+                         hull.indices.size() * (hull.vertex_count() <= 256 ? 1 : 2);
     packed.hulls.push_back(std::move(hull));
     MeshSource source;
-    source.stream = stream;
     source.hull = true;
-    source.hull_group = static_cast<uint32_t>(h);
-    streams.sources.push_back(source);  // order: appended after the render meshes, see below
+    source.hull_grid = std::move(quantized->grids[h]);
+    streams.sources.push_back(std::move(source));  // order: after the render meshes, see below
   }
   return Status::Ok();
 }
@@ -225,7 +221,7 @@ Result<PackResult> PackScene(Scene scene, const PackOptions& options, PackObserv
       streams.hulls_of[i].push_back(static_cast<int>(decoded_scene.meshes.size()));
       decoded_scene.meshes.push_back(std::move(hull));
       MeshSource source = hull_streams.sources[hull_source++];
-      source.stream += hull_stream_base;
+      if (source.stream >= 0) source.stream += hull_stream_base;
       streams.sources.push_back(source);
     }
   }

@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "common/status.h"
+#include "packed/packed_glb_writer.h"
 #include "pipeline/collision.h"
 #include "pipeline/mesh_codec.h"
-#include "packed/packed_glb_writer.h"
 #include "pipeline/prune.h"
 #include "scene/scene.h"
 
@@ -49,14 +49,14 @@ struct MeshPackReport {
   std::string no_hulls_reason;    // why the mesh has no hulls, "" when it has some
   size_t hull_count = 0;
   size_t hull_vertices = 0;
-  size_t hull_bytes = 0;  // the hull stream
+  size_t hull_bytes = 0;  // the hulls' accessor data (positions and indices)
   int hull_position_bits = 0;
   std::string hull_position_range;
   double hull_concavity = -1;  // vhacd's report (fractions of the diagonal); -1 = not measured
   double hull_iou = -1;
   double hull_quantization_error = 0;  // hull vertex error after quantization, fraction of diagonal
   // encode: the render stream, every quantization grid tried; decode: the chosen stream once;
-  // hull_encode: quantizing, welding and encoding the hulls.
+  // hull_encode: quantizing the hulls.
   double seconds_encode = 0, seconds_decode = 0, seconds_decompose = 0, seconds_hull_encode = 0;
 };
 

@@ -29,7 +29,7 @@ void ExpectCupWithTenHulls(const std::string& name) {
   ASSERT_TRUE(scene.ok()) << scene.status().ToString();
   ASSERT_EQ(scene->meshes.size(), 11u);  // the cup, then its 10 hulls
   EXPECT_EQ(scene->meshes[0].triangle_count(), 188u);
-  Result<std::vector<CollisionHull>> hulls = ReadCollisionHulls(doc, scene.value(), name);
+  Result<std::vector<CollisionHull>> hulls = ReadCollisionHulls(doc, name);
   ASSERT_TRUE(hulls.ok()) << hulls.status().ToString();
   ASSERT_EQ(hulls->size(), 10u);
   for (const CollisionHull& h : hulls.value()) {

@@ -97,7 +97,11 @@ std::vector<Mesh> PackedHulls(const Mesh& mesh) {
   Result<Scene> read =
       ReadPackedGltf(packed->glb.data(), packed->glb.size(), "torus.glb", "", &doc);
   if (!read.ok()) return {};
-  return std::vector<Mesh>(read->meshes.begin() + 1, read->meshes.end());
+  Result<std::vector<CollisionHull>> hulls = ReadCollisionHulls(doc, "torus.glb");
+  if (!hulls.ok()) return {};
+  std::vector<Mesh> out;
+  for (CollisionHull& h : hulls.value()) out.push_back(std::move(h.hull));
+  return out;
 }
 
 TEST(Physics, BulletRestsTheTorusFlatOnThePlane) {
