@@ -1,5 +1,6 @@
 #include "pipeline/pack.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -122,8 +123,10 @@ Status PackHulls(const Mesh& mesh, const PackOptions& options, PackObserver* obs
   for (size_t h = 0; h < set->hulls.size(); ++h) {
     Mesh hull = std::move(quantized->decoded[h]);
     hull.name = mesh.name + "_hull_" + std::to_string(h);
-    report.hull_bytes += hull.vertex_count() * (quantized->position_bits > 8 ? 8 : 4) +
-                         hull.indices.size() * (hull.vertex_count() <= 256 ? 1 : 2);
+    const HullGrid& grid = quantized->grids[h];
+    const bool wide =
+        !grid.local.empty() && *std::max_element(grid.local.begin(), grid.local.end()) > 255;
+    report.hull_bytes += hull.vertex_count() * (wide ? 8 : 4);
     packed.hulls.push_back(std::move(hull));
     MeshSource source;
     source.hull = true;
