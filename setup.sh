@@ -149,8 +149,11 @@ case "${1:-}" in
       HULLPACK_FUZZ_BUILD_DIR=$SANITIZE_DIR tests/fuzz/run_fuzzers.sh "${HULLPACK_FUZZ_SECONDS:-60}"
     fi
     ;;
+  -h | --help)
+    sed -n '2,5p' "$0" | sed 's/^# \{0,1\}//'
+    ;;
   *)
-    echo "usage: ./setup.sh demo|test" >&2
-    exit 2
+    echo "setup.sh: unknown command '${1:-}' (usage: ./setup.sh demo|test; see --help)" >&2
+    exit 64
     ;;
 esac

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 #include "common/file_util.h"
 #include "hullpack/cli_util.h"
@@ -12,27 +13,59 @@
 
 namespace hullpack {
 
-int RunInfoCommand(const std::vector<std::string>& args) {
-  std::string path;
-  bool json = false;
-  for (const std::string& a : args) {
-    if (a == "--json") {
-      json = true;
-    } else if (!a.empty() && a[0] == '-') {
-      std::fprintf(stderr, "hullpack info: unknown option '%s'\n", a.c_str());
-      return kExitUsage;
-    } else if (path.empty()) {
-      path = a;
-    } else {
-      std::fprintf(stderr, "hullpack info: one file at a time ('%s' and '%s')\n", path.c_str(),
-                   a.c_str());
-      return kExitUsage;
+namespace {
+
+// Hull meshes stored as points (docs/packed-gltf.md) have no triangles for the scene model: they
+// are reported as collision hulls instead of as empty meshes, and the reader's notes about them go.
+void LeaveOutPointHulls(const std::vector<CollisionHull>& hulls, Scene& scene) {
+  std::vector<bool> drop(scene.meshes.size(), false);
+  size_t dropped = 0;
+  for (const CollisionHull& h : hulls) {
+    const size_t m = static_cast<size_t>(h.gltf_mesh);
+    if (m < drop.size() && !drop[m] && scene.meshes[m].triangle_count() == 0) {
+      drop[m] = true;
+      ++dropped;
     }
   }
-  if (path.empty()) {
-    std::fprintf(stderr, "usage: hullpack info FILE [--json]\n");
-    return kExitUsage;
+  if (dropped == 0) return;
+  std::vector<int> remap(scene.meshes.size(), -1);
+  std::vector<Mesh> kept;
+  for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    if (drop[m]) continue;
+    remap[m] = static_cast<int>(kept.size());
+    kept.push_back(std::move(scene.meshes[m]));
   }
+  scene.meshes = std::move(kept);
+  for (Node& node : scene.nodes) {
+    std::vector<int> meshes;
+    for (int m : node.meshes)
+      if (m >= 0 && static_cast<size_t>(m) < remap.size() && remap[m] >= 0)
+        meshes.push_back(remap[m]);
+    node.meshes = std::move(meshes);
+  }
+  std::vector<std::string> notes;
+  for (const std::string& line : scene.dropped) {
+    bool about_hull = line == "dropped " + std::to_string(dropped) + " point/line primitives";
+    for (size_t m = 0; m < drop.size() && !about_hull; ++m)
+      about_hull = drop[m] && line == "meshes[" + std::to_string(m) + "] has no triangles";
+    if (!about_hull) notes.push_back(line);
+  }
+  scene.dropped = std::move(notes);
+}
+
+}  // namespace
+
+int RunInfoCommand(const std::vector<std::string>& args) {
+  std::vector<std::string> files;
+  bool json = false;
+  CliArgs cli("hullpack info", "FILE [--json]",
+              "Counts, attributes, bounds and topology of a mesh or scene file, and what the\n"
+              "reader could not keep.");
+  cli.VersionDetail(FormatVersionText());
+  cli.Positional("FILE", &files, 1, 1);
+  cli.Flag("--json", &json, "print the report as JSON");
+  if (std::optional<int> exit_code = cli.Parse(args)) return *exit_code;
+  const std::string& path = files[0];
   Result<Scene> scene = ReadScene(path);
   if (!scene.ok()) {
     std::fprintf(stderr, "hullpack info: %s\n", scene.status().message().c_str());
@@ -46,7 +79,6 @@ int RunInfoCommand(const std::vector<std::string>& args) {
       return 1;
     }
   }
-  const SceneSummary summary = Summarize(scene.value());
   const FileFormat format = FormatFromExtension(path);
   Result<std::vector<uint8_t>> bytes = ReadFileBytes(path);
   const size_t file_size = bytes.ok() ? bytes.value().size() : 0;
@@ -64,6 +96,8 @@ int RunInfoCommand(const std::vector<std::string>& args) {
     }
     hulls = std::move(found.value());
   }
+  LeaveOutPointHulls(hulls, scene.value());
+  const SceneSummary summary = Summarize(scene.value());
   size_t hull_points = 0;
   for (const CollisionHull& h : hulls) hull_points += h.hull.vertex_count();
   if (json) {

@@ -145,8 +145,8 @@ bool ClipRecursively(Part root, const ClipParams& params, Context* ctx, ClipOutp
     // The downsampled hulls skip all but every convexhull_downsampling-th row of voxel lines, so a
     // feature thinner than that (a one-voxel sheet floating over a slab) can be invisible to the
     // coarse costs of two axes: their planes look free, the cut removes no concavity, and the part
-    // was cut again and again into single voxel columns (thousands of parts, a merge of tens of
-    // seconds) before the one plane through the gap was tried. When the exact cost of the chosen
+    // would be cut again and again into single voxel columns (thousands of parts and a very long
+    // merge) before the one plane through the gap is tried. When the exact cost of the chosen
     // cut shows no gain over the part's concavity although the estimate promised one (less than
     // half the exact cost), the estimate was blind: search every plane again with exact hulls.
     if (params.convexhull_downsampling > 1) {
