@@ -14,8 +14,12 @@ import { startServer } from './static_server.mjs';
 const SKIP = 77;
 const a = {};
 for (let i = 2; i + 1 < process.argv.length; i += 2) a[process.argv[i].replace(/^--/, '')] = process.argv[i + 1];
-const repo = path.resolve(a.repo || '.');
-const work = path.resolve(a.work || '.');
+if (!a.repo || !a.work) {
+  console.error('usage: node engines_test.mjs --repo DIR --work DIR [--chromium PATH]');
+  process.exit(64);
+}
+const repo = path.resolve(a.repo);
+const work = path.resolve(a.work);
 const chromiumPath = a.chromium || '/usr/bin/chromium';
 
 let failures = 0;

@@ -5,6 +5,7 @@
 # hull points (web_bullet_drop) and the C++ decode of the KHR file (`hullpack unpack`), then runs
 # tests/web/engines_test.mjs. Exit 77 = skipped.
 set -euo pipefail
+[ $# -eq 5 ] || { echo "usage: run_engines_test.sh REPO BUILD_DIR HULLPACK WEB_BULLET_DROP WORK_DIR" >&2; exit 64; }
 repo=$1 build=$2 hullpack=$3 bullet=$4 work=$5
 skip() { echo "SKIP: $*"; exit 77; }
 
