@@ -4,6 +4,7 @@
 #include "gltf/glb_writer.h"
 
 #include <algorithm>
+#include <cstring>
 
 namespace hullpack {
 namespace {
@@ -39,12 +40,15 @@ void CompressPrimitives(GltfDocument& doc, int gltf_mesh, const MeshSource& sour
   }
 }
 
-// A hull is a mesh of one POINTS primitive whose only attribute is its quantized POSITION (VEC3 of
-// unsigned bytes or shorts, padded to 4-byte elements): a convex shape is the hull of its points,
-// which every physics engine computes itself, so triangles would only add bytes. All hulls share
-// one bufferView per component type.
+// A hull is a mesh of one POINTS primitive whose only attribute is its quantized POSITION: a
+// convex shape is the hull of its points, which every physics engine computes itself, so triangles
+// would only add bytes. The grid integers are stored as VEC3 of unsigned bytes or shorts (padded to
+// 4-byte elements, KHR_mesh_quantization), or, in fallback files, which require no extension, as
+// floats holding the same integers. All hulls share one bufferView per component type.
 class HullAccessors {
  public:
+  explicit HullAccessors(bool floats) : floats_(floats) {}
+
   // Appends the hull's accessor and mesh; returns the glTF mesh index.
   int Add(GltfDocument& doc, const HullGrid& grid) {
     uint16_t lo[3] = {65535, 65535, 65535}, hi[3] = {0, 0, 0};
@@ -52,21 +56,27 @@ class HullAccessors {
       lo[i % 3] = std::min(lo[i % 3], grid.local[i]);
       hi[i % 3] = std::max(hi[i % 3], grid.local[i]);
     }
-    const bool wide = std::max({hi[0], hi[1], hi[2]}) > 255;
-    Pending& p = positions_[wide];
-    const size_t csize = wide ? 2 : 1;
+    const Kind kind = floats_ ? kFloats : std::max({hi[0], hi[1], hi[2]}) > 255 ? kShorts : kBytes;
+    Pending& p = positions_[kind];
     const size_t offset = p.bytes.size();
     const size_t count = grid.local.size() / 3;
     for (size_t v = 0; v < count; ++v) {
-      uint8_t element[8] = {};
+      uint8_t element[12] = {};
       for (int k = 0; k < 3; ++k) {
         const uint16_t c = grid.local[v * 3 + k];
-        element[k * csize] = static_cast<uint8_t>(c & 0xFF);
-        if (wide) element[k * csize + 1] = static_cast<uint8_t>(c >> 8);
+        if (kind == kFloats) {
+          const float f = c;
+          std::memcpy(&element[k * 4], &f, 4);
+        } else if (kind == kShorts) {
+          element[k * 2] = static_cast<uint8_t>(c & 0xFF);
+          element[k * 2 + 1] = static_cast<uint8_t>(c >> 8);
+        } else {
+          element[k] = static_cast<uint8_t>(c);
+        }
       }
-      p.bytes.insert(p.bytes.end(), element, element + (wide ? 8 : 4));
+      p.bytes.insert(p.bytes.end(), element, element + kStride[kind]);
     }
-    nlohmann::json accessor = {{"componentType", wide ? gltf::kUnsignedShort : gltf::kUnsignedByte},
+    nlohmann::json accessor = {{"componentType", kComponentType[kind]},
                                {"count", count},
                                {"type", "VEC3"},
                                {"min", {lo[0], lo[1], lo[2]}},
@@ -79,24 +89,31 @@ class HullAccessors {
         {{"primitives", {{{"attributes", {{"POSITION", index}}}, {"mode", gltf::kModePoints}}}}});
   }
 
-  // Writes the shared bufferViews and points the accessors at them.
+  // Writes the shared bufferViews, points the accessors at them, and declares
+  // KHR_mesh_quantization when integer positions were written.
   void Finish(GltfDocument& doc) {
-    for (int wide = 0; wide < 2; ++wide) {
-      if (positions_[wide].accessors.empty()) continue;
+    for (int kind = 0; kind < 3; ++kind) {
+      if (positions_[kind].accessors.empty()) continue;
       const int view =
-          doc.AddBufferView(positions_[wide].bytes, 4, gltf::kArrayBuffer, wide ? 8 : 4);
-      for (int a : positions_[wide].accessors) doc.json()["accessors"][a]["bufferView"] = view;
+          doc.AddBufferView(positions_[kind].bytes, 4, gltf::kArrayBuffer, kStride[kind]);
+      for (int a : positions_[kind].accessors) doc.json()["accessors"][a]["bufferView"] = view;
     }
+    // The specification and the Khronos validator make it required.
+    if (!positions_[kBytes].accessors.empty() || !positions_[kShorts].accessors.empty())
+      doc.UseExtension("KHR_mesh_quantization", true);
   }
 
-  bool empty() const { return positions_[0].accessors.empty() && positions_[1].accessors.empty(); }
-
  private:
+  enum Kind { kBytes, kShorts, kFloats };
+  static constexpr size_t kStride[3] = {4, 8, 12};
+  static constexpr int kComponentType[3] = {gltf::kUnsignedByte, gltf::kUnsignedShort,
+                                            gltf::kFloat};
   struct Pending {
     std::vector<uint8_t> bytes;
     std::vector<int> accessors;
   };
-  Pending positions_[2];  // bytes, shorts
+  bool floats_;
+  Pending positions_[3];
 };
 
 void AddColliders(GltfDocument& doc, const PackedStreams& streams, const GltfSceneLayout& layout,
@@ -187,15 +204,12 @@ Result<std::vector<uint8_t>> WritePackedGlb(const Scene& decoded, const PackedSt
     any = true;
   }
   if (any) doc.UseExtension(kMeshCompressionExtension, !options.fallback);
-  HullAccessors hulls;
+  // Fallback files are for readers without extensions: their hulls must not require one.
+  HullAccessors hulls(options.fallback);
   std::vector<int> hull_meshes(decoded.meshes.size(), -1);
   for (size_t m = render_meshes; m < decoded.meshes.size(); ++m)
     hull_meshes[m] = hulls.Add(doc, streams.sources[m].hull_grid);
-  if (!hulls.empty()) {
-    hulls.Finish(doc);
-    // The specification (and the Khronos validator) make it required.
-    doc.UseExtension("KHR_mesh_quantization", true);
-  }
+  hulls.Finish(doc);
   AddColliders(doc, streams, layout, hull_meshes, options.physics);
   Status compacted = CompactBufferViews(doc);
   if (!compacted.ok()) return compacted;

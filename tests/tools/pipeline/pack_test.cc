@@ -211,6 +211,34 @@ TEST(Pack, FallbackFilesReadWithoutTheExtension) {
   EXPECT_EQ(plain->meshes[0].indices, decoded->meshes[0].indices);
 }
 
+TEST(Pack, FallbackFilesWithHullsRequireNoExtension) {
+  // The hulls of a fallback file hold their grid integers as floats: no KHR_mesh_quantization,
+  // and an engine gets the same points as from the default file.
+  PackOptions options = FastOptions();
+  Result<PackResult> plain = PackScene(TestScene(), options);
+  options.glb.fallback = true;
+  Result<PackResult> fallback = PackScene(TestScene(), options);
+  ASSERT_TRUE(plain.ok() && fallback.ok());
+  Result<GltfDocument> doc = DecodeGlbDocument(fallback->glb.data(), fallback->glb.size(), "f.glb");
+  ASSERT_TRUE(doc.ok());
+  EXPECT_FALSE(doc->json().contains("extensionsRequired"));
+  for (const auto& name : doc->json()["extensionsUsed"])
+    EXPECT_NE(name.get<std::string>(), "KHR_mesh_quantization");
+  auto hulls_of = [](const PackResult& p) {
+    GltfDocument d;
+    Result<Scene> s = ReadPackedGltf(p.glb.data(), p.glb.size(), "p.glb", "", &d);
+    EXPECT_TRUE(s.ok());
+    Result<std::vector<CollisionHull>> h = ReadCollisionHulls(d, "p.glb");
+    EXPECT_TRUE(h.ok());
+    std::vector<std::vector<float>> points;
+    for (const CollisionHull& c : h.value()) points.push_back(c.hull.positions);
+    return points;
+  };
+  const std::vector<std::vector<float>> a = hulls_of(plain.value());
+  EXPECT_GT(a.size(), 1u);
+  EXPECT_EQ(a, hulls_of(fallback.value()));
+}
+
 TEST(Pack, KhrPhysicsForm) {
   PackOptions options = FastOptions();
   options.glb.physics = PhysicsForm::kKhr;
