@@ -20,6 +20,7 @@ PACKAGES=(
   ignition-tools
   libassimp-dev
   libbullet-dev
+  libbullet-extras-dev
   libclang-rt-14-dev
   libdraco-dev
   libeigen3-dev

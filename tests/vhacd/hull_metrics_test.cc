@@ -108,6 +108,7 @@ TEST(HullMetricsTest, ExactHullsScoreZeroAndAnInflatedHullItsOffset) {
   EXPECT_NEAR(cracked.hulls_to_mesh, 0.25 / std::sqrt(3.0), 1e-3);
   EXPECT_NEAR(cracked.mesh_to_hulls, 0.25 / std::sqrt(3.0), 1e-3);  // the middle of the faces
   EXPECT_NEAR(cracked.iou, 0.5, 0.01);
+  EXPECT_EQ(cracked.solid_iou, cracked.iou);  // the same ratio for a closed mesh
   // Inflated by 0.1 on every side: its corners are 0.1 * sqrt(3) away, a tenth of the diagonal.
   const HullMetrics big = m.Measure({Box(-0.1, -0.1, -0.1, 1.1, 1.1, 1.1)});
   EXPECT_NEAR(big.hulls_to_mesh, 0.1, 1e-9);
@@ -126,6 +127,8 @@ TEST(HullMetricsTest, OpenMeshSolidByWindingNumber) {
   const HullMetrics r = m.Measure({Box(0, 0, 0, 1, 1, 1)});
   EXPECT_LT(r.iou, 0.0);
   EXPECT_GT(r.coverage, 0.999);
+  // Against the winding-number solid (the box closed over its missing face): nearly all of it.
+  EXPECT_GT(r.solid_iou, 0.75);
   EXPECT_GT(m.solid_point_count(), 40000u * 3 / 4);
   // Only the lower half covered: about half of the solid.
   EXPECT_NEAR(m.Measure({Box(0, 0, 0, 1, 1, 0.5)}).coverage,

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -280,6 +281,15 @@ void AddPackOptions(CliArgs& cli, PackOptions* options) {
               o.glb.physics = v == "omi" ? PhysicsForm::kOmi : PhysicsForm::kKhr;
               return std::string();
             });
+  cli.Value("--method", "vhacd|hacd",
+            "decomposer: V-HACD 2.0 (voxels, default) or HACD (surface clustering,\n"
+            "testHACD's recommended line 2 100 0 1 1 30 2000; open and thin shapes)",
+            [&o](const std::string& v) {
+              if (v != "vhacd" && v != "hacd") return "takes vhacd or hacd, not '" + v + "'";
+              o.collision.method =
+                  v == "hacd" ? DecompositionMethod::kHacd : DecompositionMethod::kVhacd;
+              return std::string();
+            });
   cli.Value("--quality", "default|high",
             "decomposition preset (default: V-HACD 2.0's, hulls merged while they\n"
             "stick out by at most 3 % of the diagonal, at most 24 vertices per hull);\n"
@@ -292,7 +302,15 @@ void AddPackOptions(CliArgs& cli, PackOptions* options) {
       .First();
   cli.Int("--resolution", "N", 10000, 64000000, &p.resolution, "decomposition voxel count");
   cli.Int("--max-hulls", "N", 0, 100000, &p.max_convex_hulls, "most hulls per mesh (0: no limit)");
-  cli.Int("--max-vertices", "N", 4, 1024, &p.max_vertices_per_hull, "most vertices per hull");
+  cli.Value("--max-vertices", "N", "most vertices per hull (4-1024)", [&o](const std::string& v) {
+    char* end = nullptr;
+    const long n = std::strtol(v.c_str(), &end, 10);
+    if (v.empty() || *end != '\0' || n < 4 || n > 1024)
+      return "takes a whole number in 4-1024, not '" + v + "'";
+    o.collision.parameters.max_vertices_per_hull = static_cast<uint32_t>(n);
+    o.collision.hacd_parameters.max_vertices_per_hull = static_cast<uint32_t>(n);
+    return std::string();
+  });
   cli.Double("--concavity", "F", 0, 1, &p.concavity,
              "largest concavity of a part, fraction of the diagonal");
 }
