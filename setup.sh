@@ -88,10 +88,13 @@ build_web() {
   command -v emcc >/dev/null || { log "emcc not found; skipping the WebAssembly decoder (web/)"; return 0; }
   log "building the WebAssembly decoder (web/ -> samples/web/dist)"
   bash web/build_wasm.sh "$BUILD_DIR/web-wasm" >/dev/null || { log "WebAssembly build failed"; return 0; }
-  local enc="$BUILD_DIR/tools/test_o3dgc/test_o3dgc" ref="$BUILD_DIR/tests/web/web_decode_ref"
-  if [ -x "$enc" ] && [ -x "$ref" ] && command -v node >/dev/null; then
-    node tests/web/make_glb.mjs --encoder "$enc" --ref "$ref" --mesh samples/torus.obj \
-      --out samples/web/dist/torus.glb >&2 || log "could not make samples/web/dist/torus.glb"
+  # The sample page's assets, made by `hullpack pack`: the torus and a generated mug.
+  local hullpack="$BUILD_DIR/tools/hullpack/hullpack"
+  if [ -x "$hullpack" ] && command -v node >/dev/null; then
+    { "$hullpack" pack samples/torus.obj -o samples/web/dist/torus.glb --force --quiet &&
+      node samples/web/make_mug.mjs samples/web/dist/mug.obj &&
+      "$hullpack" pack samples/web/dist/mug.obj -o samples/web/dist/mug.glb --force --quiet; } >&2 ||
+      log "could not make the sample page's packed assets (samples/web/dist)"
   fi
 }
 

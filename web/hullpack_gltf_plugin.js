@@ -1,8 +1,8 @@
 // hullpack_gltf_plugin.js: three.js GLTFLoader plugin for hullpack's packed GLB (docs/packed-gltf.md):
 //  - HULLPACK_mesh_compression: primitives whose attributes and indices come from an o3dgc stream;
 //  - OMI_physics_shape / OMI_physics_body (or the KHR_physics_rigid_bodies draft): convex collision
-//    hulls, exposed as data in gltf.userData.hullpackHulls and as hidden wireframe meshes under
-//    their collider nodes.
+//    hulls (plain glTF, no decoder needed), exposed as data in gltf.userData.hullpackHulls and as
+//    hidden meshes under their collider nodes.
 //
 //   import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 //   import { createDecoder } from './hullpack_decoder.js';
@@ -19,8 +19,9 @@
 // with the decoded arrays; everything else (materials, skins, bounds from accessor min/max) is
 // three's normal path. decodePrimitive(primitiveDef) is also available and returns a BufferGeometry.
 import {
-  BufferAttribute, BufferGeometry, Mesh, MeshBasicMaterial, Group,
+  BufferAttribute, BufferGeometry, Mesh, MeshBasicMaterial, Group, Vector3,
 } from 'three';
+import { ConvexGeometry } from 'three/addons/geometries/ConvexGeometry.js';
 import { selectGroup } from './hullpack_decoder.js';
 
 export const EXTENSION_NAME = 'HULLPACK_mesh_compression';
@@ -40,7 +41,7 @@ const COMPONENT_LIMITS = {
 };
 
 // Converts decoded values to the accessor's component type as the C++ reader does
-// (tools/gltf/packed_glb_reader.cc): floats as they are; normalized integers scaled by the type's
+// (tools/packed/packed_glb_reader.cc): floats as they are; normalized integers scaled by the type's
 // maximum and rounded half away from zero; plain integers only when whole. A value the type cannot
 // hold is an error, not a wrapped number.
 function toAccessorArray(values, accessorDef, where) {
@@ -179,17 +180,23 @@ export class HullpackMeshCompressionPlugin {
     }
   }
 
-  // Collision hulls: gltf.userData.hullpackHulls = [{nodeIndex, node, shapeIndex, meshIndex, type,
-  // positions: Float32Array, indices: Uint32Array, mesh}], each mesh a hidden wireframe child of its
-  // collider node (toggle with setHullsVisible). Colliders come in either form `hullpack pack`
-  // writes (docs/packed-gltf.md): OMI_physics_body -> OMI_physics_shape convex/trimesh shapes, or
-  // the KHR_physics_rigid_bodies draft's mesh geometry (convexHull true -> type 'convex');
-  // shapeIndex is undefined for the latter.
+  // Collision hulls: gltf.userData.hullpackHulls = [{nodeIndex, node, bodyNodeIndex, shapeIndex,
+  // meshIndex, type, points, positions, indices, mesh}], one per collider node, in node order.
+  // Colliders come in either form `hullpack pack` writes (docs/packed-gltf.md): OMI_physics_body ->
+  // OMI_physics_shape convex/trimesh shapes, or KHR_physics_rigid_bodies collider geometry (the
+  // draft's `node`, or the earlier `mesh`; convexHull true -> type 'convex'); shapeIndex is
+  // undefined for the latter. `points` (Float32Array, 3 per vertex) are the hull's vertices in its
+  // body node's space (the collider node's transform applied: that dequantizes the
+  // KHR_mesh_quantization hulls), what a physics engine is given; `positions`/`indices` are the
+  // displayed mesh in the collider node's space (for a POINTS hull, the convex hull of its points).
+  // `mesh` is a hidden child of the collider node (toggle with setHullsVisible).
   async afterRoot(gltf) {
     const json = this.parser.json;
     const shapes = json.extensions?.OMI_physics_shape?.shapes || [];
     const hulls = [];
     const nodes = json.nodes || [];
+    const parents = new Map();
+    nodes.forEach((n, i) => (n.children || []).forEach((c) => parents.set(c, i)));
     for (let n = 0; n < nodes.length; ++n) {
       const omi = nodes[n].extensions?.OMI_physics_body?.collider;
       const khr = nodes[n].extensions?.KHR_physics_rigid_bodies?.collider?.geometry;
@@ -201,8 +208,8 @@ export class HullpackMeshCompressionPlugin {
         shapeIndex = omi.shape;
         type = shape?.type;
         meshIndex = type === 'convex' ? shape.convex?.mesh : type === 'trimesh' ? shape.trimesh?.mesh : undefined;
-      } else if (khr && khr.mesh !== undefined) {
-        meshIndex = khr.mesh;
+      } else if (khr && (khr.node !== undefined || khr.mesh !== undefined)) {
+        meshIndex = khr.node !== undefined ? nodes[khr.node]?.mesh : khr.mesh;
         type = khr.convexHull ? 'convex' : 'trimesh';
       } else {
         continue;
@@ -211,14 +218,36 @@ export class HullpackMeshCompressionPlugin {
       if (!meshDef || !meshDef.primitives?.length) continue;
       const prim = meshDef.primitives[0];
       const pos = await this.parser.getDependency('accessor', prim.attributes.POSITION);
+      // Quantized integers or floats, as stored (the attribute may be interleaved: padded elements).
+      const local = new Float32Array(pos.count * 3);
+      for (let i = 0; i < pos.count; ++i) {
+        local[i * 3] = pos.getX(i);
+        local[i * 3 + 1] = pos.getY(i);
+        local[i * 3 + 2] = pos.getZ(i);
+      }
+      let positions = local;
       let indices;
-      if (prim.indices !== undefined) {
+      if ((prim.mode ?? 4) === 0) {  // points: the hull of the points
+        const points = [];
+        for (let i = 0; i < local.length; i += 3) points.push(new Vector3(local[i], local[i + 1], local[i + 2]));
+        const hull = new ConvexGeometry(points);
+        positions = Float32Array.from(hull.getAttribute('position').array);
+        indices = Uint32Array.from({ length: positions.length / 3 }, (_, i) => i);
+      } else if (prim.indices !== undefined) {
         indices = Uint32Array.from((await this.parser.getDependency('accessor', prim.indices)).array);
       } else {
         indices = Uint32Array.from({ length: pos.count }, (_, i) => i);
       }
-      const positions = Float32Array.from(pos.array);
       const node = await this.parser.getDependency('node', n);
+      node.updateMatrix();
+      const points = new Float32Array(local.length);
+      const v = new Vector3();
+      for (let i = 0; i < local.length; i += 3) {
+        v.set(local[i], local[i + 1], local[i + 2]).applyMatrix4(node.matrix);
+        points[i] = v.x;
+        points[i + 1] = v.y;
+        points[i + 2] = v.z;
+      }
       const geometry = new BufferGeometry();
       geometry.setAttribute('position', new BufferAttribute(positions, 3));
       geometry.setIndex(new BufferAttribute(indices, 1));
@@ -235,7 +264,10 @@ export class HullpackMeshCompressionPlugin {
       group.visible = false;
       group.userData.hullpackHull = true;
       node.add(group);
-      hulls.push({ nodeIndex: n, node, shapeIndex, meshIndex, type, positions, indices, mesh: group });
+      hulls.push({
+        nodeIndex: n, node, bodyNodeIndex: parents.get(n), shapeIndex, meshIndex, type, points, positions,
+        indices, mesh: group,
+      });
     }
     gltf.userData.hullpackHulls = hulls;
     gltf.userData.hullpackStats = { ...this.stats };

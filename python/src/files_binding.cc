@@ -5,12 +5,12 @@
 
 #include "common/file_util.h"
 #include "gltf/external_images.h"
-#include "gltf/packed_glb_reader.h"
 #include "hullpack/cli_util.h"
 #include "hullpack/scene_summary.h"
 #include "io/scene_io.h"
 #include "mesh/flatten.h"
 #include "mesh/validate.h"
+#include "packed/packed_glb_reader.h"
 #include "pipeline/pack.h"
 #include "py_util.h"
 #include "robot/collision_export.h"

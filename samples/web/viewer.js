@@ -1,6 +1,6 @@
 // hullpack viewer: loads a packed GLB (HULLPACK_mesh_compression + OMI physics hulls) with three.js
 // and the WebAssembly o3dgc decoder, or a bare .s3d stream.
-// URL parameters: ?glb=URL (default dist/torus.glb) | ?stream=URL ; &worker=1 decodes in a Web
+// URL parameters: ?glb=URL (default dist/torus.glb; set-up also packs dist/mug.glb) | ?stream=URL ; &worker=1 decodes in a Web
 // Worker ; &wasm=URL of the .wasm (default dist/hullpack_decoder_wasm.wasm) ; &hulls=1.
 // The result is published as window.hullpackViewer.ready (a Promise of the figures shown).
 import * as THREE from 'three';
@@ -106,7 +106,8 @@ async function load() {
     });
     Object.assign(info, { vertices, triangles, min: box.min.toArray(), max: box.max.toArray() });
     info.hulls = gltf.userData.hullpackHulls.map((h) => ({
-      node: h.nodeIndex, vertices: h.positions.length / 3, triangles: h.indices.length / 3, ...bounds(h.positions),
+      node: h.nodeIndex, points: h.points.length / 3, vertices: h.positions.length / 3,
+      triangles: h.indices.length / 3, ...bounds(h.positions),
     }));
     const hullBox = document.getElementById('hulls');
     hullBox.checked = params.get('hulls') === '1';

@@ -11,11 +11,11 @@
 #include <fstream>
 #include <iterator>
 
-#include "../tools/pipeline/packed_glb_test_util.h"
+#include "../tools/packed/packed_glb_test_util.h"
 #include "common/test_shapes.h"
 #include "gltf/glb_reader.h"
 #include "gltf/gltf_document.h"
-#include "gltf/packed_glb_reader.h"
+#include "packed/packed_glb_reader.h"
 #include "pipeline/pack.h"
 
 namespace hullpack {

@@ -18,8 +18,8 @@
 #include <unordered_map>
 
 #include "convex_hull.h"  // vhacd/src: the reference hull for the dent depth of packed hulls
-#include "gltf/packed_glb_reader.h"
 #include "o3dgc/o3dgc.h"
+#include "packed/packed_glb_reader.h"
 #include "pipeline/mesh_codec.h"
 #include "pipeline/pack.h"
 #include "stability_cases.h"
@@ -146,6 +146,22 @@ struct HullCheck {
   std::string problem;   // empty when the hull is finite, closed, outward and in the box
   double convexity = 0;  // largest distance of a vertex above a face plane, / diagonal
 };
+
+// A hull whose points have no convex hull of positive volume: at least one point, every point
+// finite and inside the input's box grown by kHullBoxMargin.
+HullCheck CheckFlatHull(const std::vector<float>& points, const Box& input) {
+  HullCheck r;
+  if (points.size() < 3) r.problem = "no points";
+  for (size_t i = 0; i < points.size() && r.problem.empty(); ++i) {
+    const double v = points[i];
+    const double margin = kHullBoxMargin * input.Diagonal() + FloatUlp(v);
+    if (!std::isfinite(v))
+      r.problem = "non-finite vertex";
+    else if (v < input.lo[i % 3] - margin || v > input.hi[i % 3] + margin)
+      r.problem = "vertex outside the input's box";
+  }
+  return r;
+}
 
 // Finite, indices in range, every vertex used, closed (every directed edge once, with its
 // reverse), outward (non-negative volume), inside the input's box grown by kHullBoxMargin; the
@@ -435,8 +451,12 @@ Outcome Pack(const Case& c, const std::vector<float>& positions) {
     o.message = packed.status().message();
     return o;
   }
+  GltfDocument doc;
   Result<Scene> read =
-      ReadPackedGltf(packed->glb.data(), packed->glb.size(), "packed.glb", "", nullptr);
+      ReadPackedGltf(packed->glb.data(), packed->glb.size(), "packed.glb", "", &doc);
+  Result<std::vector<CollisionHull>> collision_hulls =
+      read.ok() ? ReadCollisionHulls(doc, "packed.glb")
+                : Result<std::vector<CollisionHull>>(read.status());
   const double seconds = Seconds(t0);
   EXPECT_TRUE(read.ok()) << read.status().ToString();
   if (!read.ok()) {
@@ -464,20 +484,39 @@ Outcome Pack(const Case& c, const std::vector<float>& positions) {
   for (size_t v = 0; v < render.vertex_count(); ++v)
     worst = std::max(worst, in.NearDistance(&render.positions[v * 3]));
   EXPECT_LE(worst, bound) << "render vertex beyond max_error x diagonal";
-  // Hulls: finite, closed, outward, and convex up to their quantization: the stored triangles are
-  // the decoder's rounding of convex hulls, so a face plane can be crossed (sliver faces tilt
-  // far) while no vertex lies deeper than 2 x hull quantization error inside the hull of the
-  // points (DentDepth). Both are reported; the face measure is the 1e-6 criterion of decompose.
+  // Hulls as an engine builds them (ReadCollisionHulls: the quantized points dequantized by their
+  // collider nodes): the convex hull of each hull's points must be finite, closed, outward and in
+  // the box, and no point may lie deeper than 2 x hull quantization error inside the hull of the
+  // points (DentDepth). The face measure (the 1e-6 criterion of decompose) is reported.
   const Box float_box(positions);
   const double diagonal = float_box.Diagonal();
   double convexity = 0, dent = 0;
   std::string problem;
-  for (size_t h = 1; h < meshes.size(); ++h) {
-    HullCheck check = CheckHull(meshes[h].positions, meshes[h].indices, float_box);
-    if (!check.problem.empty() && problem.empty())
-      problem = "hull " + std::to_string(h - 1) + ": " + check.problem;
-    convexity = std::max(convexity, check.convexity);
-    dent = std::max(dent, DentDepth(meshes[h].positions, diagonal));
+  EXPECT_TRUE(collision_hulls.ok()) << collision_hulls.status().ToString();
+  if (collision_hulls.ok()) {
+    EXPECT_EQ(collision_hulls->size(), hulls);
+    for (size_t h = 0; h < collision_hulls->size(); ++h) {
+      const std::vector<float>& points = collision_hulls.value()[h].hull.positions;
+      std::vector<vhacd::internal::Vec3> p;
+      for (size_t i = 0; i + 2 < points.size(); i += 3)
+        p.emplace_back(double(points[i]), double(points[i + 1]), double(points[i + 2]));
+      vhacd::internal::HullMesh built;
+      std::vector<double> corners;
+      std::vector<uint32_t> triangles;
+      if (vhacd::internal::ComputeConvexHull(p, -1, &built) == vhacd::internal::HullStatus::kOk) {
+        for (const vhacd::internal::Vec3& v : built.vertices)
+          corners.insert(corners.end(), {v.x(), v.y(), v.z()});
+        for (const auto& t : built.triangles) triangles.insert(triangles.end(), t.begin(), t.end());
+      }
+      // A hull thinner than its quantization step may come out flat (a flat input's hulls do):
+      // within the budget, and then only its points can be checked.
+      HullCheck check = triangles.empty() ? CheckFlatHull(points, float_box)
+                                          : CheckHull(corners, triangles, float_box);
+      if (!check.problem.empty() && problem.empty())
+        problem = "hull " + std::to_string(h) + ": " + check.problem;
+      convexity = std::max(convexity, check.convexity);
+      dent = std::max(dent, DentDepth(points, diagonal));
+    }
   }
   EXPECT_EQ(problem, "") << "packed hulls";
   const double quantization = report.meshes.empty() ? 0 : report.meshes[0].hull_quantization_error;

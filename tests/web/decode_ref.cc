@@ -1,4 +1,5 @@
-// web_decode_ref: decodes an o3dgc stream with the C++ library and prints what the browser test
+// web_decode_ref: decodes an o3dgc stream as a packed file's reader does (DecodePackedStream: the
+// library's decoder and the format's skin-weight rule) and prints what the browser test
 // compares against, as JSON on stdout:
 //   {"vertices":N,"triangles":T,"normals":bool,"float_attributes":[{"semantic":s,"dimension":d}],
 //    "int_attributes":[...],"min":[x,y,z],"max":[x,y,z],
@@ -19,6 +20,7 @@
 #include <vector>
 
 #include "o3dgc/o3dgc.h"
+#include "packed/packed_glb_format.h"
 
 namespace {
 
@@ -62,7 +64,7 @@ int main(int argc, char** argv) {
   const std::vector<uint8_t> data((std::istreambuf_iterator<char>(f)),
                                   std::istreambuf_iterator<char>());
   o3dgc::DecodedMesh m;
-  const o3dgc::Status s = o3dgc::Decode(data.data(), data.size(), o3dgc::DecodeOptions(), &m);
+  const o3dgc::Status s = hullpack::DecodePackedStream(data.data(), data.size(), &m);
   if (s != o3dgc::Status::kOk) {
     std::fprintf(stderr, "decode failed: %s\n", o3dgc::StatusName(s));
     return 1;
@@ -72,7 +74,7 @@ int main(int argc, char** argv) {
     for (int i = 0; i < timed_runs; ++i) {
       o3dgc::DecodedMesh r;
       const double t0 = CpuMs();
-      if (o3dgc::Decode(data.data(), data.size(), o3dgc::DecodeOptions(), &r) != o3dgc::Status::kOk)
+      if (hullpack::DecodePackedStream(data.data(), data.size(), &r) != o3dgc::Status::kOk)
         return 1;
       ms.push_back(CpuMs() - t0);
     }

@@ -1,10 +1,12 @@
-// make_glb.mjs: builds a packed GLB (docs/packed-gltf.md) for the web viewer and the browser test,
-// from o3dgc streams written by test_o3dgc, until `hullpack pack` exists.
+// make_glb.mjs: builds a packed GLB (docs/packed-gltf.md) for the browser test from o3dgc streams
+// written by test_o3dgc (the C++ encoder of this build), with collision hulls in the earlier stream
+// form (HULLPACK_mesh_compression groups with compactVertices) that files of the previous release
+// carry and every reader keeps reading. The sample page shows `hullpack pack` outputs instead.
 //
 //   node tests/web/make_glb.mjs --encoder build/tools/test_o3dgc/test_o3dgc \
 //        --ref build/tests/web/web_decode_ref --mesh samples/torus.obj --out samples/web/dist/torus.glb
 //
-// The render mesh is one primitive with HULLPACK_mesh_compression; two box "hulls" around the two
+// The render mesh is one primitive with HULLPACK_mesh_compression; two boxes around the two
 // halves of the mesh (split along its longest axis) share one hull stream, one `group` each, and are
 // listed as OMI_physics_shape convex shapes referenced by OMI_physics_body colliders on child nodes.
 // Writes <out> and <out>.ref.json (what the C++ decoder gives for each primitive) and

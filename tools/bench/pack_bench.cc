@@ -21,10 +21,11 @@
 #include "bench/bench_util.h"
 #include "bench/draco_bridge.h"
 #include "common/cli_args.h"
-#include "gltf/packed_glb_reader.h"
 #include "io/scene_io.h"
 #include "o3dgc/o3dgc.h"
+#include "packed/packed_glb_reader.h"
 #include "pipeline/check_and_repair.h"
+#include "pipeline/mesh_codec.h"
 #include "pipeline/pack.h"
 
 namespace {

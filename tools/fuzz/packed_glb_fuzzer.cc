@@ -1,15 +1,27 @@
 // libFuzzer target: the GLB reader with the packed-file decoder (what `hullpack unpack` and every
-// GLB input go through). Any bytes give a Status or a consistent scene.
+// GLB input go through) and the collision-hull reader (`hullpack info`). Any bytes give a Status or
+// a consistent scene and hulls.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <vector>
 
-#include "gltf/packed_glb_reader.h"
+#include "packed/packed_glb_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  hullpack::GltfDocument doc;
   hullpack::Result<hullpack::Scene> scene =
-      hullpack::ReadPackedGltf(data, size, "fuzz.glb", "", nullptr);
+      hullpack::ReadPackedGltf(data, size, "fuzz.glb", "", &doc);
   if (!scene.ok()) return 0;
+  hullpack::Result<std::vector<hullpack::CollisionHull>> hulls =
+      hullpack::ReadCollisionHulls(doc, "fuzz.glb");
+  if (hulls.ok()) {
+    for (const hullpack::CollisionHull& h : hulls.value()) {
+      for (uint32_t index : h.hull.indices) {
+        if (index >= h.hull.vertex_count()) std::abort();
+      }
+    }
+  }
   for (const hullpack::Mesh& mesh : scene.value().meshes) {
     for (uint32_t index : mesh.indices) {
       if (index >= mesh.vertex_count()) std::abort();

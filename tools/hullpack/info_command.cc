@@ -9,8 +9,51 @@
 #include "hullpack/scene_summary.h"
 #include "io/scene_io.h"
 #include "mesh/validate.h"
+#include "packed/packed_glb_reader.h"
 
 namespace hullpack {
+
+namespace {
+
+// Hull meshes stored as points (docs/packed-gltf.md) have no triangles for the scene model: they
+// are reported as collision hulls instead of as empty meshes, and the reader's notes about them go.
+void LeaveOutPointHulls(const std::vector<CollisionHull>& hulls, Scene& scene) {
+  std::vector<bool> drop(scene.meshes.size(), false);
+  size_t dropped = 0;
+  for (const CollisionHull& h : hulls) {
+    const size_t m = static_cast<size_t>(h.gltf_mesh);
+    if (m < drop.size() && !drop[m] && scene.meshes[m].triangle_count() == 0) {
+      drop[m] = true;
+      ++dropped;
+    }
+  }
+  if (dropped == 0) return;
+  std::vector<int> remap(scene.meshes.size(), -1);
+  std::vector<Mesh> kept;
+  for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    if (drop[m]) continue;
+    remap[m] = static_cast<int>(kept.size());
+    kept.push_back(std::move(scene.meshes[m]));
+  }
+  scene.meshes = std::move(kept);
+  for (Node& node : scene.nodes) {
+    std::vector<int> meshes;
+    for (int m : node.meshes)
+      if (m >= 0 && static_cast<size_t>(m) < remap.size() && remap[m] >= 0)
+        meshes.push_back(remap[m]);
+    node.meshes = std::move(meshes);
+  }
+  std::vector<std::string> notes;
+  for (const std::string& line : scene.dropped) {
+    bool about_hull = line == "dropped " + std::to_string(dropped) + " point/line primitives";
+    for (size_t m = 0; m < drop.size() && !about_hull; ++m)
+      about_hull = drop[m] && line == "meshes[" + std::to_string(m) + "] has no triangles";
+    if (!about_hull) notes.push_back(line);
+  }
+  scene.dropped = std::move(notes);
+}
+
+}  // namespace
 
 int RunInfoCommand(const std::vector<std::string>& args) {
   std::vector<std::string> files;
@@ -36,19 +79,41 @@ int RunInfoCommand(const std::vector<std::string>& args) {
       return 1;
     }
   }
-  const SceneSummary summary = Summarize(scene.value());
   const FileFormat format = FormatFromExtension(path);
   Result<std::vector<uint8_t>> bytes = ReadFileBytes(path);
   const size_t file_size = bytes.ok() ? bytes.value().size() : 0;
+  // Collision hulls as a physics engine builds them (the collider nodes' shapes).
+  std::vector<CollisionHull> hulls;
+  if (bytes.ok() && format == FileFormat::kGlb) {
+    GltfDocument doc;
+    Result<Scene> read = ReadPackedGltf(bytes->data(), bytes->size(), path, "", &doc);
+    Result<std::vector<CollisionHull>> found =
+        read.ok() ? ReadCollisionHulls(doc, path)
+                  : Result<std::vector<CollisionHull>>(std::vector<CollisionHull>());
+    if (!found.ok()) {
+      std::fprintf(stderr, "hullpack info: %s\n", found.status().message().c_str());
+      return 1;
+    }
+    hulls = std::move(found.value());
+  }
+  LeaveOutPointHulls(hulls, scene.value());
+  const SceneSummary summary = Summarize(scene.value());
+  size_t hull_points = 0;
+  for (const CollisionHull& h : hulls) hull_points += h.hull.vertex_count();
   if (json) {
     nlohmann::json j = SummaryToJson(scene.value(), summary);
     j["file"] = path;
     j["format"] = FormatName(format);
     j["bytes"] = file_size;
+    j["collision_hulls"] = hulls.size();
+    j["collision_hull_points"] = hull_points;
     std::cout << j.dump(2) << "\n";
   } else {
     std::cout << path << ": " << FormatName(format) << ", " << file_size << " bytes\n"
               << SummaryToText(scene.value(), summary);
+    if (!hulls.empty())
+      std::cout << "  collision hulls " << hulls.size() << " (convex colliders), " << hull_points
+                << " points\n";
   }
   return 0;
 }

@@ -5,9 +5,9 @@
 
 #include "common/file_util.h"
 #include "gltf/glb_reader.h"
-#include "gltf/packed_glb_reader.h"
 #include "hullpack/cli_util.h"
 #include "io/scene_io.h"
+#include "packed/packed_glb_reader.h"
 
 namespace hullpack {
 int RunUnpackCommand(const std::vector<std::string>& args) {

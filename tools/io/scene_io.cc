@@ -2,13 +2,13 @@
 
 #include "common/file_util.h"
 #include "gltf/glb_writer.h"
-#include "gltf/packed_glb_reader.h"
 #include "io/assimp_reader.h"
 #include "io/obj_reader.h"
 #include "io/obj_writer.h"
 #include "io/off_format.h"
 #include "io/ply_writer.h"
 #include "io/wrl_format.h"
+#include "packed/packed_glb_reader.h"
 
 namespace hullpack {
 namespace {

@@ -22,16 +22,13 @@ Result<std::vector<uint8_t>> AssemblePackedGlb(Scene scene, std::vector<PackedMe
   streams.hulls_of.resize(n);
   for (size_t i = 0; i < n; ++i) {
     if (!packed[i].has_hulls) continue;
-    const int stream = static_cast<int>(streams.streams.size());
-    streams.streams.push_back(std::move(packed[i].hull_stream));
     for (size_t h = 0; h < packed[i].hulls.size(); ++h) {
       streams.hulls_of[i].push_back(static_cast<int>(decoded.meshes.size()));
       decoded.meshes.push_back(std::move(packed[i].hulls[h]));
       MeshSource source;
-      source.stream = stream;
       source.hull = true;
-      source.hull_group = static_cast<uint32_t>(h);
-      streams.sources.push_back(source);
+      source.hull_grid = std::move(packed[i].hull_grids[h]);
+      streams.sources.push_back(std::move(source));
     }
   }
   streams.hulls_of.resize(decoded.meshes.size());

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "common/status.h"
+#include "packed/packed_glb_writer.h"
 #include "pipeline/pack_mesh.h"
-#include "pipeline/packed_glb_writer.h"
 #include "scene/scene.h"
 
 namespace hullpack {

@@ -6,8 +6,6 @@
 #include <limits>
 #include <unordered_map>
 
-#include "gltf/skin_weights.h"
-
 namespace hullpack {
 namespace {
 
@@ -104,7 +102,7 @@ Result<Mesh> DecodeMesh(const uint8_t* data, size_t size, std::vector<uint32_t>*
   o3dgc::DecodedMesh d;
   o3dgc::StreamInfo local_info;
   if (!info) info = &local_info;
-  const o3dgc::Status st = o3dgc::Decode(data, size, o3dgc::DecodeOptions(), &d, info);
+  const o3dgc::Status st = DecodePackedStream(data, size, &d, info);
   if (st != o3dgc::Status::kOk) {
     return Status(StatusCode::kParseError,
                   name + ": compressed mesh stream: " + o3dgc::StatusName(st));
@@ -128,7 +126,6 @@ Result<Mesh> DecodeMesh(const uint8_t* data, size_t size, std::vector<uint32_t>*
       m.colors = std::move(a.values);
     } else if (a.semantic == o3dgc::Semantic::kWeight && a.dimension == 4) {
       m.weights = std::move(a.values);
-      NormalizeSkinWeights(m.weights.data(), n);  // as every decoder of packed files does
     } else if (a.semantic == o3dgc::Semantic::kGeneric && a.dimension == 4) {
       m.tangents = std::move(a.values);
     }

@@ -15,6 +15,7 @@
 
 #include "common/status.h"
 #include "o3dgc/o3dgc.h"
+#include "packed/packed_glb_format.h"
 #include "scene/scene.h"
 
 namespace hullpack {
@@ -36,20 +37,13 @@ struct MeshCodecSettings {
   o3dgc::ProgressFn progress;
 };
 
-struct EncodedMesh {
-  std::vector<uint8_t> stream;
-  // glTF attribute name -> stream attribute id, in stream order.
-  std::vector<std::pair<std::string, int>> gltf_attributes;
-  o3dgc::StreamInfo info;
-};
-
 // Encodes every attribute of `mesh`. `groups` (one per triangle, or empty) are stored as the
 // stream's triangle groups; DecodeMesh returns them.
 Result<EncodedMesh> EncodeMesh(const Mesh& mesh, const std::vector<uint32_t>& groups,
                                const MeshCodecSettings& settings);
 
 // Decodes a stream into a mesh (name, material ids left empty) and its triangle groups. Skin
-// weights are normalized (NormalizeSkinWeights), as every decoder of packed files does. Streams of
+// weights are normalized, the packed format's decode rule (DecodePackedStream). Streams of
 // the original Open3DGC tool (StreamFormat::kOpen3dgc2013) carry OBJ-convention texture
 // coordinates: their v is flipped into the scene model's (glTF) convention. Safe on untrusted
 // bytes; `name` prefixes error messages. `info` (may be null) gets the part sizes.

@@ -1,5 +1,6 @@
 #include "pipeline/pack.h"
 
+#include <algorithm>
 #include <chrono>
 #include <functional>
 

@@ -7,7 +7,7 @@
 #include "common/parallel.h"
 #include "pipeline/collision.h"
 #include "pipeline/error_budget.h"
-#include "pipeline/hull_stream.h"
+#include "pipeline/hull_quantize.h"
 
 namespace hullpack {
 namespace {
@@ -146,7 +146,7 @@ Status EncodeRenderMesh(const Mesh& mesh, const PackOptions& options, int thread
   return Status::Ok();
 }
 
-// The decomposition, all hulls in one stream (one group per hull) quantized to the hull budget.
+// The decomposition, all hulls on one grid within the hull budget, as plain quantized accessors.
 Status MakeHulls(const Mesh& mesh, const PackOptions& options, vhacd::Observer* progress,
                  PackedMesh& out) {
   MeshPackReport& r = out.report;
@@ -161,23 +161,24 @@ Status MakeHulls(const Mesh& mesh, const PackOptions& options, vhacd::Observer* 
   for (const Mesh& hull : set->hulls) r.hull_vertices += hull.vertex_count();
   const double diagonal = BoundingBoxDiagonal(mesh);
   const auto t1 = Clock::now();
-  Result<EncodedHulls> encoded =
-      EncodeHulls(set->hulls, SettingsFor(options), options.hull_error * diagonal);
-  if (!encoded.ok())
-    return Status(encoded.status().code(),
-                  "mesh '" + mesh.name + "': hulls: " + encoded.status().message());
+  Result<QuantizedHulls> quantized = QuantizeHulls(set->hulls, options.hull_error * diagonal);
+  if (!quantized.ok())
+    return Status(quantized.status().code(),
+                  "mesh '" + mesh.name + "': hulls: " + quantized.status().message());
   r.seconds_hull_encode = Seconds(t1);
-  r.hull_quantization_error = diagonal > 0 ? encoded->max_error / diagonal : 0;
-  r.hull_position_bits = encoded->position_bits;
-  r.hull_position_range = RangeModeName(encoded->position_range);
-  r.hull_bytes = encoded->encoded.stream.size();
+  r.hull_quantization_error = diagonal > 0 ? quantized->max_error / diagonal : 0;
+  r.hull_position_bits = quantized->position_bits;
+  r.hull_position_range = "grid";
   out.has_hulls = true;
-  out.hull_stream = std::move(encoded->encoded);
   for (size_t h = 0; h < set->hulls.size(); ++h) {
-    Mesh hull = std::move(encoded->decoded[h]);
+    Mesh hull = std::move(quantized->decoded[h]);
     hull.name = mesh.name + "_hull_" + std::to_string(h);
-    hull.material_ids.clear();
+    const HullGrid& grid = quantized->grids[h];
+    const bool wide =
+        !grid.local.empty() && *std::max_element(grid.local.begin(), grid.local.end()) > 255;
+    r.hull_bytes += hull.vertex_count() * (wide ? 8 : 4);
     out.hulls.push_back(std::move(hull));
+    out.hull_grids.push_back(std::move(quantized->grids[h]));
   }
   return Status::Ok();
 }

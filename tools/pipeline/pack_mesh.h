@@ -1,7 +1,7 @@
 // "Per mesh: decompose and encode": the pipeline stage after leaving out the unused. Each mesh gets
 // its render stream (the smallest within the position error budget, error_budget.h) and, when the
-// collision policy gives it hulls, its decomposition (collision.h) as one hull stream
-// (hull_stream.h). The render streams and decompositions of all meshes are independent tasks run
+// collision policy gives it hulls, its decomposition (collision.h) as quantized plain accessors
+// (hull_quantize.h). The render streams and decompositions of all meshes are independent tasks run
 // on the pipeline's threads, largest first; each writes only its own mesh's result, so the output
 // does not depend on the thread count.
 #ifndef HULLPACK_TOOLS_PIPELINE_PACK_MESH_H_
@@ -22,8 +22,8 @@ struct PackedMesh {
   Mesh decoded;          // as a decoder reads it back (name, collides; material ids = its groups)
   bool grouped = false;  // the stream has triangle groups (the mesh had material ids)
   bool has_hulls = false;
-  EncodedMesh hull_stream;  // one group per hull
-  std::vector<Mesh> hulls;  // hull h as a decoder extracts group h, named MESH_hull_h
+  std::vector<HullGrid> hull_grids;  // per hull: what the writer stores
+  std::vector<Mesh> hulls;           // per hull: the positions an engine computes, MESH_hull_h
 };
 
 // Packs every mesh of `scene`. `observer` (may be null) sees progress as fractions between `from`

@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "o3dgc/o3dgc.h"
+#include "packed/packed_glb_writer.h"
 #include "pipeline/check_and_repair.h"
 #include "pipeline/collision.h"
-#include "pipeline/packed_glb_writer.h"
 #include "pipeline/prune.h"
 #include "scene/scene.h"
 
@@ -49,7 +49,7 @@ struct MeshPackReport {
   std::string no_hulls_reason;    // why the mesh has no hulls, "" when it has some
   size_t hull_count = 0;
   size_t hull_vertices = 0;
-  size_t hull_bytes = 0;  // the hull stream
+  size_t hull_bytes = 0;  // the hulls' accessor data (quantized positions)
   int hull_position_bits = 0;
   std::string hull_position_range;
   double hull_concavity = -1;  // vhacd's report (fractions of the diagonal); -1 = not measured

@@ -36,6 +36,12 @@ check() {  # check NAME EXPECTED_EXIT STDERR_PATTERN -- command...
 check sample 0 "closed, manifold, 1 component, genus 1" -- "$bin" info "$src/samples/torus.obj"
 check sample-json 0 '"genus": 1' -- "$bin" info --json "$src/samples/torus.obj"
 check no-args 64 "usage" -- "$bin" info
+# Packed files list their collision hulls, in the current form and the earlier release's.
+"$bin" pack "$src/samples/torus.obj" -o "$tmp/torus.glb" --quiet
+check packed-hulls 0 "collision hulls [1-9][0-9]* (convex colliders)" -- "$bin" info "$tmp/torus.glb"
+check packed-hulls-json 0 '"collision_hulls": [1-9]' -- "$bin" info --json "$tmp/torus.glb"
+check pre-1.0-streams-refused 1 "HULLPACK_mesh_compression: stream: bad_version" -- \
+  "$bin" info "$src/tests/tools/packed/vectors/cup_hulls_in_stream_omi.glb"
 check missing 1 "$tmp/missing.obj: No such file" -- "$bin" info "$tmp/missing.obj"
 touch "$tmp/model.xyz"
 check unknown-format 1 "$tmp/model.xyz: unknown format '.xyz'" -- "$bin" info "$tmp/model.xyz"

@@ -10,8 +10,8 @@
 #include <map>
 
 #include "gltf/glb_reader.h"
-#include "gltf/packed_glb_reader.h"
 #include "mesh/topology.h"
+#include "packed/packed_glb_reader.h"
 
 namespace hullpack {
 namespace {
@@ -143,8 +143,25 @@ TEST(Pack, RoundTripKeepsGeometryWithinTheBudgetMaterialsSkinAndHierarchy) {
   ASSERT_EQ(out->skins.size(), 1u);
   EXPECT_EQ(out->nodes[0].local_transform[12], 10);
 
-  // Colliders: OMI shapes, one per hull, each a convex mesh, on children of the wheel's node.
   const nlohmann::json& json = doc.json();
+  // Colliders: OMI shapes, one per hull, each a convex mesh, on children of the wheel's node. The
+  // hulls are plain quantized points: no hullpack extension (KHR_mesh_quantization is required).
+  Result<GltfDocument> raw = DecodeGlbDocument(packed->glb.data(), packed->glb.size(), "p.glb");
+  ASSERT_TRUE(raw.ok());
+  EXPECT_EQ(raw->json()["extensionsRequired"],
+            nlohmann::json::array({kMeshCompressionExtension, "KHR_mesh_quantization"}));
+  Result<std::vector<CollisionHull>> hulls = ReadCollisionHulls(doc, "packed.glb");
+  ASSERT_TRUE(hulls.ok()) << hulls.status().ToString();
+  ASSERT_EQ(hulls->size(), r.meshes[0].hull_count);
+  for (size_t h = 0; h < hulls->size(); ++h) {
+    const CollisionHull& hull = hulls.value()[h];
+    EXPECT_EQ(hull.body_node, 1);
+    EXPECT_GE(hull.hull.vertex_count(), 4u) << h;
+    const nlohmann::json& prim = json["meshes"][hull.gltf_mesh]["primitives"][0];
+    EXPECT_FALSE(prim.contains("extensions"));
+    EXPECT_EQ(prim["mode"], 0);
+  }
+
   ASSERT_TRUE(json.contains("extensions"));
   const nlohmann::json& shapes = json["extensions"]["OMI_physics_shape"]["shapes"];
   ASSERT_EQ(shapes.size(), r.meshes[0].hull_count);
@@ -152,8 +169,7 @@ TEST(Pack, RoundTripKeepsGeometryWithinTheBudgetMaterialsSkinAndHierarchy) {
   for (int child : json["nodes"][1]["children"]) {
     const int shape = json["nodes"][child]["extensions"]["OMI_physics_body"]["collider"]["shape"];
     EXPECT_EQ(shapes[shape]["type"], "convex");
-    const int mesh = shapes[shape]["convex"]["mesh"];
-    EXPECT_TRUE(AnalyzeTopology(out->meshes[mesh]).closed);
+    EXPECT_GE(shapes[shape]["convex"]["mesh"].get<int>(), 1);
     ++colliders;
   }
   EXPECT_EQ(colliders, r.meshes[0].hull_count);
@@ -195,6 +211,34 @@ TEST(Pack, FallbackFilesReadWithoutTheExtension) {
   EXPECT_EQ(plain->meshes[0].indices, decoded->meshes[0].indices);
 }
 
+TEST(Pack, FallbackFilesWithHullsRequireNoExtension) {
+  // The hulls of a fallback file hold their grid integers as floats: no KHR_mesh_quantization,
+  // and an engine gets the same points as from the default file.
+  PackOptions options = FastOptions();
+  Result<PackResult> plain = PackScene(TestScene(), options);
+  options.glb.fallback = true;
+  Result<PackResult> fallback = PackScene(TestScene(), options);
+  ASSERT_TRUE(plain.ok() && fallback.ok());
+  Result<GltfDocument> doc = DecodeGlbDocument(fallback->glb.data(), fallback->glb.size(), "f.glb");
+  ASSERT_TRUE(doc.ok());
+  EXPECT_FALSE(doc->json().contains("extensionsRequired"));
+  for (const auto& name : doc->json()["extensionsUsed"])
+    EXPECT_NE(name.get<std::string>(), "KHR_mesh_quantization");
+  auto hulls_of = [](const PackResult& p) {
+    GltfDocument d;
+    Result<Scene> s = ReadPackedGltf(p.glb.data(), p.glb.size(), "p.glb", "", &d);
+    EXPECT_TRUE(s.ok());
+    Result<std::vector<CollisionHull>> h = ReadCollisionHulls(d, "p.glb");
+    EXPECT_TRUE(h.ok());
+    std::vector<std::vector<float>> points;
+    for (const CollisionHull& c : h.value()) points.push_back(c.hull.positions);
+    return points;
+  };
+  const std::vector<std::vector<float>> a = hulls_of(plain.value());
+  EXPECT_GT(a.size(), 1u);
+  EXPECT_EQ(a, hulls_of(fallback.value()));
+}
+
 TEST(Pack, KhrPhysicsForm) {
   PackOptions options = FastOptions();
   options.glb.physics = PhysicsForm::kKhr;
@@ -208,7 +252,14 @@ TEST(Pack, KhrPhysicsForm) {
   const nlohmann::json& geometry =
       json["nodes"][child]["extensions"]["KHR_physics_rigid_bodies"]["collider"]["geometry"];
   EXPECT_TRUE(geometry["convexHull"].get<bool>());
-  EXPECT_GE(geometry["mesh"].get<int>(), 2);
+  // The draft's current form: the collider's geometry names a node (outside the scene) holding the
+  // hull mesh; the collider node's transform dequantizes it.
+  const int holder = geometry["node"].get<int>();
+  EXPECT_GE(json["nodes"][holder]["mesh"].get<int>(), 2);
+  EXPECT_TRUE(json["nodes"][child].contains("scale"));
+  Result<std::vector<CollisionHull>> hulls = ReadCollisionHulls(doc.value(), "p.glb");
+  ASSERT_TRUE(hulls.ok()) << hulls.status().ToString();
+  EXPECT_EQ(hulls->size(), packed->report.meshes[0].hull_count);
 }
 
 TEST(Pack, KeepOrderAndExplicitBits) {

@@ -1,15 +1,15 @@
 // A real physics engine accepts the hulls as a packed file carries them: Bullet builds a compound
 // of convex hull shapes from them, drops the body on a plane, and it comes to rest where the mesh
 // says it should.
-#include <btBulletDynamicsCommon.h>
 #include <gtest/gtest.h>
 
+#include "bullet_drop.h"
 #include "test_torus.h"
 
 #include <cmath>
 #include <memory>
 
-#include "gltf/packed_glb_reader.h"
+#include "packed/packed_glb_reader.h"
 #include "pipeline/collision.h"
 #include "pipeline/pack.h"
 
@@ -18,70 +18,6 @@ namespace {
 
 // A torus lying in the xy plane (radius 1, tube 0.3).
 Mesh Torus() { return testing::TorusMesh(40, 16); }
-
-struct Drop {
-  double lowest_mesh_z = 0;  // of the input mesh, moved by the body's final transform
-  double speed = 0;          // linear speed at the end
-  double tilt = 0;           // angle (radians) between the body's z axis and the world's
-};
-
-// Drops the hull compound of `mesh` from `height` onto the plane z = 0 and simulates `seconds`.
-Drop DropOnPlane(const Mesh& mesh, const std::vector<Mesh>& hulls, double height, double seconds) {
-  btDefaultCollisionConfiguration config;
-  btCollisionDispatcher dispatcher(&config);
-  btDbvtBroadphase broadphase;
-  btSequentialImpulseConstraintSolver solver;
-  btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &config);
-  world.setGravity(btVector3(0, 0, -9.81));
-
-  btStaticPlaneShape plane(btVector3(0, 0, 1), 0);
-  btRigidBody ground(btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &plane));
-  world.addRigidBody(&ground);
-
-  btCompoundShape compound;
-  std::vector<std::unique_ptr<btConvexHullShape>> parts;
-  for (const Mesh& hull : hulls) {
-    auto shape = std::make_unique<btConvexHullShape>();
-    for (size_t v = 0; v < hull.vertex_count(); ++v) {
-      shape->addPoint(
-          btVector3(hull.positions[v * 3], hull.positions[v * 3 + 1], hull.positions[v * 3 + 2]),
-          false);
-    }
-    shape->recalcLocalAabb();
-    shape->setMargin(0.001f);
-    btTransform identity;
-    identity.setIdentity();
-    compound.addChildShape(identity, shape.get());
-    parts.push_back(std::move(shape));
-  }
-  const btScalar mass = 1;
-  btVector3 inertia;
-  compound.calculateLocalInertia(mass, inertia);
-  btTransform start;
-  start.setIdentity();
-  start.setOrigin(btVector3(0, 0, height));
-  btDefaultMotionState motion(start);
-  btRigidBody body(btRigidBody::btRigidBodyConstructionInfo(mass, &motion, &compound, inertia));
-  world.addRigidBody(&body);
-  for (int step = 0; step < static_cast<int>(seconds * 240); ++step)
-    world.stepSimulation(1.0 / 240, 1, 1.0 / 240);
-
-  Drop d;
-  btTransform end;
-  motion.getWorldTransform(end);
-  d.lowest_mesh_z = 1e300;
-  for (size_t v = 0; v < mesh.vertex_count(); ++v) {
-    const btVector3 p = end * btVector3(mesh.positions[v * 3], mesh.positions[v * 3 + 1],
-                                        mesh.positions[v * 3 + 2]);
-    d.lowest_mesh_z = std::min<double>(d.lowest_mesh_z, p.z());
-  }
-  d.speed = body.getLinearVelocity().length();
-  const btVector3 up = end.getBasis() * btVector3(0, 0, 1);
-  d.tilt = std::acos(std::min<btScalar>(1, std::max<btScalar>(-1, up.z())));
-  world.removeRigidBody(&body);
-  world.removeRigidBody(&ground);
-  return d;
-}
 
 // The hulls as a packed file carries them: decomposed with pack's defaults, quantized to the hull
 // budget, welded, compressed, and read back from the GLB.
@@ -97,14 +33,18 @@ std::vector<Mesh> PackedHulls(const Mesh& mesh) {
   Result<Scene> read =
       ReadPackedGltf(packed->glb.data(), packed->glb.size(), "torus.glb", "", &doc);
   if (!read.ok()) return {};
-  return std::vector<Mesh>(read->meshes.begin() + 1, read->meshes.end());
+  Result<std::vector<CollisionHull>> hulls = ReadCollisionHulls(doc, "torus.glb");
+  if (!hulls.ok()) return {};
+  std::vector<Mesh> out;
+  for (CollisionHull& h : hulls.value()) out.push_back(std::move(h.hull));
+  return out;
 }
 
 TEST(Physics, BulletRestsTheTorusFlatOnThePlane) {
   const Mesh mesh = Torus();
   const std::vector<Mesh> hulls = PackedHulls(mesh);
   ASSERT_GT(hulls.size(), 2u);
-  const Drop d = DropOnPlane(mesh, hulls, 2.0, 4.0);
+  const testing::Drop d = testing::DropOnPlane(mesh, hulls, 2.0, 4.0);
   // The mesh's lowest point touches the plane: hulls may stick out by their concavity (a few
   // thousandths of the 2.6 diagonal) and the collision margin is 0.001.
   EXPECT_NEAR(d.lowest_mesh_z, 0.0, 0.02);

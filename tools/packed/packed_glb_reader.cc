@@ -1,4 +1,4 @@
-#include "gltf/packed_glb_reader.h"
+#include "packed/packed_glb_reader.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,8 +12,8 @@
 #include "gltf/buffer_compaction.h"
 #include "gltf/glb_reader.h"
 #include "gltf/json_members.h"
-#include "gltf/skin_weights.h"
 #include "o3dgc/o3dgc.h"
+#include "packed/packed_glb_format.h"
 
 namespace hullpack {
 namespace {
@@ -114,14 +114,8 @@ class Inflater {
     if (offset > bin.size() || length > bin.size() - offset)
       return Error("stream bufferView lies outside the binary chunk");
     DecodedStream d;
-    const o3dgc::Status st =
-        o3dgc::Decode(bin.data() + offset, length, o3dgc::DecodeOptions(), &d.mesh);
+    const o3dgc::Status st = DecodePackedStream(bin.data() + offset, length, &d.mesh);
     if (st != o3dgc::Status::kOk) return Error(std::string("stream: ") + o3dgc::StatusName(st));
-    for (o3dgc::DecodedFloatAttribute& a :
-         d.mesh.float_attributes) {  // the format's one decode rule
-      if (a.semantic == o3dgc::Semantic::kWeight && a.dimension == 4)
-        NormalizeSkinWeights(a.values.data(), a.values.size() / 4);
-    }
     // The attribute table points into the map node, which stays put.
     budget_ += DecodedBytes(d.mesh);
     DecodedStream& s = streams_.emplace(view, std::move(d)).first->second;
@@ -384,6 +378,255 @@ Result<Scene> ReadPackedGltf(const uint8_t* data, size_t size, const std::string
   Result<Scene> scene = DecodeGltfDocument(doc.value(), name, options);
   if (scene.ok() && inflated) *inflated = std::move(doc.value());
   return scene;
+}
+
+}  // namespace hullpack
+
+namespace hullpack {
+namespace {
+
+// The mesh a collider node's convex shape uses, or -1 when the node has no convex collider.
+Result<int64_t> ColliderMesh(const nlohmann::json& json, const nlohmann::json& node,
+                             const std::string& where) {
+  if (!node.is_object() || !node.contains("extensions") || !node["extensions"].is_object())
+    return int64_t(-1);
+  const nlohmann::json& ext = node["extensions"];
+  auto integer = [](const nlohmann::json& obj, const char* key) -> int64_t {
+    if (!obj.is_object() || !obj.contains(key) || !obj[key].is_number_integer()) return -1;
+    return obj[key].get<int64_t>();
+  };
+  auto array_item = [](const nlohmann::json& obj, const char* key,
+                       int64_t i) -> const nlohmann::json* {
+    if (i < 0 || !obj.is_object() || !obj.contains(key) || !obj[key].is_array() ||
+        static_cast<uint64_t>(i) >= obj[key].size())
+      return nullptr;
+    return &obj[key][static_cast<size_t>(i)];
+  };
+  if (ext.contains("OMI_physics_body")) {
+    const nlohmann::json& body = ext["OMI_physics_body"];
+    if (!body.is_object() || !body.contains("collider")) return int64_t(-1);
+    const int64_t shape = integer(body["collider"], "shape");
+    const nlohmann::json* shapes = json.contains("extensions") && json["extensions"].is_object() &&
+                                           json["extensions"].contains("OMI_physics_shape")
+                                       ? &json["extensions"]["OMI_physics_shape"]
+                                       : nullptr;
+    const nlohmann::json* s = shapes ? array_item(*shapes, "shapes", shape) : nullptr;
+    if (!s) return Status(StatusCode::kParseError, where + ": collider shape does not exist");
+    if (!s->is_object() || s->value("type", std::string()) != "convex") return int64_t(-1);
+    const int64_t mesh = s->contains("convex") ? integer((*s)["convex"], "mesh") : -1;
+    if (mesh < 0) return Status(StatusCode::kParseError, where + ": convex shape has no mesh");
+    return mesh;
+  }
+  if (ext.contains("KHR_physics_rigid_bodies")) {
+    const nlohmann::json& body = ext["KHR_physics_rigid_bodies"];
+    if (!body.is_object() || !body.contains("collider") || !body["collider"].is_object() ||
+        !body["collider"].contains("geometry"))
+      return int64_t(-1);
+    const nlohmann::json& geometry = body["collider"]["geometry"];
+    const int64_t mesh = integer(geometry, "mesh");  // earlier draft: the mesh itself
+    if (mesh >= 0) return mesh;
+    const nlohmann::json* holder = array_item(json, "nodes", integer(geometry, "node"));
+    if (!holder) return int64_t(-1);
+    const int64_t held = integer(*holder, "mesh");
+    if (held < 0)
+      return Status(StatusCode::kParseError, where + ": collider geometry node has no mesh");
+    return held;
+  }
+  return int64_t(-1);
+}
+
+// The node's local transform applied to `p`, in double precision.
+void Transform(const nlohmann::json& node, const double p[3], double out[3]) {
+  auto numbers = [&](const char* key, double* v, size_t n) {
+    if (!node.contains(key) || !node[key].is_array() || node[key].size() != n) return;
+    for (size_t i = 0; i < n; ++i)
+      if (node[key][i].is_number()) v[i] = node[key][i].get<double>();
+  };
+  if (node.contains("matrix")) {
+    double m[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    numbers("matrix", m, 16);
+    for (int r = 0; r < 3; ++r)
+      out[r] = m[r] * p[0] + m[4 + r] * p[1] + m[8 + r] * p[2] + m[12 + r];
+    return;
+  }
+  double t[3] = {0, 0, 0}, q[4] = {0, 0, 0, 1}, s[3] = {1, 1, 1};
+  numbers("translation", t, 3);
+  numbers("rotation", q, 4);
+  numbers("scale", s, 3);
+  const double v[3] = {p[0] * s[0], p[1] * s[1], p[2] * s[2]};
+  // v + 2 w (u x v) + 2 u x (u x v), u = (x, y, z), w the quaternion's scalar part.
+  const double u[3] = {q[0], q[1], q[2]}, w = q[3];
+  const double c[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                       u[0] * v[1] - u[1] * v[0]};
+  const double cc[3] = {u[1] * c[2] - u[2] * c[1], u[2] * c[0] - u[0] * c[2],
+                        u[0] * c[1] - u[1] * c[0]};
+  for (int k = 0; k < 3; ++k) out[k] = v[k] + 2 * (w * c[k] + cc[k]) + t[k];
+}
+
+// Reads accessor `index` of `doc` as doubles (components per element in *components), normalized
+// integers mapped as glTF says. Every offset and length is checked against the binary chunk.
+Status ReadAccessor(const GltfDocument& doc, int64_t index, const std::string& where,
+                    std::vector<double>* out, int* components) {
+  const nlohmann::json& json = doc.json();
+  auto bad = [&](const std::string& what) {
+    return Status(StatusCode::kParseError,
+                  where + ": accessors[" + std::to_string(index) + "]: " + what);
+  };
+  if (!json.contains("accessors") || !json["accessors"].is_array() || index < 0 ||
+      static_cast<uint64_t>(index) >= json["accessors"].size())
+    return bad("does not exist");
+  const nlohmann::json& a = json["accessors"][static_cast<size_t>(index)];
+  std::string type;
+  uint64_t ctype = 0, count = 0, offset = 0, view_index = 0;
+  bool normalized = false;
+  if (!gltf::GetStringMember(a, "type", &type) ||
+      !gltf::GetUintMember(a, "componentType", 0, &ctype) ||
+      !gltf::GetUintMember(a, "count", 0, &count) ||
+      !gltf::GetUintMember(a, "byteOffset", 0, &offset) ||
+      !gltf::GetBoolMember(a, "normalized", &normalized) ||
+      !gltf::GetUintMember(a, "bufferView", UINT64_MAX, &view_index))
+    return bad("a member has the wrong JSON type");
+  const int dims = gltf::ComponentCount(type);
+  const size_t csize = ctype <= 0xFFFF ? gltf::ComponentSize(static_cast<int>(ctype)) : 0;
+  if (dims == 0 || csize == 0) return bad("bad type or componentType");
+  if (view_index == UINT64_MAX || !json.contains("bufferViews") ||
+      view_index >= json["bufferViews"].size())
+    return bad("has no bufferView");
+  const nlohmann::json& v = json["bufferViews"][static_cast<size_t>(view_index)];
+  uint64_t view_offset = 0, view_length = 0, stride = 0, buffer = 0;
+  if (!gltf::GetUintMember(v, "byteOffset", 0, &view_offset) ||
+      !gltf::GetUintMember(v, "byteLength", 0, &view_length) ||
+      !gltf::GetUintMember(v, "byteStride", 0, &stride) ||
+      !gltf::GetUintMember(v, "buffer", 0, &buffer) || buffer != 0)
+    return bad("its bufferView is malformed or not on the binary chunk");
+  const uint64_t element = uint64_t(dims) * csize;
+  if (stride == 0) stride = element;
+  const std::vector<uint8_t>& bin = doc.binary();
+  if (view_offset > bin.size() || view_length > bin.size() - view_offset ||
+      (count > 0 &&
+       (offset > view_length || stride < element ||
+        (count - 1) > (view_length - offset - element) / stride || element > view_length - offset)))
+    return bad("lies outside its bufferView");
+  out->resize(count * dims);
+  *components = dims;
+  for (uint64_t i = 0; i < count; ++i) {
+    const uint8_t* e = bin.data() + view_offset + offset + i * stride;
+    for (int c = 0; c < dims; ++c) {
+      const uint8_t* p = e + c * csize;
+      double value = 0;
+      switch (ctype) {
+        case gltf::kFloat: {
+          float f;
+          std::memcpy(&f, p, 4);
+          value = f;
+          break;
+        }
+        case gltf::kUnsignedByte:
+          value = normalized ? p[0] / 255.0 : p[0];
+          break;
+        case gltf::kByte:
+          value = normalized ? std::max(int8_t(p[0]) / 127.0, -1.0) : int8_t(p[0]);
+          break;
+        case gltf::kUnsignedShort: {
+          uint16_t u;
+          std::memcpy(&u, p, 2);
+          value = normalized ? u / 65535.0 : u;
+          break;
+        }
+        case gltf::kShort: {
+          int16_t u;
+          std::memcpy(&u, p, 2);
+          value = normalized ? std::max(u / 32767.0, -1.0) : u;
+          break;
+        }
+        case gltf::kUnsignedInt: {
+          uint32_t u;
+          std::memcpy(&u, p, 4);
+          value = u;
+          break;
+        }
+        default:
+          return bad("unknown componentType");
+      }
+      (*out)[i * dims + c] = value;
+    }
+  }
+  return Status::Ok();
+}
+
+}  // namespace
+
+Result<std::vector<CollisionHull>> ReadCollisionHulls(const GltfDocument& doc,
+                                                      const std::string& name) {
+  std::vector<CollisionHull> out;
+  const nlohmann::json& json = doc.json();
+  if (!json.contains("nodes") || !json["nodes"].is_array()) return out;
+  const nlohmann::json& nodes = json["nodes"];
+  std::vector<int> parent(nodes.size(), -1);
+  for (size_t i = 0; i < nodes.size(); ++i) {
+    if (!nodes[i].is_object() || !nodes[i].contains("children") || !nodes[i]["children"].is_array())
+      continue;
+    for (const nlohmann::json& c : nodes[i]["children"]) {
+      if (c.is_number_integer() && c.get<int64_t>() >= 0 &&
+          static_cast<uint64_t>(c.get<int64_t>()) < nodes.size())
+        parent[static_cast<size_t>(c.get<int64_t>())] = static_cast<int>(i);
+    }
+  }
+  const size_t meshes =
+      json.contains("meshes") && json["meshes"].is_array() ? json["meshes"].size() : 0;
+  for (size_t i = 0; i < nodes.size(); ++i) {
+    const std::string where = name + ": nodes[" + std::to_string(i) + "]";
+    Result<int64_t> mesh = ColliderMesh(json, nodes[i], where);
+    if (!mesh.ok()) return mesh.status();
+    if (mesh.value() < 0) continue;
+    if (static_cast<uint64_t>(mesh.value()) >= meshes)
+      return Status(StatusCode::kParseError, where + ": collider mesh does not exist");
+    CollisionHull h;
+    h.body_node = parent[i];
+    h.collider_node = static_cast<int>(i);
+    h.gltf_mesh = static_cast<int>(mesh.value());
+    const nlohmann::json& m = json["meshes"][static_cast<size_t>(mesh.value())];
+    if (!m.is_object() || !m.contains("primitives") || !m["primitives"].is_array())
+      return Status(StatusCode::kParseError, where + ": collider mesh has no primitives");
+    for (const nlohmann::json& prim : m["primitives"]) {
+      int64_t position = -1, indices = -1;
+      uint64_t mode = gltf::kModeTriangles;
+      if (prim.is_object() && prim.contains("attributes") && prim["attributes"].is_object() &&
+          prim["attributes"].contains("POSITION") &&
+          prim["attributes"]["POSITION"].is_number_integer())
+        position = prim["attributes"]["POSITION"].get<int64_t>();
+      if (prim.is_object() && prim.contains("indices") && prim["indices"].is_number_integer())
+        indices = prim["indices"].get<int64_t>();
+      if (!gltf::GetUintMember(prim, "mode", gltf::kModeTriangles, &mode))
+        return Status(StatusCode::kParseError, where + ": collider primitive mode is malformed");
+      std::vector<double> p;
+      int dims = 0;
+      Status s = ReadAccessor(doc, position, where, &p, &dims);
+      if (!s.ok()) return s;
+      if (dims != 3) return Status(StatusCode::kParseError, where + ": POSITION is not VEC3");
+      const uint32_t base = static_cast<uint32_t>(h.hull.vertex_count());
+      for (size_t v = 0; v * 3 < p.size(); ++v) {
+        double q[3];
+        Transform(nodes[i], &p[v * 3], q);
+        for (int k = 0; k < 3; ++k) h.hull.positions.push_back(static_cast<float>(q[k]));
+      }
+      if (mode != gltf::kModeTriangles) continue;  // points: the engine builds the hull
+      std::vector<double> idx;
+      if (indices >= 0) {
+        s = ReadAccessor(doc, indices, where, &idx, &dims);
+        if (!s.ok()) return s;
+      } else {
+        for (size_t v = 0; v < p.size() / 3; ++v) idx.push_back(double(v));
+      }
+      for (double x : idx) {
+        if (!(x >= 0 && x < double(p.size() / 3)))
+          return Status(StatusCode::kParseError, where + ": collider index out of range");
+        h.hull.indices.push_back(base + static_cast<uint32_t>(x));
+      }
+    }
+    out.push_back(std::move(h));
+  }
+  return out;
 }
 
 }  // namespace hullpack

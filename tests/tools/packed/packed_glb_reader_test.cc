@@ -8,15 +8,16 @@
 #include <dirent.h>
 
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <string>
 #include <vector>
 
-#include "../pipeline/packed_glb_test_util.h"
 #include "../pipeline/test_torus.h"
 #include "gltf/glb_reader.h"
 #include "gltf/gltf_document.h"
-#include "gltf/packed_glb_reader.h"
+#include "packed/packed_glb_reader.h"
+#include "packed_glb_test_util.h"
 #include "pipeline/pack.h"
 
 namespace hullpack {
@@ -123,6 +124,63 @@ TEST(PackedGlbReader, StreamViewAndExtensionMembersOfTheWrongTypeAreParseErrors)
 }
 
 // Every file the fuzzers once crashed on must now give a Status (or a scene), in this build too.
+// The hulls of a packed torus, read through ReadCollisionHulls after `edit` changed the JSON.
+Result<std::vector<CollisionHull>> HullsAfter(const std::function<void(nlohmann::json&)>& edit) {
+  Scene scene;
+  scene.meshes.push_back(testing::TorusMesh(24, 12));
+  AddRootNodeForAllMeshes(scene, "torus");
+  PackOptions options;
+  options.collision.parameters.resolution = 20000;
+  Result<PackResult> packed = PackScene(std::move(scene), options);
+  if (!packed.ok()) return packed.status();
+  const std::vector<uint8_t> glb =
+      testing::RewriteGlb(packed->glb, [&](GltfDocument& d) { edit(d.json()); });
+  GltfDocument doc;
+  Result<Scene> read = ReadPackedGltf(glb.data(), glb.size(), "hostile.glb", "", &doc);
+  if (!read.ok()) return read.status();
+  return ReadCollisionHulls(doc, "hostile.glb");
+}
+
+TEST(PackedGlbReader, CollisionHullsOfHostileFilesAreParseErrors) {
+  Result<std::vector<CollisionHull>> intact = HullsAfter([](nlohmann::json&) {});
+  ASSERT_TRUE(intact.ok()) << intact.status().ToString();
+  ASSERT_GT(intact->size(), 1u);
+  const int collider = intact->at(0).collider_node;
+  const int mesh = intact->at(0).gltf_mesh;
+  const std::vector<std::pair<std::string, std::function<void(nlohmann::json&)>>> edits = {
+      {"shape out of range",
+       [&](nlohmann::json& j) {
+         j["nodes"][collider]["extensions"]["OMI_physics_body"]["collider"]["shape"] = 999;
+       }},
+      {"mesh out of range",
+       [&](nlohmann::json& j) {
+         j["extensions"]["OMI_physics_shape"]["shapes"][0]["convex"]["mesh"] = 999;
+       }},
+      {"accessor beyond its bufferView",
+       [&](nlohmann::json& j) {
+         const int a = j["meshes"][mesh]["primitives"][0]["attributes"]["POSITION"];
+         j["accessors"][a]["byteOffset"] = 1u << 30;
+       }},
+      {"accessor count too large",
+       [&](nlohmann::json& j) {
+         const int a = j["meshes"][mesh]["primitives"][0]["attributes"]["POSITION"];
+         j["accessors"][a]["count"] = 1u << 28;
+       }},
+      {"POSITION not VEC3",
+       [&](nlohmann::json& j) {
+         const int a = j["meshes"][mesh]["primitives"][0]["attributes"]["POSITION"];
+         j["accessors"][a]["type"] = "VEC2";
+       }},
+  };
+  for (const auto& [what, edit] : edits) {
+    Result<std::vector<CollisionHull>> hulls = HullsAfter(edit);
+    ASSERT_FALSE(hulls.ok()) << what;
+    EXPECT_EQ(hulls.status().code(), StatusCode::kParseError) << what;
+    EXPECT_NE(hulls.status().message().find("hostile.glb"), std::string::npos)
+        << hulls.status().ToString();
+  }
+}
+
 TEST(PackedGlbReader, FuzzFindingsAreHandled) {
   const std::string dir =
       std::string(HULLPACK_SOURCE_DIR) + "/tests/fuzz/regressions/packed_glb_fuzzer";

@@ -1,5 +1,5 @@
-#ifndef HULLPACK_TESTS_TOOLS_PIPELINE_PACKED_GLB_TEST_UTIL_H_
-#define HULLPACK_TESTS_TOOLS_PIPELINE_PACKED_GLB_TEST_UTIL_H_
+#ifndef HULLPACK_TESTS_TOOLS_PACKED_PACKED_GLB_TEST_UTIL_H_
+#define HULLPACK_TESTS_TOOLS_PACKED_PACKED_GLB_TEST_UTIL_H_
 
 // Helpers for tests that feed the packed-GLB reader edited files: pack a mesh without hulls, then
 // change the document and serialize it again.
@@ -43,4 +43,4 @@ std::vector<uint8_t> RewriteGlb(const std::vector<uint8_t>& glb, Edit edit) {
 }  // namespace testing
 }  // namespace hullpack
 
-#endif  // HULLPACK_TESTS_TOOLS_PIPELINE_PACKED_GLB_TEST_UTIL_H_
+#endif  // HULLPACK_TESTS_TOOLS_PACKED_PACKED_GLB_TEST_UTIL_H_

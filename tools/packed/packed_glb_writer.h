@@ -1,16 +1,18 @@
-// Assembles the packed GLB (docs/packed-gltf.md): the plain glTF of the DECODED scene, each
-// primitive pointing at its compressed stream through HULLPACK_mesh_compression, collision hulls as
-// OMI_physics_shape convex shapes on collider child nodes (or the KHR_physics_rigid_bodies draft).
+// Assembles the packed GLB (docs/packed-gltf.md): the plain glTF of the DECODED scene, each render
+// primitive pointing at its compressed stream through HULLPACK_mesh_compression; collision hulls as
+// plain accessors quantized with KHR_mesh_quantization (no hullpack extension), referenced as
+// OMI_physics_shape convex shapes by one collider child node per hull of the body node (or by
+// KHR_physics_rigid_bodies colliders, the draft's geometry.node form).
 // The mirror image is packed_glb_reader.h.
-#ifndef HULLPACK_TOOLS_PIPELINE_PACKED_GLB_WRITER_H_
-#define HULLPACK_TOOLS_PIPELINE_PACKED_GLB_WRITER_H_
+#ifndef HULLPACK_TOOLS_PACKED_PACKED_GLB_WRITER_H_
+#define HULLPACK_TOOLS_PACKED_PACKED_GLB_WRITER_H_
 
 #include <cstdint>
 #include <vector>
 
 #include "common/status.h"
-#include "gltf/packed_glb_reader.h"
-#include "pipeline/mesh_codec.h"
+#include "packed/packed_glb_format.h"
+#include "packed/packed_glb_reader.h"
 #include "scene/scene.h"
 
 namespace hullpack {
@@ -19,10 +21,10 @@ enum class PhysicsForm { kOmi, kKhr };
 
 // Where each mesh of the decoded scene comes from.
 struct MeshSource {
-  int stream = -1;       // index into PackedStreams::streams
+  int stream = -1;       // index into PackedStreams::streams (-1: plain accessors)
   bool grouped = false;  // the stream has triangle groups: primitives select theirs
-  bool hull = false;     // a collision hull: group = hull_group, compactVertices
-  uint32_t hull_group = 0;
+  bool hull = false;     // a collision hull: quantized plain accessors from hull_grid
+  HullGrid hull_grid;
 };
 
 struct PackedStreams {
@@ -43,4 +45,4 @@ Result<std::vector<uint8_t>> WritePackedGlb(const Scene& decoded, const PackedSt
 
 }  // namespace hullpack
 
-#endif  // HULLPACK_TOOLS_PIPELINE_PACKED_GLB_WRITER_H_
+#endif  // HULLPACK_TOOLS_PACKED_PACKED_GLB_WRITER_H_

@@ -1,0 +1,129 @@
+// engines_test.mjs: the drop tests in real engines, in headless Chromium (playwright-core + Debian's
+// /usr/bin/chromium), against the native Bullet reference (web_bullet_drop):
+//   node tests/web/engines_test.mjs --repo DIR --work DIR
+// --work holds omi.glb and khr.glb (`hullpack pack` of the torus, both collider forms), khr.ref.glb
+// (`hullpack unpack`) and omi.bullet.json / khr.bullet.json (web_bullet_drop). Every engine must
+// bring the torus to rest within 1 % of its height of Bullet's resting height, and be given exactly
+// the hull points the C++ reader reads. Nothing is fetched but the local server (node_modules).
+// Exit 0 pass, 1 fail, 77 skip.
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { startServer } from './static_server.mjs';
+
+const SKIP = 77;
+const a = {};
+for (let i = 2; i + 1 < process.argv.length; i += 2) a[process.argv[i].replace(/^--/, '')] = process.argv[i + 1];
+if (!a.repo || !a.work) {
+  console.error('usage: node engines_test.mjs --repo DIR --work DIR [--chromium PATH]');
+  process.exit(64);
+}
+const repo = path.resolve(a.repo);
+const work = path.resolve(a.work);
+const chromiumPath = a.chromium || '/usr/bin/chromium';
+
+let failures = 0;
+function check(cond, what) {
+  console.log(`${cond ? 'ok  ' : 'FAIL'} ${what}`);
+  if (!cond) failures += 1;
+}
+
+let playwright;
+try {
+  playwright = await import('playwright-core');
+} catch {
+  console.log('SKIP: playwright-core is not installed (npm ci at the repository root)');
+  process.exit(SKIP);
+}
+for (const pkg of ['three', '@babylonjs/core', '@babylonjs/loaders', '@babylonjs/havok', '@dimforge/rapier3d-compat']) {
+  if (!fs.existsSync(path.join(repo, 'node_modules', pkg))) {
+    console.log(`SKIP: npm package ${pkg} is not installed (npm ci at the repository root)`);
+    process.exit(SKIP);
+  }
+}
+if (!fs.existsSync(chromiumPath)) {
+  console.log(`SKIP: ${chromiumPath} not found (apt-get install chromium)`);
+  process.exit(SKIP);
+}
+
+// Same points: every hull, every coordinate, as float32 (the C++ reader prints 9 digits).
+function samePoints(engine, native) {
+  if (engine.length !== native.length) return `${engine.length} hulls != C++ ${native.length}`;
+  for (let h = 0; h < engine.length; ++h) {
+    const e = Float32Array.from(engine[h]);
+    const n = Float32Array.from(native[h]);
+    if (e.length !== n.length) return `hull ${h}: ${e.length / 3} points != C++ ${n.length / 3}`;
+    for (let i = 0; i < e.length; ++i) if (e[i] !== n[i]) return `hull ${h} value ${i}: ${e[i]} != C++ ${n[i]}`;
+  }
+  return '';
+}
+
+const { server, url } = await startServer({ root: repo, mounts: { '/__work/': work } });
+const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'hullpack-engines-'));
+const watchdog = setTimeout(() => {
+  console.log('FAIL: engine test timed out');
+  process.exit(1);
+}, 200000);
+let context;
+try {
+  context = await playwright.chromium.launchPersistentContext(profile, {
+    executablePath: chromiumPath,
+    headless: true,
+    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+      '--disable-background-networking', '--disable-component-update', '--disable-sync'],
+    timeout: 60000,
+  });
+  const outside = [];
+  await context.route((u) => !u.href.startsWith(url) && !u.href.startsWith('data:') && !u.href.startsWith('blob:'),
+    (route) => { outside.push(route.request().url()); route.abort(); });
+  const page = context.pages()[0] || await context.newPage();
+  page.setDefaultTimeout(120000);
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(String(e)));
+  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+  await page.goto(`${url}/tests/web/engines.html`);
+  await page.waitForFunction(() => window.engineTestsReady === true);
+
+  const runs = [
+    ['three.js + Rapier (OMI hulls)', 'omi', 'threeRapier'],
+    ['Babylon.js + Havok (KHR_physics hulls)', 'khr', 'babylonHavok'],
+  ];
+  for (const [name, form, fn] of runs) {
+    const bullet = JSON.parse(fs.readFileSync(path.join(work, `${form}.bullet.json`), 'utf8'));
+    const got = await page.evaluate(([f, glb, ref]) => window.engineTests[f](glb, ref),
+      [fn, `/__work/${form}.glb`, `/__work/${form}.ref.glb`]);
+    const off = Math.abs(got.restZ - bullet.restZ);
+    console.log(`${name}: rests at z ${got.restZ.toFixed(5)}, Bullet ${bullet.restZ.toFixed(5)}, ` +
+      `off by ${(100 * off / bullet.height).toFixed(3)} % of the height ${bullet.height.toFixed(4)}`);
+    check(off <= 0.01 * bullet.height, `${name}: rests within 1 % of its height of Bullet's resting height`);
+    check(got.speed < 0.01, `${name}: at rest (speed ${got.speed.toExponential(2)})`);
+    check(got.vertices > 0, `${name}: the render mesh decoded (${got.vertices} vertices)`);
+    const diff = samePoints(got.points, bullet.hulls);
+    check(diff === '', `${name}: the engine is given the C++ reader's hull points${diff ? `: ${diff}` : ''}`);
+    if (got.engineVertices) {
+      // Rapier's own hull: every vertex it kept is one of the file's points.
+      const ok = got.engineVertices.every((vs, h) => {
+        const pts = new Set();
+        for (let i = 0; i < bullet.hulls[h].length; i += 3) pts.add(Float32Array.from(bullet.hulls[h].slice(i, i + 3)).join());
+        for (let i = 0; i < vs.length; i += 3) if (!pts.has(Float32Array.from(vs.slice(i, i + 3)).join())) return false;
+        return vs.length >= 12;
+      });
+      check(ok, `${name}: every vertex of the engine's convex hulls is a C++ reader's point`);
+    }
+    if (got.samePositions !== undefined) {
+      check(got.samePositions, `${name}: Babylon's decoded render positions == C++ reader's, value for value`);
+    }
+  }
+  check(outside.length === 0, `nothing fetched from outside the local server${outside.length ? `: ${outside.join(' ')}` : ''}`);
+  check(errors.length === 0, `no page errors${errors.length ? `: ${errors.join(' | ')}` : ''}`);
+} catch (e) {
+  console.log(`FAIL: ${e && e.stack ? e.stack : e}`);
+  failures += 1;
+} finally {
+  clearTimeout(watchdog);
+  if (context) await context.close().catch(() => {});
+  server.close();
+  fs.rmSync(profile, { recursive: true, force: true });
+}
+console.log(failures ? `${failures} check(s) failed` : 'all engine checks passed');
+process.exit(failures ? 1 : 0);

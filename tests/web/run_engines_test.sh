@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# ctest driver of the engine drop tests:
+#   run_engines_test.sh REPO BUILD_DIR HULLPACK WEB_BULLET_DROP WORK_DIR
+# Packs samples/torus.obj in both collider forms, gets Bullet's resting height and the C++ reader's
+# hull points (web_bullet_drop) and the C++ decode of the KHR file (`hullpack unpack`), then runs
+# tests/web/engines_test.mjs. Exit 77 = skipped.
+set -euo pipefail
+[ $# -eq 5 ] || { echo "usage: run_engines_test.sh REPO BUILD_DIR HULLPACK WEB_BULLET_DROP WORK_DIR" >&2; exit 64; }
+repo=$1 build=$2 hullpack=$3 bullet=$4 work=$5
+skip() { echo "SKIP: $*"; exit 77; }
+
+command -v node >/dev/null || skip "node not installed (./setup.sh installs nodejs)"
+[ -x /usr/bin/chromium ] || skip "/usr/bin/chromium not installed (./setup.sh installs chromium)"
+if command -v emcc >/dev/null; then
+  bash "$repo/web/build_wasm.sh" "$build/web-wasm" >/dev/null
+elif [ ! -f "$repo/samples/web/dist/hullpack_decoder_wasm.wasm" ]; then
+  skip "emcc not installed and no prebuilt decoder in samples/web/dist (./setup.sh installs emscripten)"
+fi
+rm -rf "$work" && mkdir -p "$work"
+"$hullpack" pack "$repo/samples/torus.obj" -o "$work/omi.glb" --quiet
+"$hullpack" pack "$repo/samples/torus.obj" -o "$work/khr.glb" --physics khr --quiet
+"$hullpack" unpack "$work/khr.glb" -o "$work/khr.ref.glb" >/dev/null
+"$hullpack" unpack "$work/omi.glb" -o "$work/omi.ref.glb" >/dev/null
+"$bullet" "$work/omi.glb" >"$work/omi.bullet.json"
+"$bullet" "$work/khr.glb" >"$work/khr.bullet.json"
+exec node "$repo/tests/web/engines_test.mjs" --repo "$repo" --work "$work"

@@ -1,0 +1,50 @@
+// Reads the packed GLB (docs/packed-gltf.md) back: every HULLPACK_mesh_compression primitive gets
+// its data from its decoded stream, so the document becomes plain glTF that any reader understands
+// (and that keeps the collision-hull extensions). Mirror of packed_glb_writer.h; every GLB the
+// project reads goes through it.
+// Trust model: the file is hostile; every index, count and type is checked, streams are decoded
+// with the codec's own limits, and a problem is a Status naming the file and the object.
+#ifndef HULLPACK_TOOLS_PACKED_PACKED_GLB_READER_H_
+#define HULLPACK_TOOLS_PACKED_PACKED_GLB_READER_H_
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "common/status.h"
+#include "gltf/gltf_document.h"
+#include "packed/packed_glb_format.h"
+#include "scene/scene.h"
+
+namespace hullpack {
+
+// Decodes the compressed primitives of `doc` in place and drops the extension and the streams.
+// A document without the extension is left as it is.
+Status InflatePackedDocument(GltfDocument& doc, const std::string& name);
+
+// Parses a packed (or plain) GLB or .gltf, inflates it, and converts it into the scene model.
+// `inflated` (may be null) receives the plain document. `base_dir` resolves external buffers
+// (empty: external buffers are rejected).
+Result<Scene> ReadPackedGltf(const uint8_t* data, size_t size, const std::string& name,
+                             const std::string& base_dir, GltfDocument* inflated);
+
+// One collision hull as a physics engine builds it: the convex mesh of a collider node, in the
+// space of the collider's parent (the body node: the collider node's own transform applied, which
+// is how quantized hulls are dequantized).
+struct CollisionHull {
+  int body_node = -1;      // glTF node index of the collider's parent (-1: the collider is a root)
+  int collider_node = -1;  // glTF node index
+  int gltf_mesh = -1;      // the hull's mesh
+  Mesh hull;  // positions (body-node space, rounded to float); triangles when the file has them
+};
+
+// Every OMI_physics_body / KHR_physics_rigid_bodies collider of an inflated document `doc` (as
+// ReadPackedGltf returns it) whose shape is a convex mesh, in node order. Covers the hulls of every
+// release: compressed streams (inflated to float triangles) and quantized points (no triangles:
+// the hull of the points is the shape). The document is hostile: every index is checked.
+Result<std::vector<CollisionHull>> ReadCollisionHulls(const GltfDocument& doc,
+                                                      const std::string& name);
+
+}  // namespace hullpack
+
+#endif  // HULLPACK_TOOLS_PACKED_PACKED_GLB_READER_H_

@@ -1,0 +1,219 @@
+#include "packed/packed_glb_writer.h"
+
+#include "gltf/buffer_compaction.h"
+#include "gltf/glb_writer.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace hullpack {
+namespace {
+
+void StripData(nlohmann::json& accessor) {
+  accessor.erase("bufferView");
+  accessor.erase("byteOffset");
+}
+
+// Adds HULLPACK_mesh_compression to every primitive of `gltf_mesh`; without fallback the accessors
+// the stream supplies lose their data.
+void CompressPrimitives(GltfDocument& doc, int gltf_mesh, const MeshSource& source,
+                        const EncodedMesh& stream, int stream_view,
+                        const GltfSceneLayout::MeshLayout& layout, bool fallback) {
+  nlohmann::json& json = doc.json();
+  nlohmann::json& primitives = json["meshes"][gltf_mesh]["primitives"];
+  for (size_t p = 0; p < primitives.size(); ++p) {
+    nlohmann::json& prim = primitives[p];
+    nlohmann::json ext = {{"bufferView", stream_view}};
+    nlohmann::json attributes = nlohmann::json::object();
+    for (const auto& [name, id] : stream.gltf_attributes) {
+      if (!prim["attributes"].contains(name)) continue;
+      attributes[name] = id;
+      if (!fallback) StripData(json["accessors"][prim["attributes"][name].get<int>()]);
+    }
+    ext["attributes"] = std::move(attributes);
+    if (source.grouped && p < layout.primitives.size() && layout.primitives[p].material >= 0) {
+      ext["group"] = layout.primitives[p].material;
+    }
+    if (!fallback && prim.contains("indices"))
+      StripData(json["accessors"][prim["indices"].get<int>()]);
+    prim["extensions"][kMeshCompressionExtension] = std::move(ext);
+  }
+}
+
+// A hull is a mesh of one POINTS primitive whose only attribute is its quantized POSITION: a
+// convex shape is the hull of its points, which every physics engine computes itself, so triangles
+// would only add bytes. The grid integers are stored as VEC3 of unsigned bytes or shorts (padded to
+// 4-byte elements, KHR_mesh_quantization), or, in fallback files, which require no extension, as
+// floats holding the same integers. All hulls share one bufferView per component type.
+class HullAccessors {
+ public:
+  explicit HullAccessors(bool floats) : floats_(floats) {}
+
+  // Appends the hull's accessor and mesh; returns the glTF mesh index.
+  int Add(GltfDocument& doc, const HullGrid& grid) {
+    uint16_t lo[3] = {65535, 65535, 65535}, hi[3] = {0, 0, 0};
+    for (size_t i = 0; i < grid.local.size(); ++i) {
+      lo[i % 3] = std::min(lo[i % 3], grid.local[i]);
+      hi[i % 3] = std::max(hi[i % 3], grid.local[i]);
+    }
+    const Kind kind = floats_ ? kFloats : std::max({hi[0], hi[1], hi[2]}) > 255 ? kShorts : kBytes;
+    Pending& p = positions_[kind];
+    const size_t offset = p.bytes.size();
+    const size_t count = grid.local.size() / 3;
+    for (size_t v = 0; v < count; ++v) {
+      uint8_t element[12] = {};
+      for (int k = 0; k < 3; ++k) {
+        const uint16_t c = grid.local[v * 3 + k];
+        if (kind == kFloats) {
+          const float f = c;
+          std::memcpy(&element[k * 4], &f, 4);
+        } else if (kind == kShorts) {
+          element[k * 2] = static_cast<uint8_t>(c & 0xFF);
+          element[k * 2 + 1] = static_cast<uint8_t>(c >> 8);
+        } else {
+          element[k] = static_cast<uint8_t>(c);
+        }
+      }
+      p.bytes.insert(p.bytes.end(), element, element + kStride[kind]);
+    }
+    nlohmann::json accessor = {{"componentType", kComponentType[kind]},
+                               {"count", count},
+                               {"type", "VEC3"},
+                               {"min", {lo[0], lo[1], lo[2]}},
+                               {"max", {hi[0], hi[1], hi[2]}}};
+    if (offset != 0) accessor["byteOffset"] = offset;
+    const int index = doc.Append("accessors", std::move(accessor));
+    p.accessors.push_back(index);
+    return doc.Append(
+        "meshes",
+        {{"primitives", {{{"attributes", {{"POSITION", index}}}, {"mode", gltf::kModePoints}}}}});
+  }
+
+  // Writes the shared bufferViews, points the accessors at them, and declares
+  // KHR_mesh_quantization when integer positions were written.
+  void Finish(GltfDocument& doc) {
+    for (int kind = 0; kind < 3; ++kind) {
+      if (positions_[kind].accessors.empty()) continue;
+      const int view =
+          doc.AddBufferView(positions_[kind].bytes, 4, gltf::kArrayBuffer, kStride[kind]);
+      for (int a : positions_[kind].accessors) doc.json()["accessors"][a]["bufferView"] = view;
+    }
+    // The specification and the Khronos validator make it required.
+    if (!positions_[kBytes].accessors.empty() || !positions_[kShorts].accessors.empty())
+      doc.UseExtension("KHR_mesh_quantization", true);
+  }
+
+ private:
+  enum Kind { kBytes, kShorts, kFloats };
+  static constexpr size_t kStride[3] = {4, 8, 12};
+  static constexpr int kComponentType[3] = {gltf::kUnsignedByte, gltf::kUnsignedShort,
+                                            gltf::kFloat};
+  struct Pending {
+    std::vector<uint8_t> bytes;
+    std::vector<int> accessors;
+  };
+  bool floats_;
+  Pending positions_[3];
+};
+
+void AddColliders(GltfDocument& doc, const PackedStreams& streams, const GltfSceneLayout& layout,
+                  const std::vector<int>& hull_meshes, PhysicsForm physics) {
+  nlohmann::json& json = doc.json();
+  nlohmann::json shapes = nlohmann::json::array();
+  for (size_t m = 0; m < streams.hulls_of.size(); ++m) {
+    if (streams.hulls_of[m].empty()) continue;
+    std::vector<int> hull_refs;  // per hull: OMI shape, or KHR geometry node
+    for (int h : streams.hulls_of[m]) {
+      const int gltf_hull_mesh = hull_meshes[h];
+      if (physics == PhysicsForm::kOmi) {
+        hull_refs.push_back(static_cast<int>(shapes.size()));
+        shapes.push_back({{"type", "convex"}, {"convex", {{"mesh", gltf_hull_mesh}}}});
+      } else {  // a node outside the scene holds the mesh, so that nothing renders it
+        hull_refs.push_back(doc.Append("nodes", {{"mesh", gltf_hull_mesh}}));
+      }
+    }
+    for (int node : layout.mesh_nodes[m]) {
+      for (size_t k = 0; k < hull_refs.size(); ++k) {
+        const HullGrid& grid = streams.sources[streams.hulls_of[m][k]].hull_grid;
+        nlohmann::json collider = nlohmann::json::object();
+        if (grid.translation[0] != 0 || grid.translation[1] != 0 || grid.translation[2] != 0)
+          collider["translation"] = {grid.translation[0], grid.translation[1], grid.translation[2]};
+        if (grid.scale != 1) collider["scale"] = {grid.scale, grid.scale, grid.scale};
+        if (physics == PhysicsForm::kOmi) {
+          collider["extensions"]["OMI_physics_body"] = {{"collider", {{"shape", hull_refs[k]}}}};
+        } else {
+          collider["extensions"]["KHR_physics_rigid_bodies"] = {
+              {"collider", {{"geometry", {{"node", hull_refs[k]}, {"convexHull", true}}}}}};
+        }
+        const int child = doc.Append("nodes", std::move(collider));
+        json["nodes"][node]["children"].push_back(child);
+      }
+    }
+  }
+  if (physics == PhysicsForm::kOmi) {
+    if (shapes.empty()) return;
+    json["extensions"]["OMI_physics_shape"] = {{"shapes", std::move(shapes)}};
+    doc.UseExtension("OMI_physics_shape", false);
+    doc.UseExtension("OMI_physics_body", false);
+  } else if (!streams.hulls_of.empty()) {
+    bool any = false;
+    for (const auto& h : streams.hulls_of) any |= !h.empty();
+    if (any) doc.UseExtension("KHR_physics_rigid_bodies", false);
+  }
+}
+
+}  // namespace
+
+Result<std::vector<uint8_t>> WritePackedGlb(const Scene& decoded, const PackedStreams& streams,
+                                            const PackedGlbOptions& options) {
+  if (streams.sources.size() != decoded.meshes.size()) {
+    return Status(StatusCode::kInternal, "packed GLB: one stream source per mesh expected");
+  }
+  // The scene's glTF holds the render meshes; the hull meshes (last) get their own accessors.
+  size_t render_meshes = 0;
+  while (render_meshes < decoded.meshes.size() && !streams.sources[render_meshes].hull)
+    ++render_meshes;
+  for (size_t m = render_meshes; m < decoded.meshes.size(); ++m) {
+    if (!streams.sources[m].hull)
+      return Status(StatusCode::kInternal, "packed GLB: hull meshes must follow the render meshes");
+  }
+  GltfDocument doc;
+  GltfSceneLayout layout;
+  Status built;
+  if (render_meshes == decoded.meshes.size()) {
+    built = BuildGltfDocument(decoded, GlbWriteOptions(), &doc, &layout);
+  } else {
+    Scene render;
+    render.materials = decoded.materials;
+    render.images = decoded.images;
+    render.skins = decoded.skins;
+    render.nodes = decoded.nodes;
+    render.meshes.assign(decoded.meshes.begin(), decoded.meshes.begin() + render_meshes);
+    built = BuildGltfDocument(render, GlbWriteOptions(), &doc, &layout);
+  }
+  if (!built.ok()) return built;
+  std::vector<int> stream_views;
+  for (const EncodedMesh& s : streams.streams)
+    stream_views.push_back(doc.AddBufferView(s.stream, 4));
+  bool any = false;
+  for (size_t m = 0; m < render_meshes; ++m) {
+    const MeshSource& source = streams.sources[m];
+    if (source.stream < 0 || static_cast<size_t>(source.stream) >= streams.streams.size()) continue;
+    CompressPrimitives(doc, layout.meshes[m].gltf_mesh, source, streams.streams[source.stream],
+                       stream_views[source.stream], layout.meshes[m], options.fallback);
+    any = true;
+  }
+  if (any) doc.UseExtension(kMeshCompressionExtension, !options.fallback);
+  // Fallback files are for readers without extensions: their hulls must not require one.
+  HullAccessors hulls(options.fallback);
+  std::vector<int> hull_meshes(decoded.meshes.size(), -1);
+  for (size_t m = render_meshes; m < decoded.meshes.size(); ++m)
+    hull_meshes[m] = hulls.Add(doc, streams.sources[m].hull_grid);
+  hulls.Finish(doc);
+  AddColliders(doc, streams, layout, hull_meshes, options.physics);
+  Status compacted = CompactBufferViews(doc);
+  if (!compacted.ok()) return compacted;
+  return doc.Serialize();
+}
+
+}  // namespace hullpack
