@@ -29,6 +29,9 @@ const char kUsage[] =
     "  --fast-decode      code values in vertex id order: faster decoding, 2-5% larger\n"
     "  --fallback         also write plain accessors (readers without the extension still work)\n"
     "  --hulls all|none|auto   which meshes get collision hulls (auto)\n"
+    "  --hulls N          exactly N hulls per decomposed mesh (when it can give N)\n"
+    "  --max-concavity D  hulls within D x the mesh's diagonal of its surface, as few as that "
+    "allows\n"
     "  --skinned-hulls    with --hulls auto, decompose skinned meshes too\n"
     "  --physics omi|khr  OMI_physics_shape/body (default) or the KHR_physics_rigid_bodies draft\n"
     "  --quality default|high  decomposition preset (default: V-HACD 2.0's, hulls merged while "
@@ -149,7 +152,8 @@ int RunPackCommand(const std::vector<std::string>& args) {
   long jobs = 0;
   bool high_quality = false;
   long resolution = 0, max_hulls = -1, max_vertices = 0;
-  double concavity = -1;
+  double concavity = -1, max_concavity = -1;
+  long hull_count = 0;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&](std::string* out) {
@@ -196,8 +200,10 @@ int RunPackCommand(const std::vector<std::string>& args) {
         options.collision.policy = HullPolicy::kNone;
       } else if (v == "auto") {
         options.collision.policy = HullPolicy::kAuto;
+      } else if (!v.empty() && v.find_first_not_of("0123456789") == std::string::npos) {
+        if (!ParseInt(a, v, 1, 100000, &hull_count)) return kExitUsage;
       } else {
-        std::fprintf(stderr, "hullpack pack: --hulls takes all, none or auto, not '%s'\n",
+        std::fprintf(stderr, "hullpack pack: --hulls takes all, none, auto or a count, not '%s'\n",
                      v.c_str());
         return kExitUsage;
       }
@@ -221,6 +227,8 @@ int RunPackCommand(const std::vector<std::string>& args) {
       if (!value(&v) || !ParseInt(a, v, 4, 1024, &max_vertices)) return kExitUsage;
     } else if (a == "--concavity") {
       if (!value(&v) || !ParseDouble(a, v, 0, 1, &concavity)) return kExitUsage;
+    } else if (a == "--max-concavity") {
+      if (!value(&v) || !ParseDouble(a, v, 1e-6, 1, &max_concavity)) return kExitUsage;
     } else if (a == "--jobs") {
       if (!value(&v) || !ParseInt(a, v, 1, 256, &jobs)) return kExitUsage;
     } else if (a == "--force") {
@@ -244,6 +252,8 @@ int RunPackCommand(const std::vector<std::string>& args) {
   if (max_hulls >= 0) p.max_convex_hulls = static_cast<uint32_t>(max_hulls);
   if (max_vertices) p.max_vertices_per_hull = static_cast<uint32_t>(max_vertices);
   if (concavity >= 0) p.concavity = concavity;
+  if (max_concavity > 0) p.max_concavity = max_concavity;
+  if (hull_count > 0) p.hull_count = static_cast<uint32_t>(hull_count);
 
   // One input and a file name: that file. Otherwise a folder of NAME.packed.glb.
   const bool to_folder = inputs.size() > 1 || output.back() == '/' || IsDirectory(output);

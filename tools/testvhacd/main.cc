@@ -9,7 +9,10 @@
 //             [--preset|--quality default|high] [--resolution N] [--depth N] [--concavity X]
 //             [--plane-downsampling N] [--convexhull-downsampling N] [--alpha X] [--beta X]
 //             [--gamma X] [--pca 0|1] [--mode 0|1|voxel|tetra] [--max-vertices N] [--min-volume X]
-//             [--max-hulls N] [--max-distance X] [--threads N]
+//             [--max-hulls N] [--max-distance X] [--threads N] [--max-concavity D] [--hulls N]
+//             [--min-opening X]
+// --max-concavity D: every hull within D x the bounding-box diagonal of the surface (the reported
+// concavity), as few hulls as that allows; --hulls N: exactly N hulls.
 // Every mesh of the input (with its node transforms) is decomposed as one soup. The hulls are
 // written as a scene with one mesh per hull. Progress goes to stderr; a summary to stdout.
 // Exit status: 0 success, 1 decomposition or I/O error, 2 usage error.
@@ -40,7 +43,8 @@ int Usage(const char* why) {
       "                 [--plane-downsampling N] [--convexhull-downsampling N] [--alpha X]\n"
       "                 [--beta X] [--gamma X] [--pca 0|1] [--mode 0|1|voxel|tetra] "
       "[--max-vertices N]\n"
-      "                 [--min-volume X] [--max-hulls N] [--max-distance X] [--threads N]\n");
+      "                 [--min-volume X] [--max-hulls N] [--max-distance X] [--threads N]\n"
+      "                 [--max-concavity D] [--hulls N] [--min-opening X]\n");
   return 2;
 }
 
@@ -112,6 +116,14 @@ bool WriteReport(const std::string& path, const std::string& input, const vhacd:
   f << "  \"voxel_count\": " << rep.voxel_count << ",\n";
   f << "  \"tetrahedron_count\": " << rep.tetrahedron_count << ",\n";
   f << "  \"parts_before_merge\": " << rep.parts_before_merge << ",\n";
+  f << "  \"target_reached\": " << (rep.target_reached ? "true" : "false") << ",\n";
+  f << "  \"target_note\": \"";
+  for (char c : rep.target_note) {
+    if (c == '"' || c == '\\') f << '\\';
+    f << c;
+  }
+  f << "\",\n";
+  f << "  \"attempts\": " << rep.attempts << ",\n";
   f << "  \"seconds\": {\"voxelize\": " << JsonNumber(rep.seconds_voxelize)
     << ", \"fill\": " << JsonNumber(rep.seconds_fill)
     << ", \"tetrahedra\": " << JsonNumber(rep.seconds_tetrahedra)
@@ -126,7 +138,8 @@ bool WriteReport(const std::string& path, const std::string& input, const vhacd:
   for (size_t i = 0; i < rep.hulls.size(); ++i) {
     f << (i ? ",\n    " : "\n    ") << "{\"vertices\": " << rep.hulls[i].vertex_count
       << ", \"volume\": " << JsonNumber(rep.hulls[i].volume)
-      << ", \"concavity\": " << JsonNumber(rep.hulls[i].concavity) << "}";
+      << ", \"concavity\": " << JsonNumber(rep.hulls[i].concavity)
+      << ", \"distance\": " << JsonNumber(rep.hulls[i].distance) << "}";
   }
   f << (rep.hulls.empty() ? "]\n" : "\n  ]\n") << "}\n";
   return f.good();
@@ -223,6 +236,12 @@ int main(int argc, char** argv) {
         ok = ParseDouble(v, &d) && (p.max_distance = d, true);
       else if (a == "--threads")
         ok = ParseUint(v, &p.num_threads);
+      else if (a == "--max-concavity")
+        ok = ParseDouble(v, &p.max_concavity);
+      else if (a == "--hulls")
+        ok = ParseUint(v, &p.hull_count) && p.hull_count > 0;
+      else if (a == "--min-opening")
+        ok = ParseDouble(v, &p.min_opening);
       else
         return Usage(("unknown option " + a).c_str());
       if (!ok) return Usage(("bad value for " + a).c_str());
@@ -263,6 +282,7 @@ int main(int argc, char** argv) {
       r.hulls.size(), rep.parts_before_merge, rep.concavity, rep.hausdorff_mesh_to_hulls,
       rep.hausdorff_hulls_to_mesh, rep.volume_iou >= 0 ? JsonNumber(rep.volume_iou).c_str() : "n/a",
       rep.seconds_total);
+  if (!rep.target_reached) std::printf("target not reached: %s\n", rep.target_note.c_str());
 
   if (!report_path.empty()) {
     if (!WriteReport(report_path, input, r)) {
