@@ -5,7 +5,7 @@
 // table and writes CSV.
 //
 //   codec_bench FOLDER [--repeats 5] [--csv out.csv] [--qp 14] [--qn 10] [--qt 12] [--only a,b]
-//               [--clock wall|cpu] [--ours-only] [--fast-decode]
+//               [--clock wall|cpu] [--ours-only] [--fast-decode]   (see --help)
 //
 // The repeats are interleaved (one encode and one decode of each codec per round, the codecs'
 // order rotating from round to round, so that none always runs after the same one), so that a load
@@ -21,16 +21,18 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "bench/bench_util.h"
 #include "bench/draco_bridge.h"
 #include "bench/gzip_size.h"
+#include "common/cli_args.h"
 #include "common/file_util.h"
 #include "io/scene_io.h"
+#include "o3dgc/o3dgc.h"
 #include "pipeline/mesh_codec.h"
 
 namespace {
@@ -166,55 +168,39 @@ bool RunAll(const Mesh& mesh, const Settings& s, Row& row) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 2) {
-    std::fprintf(stderr,
-                 "usage: codec_bench FOLDER [--repeats N] [--csv FILE] [--qp N] [--qn N] [--qt N] "
-                 "[--only a,b] "
-                 "[--clock wall|cpu] [--ours-only] [--fast-decode]\n");
-    return 64;
-  }
   Settings s;
-  const std::string folder = argv[1];
-  for (int i = 2; i < argc; ++i) {
-    const std::string flag = argv[i];
-    if (flag == "--ours-only") {
-      s.ours_only = true;
-      continue;
-    }
-    if (flag == "--fast-decode") {
-      s.fast_decode = true;
-      continue;
-    }
-    const char* value = i + 1 < argc ? argv[++i] : nullptr;
-    if (!value) {
-      std::fprintf(stderr, "codec_bench: %s needs a value\n", flag.c_str());
-      return 64;
-    }
-    if (flag == "--repeats")
-      s.repeats = std::max(1, std::atoi(value));
-    else if (flag == "--csv")
-      s.csv = value;
-    else if (flag == "--qp")
-      s.qp = std::atoi(value);
-    else if (flag == "--qn")
-      s.qn = std::atoi(value);
-    else if (flag == "--qt")
-      s.qt = std::atoi(value);
-    else if (flag == "--clock" &&
-             (std::strcmp(value, "cpu") == 0 || std::strcmp(value, "wall") == 0)) {
-      s.cpu_clock = std::strcmp(value, "cpu") == 0;
-    } else if (flag == "--only") {
-      const std::string list = value;
-      for (size_t p = 0; p <= list.size();) {
-        const size_t q = std::min(list.find(',', p), list.size());
-        if (q > p) s.only.push_back(list.substr(p, q - p));
-        p = q + 1;
-      }
-    } else {
-      std::fprintf(stderr, "codec_bench: unknown option %s\n", flag.c_str());
-      return 64;
-    }
-  }
+  std::vector<std::string> folders;
+  hullpack::CliArgs cli(
+      "codec_bench", "FOLDER [options]",
+      "The o3dgc coder and Draco (-cl 7 and -cl 10) side by side on every .obj of FOLDER, at the\n"
+      "same quantization: bytes, encode and decode time (median of interleaved repeats), largest\n"
+      "position error, gzip'd ASCII stream bytes. Prints a table; --csv writes it.");
+  cli.VersionDetail("o3dgc stream version " + std::to_string(o3dgc::kStreamVersion));
+  cli.Positional("FOLDER", &folders, 1, 1);
+  cli.Int("--repeats", "N", 1, 1000, &s.repeats, "interleaved runs per codec, median time (5)");
+  cli.String("--csv", "FILE", &s.csv, "also write the table as CSV");
+  cli.Int("--qp", "N", 1, 30, &s.qp, "position bits (14)");
+  cli.Int("--qn", "N", 1, 30, &s.qn, "normal bits (10)");
+  cli.Int("--qt", "N", 1, 30, &s.qt, "texture coordinate bits (12)");
+  cli.Value("--only", "A,B", "only these meshes (file names without extension)",
+            [&s](const std::string& list) {
+              for (size_t p = 0; p <= list.size();) {
+                const size_t q = std::min(list.find(',', p), list.size());
+                if (q > p) s.only.push_back(list.substr(p, q - p));
+                p = q + 1;
+              }
+              return std::string();
+            });
+  cli.Value("--clock", "wall|cpu", "time wall clock (default) or the process's CPU time",
+            [&s](const std::string& v) {
+              if (v != "wall" && v != "cpu") return "takes wall or cpu, not '" + v + "'";
+              s.cpu_clock = v == "cpu";
+              return std::string();
+            });
+  cli.Flag("--ours-only", &s.ours_only, "skip Draco (profiling runs, size checks)");
+  cli.Flag("--fast-decode", &s.fast_decode, "encode ours with EncodeParams::fast_decode");
+  if (std::optional<int> exit_code = cli.Parse(argc, argv)) return *exit_code;
+  const std::string& folder = folders[0];
   std::vector<std::string> files;
   if (!hullpack::ListFiles(folder, {"obj"}, &files)) {
     std::fprintf(stderr, "codec_bench: %s: cannot open folder\n", folder.c_str());

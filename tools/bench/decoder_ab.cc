@@ -16,9 +16,11 @@
 #include <ctime>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "common/cli_args.h"
 #include "o3dgc/o3dgc.h"
 // The same header again, for build B's namespace.
 #undef O3DGC_O3DGC_H_
@@ -58,21 +60,28 @@ double Median(std::vector<double> v) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  int arg = 1;
-  const bool pairs = argc > 1 && std::string(argv[1]) == "--pairs";
-  if (pairs) ++arg;
-  const int n = argc > arg ? std::atoi(argv[arg]) : 0;
-  ++arg;
-  if (n <= 0 || arg >= argc || (pairs && (argc - arg) % 2 != 0)) {
-    std::fprintf(stderr,
-                 "usage: decoder_ab [--pairs] N STREAM... (with --pairs: A.s3d B.s3d ...)\n");
-    return 2;
-  }
-  for (; arg < argc; arg += pairs ? 2 : 1) {
+  bool pairs = false;
+  std::vector<std::string> operands;
+  hullpack::CliArgs cli("decoder_ab", "[--pairs] N STREAM...",
+                        "Two builds of the o3dgc decoder (A and B, see decoder_ab.sh) decode each "
+                        "STREAM\nalternately, N timed pairs after 2 warm-up pairs; prints the "
+                        "median ratio B/A.");
+  cli.Positional("N STREAM...", &operands, 2);
+  cli.Flag("--pairs", &pairs, "the STREAMs are pairs A.s3d B.s3d: build B decodes its own stream");
+  if (std::optional<int> exit_code = cli.Parse(argc, argv)) return *exit_code;
+  long long pair_count = 0;
+  const std::string why = hullpack::CliArgs::ParseWholeNumber(operands[0], 1, 100000, &pair_count);
+  if (!why.empty()) return cli.UsageError("N " + why);
+  if (pairs && operands.size() % 2 != 1) return cli.UsageError("--pairs needs A.s3d B.s3d pairs");
+  const int n = static_cast<int>(pair_count);
+  std::vector<char*> streams;
+  for (size_t i = 1; i < operands.size(); ++i) streams.push_back(&operands[i][0]);
+  const int count = static_cast<int>(streams.size());
+  for (int arg = 0; arg < count; arg += pairs ? 2 : 1) {
     std::vector<uint8_t> a, b;
-    const char* path_b = pairs ? argv[arg + 1] : argv[arg];
-    if (!Read(argv[arg], &a) || !Read(path_b, &b)) {
-      std::fprintf(stderr, "decoder_ab: cannot read %s or %s\n", argv[arg], path_b);
+    const char* path_b = pairs ? streams[arg + 1] : streams[arg];
+    if (!Read(streams[arg], &a) || !Read(path_b, &b)) {
+      std::fprintf(stderr, "decoder_ab: cannot read %s or %s\n", streams[arg], path_b);
       return 1;
     }
     auto run_a = [&] {
@@ -95,7 +104,7 @@ int main(int argc, char** argv) {
       }
       if (x < 0 || y < 0) {
         std::fprintf(stderr, "decoder_ab: %s: build %s cannot decode it\n",
-                     x < 0 ? argv[arg] : path_b, x < 0 ? "A" : "B");
+                     x < 0 ? streams[arg] : path_b, x < 0 ? "A" : "B");
         return 1;
       }
       if (i < 2) continue;  // warm-up
@@ -106,7 +115,7 @@ int main(int argc, char** argv) {
     std::printf(
         "%s: A min %.3f median %.3f ms | B min %.3f median %.3f ms | B/A %.4f (median of %d "
         "pairs)\n",
-        argv[arg], *std::min_element(ta.begin(), ta.end()), Median(ta),
+        streams[arg], *std::min_element(ta.begin(), ta.end()), Median(ta),
         *std::min_element(tb.begin(), tb.end()), Median(tb), Median(ratio), n);
   }
   return 0;

@@ -8,7 +8,7 @@
 set -euo pipefail
 if [ $# -ne 3 ]; then
   echo "usage: $0 TREE_A TREE_B OUT" >&2
-  exit 2
+  exit 64
 fi
 a=$(cd "$1" && pwd)
 b=$(cd "$2" && pwd)
@@ -28,4 +28,9 @@ for src in "$b"/o3dgc/src/*.cc; do
   pids+=($!)
 done
 for pid in "${pids[@]}"; do wait "$pid"; done  # a failed compile stops the script here
-$cxx $flags -I"$a/o3dgc/include" "$here/decoder_ab.cc" "$tmp"/*.o -o "$out"
+# The command-line parser and the version header CMake would generate.
+mkdir -p "$tmp/generated/common"
+version=$(sed -n 's/^project(hullpack VERSION \([0-9.]*\).*/\1/p' "$here/../../CMakeLists.txt")
+sed "s/@PROJECT_VERSION@/$version/" "$here/../common/version.h.in" >"$tmp/generated/common/version.h"
+$cxx $flags -I"$a/o3dgc/include" -I"$here/.." -I"$tmp/generated" "$here/decoder_ab.cc" \
+  "$here/../common/cli_args.cc" "$tmp"/*.o -o "$out"

@@ -12,47 +12,15 @@
 // LIST is "a,b,c" or a range "lo:hi" (integers, step 1) or "lo:hi:step".
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "bench/sweep.h"
 #include "bench/sweep_report.h"
+#include "common/cli_args.h"
 
 namespace {
-
-void Usage(FILE* out) {
-  std::fprintf(
-      out,
-      "usage: sweep_bench FOLDER -o OUT [options]\n"
-      "  Sweeps the decomposition and the codec over every mesh of FOLDER and writes\n"
-      "  OUT/sweep.csv, OUT/*.svg and OUT/summary.md.\n"
-      "options:\n"
-      "  --quick                 a smaller grid and 1 run per point (a few minutes on the corpus)\n"
-      "  --decompose-only        only the decomposition sweep\n"
-      "  --codec-only            only the codec sweep\n"
-      "  --repeats N             codec runs per point, median time (default 3)\n"
-      "  --decompose-repeats N   decomposition runs per point, median time (default 1)\n"
-      "  --threads N             decomposition threads (default 1; 0 = every core)\n"
-      "  --resolutions LIST      default 20000,50000,100000,200000,400000,1000000\n"
-      "  --concavities LIST      default 0.01,0.005,0.0025,0.001,0.0005\n"
-      "  --max-hulls LIST        default 4,8,16,32,0 (0 = no limit)\n"
-      "  --position-bits LIST    default 8:20\n"
-      "  --normal-bits LIST      default 6:12\n"
-      "  --uv-bits LIST          default 8:14\n"
-      "  --max-distance X        vhacd max_distance of every point (default 0.03)\n"
-      "  --samples N             random surface samples per Hausdorff direction (default 20000;\n"
-      "                          the vertices are measured too)\n"
-      "  --solid-points N        lattice points of the IoU / coverage measure (default 262144)\n"
-      "  --gap X                 hull points nearer than X (fraction of the diagonal) to another\n"
-      "                          hull are inside the union of hulls (default 0.002)\n"
-      "  --timeout S             per measured step (default 900)\n"
-      "  --meshes a,b            only these meshes (file names without extension)\n"
-      "  --ext LIST              file extensions, in order of preference (default\n"
-      "                          obj,off,wrl,ply,stl,glb,gltf,fbx,dae; one file per name)\n"
-      "  --quiet                 no progress lines\n"
-      "LIST: a,b,c or lo:hi or lo:hi:step\n");
-}
 
 std::vector<std::string> Split(const std::string& s) {
   std::vector<std::string> out;
@@ -119,98 +87,85 @@ bool ParseTypedList(const std::string& s, double lo, double hi, std::vector<T>* 
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> args(argv + 1, argv + argc);
-  for (const std::string& a : args) {
-    if (a == "--help" || a == "-h") {
-      Usage(stdout);
-      return 0;
-    }
-  }
-  // --quick first: the other options refine whichever grid it chose.
-  bool quick = false;
-  for (const std::string& a : args) quick = quick || a == "--quick";
-  hullpack::SweepOptions o =
-      quick ? hullpack::QuickSweepOptions() : hullpack::DefaultSweepOptions();
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  hullpack::SweepOptions o = hullpack::DefaultSweepOptions();
   o.base.num_threads = 1;
-  std::string folder, out;
-  auto bad = [&](const std::string& what) {
-    std::fprintf(stderr, "sweep_bench: %s\n", what.c_str());
-    Usage(stderr);
-    return 64;
+  std::vector<std::string> folders;
+  std::string out;
+  bool decompose_only = false, codec_only = false;
+  hullpack::CliArgs cli("sweep_bench", "FOLDER -o OUT [options]",
+                        "Sweeps the decomposition and the codec over every mesh of FOLDER and "
+                        "writes\nOUT/sweep.csv, OUT/*.svg and OUT/summary.md.");
+  cli.Positional("FOLDER", &folders, 1, 1);
+  cli.String("-o, --output, --out", "OUT", &out, "the folder to write").Required();
+  cli.Action("--quick", "a smaller grid and 1 run per point; the other options refine it",
+             [&o]() {
+               o = hullpack::QuickSweepOptions();
+               o.base.num_threads = 1;
+             })
+      .First();
+  cli.Flag("--decompose-only", &decompose_only, "only the decomposition sweep");
+  cli.Flag("--codec-only", &codec_only, "only the codec sweep");
+  cli.Int("--repeats", "N", 1, 1000, &o.repeats, "codec runs per point, median time (3)");
+  cli.Int("--decompose-repeats", "N", 1, 1000, &o.decompose_repeats,
+          "decomposition runs per point, median time (1)");
+  cli.Int("--threads", "N", 0, 256, &o.base.num_threads,
+          "decomposition threads (default 1; 0 = every core)");
+  // A LIST option: "a,b,c", "lo:hi" or "lo:hi:step", each value in [lo, hi].
+  auto list = [&cli](const std::string& name, double lo, double hi, auto* values,
+                     const std::string& help) {
+    cli.Value(name, "LIST", help, [lo, hi, values](const std::string& v) {
+      if (ParseTypedList(v, lo, hi, values)) return std::string();
+      char range[64];
+      std::snprintf(range, sizeof(range), "[%g, %g]", lo, hi);
+      return "takes a,b,c or lo:hi or lo:hi:step of numbers in " + std::string(range) + ", not '" +
+             v + "'";
+    });
   };
-  for (size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&](std::string* v) {
-      if (i + 1 >= args.size()) return false;
-      *v = args[++i];
-      return true;
-    };
-    std::string v;
-    double d = 0;
-    if (a == "--quick") continue;
-    if (a == "--decompose-only") {
-      o.codec = false;
-    } else if (a == "--codec-only") {
-      o.decompose = false;
-    } else if (a == "--quiet") {
-      o.log = nullptr;
-    } else if (a == "-o" || a == "--out") {
-      if (!value(&out)) return bad("-o needs a folder");
-    } else if (a == "--repeats" || a == "--decompose-repeats" || a == "--threads" ||
-               a == "--samples" || a == "--solid-points" || a == "--gap" || a == "--timeout" ||
-               a == "--max-distance") {
-      if (!value(&v) || !ParseDouble(v, &d)) return bad(a + " needs a number");
-      if (a == "--repeats" && d >= 1 && d <= 1000)
-        o.repeats = static_cast<int>(d);
-      else if (a == "--decompose-repeats" && d >= 1 && d <= 1000)
-        o.decompose_repeats = static_cast<int>(d);
-      else if (a == "--threads" && d >= 0 && d <= 256)
-        o.base.num_threads = static_cast<uint32_t>(d);
-      else if (a == "--samples" && d >= 0 && d <= 1e8)
-        o.metrics.mesh_samples = o.metrics.hull_samples = static_cast<size_t>(d);
-      else if (a == "--solid-points" && d >= 1 && d <= 1e9)
-        o.metrics.solid_points = static_cast<size_t>(d);
-      else if (a == "--gap" && d >= 0 && d <= 1)
-        o.metrics.gap = d;
-      else if (a == "--timeout" && d > 0)
-        o.timeout_seconds = d;
-      else if (a == "--max-distance" && d >= 0 && d <= 1)
-        o.base.max_distance = d;
-      else
-        return bad(a + " " + v + ": out of range");
-    } else if (a == "--resolutions") {
-      if (!value(&v) || !ParseTypedList(v, 10000, 64000000, &o.grid.resolutions))
-        return bad("bad --resolutions");
-    } else if (a == "--concavities") {
-      if (!value(&v) || !ParseTypedList(v, 0, 1, &o.grid.concavities))
-        return bad("bad --concavities");
-    } else if (a == "--max-hulls") {
-      if (!value(&v) || !ParseTypedList(v, 0, 100000, &o.grid.max_hulls))
-        return bad("bad --max-hulls");
-    } else if (a == "--position-bits") {
-      if (!value(&v) || !ParseTypedList(v, 1, 30, &o.grid.position_bits))
-        return bad("bad --position-bits");
-    } else if (a == "--normal-bits") {
-      if (!value(&v) || !ParseTypedList(v, 1, 30, &o.grid.normal_bits))
-        return bad("bad --normal-bits");
-    } else if (a == "--uv-bits") {
-      if (!value(&v) || !ParseTypedList(v, 1, 30, &o.grid.uv_bits)) return bad("bad --uv-bits");
-    } else if (a == "--meshes") {
-      if (!value(&v)) return bad("--meshes needs names");
-      o.only = Split(v);
-    } else if (a == "--ext") {
-      if (!value(&v)) return bad("--ext needs extensions");
-      o.extensions = Split(v);
-    } else if (!a.empty() && a[0] == '-') {
-      return bad("unknown option " + a);
-    } else if (folder.empty()) {
-      folder = a;
-    } else {
-      return bad("more than one folder: " + a);
-    }
-  }
-  if (folder.empty() || out.empty()) return bad("needs a FOLDER and -o OUT");
-  if (!o.decompose && !o.codec) return bad("--decompose-only and --codec-only exclude each other");
+  list("--resolutions", 10000, 64000000, &o.grid.resolutions,
+       "default 20000,50000,100000,200000,400000,1000000");
+  list("--concavities", 0, 1, &o.grid.concavities, "default 0.01,0.005,0.0025,0.001,0.0005");
+  list("--max-hulls", 0, 100000, &o.grid.max_hulls, "default 4,8,16,32,0 (0 = no limit)");
+  list("--position-bits", 1, 30, &o.grid.position_bits, "default 8:20");
+  list("--normal-bits", 1, 30, &o.grid.normal_bits, "default 6:12");
+  list("--uv-bits", 1, 30, &o.grid.uv_bits, "default 8:14");
+  cli.Double("--max-distance", "X", 0, 1, &o.base.max_distance,
+             "vhacd max_distance of every point (default 0.03)");
+  cli.Value("--samples", "N",
+            "random surface samples per Hausdorff direction (default 20000;\n"
+            "the vertices are measured too)",
+            [&o](const std::string& v) {
+              long long n = 0;
+              std::string why = hullpack::CliArgs::ParseWholeNumber(v, 0, 100000000, &n);
+              if (why.empty()) o.metrics.mesh_samples = o.metrics.hull_samples = size_t(n);
+              return why;
+            });
+  cli.Int("--solid-points", "N", 1, 1000000000, &o.metrics.solid_points,
+          "lattice points of the IoU / coverage measure (default 262144)");
+  cli.Double("--gap", "X", 0, 1, &o.metrics.gap,
+             "hull points nearer than X (fraction of the diagonal) to another\n"
+             "hull are inside the union of hulls (default 0.002)");
+  cli.Double("--timeout", "S", 1e-3, 1e9, &o.timeout_seconds,
+             "seconds per measured step (default 900)");
+  cli.Value("--meshes", "A,B", "only these meshes (file names without extension)",
+            [&o](const std::string& v) {
+              o.only = Split(v);
+              return std::string();
+            });
+  cli.Value("--ext", "LIST",
+            "file extensions, in order of preference (default\n"
+            "obj,off,wrl,ply,stl,glb,gltf,fbx,dae; one file per name)",
+            [&o](const std::string& v) {
+              o.extensions = Split(v);
+              return std::string();
+            });
+  cli.Action("--quiet", "no progress lines", [&o]() { o.log = nullptr; });
+  if (std::optional<int> exit_code = cli.Parse(args)) return *exit_code;
+  if (decompose_only && codec_only)
+    return cli.UsageError("--decompose-only and --codec-only exclude each other");
+  if (decompose_only) o.codec = false;
+  if (codec_only) o.decompose = false;
+  const std::string& folder = folders[0];
 
   std::string command = "sweep_bench";
   for (const std::string& a : args) command += " " + a;

@@ -39,12 +39,14 @@
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "bench_util.h"
+#include "common/cli_args.h"
 #include "hull_metrics.h"
 #include "io/scene_io.h"
 #include "scene_soup.h"
@@ -142,7 +144,7 @@ bool WriteObjParts(const std::string& path, const std::vector<Soup>& parts) {
 // The hullpack side, run as a child process: vhacd_bench --run-ours IN OUT PRESET MODE THREADS.
 
 int RunOurs(int argc, char** argv) {
-  if (argc != 9) return 2;
+  if (argc != 9) return hullpack::kExitUsage;
   const std::string in = argv[2], out = argv[3], preset = argv[4];
   vhacd::Parameters p = preset == "high" ? vhacd::Parameters::High() : vhacd::Parameters::Default();
   p.mode = std::atoi(argv[5]) == 1 ? vhacd::Mode::kTetrahedron : vhacd::Mode::kVoxel;
@@ -293,24 +295,6 @@ std::string Fmt(double v, const char* f = "%.4f") {
   return b;
 }
 
-int Usage(const char* why) {
-  if (why) std::fprintf(stderr, "vhacd_bench: %s\n", why);
-  std::fprintf(
-      stderr,
-      "usage: vhacd_bench FOLDER [--reference-bin PATH | --reference-cmd 'TEMPLATE'] [--repeats "
-      "N]\n"
-      "                  [--ours default,high,tetra,high+tetra] [--preset|--quality default|high]\n"
-      "                  [--mode 0|1|tetra] [--csv FILE] [--work DIR] [--timeout S] [--only A,B]\n"
-      "                  [--samples N] [--gap X] [--threads N] [--reference NAME=TEMPLATE]...\n"
-      "                  [--reuse] [--svg FILE]\n"
-      "configurations (--ours): default, high, tetra, high+tetra, d=X (--max-concavity X),\n"
-      "          n=N (--hulls N), match=NAME (--hulls at NAME's hull count), none\n"
-      "TEMPLATE: a shell command run in a fresh folder {dir}; {in} is the input OBJ, {out} the "
-      "OBJ\n"
-      "          it must write (one `o` per hull).\n");
-  return 64;
-}
-
 std::vector<std::string> SplitComma(const std::string& s) {
   std::vector<std::string> out;
   std::stringstream ss(s);
@@ -431,18 +415,9 @@ std::string SelfPath() {
 }  // namespace
 
 // vhacd_bench --measure MESH HULLS.obj [--gap X] [--samples N]: the metrics of one hull file.
-int MeasureOne(int argc, char** argv) {
-  if (argc < 4) return Usage("--measure needs MESH and HULLS.obj");
-  MetricsOptions mo;
-  for (int i = 4; i + 1 < argc; i += 2) {
-    if (std::strcmp(argv[i], "--gap") == 0)
-      mo.gap = std::atof(argv[i + 1]);
-    else if (std::strcmp(argv[i], "--samples") == 0)
-      mo.mesh_samples = mo.hull_samples = std::atoll(argv[i + 1]);
-    else
-      return Usage("--measure takes only --gap and --samples");
-  }
-  hullpack::Result<hullpack::Scene> scene = hullpack::ReadScene(argv[2]);
+int MeasureOne(const std::string& mesh_path, const std::string& hulls_path,
+               const MetricsOptions& mo) {
+  hullpack::Result<hullpack::Scene> scene = hullpack::ReadScene(mesh_path);
   if (!scene.ok()) {
     std::fprintf(stderr, "%s\n", scene.status().ToString().c_str());
     return 1;
@@ -457,7 +432,7 @@ int MeasureOne(int argc, char** argv) {
     soup.triangles.push_back({idx[i], idx[i + 1], idx[i + 2]});
   std::vector<Soup> hulls;
   std::string why;
-  if (!ReadObjParts(argv[3], true, &hulls, &why)) {
+  if (!ReadObjParts(hulls_path, true, &hulls, &why)) {
     std::fprintf(stderr, "%s\n", why.c_str());
     return 1;
   }
@@ -481,10 +456,8 @@ int MeasureOne(int argc, char** argv) {
 // vhacd_bench --subdivide IN OUT.obj MIN_TRIANGLES: a dense test mesh. Each round splits every
 // triangle in 4 at its edge midpoints while that stays under MIN_TRIANGLES, then splits each at its
 // centroid in 3 until there are at least MIN_TRIANGLES (both keep a closed mesh closed).
-int Subdivide(int argc, char** argv) {
-  if (argc != 5) return Usage("--subdivide needs IN OUT.obj MIN_TRIANGLES");
-  const size_t target = static_cast<size_t>(std::atoll(argv[4]));
-  hullpack::Result<hullpack::Scene> scene = hullpack::ReadScene(argv[2]);
+int Subdivide(const std::string& in, const std::string& out, size_t target) {
+  hullpack::Result<hullpack::Scene> scene = hullpack::ReadScene(in);
   if (!scene.ok()) {
     std::fprintf(stderr, "%s\n", scene.status().ToString().c_str());
     return 1;
@@ -542,77 +515,105 @@ int Subdivide(int argc, char** argv) {
     }
     s.triangles.swap(next);
   }
-  if (!WriteObjParts(argv[3], {s})) {
-    std::fprintf(stderr, "cannot write %s\n", argv[3]);
+  if (!WriteObjParts(out, {s})) {
+    std::fprintf(stderr, "cannot write %s\n", out.c_str());
     return 1;
   }
-  std::printf("%s: %zu points, %zu triangles\n", argv[3], s.points.size(), s.triangles.size());
+  std::printf("%s: %zu points, %zu triangles\n", out.c_str(), s.points.size(), s.triangles.size());
   return 0;
 }
 
 int main(int argc, char** argv) {
+  // The child process of a measured run (internal: the arguments are this program's own).
   if (argc >= 2 && std::strcmp(argv[1], "--run-ours") == 0) return RunOurs(argc, argv);
-  if (argc >= 2 && std::strcmp(argv[1], "--subdivide") == 0) return Subdivide(argc, argv);
-  if (argc >= 2 && std::strcmp(argv[1], "--measure") == 0) return MeasureOne(argc, argv);
-  if (argc < 2) return Usage(nullptr);
-  std::string folder = argv[1], ref_bin, ref_cmd, csv, work, ours_list, preset = "default", svg;
+  std::string ref_bin, ref_cmd, csv, work, ours_list, preset = "default", svg;
   std::vector<std::pair<std::string, std::string>> named_refs;  // --reference NAME=TEMPLATE
   bool reuse = false;
   int repeats = 1, mode = 0, threads = 0;
   double timeout = 600.0;
-  std::vector<std::string> only;
+  std::vector<std::string> only, operands;
   MetricsOptions mo;
-  for (int i = 2; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--reuse") {
-      reuse = true;
-      continue;
-    }
-    if (i + 1 >= argc) return Usage(("missing value after " + a).c_str());
-    const std::string v = argv[++i];
-    if (a == "--reference-bin")
-      ref_bin = v;
-    else if (a == "--reference-cmd")
-      ref_cmd = v;
-    else if (a == "--reference") {
-      const size_t eq = v.find('=');
-      if (eq == std::string::npos || eq == 0) return Usage("--reference needs NAME=TEMPLATE");
-      named_refs.emplace_back(v.substr(0, eq), v.substr(eq + 1));
-    } else if (a == "--svg")
-      svg = v;
-    else if (a == "--repeats")
-      repeats = std::max(1, std::atoi(v.c_str()));
-    else if (a == "--ours")
-      ours_list = v;
-    else if (a == "--preset" || a == "--quality") {
-      if (v != "default" && v != "high") return Usage("preset must be default or high");
-      preset = v;
-    } else if (a == "--mode") {
-      if (v == "0" || v == "voxel")
-        mode = 0;
-      else if (v == "1" || v == "tetra" || v == "tetrahedron")
-        mode = 1;
-      else
-        return Usage("mode must be 0, 1 or tetra");
-    } else if (a == "--csv")
-      csv = v;
-    else if (a == "--work")
-      work = v;
-    else if (a == "--timeout")
-      timeout = std::atof(v.c_str());
-    else if (a == "--only")
-      only = SplitComma(v);
-    else if (a == "--samples")
-      mo.mesh_samples = mo.hull_samples = static_cast<size_t>(std::atoll(v.c_str()));
-    else if (a == "--gap")
-      mo.gap = std::atof(v.c_str());
-    else if (a == "--threads")
-      threads = std::atoi(v.c_str());
-    else
-      return Usage(("unknown option " + a).c_str());
+  bool measure_one = false, subdivide = false;
+  hullpack::CliArgs cli(
+      "vhacd_bench", "FOLDER [options]",
+      "hullpack's convex decomposition and a reference program side by side on every mesh of\n"
+      "FOLDER, each in its own process: wall time and peak memory (medians), hull count,\n"
+      "concavity, IoU and coverage measured by this program's own code.\n"
+      "  vhacd_bench --measure MESH HULLS.obj [--gap X] [--samples N]   metrics of one hull file\n"
+      "  vhacd_bench --subdivide IN OUT.obj MIN_TRIANGLES               a dense test mesh");
+  cli.Positional("FOLDER", &operands, 1, 3);
+  cli.String("--reference-bin", "PATH", &ref_bin,
+             "run `PATH {in}` in a fresh folder, read the hulls from its decomp.obj");
+  cli.String("--reference-cmd", "TEMPLATE", &ref_cmd,
+             "a shell command run in a fresh folder {dir}; {in} is the input OBJ,\n"
+             "{out} the OBJ it must write (one `o` per hull)");
+  cli.Int("--repeats", "N", 1, 1000, &repeats, "runs per program, median time and memory (1)");
+  cli.String("--ours", "LIST", &ours_list,
+             "hullpack configurations: default, high, tetra, high+tetra (comma-separated)");
+  cli.Choice("--quality, --preset", {"default", "high"}, &preset,
+             "without --ours: the preset of the one configuration");
+  cli.Value("--mode", "voxel|tetra", "without --ours: voxel (0) or tetrahedron (1) sets",
+            [&mode](const std::string& v) {
+              if (v == "0" || v == "voxel") {
+                mode = 0;
+              } else if (v == "1" || v == "tetra" || v == "tetrahedron") {
+                mode = 1;
+              } else {
+                return "takes voxel, tetra, 0 or 1, not '" + v + "'";
+              }
+              return std::string();
+            });
+  cli.String("--csv", "FILE", &csv, "also write the table as CSV");
+  cli.String("--work", "DIR", &work, "where the runs happen (default /tmp/vhacd_bench.PID)");
+  cli.Double("--timeout", "S", 1e-3, 1e9, &timeout, "seconds per run (600)");
+  cli.Value("--only", "A,B", "only these meshes (file names without extension)",
+            [&only](const std::string& v) {
+              only = SplitComma(v);
+              return std::string();
+            });
+  cli.Value("--samples", "N", "random surface samples per Hausdorff direction",
+            [&mo](const std::string& v) {
+              long long n = 0;
+              std::string why = hullpack::CliArgs::ParseWholeNumber(v, 0, 100000000, &n);
+              if (why.empty()) mo.mesh_samples = mo.hull_samples = size_t(n);
+              return why;
+            });
+  cli.Double("--gap", "X", 0, 1, &mo.gap,
+             "hull points nearer than X (fraction of the diagonal) to another hull are inside");
+  cli.Int("--threads", "N", 0, 256, &threads, "decomposition threads (0: every core)");
+  cli.Value("--reference", "NAME=TEMPLATE",
+            "a named reference (repeatable): TEMPLATE as for --reference-cmd; its\n"
+            "configuration is NAME, and match=NAME runs hullpack at its hull counts",
+            [&named_refs](const std::string& v) {
+              const size_t eq = v.find('=');
+              if (eq == std::string::npos || eq == 0) return "needs NAME=TEMPLATE, not '" + v + "'";
+              named_refs.emplace_back(v.substr(0, eq), v.substr(eq + 1));
+              return std::string();
+            });
+  cli.Flag("--reuse", &reuse,
+           "read the reference runs from --work (hulls and recorded time and memory)\n"
+           "instead of running them; a reference without a finished run is 'not run'");
+  cli.String("--svg", "FILE", &svg, "plot median concavity against median hull count");
+  cli.Flag("--measure", &measure_one, "measure one hull file: operands MESH HULLS.obj");
+  cli.Flag("--subdivide", &subdivide, "write a dense test mesh: operands IN OUT.obj MIN_TRIANGLES");
+  if (std::optional<int> exit_code = cli.Parse(argc, argv)) return *exit_code;
+  if (measure_one && subdivide)
+    return cli.UsageError("--measure and --subdivide exclude each other");
+  if (measure_one) {
+    if (operands.size() != 2) return cli.UsageError("--measure needs MESH and HULLS.obj");
+    return MeasureOne(operands[0], operands[1], mo);
   }
+  if (subdivide) {
+    long long target = 0;
+    if (operands.size() != 3 ||
+        !hullpack::CliArgs::ParseWholeNumber(operands[2], 1, 1LL << 40, &target).empty())
+      return cli.UsageError("--subdivide needs IN OUT.obj MIN_TRIANGLES");
+    return Subdivide(operands[0], operands[1], static_cast<size_t>(target));
+  }
+  if (operands.size() != 1) return cli.UsageError("one FOLDER");
+  const std::string& folder = operands[0];
   if (!ref_bin.empty() && !ref_cmd.empty())
-    return Usage("give --reference-bin or --reference-cmd, not both");
+    return cli.UsageError("give --reference-bin or --reference-cmd, not both");
   if (!ref_bin.empty() && ref_bin[0] != '/') {
     char cwd[4096];
     if (getcwd(cwd, sizeof(cwd))) ref_bin = std::string(cwd) + "/" + ref_bin;
@@ -654,16 +655,16 @@ int main(int argc, char** argv) {
       cfg.match = c.substr(6);
       bool known = false;
       for (const Config& r : configs) known = known || (r.reference && r.name == cfg.match);
-      if (!known) return Usage(("match= names no reference: " + c).c_str());
+      if (!known) return cli.UsageError("match= names no reference: " + c);
     } else
-      return Usage(("unknown configuration " + c).c_str());
+      return cli.UsageError("unknown configuration " + c);
     configs.push_back(cfg);
   }
 
   std::vector<std::string> files;
   if (!hullpack::ListFiles(folder, {"obj", "off", "wrl", "ply", "stl", "gltf", "glb", "fbx", "dae"},
                            &files))
-    return Usage(("cannot read folder " + folder).c_str());
+    return cli.UsageError("cannot read folder " + folder);
   auto stem = [](const std::string& f) { return f.substr(0, f.rfind('.')); };
   std::vector<std::string> meshes;
   for (const std::string& f : files) {
@@ -739,6 +740,10 @@ int main(int argc, char** argv) {
         if (c.reference && reuse) {
           std::ifstream sf(stats.c_str());
           if (!(sf >> reused_s >> reused_mb)) reused_s = -1;
+        }
+        if (c.reference && reuse && reused_s < 0) {
+          row.status = "not run";  // --reuse never runs a reference
+          break;
         }
         if (c.reference && reused_s >= 0) {
           // --reuse: this reference's earlier run of the same input in the same work folder.

@@ -1,30 +1,25 @@
 // vhacd_meshgen: writes the generated decomposition benchmark meshes (thin open containers, single-
 // and double-sided; CAD parts with holes; multi-component machinery; a blob with a small hole) as
 // OBJ files into a folder, for vhacd_bench.
-//
-//   vhacd_meshgen OUTDIR
 #include <sys/stat.h>
 
 #include <cstdio>
-#include <cstring>
+#include <optional>
 #include <string>
+#include <vector>
 
+#include "common/cli_args.h"
 #include "shape_gen.h"
 
 int main(int argc, char** argv) {
-  if (argc == 2 && (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0)) {
-    std::printf("usage: vhacd_meshgen OUTDIR\n");
-    return 0;
-  }
-  if (argc == 2 && std::strcmp(argv[1], "--version") == 0) {
-    std::printf("vhacd_meshgen 1\n");
-    return 0;
-  }
-  if (argc != 2) {
-    std::fprintf(stderr, "usage: vhacd_meshgen OUTDIR\n");
-    return 64;
-  }
-  const std::string dir = argv[1];
+  std::vector<std::string> operands;
+  hullpack::CliArgs cli("vhacd_meshgen", "OUTDIR",
+                        "Writes the generated decomposition benchmark meshes (open pots, cups and\n"
+                        "lidless boxes as single- and double-sided shells, CAD parts with holes,\n"
+                        "machinery, a blob with a small hole) into OUTDIR as OBJ files.");
+  cli.Positional("OUTDIR", &operands, 1, 1);
+  if (std::optional<int> exit_code = cli.Parse(argc, argv)) return *exit_code;
+  const std::string dir = operands[0];
   mkdir(dir.c_str(), 0755);
   for (const auto& s : hullpack::shapes::BenchmarkShapes()) {
     const std::string path = dir + "/" + s.name + ".obj";

@@ -3,11 +3,10 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <cerrno>
 #include <cstdio>
-#include <cstdlib>
 
 #include "common/file_util.h"
+#include "o3dgc/o3dgc.h"
 
 namespace hullpack {
 
@@ -58,31 +57,10 @@ Status CheckOutputPath(const std::string& output, const std::vector<std::string>
   return Status::Ok();
 }
 
-bool ParseDouble(const std::string& flag, const std::string& text, double lo, double hi,
-                 double* out) {
-  char* end = nullptr;
-  errno = 0;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || errno != 0 || !(v >= lo && v <= hi)) {
-    std::fprintf(stderr, "hullpack: %s takes a number in [%g, %g], not '%s'\n", flag.c_str(), lo,
-                 hi, text.c_str());
-    return false;
-  }
-  *out = v;
-  return true;
-}
-
-bool ParseInt(const std::string& flag, const std::string& text, long lo, long hi, long* out) {
-  char* end = nullptr;
-  errno = 0;
-  const long v = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || errno != 0 || v < lo || v > hi) {
-    std::fprintf(stderr, "hullpack: %s takes a whole number in [%ld, %ld], not '%s'\n",
-                 flag.c_str(), lo, hi, text.c_str());
-    return false;
-  }
-  *out = v;
-  return true;
+std::string FormatVersionText() {
+  return "writes o3dgc streams version " + std::to_string(o3dgc::kStreamVersion) +
+         " in glTF 2.0 binary (GLB version 2); reads o3dgc streams version " +
+         std::to_string(o3dgc::kStreamVersion) + " and original Open3DGC (2013) streams";
 }
 
 std::string FileStem(const std::string& path) {

@@ -1,4 +1,5 @@
-// Pieces every hullpack command shares: exit codes, a progress line on stderr, output-path rules.
+// Pieces every hullpack command shares: a progress line on stderr, output-path rules, the format
+// versions --version prints. The command-line convention itself is common/cli_args.h.
 #ifndef HULLPACK_TOOLS_HULLPACK_CLI_UTIL_H_
 #define HULLPACK_TOOLS_HULLPACK_CLI_UTIL_H_
 
@@ -7,11 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "common/cli_args.h"
 #include "common/status.h"
 
 namespace hullpack {
-
-constexpr int kExitUsage = 64;  // sysexits' EX_USAGE: the command line is wrong
 
 // One progress line on stderr: rewritten in place on a terminal, otherwise a new line at most
 // every two seconds. Thread-safe; silent when disabled.
@@ -36,10 +36,8 @@ class ProgressLine {
 Status CheckOutputPath(const std::string& output, const std::vector<std::string>& inputs,
                        bool force);
 
-// Parses a number option's value; false (and a message on stderr) when it is not one.
-bool ParseDouble(const std::string& flag, const std::string& text, double lo, double hi,
-                 double* out);
-bool ParseInt(const std::string& flag, const std::string& text, long lo, long hi, long* out);
+// The formats hullpack writes and reads, for --version.
+std::string FormatVersionText();
 
 // "dir/name.ext" -> "name"
 std::string FileStem(const std::string& path);

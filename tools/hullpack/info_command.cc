@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 #include "common/file_util.h"
 #include "hullpack/cli_util.h"
@@ -12,26 +13,16 @@
 namespace hullpack {
 
 int RunInfoCommand(const std::vector<std::string>& args) {
-  std::string path;
+  std::vector<std::string> files;
   bool json = false;
-  for (const std::string& a : args) {
-    if (a == "--json") {
-      json = true;
-    } else if (!a.empty() && a[0] == '-') {
-      std::fprintf(stderr, "hullpack info: unknown option '%s'\n", a.c_str());
-      return kExitUsage;
-    } else if (path.empty()) {
-      path = a;
-    } else {
-      std::fprintf(stderr, "hullpack info: one file at a time ('%s' and '%s')\n", path.c_str(),
-                   a.c_str());
-      return kExitUsage;
-    }
-  }
-  if (path.empty()) {
-    std::fprintf(stderr, "usage: hullpack info FILE [--json]\n");
-    return kExitUsage;
-  }
+  CliArgs cli("hullpack info", "FILE [--json]",
+              "Counts, attributes, bounds and topology of a mesh or scene file, and what the\n"
+              "reader could not keep.");
+  cli.VersionDetail(FormatVersionText());
+  cli.Positional("FILE", &files, 1, 1);
+  cli.Flag("--json", &json, "print the report as JSON");
+  if (std::optional<int> exit_code = cli.Parse(args)) return *exit_code;
+  const std::string& path = files[0];
   Result<Scene> scene = ReadScene(path);
   if (!scene.ok()) {
     std::fprintf(stderr, "hullpack info: %s\n", scene.status().message().c_str());

@@ -1,6 +1,4 @@
 // hullpack: convex collision hulls and compressed meshes, packed for the web.
-#include <cstdio>
-#include <cstring>
 #include <string>
 #include <vector>
 
@@ -9,32 +7,28 @@
 #include "hullpack/pack_command.h"
 #include "hullpack/unpack_command.h"
 
-namespace {
-
-void PrintUsage(FILE* out) {
-  std::fprintf(
-      out,
-      "usage: hullpack COMMAND [options]\n"
-      "commands:\n"
-      "  pack IN... -o OUT    compressed meshes + convex collision hulls in one GLB per input\n"
-      "  unpack IN.glb -o OUT decode a packed GLB back to plain glTF, OBJ, ...\n"
-      "  info FILE [--json]   counts, attributes, bounds and topology of a mesh or scene file\n"
-      "run 'hullpack COMMAND --help' for a command's options\n");
-}
-
-}  // namespace
-
 int main(int argc, char** argv) {
-  if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
-    PrintUsage(argc < 2 ? stderr : stdout);
-    return argc < 2 ? hullpack::kExitUsage : 0;
+  hullpack::CliArgs cli(
+      "hullpack", "COMMAND [options]",
+      "Convex collision hulls and compressed meshes, packed for the web and game engines.\n"
+      "commands:\n"
+      "  pack INPUT... -o OUTPUT   compressed meshes + convex collision hulls in one GLB per "
+      "input\n"
+      "  unpack IN.glb -o OUTPUT   decode a packed GLB back to plain glTF, OBJ, ...\n"
+      "  info FILE [--json]        counts, attributes, bounds and topology of a mesh or scene\n"
+      "run 'hullpack COMMAND --help' for a command's options");
+  cli.VersionDetail(hullpack::FormatVersionText());
+  std::vector<std::string> operands;
+  cli.Positional("COMMAND", &operands, 1, 1);
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  // Options before the command are hullpack's own (--help, --version); the rest are the command's.
+  if (args.empty() || args[0].empty() || args[0][0] == '-') {
+    if (std::optional<int> exit_code = cli.Parse(args)) return *exit_code;
   }
-  const std::string command = argv[1];
-  const std::vector<std::string> args(argv + 2, argv + argc);
-  if (command == "info") return hullpack::RunInfoCommand(args);
-  if (command == "pack") return hullpack::RunPackCommand(args);
-  if (command == "unpack") return hullpack::RunUnpackCommand(args);
-  std::fprintf(stderr, "hullpack: unknown command '%s'\n", command.c_str());
-  PrintUsage(stderr);
-  return hullpack::kExitUsage;
+  const std::string& command = args[0];
+  const std::vector<std::string> rest(args.begin() + 1, args.end());
+  if (command == "info") return hullpack::RunInfoCommand(rest);
+  if (command == "pack") return hullpack::RunPackCommand(rest);
+  if (command == "unpack") return hullpack::RunUnpackCommand(rest);
+  return cli.UsageError("unknown command '" + command + "'");
 }

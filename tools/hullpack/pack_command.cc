@@ -4,8 +4,10 @@
 #include <atomic>
 #include <cstdio>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <thread>
 
+#include "common/cli_args.h"
 #include "common/file_util.h"
 #include "gltf/external_images.h"
 #include "hullpack/cli_util.h"
@@ -14,34 +16,6 @@
 
 namespace hullpack {
 namespace {
-
-const char kUsage[] =
-    "usage: hullpack pack INPUT... -o OUTPUT [options]\n"
-    "  INPUT: .glb .gltf .fbx .obj .dae .ply .stl .off .wrl; OUTPUT: a .glb file (one input) or a "
-    "folder\n"
-    "  (several inputs, or a path ending in '/'), which gets NAME.packed.glb per input\n"
-    "options:\n"
-    "  --max-error F      largest position error, fraction of each mesh's bbox diagonal (0.0005)\n"
-    "  --qp N --qn N --qt N   explicit position / normal / UV bits instead (positions 1-30)\n"
-    "  --hull-error F     largest hull vertex error, fraction of the mesh's bbox diagonal (0.002)\n"
-    "  --ascii            7-bit ASCII streams (serve gzip'd) instead of binary\n"
-    "  --keep-order       keep vertex and triangle order exactly (larger)\n"
-    "  --fast-decode      code values in vertex id order: faster decoding, 2-5% larger\n"
-    "  --fallback         also write plain accessors (readers without the extension still work)\n"
-    "  --hulls all|none|auto   which meshes get collision hulls (auto)\n"
-    "  --hulls N          exactly N hulls per decomposed mesh (when it can give N)\n"
-    "  --max-concavity D  hulls within D x the mesh's diagonal of its surface, as few as that "
-    "allows\n"
-    "  --skinned-hulls    with --hulls auto, decompose skinned meshes too\n"
-    "  --physics omi|khr  OMI_physics_shape/body (default) or the KHR_physics_rigid_bodies draft\n"
-    "  --quality default|high  decomposition preset (default: V-HACD 2.0's, hulls merged while "
-    "they\n"
-    "                     stick out by at most 3 % of the diagonal, at most 24 vertices per hull)\n"
-    "  --resolution N --max-hulls N --max-vertices N --concavity F   decomposition parameters\n"
-    "  --report FILE.json per mesh: bytes before/after, bits per vertex, error, hulls, times\n"
-    "  --jobs N           inputs packed at once (default: every core)\n"
-    "  --force            replace existing outputs\n"
-    "  --quiet            no progress line\n";
 
 struct Job {
   std::string input, output;
@@ -142,121 +116,101 @@ void PackOne(Job& job, const std::vector<std::string>& inputs, const PackOptions
   job.ok = true;
 }
 
-}  // namespace
-
-int RunPackCommand(const std::vector<std::string>& args) {
+// What the command line asks for.
+struct PackCommandLine {
   std::vector<std::string> inputs;
   std::string output, report_path;
   PackOptions options;
   bool force = false, quiet = false;
-  long jobs = 0;
-  bool high_quality = false;
-  long resolution = 0, max_hulls = -1, max_vertices = 0;
-  double concavity = -1, max_concavity = -1;
-  long hull_count = 0;
-  for (size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&](std::string* out) {
-      if (i + 1 >= args.size()) {
-        std::fprintf(stderr, "hullpack pack: %s needs a value\n", a.c_str());
-        return false;
-      }
-      *out = args[++i];
-      return true;
-    };
-    std::string v;
-    long n = 0;
-    if (a == "-h" || a == "--help") {
-      std::fputs(kUsage, stdout);
-      return 0;
-    } else if (a == "-o" || a == "--output") {
-      if (!value(&output)) return kExitUsage;
-    } else if (a == "--report") {
-      if (!value(&report_path)) return kExitUsage;
-    } else if (a == "--max-error") {
-      if (!value(&v) || !ParseDouble(a, v, 1e-9, 0.5, &options.max_error)) return kExitUsage;
-    } else if (a == "--hull-error") {
-      if (!value(&v) || !ParseDouble(a, v, 1e-9, 0.5, &options.hull_error)) return kExitUsage;
-    } else if (a == "--qp" || a == "--qn" || a == "--qt") {
-      if (!value(&v) || !ParseInt(a, v, 1, 30, &n)) return kExitUsage;
-      (a == "--qp"   ? options.position_bits
-       : a == "--qn" ? options.normal_bits
-                     : options.uv_bits) = static_cast<int>(n);
-    } else if (a == "--ascii") {
-      options.stream_type = o3dgc::StreamType::kAscii;
-    } else if (a == "--keep-order") {
-      options.keep_order = true;
-    } else if (a == "--fast-decode") {
-      options.fast_decode = true;
-    } else if (a == "--fallback") {
-      options.glb.fallback = true;
-    } else if (a == "--skinned-hulls") {
-      options.collision.skinned_meshes = true;
-    } else if (a == "--hulls") {
-      if (!value(&v)) return kExitUsage;
-      if (v == "all") {
-        options.collision.policy = HullPolicy::kAll;
-      } else if (v == "none") {
-        options.collision.policy = HullPolicy::kNone;
-      } else if (v == "auto") {
-        options.collision.policy = HullPolicy::kAuto;
-      } else if (!v.empty() && v.find_first_not_of("0123456789") == std::string::npos) {
-        if (!ParseInt(a, v, 1, 100000, &hull_count)) return kExitUsage;
-      } else {
-        std::fprintf(stderr, "hullpack pack: --hulls takes all, none, auto or a count, not '%s'\n",
-                     v.c_str());
-        return kExitUsage;
-      }
-    } else if (a == "--physics") {
-      if (!value(&v) || (v != "omi" && v != "khr")) {
-        std::fprintf(stderr, "hullpack pack: --physics takes omi or khr\n");
-        return kExitUsage;
-      }
-      options.glb.physics = v == "omi" ? PhysicsForm::kOmi : PhysicsForm::kKhr;
-    } else if (a == "--quality") {
-      if (!value(&v) || (v != "default" && v != "high")) {
-        std::fprintf(stderr, "hullpack pack: --quality takes default or high\n");
-        return kExitUsage;
-      }
-      high_quality = v == "high";
-    } else if (a == "--resolution") {
-      if (!value(&v) || !ParseInt(a, v, 10000, 64000000, &resolution)) return kExitUsage;
-    } else if (a == "--max-hulls") {
-      if (!value(&v) || !ParseInt(a, v, 0, 100000, &max_hulls)) return kExitUsage;
-    } else if (a == "--max-vertices") {
-      if (!value(&v) || !ParseInt(a, v, 4, 1024, &max_vertices)) return kExitUsage;
-    } else if (a == "--concavity") {
-      if (!value(&v) || !ParseDouble(a, v, 0, 1, &concavity)) return kExitUsage;
-    } else if (a == "--max-concavity") {
-      if (!value(&v) || !ParseDouble(a, v, 1e-6, 1, &max_concavity)) return kExitUsage;
-    } else if (a == "--jobs") {
-      if (!value(&v) || !ParseInt(a, v, 1, 256, &jobs)) return kExitUsage;
-    } else if (a == "--force") {
-      force = true;
-    } else if (a == "--quiet") {
-      quiet = true;
-    } else if (!a.empty() && a[0] == '-') {
-      std::fprintf(stderr, "hullpack pack: unknown option '%s'\n%s", a.c_str(), kUsage);
-      return kExitUsage;
-    } else {
-      inputs.push_back(a);
-    }
-  }
-  if (inputs.empty() || output.empty()) {
-    std::fputs(kUsage, stderr);
-    return kExitUsage;
-  }
-  vhacd::Parameters& p = options.collision.parameters;
-  if (high_quality) p = vhacd::Parameters::High();
-  if (resolution) p.resolution = static_cast<uint32_t>(resolution);
-  if (max_hulls >= 0) p.max_convex_hulls = static_cast<uint32_t>(max_hulls);
-  if (max_vertices) p.max_vertices_per_hull = static_cast<uint32_t>(max_vertices);
-  if (concavity >= 0) p.concavity = concavity;
-  if (max_concavity > 0) p.max_concavity = max_concavity;
-  if (hull_count > 0) p.hull_count = static_cast<uint32_t>(hull_count);
+  size_t jobs = 0;  // 0: every core
+};
 
+// Parses the command line into `cmd`; returns an exit code when the command should stop.
+std::optional<int> ParsePackCommandLine(const std::vector<std::string>& args,
+                                        PackCommandLine* cmd) {
+  PackOptions& o = cmd->options;
+  vhacd::Parameters& p = o.collision.parameters;
+  CliArgs cli("hullpack pack", "INPUT... -o OUTPUT [options]",
+              "Compressed meshes and convex collision hulls in one GLB per input.\n"
+              "  INPUT: .glb .gltf .fbx .obj .dae .ply .stl .off .wrl; OUTPUT: a .glb file (one "
+              "input) or a\n"
+              "  folder (several inputs, or a path ending in '/'), which gets NAME.packed.glb per "
+              "input");
+  cli.VersionDetail(FormatVersionText());
+  cli.Positional("INPUT", &cmd->inputs, 1);
+  cli.String("-o, --output", "OUTPUT", &cmd->output, "a .glb file or a folder").Required();
+  cli.Double("--max-error", "F", 1e-9, 0.5, &o.max_error,
+             "largest position error, fraction of each mesh's bbox diagonal (0.0005)");
+  cli.Int("--qp", "N", 1, 30, &o.position_bits, "explicit position bits instead of --max-error");
+  cli.Int("--qn", "N", 1, 30, &o.normal_bits, "explicit normal bits");
+  cli.Int("--qt", "N", 1, 30, &o.uv_bits, "explicit texture coordinate bits");
+  cli.Double("--hull-error", "F", 1e-9, 0.5, &o.hull_error,
+             "largest hull vertex error, fraction of the mesh's bbox diagonal (0.002)");
+  cli.Action("--ascii", "7-bit ASCII streams (serve gzip'd) instead of binary",
+             [&o]() { o.stream_type = o3dgc::StreamType::kAscii; });
+  cli.Flag("--keep-order", &o.keep_order, "keep vertex and triangle order exactly (larger)");
+  cli.Flag("--fast-decode", &o.fast_decode,
+           "code values in vertex id order: faster decoding, 2-5% larger");
+  cli.Flag("--fallback", &o.glb.fallback,
+           "also write plain accessors (readers without the extension still work)");
+  cli.Value("--hulls", "all|none|auto|N",
+            "which meshes get collision hulls (auto); a number N: exactly N hulls per mesh",
+            [&o](const std::string& v) {
+              if (v == "all") {
+                o.collision.policy = HullPolicy::kAll;
+              } else if (v == "none") {
+                o.collision.policy = HullPolicy::kNone;
+              } else if (v == "auto") {
+                o.collision.policy = HullPolicy::kAuto;
+              } else if (!v.empty() && v.size() <= 6 &&
+                         v.find_first_not_of("0123456789") == std::string::npos &&
+                         std::stol(v) >= 1 && std::stol(v) <= 100000) {
+                o.collision.parameters.hull_count = static_cast<uint32_t>(std::stol(v));
+              } else {
+                return "takes all, none, auto or a count 1-100000, not '" + v + "'";
+              }
+              return std::string();
+            });
+  cli.Flag("--skinned-hulls", &o.collision.skinned_meshes,
+           "with --hulls auto, decompose skinned meshes too");
+  cli.Value("--physics", "omi|khr",
+            "OMI_physics_shape/body (default) or the KHR_physics_rigid_bodies draft",
+            [&o](const std::string& v) {
+              if (v != "omi" && v != "khr") return "takes omi or khr, not '" + v + "'";
+              o.glb.physics = v == "omi" ? PhysicsForm::kOmi : PhysicsForm::kKhr;
+              return std::string();
+            });
+  cli.Value("--quality", "default|high",
+            "decomposition preset (default: V-HACD 2.0's, hulls merged while they\n"
+            "stick out by at most 3 % of the diagonal, at most 24 vertices per hull);\n"
+            "the decomposition options below refine it",
+            [&p](const std::string& v) {
+              if (v != "default" && v != "high") return "takes default or high, not '" + v + "'";
+              if (v == "high") p = vhacd::Parameters::High();
+              return std::string();
+            })
+      .First();
+  cli.Int("--resolution", "N", 10000, 64000000, &p.resolution, "decomposition voxel count");
+  cli.Int("--max-hulls", "N", 0, 100000, &p.max_convex_hulls, "most hulls per mesh (0: no limit)");
+  cli.Int("--max-vertices", "N", 4, 1024, &p.max_vertices_per_hull, "most vertices per hull");
+  cli.Double("--concavity", "F", 0, 1, &p.concavity,
+             "largest concavity of a part, fraction of the diagonal");
+  cli.Double("--max-concavity", "D", 0, 1, &p.max_concavity,
+             "hulls within D x the mesh's diagonal of its surface, as few as that allows");
+  cli.String("--report", "FILE.json", &cmd->report_path,
+             "per mesh: bytes before/after, bits per vertex, error, hulls, times");
+  cli.Int("--jobs", "N", 1, 256, &cmd->jobs, "inputs packed at once (default: every core)");
+  cli.Flag("--force", &cmd->force, "replace existing outputs");
+  cli.Flag("--quiet", &cmd->quiet, "no progress line");
+  if (std::optional<int> exit_code = cli.Parse(args)) return exit_code;
+  return std::nullopt;
+}
+
+// One job per input, with its output path; an exit code when the outputs cannot be planned.
+std::optional<int> PlanJobs(const PackCommandLine& cmd, std::vector<Job>* work) {
+  const std::string& output = cmd.output;
   // One input and a file name: that file. Otherwise a folder of NAME.packed.glb.
-  const bool to_folder = inputs.size() > 1 || output.back() == '/' || IsDirectory(output);
+  const bool to_folder = cmd.inputs.size() > 1 || output.back() == '/' || IsDirectory(output);
   if (!to_folder && FormatFromExtension(output) != FileFormat::kGlb) {
     std::fprintf(stderr, "hullpack pack: %s: the output must be a .glb file or a folder\n",
                  output.c_str());
@@ -266,39 +220,46 @@ int RunPackCommand(const std::vector<std::string>& args) {
     std::fprintf(stderr, "hullpack pack: %s: no such folder\n", output.c_str());
     return kExitUsage;
   }
-  std::vector<Job> work(inputs.size());
-  for (size_t i = 0; i < inputs.size(); ++i) {
-    work[i].input = inputs[i];
-    work[i].output = to_folder ? (output.back() == '/' ? output : output + "/") +
-                                     FileStem(inputs[i]) + ".packed.glb"
-                               : output;
+  work->resize(cmd.inputs.size());
+  for (size_t i = 0; i < cmd.inputs.size(); ++i) {
+    (*work)[i].input = cmd.inputs[i];
+    (*work)[i].output = to_folder ? (output.back() == '/' ? output : output + "/") +
+                                        FileStem(cmd.inputs[i]) + ".packed.glb"
+                                  : output;
   }
-  for (size_t i = 0; i < work.size(); ++i) {  // two inputs with one stem would write one file twice
+  for (size_t i = 0; i < work->size();
+       ++i) {  // two inputs with one stem would write one file twice
     for (size_t j = 0; j < i; ++j) {
-      if (work[i].output == work[j].output) {
+      if ((*work)[i].output == (*work)[j].output) {
         std::fprintf(stderr, "hullpack pack: %s and %s would both write %s\n",
-                     work[j].input.c_str(), work[i].input.c_str(), work[i].output.c_str());
+                     (*work)[j].input.c_str(), (*work)[i].input.c_str(), (*work)[i].output.c_str());
         return kExitUsage;
       }
     }
   }
+  return std::nullopt;
+}
+
+void RunJobs(PackCommandLine& cmd, std::vector<Job>& work) {
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  const size_t threads =
-      std::min<size_t>(work.size(), jobs > 0 ? static_cast<size_t>(jobs) : cores);
+  const size_t threads = std::min<size_t>(work.size(), cmd.jobs > 0 ? cmd.jobs : cores);
   // Several files at once: each decomposition on one thread (its result does not depend on it).
-  if (threads > 1) p.num_threads = 1;
-  ProgressLine progress(!quiet);
+  if (threads > 1) cmd.options.collision.parameters.num_threads = 1;
+  ProgressLine progress(!cmd.quiet);
   std::atomic<size_t> next{0};
   auto worker = [&]() {
     for (size_t i; (i = next.fetch_add(1)) < work.size();)
-      PackOne(work[i], inputs, options, force, progress);
+      PackOne(work[i], cmd.inputs, cmd.options, cmd.force, progress);
   };
   std::vector<std::thread> pool;
   for (size_t t = 1; t < threads; ++t) pool.emplace_back(worker);
   worker();
   for (std::thread& t : pool) t.join();
   progress.Clear();
+}
 
+// One summary line per input on stdout, errors on stderr, the JSON report; returns the exit code.
+int ReportJobs(const PackCommandLine& cmd, const std::vector<Job>& work) {
   int failed = 0;
   nlohmann::json reports = nlohmann::json::array();
   for (const Job& job : work) {
@@ -326,16 +287,27 @@ int RunPackCommand(const std::vector<std::string>& args) {
     for (const auto& line : job.report["images_kept_as_references"])
       std::printf("  %s\n", line.get<std::string>().c_str());
   }
-  if (!report_path.empty()) {
+  if (!cmd.report_path.empty()) {
     const nlohmann::json doc = work.size() == 1 ? reports[0] : nlohmann::json{{"files", reports}};
     const std::string text = doc.dump(2) + "\n";
-    Status s = WriteFileAtomically(report_path, text.data(), text.size());
+    Status s = WriteFileAtomically(cmd.report_path, text.data(), text.size());
     if (!s.ok()) {
       std::fprintf(stderr, "hullpack pack: %s\n", s.message().c_str());
       if (failed == 0) failed = 1;
     }
   }
   return std::min(failed, 63);
+}
+
+}  // namespace
+
+int RunPackCommand(const std::vector<std::string>& args) {
+  PackCommandLine cmd;
+  if (std::optional<int> exit_code = ParsePackCommandLine(args, &cmd)) return *exit_code;
+  std::vector<Job> work;
+  if (std::optional<int> exit_code = PlanJobs(cmd, &work)) return *exit_code;
+  RunJobs(cmd, work);
+  return ReportJobs(cmd, work);
 }
 
 }  // namespace hullpack

@@ -1,6 +1,7 @@
 #include "hullpack/unpack_command.h"
 
 #include <cstdio>
+#include <optional>
 
 #include "common/file_util.h"
 #include "gltf/glb_reader.h"
@@ -9,43 +10,24 @@
 #include "io/scene_io.h"
 
 namespace hullpack {
-namespace {
-
-const char kUsage[] =
-    "usage: hullpack unpack PACKED.glb -o OUTPUT [--force]\n"
-    "  OUTPUT .glb: the same glTF with every compressed primitive decoded into plain accessors\n"
-    "               (collision-hull extensions kept);\n"
-    "  OUTPUT .obj .off .wrl .ply: the decoded meshes (hull meshes included, one `o` group each in "
-    "OBJ)\n";
-
-}  // namespace
-
 int RunUnpackCommand(const std::vector<std::string>& args) {
-  std::string input, output;
+  std::vector<std::string> inputs;
+  std::string output;
   bool force = false;
-  for (size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "-h" || a == "--help") {
-      std::fputs(kUsage, stdout);
-      return 0;
-    } else if ((a == "-o" || a == "--output") && i + 1 < args.size()) {
-      output = args[++i];
-    } else if (a == "--force") {
-      force = true;
-    } else if (!a.empty() && a[0] == '-') {
-      std::fprintf(stderr, "hullpack unpack: unknown option '%s'\n%s", a.c_str(), kUsage);
-      return kExitUsage;
-    } else if (input.empty()) {
-      input = a;
-    } else {
-      std::fprintf(stderr, "hullpack unpack: one input at a time\n");
-      return kExitUsage;
-    }
-  }
-  if (input.empty() || output.empty()) {
-    std::fputs(kUsage, stderr);
-    return kExitUsage;
-  }
+  CliArgs cli("hullpack unpack", "PACKED.glb -o OUTPUT [--force]",
+              "Decodes a packed GLB.\n"
+              "  OUTPUT .glb: the same glTF with every compressed primitive decoded into plain\n"
+              "               accessors (collision-hull extensions kept);\n"
+              "  OUTPUT .obj .off .wrl .ply: the decoded meshes (hull meshes included, one `o` "
+              "group\n"
+              "               each in OBJ)");
+  cli.VersionDetail(FormatVersionText());
+  cli.Positional("PACKED.glb", &inputs, 1, 1);
+  cli.String("-o, --output", "OUTPUT", &output, "the file to write (.glb .obj .off .wrl .ply)")
+      .Required();
+  cli.Flag("--force", &force, "replace an existing OUTPUT");
+  if (std::optional<int> exit_code = cli.Parse(args)) return *exit_code;
+  const std::string& input = inputs[0];
   const FileFormat out_format = FormatFromExtension(output);
   if (out_format == FileFormat::kUnknown) {
     std::fprintf(stderr, "hullpack unpack: %s: unknown output format (.glb .obj .off .wrl .ply)\n",

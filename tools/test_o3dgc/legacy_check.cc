@@ -15,10 +15,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "common/cli_args.h"
 #include "o3dgc/o3dgc.h"
 
 namespace {
@@ -81,11 +83,15 @@ void CompareValues(const std::vector<float>& ours, const std::vector<std::string
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::fprintf(stderr, "usage: o3dgc_legacy_check FOLDER\n");
-    return 2;
-  }
-  const std::string dir = argv[1];
+  std::vector<std::string> folders;
+  hullpack::CliArgs cli("o3dgc_legacy_check", "FOLDER",
+                        "Decodes every *.s3d of FOLDER (streams of the original Open3DGC tool) and "
+                        "compares each\nwith the OBJ the original decoder wrote beside it "
+                        "(NAME_dec.obj). Exit status: the\nnumber of streams that differ.");
+  cli.VersionDetail("reads original Open3DGC (2013) streams");
+  cli.Positional("FOLDER", &folders, 1, 1);
+  if (std::optional<int> exit_code = cli.Parse(argc, argv)) return *exit_code;
+  const std::string dir = folders[0];
   std::vector<std::string> names;
   if (DIR* d = opendir(dir.c_str())) {
     while (dirent* e = readdir(d)) {

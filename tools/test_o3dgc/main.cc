@@ -1,21 +1,24 @@
 // test_o3dgc: compress a mesh file to an o3dgc stream (.s3d) or decompress one to OBJ.
 //
-//   test_o3dgc -c -i bunny.obj [-st binary|ascii] [-qc 14] [-qn 10] [-qt 12] [-keep]
+//   test_o3dgc -c -i bunny.obj [-st binary|ascii] [-qc 14] [-qn 10] [-qt 12] [-keep] [-fast]
 //       writes bunny.s3d next to the input
 //   test_o3dgc -d -i bunny.s3d
 //       writes bunny_dec.obj next to the input; also reads streams of the original Open3DGC tool
 //       (2013), written out in that tool's OBJ layout
+// The single-dash options are the original tool's spellings; each has the long name the other
+// programs use (--compress, --input, --qp, --keep-order, ...), see --help.
 // Material names (the stream keeps only per-triangle group ids) go to a side file bunny.mat, one
 // name per line in id order, which -d reads back when it exists.
 // Every mesh of the input is merged into one (material ids become triangle groups, written back
 // as usemtl groups). Prints mesh info, timings, stream size and the size of each part.
 #include <chrono>
 #include <cstdio>
-#include <cstring>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "common/cli_args.h"
 #include "common/file_util.h"
 #include "io/scene_io.h"
 #include "mesh/merge.h"
@@ -29,13 +32,6 @@ using Clock = std::chrono::steady_clock;
 
 double Ms(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double, std::milli>(b - a).count();
-}
-
-int Usage() {
-  std::fprintf(stderr,
-               "usage: test_o3dgc -c -i <mesh> [-st binary|ascii] [-qc bits] [-qn bits] [-qt bits] "
-               "[-keep] [-fast]\n       test_o3dgc -d -i <stream.s3d>\n");
-  return 2;
 }
 
 std::string Stem(const std::string& path) {
@@ -284,45 +280,43 @@ int Decompress(const std::string& input) {
 int main(int argc, char** argv) {
   bool compress = false, decompress = false;
   std::string input;
+  std::vector<std::string> operands;
   hullpack::MeshCodecSettings settings;
   settings.color_bits = 8;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto next_int = [&](int* v) {
-      if (i + 1 >= argc) return false;
-      *v = std::atoi(argv[++i]);
-      return true;
-    };
-    if (a == "-c") {
-      compress = true;
-    } else if (a == "-d") {
-      decompress = true;
-    } else if (a == "-i" && i + 1 < argc) {
-      input = argv[++i];
-    } else if (a == "-st" && i + 1 < argc) {
-      const std::string t = argv[++i];
-      if (t == "ascii") {
-        settings.stream_type = o3dgc::StreamType::kAscii;
-      } else if (t == "binary") {
-        settings.stream_type = o3dgc::StreamType::kBinary;
-      } else {
-        return Usage();
-      }
-    } else if (a == "-qc") {
-      if (!next_int(&settings.position_bits)) return Usage();
-    } else if (a == "-qn") {
-      if (!next_int(&settings.normal_bits)) return Usage();
-    } else if (a == "-qt") {
-      if (!next_int(&settings.uv_bits)) return Usage();
-    } else if (a == "-keep") {
-      settings.keep_order = true;
-    } else if (a == "-fast") {
-      settings.fast_decode = true;  // vertex id order: faster decoding, a few % larger
-    } else {
-      return Usage();
-    }
+  hullpack::CliArgs cli(
+      "test_o3dgc", "-c|-d -i INPUT [options]",
+      "Compresses a mesh file (.obj .off .wrl .ply .stl .glb .gltf .fbx .dae) to an o3dgc stream\n"
+      "INPUT.s3d, or decompresses a stream (this project's or the original Open3DGC tool's) to\n"
+      "INPUT_dec.obj, both next to INPUT. The single-dash spellings are the original tool's.");
+  cli.VersionDetail("writes o3dgc streams version " + std::to_string(o3dgc::kStreamVersion) +
+                    "; reads o3dgc streams version " + std::to_string(o3dgc::kStreamVersion) +
+                    " and original Open3DGC (2013) streams");
+  cli.Flag("-c, --compress", &compress, "compress INPUT to INPUT.s3d");
+  cli.Flag("-d, --decompress", &decompress, "decompress the stream INPUT to INPUT_dec.obj");
+  cli.String("-i, --input", "INPUT", &input, "the file to read (or give it as the operand)");
+  cli.Positional("INPUT", &operands, 0, 1);
+  cli.Value("-st, --stream-type", "binary|ascii", "binary (default) or 7-bit ASCII stream",
+            [&settings](const std::string& v) {
+              if (v != "binary" && v != "ascii") return "takes binary or ascii, not '" + v + "'";
+              settings.stream_type =
+                  v == "ascii" ? o3dgc::StreamType::kAscii : o3dgc::StreamType::kBinary;
+              return std::string();
+            });
+  cli.Action("--ascii", "the same as -st ascii",
+             [&settings]() { settings.stream_type = o3dgc::StreamType::kAscii; });
+  cli.Int("-qc, --qp", "BITS", 1, 30, &settings.position_bits, "position bits (14)");
+  cli.Int("-qn, --qn", "BITS", 1, 30, &settings.normal_bits, "normal bits (10)");
+  cli.Int("-qt, --qt", "BITS", 1, 30, &settings.uv_bits, "texture coordinate bits (12)");
+  cli.Flag("-keep, --keep-order", &settings.keep_order,
+           "keep vertex and triangle order exactly (larger)");
+  cli.Flag("-fast, --fast-decode", &settings.fast_decode,
+           "code values in vertex id order: faster decoding, a few % larger");
+  if (std::optional<int> exit_code = cli.Parse(argc, argv)) return *exit_code;
+  if (compress == decompress) return cli.UsageError("give one of -c and -d");
+  if (!operands.empty()) {
+    if (!input.empty()) return cli.UsageError("give INPUT once (-i or operand)");
+    input = operands[0];
   }
-  if (input.empty() || compress == decompress) return Usage();
-  if (settings.uv_bits < 1 || settings.uv_bits > 30) return Usage();
+  if (input.empty()) return cli.UsageError("missing -i INPUT");
   return compress ? Compress(input, settings) : Decompress(input);
 }

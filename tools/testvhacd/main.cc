@@ -1,29 +1,19 @@
 // testVHACD: approximate convex decomposition of a mesh file.
 //
-// The V-HACD 2.0 positional form:
-//   testVHACD input.obj resolution depth concavity planeDownsampling convexhullDownsampling
-//             alpha beta gamma pca mode maxNumVerticesPerCH minVolumePerCH output.wrl log.txt
-//   e.g. testVHACD input.obj 100000 20 0.0025 4 4 0.05 0.05 0.00125 0 0 64 0.0 output.wrl log.txt
-// Named flags:
-//   testVHACD input.obj [-o hulls.obj|.wrl|.glb|.off|.ply] [--report report.json] [--log log.txt]
-//             [--preset|--quality default|high] [--resolution N] [--depth N] [--concavity X]
-//             [--plane-downsampling N] [--convexhull-downsampling N] [--alpha X] [--beta X]
-//             [--gamma X] [--pca 0|1] [--mode 0|1|voxel|tetra] [--max-vertices N] [--min-volume X]
-//             [--max-hulls N] [--max-distance X] [--threads N] [--max-concavity D] [--hulls N]
-//             [--min-opening X]
-// --max-concavity D: every hull within D x the bounding-box diagonal of the surface (the reported
-// concavity), as few hulls as that allows; --hulls N: exactly N hulls.
-// Every mesh of the input (with its node transforms) is decomposed as one soup. The hulls are
-// written as a scene with one mesh per hull. Progress goes to stderr; a summary to stdout.
-// Exit status: 0 success, 1 decomposition or I/O error, 2 usage error.
+// Two command lines: V-HACD 2.0's positional form (kept so that its scripts run unchanged) and
+// named options (see --help). Every mesh of the input (with its node transforms) is decomposed as
+// one soup; the hulls are written as a scene with one mesh per hull. Progress goes to stderr, a
+// summary to stdout. Exit status: 0 success, 1 decomposition or I/O error, 64 usage error.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "common/cli_args.h"
 #include "io/scene_io.h"
 #include "scene/scene.h"
 #include "scene_soup.h"
@@ -31,37 +21,130 @@
 
 namespace {
 
-int Usage(const char* why) {
-  if (why != nullptr) std::fprintf(stderr, "testVHACD: %s\n", why);
-  std::fprintf(
-      stderr,
-      "usage: testVHACD input resolution depth concavity planeDownsampling convexhullDownsampling "
-      "alpha beta gamma pca mode maxNumVerticesPerCH minVolumePerCH output log\n"
-      "       testVHACD input [-o hulls.obj|.wrl|.glb] [--report report.json] [--log log.txt]\n"
-      "                 [--preset|--quality default|high] [--resolution N] [--depth N] "
-      "[--concavity X]\n"
-      "                 [--plane-downsampling N] [--convexhull-downsampling N] [--alpha X]\n"
-      "                 [--beta X] [--gamma X] [--pca 0|1] [--mode 0|1|voxel|tetra] "
-      "[--max-vertices N]\n"
-      "                 [--min-volume X] [--max-hulls N] [--max-distance X] [--threads N]\n"
-      "                 [--max-concavity D] [--hulls N] [--min-opening X]\n");
-  return 2;
+constexpr char kPositionalForm[] =
+    "V-HACD 2.0's positional form (all 15 arguments):\n"
+    "  testVHACD INPUT resolution depth concavity planeDownsampling convexhullDownsampling\n"
+    "            alpha beta gamma pca mode maxNumVerticesPerCH minVolumePerCH OUTPUT LOG\n"
+    "  e.g. testVHACD in.obj 100000 20 0.0025 4 4 0.05 0.05 0.00125 0 0 64 0.0 out.wrl log.txt";
+
+bool ParseDouble(const std::string& s, double* out) {
+  return hullpack::CliArgs::ParseNumber(s, -1e300, 1e300, out).empty();
 }
 
-bool ParseDouble(const char* s, double* out) {
-  char* end = nullptr;
-  const double v = std::strtod(s, &end);
-  if (end == s || *end != '\0' || !std::isfinite(v)) return false;
-  *out = v;
-  return true;
-}
-
-bool ParseUint(const char* s, uint32_t* out) {
-  char* end = nullptr;
-  const long long v = std::strtoll(s, &end, 10);
-  if (end == s || *end != '\0' || v < 0 || v > 0xffffffffLL) return false;
+bool ParseUint(const std::string& s, uint32_t* out) {
+  long long v = 0;
+  if (!hullpack::CliArgs::ParseWholeNumber(s, 0, 0xffffffffLL, &v).empty()) return false;
   *out = static_cast<uint32_t>(v);
   return true;
+}
+
+// V-HACD 2.0's positional form: exactly 15 arguments, numbers in slots 2..13.
+bool IsPositionalForm(const std::vector<std::string>& args) {
+  if (args.size() != 15) return false;
+  double d;
+  for (size_t i = 1; i <= 12; ++i) {
+    if (!ParseDouble(args[i], &d)) return false;
+  }
+  return true;
+}
+
+// What the command line asks for.
+struct CommandLine {
+  std::string input, output, report_path, log_path;
+  vhacd::Parameters parameters;
+};
+
+std::optional<int> ParsePositionalForm(const hullpack::CliArgs& cli,
+                                       const std::vector<std::string>& a, CommandLine* cmd) {
+  vhacd::Parameters& p = cmd->parameters;
+  uint32_t pca = 0, mode = 0;
+  if (!ParseUint(a[1], &p.resolution) || !ParseUint(a[2], &p.depth) ||
+      !ParseDouble(a[3], &p.concavity) || !ParseUint(a[4], &p.plane_downsampling) ||
+      !ParseUint(a[5], &p.convexhull_downsampling) || !ParseDouble(a[6], &p.alpha) ||
+      !ParseDouble(a[7], &p.beta) || !ParseDouble(a[8], &p.gamma) || !ParseUint(a[9], &pca) ||
+      !ParseUint(a[10], &mode) || !ParseUint(a[11], &p.max_vertices_per_hull) ||
+      !ParseDouble(a[12], &p.min_volume_per_hull))
+    return cli.UsageError("bad number in the positional parameters");
+  if (pca > 1 || mode > 1) return cli.UsageError("pca and mode must be 0 or 1");
+  p.pca = pca == 1;
+  p.mode = static_cast<vhacd::Mode>(mode);
+  cmd->input = a[0];
+  cmd->output = a[13];
+  cmd->log_path = a[14];
+  return std::nullopt;
+}
+
+std::optional<int> ParseCommandLine(const std::vector<std::string>& args, CommandLine* cmd) {
+  vhacd::Parameters& p = cmd->parameters;
+  std::vector<std::string> inputs;
+  hullpack::CliArgs cli("testVHACD", "INPUT [-o HULLS] [options]",
+                        "Approximate convex decomposition (V-HACD 2.0) of every mesh of INPUT "
+                        "(.obj .off .wrl .ply .stl\n.glb .gltf .fbx .dae), as one soup.");
+  cli.Positional("INPUT", &inputs, 1, 1);
+  cli.String("-o, --output", "HULLS", &cmd->output,
+             "the hulls, one mesh each (.obj .wrl .glb .off .ply)");
+  cli.String("--report", "FILE.json", &cmd->report_path,
+             "hull count, error measures, per-stage seconds, per-hull volume");
+  cli.String("--log", "FILE", &cmd->log_path, "the library's log messages");
+  cli.Value("--quality, --preset", "default|high", "parameter preset the other options refine",
+            [&p](const std::string& v) {
+              if (v != "default" && v != "high") return "takes default or high, not '" + v + "'";
+              p = v == "high" ? vhacd::Parameters::High() : vhacd::Parameters();
+              return std::string();
+            })
+      .First();
+  const long long kU32 = 0xffffffffLL;
+  cli.Int("--resolution", "N", 0, kU32, &p.resolution, "voxel count");
+  cli.Int("--depth", "N", 0, kU32, &p.depth, "most clipping levels");
+  cli.Double("--concavity", "X", -1e300, 1e300, &p.concavity,
+             "largest concavity of a part, fraction of the diagonal");
+  cli.Int("--plane-downsampling", "N", 0, kU32, &p.plane_downsampling,
+          "granularity of the search for the best clipping plane");
+  cli.Int("--convexhull-downsampling", "N", 0, kU32, &p.convexhull_downsampling,
+          "precision of the hull generation while clipping");
+  cli.Double("--alpha", "X", -1e300, 1e300, &p.alpha, "bias toward clipping along symmetry planes");
+  cli.Double("--beta", "X", -1e300, 1e300, &p.beta, "bias toward clipping along revolution axes");
+  cli.Double("--gamma", "X", -1e300, 1e300, &p.gamma, "largest concavity while merging");
+  cli.Value("--pca", "0|1", "normalize the mesh by its principal axes first",
+            [&p](const std::string& v) {
+              if (v != "0" && v != "1") return "takes 0 or 1, not '" + v + "'";
+              p.pca = v == "1";
+              return std::string();
+            });
+  cli.Value("--mode", "voxel|tetra", "voxel (0) or tetrahedron (1) sets",
+            [&p](const std::string& v) {
+              if (v == "0" || v == "voxel") {
+                p.mode = vhacd::Mode::kVoxel;
+              } else if (v == "1" || v == "tetra" || v == "tetrahedron") {
+                p.mode = vhacd::Mode::kTetrahedron;
+              } else {
+                return "takes voxel, tetra, 0 or 1, not '" + v + "'";
+              }
+              return std::string();
+            });
+  cli.Int("--max-vertices", "N", 0, kU32, &p.max_vertices_per_hull, "most vertices per hull");
+  cli.Double("--min-volume", "X", -1e300, 1e300, &p.min_volume_per_hull,
+             "smallest hull volume, adaptive sampling");
+  cli.Int("--max-hulls", "N", 0, kU32, &p.max_convex_hulls, "hull budget (0: no limit)");
+  cli.Double("--max-distance", "X", -1e300, 1e300, &p.max_distance,
+             "split and merge hulls while they stick out by at most X of the diagonal");
+  cli.Int("--threads", "N", 0, kU32, &p.num_threads, "worker threads (0: every core)");
+  cli.Double("--max-concavity", "D", -1e300, 1e300, &p.max_concavity,
+             "every hull within D x the diagonal of the surface (the reported concavity), as few "
+             "hulls as that allows");
+  cli.Int("--hulls", "N", 0, kU32, &p.hull_count, "exactly N hulls (when the mesh can give N)");
+  cli.Double("--min-opening", "X", -1e300, 1e300, &p.min_opening,
+             "fill rule: cavities behind openings wider than X of the diagonal stay empty");
+  cli.Epilog(kPositionalForm);
+  if (IsPositionalForm(args)) {
+    if (std::optional<int> exit_code = ParsePositionalForm(cli, args, cmd)) return exit_code;
+  } else {
+    if (std::optional<int> exit_code = cli.Parse(args)) return exit_code;
+    cmd->input = inputs[0];
+  }
+  std::string why;
+  if (vhacd::ValidateParameters(p, &why) != vhacd::Status::kOk) return cli.UsageError(why);
+  return std::nullopt;
 }
 
 class Progress : public vhacd::Observer {
@@ -148,108 +231,13 @@ bool WriteReport(const std::string& path, const std::string& input, const vhacd:
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 2) return Usage(nullptr);
-  std::string input = argv[1], output, report_path, log_path;
-  vhacd::Parameters p;
-  // Positional form: exactly 15 arguments after the program name, numbers in slots 2..13.
-  bool positional = argc == 16;
-  for (int i = 2; positional && i <= 13; ++i) {
-    double d;
-    positional = ParseDouble(argv[i], &d);
-  }
-  if (positional) {
-    uint32_t pca = 0, mode = 0;
-    if (!ParseUint(argv[2], &p.resolution) || !ParseUint(argv[3], &p.depth) ||
-        !ParseDouble(argv[4], &p.concavity) || !ParseUint(argv[5], &p.plane_downsampling) ||
-        !ParseUint(argv[6], &p.convexhull_downsampling) || !ParseDouble(argv[7], &p.alpha) ||
-        !ParseDouble(argv[8], &p.beta) || !ParseDouble(argv[9], &p.gamma) ||
-        !ParseUint(argv[10], &pca) || !ParseUint(argv[11], &mode) ||
-        !ParseUint(argv[12], &p.max_vertices_per_hull) ||
-        !ParseDouble(argv[13], &p.min_volume_per_hull))
-      return Usage("bad number in the positional parameters");
-    if (pca > 1 || mode > 1) return Usage("pca and mode must be 0 or 1");
-    p.pca = pca == 1;
-    p.mode = static_cast<vhacd::Mode>(mode);
-    output = argv[14];
-    log_path = argv[15];
-  } else {
-    // The preset first, so that the other flags change it whatever their order.
-    for (int i = 2; i + 1 < argc; i += 2) {
-      const std::string a = argv[i];
-      if (a != "--preset" && a != "--quality") continue;
-      if (std::strcmp(argv[i + 1], "high") == 0)
-        p = vhacd::Parameters::High();
-      else if (std::strcmp(argv[i + 1], "default") == 0)
-        p = vhacd::Parameters();
-      else
-        return Usage(("bad value for " + a).c_str());
-    }
-    for (int i = 2; i < argc; ++i) {
-      const std::string a = argv[i];
-      if (i + 1 >= argc) return Usage(("missing value after " + a).c_str());
-      const char* v = argv[++i];
-      uint32_t u = 0;
-      double d = 0;
-      bool ok = true;
-      if (a == "-o" || a == "--output")
-        output = v;
-      else if (a == "--report")
-        report_path = v;
-      else if (a == "--log")
-        log_path = v;
-      else if (a == "--preset" || a == "--quality")
-        continue;  // applied above
-      else if (a == "--resolution")
-        ok = ParseUint(v, &p.resolution);
-      else if (a == "--depth")
-        ok = ParseUint(v, &p.depth);
-      else if (a == "--concavity")
-        ok = ParseDouble(v, &p.concavity);
-      else if (a == "--plane-downsampling")
-        ok = ParseUint(v, &p.plane_downsampling);
-      else if (a == "--convexhull-downsampling")
-        ok = ParseUint(v, &p.convexhull_downsampling);
-      else if (a == "--alpha")
-        ok = ParseDouble(v, &p.alpha);
-      else if (a == "--beta")
-        ok = ParseDouble(v, &p.beta);
-      else if (a == "--gamma")
-        ok = ParseDouble(v, &p.gamma);
-      else if (a == "--pca") {
-        ok = ParseUint(v, &u) && u <= 1;
-        p.pca = u == 1;
-      } else if (a == "--mode") {
-        if (std::strcmp(v, "tetra") == 0 || std::strcmp(v, "tetrahedron") == 0)
-          u = 1;
-        else if (std::strcmp(v, "voxel") == 0)
-          u = 0;
-        else
-          ok = ParseUint(v, &u) && u <= 1;
-        p.mode = static_cast<vhacd::Mode>(u);
-      } else if (a == "--max-vertices")
-        ok = ParseUint(v, &p.max_vertices_per_hull);
-      else if (a == "--min-volume")
-        ok = ParseDouble(v, &p.min_volume_per_hull);
-      else if (a == "--max-hulls")
-        ok = ParseUint(v, &p.max_convex_hulls);
-      else if (a == "--max-distance")
-        ok = ParseDouble(v, &d) && (p.max_distance = d, true);
-      else if (a == "--threads")
-        ok = ParseUint(v, &p.num_threads);
-      else if (a == "--max-concavity")
-        ok = ParseDouble(v, &p.max_concavity);
-      else if (a == "--hulls")
-        ok = ParseUint(v, &p.hull_count) && p.hull_count > 0;
-      else if (a == "--min-opening")
-        ok = ParseDouble(v, &p.min_opening);
-      else
-        return Usage(("unknown option " + a).c_str());
-      if (!ok) return Usage(("bad value for " + a).c_str());
-    }
-  }
-  std::string why;
-  if (vhacd::ValidateParameters(p, &why) != vhacd::Status::kOk) return Usage(why.c_str());
-
+  CommandLine cmd;
+  if (std::optional<int> exit_code =
+          ParseCommandLine(std::vector<std::string>(argv + 1, argv + argc), &cmd))
+    return *exit_code;
+  const std::string& input = cmd.input;
+  const std::string &output = cmd.output, &report_path = cmd.report_path, &log_path = cmd.log_path;
+  const vhacd::Parameters& p = cmd.parameters;
   hullpack::Result<hullpack::Scene> scene = hullpack::ReadScene(input);
   if (!scene.ok()) {
     std::fprintf(stderr, "testVHACD: %s\n", scene.status().ToString().c_str());

@@ -16,10 +16,12 @@
 //            surface an odd number of times.
 //      Rule (a) is exact for closed surfaces, including overlapping closed components; rule (b)
 //      keeps meshes with small holes (scans such as the Stanford bunny, open at the base) solid,
-//      because a ray only escapes through a hole it is aimed at. A thin open sheet whose opening
-//      is as large as the shape (a single-sheet hemisphere) may be filled; a closed thick bowl's
-//      cavity is kept empty. Crossings are counted with a tie-breaking rule so that a ray through
-//      a shared edge or vertex is counted once.
+//      because a ray only escapes through a hole it is aimed at. Crossings are counted with a
+//      tie-breaking rule so that a ray through a shared edge or vertex is counted once.
+//      Rule (b) does not apply where a ball of diameter `min_opening` x diagonal reaches from
+//      outside the grid between the surface voxels (the cavity of an open pot, cup or lidless
+//      box), nor to the thin left-over regions the ball leaves in the corners of such a cavity
+//      (fewer voxels than the ball radius times their faces shared with the swept region).
 //   4. recursive clipping, up to `depth` levels: each part is cut while its concavity
 //      (volume of its hull - its volume) / (volume of the hull of the whole voxel set) exceeds
 //      `concavity`, or while its hull sticks out of the solid by more than `max_distance` (measured
