@@ -499,7 +499,12 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
 
   if (!target) {
     rep.attempts = 1;
-    const Limits lim{params.concavity, params.gamma, max_depth};
+    // hull_count: parts split by how far their hull sticks out only (0.6 x the max_distance limit,
+    // at least a voxel), which the merge down to N then trades best.
+    constexpr double kExactSplit = 0.6;
+    const Limits lim = exact_count && max_depth > 0
+                           ? Limits{1.0, params.gamma, std::max(1.0, kExactSplit * max_depth)}
+                           : Limits{params.concavity, params.gamma, max_depth};
     if (run(lim, &rep) != Status::kOk) return Fail(Status::kCancelled, "cancelled");
     if (exact_count && hulls.size() != params.hull_count) {
       rep.target_reached = false;
