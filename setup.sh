@@ -17,20 +17,31 @@ PACKAGES=(
   cmake
   emscripten
   g++
+  ignition-tools
   libassimp-dev
   libbullet-dev
+  libbullet-extras-dev
   libclang-rt-14-dev
   libdraco-dev
   libeigen3-dev
   libgmock-dev
   libgtest-dev
+  libsdformat-dev
+  liburdfdom-tools
   make
+  munge
   ninja-build
   nlohmann-json3-dev
   node-acorn
   nodejs
   npm
   pkg-config
+  pybind11-dev
+  python3-dev
+  python3-numpy
+  python3-pybind11
+  python3-setuptools
+  slurm-wlm
   zlib1g-dev
 )
 
@@ -107,7 +118,8 @@ configure_sanitized() {
 # test; LeakSanitizer on, with tests/sanitizers/lsan.supp for third-party leaks). Leaves out the
 # "heavy" label (the 2-million-triangle stability case: the plain run covers it, and it takes many
 # minutes under ASan) and web_browser (the WebAssembly decoder in Chromium, which no sanitizer sees;
-# the plain run covers it). HULLPACK_SANITIZE_TESTS=0 skips the stage.
+# the plain run covers it). The one-node Slurm cluster test (hullpack_batch_slurm, label "daemon") is
+# registered in the plain tree only. HULLPACK_SANITIZE_TESTS=0 skips the stage.
 sanitized_tests() {
   [ "${HULLPACK_SANITIZE_TESTS:-1}" = 0 ] && return 0
   log "building the sanitized tests ($JOBS jobs)"
@@ -146,8 +158,11 @@ case "${1:-}" in
       HULLPACK_FUZZ_BUILD_DIR=$SANITIZE_DIR tests/fuzz/run_fuzzers.sh "${HULLPACK_FUZZ_SECONDS:-60}"
     fi
     ;;
+  -h | --help)
+    sed -n '2,5p' "$0" | sed 's/^# \{0,1\}//'
+    ;;
   *)
-    echo "usage: ./setup.sh demo|test" >&2
-    exit 2
+    echo "setup.sh: unknown command '${1:-}' (usage: ./setup.sh demo|test; see --help)" >&2
+    exit 64
     ;;
 esac

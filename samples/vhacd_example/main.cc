@@ -90,7 +90,34 @@ static void MakeTorus(std::vector<float>* points, std::vector<int>* triangles) {
     }
 }
 
+// The example links the vhacd library alone, so it answers --help and --version by hand, in the
+// form every hullpack program uses (tools/common/cli_args.h).
+int HelpOrVersion(int argc, char* argv[]) {
+  if (argc < 2) return -1;
+  const std::string a = argv[1];
+  if (a == "-h" || a == "--help") {
+    std::cout << "usage: vhacd_example [MESH.obj [LOG.txt]]\n"
+                 "The V-HACD 2.0 library example on the IVHACD facade: decomposes MESH.obj (or a "
+                 "torus built\nin code) and prints the hulls' points and triangles.\n"
+                 "options:\n"
+                 "  -h, --help                print this help and exit\n"
+                 "  --version                 print the version and exit\n";
+    return 0;
+  }
+  if (a == "--version") {
+    std::cout << "vhacd_example (hullpack) " << HULLPACK_VERSION << "\n";
+    return 0;
+  }
+  if (argc > 3 || (a.size() > 1 && a[0] == '-')) {
+    std::cerr << "vhacd_example: unknown option or extra argument (usage: vhacd_example "
+                 "[MESH.obj [LOG.txt]]; see --help)\n";
+    return 64;
+  }
+  return -1;
+}
+
 int main(int argc, char* argv[]) {
+  if (const int exit_code = HelpOrVersion(argc, argv); exit_code >= 0) return exit_code;
   std::vector<float> points;   // array of coordinates
   std::vector<int> triangles;  // array of indexes
   // load the mesh

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/test_shapes.h"
 #include "o3dgc/o3dgc.h"
 
 namespace o3dgc_test {
@@ -58,80 +59,35 @@ struct TestMesh {
   }
 };
 
-// (n+1) x (m+1) vertex grid in the unit square, z = small bump; with uv = xy.
+// (n+1) x (m+1) vertex grid in the unit square (test_shapes::Grid), z = small bump; uv = xy.
 inline TestMesh Grid(int n, int m) {
+  const test_shapes::Shape grid = test_shapes::Grid(n, m);
   TestMesh t;
-  for (int j = 0; j <= m; ++j) {
-    for (int i = 0; i <= n; ++i) {
-      const float x = float(i) / n, y = float(j) / m;
-      t.positions.insert(t.positions.end(), {x, y, 0.1f * std::sin(3 * x) * std::cos(2 * y)});
-      t.uvs.insert(t.uvs.end(), {x, y});
-      t.normals.insert(t.normals.end(), {0, 0, 1});
-    }
-  }
-  for (int j = 0; j < m; ++j) {
-    for (int i = 0; i < n; ++i) {
-      const uint32_t a = uint32_t(j * (n + 1) + i), b = a + 1, c = a + uint32_t(n + 1), d = c + 1;
-      t.indices.insert(t.indices.end(), {a, b, d, a, d, c});
-    }
+  t.indices = grid.triangles;
+  for (size_t v = 0; v < grid.vertex_count(); ++v) {
+    const float x = float(grid.positions[3 * v]) / n, y = float(grid.positions[3 * v + 1]) / m;
+    t.positions.insert(t.positions.end(), {x, y, 0.1f * std::sin(3 * x) * std::cos(2 * y)});
+    t.uvs.insert(t.uvs.end(), {x, y});
+    t.normals.insert(t.normals.end(), {0, 0, 1});
   }
   return t;
 }
 
-// UV sphere with poles (closed, genus 0) and exact unit normals.
+// Unit UV sphere with poles (closed, genus 0) and exact unit normals (test_shapes::Sphere).
 inline TestMesh Sphere(int slices, int stacks) {
   TestMesh t;
-  const double pi = 3.14159265358979323846;
-  t.positions.insert(t.positions.end(), {0, 0, 1});
-  t.normals.insert(t.normals.end(), {0, 0, 1});
-  for (int j = 1; j < stacks; ++j) {
-    const double th = pi * j / stacks;
-    for (int i = 0; i < slices; ++i) {
-      const double ph = 2 * pi * i / slices;
-      const float x = float(std::sin(th) * std::cos(ph)), y = float(std::sin(th) * std::sin(ph)),
-                  z = float(std::cos(th));
-      t.positions.insert(t.positions.end(), {x, y, z});
-      t.normals.insert(t.normals.end(), {x, y, z});
-    }
-  }
-  t.positions.insert(t.positions.end(), {0, 0, -1});
-  t.normals.insert(t.normals.end(), {0, 0, -1});
-  const uint32_t south = uint32_t(t.nv() - 1);
-  auto ring = [&](int j, int i) { return uint32_t(1 + (j - 1) * slices + (i % slices)); };
-  for (int i = 0; i < slices; ++i)
-    t.indices.insert(t.indices.end(), {0, ring(1, i), ring(1, i + 1)});
-  for (int j = 1; j < stacks - 1; ++j) {
-    for (int i = 0; i < slices; ++i) {
-      t.indices.insert(t.indices.end(), {ring(j, i), ring(j + 1, i), ring(j + 1, i + 1)});
-      t.indices.insert(t.indices.end(), {ring(j, i), ring(j + 1, i + 1), ring(j, i + 1)});
-    }
-  }
-  for (int i = 0; i < slices; ++i) {
-    t.indices.insert(t.indices.end(), {south, ring(stacks - 1, i + 1), ring(stacks - 1, i)});
-  }
+  test_shapes::AppendTo(test_shapes::Sphere(1, slices, stacks), &t);
   return t;
 }
 
-// Torus (genus 1) with colours and joint ids.
+// Torus (genus 1, test_shapes::Torus) with colours and joint ids.
 inline TestMesh Torus(int n, int m) {
   TestMesh t;
-  const double pi = 3.14159265358979323846;
-  for (int j = 0; j < m; ++j) {
-    for (int i = 0; i < n; ++i) {
-      const double u = 2 * pi * i / n, v = 2 * pi * j / m;
-      t.positions.insert(t.positions.end(),
-                         {float((2 + 0.5 * std::cos(v)) * std::cos(u)),
-                          float((2 + 0.5 * std::cos(v)) * std::sin(u)), float(0.5 * std::sin(v))});
+  test_shapes::AppendTo(test_shapes::Torus(2, 0.5, n, m), &t, /*with_normals=*/false);
+  for (int i = 0; i < n; ++i) {  // vertex i * m + j
+    for (int j = 0; j < m; ++j) {
       t.colors.insert(t.colors.end(), {float(i) / n, float(j) / m, 0.5f, 1.0f});
       t.joints.insert(t.joints.end(), {i % 3, j % 5, 1000 + i, -7});
-    }
-  }
-  for (int j = 0; j < m; ++j) {
-    for (int i = 0; i < n; ++i) {
-      const uint32_t a = uint32_t(j * n + i), b = uint32_t(j * n + (i + 1) % n),
-                     c = uint32_t(((j + 1) % m) * n + i),
-                     d = uint32_t(((j + 1) % m) * n + (i + 1) % n);
-      t.indices.insert(t.indices.end(), {a, b, d, a, d, c});
     }
   }
   return t;

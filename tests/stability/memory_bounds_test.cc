@@ -12,6 +12,7 @@
 #include <iterator>
 
 #include "../tools/pipeline/packed_glb_test_util.h"
+#include "common/test_shapes.h"
 #include "gltf/glb_reader.h"
 #include "gltf/gltf_document.h"
 #include "gltf/packed_glb_reader.h"
@@ -20,19 +21,12 @@
 namespace hullpack {
 namespace {
 
-// A flat n x n grid of quads: regular enough that the codec stores it in very few bytes.
+// A flat n x n grid of quads (test_shapes::Grid): regular enough that the codec stores it in very
+// few bytes.
 Mesh Grid(int n) {
   Mesh m;
   m.name = "grid";
-  for (int i = 0; i <= n; ++i) {
-    for (int j = 0; j <= n; ++j) m.positions.insert(m.positions.end(), {float(i), float(j), 0.0f});
-  }
-  for (uint32_t i = 0; i < uint32_t(n); ++i) {
-    for (uint32_t j = 0; j < uint32_t(n); ++j) {
-      const uint32_t a = i * (n + 1) + j, b = a + n + 1;
-      m.indices.insert(m.indices.end(), {a, b, b + 1, a, b + 1, a + 1});
-    }
-  }
+  test_shapes::AppendTo(test_shapes::Grid(n, n), &m, /*with_normals=*/false);
   return m;
 }
 

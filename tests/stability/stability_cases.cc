@@ -5,10 +5,10 @@
 #include <map>
 #include <tuple>
 
+#include "common/test_shapes.h"
+
 namespace hullpack::stability {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 struct Soup {
   std::vector<double> points;
@@ -40,40 +40,21 @@ class Noise {
   uint64_t state_ = 0x2545F4914F6CDD1Dull;
 };
 
+Soup FromShape(const test_shapes::Shape& shape) {
+  Soup s;
+  test_shapes::AppendPointsTo(shape, &s);
+  return s;
+}
+
 // Closed, consistently outward-oriented torus around the z axis: rings x sides vertices.
 Soup Torus(double major, double minor, int rings, int sides) {
-  Soup s;
-  for (int i = 0; i < rings; ++i) {
-    for (int j = 0; j < sides; ++j) {
-      const double u = 2 * kPi * i / rings, v = 2 * kPi * j / sides;
-      s.Add((major + minor * std::cos(v)) * std::cos(u),
-            (major + minor * std::cos(v)) * std::sin(u), minor * std::sin(v));
-    }
-  }
-  for (int i = 0; i < rings; ++i) {
-    for (int j = 0; j < sides; ++j) {
-      const uint32_t a = i * sides + j, b = ((i + 1) % rings) * sides + j,
-                     c = ((i + 1) % rings) * sides + (j + 1) % sides,
-                     d = i * sides + (j + 1) % sides;
-      s.Quad(a, b, c, d);
-    }
-  }
-  return s;
+  return FromShape(test_shapes::Torus(major, minor, rings, sides));
 }
 
 Soup DefaultTorus() { return Torus(1.0, 0.35, 32, 12); }
 
-// Corner k of the box has x from bit 0, y from bit 1, z from bit 2.
 Soup Box(double x0, double y0, double z0, double x1, double y1, double z1, bool with_top = true) {
-  Soup s;
-  for (int k = 0; k < 8; ++k) s.Add(k & 1 ? x1 : x0, k & 2 ? y1 : y0, k & 4 ? z1 : z0);
-  s.Quad(0, 4, 6, 2);                // -x
-  s.Quad(1, 3, 7, 5);                // +x
-  s.Quad(0, 1, 5, 4);                // -y
-  s.Quad(2, 6, 7, 3);                // +y
-  s.Quad(0, 2, 3, 1);                // -z
-  if (with_top) s.Quad(4, 5, 7, 6);  // +z
-  return s;
+  return FromShape(test_shapes::Box(x0, y0, z0, x1, y1, z1, with_top));
 }
 
 // Merges points with equal coordinates (so that separately built parts share vertices).

@@ -6,46 +6,26 @@
 #include <cmath>
 #include <random>
 
+#include "common/test_shapes.h"
+
 namespace hullpack {
 namespace bench {
 namespace {
 
-Soup Box(double x0, double y0, double z0, double x1, double y1, double z1) {
+Soup FromShape(const test_shapes::Shape& shape) {
   Soup s;
-  for (int i = 0; i < 8; ++i)
-    s.points.emplace_back(i & 1 ? x1 : x0, i & 2 ? y1 : y0, i & 4 ? z1 : z0);
-  const uint32_t q[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
-                            {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-  for (const auto& f : q) {
-    s.triangles.push_back({f[0], f[1], f[2]});
-    s.triangles.push_back({f[0], f[2], f[3]});
-  }
+  for (size_t i = 0; i < shape.positions.size(); i += 3)
+    s.points.emplace_back(shape.positions[i], shape.positions[i + 1], shape.positions[i + 2]);
+  for (size_t i = 0; i < shape.triangles.size(); i += 3)
+    s.triangles.push_back({shape.triangles[i], shape.triangles[i + 1], shape.triangles[i + 2]});
   return s;
 }
 
-Soup Sphere(double r, int nu, int nv) {
-  Soup s;
-  s.points.emplace_back(0, 0, -r);
-  for (int j = 1; j < nv; ++j)
-    for (int i = 0; i < nu; ++i) {
-      const double th = M_PI * j / nv, ph = 2 * M_PI * i / nu;
-      s.points.emplace_back(r * std::sin(th) * std::cos(ph), r * std::sin(th) * std::sin(ph),
-                            -r * std::cos(th));
-    }
-  s.points.emplace_back(0, 0, r);
-  auto ring = [&](int j, int i) { return static_cast<uint32_t>(1 + (j - 1) * nu + (i % nu)); };
-  const uint32_t north = static_cast<uint32_t>(s.points.size() - 1);
-  for (int i = 0; i < nu; ++i) {
-    s.triangles.push_back({0, ring(1, i + 1), ring(1, i)});
-    s.triangles.push_back({north, ring(nv - 1, i), ring(nv - 1, i + 1)});
-  }
-  for (int j = 1; j + 1 < nv; ++j)
-    for (int i = 0; i < nu; ++i) {
-      s.triangles.push_back({ring(j, i), ring(j, i + 1), ring(j + 1, i + 1)});
-      s.triangles.push_back({ring(j, i), ring(j + 1, i + 1), ring(j + 1, i)});
-    }
-  return s;
+Soup Box(double x0, double y0, double z0, double x1, double y1, double z1) {
+  return FromShape(test_shapes::Box(x0, y0, z0, x1, y1, z1));
 }
+
+Soup Sphere(double r, int nu, int nv) { return FromShape(test_shapes::Sphere(r, nu, nv)); }
 
 MetricsOptions Small() {
   MetricsOptions o;
@@ -128,6 +108,7 @@ TEST(HullMetricsTest, ExactHullsScoreZeroAndAnInflatedHullItsOffset) {
   EXPECT_NEAR(cracked.hulls_to_mesh, 0.25 / std::sqrt(3.0), 1e-3);
   EXPECT_NEAR(cracked.mesh_to_hulls, 0.25 / std::sqrt(3.0), 1e-3);  // the middle of the faces
   EXPECT_NEAR(cracked.iou, 0.5, 0.01);
+  EXPECT_EQ(cracked.solid_iou, cracked.iou);  // the same ratio for a closed mesh
   // Inflated by 0.1 on every side: its corners are 0.1 * sqrt(3) away, a tenth of the diagonal.
   const HullMetrics big = m.Measure({Box(-0.1, -0.1, -0.1, 1.1, 1.1, 1.1)});
   EXPECT_NEAR(big.hulls_to_mesh, 0.1, 1e-9);
@@ -146,6 +127,8 @@ TEST(HullMetricsTest, OpenMeshSolidByWindingNumber) {
   const HullMetrics r = m.Measure({Box(0, 0, 0, 1, 1, 1)});
   EXPECT_LT(r.iou, 0.0);
   EXPECT_GT(r.coverage, 0.999);
+  // Against the winding-number solid (the box closed over its missing face): nearly all of it.
+  EXPECT_GT(r.solid_iou, 0.75);
   EXPECT_GT(m.solid_point_count(), 40000u * 3 / 4);
   // Only the lower half covered: about half of the solid.
   EXPECT_NEAR(m.Measure({Box(0, 0, 0, 1, 1, 0.5)}).coverage,

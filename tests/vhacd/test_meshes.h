@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "common/test_shapes.h"
 #include "vhacd/vhacd.h"
 
 namespace vhacd_test {
@@ -42,18 +43,16 @@ struct Mesh {
   }
 };
 
+// Shapes shared with the other suites (tests/common/test_shapes.h) as vhacd test meshes.
+inline Mesh FromShape(const test_shapes::Shape& shape) {
+  Mesh m;
+  test_shapes::AppendPointsTo(shape, &m);
+  return m;
+}
+
 // Axis-aligned box [lo, hi], outward-facing.
 inline Mesh Box(double x0, double y0, double z0, double x1, double y1, double z1) {
-  Mesh m;
-  uint32_t v[8];
-  for (int i = 0; i < 8; ++i) v[i] = m.AddPoint(i & 1 ? x1 : x0, i & 2 ? y1 : y0, i & 4 ? z1 : z0);
-  m.AddQuad(v[0], v[2], v[3], v[1]);  // z0
-  m.AddQuad(v[4], v[5], v[7], v[6]);  // z1
-  m.AddQuad(v[0], v[1], v[5], v[4]);  // y0
-  m.AddQuad(v[2], v[6], v[7], v[3]);  // y1
-  m.AddQuad(v[0], v[4], v[6], v[2]);  // x0
-  m.AddQuad(v[1], v[3], v[7], v[5]);  // x1
-  return m;
+  return FromShape(test_shapes::Box(x0, y0, z0, x1, y1, z1));
 }
 
 // Closed L-shaped block: [0,2]x[0,1]x[0,1] union [0,1]x[1,2]x[0,1], as a prism of the L outline.
@@ -82,52 +81,20 @@ inline bool InsideLBlock(double x, double y, double z) {
 
 // Torus around the z axis: major radius R, minor radius r.
 inline Mesh Torus(double R, double r, int nu = 48, int nv = 24) {
-  Mesh m;
-  for (int i = 0; i < nu; ++i)
-    for (int j = 0; j < nv; ++j) {
-      const double u = 2 * M_PI * i / nu, v = 2 * M_PI * j / nv;
-      m.AddPoint((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u),
-                 r * std::sin(v));
-    }
-  for (int i = 0; i < nu; ++i)
-    for (int j = 0; j < nv; ++j) {
-      const uint32_t a = i * nv + j, b = ((i + 1) % nu) * nv + j,
-                     c = ((i + 1) % nu) * nv + (j + 1) % nv, d = i * nv + (j + 1) % nv;
-      m.AddQuad(a, b, c, d);
-    }
-  return m;
+  return FromShape(test_shapes::Torus(R, r, nu, nv));
 }
 
 // UV sphere; when `holes` is set, removes a few small patches of triangles (an open scan).
 inline Mesh Sphere(double radius, int nu = 48, int nv = 24, bool holes = false) {
-  Mesh m;
-  const uint32_t south = m.AddPoint(0, 0, -radius);
-  for (int j = 1; j < nv; ++j)
-    for (int i = 0; i < nu; ++i) {
-      const double th = M_PI * j / nv, ph = 2 * M_PI * i / nu;
-      m.AddPoint(radius * std::sin(th) * std::cos(ph), radius * std::sin(th) * std::sin(ph),
-                 -radius * std::cos(th));
-    }
-  const uint32_t north = m.AddPoint(0, 0, radius);
-  auto ring = [&](int j, int i) { return static_cast<uint32_t>(1 + (j - 1) * nu + (i % nu)); };
-  auto skip = [&](int j, int i) {
-    if (!holes) return false;
-    // Five small holes plus a larger opening at the bottom rows.
+  if (!holes) return FromShape(test_shapes::Sphere(radius, nu, nv));
+  // Five small holes plus a larger opening at the bottom rows.
+  return FromShape(test_shapes::Sphere(radius, nu, nv, [](int j, int i) {
     if (j <= 2) return true;
     const int centers[5][2] = {{8, 3}, {12, 17}, {16, 30}, {10, 40}, {18, 9}};
     for (const auto& c : centers)
       if (j == c[0] && (i == c[1] || i == c[1] + 1)) return true;
     return false;
-  };
-  for (int i = 0; i < nu; ++i) {
-    if (!skip(1, i)) m.AddTriangle(south, ring(1, i + 1), ring(1, i));
-    if (!skip(nv, i)) m.AddTriangle(north, ring(nv - 1, i), ring(nv - 1, i + 1));
-  }
-  for (int j = 1; j + 1 < nv; ++j)
-    for (int i = 0; i < nu; ++i)
-      if (!skip(j + 1, i))
-        m.AddQuad(ring(j, i), ring(j, i + 1), ring(j + 1, i + 1), ring(j + 1, i));
-  return m;
+  }));
 }
 
 // Closed thick bowl: a solid of revolution about z whose profile is a U of wall thickness t.

@@ -21,7 +21,7 @@ function args() {
   for (const k of ['encoder', 'ref', 'mesh', 'out']) {
     if (!a[k]) {
       console.error(`make_glb: --${k} is required`);
-      process.exit(2);
+      process.exit(64);
     }
   }
   return a;

@@ -13,7 +13,7 @@ const a = {};
 for (let i = 2; i + 1 < process.argv.length; i += 2) a[process.argv[i].replace(/^--/, '')] = process.argv[i + 1];
 if (!a.out) {
   console.error('usage: make_skinned_glb.mjs --out FILE.glb');
-  process.exit(2);
+  process.exit(64);
 }
 
 const SEGMENTS = 24;   // around the tube

@@ -602,7 +602,8 @@ HullMetrics MeshMeasure::Measure(const std::vector<Soup>& hulls) const {
   }
   const uint64_t uni = solid_count_ + nh - ni;
   m.coverage = solid_count_ > 0 ? static_cast<double>(ni) / solid_count_ : -1.0;
-  if (closed_) m.iou = uni > 0 ? static_cast<double>(ni) / uni : 1.0;
+  m.solid_iou = uni > 0 ? static_cast<double>(ni) / uni : 1.0;
+  if (closed_) m.iou = m.solid_iou;
   return m;
 }
 

@@ -66,6 +66,9 @@ struct HullMetrics {
   bool worst_hull_point_in_solid = false;  // the hulls -> mesh maximum lies inside the mesh solid
   double worst_hull_point_gap = -1.0;      // its distance to the nearest other hull (fraction)
   double iou = -1.0;                       // -1 for open meshes
+  // The same ratio for any mesh, against the winding-number solid (an open mesh closed over its
+  // holes, e.g. a scan open at its base).
+  double solid_iou = -1.0;
   double coverage = -1.0;
   size_t invalid_hulls = 0;
   std::string first_problem;  // of the first invalid hull

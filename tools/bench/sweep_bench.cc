@@ -6,7 +6,7 @@
 //               [--decompose-repeats N] [--threads N] [--resolutions LIST] [--concavities LIST]
 //               [--max-hulls LIST] [--position-bits LIST] [--normal-bits LIST] [--uv-bits LIST]
 //               [--max-distance X] [--samples N] [--solid-points N] [--gap X] [--timeout S]
-//               [--meshes a,b]
+//               [--only a,b]
 //               [--ext obj,glb,...] [--quiet]
 //
 // LIST is "a,b,c" or a range "lo:hi" (integers, step 1) or "lo:hi:step".
@@ -147,7 +147,7 @@ int main(int argc, char** argv) {
              "hull are inside the union of hulls (default 0.002)");
   cli.Double("--timeout", "S", 1e-3, 1e9, &o.timeout_seconds,
              "seconds per measured step (default 900)");
-  cli.Value("--meshes", "A,B", "only these meshes (file names without extension)",
+  cli.Value("--only, --meshes", "A,B", "only these meshes (file names without extension)",
             [&o](const std::string& v) {
               o.only = Split(v);
               return std::string();

@@ -53,6 +53,20 @@ Status WriteFileAtomically(const std::string& path, const void* data, size_t siz
   return Status::Ok();
 }
 
+Status MakeDirectories(const std::string& path) {
+  for (size_t end = path.find('/', 1);; end = path.find('/', end + 1)) {
+    const std::string prefix = end == std::string::npos ? path : path.substr(0, end);
+    if (!prefix.empty() && mkdir(prefix.c_str(), 0777) != 0 && errno != EEXIST)
+      return Status(StatusCode::kIoError,
+                    prefix + ": cannot create folder: " + std::strerror(errno));
+    if (end == std::string::npos) break;
+  }
+  struct stat st;
+  if (stat(path.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
+    return Status(StatusCode::kIoError, path + ": is not a folder");
+  return Status::Ok();
+}
+
 bool SameFile(const std::string& a, const std::string& b) {
   struct stat sa, sb;
   if (stat(a.c_str(), &sa) != 0 || stat(b.c_str(), &sb) != 0) return false;

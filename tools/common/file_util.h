@@ -21,6 +21,9 @@ inline Status WriteFileAtomically(const std::string& path, const std::vector<uin
   return WriteFileAtomically(path, bytes.data(), bytes.size());
 }
 
+// Creates `path` and its missing parents (like mkdir -p). Errors name the folder.
+Status MakeDirectories(const std::string& path);
+
 // True when both paths name the same existing file (hard links and symlinks included).
 bool SameFile(const std::string& a, const std::string& b);
 

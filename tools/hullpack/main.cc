@@ -2,7 +2,9 @@
 #include <string>
 #include <vector>
 
+#include "hullpack/batch_command.h"
 #include "hullpack/cli_util.h"
+#include "hullpack/collision_command.h"
 #include "hullpack/info_command.h"
 #include "hullpack/pack_command.h"
 #include "hullpack/unpack_command.h"
@@ -14,8 +16,10 @@ int main(int argc, char** argv) {
       "commands:\n"
       "  pack INPUT... -o OUTPUT   compressed meshes + convex collision hulls in one GLB per "
       "input\n"
+      "  batch INPUT... -o OUTDIR  many inputs: cached, resumable, sharded, Slurm job arrays\n"
       "  unpack IN.glb -o OUTPUT   decode a packed GLB back to plain glTF, OBJ, ...\n"
       "  info FILE [--json]        counts, attributes, bounds and topology of a mesh or scene\n"
+      "  collision IN -o DIR       convex collision hulls as a URDF, MJCF or SDF description\n"
       "run 'hullpack COMMAND --help' for a command's options");
   cli.VersionDetail(hullpack::FormatVersionText());
   std::vector<std::string> operands;
@@ -27,6 +31,8 @@ int main(int argc, char** argv) {
   }
   const std::string& command = args[0];
   const std::vector<std::string> rest(args.begin() + 1, args.end());
+  if (command == "batch") return hullpack::RunBatchCommand(rest);
+  if (command == "collision") return hullpack::RunCollisionCommand(rest);
   if (command == "info") return hullpack::RunInfoCommand(rest);
   if (command == "pack") return hullpack::RunPackCommand(rest);
   if (command == "unpack") return hullpack::RunUnpackCommand(rest);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdio>
+#include <cstdlib>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <thread>
@@ -84,23 +86,16 @@ nlohmann::json ReportJson(const PackReport& r) {
 }
 
 void PackOne(Job& job, const std::vector<std::string>& inputs, const PackOptions& options,
-             bool force, ProgressLine& progress) {
-  Result<Scene> scene = ReadScene(job.input);
-  if (!scene.ok()) {
-    job.error = scene.status().message();
-    return;
-  }
+             bool force, const AssetCache* cache, ProgressLine& progress) {
   Status writable = CheckOutputPath(job.output, inputs, force);
   if (!writable.ok()) {
     job.error = writable.message();
     return;
   }
-  // One GLB for web delivery: textures beside the input go inside it.
-  const EmbedReport images = EmbedExternalImages(scene.value(), FolderOf(job.input));
   ProgressForwarder observer(progress, FileStem(job.input));
-  Result<PackResult> packed = PackScene(std::move(scene.value()), options, &observer);
+  Result<CachedPack> packed = PackFileCached(job.input, options, cache, &observer);
   if (!packed.ok()) {
-    job.error = job.input + ": " + packed.status().message();
+    job.error = packed.status().message();
     return;
   }
   Status written = WriteFileAtomically(job.output, packed->glb);
@@ -108,9 +103,8 @@ void PackOne(Job& job, const std::vector<std::string>& inputs, const PackOptions
     job.error = written.message();
     return;
   }
-  job.report = ReportJson(packed->report);
-  job.report["images_embedded"] = images.embedded;
-  job.report["images_kept_as_references"] = images.kept_as_references;
+  job.report = std::move(packed->report);
+  if (cache) job.report["cache_hit"] = packed->cache_hit;
   job.report["input"] = job.input;
   job.report["output"] = job.output;
   job.ok = true;
@@ -121,15 +115,16 @@ struct PackCommandLine {
   std::vector<std::string> inputs;
   std::string output, report_path;
   PackOptions options;
+  std::string cache_dir;
   bool force = false, quiet = false;
-  size_t jobs = 0;  // 0: every core
+  size_t jobs = 0;                       // 0: every core
+  std::vector<std::string> output_args;  // what can change an output's bytes: the cache key
 };
 
 // Parses the command line into `cmd`; returns an exit code when the command should stop.
 std::optional<int> ParsePackCommandLine(const std::vector<std::string>& args,
                                         PackCommandLine* cmd) {
   PackOptions& o = cmd->options;
-  vhacd::Parameters& p = o.collision.parameters;
   CliArgs cli("hullpack pack", "INPUT... -o OUTPUT [options]",
               "Compressed meshes and convex collision hulls in one GLB per input.\n"
               "  INPUT: .glb .gltf .fbx .obj .dae .ply .stl .off .wrl; OUTPUT: a .glb file (one "
@@ -139,70 +134,16 @@ std::optional<int> ParsePackCommandLine(const std::vector<std::string>& args,
   cli.VersionDetail(FormatVersionText());
   cli.Positional("INPUT", &cmd->inputs, 1);
   cli.String("-o, --output", "OUTPUT", &cmd->output, "a .glb file or a folder").Required();
-  cli.Double("--max-error", "F", 1e-9, 0.5, &o.max_error,
-             "largest position error, fraction of each mesh's bbox diagonal (0.0005)");
-  cli.Int("--qp", "N", 1, 30, &o.position_bits, "explicit position bits instead of --max-error");
-  cli.Int("--qn", "N", 1, 30, &o.normal_bits, "explicit normal bits");
-  cli.Int("--qt", "N", 1, 30, &o.uv_bits, "explicit texture coordinate bits");
-  cli.Double("--hull-error", "F", 1e-9, 0.5, &o.hull_error,
-             "largest hull vertex error, fraction of the mesh's bbox diagonal (0.002)");
-  cli.Action("--ascii", "7-bit ASCII streams (serve gzip'd) instead of binary",
-             [&o]() { o.stream_type = o3dgc::StreamType::kAscii; });
-  cli.Flag("--keep-order", &o.keep_order, "keep vertex and triangle order exactly (larger)");
-  cli.Flag("--fast-decode", &o.fast_decode,
-           "code values in vertex id order: faster decoding, 2-5% larger");
-  cli.Flag("--fallback", &o.glb.fallback,
-           "also write plain accessors (readers without the extension still work)");
-  cli.Value("--hulls", "all|none|auto|N",
-            "which meshes get collision hulls (auto); a number N: exactly N hulls per mesh",
-            [&o](const std::string& v) {
-              if (v == "all") {
-                o.collision.policy = HullPolicy::kAll;
-              } else if (v == "none") {
-                o.collision.policy = HullPolicy::kNone;
-              } else if (v == "auto") {
-                o.collision.policy = HullPolicy::kAuto;
-              } else if (!v.empty() && v.size() <= 6 &&
-                         v.find_first_not_of("0123456789") == std::string::npos &&
-                         std::stol(v) >= 1 && std::stol(v) <= 100000) {
-                o.collision.parameters.hull_count = static_cast<uint32_t>(std::stol(v));
-              } else {
-                return "takes all, none, auto or a count 1-100000, not '" + v + "'";
-              }
-              return std::string();
-            });
-  cli.Flag("--skinned-hulls", &o.collision.skinned_meshes,
-           "with --hulls auto, decompose skinned meshes too");
-  cli.Value("--physics", "omi|khr",
-            "OMI_physics_shape/body (default) or the KHR_physics_rigid_bodies draft",
-            [&o](const std::string& v) {
-              if (v != "omi" && v != "khr") return "takes omi or khr, not '" + v + "'";
-              o.glb.physics = v == "omi" ? PhysicsForm::kOmi : PhysicsForm::kKhr;
-              return std::string();
-            });
-  cli.Value("--quality", "default|high",
-            "decomposition preset (default: V-HACD 2.0's, hulls merged while they\n"
-            "stick out by at most 3 % of the diagonal, at most 24 vertices per hull);\n"
-            "the decomposition options below refine it",
-            [&p](const std::string& v) {
-              if (v != "default" && v != "high") return "takes default or high, not '" + v + "'";
-              if (v == "high") p = vhacd::Parameters::High();
-              return std::string();
-            })
-      .First();
-  cli.Int("--resolution", "N", 10000, 64000000, &p.resolution, "decomposition voxel count");
-  cli.Int("--max-hulls", "N", 0, 100000, &p.max_convex_hulls, "most hulls per mesh (0: no limit)");
-  cli.Int("--max-vertices", "N", 4, 1024, &p.max_vertices_per_hull, "most vertices per hull");
-  cli.Double("--concavity", "F", 0, 1, &p.concavity,
-             "largest concavity of a part, fraction of the diagonal");
-  cli.Double("--max-concavity", "D", 0, 1, &p.max_concavity,
-             "hulls within D x the mesh's diagonal of its surface, as few as that allows");
+  AddPackOptions(cli, &o);
   cli.String("--report", "FILE.json", &cmd->report_path,
              "per mesh: bytes before/after, bits per vertex, error, hulls, times");
+  cli.String("--cache", "DIR", &cmd->cache_dir,
+             "reuse the outputs of unchanged inputs (a content-addressed cache)");
   cli.Int("--jobs", "N", 1, 256, &cmd->jobs, "inputs packed at once (default: every core)");
   cli.Flag("--force", &cmd->force, "replace existing outputs");
   cli.Flag("--quiet", &cmd->quiet, "no progress line");
   if (std::optional<int> exit_code = cli.Parse(args)) return exit_code;
+  cmd->output_args = OutputArgs(args, cmd->inputs);
   return std::nullopt;
 }
 
@@ -240,7 +181,7 @@ std::optional<int> PlanJobs(const PackCommandLine& cmd, std::vector<Job>* work) 
   return std::nullopt;
 }
 
-void RunJobs(PackCommandLine& cmd, std::vector<Job>& work) {
+void RunJobs(PackCommandLine& cmd, std::vector<Job>& work, const AssetCache* cache) {
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   const size_t threads = std::min<size_t>(work.size(), cmd.jobs > 0 ? cmd.jobs : cores);
   // Several files at once: each decomposition on one thread (its result does not depend on it).
@@ -249,7 +190,7 @@ void RunJobs(PackCommandLine& cmd, std::vector<Job>& work) {
   std::atomic<size_t> next{0};
   auto worker = [&]() {
     for (size_t i; (i = next.fetch_add(1)) < work.size();)
-      PackOne(work[i], cmd.inputs, cmd.options, cmd.force, progress);
+      PackOne(work[i], cmd.inputs, cmd.options, cmd.force, cache, progress);
   };
   std::vector<std::thread> pool;
   for (size_t t = 1; t < threads; ++t) pool.emplace_back(worker);
@@ -301,12 +242,177 @@ int ReportJobs(const PackCommandLine& cmd, const std::vector<Job>& work) {
 
 }  // namespace
 
+void AddPackOptions(CliArgs& cli, PackOptions* options) {
+  PackOptions& o = *options;
+  vhacd::Parameters& p = o.collision.parameters;
+  cli.Double("--max-error", "F", 1e-9, 0.5, &o.max_error,
+             "largest position error, fraction of each mesh's bbox diagonal (0.0005)");
+  cli.Int("--qp", "N", 1, 30, &o.position_bits, "explicit position bits instead of --max-error");
+  cli.Int("--qn", "N", 1, 30, &o.normal_bits, "explicit normal bits");
+  cli.Int("--qt", "N", 1, 30, &o.uv_bits, "explicit texture coordinate bits");
+  cli.Double("--hull-error", "F", 1e-9, 0.5, &o.hull_error,
+             "largest hull vertex error, fraction of the mesh's bbox diagonal (0.002)");
+  cli.Action("--ascii", "7-bit ASCII streams (serve gzip'd) instead of binary",
+             [&o]() { o.stream_type = o3dgc::StreamType::kAscii; });
+  cli.Flag("--keep-order", &o.keep_order, "keep vertex and triangle order exactly (larger)");
+  cli.Flag("--fast-decode", &o.fast_decode,
+           "code values in vertex id order: faster decoding, 2-5% larger");
+  cli.Flag("--fallback", &o.glb.fallback,
+           "also write plain accessors (readers without the extension still work)");
+  cli.Value("--hulls", "all|none|auto|N",
+            "which meshes get collision hulls (auto); a number N: exactly N hulls per mesh",
+            [&o](const std::string& v) {
+              if (v == "all") {
+                o.collision.policy = HullPolicy::kAll;
+              } else if (v == "none") {
+                o.collision.policy = HullPolicy::kNone;
+              } else if (v == "auto") {
+                o.collision.policy = HullPolicy::kAuto;
+              } else if (!v.empty() && v.size() <= 6 &&
+                         v.find_first_not_of("0123456789") == std::string::npos &&
+                         std::stol(v) >= 1 && std::stol(v) <= 100000) {
+                o.collision.parameters.hull_count = static_cast<uint32_t>(std::stol(v));
+              } else {
+                return "takes all, none, auto or a count 1-100000, not '" + v + "'";
+              }
+              return std::string();
+            });
+  cli.Flag("--skinned-hulls", &o.collision.skinned_meshes,
+           "with --hulls auto, decompose skinned meshes too");
+  cli.Value("--physics", "omi|khr",
+            "OMI_physics_shape/body (default) or the KHR_physics_rigid_bodies draft",
+            [&o](const std::string& v) {
+              if (v != "omi" && v != "khr") return "takes omi or khr, not '" + v + "'";
+              o.glb.physics = v == "omi" ? PhysicsForm::kOmi : PhysicsForm::kKhr;
+              return std::string();
+            });
+  cli.Value("--method", "vhacd|hacd",
+            "decomposer: V-HACD 2.0 (voxels, default) or HACD (surface clustering,\n"
+            "testHACD's recommended line 2 100 0 1 1 30 2000; open and thin shapes)",
+            [&o](const std::string& v) {
+              if (v != "vhacd" && v != "hacd") return "takes vhacd or hacd, not '" + v + "'";
+              o.collision.method =
+                  v == "hacd" ? DecompositionMethod::kHacd : DecompositionMethod::kVhacd;
+              return std::string();
+            });
+  cli.Value("--quality", "default|high",
+            "decomposition preset (default: V-HACD 2.0's, hulls merged while they\n"
+            "stick out by at most 3 % of the diagonal, at most 24 vertices per hull);\n"
+            "the decomposition options below refine it",
+            [&p](const std::string& v) {
+              if (v != "default" && v != "high") return "takes default or high, not '" + v + "'";
+              if (v == "high") p = vhacd::Parameters::High();
+              return std::string();
+            })
+      .First();
+  cli.Int("--resolution", "N", 10000, 64000000, &p.resolution, "decomposition voxel count");
+  cli.Int("--max-hulls", "N", 0, 100000, &p.max_convex_hulls, "most hulls per mesh (0: no limit)");
+  cli.Value("--max-vertices", "N", "most vertices per hull (4-1024)", [&o](const std::string& v) {
+    char* end = nullptr;
+    const long n = std::strtol(v.c_str(), &end, 10);
+    if (v.empty() || *end != '\0' || n < 4 || n > 1024)
+      return "takes a whole number in 4-1024, not '" + v + "'";
+    o.collision.parameters.max_vertices_per_hull = static_cast<uint32_t>(n);
+    o.collision.hacd_parameters.max_vertices_per_hull = static_cast<uint32_t>(n);
+    return std::string();
+  });
+  cli.Double("--concavity", "F", 0, 1, &p.concavity,
+             "largest concavity of a part, fraction of the diagonal");
+  cli.Double("--max-concavity", "D", 0, 1, &p.max_concavity,
+             "hulls within D x the mesh's diagonal of its surface, as few as that allows");
+}
+
+std::vector<std::string> OutputArgs(const std::vector<std::string>& args,
+                                    const std::vector<std::string>& operands) {
+  // Options that only steer the run (where to write, how many threads, which slice), never the
+  // bytes of an output; the first group takes a value.
+  static const char* const kWithValue[] = {"-o",      "--output", "--report",
+                                           "--jobs",  "--cache",  "--manifest",
+                                           "--shard", "--shards", "--merge"};
+  static const char* const kFlags[] = {"--force", "--quiet", "--"};
+  std::vector<std::string> out;
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    bool skip = std::find(operands.begin(), operands.end(), a) != operands.end();
+    for (const char* f : kFlags) skip = skip || a == f;
+    for (const char* name : kWithValue) {
+      const std::string n = name;
+      if (a == n) {
+        skip = true;
+        ++i;
+      } else if (a.compare(0, n.size() + 1, n + "=") == 0) {
+        skip = true;
+      }
+    }
+    if (!skip) out.push_back(a);
+  }
+  return out;
+}
+
+Result<PackedFile> PackFile(const std::string& input, const PackOptions& options,
+                            PackObserver* observer) {
+  Result<Scene> scene = ReadScene(input);
+  if (!scene.ok()) return scene.status();
+  PackedFile out;
+  for (const Image& image : scene->images)
+    if (!image.uri.empty()) out.image_uris.push_back(image.uri);
+  // One GLB for web delivery: textures beside the input go inside it.
+  const EmbedReport images = EmbedExternalImages(scene.value(), FolderOf(input));
+  Result<PackResult> packed = PackScene(std::move(scene.value()), options, observer);
+  if (!packed.ok()) return Status(packed.status().code(), input + ": " + packed.status().message());
+  out.glb = std::move(packed->glb);
+  out.report = ReportJson(packed->report);
+  out.report["images_embedded"] = images.embedded;
+  out.report["images_kept_as_references"] = images.kept_as_references;
+  return out;
+}
+
+Result<CachedPack> PackFileCached(const std::string& input, const PackOptions& options,
+                                  const AssetCache* cache, PackObserver* observer) {
+  CachedPack out;
+  std::string input_key;
+  if (cache) {
+    Result<CacheProbe> probe = cache->Lookup(input);
+    if (!probe.ok()) return probe.status();
+    if (probe->hit) {
+      nlohmann::json meta = nlohmann::json::parse(probe->meta, nullptr, false);
+      if (!meta.is_discarded() && meta.is_object()) {
+        out.glb = std::move(probe->glb);
+        out.report = std::move(meta);
+        out.cache_hit = true;
+        return out;
+      }
+    }
+    input_key = probe->input_key;
+  }
+  Result<PackedFile> packed = PackFile(input, options, observer);
+  if (!packed.ok()) return packed.status();
+  out.glb = std::move(packed->glb);
+  out.report = std::move(packed->report);
+  if (cache) {
+    const std::string meta = out.report.dump();
+    Status stored =
+        cache->Store(input, input_key, ReferencedFiles(input, packed->image_uris), out.glb, meta);
+    if (!stored.ok()) return stored;
+  }
+  return out;
+}
+
 int RunPackCommand(const std::vector<std::string>& args) {
   PackCommandLine cmd;
   if (std::optional<int> exit_code = ParsePackCommandLine(args, &cmd)) return *exit_code;
   std::vector<Job> work;
   if (std::optional<int> exit_code = PlanJobs(cmd, &work)) return *exit_code;
-  RunJobs(cmd, work);
+  std::unique_ptr<AssetCache> cache;
+  if (!cmd.cache_dir.empty()) {
+    cache = std::make_unique<AssetCache>(cmd.cache_dir, CacheSalt(cmd.output_args));
+    Status ready = cache->Prepare();
+    if (!ready.ok()) {
+      std::fprintf(stderr, "hullpack pack: %s\n", ready.message().c_str());
+      return 1;
+    }
+  }
+  RunJobs(cmd, work, cache.get());
   return ReportJobs(cmd, work);
 }
 

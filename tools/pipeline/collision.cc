@@ -12,6 +12,12 @@ vhacd::Parameters PackCollisionParameters() {
   return p;
 }
 
+vhacd::HacdParameters PackHacdParameters() {
+  vhacd::HacdParameters p = vhacd::HacdParameters::Recommended();
+  p.max_vertices_per_hull = 24;
+  return p;
+}
+
 bool NameMarksNonColliding(const std::string& name) {
   std::string lower(name);
   std::transform(lower.begin(), lower.end(), lower.begin(),
@@ -38,11 +44,9 @@ std::string WhyNoHulls(const Mesh& mesh, const CollisionSettings& settings) {
   return "";
 }
 
-Result<HullSet> DecomposeMesh(const Mesh& mesh, const vhacd::Parameters& parameters,
-                              vhacd::Observer* observer) {
-  const vhacd::MeshView view = vhacd::MeshView::FromFloat(
-      mesh.positions.data(), mesh.vertex_count(), mesh.indices.data(), mesh.triangle_count());
-  vhacd::Result r = vhacd::Decompose(view, parameters, observer);
+namespace {
+
+Result<HullSet> ToHullSet(const Mesh& mesh, vhacd::Result r) {
   if (!r.ok()) {
     const StatusCode code =
         r.status == vhacd::Status::kCancelled ? StatusCode::kCancelled : StatusCode::kInvalidMesh;
@@ -60,6 +64,25 @@ Result<HullSet> DecomposeMesh(const Mesh& mesh, const vhacd::Parameters& paramet
     set.hulls.push_back(std::move(m));
   }
   return set;
+}
+
+vhacd::MeshView ViewOf(const Mesh& mesh) {
+  return vhacd::MeshView::FromFloat(mesh.positions.data(), mesh.vertex_count(), mesh.indices.data(),
+                                    mesh.triangle_count());
+}
+
+}  // namespace
+
+Result<HullSet> DecomposeMesh(const Mesh& mesh, const vhacd::Parameters& parameters,
+                              vhacd::Observer* observer) {
+  return ToHullSet(mesh, vhacd::Decompose(ViewOf(mesh), parameters, observer));
+}
+
+Result<HullSet> DecomposeMesh(const Mesh& mesh, const CollisionSettings& settings,
+                              vhacd::Observer* observer) {
+  if (settings.method == DecompositionMethod::kHacd)
+    return ToHullSet(mesh, vhacd::DecomposeHacd(ViewOf(mesh), settings.hacd_parameters, observer));
+  return DecomposeMesh(mesh, settings.parameters, observer);
 }
 
 }  // namespace hullpack

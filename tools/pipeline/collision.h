@@ -7,6 +7,7 @@
 
 #include "common/status.h"
 #include "scene/scene.h"
+#include "vhacd/hacd.h"
 #include "vhacd/vhacd.h"
 
 namespace hullpack {
@@ -26,10 +27,22 @@ enum class HullPolicy {
 //    for parts whose stick-out is bounded anyway.
 vhacd::Parameters PackCollisionParameters();
 
+// The decomposer `hullpack pack --method` picks per run.
+enum class DecompositionMethod {
+  kVhacd,  // V-HACD 2.0 (voxels): vhacd::Decompose with `parameters`
+  kHacd,   // HACD (surface clustering): vhacd::DecomposeHacd with `hacd_parameters`
+};
+
+// HACD as `hullpack pack --method hacd` runs it: the original tool's recommended line
+// `2 100 0 1 1 30 2000`, at most 24 vertices per hull (as for V-HACD).
+vhacd::HacdParameters PackHacdParameters();
+
 struct CollisionSettings {
   HullPolicy policy = HullPolicy::kAuto;
   bool skinned_meshes = false;  // under kAuto: decompose skinned meshes (in their bind pose) too
+  DecompositionMethod method = DecompositionMethod::kVhacd;
   vhacd::Parameters parameters = PackCollisionParameters();
+  vhacd::HacdParameters hacd_parameters = PackHacdParameters();
 };
 
 // Why a mesh gets no hulls ("" when it gets them): "--hulls none", "marked non-colliding", ...
@@ -47,6 +60,9 @@ struct HullSet {
 // Decomposes `mesh` with the settings' parameters. `observer` (may be null) gets progress and
 // can cancel.
 Result<HullSet> DecomposeMesh(const Mesh& mesh, const vhacd::Parameters& parameters,
+                              vhacd::Observer* observer);
+// The same with the settings' method and its parameters.
+Result<HullSet> DecomposeMesh(const Mesh& mesh, const CollisionSettings& settings,
                               vhacd::Observer* observer);
 
 }  // namespace hullpack

@@ -100,7 +100,7 @@ Status PackHulls(const Mesh& mesh, const PackOptions& options, PackObserver* obs
                  MeshPackReport& report) {
   const auto t0 = Clock::now();
   DecomposeProgress progress(observer, from, to, prefix);
-  Result<HullSet> set = DecomposeMesh(mesh, options.collision.parameters, &progress);
+  Result<HullSet> set = DecomposeMesh(mesh, options.collision, &progress);
   if (!set.ok()) return set.status();
   report.seconds_decompose = Seconds(t0);
   report.hull_count = set->hulls.size();

@@ -10,13 +10,12 @@
 #include <cstring>
 #include <fstream>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "common/cli_args.h"
-#include "io/scene_io.h"
-#include "scene/scene.h"
-#include "scene_soup.h"
+#include "hull_program.h"
 #include "vhacd/vhacd.h"
 
 namespace {
@@ -147,85 +146,61 @@ std::optional<int> ParseCommandLine(const std::vector<std::string>& args, Comman
   return std::nullopt;
 }
 
-class Progress : public vhacd::Observer {
- public:
-  explicit Progress(const std::string& log_path) {
-    if (!log_path.empty()) log_.open(log_path.c_str());
+// Reads every mesh of the input as one soup and decomposes it. An exit code when it cannot.
+std::optional<int> Run(const CommandLine& cmd, vhacd::Result* result) {
+  std::vector<double> points;
+  std::vector<uint32_t> indices;
+  const std::string read_error = hullpack::ReadSoup(cmd.input, &points, &indices);
+  if (!read_error.empty()) {
+    std::fprintf(stderr, "testVHACD: %s\n", read_error.c_str());
+    return 1;
   }
-  bool log_ok() const { return log_.good(); }
-  void OnProgress(double overall, double stage, double, const char* stage_name,
-                  const char* operation) override {
-    const int pct = static_cast<int>(overall + 0.5);
-    if (pct == last_ && stage_name == last_stage_) return;
-    last_ = pct;
-    last_stage_ = stage_name;
-    std::fprintf(stderr, "\r%3d%% [%-16s %3d%%] %-24s", pct, stage_name,
-                 static_cast<int>(stage + 0.5), operation);
-    if (pct >= 100) std::fprintf(stderr, "\n");
+  std::printf("input: %s, %zu points, %zu triangles\n", cmd.input.c_str(), points.size() / 3,
+              indices.size() / 3);
+  hullpack::ProgressLine progress(cmd.log_path);
+  if (!cmd.log_path.empty() && !progress.log_ok()) {
+    std::fprintf(stderr, "testVHACD: cannot write %s\n", cmd.log_path.c_str());
+    return 1;
   }
-  void OnLog(const char* message) override {
-    if (log_.is_open()) log_ << message << "\n";
-  }
-
- private:
-  std::ofstream log_;
-  int last_ = -1;
-  std::string last_stage_;
-};
-
-std::string JsonNumber(double v) {
-  if (!std::isfinite(v)) return "null";
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.9g", v);
-  return buf;
+  *result = vhacd::Decompose(vhacd::MeshView::FromDouble(points.data(), points.size() / 3,
+                                                         indices.data(), indices.size() / 3),
+                             cmd.parameters, &progress);
+  return std::nullopt;
 }
 
-bool WriteReport(const std::string& path, const std::string& input, const vhacd::Result& r) {
-  std::ofstream f(path.c_str());
-  if (!f) return false;
+// The summary line on stdout, the report and the hulls; returns the exit code.
+int Report(const CommandLine& cmd, const vhacd::Result& r) {
+  if (!r.ok()) {
+    std::fprintf(stderr, "\ntestVHACD: %s: %s\n", vhacd::StatusName(r.status), r.message.c_str());
+    if (!cmd.report_path.empty())
+      hullpack::WriteDecompositionReport(cmd.report_path, cmd.input, "vhacd", r);
+    return 1;
+  }
   const vhacd::Report& rep = r.report;
-  f << "{\n  \"input\": \"";
-  for (char c : input) {
-    if (c == '"' || c == '\\') f << '\\';
-    f << c;
+  std::printf(
+      "hulls: %zu (from %u parts), concavity %.4f (mesh->hulls %.4f, hulls->mesh %.4f), IoU %s, "
+      "%.2f s\n",
+      r.hulls.size(), rep.parts_before_merge, rep.concavity, rep.hausdorff_mesh_to_hulls,
+      rep.hausdorff_hulls_to_mesh,
+      rep.volume_iou >= 0 ? hullpack::JsonNumber(rep.volume_iou).c_str() : "n/a",
+      rep.seconds_total);
+  if (!rep.target_reached) std::printf("target not reached: %s\n", rep.target_note.c_str());
+  if (!cmd.report_path.empty()) {
+    if (!hullpack::WriteDecompositionReport(cmd.report_path, cmd.input, "vhacd", r)) {
+      std::fprintf(stderr, "testVHACD: cannot write %s\n", cmd.report_path.c_str());
+      return 1;
+    }
+    std::printf("wrote %s\n", cmd.report_path.c_str());
   }
-  f << "\",\n  \"status\": \"" << vhacd::StatusName(r.status) << "\",\n";
-  f << "  \"hull_count\": " << r.hulls.size() << ",\n";
-  f << "  \"closed_input\": " << (rep.closed_input ? "true" : "false") << ",\n";
-  f << "  \"volume_iou\": " << JsonNumber(rep.volume_iou) << ",\n";
-  f << "  \"hausdorff_mesh_to_hulls\": " << JsonNumber(rep.hausdorff_mesh_to_hulls) << ",\n";
-  f << "  \"hausdorff_hulls_to_mesh\": " << JsonNumber(rep.hausdorff_hulls_to_mesh) << ",\n";
-  f << "  \"concavity\": " << JsonNumber(rep.concavity) << ",\n";
-  f << "  \"voxel_count\": " << rep.voxel_count << ",\n";
-  f << "  \"tetrahedron_count\": " << rep.tetrahedron_count << ",\n";
-  f << "  \"parts_before_merge\": " << rep.parts_before_merge << ",\n";
-  f << "  \"target_reached\": " << (rep.target_reached ? "true" : "false") << ",\n";
-  f << "  \"target_note\": \"";
-  for (char c : rep.target_note) {
-    if (c == '"' || c == '\\') f << '\\';
-    f << c;
+  if (!cmd.output.empty()) {
+    const std::string write_error = hullpack::WriteHullScene(r, cmd.output);
+    if (!write_error.empty()) {
+      std::fprintf(stderr, "testVHACD: %s\n", write_error.c_str());
+      return 1;
+    }
+    std::printf("wrote %s\n", cmd.output.c_str());
   }
-  f << "\",\n";
-  f << "  \"attempts\": " << rep.attempts << ",\n";
-  f << "  \"seconds\": {\"voxelize\": " << JsonNumber(rep.seconds_voxelize)
-    << ", \"fill\": " << JsonNumber(rep.seconds_fill)
-    << ", \"tetrahedra\": " << JsonNumber(rep.seconds_tetrahedra)
-    << ", \"distance\": " << JsonNumber(rep.seconds_distance)
-    << ", \"clip\": " << JsonNumber(rep.seconds_clip)
-    << ", \"hulls\": " << JsonNumber(rep.seconds_hulls)
-    << ", \"merge\": " << JsonNumber(rep.seconds_merge)
-    << ", \"simplify\": " << JsonNumber(rep.seconds_simplify)
-    << ", \"report\": " << JsonNumber(rep.seconds_report)
-    << ", \"total\": " << JsonNumber(rep.seconds_total) << "},\n";
-  f << "  \"hulls\": [";
-  for (size_t i = 0; i < rep.hulls.size(); ++i) {
-    f << (i ? ",\n    " : "\n    ") << "{\"vertices\": " << rep.hulls[i].vertex_count
-      << ", \"volume\": " << JsonNumber(rep.hulls[i].volume)
-      << ", \"concavity\": " << JsonNumber(rep.hulls[i].concavity)
-      << ", \"distance\": " << JsonNumber(rep.hulls[i].distance) << "}";
-  }
-  f << (rep.hulls.empty() ? "]\n" : "\n  ]\n") << "}\n";
-  return f.good();
+  return 0;
 }
 
 }  // namespace
@@ -235,66 +210,7 @@ int main(int argc, char** argv) {
   if (std::optional<int> exit_code =
           ParseCommandLine(std::vector<std::string>(argv + 1, argv + argc), &cmd))
     return *exit_code;
-  const std::string& input = cmd.input;
-  const std::string &output = cmd.output, &report_path = cmd.report_path, &log_path = cmd.log_path;
-  const vhacd::Parameters& p = cmd.parameters;
-  hullpack::Result<hullpack::Scene> scene = hullpack::ReadScene(input);
-  if (!scene.ok()) {
-    std::fprintf(stderr, "testVHACD: %s\n", scene.status().ToString().c_str());
-    return 1;
-  }
-  std::vector<double> points;
-  std::vector<uint32_t> indices;
-  hullpack::FlattenScene(scene.value(), &points, &indices);
-  std::printf("input: %s, %zu points, %zu triangles\n", input.c_str(), points.size() / 3,
-              indices.size() / 3);
-
-  Progress progress(log_path);
-  if (!log_path.empty() && !progress.log_ok()) {
-    std::fprintf(stderr, "testVHACD: cannot write %s\n", log_path.c_str());
-    return 1;
-  }
-  const vhacd::Result r =
-      vhacd::Decompose(vhacd::MeshView::FromDouble(points.data(), points.size() / 3, indices.data(),
-                                                   indices.size() / 3),
-                       p, &progress);
-  if (!r.ok()) {
-    std::fprintf(stderr, "\ntestVHACD: %s: %s\n", vhacd::StatusName(r.status), r.message.c_str());
-    if (!report_path.empty()) WriteReport(report_path, input, r);
-    return 1;
-  }
-  const vhacd::Report& rep = r.report;
-  std::printf(
-      "hulls: %zu (from %u parts), concavity %.4f (mesh->hulls %.4f, hulls->mesh %.4f), IoU %s, "
-      "%.2f s\n",
-      r.hulls.size(), rep.parts_before_merge, rep.concavity, rep.hausdorff_mesh_to_hulls,
-      rep.hausdorff_hulls_to_mesh, rep.volume_iou >= 0 ? JsonNumber(rep.volume_iou).c_str() : "n/a",
-      rep.seconds_total);
-  if (!rep.target_reached) std::printf("target not reached: %s\n", rep.target_note.c_str());
-
-  if (!report_path.empty()) {
-    if (!WriteReport(report_path, input, r)) {
-      std::fprintf(stderr, "testVHACD: cannot write %s\n", report_path.c_str());
-      return 1;
-    }
-    std::printf("wrote %s\n", report_path.c_str());
-  }
-  if (!output.empty()) {
-    hullpack::Scene out;
-    for (size_t h = 0; h < r.hulls.size(); ++h) {
-      hullpack::Mesh m;
-      m.name = "hull_" + std::to_string(h);
-      for (double v : r.hulls[h].points) m.positions.push_back(static_cast<float>(v));
-      m.indices = r.hulls[h].triangles;
-      out.meshes.push_back(std::move(m));
-    }
-    hullpack::AddRootNodeForAllMeshes(out, "hulls");
-    const hullpack::Status st = hullpack::WriteScene(out, output);
-    if (!st.ok()) {
-      std::fprintf(stderr, "testVHACD: %s\n", st.ToString().c_str());
-      return 1;
-    }
-    std::printf("wrote %s\n", output.c_str());
-  }
-  return 0;
+  vhacd::Result result;
+  if (std::optional<int> exit_code = Run(cmd, &result)) return *exit_code;
+  return Report(cmd, result);
 }

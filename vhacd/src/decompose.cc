@@ -15,6 +15,7 @@
 #include "distance_field.h"
 #include "error_metrics.h"
 #include "hull_simplify.h"
+#include "input_mesh.h"
 #include "merge.h"
 #include "part_hull.h"
 #include "primitive_set.h"
@@ -113,122 +114,6 @@ Result Fail(Status s, std::string message) {
   return r;
 }
 
-struct InputMesh {
-  std::vector<Vec3> points;                        // welded, referenced only
-  std::vector<std::array<uint32_t, 3>> triangles;  // no degenerate, no duplicate
-  bool closed = false;
-};
-
-Status ReadMesh(const MeshView& m, internal::Context* ctx, InputMesh* out, std::string* why) {
-  if (m.point_count == 0 || m.triangle_count == 0) {
-    *why = "the mesh has no points or no triangles";
-    return Status::kEmptyMesh;
-  }
-  if ((m.points_f == nullptr) == (m.points_d == nullptr)) {
-    *why = "exactly one of points_f and points_d must be set";
-    return Status::kInvalidMesh;
-  }
-  if (m.indices == nullptr) {
-    *why = "indices is null";
-    return Status::kInvalidMesh;
-  }
-  if (m.point_stride < 3 || m.triangle_stride < 3) {
-    *why = "strides must be at least 3";
-    return Status::kInvalidMesh;
-  }
-  if (m.point_count >= 0xffffffffu || m.triangle_count >= (size_t{1} << 31)) {
-    *why = "the mesh is too large";
-    return Status::kInvalidMesh;
-  }
-  const size_t np = m.point_count;
-  std::vector<Vec3> pts(np);
-  for (size_t i = 0; i < np; ++i) {
-    for (int k = 0; k < 3; ++k)
-      pts[i][k] = m.points_d ? m.points_d[i * m.point_stride + k]
-                             : static_cast<double>(m.points_f[i * m.point_stride + k]);
-  }
-  std::vector<char> used(np, 0);
-  for (size_t t = 0; t < m.triangle_count; ++t)
-    for (int k = 0; k < 3; ++k) {
-      const uint32_t v = m.indices[t * m.triangle_stride + k];
-      if (v >= np) {
-        *why = "triangle " + std::to_string(t) + " refers to point " + std::to_string(v) + " of " +
-               std::to_string(np);
-        return Status::kIndexOutOfRange;
-      }
-      used[v] = 1;
-    }
-  for (size_t i = 0; i < np; ++i)
-    if (used[i] && !pts[i].allFinite()) {
-      *why = "point " + std::to_string(i) + " has a non-finite coordinate";
-      return Status::kInvalidMesh;
-    }
-  auto cancelled = [&]() {
-    if (!ctx->Cancelled()) return false;
-    *why = "cancelled";
-    return true;
-  };
-  if (cancelled()) return Status::kCancelled;
-  // Weld bit-identical positions (deterministic: sorted order).
-  std::vector<uint32_t> order;
-  for (uint32_t i = 0; i < np; ++i)
-    if (used[i]) order.push_back(i);
-  std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
-    if (pts[a][0] != pts[b][0]) return pts[a][0] < pts[b][0];
-    if (pts[a][1] != pts[b][1]) return pts[a][1] < pts[b][1];
-    if (pts[a][2] != pts[b][2]) return pts[a][2] < pts[b][2];
-    return a < b;
-  });
-  std::vector<uint32_t> remap(np, 0);
-  for (size_t k = 0; k < order.size(); ++k) {
-    if (k == 0 || pts[order[k]] != pts[order[k - 1]]) out->points.push_back(pts[order[k]]);
-    remap[order[k]] = static_cast<uint32_t>(out->points.size() - 1);
-  }
-  if (cancelled()) return Status::kCancelled;
-  // Triangles: drop degenerate and duplicate (same vertex set) ones, keep the first.
-  std::vector<std::pair<std::array<uint32_t, 3>, uint32_t>> keyed;
-  for (size_t t = 0; t < m.triangle_count; ++t) {
-    std::array<uint32_t, 3> tri;
-    for (int k = 0; k < 3; ++k) tri[k] = remap[m.indices[t * m.triangle_stride + k]];
-    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;
-    std::array<uint32_t, 3> key = tri;
-    std::sort(key.begin(), key.end());
-    keyed.emplace_back(key, static_cast<uint32_t>(t));
-  }
-  std::sort(keyed.begin(), keyed.end());
-  std::vector<uint32_t> keep;
-  for (size_t k = 0; k < keyed.size(); ++k)
-    if (k == 0 || keyed[k].first != keyed[k - 1].first) keep.push_back(keyed[k].second);
-  std::sort(keep.begin(), keep.end());
-  for (uint32_t t : keep) {
-    std::array<uint32_t, 3> tri;
-    for (int k = 0; k < 3; ++k) tri[k] = remap[m.indices[t * m.triangle_stride + k]];
-    out->triangles.push_back(tri);
-  }
-  if (out->triangles.empty()) {
-    *why = "every triangle is degenerate";
-    return Status::kEmptyMesh;
-  }
-  if (cancelled()) return Status::kCancelled;
-  // Closed: every undirected edge used by exactly two triangles.
-  std::vector<uint64_t> edges;
-  edges.reserve(out->triangles.size() * 3);
-  for (const auto& t : out->triangles)
-    for (int k = 0; k < 3; ++k) {
-      const uint64_t a = std::min(t[k], t[(k + 1) % 3]), b = std::max(t[k], t[(k + 1) % 3]);
-      edges.push_back((a << 32) | b);
-    }
-  std::sort(edges.begin(), edges.end());
-  out->closed = true;
-  for (size_t i = 0; i < edges.size();) {
-    size_t j = i;
-    while (j < edges.size() && edges[j] == edges[i]) ++j;
-    if (j - i != 2) out->closed = false;
-    i = j;
-  }
-  return Status::kOk;
-}
-
 double Quantize(double x) {
   const double q = 1099511627776.0;  // 2^40: makes the normalized mesh scale-invariant
   return std::nearbyint(x * q) / q;
@@ -242,8 +127,8 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
                           ? static_cast<int>(params.num_threads)
                           : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   internal::Context ctx(observer, threads);
-  InputMesh input;
-  st = ReadMesh(view, &ctx, &input, &why);
+  internal::InputMesh input;
+  st = internal::ReadMesh(view, &ctx, &input, &why);
   if (st != Status::kOk) return Fail(st, why);
   Result result;
   Report& rep = result.report;

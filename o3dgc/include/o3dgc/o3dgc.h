@@ -148,8 +148,9 @@ struct EncodeParams {
   // exactly those of the input.
   bool keep_order = false;
   // true: values predicted by parallelograms are coded in vertex id order instead of the order that
-  // finds the most parallelograms. About 2-5 % more bytes; decoding takes about 0.85x the time
-  // natively and 0.8x in WebAssembly (igea), because the decoder no longer jumps over the mesh.
+  // finds the most parallelograms: a few % more bytes, faster decoding, because the decoder reads
+  // and writes the vertices in memory order instead of jumping over the mesh
+  // (docs/decode-speed.md has the figures).
   bool fast_decode = false;
   int position_bits = 14;  // 1..30
   Prediction position_prediction = Prediction::kParallelogram;

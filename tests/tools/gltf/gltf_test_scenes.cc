@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "common/test_shapes.h"
+
 namespace hullpack {
 namespace testing_gltf {
 
@@ -19,29 +21,23 @@ const std::vector<uint8_t>& TinyPng() {
 }
 
 Mesh MakeGrid(int nx, int ny, int uv_sets, float z) {
+  const test_shapes::Shape grid = test_shapes::Grid(nx, ny);
   Mesh m;
+  m.indices = grid.triangles;
   m.uv_sets.resize(static_cast<size_t>(uv_sets));
-  for (int y = 0; y <= ny; ++y) {
-    for (int x = 0; x <= nx; ++x) {
-      const float fx = static_cast<float>(x) / static_cast<float>(nx);
-      const float fy = static_cast<float>(y) / static_cast<float>(ny);
-      m.positions.insert(m.positions.end(),
-                         {fx * 2.0f - 1.0f, fy * 3.0f + 0.125f, z + 0.1f * fx * fy});
-      m.normals.insert(m.normals.end(), {0.0f, 0.0f, 1.0f});
-      m.tangents.insert(m.tangents.end(), {1.0f, 0.0f, 0.0f, (x % 2) ? -1.0f : 1.0f});
-      for (int u = 0; u < uv_sets; ++u) {
-        m.uv_sets[static_cast<size_t>(u)].insert(m.uv_sets[static_cast<size_t>(u)].end(),
-                                                 {fx * static_cast<float>(u + 1), 1.0f - fy});
-      }
-      m.colors.insert(m.colors.end(), {fx, fy, 0.5f, 1.0f - 0.25f * fx});
+  for (size_t v = 0; v < grid.vertex_count(); ++v) {
+    const int x = static_cast<int>(grid.positions[3 * v]);
+    const float fx = static_cast<float>(x) / static_cast<float>(nx);
+    const float fy = static_cast<float>(grid.positions[3 * v + 1]) / static_cast<float>(ny);
+    m.positions.insert(m.positions.end(),
+                       {fx * 2.0f - 1.0f, fy * 3.0f + 0.125f, z + 0.1f * fx * fy});
+    m.normals.insert(m.normals.end(), {0.0f, 0.0f, 1.0f});
+    m.tangents.insert(m.tangents.end(), {1.0f, 0.0f, 0.0f, (x % 2) ? -1.0f : 1.0f});
+    for (int u = 0; u < uv_sets; ++u) {
+      m.uv_sets[static_cast<size_t>(u)].insert(m.uv_sets[static_cast<size_t>(u)].end(),
+                                               {fx * static_cast<float>(u + 1), 1.0f - fy});
     }
-  }
-  const uint32_t row = static_cast<uint32_t>(nx + 1);
-  for (uint32_t y = 0; y < static_cast<uint32_t>(ny); ++y) {
-    for (uint32_t x = 0; x < static_cast<uint32_t>(nx); ++x) {
-      const uint32_t a = y * row + x, b = a + 1, c = a + row, d = c + 1;
-      m.indices.insert(m.indices.end(), {a, b, d, a, d, c});
-    }
+    m.colors.insert(m.colors.end(), {fx, fy, 0.5f, 1.0f - 0.25f * fx});
   }
   return m;
 }

@@ -1,7 +1,8 @@
 // The packed-GLB reader on hostile JSON: members of the wrong JSON type in the parts only the
 // inflater reads (accessors it fills, stream bufferViews, the extension object) give a parse error
-// that names the file, never an exception out of the reader (a fuzzed file with "normalized": 1
-// used to terminate the process). Fuzz findings in tests/fuzz/regressions/ are replayed here.
+// that names the file, never an exception out of the reader (which would terminate the process, as
+// a fuzzed file with "normalized": 1 showed). Fuzz findings in tests/fuzz/regressions/ are replayed
+// here.
 #include <gtest/gtest.h>
 
 #include <dirent.h>

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "common/test_shapes.h"
 #include "io/obj_writer.h"
 #include "scene/scene.h"
 
@@ -26,26 +27,12 @@ inline Scene TorusScene(int rings = 16, int sides = 8, bool colors = false,
                         bool materials = false) {
   Mesh m;
   m.name = "torus";
+  test_shapes::AppendTo(test_shapes::Torus(1, 0.3, rings, sides), &m);
   m.uv_sets.emplace_back();
-  const double pi = 3.14159265358979323846;
-  for (int i = 0; i < rings; ++i) {
+  for (int i = 0; i < rings; ++i) {  // vertex i * sides + j
     for (int j = 0; j < sides; ++j) {
-      const double u = 2 * pi * i / rings, v = 2 * pi * j / sides;
-      const double x = (1 + 0.3 * std::cos(v)) * std::cos(u),
-                   y = (1 + 0.3 * std::cos(v)) * std::sin(u);
-      m.positions.insert(m.positions.end(), {float(x), float(y), float(0.3 * std::sin(v))});
-      m.normals.insert(m.normals.end(), {float(std::cos(v) * std::cos(u)),
-                                         float(std::cos(v) * std::sin(u)), float(std::sin(v))});
       m.uv_sets[0].insert(m.uv_sets[0].end(), {float(i) / rings, float(j) / sides});
       if (colors) m.colors.insert(m.colors.end(), {float(i) / rings, float(j) / sides, 0.5f, 1.0f});
-    }
-  }
-  for (int i = 0; i < rings; ++i) {
-    for (int j = 0; j < sides; ++j) {
-      const uint32_t a = i * sides + j, b = ((i + 1) % rings) * sides + j,
-                     c = ((i + 1) % rings) * sides + (j + 1) % sides,
-                     d = i * sides + (j + 1) % sides;
-      m.indices.insert(m.indices.end(), {a, b, c, a, c, d});
       if (materials) m.material_ids.insert(m.material_ids.end(), 2, j < sides / 2 ? 0u : 1u);
     }
   }

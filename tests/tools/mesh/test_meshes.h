@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <initializer_list>
 
+#include "common/test_shapes.h"
 #include "scene/scene.h"
 
 namespace hullpack {
@@ -31,17 +32,12 @@ inline void AddQuad(Mesh& mesh, uint32_t a, uint32_t b, uint32_t c, uint32_t d) 
 constexpr uint32_t kCubeFaces[6][4] = {{0, 2, 3, 1}, {0, 1, 5, 4}, {2, 6, 7, 3},
                                        {0, 4, 6, 2}, {1, 3, 7, 5}, {4, 5, 7, 6}};
 
-// Axis-aligned cube with 8 shared vertices and outward winding; `faces` < 6 leaves the last
-// faces out (5 = a box open at the top).
+// Axis-aligned cube with 8 shared vertices and outward winding (test_shapes::Box); `faces` 5
+// leaves the top out (a box open at the top).
 inline void AddCube(Mesh& mesh, float x0, float y0, float z0, float size = 1, int faces = 6) {
-  const uint32_t base = static_cast<uint32_t>(mesh.vertex_count());
-  for (uint32_t id = 0; id < 8; ++id) {
-    AddVertex(mesh, x0 + size * (id & 1), y0 + size * ((id >> 1) & 1), z0 + size * ((id >> 2) & 1));
-  }
-  for (int f = 0; f < faces; ++f) {
-    const uint32_t* q = kCubeFaces[f];
-    AddQuad(mesh, base + q[0], base + q[1], base + q[2], base + q[3]);
-  }
+  test_shapes::AppendTo(
+      test_shapes::Box(x0, y0, z0, x0 + size, y0 + size, z0 + size, /*with_top=*/faces == 6),
+      &mesh);
 }
 
 inline Mesh UnitCube() {
@@ -65,26 +61,10 @@ inline Mesh SplitCube() {
   return mesh;
 }
 
-// Ring torus around the z axis (major radius R, minor r), outward winding, genus 1.
+// Ring torus around the z axis (major radius R, minor r), outward winding, genus 1
+// (test_shapes::Torus).
 inline void AddTorus(Mesh& mesh, float cx, float R, float r, int rings = 48, int sides = 24) {
-  const double kPi = 3.14159265358979323846;
-  const uint32_t base = static_cast<uint32_t>(mesh.vertex_count());
-  for (int i = 0; i < rings; ++i) {
-    const double u = 2 * kPi * i / rings;
-    for (int j = 0; j < sides; ++j) {
-      const double v = 2 * kPi * j / sides;
-      const double d = R + r * std::cos(v);
-      AddVertex(mesh, static_cast<float>(cx + d * std::cos(u)), static_cast<float>(d * std::sin(u)),
-                static_cast<float>(r * std::sin(v)));
-    }
-  }
-  auto at = [&](int i, int j) {
-    return base + static_cast<uint32_t>((i % rings) * sides + (j % sides));
-  };
-  for (int i = 0; i < rings; ++i) {
-    for (int j = 0; j < sides; ++j)
-      AddQuad(mesh, at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
-  }
+  test_shapes::AppendTo(test_shapes::Torus(R, r, rings, sides, cx), &mesh, /*with_normals=*/false);
 }
 
 }  // namespace testing_meshes

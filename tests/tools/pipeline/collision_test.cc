@@ -49,6 +49,30 @@ TEST(Collision, LBlockGivesClosedConvexHullsInMeshCoordinates) {
   EXPECT_GT(set->report.volume_iou, 0.9);
 }
 
+TEST(Collision, HacdMethodGivesClosedConvexHullsInMeshCoordinates) {
+  const Mesh mesh = LBlock();
+  CollisionSettings settings;
+  settings.method = DecompositionMethod::kHacd;
+  EXPECT_EQ(settings.hacd_parameters.min_clusters, 2u);  // the recommended line
+  EXPECT_EQ(settings.hacd_parameters.max_vertices_per_hull, 24u);
+  Result<HullSet> set = DecomposeMesh(mesh, settings, nullptr);
+  ASSERT_TRUE(set.ok()) << set.status().ToString();
+  ASSERT_GE(set->hulls.size(), 2u);
+  for (const Mesh& hull : set->hulls) {
+    const TopologyReport t = AnalyzeTopology(hull);
+    EXPECT_TRUE(t.closed);
+    EXPECT_GT(t.volume, 0);
+    EXPECT_LE(hull.vertex_count(), 24u);
+    for (float c : hull.positions) {
+      EXPECT_GE(c, -1e-3f);
+      EXPECT_LE(c, 2.001f);
+    }
+  }
+  EXPECT_GE(set->report.volume_iou, 0.9);
+  settings.hacd_parameters.concavity = -1;
+  EXPECT_FALSE(DecomposeMesh(mesh, settings, nullptr).ok());
+}
+
 TEST(Collision, PolicyDecidesWhichMeshesGetHulls) {
   Mesh m = LBlock();
   CollisionSettings s;

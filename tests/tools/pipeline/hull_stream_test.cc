@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "common/test_shapes.h"
 #include "mesh/topology.h"
 
 namespace hullpack {
@@ -12,10 +13,7 @@ namespace {
 // The closed box [x0, x1] x [0, 1] x [0, h], outward triangles.
 Mesh Box(float x0, float x1, float h) {
   Mesh m;
-  for (int c = 0; c < 8; ++c)
-    m.positions.insert(m.positions.end(), {c & 1 ? x1 : x0, c & 2 ? 1.0f : 0.0f, c & 4 ? h : 0.0f});
-  m.indices = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
-               2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
+  test_shapes::AppendTo(test_shapes::Box(x0, 0, 0, x1, 1, h), &m);
   return m;
 }
 

@@ -1,0 +1,481 @@
+// hullpack.pack / unpack / info / collision: the command-line jobs on file paths.
+#include <pybind11/stl.h>
+
+#include <optional>
+
+#include "common/file_util.h"
+#include "gltf/external_images.h"
+#include "gltf/packed_glb_reader.h"
+#include "hullpack/cli_util.h"
+#include "hullpack/scene_summary.h"
+#include "io/scene_io.h"
+#include "mesh/merge.h"
+#include "mesh/validate.h"
+#include "pipeline/pack.h"
+#include "py_util.h"
+#include "robot/collision_export.h"
+
+namespace hullpack::python {
+namespace {
+
+// A failed Status as the matching Python exception.
+[[noreturn]] void Raise(const Status& s) {
+  switch (s.code()) {
+    case StatusCode::kIoError:
+      PyErr_SetString(PyExc_OSError, s.message().c_str());
+      throw py::error_already_set();
+    case StatusCode::kCancelled:
+      ThrowCancelled(s.message());
+    case StatusCode::kUnknownFormat:
+    case StatusCode::kParseError:
+    case StatusCode::kInvalidMesh:
+    case StatusCode::kInvalidArgument:
+      throw py::value_error(s.message());
+    default:
+      throw std::runtime_error(s.message());
+  }
+}
+
+py::object FromJson(const nlohmann::json& j) {
+  return py::module_::import("json").attr("loads")(j.dump());
+}
+
+std::string FolderOf(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  if (slash == std::string::npos) return ".";
+  return slash == 0 ? "/" : path.substr(0, slash);
+}
+
+class PackWatch : public PackObserver {
+ public:
+  explicit PackWatch(Watch& watch) : watch_(watch) {}
+  void OnProgress(double fraction, const std::string& stage) override {
+    watch_.Report(100 * fraction, stage.c_str());
+  }
+  bool IsCancelled() override { return watch_.cancelled(); }
+
+ private:
+  Watch& watch_;
+};
+
+class VhacdWatch : public vhacd::Observer {
+ public:
+  explicit VhacdWatch(Watch& watch) : watch_(watch) {}
+  void OnProgress(double overall, double, double, const char* stage, const char*) override {
+    watch_.Report(overall, stage);
+  }
+  bool IsCancelled() override { return watch_.cancelled(); }
+
+ private:
+  Watch& watch_;
+};
+
+py::dict PackReportDict(const PackReport& r) {
+  py::list meshes;
+  for (const MeshPackReport& m : r.meshes) {
+    py::dict d;
+    d["name"] = m.name;
+    d["triangles"] = m.triangles;
+    d["vertices"] = m.vertices;
+    d["bytes_before"] = m.bytes_before;
+    d["bytes_after"] = m.bytes_after;
+    d["bits_per_vertex"] = m.bits_per_vertex;
+    d["position_bits"] = m.position_bits;
+    d["max_error"] = m.max_error;
+    d["max_error_fraction"] = m.max_error_fraction;
+    d["no_hulls"] = m.no_hulls_reason;
+    d["hull_count"] = m.hull_count;
+    d["hull_vertices"] = m.hull_vertices;
+    d["hull_bytes"] = m.hull_bytes;
+    d["hull_concavity"] = m.hull_concavity;
+    d["hull_iou"] = m.hull_iou;
+    meshes.append(d);
+  }
+  py::dict d;
+  d["meshes"] = meshes;
+  d["left_out"] = r.left_out;
+  d["not_kept"] = r.not_kept;
+  d["output_bytes"] = r.output_bytes;
+  return d;
+}
+
+void ApplyDecomposition(vhacd::Parameters* p, const std::string& quality,
+                        std::optional<uint32_t> resolution, std::optional<uint32_t> max_hulls,
+                        std::optional<double> concavity) {
+  if (quality == "high") {
+    *p = vhacd::Parameters::High();
+  } else if (quality != "default") {
+    throw py::value_error("quality must be 'default' or 'high', not '" + quality + "'");
+  }
+  if (resolution) p->resolution = *resolution;
+  if (max_hulls) p->max_convex_hulls = *max_hulls;
+  if (concavity) p->concavity = *concavity;
+  std::string why;
+  if (vhacd::ValidateParameters(*p, &why) != vhacd::Status::kOk)
+    throw py::value_error("invalid decomposition parameter: " + why);
+}
+
+py::dict Pack(const std::string& input, const std::string& output, double max_error,
+              double hull_error, std::optional<int> position_bits, int normal_bits, int uv_bits,
+              bool ascii, bool keep_order, bool fast_decode, bool fallback,
+              const std::string& hulls, const std::string& physics, const std::string& quality,
+              std::optional<uint32_t> resolution, std::optional<uint32_t> max_hulls,
+              std::optional<uint32_t> max_vertices, std::optional<double> concavity, bool force,
+              py::object progress) {
+  PackOptions o;
+  if (!(max_error > 0 && max_error <= 0.5)) throw py::value_error("max_error must be in (0, 0.5]");
+  if (!(hull_error > 0 && hull_error <= 0.5))
+    throw py::value_error("hull_error must be in (0, 0.5]");
+  o.max_error = max_error;
+  o.hull_error = hull_error;
+  for (int bits : {position_bits.value_or(14), normal_bits, uv_bits})
+    if (bits < 1 || bits > 30) throw py::value_error("bits must be in [1, 30]");
+  o.position_bits = position_bits.value_or(0);
+  o.normal_bits = normal_bits;
+  o.uv_bits = uv_bits;
+  o.stream_type = ascii ? o3dgc::StreamType::kAscii : o3dgc::StreamType::kBinary;
+  o.keep_order = keep_order;
+  o.fast_decode = fast_decode;
+  o.glb.fallback = fallback;
+  if (hulls == "all") {
+    o.collision.policy = HullPolicy::kAll;
+  } else if (hulls == "none") {
+    o.collision.policy = HullPolicy::kNone;
+  } else if (hulls != "auto") {
+    throw py::value_error("hulls must be 'all', 'none' or 'auto', not '" + hulls + "'");
+  }
+  if (physics != "omi" && physics != "khr")
+    throw py::value_error("physics must be 'omi' or 'khr', not '" + physics + "'");
+  o.glb.physics = physics == "omi" ? PhysicsForm::kOmi : PhysicsForm::kKhr;
+  ApplyDecomposition(&o.collision.parameters, quality, resolution, max_hulls, concavity);
+  if (max_vertices) o.collision.parameters.max_vertices_per_hull = *max_vertices;
+  if (FormatFromExtension(output) != FileFormat::kGlb)
+    throw py::value_error(output + ": the output must be a .glb file");
+
+  Watch watch(std::move(progress));
+  PackWatch observer(watch);
+  Status failed;
+  PackReport report;
+  watch.Run([&] {
+    Result<Scene> scene = ReadScene(input);
+    if (!scene.ok()) {
+      failed = scene.status();
+      return;
+    }
+    Status writable = CheckOutputPath(output, {input}, force);
+    if (!writable.ok()) {
+      failed = writable;
+      return;
+    }
+    EmbedExternalImages(scene.value(), FolderOf(input));
+    Result<PackResult> packed = PackScene(std::move(scene.value()), o, &observer);
+    if (!packed.ok()) {
+      failed = Status(packed.status().code(), input + ": " + packed.status().message());
+      return;
+    }
+    failed = WriteFileAtomically(output, packed->glb);
+    report = std::move(packed->report);
+  });
+  if (!failed.ok()) Raise(failed);
+  py::dict d = PackReportDict(report);
+  d["input"] = input;
+  d["output"] = output;
+  return d;
+}
+
+py::dict Unpack(const std::string& input, const std::string& output, bool force) {
+  const FileFormat format = FormatFromExtension(output);
+  if (format == FileFormat::kUnknown)
+    throw py::value_error(output + ": unknown output format (.glb .obj .off .wrl .ply)");
+  Status failed;
+  size_t meshes = 0, triangles = 0;
+  {
+    py::gil_scoped_release release;
+    failed = CheckOutputPath(output, {input}, force);
+    Result<std::vector<uint8_t>> bytes =
+        failed.ok() ? ReadFileBytes(input) : Result<std::vector<uint8_t>>(failed);
+    if (!bytes.ok()) {
+      failed = bytes.status();
+    } else {
+      GltfDocument plain;
+      Result<Scene> scene =
+          ReadPackedGltf(bytes.value().data(), bytes.value().size(), input, "", &plain);
+      if (!scene.ok()) {
+        failed = scene.status();
+      } else if (format == FileFormat::kGlb) {
+        Result<std::vector<uint8_t>> glb = plain.Serialize();
+        failed = glb.ok() ? WriteFileAtomically(output, glb.value()) : glb.status();
+      } else {
+        failed = WriteScene(scene.value(), output);
+      }
+      if (scene.ok()) meshes = scene->meshes.size(), triangles = scene->triangle_count();
+    }
+  }
+  if (!failed.ok()) Raise(failed);
+  py::dict d;
+  d["input"] = input;
+  d["output"] = output;
+  d["meshes"] = meshes;
+  d["triangles"] = triangles;
+  return d;
+}
+
+py::object Info(const std::string& path) {
+  nlohmann::json j;
+  Status failed;
+  {
+    py::gil_scoped_release release;
+    Result<Scene> scene = ReadScene(path);
+    if (!scene.ok()) {
+      failed = scene.status();
+    } else {
+      for (size_t i = 0; i < scene->meshes.size() && failed.ok(); ++i) {
+        Status valid = ValidateMesh(scene->meshes[i]);
+        if (!valid.ok())
+          failed =
+              Status(valid.code(), path + ": mesh " + std::to_string(i) + ": " + valid.message());
+      }
+      if (failed.ok()) {
+        j = SummaryToJson(scene.value(), Summarize(scene.value()));
+        j["file"] = path;
+        j["format"] = FormatName(FormatFromExtension(path));
+        Result<std::vector<uint8_t>> bytes = ReadFileBytes(path);
+        j["bytes"] = bytes.ok() ? bytes.value().size() : 0;
+      }
+    }
+  }
+  if (!failed.ok()) Raise(failed);
+  return FromJson(j);
+}
+
+py::dict Collision(const std::string& input, const std::string& output_dir,
+                   const std::string& format, std::optional<std::string> name, double density,
+                   std::optional<int> max_hull_vertices, const std::string& quality,
+                   std::optional<uint32_t> resolution, std::optional<uint32_t> max_hulls,
+                   std::optional<double> concavity, bool force, py::object progress) {
+  CollisionExportOptions o;
+  if (!ParseRobotFormat(format, &o.format))
+    throw py::value_error("format must be 'urdf', 'mjcf' or 'sdf', not '" + format + "'");
+  o.name = name.value_or("");
+  o.density = density;
+  o.max_hull_vertices = max_hull_vertices.value_or(0);
+  if (max_hull_vertices && *max_hull_vertices == 0)
+    throw py::value_error("max_hull_vertices must be at least 4");
+  o.force = force;
+  ApplyDecomposition(&o.parameters, quality, resolution, max_hulls, concavity);
+  Watch watch(std::move(progress));
+  VhacdWatch observer(watch);
+  Status failed;
+  CollisionExportReport r;
+  watch.Run([&] {
+    Result<Scene> scene = ReadScene(input);
+    if (!scene.ok()) {
+      failed = scene.status();
+      return;
+    }
+    Result<CollisionExportReport> done =
+        ExportCollision(scene.value(), input, output_dir, o, &observer);
+    if (!done.ok()) {
+      failed = done.status();
+      return;
+    }
+    r = std::move(done.value());
+  });
+  if (!failed.ok()) Raise(failed);
+  py::dict d;
+  d["name"] = r.name;
+  d["description"] = r.description;
+  d["files"] = r.files;
+  d["hull_count"] = r.hull_count;
+  d["largest_hull_vertices"] = r.largest_hull_vertices;
+  d["volume"] = r.mass.volume;
+  d["mass"] = r.mass.mass;
+  d["center_of_mass"] = r.mass.center;
+  d["inertia"] = r.mass.inertia;
+  d["concavity"] = r.decomposition.concavity;
+  d["volume_iou"] = r.decomposition.volume_iou;
+  return d;
+}
+
+py::dict LoadMesh(const std::string& path) {
+  Status failed;
+  Mesh mesh;
+  {
+    py::gil_scoped_release release;
+    Result<Scene> scene = ReadScene(path);
+    if (!scene.ok()) {
+      failed = scene.status();
+    } else {
+      mesh = MergeMeshes(scene.value());
+      failed = ValidateMesh(mesh);
+      if (!failed.ok()) failed = Status(failed.code(), path + ": " + failed.message());
+    }
+  }
+  if (!failed.ok()) Raise(failed);
+  const size_t nv = mesh.vertex_count(), nt = mesh.triangle_count();
+  py::dict d;
+  d["vertices"] = OwnedArray(std::move(mesh.positions), nv, 3);
+  d["faces"] = OwnedArray(std::move(mesh.indices), nt, 3);
+  d["normals"] = mesh.normals.empty() ? py::object(py::none())
+                                      : py::object(OwnedArray(std::move(mesh.normals), nv, 3));
+  d["uvs"] = mesh.uv_sets.empty() ? py::object(py::none())
+                                  : py::object(OwnedArray(std::move(mesh.uv_sets[0]), nv, 2));
+  return d;
+}
+
+}  // namespace
+
+void BindFiles(py::module_& m) {
+  m.def("pack", &Pack, R"(Pack a mesh or scene file into one GLB: compressed meshes + convex hulls.
+
+The same job as `hullpack pack INPUT -o OUTPUT.glb` (docs/packed-gltf.md).
+
+Parameters
+----------
+input : str
+    .glb .gltf .fbx .obj .dae .ply .stl .off .wrl file.
+output : str
+    The .glb to write (atomically; never the input).
+max_error : float
+    Largest position error, as a fraction of each mesh's bounding-box diagonal (0.0005).
+hull_error : float
+    The same for hull vertices (0.002).
+position_bits : int, optional
+    Explicit position bits (1 to 30) instead of max_error.
+normal_bits, uv_bits : int
+    Bits for normals (10) and texture coordinates (12).
+ascii, keep_order, fast_decode, fallback : bool
+    As the command's --ascii, --keep-order, --fast-decode, --fallback.
+hulls : str
+    Which meshes get hulls: "auto" (default), "all" or "none".
+physics : str
+    "omi" (OMI_physics_shape/body, default) or "khr" (the KHR_physics_rigid_bodies draft).
+quality : str
+    Decomposition preset: "default" or "high".
+resolution, max_hulls, max_vertices : int, optional
+    Voxels, hull budget, vertex cap per hull.
+concavity : float, optional
+    Largest concavity of a part (0 to 1).
+force : bool
+    Replace an existing output.
+progress : callable, optional
+    progress(percent, stage) every 20 ms at most; return False to stop (hullpack.Cancelled).
+
+Returns
+-------
+dict
+    Per mesh ("meshes"): triangles, vertices, bytes before/after, bits per vertex, position
+    error, hull count/vertices/bytes, hull concavity and IoU; "left_out", "not_kept",
+    "output_bytes".
+
+Raises
+------
+ValueError
+    Unreadable or invalid input, an existing output without force, a bad option.
+OSError
+    A file cannot be read or written.)",
+        py::arg("input"), py::arg("output"), py::kw_only(), py::arg("max_error") = 0.0005,
+        py::arg("hull_error") = 0.002, py::arg("position_bits") = py::none(),
+        py::arg("normal_bits") = 10, py::arg("uv_bits") = 12, py::arg("ascii") = false,
+        py::arg("keep_order") = false, py::arg("fast_decode") = false, py::arg("fallback") = false,
+        py::arg("hulls") = "auto", py::arg("physics") = "omi", py::arg("quality") = "default",
+        py::arg("resolution") = py::none(), py::arg("max_hulls") = py::none(),
+        py::arg("max_vertices") = py::none(), py::arg("concavity") = py::none(),
+        py::arg("force") = false, py::arg("progress") = py::none());
+  m.def("unpack", &Unpack, R"(Decode a packed GLB back to plain glTF (.glb) or a mesh file.
+
+Parameters
+----------
+input : str
+    A GLB written by pack.
+output : str
+    .glb (every compressed primitive decoded into plain accessors, hull extensions kept) or
+    .obj .off .wrl .ply (the decoded meshes, hulls included).
+force : bool
+    Replace an existing output.
+
+Returns
+-------
+dict
+    "input", "output", "meshes", "triangles".)",
+        py::arg("input"), py::arg("output"), py::kw_only(), py::arg("force") = false);
+  m.def("load_mesh", &LoadMesh, R"(Read a mesh or scene file into numpy arrays.
+
+Parameters
+----------
+path : str
+    .glb .gltf .fbx .obj .dae .ply .stl .off .wrl file.
+
+Returns
+-------
+dict
+    Every mesh of the file merged into one (node transforms are not applied): "vertices"
+    float32 (n, 3), "faces" uint32 (m, 3), "normals" float32 (n, 3) or None, "uvs" float32
+    (n, 2) or None (glTF convention, v = 0 at the top), ready for decompose and encode.
+
+Raises
+------
+OSError, ValueError
+    The file cannot be read, or holds an invalid mesh; the message names it.)",
+        py::arg("path"));
+  m.def("info", &Info, R"(Counts, attributes, bounds and topology of a mesh or scene file.
+
+Parameters
+----------
+path : str
+    Any file `hullpack info` reads (packed GLBs included).
+
+Returns
+-------
+dict
+    What `hullpack info --json` prints: "file", "format", "bytes", "meshes" (per mesh
+    counts, attributes, bounds, topology), scene totals.)",
+        py::arg("path"));
+  m.def("collision", &Collision, R"(Convex collision hulls as a robot description.
+
+The same job as `hullpack collision INPUT -o OUTPUT_DIR --format FORMAT`: writes
+OUTPUT_DIR/NAME.urdf (.xml for MJCF, .sdf) and OUTPUT_DIR/meshes/ with the visual mesh and
+one file per hull (STL for URDF and SDF, OBJ for MJCF), with the mass, centre of mass and
+inertia of the union of the hulls (docs/guide-simulation.md).
+
+Parameters
+----------
+input : str
+    The mesh or scene file (every mesh becomes one rigid body).
+output_dir : str
+    Folder to write into (created when missing).
+format : str
+    "urdf" (default), "mjcf" or "sdf".
+name : str, optional
+    Link/body/model name and file prefix (default: the input's stem), sanitized to letters,
+    digits and '_'.
+density : float
+    Mass per cubic unit of the mesh (1000: water in kg/m^3 for a mesh in metres).
+max_hull_vertices : int, optional
+    Vertex cap per hull (default 64; at most 255 for URDF and SDF, 1024 for MJCF).
+quality : str
+    Decomposition preset: "default" (hullpack pack's) or "high".
+resolution, max_hulls : int, optional
+    Voxels and hull budget of the decomposition.
+concavity : float, optional
+    Largest concavity of a part (0 to 1).
+force : bool
+    Replace existing files.
+progress : callable, optional
+    progress(percent, stage) every 20 ms at most; return False to stop (hullpack.Cancelled).
+
+Returns
+-------
+dict
+    "name", "description" (its path), "files", "hull_count", "largest_hull_vertices",
+    "volume", "mass", "center_of_mass", "inertia" (ixx, iyy, izz, ixy, ixz, iyz about the
+    centre of mass), "concavity", "volume_iou".)",
+        py::arg("input"), py::arg("output_dir"), py::kw_only(), py::arg("format") = "urdf",
+        py::arg("name") = py::none(), py::arg("density") = 1000.0,
+        py::arg("max_hull_vertices") = py::none(), py::arg("quality") = "default",
+        py::arg("resolution") = py::none(), py::arg("max_hulls") = py::none(),
+        py::arg("concavity") = py::none(), py::arg("force") = false,
+        py::arg("progress") = py::none());
+}
+
+}  // namespace hullpack::python

@@ -1,0 +1,147 @@
+// Images and materials (metallic-roughness factors and the five texture slots).
+#include "gltf/glb_reader_decoder.h"
+
+#include <cstring>
+#include <utility>
+
+namespace hullpack {
+namespace glb_reader_internal {
+
+Status Decoder::DecodeImages(Scene* scene) {
+  const json* images = nullptr;
+  HP_RETURN_IF_ERROR(TopLevel("images", &images));
+  if (images == nullptr) return Status::Ok();
+  for (size_t i = 0; i < images->size(); ++i) {
+    const json& j = (*images)[i];
+    const std::string iw = Item("images", i);
+    Image img;
+    HP_RETURN_IF_ERROR(GetString(j, "name", iw, &img.name));
+    HP_RETURN_IF_ERROR(GetString(j, "mimeType", iw, &img.mime_type));
+    std::string uri;
+    HP_RETURN_IF_ERROR(GetString(j, "uri", iw, &uri));
+    int64_t view = -1;
+    HP_RETURN_IF_ERROR(GetIndex(j, "bufferView", iw, &view));
+    if (view >= 0) {
+      const uint8_t* data = nullptr;
+      size_t size = 0, stride = 0;
+      HP_RETURN_IF_ERROR(GetBufferView(view, iw, &data, &size, &stride));
+      HP_RETURN_IF_ERROR(Charge(size, iw));
+      img.bytes.assign(data, data + size);
+    } else if (IsDataUri(uri)) {
+      DataUri parsed;
+      std::string error;
+      if (!ParseDataUri(uri, &parsed, &error)) return Error(iw, error);
+      img.bytes = std::move(parsed.bytes);
+      if (img.mime_type.empty()) img.mime_type = parsed.mime_type;
+    } else if (!uri.empty()) {
+      img.uri = uri;
+    } else {
+      return Error(iw, "has neither a uri nor a bufferView");
+    }
+    scene->images.push_back(std::move(img));
+  }
+  return Status::Ok();
+}
+
+Status Decoder::DecodeTextureRef(const json& material, const char* key, const std::string& where,
+                                 bool inside_pbr, TextureRef* out) {
+  const json* holder = &material;
+  if (inside_pbr) {
+    auto it = material.find("pbrMetallicRoughness");
+    if (it == material.end()) return Status::Ok();
+    holder = &*it;
+  }
+  auto it = holder->find(key);
+  if (it == holder->end()) return Status::Ok();
+  const std::string tw = where + "." + key;
+  if (!it->is_object()) return Error(tw, "is not an object");
+  int64_t texture = -1;
+  uint64_t tex_coord = 0;
+  HP_RETURN_IF_ERROR(GetIndex(*it, "index", tw, &texture));
+  HP_RETURN_IF_ERROR(GetUint(*it, "texCoord", tw, 0, &tex_coord));
+  if (texture < 0) return Error(tw, "has no texture index");
+  if (tex_coord > 255)
+    return Error(tw, "texCoord " + std::to_string(tex_coord) + " is out of range");
+  const json* textures = nullptr;
+  HP_RETURN_IF_ERROR(TopLevel("textures", &textures));
+  if (textures == nullptr || static_cast<size_t>(texture) >= textures->size()) {
+    return Error(tw, "texture " + std::to_string(texture) + " does not exist");
+  }
+  const std::string xw = Item("textures", static_cast<uint64_t>(texture));
+  const json& t = (*textures)[static_cast<size_t>(texture)];
+  int64_t source = -1;
+  HP_RETURN_IF_ERROR(GetIndex(t, "source", xw, &source));
+  if (source < 0) {
+    // An extension (KHR_texture_basisu, EXT_texture_webp, ...) may name the image instead.
+    auto ext = t.find("extensions");
+    if (ext != t.end() && ext->is_object()) {
+      for (const auto& e : ext->items()) {
+        if (e.value().is_object() && e.value().contains("source")) {
+          HP_RETURN_IF_ERROR(GetIndex(e.value(), "source", xw + ".extensions." + e.key(), &source));
+          break;
+        }
+      }
+    }
+  }
+  if (source < 0) {
+    Drop(tw + ": texture without an image");
+    return Status::Ok();
+  }
+  if (static_cast<size_t>(source) >= TopCount("images")) {
+    return Error(xw, "source image " + std::to_string(source) + " does not exist");
+  }
+  out->image = static_cast<int>(source);
+  out->uv_set = static_cast<int>(tex_coord);
+  return Status::Ok();
+}
+
+Status Decoder::DecodeMaterials(Scene* scene) {
+  const json* materials = nullptr;
+  HP_RETURN_IF_ERROR(TopLevel("materials", &materials));
+  if (materials == nullptr) return Status::Ok();
+  size_t non_opaque_materials = 0;
+  for (size_t i = 0; i < materials->size(); ++i) {
+    const json& j = (*materials)[i];
+    const std::string mw = Item("materials", i);
+    Material m;
+    HP_RETURN_IF_ERROR(GetString(j, "name", mw, &m.name));
+    auto pbr = j.find("pbrMetallicRoughness");
+    if (pbr != j.end()) {
+      if (!pbr->is_object()) return Error(mw, "pbrMetallicRoughness is not an object");
+      const std::string pw = mw + ".pbrMetallicRoughness";
+      double base[4] = {1, 1, 1, 1};
+      double metallic = 1, roughness = 1;
+      HP_RETURN_IF_ERROR(GetNumbers(*pbr, "baseColorFactor", pw, 4, base));
+      HP_RETURN_IF_ERROR(GetNumber(*pbr, "metallicFactor", pw, &metallic));
+      HP_RETURN_IF_ERROR(GetNumber(*pbr, "roughnessFactor", pw, &roughness));
+      for (int c = 0; c < 4; ++c)
+        m.base_color[static_cast<size_t>(c)] = static_cast<float>(base[c]);
+      m.metallic = static_cast<float>(metallic);
+      m.roughness = static_cast<float>(roughness);
+      HP_RETURN_IF_ERROR(DecodeTextureRef(j, "baseColorTexture", mw, true, &m.base_color_texture));
+      HP_RETURN_IF_ERROR(
+          DecodeTextureRef(j, "metallicRoughnessTexture", mw, true, &m.metallic_roughness_texture));
+    }
+    double emissive[3] = {0, 0, 0};
+    HP_RETURN_IF_ERROR(GetNumbers(j, "emissiveFactor", mw, 3, emissive));
+    for (int c = 0; c < 3; ++c)
+      m.emissive[static_cast<size_t>(c)] = static_cast<float>(emissive[c]);
+    HP_RETURN_IF_ERROR(GetBool(j, "doubleSided", mw, &m.double_sided));
+    std::string alpha_mode;
+    HP_RETURN_IF_ERROR(GetString(j, "alphaMode", mw, &alpha_mode));
+    if (!alpha_mode.empty() && alpha_mode != "OPAQUE") ++non_opaque_materials;
+    HP_RETURN_IF_ERROR(DecodeTextureRef(j, "normalTexture", mw, false, &m.normal_texture));
+    HP_RETURN_IF_ERROR(DecodeTextureRef(j, "occlusionTexture", mw, false, &m.occlusion_texture));
+    HP_RETURN_IF_ERROR(DecodeTextureRef(j, "emissiveTexture", mw, false, &m.emissive_texture));
+    scene->materials.push_back(std::move(m));
+  }
+  if (non_opaque_materials > 0) {
+    Drop("dropped alphaMode MASK/BLEND of " + std::to_string(non_opaque_materials) + " materials");
+  }
+  if (TopCount("samplers") > 0)
+    Drop("dropped " + std::to_string(TopCount("samplers")) + " texture samplers");
+  return Status::Ok();
+}
+
+}  // namespace glb_reader_internal
+}  // namespace hullpack

@@ -1,0 +1,154 @@
+// Nodes: the hierarchy (matrix or TRS), meshes and skins of each node.
+#include "gltf/glb_reader_decoder.h"
+
+#include <algorithm>
+#include <cstring>
+#include <utility>
+#include "gltf/node_forest.h"
+
+namespace hullpack {
+namespace glb_reader_internal {
+
+namespace {
+
+Matrix4 ComposeTrs(const double t[3], const double q[4], const double s[3]) {
+  const double x = q[0], y = q[1], z = q[2], w = q[3];
+  const double r[9] = {1 - 2 * (y * y + z * z), 2 * (x * y + z * w),     2 * (x * z - y * w),
+                       2 * (x * y - z * w),     1 - 2 * (x * x + z * z), 2 * (y * z + x * w),
+                       2 * (x * z + y * w),     2 * (y * z - x * w),     1 - 2 * (x * x + y * y)};
+  // r is column-major: column c = r[3c..3c+2].
+  Matrix4 m = kIdentity;
+  for (int c = 0; c < 3; ++c) {
+    for (int row = 0; row < 3; ++row) m[static_cast<size_t>(4 * c + row)] = r[3 * c + row] * s[c];
+  }
+  m[12] = t[0];
+  m[13] = t[1];
+  m[14] = t[2];
+  return m;
+}
+
+}  // namespace
+
+Status Decoder::DecodeNodes(Scene* scene) {
+  const json* nodes = nullptr;
+  HP_RETURN_IF_ERROR(TopLevel("nodes", &nodes));
+  if (nodes == nullptr) return Status::Ok();
+  const size_t n = nodes->size();
+  scene->nodes.resize(n);
+  std::vector<bool> mesh_of_parent(n, false);
+  size_t cameras = 0, lights = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const json& j = (*nodes)[i];
+    const std::string nw = Item("nodes", i);
+    Node& node = scene->nodes[i];
+    HP_RETURN_IF_ERROR(GetString(j, "name", nw, &node.name));
+    const json* children = nullptr;
+    HP_RETURN_IF_ERROR(GetArray(j, "children", nw, &children));
+    if (children != nullptr) {
+      for (size_t k = 0; k < children->size(); ++k) {
+        const json& c = (*children)[k];
+        if (!c.is_number_integer() || c.get<int64_t>() < 0 ||
+            static_cast<uint64_t>(c.get<int64_t>()) >= n) {
+          return Error(nw, "child " + std::to_string(k) + " is not a node index");
+        }
+        const size_t child = static_cast<size_t>(c.get<int64_t>());
+        if (child == i) return Error(nw, "lists itself as a child");
+        if (scene->nodes[child].parent != -1) {
+          return Error(nw, "child node " + std::to_string(child) + " already has parent " +
+                               std::to_string(scene->nodes[child].parent));
+        }
+        scene->nodes[child].parent = static_cast<int>(i);
+        node.children.push_back(static_cast<int>(child));
+      }
+    }
+    if (j.contains("matrix")) {
+      double m[16];
+      HP_RETURN_IF_ERROR(GetNumbers(j, "matrix", nw, 16, m));
+      std::copy(m, m + 16, node.local_transform.begin());
+    } else if (j.contains("translation") || j.contains("rotation") || j.contains("scale")) {
+      double t[3] = {0, 0, 0}, q[4] = {0, 0, 0, 1}, s[3] = {1, 1, 1};
+      HP_RETURN_IF_ERROR(GetNumbers(j, "translation", nw, 3, t));
+      HP_RETURN_IF_ERROR(GetNumbers(j, "rotation", nw, 4, q));
+      HP_RETURN_IF_ERROR(GetNumbers(j, "scale", nw, 3, s));
+      node.local_transform = ComposeTrs(t, q, s);
+    }
+    int64_t mesh = -1, skin = -1;
+    HP_RETURN_IF_ERROR(GetIndex(j, "mesh", nw, &mesh));
+    HP_RETURN_IF_ERROR(GetIndex(j, "skin", nw, &skin));
+    if (mesh >= 0) {
+      if (static_cast<size_t>(mesh) >= scene->meshes.size())
+        return Error(nw, "mesh " + std::to_string(mesh) + " does not exist");
+      node.meshes.push_back(static_cast<int>(mesh));
+    }
+    if (skin >= 0) {
+      if (static_cast<size_t>(skin) >= scene->skins.size())
+        return Error(nw, "skin " + std::to_string(skin) + " does not exist");
+      node.skin = static_cast<int>(skin);
+    }
+    if (j.contains("camera")) ++cameras;
+    auto ext = j.find("extensions");
+    if (ext != j.end() && ext->is_object() && ext->contains("KHR_lights_punctual")) ++lights;
+    auto extras = j.find("extras");
+    if (extras != j.end() && extras->is_object()) {
+      auto hp = extras->find("hullpack");
+      if (hp != extras->end() && hp->is_object()) {
+        bool marker = false;
+        HP_RETURN_IF_ERROR(GetBool(*hp, "mesh_of_parent", nw + ".extras.hullpack", &marker));
+        mesh_of_parent[i] = marker;
+      }
+    }
+  }
+  const int on_cycle = gltf_internal::FirstNodeOnCycle(scene->nodes);
+  if (on_cycle >= 0) {
+    return Error(Item("nodes", static_cast<uint64_t>(on_cycle)),
+                 "is part of a cycle in the node hierarchy");
+  }
+  if (cameras > 0) Drop("dropped " + std::to_string(cameras) + " node cameras");
+  if (lights > 0) Drop("dropped " + std::to_string(lights) + " KHR_lights_punctual node lights");
+
+  // Fold the writer's extra-mesh children back into their parents.
+  std::vector<bool> referenced(n, false);
+  for (const Skin& s : scene->skins) {
+    for (int jn : s.joints) referenced[static_cast<size_t>(jn)] = true;
+    if (s.skeleton >= 0) referenced[static_cast<size_t>(s.skeleton)] = true;
+  }
+  std::vector<int> remap(n, -1);
+  std::vector<bool> remove(n, false);
+  for (size_t i = 0; i < n; ++i) {
+    const Node& node = scene->nodes[i];
+    const bool fold = mesh_of_parent[i] && node.parent >= 0 && node.children.empty() &&
+                      node.meshes.size() == 1 && !referenced[i] &&
+                      node.local_transform == kIdentity &&
+                      node.skin == scene->nodes[static_cast<size_t>(node.parent)].skin;
+    remove[i] = fold;
+  }
+  if (std::find(remove.begin(), remove.end(), true) == remove.end()) return Status::Ok();
+  for (size_t i = 0; i < n; ++i) {
+    if (!remove[i]) continue;
+    Node& parent = scene->nodes[static_cast<size_t>(scene->nodes[i].parent)];
+    parent.meshes.push_back(scene->nodes[i].meshes[0]);
+  }
+  std::vector<Node> kept;
+  for (size_t i = 0; i < n; ++i) {
+    if (remove[i]) continue;
+    remap[i] = static_cast<int>(kept.size());
+    kept.push_back(std::move(scene->nodes[i]));
+  }
+  for (Node& node : kept) {
+    if (node.parent >= 0) node.parent = remap[static_cast<size_t>(node.parent)];
+    std::vector<int> children;
+    for (int c : node.children) {
+      if (remap[static_cast<size_t>(c)] >= 0) children.push_back(remap[static_cast<size_t>(c)]);
+    }
+    node.children = std::move(children);
+  }
+  for (Skin& s : scene->skins) {
+    for (int& jn : s.joints) jn = remap[static_cast<size_t>(jn)];
+    if (s.skeleton >= 0) s.skeleton = remap[static_cast<size_t>(s.skeleton)];
+  }
+  scene->nodes = std::move(kept);
+  return Status::Ok();
+}
+
+}  // namespace glb_reader_internal
+}  // namespace hullpack

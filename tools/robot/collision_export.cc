@@ -1,0 +1,130 @@
+#include "robot/collision_export.h"
+
+#include <sys/stat.h>
+
+#include <cerrno>
+#include <cstring>
+
+#include "common/file_util.h"
+#include "mesh/merge.h"
+#include "mesh/validate.h"
+#include "robot/hull_files.h"
+#include "robot/mjcf_writer.h"
+#include "robot/sdf_writer.h"
+#include "robot/urdf_writer.h"
+
+namespace hullpack {
+namespace {
+
+std::string Stem(const std::string& path) {
+  const size_t slash = path.find_last_of("/\\");
+  std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+  const size_t dot = name.find_last_of('.');
+  return dot == std::string::npos || dot == 0 ? name : name.substr(0, dot);
+}
+
+Status MakeFolder(const std::string& path) {
+  struct stat st;
+  if (stat(path.c_str(), &st) == 0) {
+    if (S_ISDIR(st.st_mode)) return Status::Ok();
+    return Status(StatusCode::kIoError, path + ": exists and is not a folder");
+  }
+  if (mkdir(path.c_str(), 0777) != 0)
+    return Status(StatusCode::kIoError, path + ": cannot create folder: " + std::strerror(errno));
+  return Status::Ok();
+}
+
+bool Exists(const std::string& path) {
+  struct stat st;
+  return stat(path.c_str(), &st) == 0;
+}
+
+}  // namespace
+
+Result<CollisionExportReport> ExportCollision(const Scene& scene, const std::string& input_path,
+                                              const std::string& output_dir,
+                                              const CollisionExportOptions& options,
+                                              vhacd::Observer* observer) {
+  const RobotFormat format = options.format;
+  const int cap =
+      options.max_hull_vertices ? options.max_hull_vertices : DefaultMaxHullVertices(format);
+  if (cap < 4 || cap > MaxHullVerticesLimit(format)) {
+    return Status(StatusCode::kInvalidArgument,
+                  std::string("the vertex cap per hull must be in [4, ") +
+                      std::to_string(MaxHullVerticesLimit(format)) + "] for " +
+                      RobotFormatName(format) + ", not " + std::to_string(cap));
+  }
+  if (!(options.density > 0) || options.density > 1e12)
+    return Status(StatusCode::kInvalidArgument, "density must be in (0, 1e12] kg/m^3");
+  if (scene.meshes.empty() || scene.triangle_count() == 0)
+    return Status(StatusCode::kInvalidMesh, input_path + ": no triangles");
+
+  Mesh merged = MergeMeshes(scene);
+  merged.name = SanitizeName(options.name.empty() ? Stem(input_path) : options.name);
+  Status valid = ValidateMesh(merged);
+  if (!valid.ok()) return Status(valid.code(), input_path + ": " + valid.message());
+
+  CollisionExportReport report;
+  report.name = merged.name;
+  const std::string dir = output_dir.empty() ? "." : output_dir;
+  const std::string ext = MeshExtension(format);
+  RobotModel model;
+  model.name = merged.name;
+  model.max_hull_vertices = cap;
+  model.visual_file = "meshes/" + model.name + "_visual" + ext;
+  report.description = dir + "/" + model.name + DescriptionExtension(format);
+
+  vhacd::Parameters params = options.parameters;
+  params.max_vertices_per_hull = static_cast<uint32_t>(cap);
+  Result<HullSet> hulls = DecomposeMesh(merged, params, observer);
+  if (!hulls.ok())
+    return Status(hulls.status().code(), input_path + ": " + hulls.status().message());
+  if (hulls->hulls.empty())
+    return Status(StatusCode::kInvalidMesh, input_path + ": the decomposition produced no hulls");
+  for (size_t h = 0; h < hulls->hulls.size(); ++h) {
+    model.hull_files.push_back("meshes/" + model.name + "_hull_" + std::to_string(h) + ext);
+    report.largest_hull_vertices =
+        std::max(report.largest_hull_vertices, hulls->hulls[h].vertex_count());
+  }
+  if (report.largest_hull_vertices > static_cast<size_t>(cap)) {
+    return Status(StatusCode::kInternal, "a hull has " +
+                                             std::to_string(report.largest_hull_vertices) +
+                                             " vertices, above the cap of " + std::to_string(cap));
+  }
+  Result<MassProperties> mass = HullUnionMassProperties(hulls->hulls, options.density);
+  if (!mass.ok()) return Status(mass.status().code(), input_path + ": " + mass.status().message());
+  model.mass = mass.value();
+
+  // Every target is checked before anything is written.
+  std::vector<std::pair<std::string, std::vector<uint8_t>>> files;
+  const std::string text = format == RobotFormat::kUrdf   ? WriteUrdf(model)
+                           : format == RobotFormat::kMjcf ? WriteMjcf(model)
+                                                          : WriteSdf(model);
+  files.emplace_back(dir + "/" + model.visual_file, EncodeMeshFile(merged, format));
+  for (size_t h = 0; h < hulls->hulls.size(); ++h)
+    files.emplace_back(dir + "/" + model.hull_files[h], EncodeMeshFile(hulls->hulls[h], format));
+  // The description last: it never points at a mesh file that was not written.
+  files.emplace_back(report.description, std::vector<uint8_t>(text.begin(), text.end()));
+  for (const auto& file : files) {
+    if (SameFile(file.first, input_path))
+      return Status(StatusCode::kInvalidArgument,
+                    file.first + ": is the input; refusing to overwrite it");
+    if (!options.force && Exists(file.first))
+      return Status(StatusCode::kInvalidArgument,
+                    file.first + ": exists (use --force to replace it)");
+  }
+  Status made = MakeFolder(dir);
+  if (made.ok()) made = MakeFolder(dir + "/meshes");
+  if (!made.ok()) return made;
+  for (const auto& file : files) {
+    Status written = WriteFileAtomically(file.first, file.second);
+    if (!written.ok()) return written;
+    report.files.push_back(file.first);
+  }
+  report.hull_count = hulls->hulls.size();
+  report.mass = model.mass;
+  report.decomposition = std::move(hulls->report);
+  return report;
+}
+
+}  // namespace hullpack

@@ -1,0 +1,574 @@
+// vhacd::DecomposeHacd: the HACD pipeline (see include/vhacd/hacd.h).
+#include "vhacd/hacd.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <new>
+#include <queue>
+#include <thread>
+#include <unordered_map>
+
+#include "context.h"
+#include "convex_hull.h"
+#include "error_metrics.h"
+#include "hacd_cost.h"
+#include "hacd_graph.h"
+#include "hacd_orient.h"
+#include "hacd_raycast.h"
+#include "hull_simplify.h"
+#include "input_mesh.h"
+#include "simplify_qem.h"
+#include "thread_pool.h"
+#include "voxelizer.h"
+
+namespace vhacd {
+
+HacdParameters HacdParameters::Recommended() {
+  HacdParameters p;
+  p.min_clusters = 2;
+  p.concavity = 100.0;
+  p.invert_input_faces = false;
+  p.add_extra_dist_points = true;
+  p.add_face_points = true;
+  p.connect_distance = 30.0;
+  p.target_triangles = 2000;
+  return p;
+}
+
+Status ValidateHacdParameters(const HacdParameters& p, std::string* why) {
+  auto bad = [&](const char* msg) {
+    if (why != nullptr) *why = msg;
+    return Status::kInvalidParameter;
+  };
+  auto in = [](double v, double lo, double hi) { return std::isfinite(v) && v >= lo && v <= hi; };
+  if (p.target_triangles >= (uint32_t{1} << 31)) return bad("target_triangles must be below 2^31");
+  if (p.max_vertices_per_hull < 4 || p.max_vertices_per_hull > 1024)
+    return bad("max_vertices_per_hull must be in [4, 1024]");
+  if (!in(p.scale_factor, 1.0, 1e6)) return bad("scale_factor must be in [1, 1e6]");
+  if (!in(p.small_cluster_threshold, 0.0, 100.0))
+    return bad("small_cluster_threshold must be in [0, 100]");
+  if (p.min_clusters < 1 || p.min_clusters > 100000)
+    return bad("min_clusters must be in [1, 100000]");
+  if (!in(p.concavity, 0.0, 1e7)) return bad("concavity must be in [0, 1e7]");
+  if (!in(p.connect_distance, -1.0, 1e7)) return bad("connect_distance must be in [-1, 1e7]");
+  if (!in(p.volume_weight, 0.0, 1e3)) return bad("volume_weight must be in [0, 1000]");
+  if (!in(p.compacity_weight, 0.0, 1e3)) return bad("compacity_weight must be in [0, 1000]");
+  if (!in(p.flat_region_threshold, 0.0, 100.0))
+    return bad("flat_region_threshold must be in [0, 100]");
+  if (!in(p.computation_weight, 0.0, 1e3)) return bad("computation_weight must be in [0, 1000]");
+  if (p.num_threads > 256) return bad("num_threads must be in [0, 256]");
+  if (why != nullptr) why->clear();
+  return Status::kOk;
+}
+
+namespace {
+
+using internal::Vec3;
+using Tri = std::array<uint32_t, 3>;
+
+struct Clock {
+  std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
+  double Lap() {
+    const auto t = std::chrono::steady_clock::now();
+    const double s = std::chrono::duration<double>(t - t0).count();
+    t0 = t;
+    return s;
+  }
+};
+
+Result Fail(Status s, std::string message) {
+  Result r;
+  r.status = s;
+  r.message = std::move(message);
+  return r;
+}
+
+double Quantize(double x) {
+  const double q = 1099511627776.0;  // 2^40: makes the normalized mesh scale-invariant
+  return std::nearbyint(x * q) / q;
+}
+
+// The clustering state: the dual graph whose nodes are clusters.
+class Clustering {
+ public:
+  struct Edge {
+    uint32_t a = 0, b = 0;
+    double shared = 0.0;
+    double cost = 0.0, concavity = 0.0;
+    uint32_t version_a = UINT32_MAX, version_b = UINT32_MAX;  // cluster versions of `cost`
+    uint32_t generation = 0;                                  // of its newest heap entry
+    bool alive = true;
+  };
+  struct Cluster {
+    std::vector<uint32_t> dist;     // sorted distance point ids (ids < vertex count: mesh vertices)
+    std::vector<Vec3> hull_points;  // points spanning its hull
+    std::vector<uint32_t> edges;
+    std::vector<uint32_t> triangles;
+    double area = 0.0, perimeter = 0.0;
+    uint32_t version = 0;
+    bool alive = true;
+  };
+
+  Clustering(const HacdParameters& p, const internal::HacdCostParams& cp,
+             std::vector<internal::DistPoint> dist, double total_area)
+      : p_(p), cp_(cp), dist_(std::move(dist)) {
+    area_threshold_ = total_area * p.small_cluster_threshold / 100.0;
+  }
+
+  std::vector<Cluster>& clusters() { return clusters_; }
+  std::vector<Edge>& edges() { return edges_; }
+  size_t alive_count() const { return alive_; }
+
+  bool Run(internal::Context* ctx) {
+    alive_ = clusters_.size();
+    const size_t n0 = alive_;
+    if (!internal::ParallelFor(ctx, edges_.size(), [&](size_t e) { Evaluate(&edges_[e]); }))
+      return false;
+    for (uint32_t e = 0; e < edges_.size(); ++e) Push(e);
+    size_t pops = 0;
+    while (!heap_.empty()) {
+      if ((++pops & 63) == 0 && ctx != nullptr) {
+        if (ctx->Cancelled()) return false;
+        ctx->Progress(100.0 * (n0 - alive_) / std::max<size_t>(1, n0), "merging clusters");
+      }
+      const Entry top = heap_.top();
+      heap_.pop();
+      Edge& e = edges_[top.edge];
+      if (!e.alive || e.generation != top.generation) continue;
+      const bool small =
+          clusters_[e.a].area < area_threshold_ || clusters_[e.b].area < area_threshold_;
+      const bool may_merge = alive_ > p_.min_clusters;
+      if (!small && !may_merge) continue;
+      if (e.version_a != clusters_[e.a].version || e.version_b != clusters_[e.b].version) {
+        Evaluate(&e);
+        Push(top.edge);
+        continue;
+      }
+      if (!small && !(e.concavity < p_.concavity)) continue;
+      Collapse(top.edge);
+    }
+    return true;
+  }
+
+ private:
+  struct Entry {
+    double cost;
+    uint32_t edge, generation;
+    bool operator>(const Entry& o) const { return cost != o.cost ? cost > o.cost : edge > o.edge; }
+  };
+
+  bool Small(const Cluster& c) const { return c.area < area_threshold_; }
+
+  void Evaluate(Edge* e) const {
+    const Cluster& a = clusters_[e->a];
+    const Cluster& b = clusters_[e->b];
+    std::vector<Vec3> pts(a.hull_points);
+    pts.insert(pts.end(), b.hull_points.begin(), b.hull_points.end());
+    const double limit = (Small(a) || Small(b)) ? HUGE_VAL : p_.concavity;
+    const internal::MergeCost mc =
+        internal::EvaluateCluster(pts, dist_, a.dist, b.dist, a.area + b.area,
+                                  a.perimeter + b.perimeter - 2.0 * e->shared, limit, cp_, nullptr);
+    e->cost = mc.cost;
+    e->concavity = mc.concavity;
+    e->version_a = a.version;
+    e->version_b = b.version;
+  }
+
+  void Push(uint32_t e) {
+    ++edges_[e].generation;
+    heap_.push({edges_[e].cost, e, edges_[e].generation});
+  }
+
+  void Collapse(uint32_t eid) {
+    const uint32_t ia = edges_[eid].a, ib = edges_[eid].b;
+    Cluster& a = clusters_[ia];
+    Cluster& b = clusters_[ib];
+    std::vector<Vec3> pts(a.hull_points);
+    pts.insert(pts.end(), b.hull_points.begin(), b.hull_points.end());
+    std::vector<Vec3> kept;
+    internal::EvaluateCluster(pts, dist_, {}, {}, 0.0, 0.0, 0.0, cp_, &kept);
+    a.hull_points = kept.size() >= 3 ? std::move(kept) : std::move(pts);
+    a.perimeter = std::max(0.0, a.perimeter + b.perimeter - 2.0 * edges_[eid].shared);
+    a.area += b.area;
+    std::vector<uint32_t> merged;
+    merged.reserve(a.dist.size() + b.dist.size());
+    std::set_union(a.dist.begin(), a.dist.end(), b.dist.begin(), b.dist.end(),
+                   std::back_inserter(merged));
+    a.dist.swap(merged);
+    std::vector<uint32_t>().swap(b.dist);
+    a.triangles.insert(a.triangles.end(), b.triangles.begin(), b.triangles.end());
+    std::vector<uint32_t>().swap(b.triangles);
+    std::vector<Vec3>().swap(b.hull_points);
+    // Re-attach b's edges to a, merging parallel ones.
+    std::unordered_map<uint32_t, uint32_t> to;  // neighbour cluster -> edge of a
+    for (uint32_t e : a.edges) {
+      Edge& ed = edges_[e];
+      if (!ed.alive) continue;
+      to[ed.a == ia ? ed.b : ed.a] = e;
+    }
+    for (uint32_t e : b.edges) {
+      Edge& ed = edges_[e];
+      if (!ed.alive) continue;
+      const uint32_t x = ed.a == ib ? ed.b : ed.a;
+      if (x == ia) {
+        ed.alive = false;
+        continue;
+      }
+      auto it = to.find(x);
+      if (it != to.end()) {
+        edges_[it->second].shared += ed.shared;
+        ed.alive = false;
+        continue;
+      }
+      if (ed.a == ib)
+        ed.a = ia;
+      else
+        ed.b = ia;
+      if (ed.a > ed.b) std::swap(ed.a, ed.b);
+      a.edges.push_back(e);
+      to[x] = e;
+    }
+    std::vector<uint32_t>().swap(b.edges);
+    b.alive = false;
+    --alive_;
+    a.edges.erase(std::remove_if(a.edges.begin(), a.edges.end(),
+                                 [&](uint32_t e) { return !edges_[e].alive; }),
+                  a.edges.end());
+    std::sort(a.edges.begin(), a.edges.end());
+    ++a.version;
+    // Stale costs stay as lower bounds: each is recomputed when it reaches the top of the heap.
+    for (uint32_t e : a.edges) Push(e);
+  }
+
+  const HacdParameters& p_;
+  internal::HacdCostParams cp_;
+  std::vector<internal::DistPoint> dist_;
+  double area_threshold_ = 0.0;
+  std::vector<Cluster> clusters_;
+  std::vector<Edge> edges_;
+  size_t alive_ = 0;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap_;
+};
+
+// The hull of one cluster's mesh vertices, made solid when the cluster is flat or thin.
+internal::HullMesh ClusterHull(const std::vector<Vec3>& pts, double thickness,
+                               uint32_t max_vertices) {
+  internal::HullMesh hull;
+  internal::HullStatus st = internal::ComputeConvexHull(pts, -1.0, &hull);
+  bool thin = st != internal::HullStatus::kOk;
+  if (!thin) {
+    // Thinner than `thickness` everywhere: give it that thickness.
+    double area = 0.0;
+    for (const auto& t : hull.triangles)
+      area += 0.5 * (hull.vertices[t[1]] - hull.vertices[t[0]])
+                        .cross(hull.vertices[t[2]] - hull.vertices[t[0]])
+                        .norm();
+    thin = hull.Volume() < 0.25 * area * thickness;
+  }
+  if (thin) {
+    Vec3 c = Vec3::Zero();
+    for (const Vec3& p : pts) c += p;
+    c /= static_cast<double>(pts.size());
+    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+    for (const Vec3& p : pts) cov += (p - c) * (p - c).transpose();
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
+    std::vector<Vec3> thick;
+    const Vec3 n = es.eigenvectors().col(0), m = es.eigenvectors().col(1);
+    const bool line = es.eigenvalues()[1] <= 1e-18 * std::max(1e-300, es.eigenvalues()[2]);
+    for (const Vec3& p : pts) {
+      thick.push_back(p + 0.5 * thickness * n);
+      thick.push_back(p - 0.5 * thickness * n);
+      if (line) {
+        thick.push_back(p + 0.5 * thickness * m);
+        thick.push_back(p - 0.5 * thickness * m);
+      }
+    }
+    internal::HullMesh h2;
+    if (internal::ComputeConvexHull(thick, -1.0, &h2) == internal::HullStatus::kOk) hull = h2;
+  }
+  if (hull.empty()) return hull;
+  return internal::SimplifyHull(hull, max_vertices, 0.0);
+}
+
+Result DecomposeHacdImpl(const MeshView& view, const HacdParameters& params, Observer* observer) {
+  std::string why;
+  Status st = ValidateHacdParameters(params, &why);
+  if (st != Status::kOk) return Fail(st, why);
+  const int threads = params.num_threads > 0
+                          ? static_cast<int>(params.num_threads)
+                          : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  internal::Context ctx(observer, threads);
+  internal::InputMesh input;
+  st = internal::ReadMesh(view, &ctx, &input, &why);
+  if (st != Status::kOk) return Fail(st, why);
+  Result result;
+  Report& rep = result.report;
+  rep.closed_input = input.closed;
+  Clock clock, total;
+
+  // Normalization: centre of the box, then the diagonal scaled to 2 * scale_factor.
+  Vec3 lo = input.points[0], hi = input.points[0];
+  for (const Vec3& p : input.points) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const Vec3 center = 0.5 * (lo + hi);
+  const double extent = (hi - lo).maxCoeff();
+  if (!(extent > 0) || !std::isfinite(extent) || !center.allFinite())
+    return Fail(Status::kInvalidMesh, "the mesh has a degenerate or overflowing bounding box");
+  std::vector<Vec3> pq(input.points.size());
+  Vec3 qlo = Vec3::Constant(HUGE_VAL), qhi = -qlo;
+  for (size_t i = 0; i < pq.size(); ++i) {
+    const Vec3 q = (input.points[i] - center) / extent;
+    pq[i] = Vec3(Quantize(q[0]), Quantize(q[1]), Quantize(q[2]));
+    qlo = qlo.cwiseMin(pq[i]);
+    qhi = qhi.cwiseMax(pq[i]);
+  }
+  const double qdiag = (qhi - qlo).norm();
+  const double to_norm = 2.0 * params.scale_factor / qdiag;
+  for (Vec3& p : pq) p *= to_norm;
+  auto to_world = [&](const Vec3& n) -> Vec3 { return center + (n / to_norm) * extent; };
+  const double diag = 2.0 * params.scale_factor;
+
+  std::vector<Tri> tris = input.triangles;
+  internal::OrientConsistently(pq, &tris);
+  if (params.invert_input_faces)
+    for (Tri& t : tris) std::swap(t[1], t[2]);
+
+  // Decimation.
+  ctx.BeginStage("Simplification", 0, 15);
+  std::vector<Vec3> pts = pq;
+  if (params.target_triangles > 0 && tris.size() > params.target_triangles) {
+    internal::QemMesh in, out;
+    in.points = pq;
+    in.triangles = tris;
+    internal::QemOptions qo;
+    qo.target_triangles = params.target_triangles;
+    if (!internal::SimplifyQem(in, {}, qo, &ctx, &out))
+      return Fail(Status::kCancelled, "cancelled");
+    pts = std::move(out.points);
+    tris = std::move(out.triangles);
+    ctx.Log("decimated to " + std::to_string(tris.size()) + " triangles");
+  }
+  rep.seconds_simplify = clock.Lap();
+  if (tris.empty()) return Fail(Status::kInternalError, "decimation left no triangle");
+
+  // Dual graph and distance points.
+  ctx.BeginStage("Dual graph", 15, 25);
+  std::vector<internal::DualEdge> dual;
+  if (!internal::BuildDualGraph(pts, tris, params.connect_distance, &ctx, &dual))
+    return Fail(Status::kCancelled, "cancelled");
+  const size_t nv = pts.size(), nt = tris.size();
+  std::vector<Vec3> vnormal(nv, Vec3::Zero()), fnormal(nt), centroid(nt);
+  std::vector<double> farea(nt);
+  double total_area = 0.0;
+  for (size_t t = 0; t < nt; ++t) {
+    const Vec3 n = (pts[tris[t][1]] - pts[tris[t][0]]).cross(pts[tris[t][2]] - pts[tris[t][0]]);
+    for (uint32_t v : tris[t]) vnormal[v] += n;
+    farea[t] = 0.5 * n.norm();
+    total_area += farea[t];
+    fnormal[t] = farea[t] > 0 ? Vec3(n.normalized()) : Vec3::Zero();
+    centroid[t] = (pts[tris[t][0]] + pts[tris[t][1]] + pts[tris[t][2]]) / 3.0;
+  }
+  std::vector<internal::DistPoint> dist(nv);
+  for (size_t v = 0; v < nv; ++v) {
+    const double len = vnormal[v].norm();
+    dist[v] = {pts[v], len > 0 ? Vec3(vnormal[v] / len) : Vec3::Zero()};
+  }
+  std::vector<uint32_t> face_id(nt, UINT32_MAX), extra_id(nt, UINT32_MAX);
+  if (params.add_face_points)
+    for (size_t t = 0; t < nt; ++t)
+      if (farea[t] > 0) {
+        face_id[t] = static_cast<uint32_t>(dist.size());
+        dist.push_back({centroid[t], fnormal[t]});
+      }
+  // Rays from each triangle's centre along its inverted normal: the first surface hit gives the
+  // solid's depth behind the triangle (for the hulls) and, when that surface faces the same way,
+  // the extra distance point.
+  std::vector<double> depth(nt, 0.0);
+  const internal::RayCaster caster(pts, tris);
+  {
+    std::vector<internal::DistPoint> extra(nt);
+    std::vector<uint8_t> found(nt, 0);
+    const double min_t = 1e-9 * diag;
+    if (!internal::ParallelFor(&ctx, nt, [&](size_t t) {
+          if (!(farea[t] > 0)) return;
+          const Vec3 dir = -fnormal[t];
+          uint32_t hit = 0;
+          double d = 0;
+          if (!caster.Cast(centroid[t], dir, min_t, static_cast<uint32_t>(t), &hit, &d)) return;
+          depth[t] = d;
+          if (!(fnormal[hit].dot(dir) > 0)) return;
+          extra[t] = {centroid[t] + d * dir, fnormal[hit]};
+          found[t] = 1;
+        }))
+      return Fail(Status::kCancelled, "cancelled");
+    if (params.add_extra_dist_points)
+      for (size_t t = 0; t < nt; ++t)
+        if (found[t]) {
+          extra_id[t] = static_cast<uint32_t>(dist.size());
+          dist.push_back(extra[t]);
+        }
+  }
+
+  internal::HacdCostParams cp;
+  cp.scale = params.scale_factor;
+  cp.flat_threshold = params.flat_region_threshold;
+  cp.compacity_weight = params.compacity_weight;
+  cp.volume_weight = params.volume_weight;
+  cp.computation_weight = params.computation_weight;
+  cp.total_dist_points = static_cast<double>(dist.size());
+  cp.inside_margin = 1e-6 * diag;
+  Clustering clustering(params, cp, std::move(dist), total_area);
+  auto& clusters = clustering.clusters();
+  clusters.resize(nt);
+  for (size_t t = 0; t < nt; ++t) {
+    auto& c = clusters[t];
+    c.dist.assign(tris[t].begin(), tris[t].end());
+    if (face_id[t] != UINT32_MAX) c.dist.push_back(face_id[t]);
+    if (extra_id[t] != UINT32_MAX) c.dist.push_back(extra_id[t]);
+    std::sort(c.dist.begin(), c.dist.end());
+    for (uint32_t v : tris[t]) c.hull_points.push_back(pts[v]);
+    c.area = farea[t];
+    c.triangles.assign(1, static_cast<uint32_t>(t));
+    for (int k = 0; k < 3; ++k) c.perimeter += (pts[tris[t][k]] - pts[tris[t][(k + 1) % 3]]).norm();
+  }
+  auto& edges = clustering.edges();
+  edges.reserve(dual.size());
+  for (const auto& d : dual) {
+    Clustering::Edge e;
+    e.a = d.a;
+    e.b = d.b;
+    e.shared = d.shared_length;
+    clusters[d.a].edges.push_back(static_cast<uint32_t>(edges.size()));
+    clusters[d.b].edges.push_back(static_cast<uint32_t>(edges.size()));
+    edges.push_back(e);
+  }
+  rep.parts_before_merge = static_cast<uint32_t>(nt);
+  ctx.Log("dual graph: " + std::to_string(nt) + " nodes, " + std::to_string(dual.size()) +
+          " edges, " + std::to_string(clustering.clusters().size()) + " clusters to merge");
+
+  // Clustering.
+  ctx.BeginStage("Clustering", 25, 85);
+  if (!clustering.Run(&ctx)) return Fail(Status::kCancelled, "cancelled");
+  rep.seconds_clip = clock.Lap();
+
+  // One hull per cluster.
+  ctx.BeginStage("Hull generation", 85, 90);
+  std::vector<const Clustering::Cluster*> alive;
+  for (const auto& c : clusters)
+    if (c.alive) alive.push_back(&c);
+  std::vector<internal::HullMesh> hulls(alive.size());
+  if (!internal::ParallelFor(&ctx, alive.size(), [&](size_t i) {
+        std::vector<Vec3> cp_pts;
+        for (uint32_t id : alive[i]->dist)
+          if (id < nv) cp_pts.push_back(pts[id]);
+        hulls[i] = ClusterHull(cp_pts, 1e-4 * diag, params.max_vertices_per_hull);
+        // Fill toward the middle of the solid behind the surface patch, so that the hulls of the
+        // patches around a solid meet inside it instead of leaving a hollow between them; kept
+        // only when what it adds lies inside the solid.
+        if (hulls[i].empty()) return;
+        const internal::HullPlanes before(hulls[i]);
+        const size_t surface_points = cp_pts.size();
+        for (double fraction : {0.5, 0.25}) {
+          cp_pts.resize(surface_points);
+          for (uint32_t t : alive[i]->triangles)
+            if (depth[t] > 0) cp_pts.push_back(centroid[t] - (fraction * depth[t]) * fnormal[t]);
+          if (cp_pts.size() == surface_points) return;
+          internal::HullMesh filled =
+              ClusterHull(cp_pts, 1e-4 * diag, params.max_vertices_per_hull);
+          if (filled.empty()) return;
+          const Vec3 c = filled.Centroid();
+          bool inside = true;
+          for (size_t k = 0; k <= filled.vertices.size() && inside; ++k) {
+            const Vec3 q = k == 0 ? c : Vec3(0.5 * (filled.vertices[k - 1] + c));
+            inside = before.Contains(q, 1e-4 * diag) || caster.Inside(q);
+          }
+          if (inside) {
+            hulls[i] = std::move(filled);
+            return;
+          }
+        }
+      }))
+    return Fail(Status::kCancelled, "cancelled");
+  hulls.erase(std::remove_if(hulls.begin(), hulls.end(),
+                             [](const internal::HullMesh& h) { return h.empty(); }),
+              hulls.end());
+  if (hulls.empty()) return Fail(Status::kInternalError, "no cluster gave a hull");
+  rep.seconds_hulls = clock.Lap();
+
+  // Report, measured like Decompose's on a voxel grid of the input (not the decimated mesh).
+  ctx.BeginStage("Error report", 90, 100);
+  if (params.compute_report) {
+    const internal::GridPlacement place =
+        internal::ChooseGrid(qlo * to_norm, qhi * to_norm, 100000);
+    internal::GridMesh gmesh;
+    gmesh.triangles = input.triangles;
+    gmesh.points.resize(pq.size());
+    for (size_t i = 0; i < pq.size(); ++i) gmesh.points[i] = (pq[i] - place.origin) / place.h;
+    internal::VoxelGrid grid;
+    if (!internal::Voxelize(gmesh, place.dims, &ctx, &grid))
+      return Fail(Status::kCancelled, "cancelled");
+    std::vector<internal::HullMesh> ghulls = hulls;
+    for (auto& h : ghulls)
+      for (Vec3& p : h.vertices) p = (p - place.origin) / place.h;
+    internal::HullMesh whole;
+    double volume0 = 0.0;
+    if (internal::ComputeConvexHull(gmesh.points, -1.0, &whole) == internal::HullStatus::kOk)
+      volume0 = whole.Volume();
+    internal::MetricsInput mi;
+    mi.mesh = &gmesh;
+    mi.grid = &grid;
+    mi.hulls = &ghulls;
+    mi.diagonal = diag / place.h;
+    mi.volume0 = std::max(volume0, 1.0);
+    mi.closed = input.closed;
+    if (!internal::ComputeErrorReport(mi, &ctx, &rep)) return Fail(Status::kCancelled, "cancelled");
+  }
+  rep.seconds_report = clock.Lap();
+
+  // Output in input coordinates.
+  const double vol_scale = std::pow(extent / to_norm, 3);
+  if (rep.hulls.size() != hulls.size()) rep.hulls.assign(hulls.size(), HullReport());
+  for (size_t i = 0; i < hulls.size(); ++i) {
+    ConvexHull out;
+    out.points.reserve(hulls[i].vertices.size() * 3);
+    for (const Vec3& g : hulls[i].vertices) {
+      const Vec3 w = to_world(g);
+      out.points.insert(out.points.end(), {w[0], w[1], w[2]});
+    }
+    for (const auto& t : hulls[i].triangles)
+      out.triangles.insert(out.triangles.end(), {t[0], t[1], t[2]});
+    out.volume = std::min(hulls[i].Volume() * vol_scale, std::numeric_limits<double>::max());
+    const Vec3 c = to_world(hulls[i].Centroid());
+    for (int k = 0; k < 3; ++k) out.center[k] = c[k];
+    bool finite = std::isfinite(out.volume) && c.allFinite();
+    for (double v : out.points) finite = finite && std::isfinite(v);
+    if (!finite) return Fail(Status::kInternalError, "a hull has a non-finite coordinate");
+    rep.hulls[i].vertex_count = static_cast<uint32_t>(hulls[i].vertices.size());
+    rep.hulls[i].volume = out.volume;
+    result.hulls.push_back(std::move(out));
+  }
+  rep.seconds_total = total.Lap();
+  ctx.Progress(100, "done");
+  ctx.Log("done: " + std::to_string(result.hulls.size()) + " hulls from " + std::to_string(nt) +
+          " triangles");
+  return result;
+}
+
+}  // namespace
+
+Result DecomposeHacd(const MeshView& mesh, const HacdParameters& params, Observer* observer) {
+  try {
+    return DecomposeHacdImpl(mesh, params, observer);
+  } catch (const std::bad_alloc&) {
+    return Fail(Status::kOutOfMemory, "out of memory");
+  } catch (...) {
+    return Fail(Status::kInternalError, "unexpected exception");
+  }
+}
+
+}  // namespace vhacd

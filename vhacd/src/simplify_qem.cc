@@ -1,0 +1,432 @@
+#include "simplify_qem.h"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+namespace vhacd {
+namespace internal {
+namespace {
+
+using Tri = std::array<uint32_t, 3>;
+
+// Border and seam planes weigh this much more than the surface's own planes (per squared length).
+constexpr double kBorderWeight = 8.0;
+// A collapse may turn a triangle's normal by at most acos(kMinNormalCos).
+constexpr double kMinNormalCos = 0.2;
+
+struct Candidate {
+  double cost = 0.0;
+  uint32_t from = 0, to = 0;  // `from` is removed, `to` moves to `pos`
+  Vec3 pos = Vec3::Zero();
+};
+
+// A heap entry (small: the heap is the hot spot); the position is recomputed when it is popped.
+struct Entry {
+  double cost = 0.0;
+  uint32_t from = 0, to = 0;
+  uint32_t stamp_from = 0, stamp_to = 0;
+  bool operator>(const Entry& o) const {
+    return std::tie(cost, from, to) > std::tie(o.cost, o.from, o.to);
+  }
+};
+
+class Collapser {
+ public:
+  Collapser(const QemMesh& in, const std::vector<uint64_t>& seams, const QemOptions& opt)
+      : opt_(opt), pos_(in.points), tris_(in.triangles) {
+    const size_t n = pos_.size();
+    quadric_.assign(n, Eigen::Matrix4d::Zero());
+    area_.assign(n, 0.0);
+    vtris_.resize(n);
+    stamp_.assign(n, 0);
+    dead_.assign(n, 0);
+    border_.assign(n, 0);
+    locked_.assign(n, 0);
+    seam_nbrs_.resize(n);
+    tri_dead_.assign(tris_.size(), 0);
+    mark_.assign(n, 0);
+    orig_normal_.assign(tris_.size(), Vec3::Zero());
+    alive_tris_ = tris_.size();
+    for (uint32_t t = 0; t < tris_.size(); ++t) {
+      const Tri& tri = tris_[t];
+      for (uint32_t v : tri) vtris_[v].push_back(t);
+      Vec3 nrm = (pos_[tri[1]] - pos_[tri[0]]).cross(pos_[tri[2]] - pos_[tri[0]]);
+      const double len = nrm.norm();
+      if (!(len > 0)) continue;
+      nrm /= len;
+      orig_normal_[t] = nrm;
+      const double area = 0.5 * len;
+      for (uint32_t v : tri) {
+        AddPlane(v, nrm, pos_[tri[0]], area);
+        area_[v] += area;
+      }
+    }
+    // Edge use counts: 1 = border, > 2 = non-manifold (locked).
+    std::vector<std::pair<uint64_t, uint32_t>> edges;
+    for (uint32_t t = 0; t < tris_.size(); ++t)
+      for (int k = 0; k < 3; ++k) edges.emplace_back(Key(tris_[t][k], tris_[t][(k + 1) % 3]), t);
+    std::sort(edges.begin(), edges.end());
+    std::vector<uint64_t> seam_keys(seams);
+    std::sort(seam_keys.begin(), seam_keys.end());
+    for (size_t i = 0; i < edges.size();) {
+      size_t j = i;
+      while (j < edges.size() && edges[j].first == edges[i].first) ++j;
+      const uint64_t key = edges[i].first;
+      const uint32_t a = static_cast<uint32_t>(key >> 32), b = static_cast<uint32_t>(key);
+      const bool seam = std::binary_search(seam_keys.begin(), seam_keys.end(), key);
+      if (j - i > 2) {
+        locked_[a] = locked_[b] = 1;
+      } else if (j - i == 1 || seam) {
+        border_[a] = border_[b] = 1;
+        if (seam) {
+          seam_nbrs_[a].push_back(b);
+          seam_nbrs_[b].push_back(a);
+        }
+        for (size_t k = i; k < j; ++k) AddBorderPlane(a, b, edges[k].second);
+      }
+      unique_edges_.push_back(key);
+      i = j;
+    }
+    if (opt_.lock_boundary)
+      for (size_t v = 0; v < n; ++v) locked_[v] |= border_[v];
+  }
+
+  bool Run(Context* ctx, QemMesh* out) {
+    heap_.reserve(unique_edges_.size());
+    for (uint64_t key : unique_edges_) Push(static_cast<uint32_t>(key >> 32), uint32_t(key));
+    std::vector<uint64_t>().swap(unique_edges_);
+    const size_t start = alive_tris_;
+    size_t pops = 0;
+    while (!heap_.empty() && alive_tris_ > opt_.target_triangles) {
+      if ((++pops & 1023) == 0 && ctx != nullptr) {
+        if (ctx->Cancelled()) return false;
+        const double span = static_cast<double>(start - std::min(start, opt_.target_triangles));
+        if (span > 0) ctx->Progress(100.0 * (start - alive_tris_) / span, "collapsing edges");
+      }
+      std::pop_heap(heap_.begin(), heap_.end(), std::greater<Entry>());
+      const Entry e = heap_.back();
+      heap_.pop_back();
+      if (dead_[e.from] || dead_[e.to] || stamp_[e.from] != e.stamp_from ||
+          stamp_[e.to] != e.stamp_to)
+        continue;
+      Candidate c;
+      if (!Best(e.from, e.to, &c)) continue;
+      const double err = ErrorOf(c);
+      if (opt_.max_error > 0 && err > opt_.max_error) break;
+      if (!Valid(c)) continue;
+      Collapse(c);
+      error_ = std::max(error_, err);
+    }
+    Output(out);
+    return true;
+  }
+
+ private:
+  static uint64_t Key(uint32_t a, uint32_t b) {
+    if (a > b) std::swap(a, b);
+    return (uint64_t{a} << 32) | b;
+  }
+
+  void AddPlane(uint32_t v, const Vec3& n, const Vec3& p, double w) {
+    const Eigen::Vector4d q(n[0], n[1], n[2], -n.dot(p));
+    quadric_[v] += w * q * q.transpose();
+  }
+
+  void AddBorderPlane(uint32_t a, uint32_t b, uint32_t t) {
+    const Tri& tri = tris_[t];
+    const Vec3 fn = (pos_[tri[1]] - pos_[tri[0]]).cross(pos_[tri[2]] - pos_[tri[0]]);
+    const Vec3 e = pos_[b] - pos_[a];
+    Vec3 m = e.cross(fn);
+    const double len = m.norm();
+    if (!(len > 0)) return;
+    m /= len;
+    const double w = kBorderWeight * e.squaredNorm();
+    AddPlane(a, m, pos_[a], w);
+    AddPlane(b, m, pos_[a], w);
+  }
+
+  static double Eval(const Eigen::Matrix4d& q, const Vec3& p) {
+    const Eigen::Vector4d h(p[0], p[1], p[2], 1.0);
+    return std::max(0.0, h.dot(q * h));
+  }
+
+  double ErrorOf(const Candidate& c) const {
+    const double w = area_[c.from] + area_[c.to];
+    return w > 0 ? std::sqrt(c.cost / w) : 0.0;
+  }
+
+  bool IsSeamEdge(uint32_t a, uint32_t b) const {
+    const auto& s = seam_nbrs_[a];
+    return std::find(s.begin(), s.end(), b) != s.end();
+  }
+
+  // Triangles containing both a and b.
+  int SharedTriangles(uint32_t a, uint32_t b) const {
+    int n = 0;
+    for (uint32_t t : vtris_[a])
+      if (!tri_dead_[t] && Has(tris_[t], b)) ++n;
+    return n;
+  }
+  static bool Has(const Tri& t, uint32_t v) { return t[0] == v || t[1] == v || t[2] == v; }
+
+  void Push(uint32_t a, uint32_t b) {
+    Candidate best;
+    if (!Best(a, b, &best)) return;
+    heap_.push_back({best.cost, best.from, best.to, stamp_[best.from], stamp_[best.to]});
+    std::push_heap(heap_.begin(), heap_.end(), std::greater<Entry>());
+    // Superseded entries pile up (each collapse re-pushes the edges around the kept vertex); a
+    // heap several times larger than the mesh's edge count is mostly cache misses, so drop them.
+    if (heap_.size() > 64 && heap_.size() > 4 * alive_tris_) {
+      heap_.erase(std::remove_if(heap_.begin(), heap_.end(),
+                                 [&](const Entry& x) {
+                                   return dead_[x.from] || dead_[x.to] ||
+                                          stamp_[x.from] != x.stamp_from ||
+                                          stamp_[x.to] != x.stamp_to;
+                                 }),
+                  heap_.end());
+      std::make_heap(heap_.begin(), heap_.end(), std::greater<Entry>());
+    }
+  }
+
+  // The cheapest collapse of edge (a, b) allowed by the border, seam and lock rules.
+  bool Best(uint32_t a, uint32_t b, Candidate* out) const {
+    if (dead_[a] || dead_[b] || a == b) return false;
+    if (locked_[a] && locked_[b]) return false;
+    const Eigen::Matrix4d q = quadric_[a] + quadric_[b];
+    Candidate best;
+    best.cost = -1;
+    auto consider = [&](uint32_t from, uint32_t to, const Vec3& p) {
+      const double cost = Eval(q, p);
+      if (best.cost < 0 || cost < best.cost) {
+        best.cost = cost;
+        best.from = from;
+        best.to = to;
+        best.pos = p;
+      }
+    };
+    const bool ba = border_[a] || locked_[a], bb = border_[b] || locked_[b];
+    if (locked_[a]) {
+      consider(b, a, pos_[a]);
+    } else if (locked_[b]) {
+      consider(a, b, pos_[b]);
+    } else if (ba && bb) {
+      if (SharedTriangles(a, b) != 1 && !IsSeamEdge(a, b)) return false;
+      consider(b, a, pos_[a]);
+      consider(a, b, pos_[b]);
+    } else if (ba) {
+      consider(b, a, pos_[a]);
+    } else if (bb) {
+      consider(a, b, pos_[b]);
+    } else {
+      const Vec3 mid = 0.5 * (pos_[a] + pos_[b]);
+      const Eigen::Matrix3d m = q.topLeftCorner<3, 3>();
+      const Vec3 rhs = -q.topRightCorner<3, 1>();
+      // Cramer's rule, refused when the matrix is near singular (a flat or straight region).
+      const Vec3 c0 = m.col(1).cross(m.col(2)), c1 = m.col(2).cross(m.col(0)),
+                 c2 = m.col(0).cross(m.col(1));
+      const double det = m.col(0).dot(c0);
+      if (std::fabs(det) > 1e-9 * m.squaredNorm() * std::sqrt(m.squaredNorm())) {
+        const Vec3 x = Vec3(c0.dot(rhs), c1.dot(rhs), c2.dot(rhs)) / det;
+        const double reach = 2.0 * (pos_[a] - pos_[b]).norm();
+        if (x.allFinite() && (x - mid).norm() <= reach) consider(b, a, x);
+      }
+      consider(b, a, pos_[a]);
+      consider(a, b, pos_[b]);
+      consider(b, a, mid);
+    }
+    if (best.cost < 0) return false;
+    *out = best;
+    return true;
+  }
+
+  void Neighbours(uint32_t v, std::vector<uint32_t>* out) const {
+    out->clear();
+    for (uint32_t t : vtris_[v])
+      if (!tri_dead_[t])
+        for (uint32_t w : tris_[t])
+          if (w != v) out->push_back(w);
+    std::sort(out->begin(), out->end());
+    out->erase(std::unique(out->begin(), out->end()), out->end());
+  }
+
+  bool Valid(const Candidate& c) {
+    const uint32_t u = c.from, v = c.to;
+    // Link condition: the common neighbours are exactly the apexes of the edge's triangles.
+    // Neighbours of u get mark `first`; those also around v are moved to `first + 1` and counted.
+    if (mark_generation_ > UINT32_MAX - 4) {
+      std::fill(mark_.begin(), mark_.end(), 0u);
+      mark_generation_ = 0;
+    }
+    const uint32_t first = mark_generation_ += 2, common = first + 1;
+    for (uint32_t t : vtris_[u])
+      if (!tri_dead_[t])
+        for (uint32_t w : tris_[t])
+          if (w != u) mark_[w] = first;
+    size_t common_count = 0;
+    for (uint32_t t : vtris_[v])
+      if (!tri_dead_[t])
+        for (uint32_t w : tris_[t])
+          if (w != v && mark_[w] == first) {
+            mark_[w] = common;
+            ++common_count;
+          }
+    size_t edge_tris = 0, other_tris = 0;
+    for (uint32_t t : vtris_[u]) {
+      if (tri_dead_[t]) continue;
+      if (Has(tris_[t], v)) {
+        ++edge_tris;
+        uint32_t apex = 0;
+        for (uint32_t w : tris_[t])
+          if (w != u && w != v) apex = w;
+        if (mark_[apex] != common) return false;
+      } else {
+        ++other_tris;
+      }
+    }
+    if (edge_tris == 0 || common_count != edge_tris) return false;
+    for (uint32_t t : vtris_[v])
+      if (!tri_dead_[t] && !Has(tris_[t], u)) ++other_tris;
+    if (other_tris == 0) return false;  // the collapse would delete a whole piece
+    // No triangle may flip, fold or become degenerate.
+    for (uint32_t w : {u, v})
+      for (uint32_t t : vtris_[w]) {
+        if (tri_dead_[t]) continue;
+        const Tri& tri = tris_[t];
+        if (Has(tri, u) && Has(tri, v)) continue;
+        Vec3 p[3], q[3];
+        for (int k = 0; k < 3; ++k) {
+          p[k] = pos_[tri[k]];
+          q[k] = (tri[k] == u || tri[k] == v) ? c.pos : p[k];
+        }
+        const Vec3 n0 = (p[1] - p[0]).cross(p[2] - p[0]);
+        const Vec3 n1 = (q[1] - q[0]).cross(q[2] - q[0]);
+        const double l0 = n0.norm(), l1 = n1.norm();
+        if (!(l1 > 1e-12 * (q[1] - q[0]).squaredNorm()) || !(l1 > 0)) return false;
+        if (l0 > 0 && n0.dot(n1) < kMinNormalCos * l0 * l1) return false;
+        // Nor drift, collapse after collapse, away from the input triangle it comes from.
+        if (n1.dot(orig_normal_[t]) < kMinNormalCos * l1) return false;
+      }
+    return true;
+  }
+
+  void Collapse(const Candidate& c) {
+    const uint32_t u = c.from, v = c.to;
+    for (uint32_t t : vtris_[u]) {
+      if (tri_dead_[t]) continue;
+      Tri& tri = tris_[t];
+      if (Has(tri, v)) {
+        tri_dead_[t] = 1;
+        --alive_tris_;
+        continue;
+      }
+      for (uint32_t& w : tri)
+        if (w == u) w = v;
+      vtris_[v].push_back(t);
+    }
+    std::vector<uint32_t>().swap(vtris_[u]);
+    auto& vt = vtris_[v];
+    vt.erase(std::remove_if(vt.begin(), vt.end(), [&](uint32_t t) { return tri_dead_[t] != 0; }),
+             vt.end());
+    // Seam links follow the surviving vertex.
+    for (uint32_t w : seam_nbrs_[u]) {
+      if (w == v) continue;
+      auto& sw = seam_nbrs_[w];
+      for (uint32_t& x : sw)
+        if (x == u) x = v;
+      if (!IsSeamEdge(v, w)) seam_nbrs_[v].push_back(w);
+    }
+    auto& sv = seam_nbrs_[v];
+    sv.erase(std::remove(sv.begin(), sv.end(), u), sv.end());
+    std::vector<uint32_t>().swap(seam_nbrs_[u]);
+
+    quadric_[v] += quadric_[u];
+    area_[v] += area_[u];
+    border_[v] |= border_[u];
+    locked_[v] |= locked_[u];
+    pos_[v] = c.pos;
+    dead_[u] = 1;
+    ++stamp_[v];
+    ++stamp_[u];
+    Neighbours(v, &nv_);
+    const std::vector<uint32_t> nbrs = nv_;
+    for (uint32_t w : nbrs) Push(v, w);
+  }
+
+  void Output(QemMesh* out) {
+    std::vector<uint32_t> remap(pos_.size(), UINT32_MAX);
+    out->points.clear();
+    out->triangles.clear();
+    out->source.clear();
+    out->triangle_source.clear();
+    for (size_t t = 0; t < tris_.size(); ++t) {
+      if (tri_dead_[t]) continue;
+      out->triangle_source.push_back(static_cast<uint32_t>(t));
+      Tri tri = tris_[t];
+      for (uint32_t& w : tri) {
+        if (remap[w] == UINT32_MAX) {
+          remap[w] = static_cast<uint32_t>(out->points.size());
+          out->points.push_back(pos_[w]);
+          out->source.push_back(w);
+        }
+        w = remap[w];
+      }
+      out->triangles.push_back(tri);
+    }
+    out->error = error_;
+  }
+
+  QemOptions opt_;
+  std::vector<Vec3> pos_;
+  std::vector<Tri> tris_;
+  std::vector<Eigen::Matrix4d, Eigen::aligned_allocator<Eigen::Matrix4d>> quadric_;
+  std::vector<double> area_;
+  std::vector<std::vector<uint32_t>> vtris_, seam_nbrs_;
+  std::vector<uint32_t> stamp_;
+  std::vector<uint8_t> dead_, border_, locked_, tri_dead_;
+  std::vector<uint64_t> unique_edges_;
+  std::vector<Vec3> orig_normal_;
+  size_t alive_tris_ = 0;
+  double error_ = 0.0;
+  std::vector<Entry> heap_;  // a binary min-heap (std::push_heap / pop_heap)
+  std::vector<uint32_t> nv_;
+  std::vector<uint32_t> mark_;  // link-condition marks, see Valid()
+  uint32_t mark_generation_ = 0;
+};
+
+}  // namespace
+
+bool SimplifyQem(const QemMesh& in, const std::vector<uint64_t>& seam_edges,
+                 const QemOptions& options, Context* ctx, QemMesh* out) {
+  if (in.points.empty() || in.triangles.empty()) {
+    *out = in;
+    out->source.resize(in.points.size());
+    for (size_t i = 0; i < in.points.size(); ++i) out->source[i] = static_cast<uint32_t>(i);
+    return true;
+  }
+  // Work on a translated, unit-diagonal copy: thresholds are then scale-free.
+  Vec3 lo = in.points[0], hi = in.points[0];
+  for (const Vec3& p : in.points) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const Vec3 center = 0.5 * (lo + hi);
+  double diag = (hi - lo).norm();
+  if (!(diag > 0) || !std::isfinite(diag)) diag = 1.0;
+  QemMesh local;
+  local.points.reserve(in.points.size());
+  for (const Vec3& p : in.points) local.points.push_back((p - center) / diag);
+  local.triangles = in.triangles;
+  QemOptions opt = options;
+  opt.max_error = options.max_error / diag;
+  Collapser collapser(local, seam_edges, opt);
+  if (!collapser.Run(ctx, out)) return false;
+  for (Vec3& p : out->points) p = center + p * diag;
+  out->error *= diag;
+  return true;
+}
+
+}  // namespace internal
+}  // namespace vhacd
