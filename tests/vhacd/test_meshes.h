@@ -119,9 +119,10 @@ inline Mesh ThickBowl(double R, double H, double t, int n = 48) {
   return m;  // the axis points (r = 0) are repeated per slice; welding makes the mesh closed
 }
 
-// A cylinder about z (radius R, height H) with its top disc and no bottom at all: open at its
-// base like a scan standing on a table.
-inline Mesh OpenBottomCylinder(double R, double H, int n = 48, int rows = 8) {
+// A cylinder about z (radius R, height H) with its top disc and, at its base, an annulus around a
+// hole of radius `hole` (hole >= R: no bottom at all, an upside-down pot): open at its base like a
+// scan standing on a table.
+inline Mesh OpenBottomCylinder(double R, double H, int n = 48, int rows = 8, double hole = 1e30) {
   Mesh m;
   for (int j = 0; j <= rows; ++j)
     for (int i = 0; i < n; ++i) {
@@ -135,6 +136,17 @@ inline Mesh OpenBottomCylinder(double R, double H, int n = 48, int rows = 8) {
     }
   const uint32_t top = m.AddPoint(0, 0, H);
   for (int i = 0; i < n; ++i) m.AddTriangle(rows * n + i, rows * n + (i + 1) % n, top);
+  if (hole < R) {
+    const uint32_t inner = static_cast<uint32_t>(m.point_count());
+    for (int i = 0; i < n; ++i) {
+      const double a = 2 * M_PI * i / n;
+      m.AddPoint(hole * std::cos(a), hole * std::sin(a), 0);
+    }
+    for (int i = 0; i < n; ++i) {
+      const uint32_t a = i, b = (i + 1) % n;
+      m.AddQuad(inner + a, inner + b, b, a);
+    }
+  }
   return m;
 }
 

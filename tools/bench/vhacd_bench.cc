@@ -50,6 +50,7 @@
 #include "hull_metrics.h"
 #include "io/scene_io.h"
 #include "scene_soup.h"
+#include "svg_plot.h"
 #include "vhacd/vhacd.h"
 
 namespace {
@@ -143,11 +144,13 @@ bool WriteObjParts(const std::string& path, const std::vector<Soup>& parts) {
 // The hullpack side, run as a child process: vhacd_bench --run-ours IN OUT PRESET MODE THREADS.
 
 int RunOurs(int argc, char** argv) {
-  if (argc != 7) return hullpack::kExitUsage;
+  if (argc != 9) return hullpack::kExitUsage;
   const std::string in = argv[2], out = argv[3], preset = argv[4];
   vhacd::Parameters p = preset == "high" ? vhacd::Parameters::High() : vhacd::Parameters::Default();
   p.mode = std::atoi(argv[5]) == 1 ? vhacd::Mode::kTetrahedron : vhacd::Mode::kVoxel;
   p.num_threads = static_cast<uint32_t>(std::atoi(argv[6]));
+  p.max_concavity = std::atof(argv[7]);
+  p.hull_count = static_cast<uint32_t>(std::atoi(argv[8]));
   std::vector<Soup> parts;
   std::string why;
   if (!ReadObjParts(in, false, &parts, &why) || parts.size() != 1) {
@@ -171,7 +174,7 @@ int RunOurs(int argc, char** argv) {
   rep << "concavity " << R.concavity << "\nmesh_to_hulls " << R.hausdorff_mesh_to_hulls
       << "\nhulls_to_mesh " << R.hausdorff_hulls_to_mesh << "\niou " << R.volume_iou
       << "\ncoverage " << R.solid_coverage << "\nseconds_total " << R.seconds_total
-      << "\nseconds_report " << R.seconds_report << "\n";
+      << "\nseconds_report " << R.seconds_report << "\ntarget_reached " << R.target_reached << "\n";
   std::vector<Soup> hulls(r.hulls.size());
   for (size_t h = 0; h < r.hulls.size(); ++h) {
     for (size_t v = 0; v < r.hulls[h].vertex_count(); ++v)
@@ -260,8 +263,12 @@ std::string Substitute(std::string t, const std::string& key, const std::string&
 struct Config {
   std::string name;
   bool reference = false;
+  std::string command;  // a named reference's template (--reference NAME=TEMPLATE)
   std::string preset = "default";
   int mode = 0;
+  double max_concavity = 0.0;  // d=X
+  int hulls = 0;               // n=N
+  std::string match;           // match=REF: the hull count REF gave on the same mesh
 };
 
 struct Row {
@@ -295,6 +302,106 @@ std::vector<std::string> SplitComma(const std::string& s) {
   while (std::getline(ss, item, ','))
     if (!item.empty()) out.push_back(item);
   return out;
+}
+
+// The bars: match=REF against REF mesh by mesh (concavity ratio, time ratio, exact count),
+// d=X (meshes whose measured concavity reaches X), n=N (meshes given exactly N hulls).
+void PrintTargets(const std::vector<Config>& configs,
+                  std::map<std::string, std::vector<Row>>& rows) {
+  bool header = false;
+  auto head = [&]() {
+    if (!header) std::printf("\n== targets ==\n");
+    header = true;
+  };
+  for (const Config& c : configs) {
+    const std::vector<Row>& ours = rows[c.name];
+    if (!c.match.empty()) {
+      const std::vector<Row>& ref = rows[c.match];
+      std::vector<double> ratio, time_ratio;
+      int le = 0, exact = 0;
+      for (size_t i = 0; i < ours.size() && i < ref.size(); ++i) {
+        if (ours[i].status != "ok" || ref[i].status != "ok") continue;
+        const double a = ours[i].m.concavity, b = ref[i].m.concavity;
+        if (b > 0) ratio.push_back(a / b);
+        le += a <= b;
+        exact += ours[i].m.hulls == ref[i].m.hulls;
+        if (ref[i].seconds > 0) time_ratio.push_back(ours[i].seconds / ref[i].seconds);
+      }
+      head();
+      std::printf(
+          "%-22s at %s's hull count: %zu meshes, ours <= %s on %d (%.0f %%), median concavity "
+          "ratio %s, median time ratio %s, same hull count on %d\n",
+          c.name.c_str(), c.match.c_str(), ratio.size(), c.match.c_str(), le,
+          ratio.empty() ? 0.0 : 100.0 * le / ratio.size(), Fmt(Median(ratio), "%.3f").c_str(),
+          Fmt(Median(time_ratio), "%.3f").c_str(), exact);
+    } else if (c.max_concavity > 0 || c.hulls > 0) {
+      int ok = 0, hit = 0;
+      std::vector<double> h;
+      for (const Row& r : ours) {
+        if (r.status != "ok") continue;
+        ++ok;
+        h.push_back(static_cast<double>(r.m.hulls));
+        if (c.max_concavity > 0)
+          hit += r.m.concavity <= c.max_concavity;
+        else
+          hit += static_cast<int>(r.m.hulls) == c.hulls;
+      }
+      head();
+      std::printf("%-22s %s on %d of %d meshes, median hulls %s\n", c.name.c_str(),
+                  c.max_concavity > 0 ? "concavity reached" : "exact hull count", hit, ok,
+                  Fmt(Median(h), "%.1f").c_str());
+    }
+  }
+}
+
+// Median concavity against median hull count, one series per family of configurations.
+bool WritePlot(const std::string& path, const std::vector<Config>& configs,
+               std::map<std::string, std::vector<Row>>& rows, const std::string& folder) {
+  hullpack::Plot plot;
+  plot.title = "Concavity against hull count (medians over the meshes)";
+  plot.x.label = "median hull count";
+  plot.x.log = true;
+  plot.y.label = "median concavity (Hausdorff, fraction of the diagonal)";
+  plot.y.log = true;
+  plot.note = folder + "; concavity by tools/bench/hull_metrics for every program";
+  std::map<std::string, hullpack::PlotSeries> series;
+  std::vector<std::string> order;
+  for (const Config& c : configs) {
+    std::string family;
+    if (c.reference)
+      family = c.name.rfind("coacd", 0) == 0 ? "CoACD (-t)" : c.name;
+    else if (c.hulls > 0)
+      family = "hullpack --hulls N";
+    else if (c.max_concavity > 0)
+      family = "hullpack --max-concavity D";
+    else if (!c.match.empty())
+      family = "hullpack at the reference's count";
+    else
+      family = "hullpack presets";
+    std::vector<double> h, cc;
+    for (const Row& r : rows[c.name])
+      if (r.status == "ok") {
+        h.push_back(static_cast<double>(r.m.hulls));
+        cc.push_back(r.m.concavity);
+      }
+    if (h.empty()) continue;
+    if (!series.count(family)) {
+      order.push_back(family);
+      series[family].name = family;
+      series[family].colour = static_cast<int>(order.size() - 1);
+    }
+    series[family].points.emplace_back(Median(h), Median(cc));
+  }
+  for (const std::string& f : order) {
+    hullpack::PlotSeries sr = series[f];
+    std::sort(sr.points.begin(), sr.points.end());
+    plot.series.push_back(sr);
+  }
+  FILE* out = std::fopen(path.c_str(), "w");
+  if (out == nullptr) return false;
+  const std::string doc = hullpack::RenderSvg(plot);
+  const bool ok = std::fwrite(doc.data(), 1, doc.size(), out) == doc.size();
+  return std::fclose(out) == 0 && ok;
 }
 
 std::string SelfPath() {
@@ -419,7 +526,9 @@ int Subdivide(const std::string& in, const std::string& out, size_t target) {
 int main(int argc, char** argv) {
   // The child process of a measured run (internal: the arguments are this program's own).
   if (argc >= 2 && std::strcmp(argv[1], "--run-ours") == 0) return RunOurs(argc, argv);
-  std::string ref_bin, ref_cmd, csv, work, ours_list, preset = "default";
+  std::string ref_bin, ref_cmd, csv, work, ours_list, preset = "default", svg;
+  std::vector<std::pair<std::string, std::string>> named_refs;  // --reference NAME=TEMPLATE
+  bool reuse = false;
   int repeats = 1, mode = 0, threads = 0;
   double timeout = 600.0;
   std::vector<std::string> only, operands;
@@ -472,6 +581,19 @@ int main(int argc, char** argv) {
   cli.Double("--gap", "X", 0, 1, &mo.gap,
              "hull points nearer than X (fraction of the diagonal) to another hull are inside");
   cli.Int("--threads", "N", 0, 256, &threads, "decomposition threads (0: every core)");
+  cli.Value("--reference", "NAME=TEMPLATE",
+            "a named reference (repeatable): TEMPLATE as for --reference-cmd; its\n"
+            "configuration is NAME, and match=NAME runs hullpack at its hull counts",
+            [&named_refs](const std::string& v) {
+              const size_t eq = v.find('=');
+              if (eq == std::string::npos || eq == 0) return "needs NAME=TEMPLATE, not '" + v + "'";
+              named_refs.emplace_back(v.substr(0, eq), v.substr(eq + 1));
+              return std::string();
+            });
+  cli.Flag("--reuse", &reuse,
+           "read the reference runs from --work (hulls and recorded time and memory)\n"
+           "instead of running them; a reference without a finished run is 'not run'");
+  cli.String("--svg", "FILE", &svg, "plot median concavity against median hull count");
   cli.Flag("--measure", &measure_one, "measure one hull file: operands MESH HULLS.obj");
   cli.Flag("--subdivide", &subdivide, "write a dense test mesh: operands IN OUT.obj MIN_TRIANGLES");
   if (std::optional<int> exit_code = cli.Parse(argc, argv)) return *exit_code;
@@ -497,11 +619,26 @@ int main(int argc, char** argv) {
     if (getcwd(cwd, sizeof(cwd))) ref_bin = std::string(cwd) + "/" + ref_bin;
   }
 
+  // References first: a match=REF configuration needs REF's hull count on the same mesh.
   std::vector<Config> configs;
+  for (const auto& nr : named_refs) {
+    Config r;
+    r.name = nr.first;
+    r.reference = true;
+    r.command = nr.second;
+    configs.push_back(r);
+  }
+  if (!ref_bin.empty() || !ref_cmd.empty()) {
+    Config r;
+    r.name = "reference";
+    r.reference = true;
+    configs.push_back(r);
+  }
   if (ours_list.empty()) ours_list = preset + (mode == 1 ? "+tetra" : "");
   for (const std::string& c : SplitComma(ours_list)) {
     Config cfg;
     cfg.name = c;
+    if (c == "none") continue;
     if (c == "default") {
     } else if (c == "high")
       cfg.preset = "high";
@@ -510,15 +647,18 @@ int main(int argc, char** argv) {
     else if (c == "high+tetra") {
       cfg.preset = "high";
       cfg.mode = 1;
+    } else if (c.rfind("d=", 0) == 0 && std::atof(c.c_str() + 2) > 0)
+      cfg.max_concavity = std::atof(c.c_str() + 2);
+    else if (c.rfind("n=", 0) == 0 && std::atoi(c.c_str() + 2) > 0)
+      cfg.hulls = std::atoi(c.c_str() + 2);
+    else if (c.rfind("match=", 0) == 0) {
+      cfg.match = c.substr(6);
+      bool known = false;
+      for (const Config& r : configs) known = known || (r.reference && r.name == cfg.match);
+      if (!known) return cli.UsageError("match= names no reference: " + c);
     } else
       return cli.UsageError("unknown configuration " + c);
     configs.push_back(cfg);
-  }
-  if (!ref_bin.empty() || !ref_cmd.empty()) {
-    Config r;
-    r.name = "reference";
-    r.reference = true;
-    configs.push_back(r);
   }
 
   std::vector<std::string> files;
@@ -578,20 +718,53 @@ int main(int argc, char** argv) {
       row.closed = measure.closed();
       std::vector<double> secs, mem;
       std::vector<Soup> hulls;
+      int hull_count = c.hulls;
+      if (!c.match.empty()) {
+        const Row& ref = rows[c.match].back();
+        hull_count = ref.status == "ok" ? static_cast<int>(ref.m.hulls) : 0;
+        if (hull_count == 0) {
+          row.status = "no ref";
+          rows[c.name].push_back(row);
+          continue;
+        }
+      }
       for (int rep = 0; rep < repeats; ++rep) {
         const std::string dir = work + "/" + name + "." + c.name + "." + std::to_string(rep);
         mkdir(dir.c_str(), 0755);
         const std::string out = dir + "/hulls.obj";
-        std::remove(out.c_str());
+        if (!(c.reference && reuse)) std::remove(out.c_str());
         RunStats st;
         std::string produced = out;
-        if (!c.reference) {
+        const std::string stats = dir + "/stats.txt";
+        double reused_s = -1, reused_mb = -1;
+        if (c.reference && reuse) {
+          std::ifstream sf(stats.c_str());
+          if (!(sf >> reused_s >> reused_mb)) reused_s = -1;
+        }
+        if (c.reference && reuse && reused_s < 0) {
+          row.status = "not run";  // --reuse never runs a reference
+          break;
+        }
+        if (c.reference && reused_s >= 0) {
+          // --reuse: this reference's earlier run of the same input in the same work folder.
+          st.ok = true;
+          st.seconds = reused_s;
+          st.peak_mb = reused_mb;
+          if (c.command.empty() && !ref_bin.empty()) produced = dir + "/decomp.obj";
+        } else if (!c.reference) {
           st = RunProcess({self, "--run-ours", input, out, c.preset, std::to_string(c.mode),
-                           std::to_string(threads)},
+                           std::to_string(threads), std::to_string(c.max_concavity),
+                           std::to_string(hull_count)},
                           "", dir, timeout);
+        } else if (!c.command.empty()) {
+          std::string cmd = Substitute(c.command, "{in}", ShellQuote(input));
+          cmd = Substitute(cmd, "{out}", ShellQuote(out));
+          cmd = Substitute(cmd, "{dir}", ShellQuote(dir));
+          st = RunProcess({}, cmd, dir, timeout);
         } else if (!ref_bin.empty()) {
           produced = dir + "/decomp.obj";
           std::remove(produced.c_str());
+          std::remove(stats.c_str());
           st = RunProcess({ref_bin, input}, "", dir, timeout);
         } else {
           std::string cmd = Substitute(ref_cmd, "{in}", ShellQuote(input));
@@ -602,6 +775,10 @@ int main(int argc, char** argv) {
         if (!st.ok) {
           row.status = st.timed_out ? "timeout" : "exit " + std::to_string(st.exit_code);
           break;
+        }
+        if (c.reference && reused_s < 0) {
+          std::ofstream sf(stats.c_str());
+          sf << st.seconds << " " << st.peak_mb << "\n";
         }
         secs.push_back(st.seconds);
         mem.push_back(st.peak_mb);
@@ -646,9 +823,11 @@ int main(int argc, char** argv) {
 
   // Tables.
   for (const Config& c : configs) {
-    std::printf(
-        "\n== %s%s ==\n", c.reference ? "reference: " : "hullpack ",
-        c.reference ? (ref_bin.empty() ? ref_cmd.c_str() : ref_bin.c_str()) : c.name.c_str());
+    std::printf("\n== %s%s ==\n", c.reference ? "reference: " : "hullpack ",
+                c.reference ? (!c.command.empty() ? c.command.c_str()
+                               : ref_bin.empty()  ? ref_cmd.c_str()
+                                                  : ref_bin.c_str())
+                            : c.name.c_str());
     std::printf("%-18s %8s %6s %-8s %5s %7s %7s %7s %7s %6s %6s %6s %7s %7s %7s\n", "mesh", "tris",
                 "closed", "status", "hulls", "conc", "m->h", "h->m", "own", "IoU", "ownIoU",
                 "cover", "time_s", "lib_s", "peakMB");
@@ -689,6 +868,12 @@ int main(int argc, char** argv) {
                 Fmt(Median(cov), "%.3f").c_str(), Fmt(Median(t), "%.2f").c_str(),
                 Fmt(tmax, "%.2f").c_str(), Fmt(Median(mem), "%.0f").c_str(),
                 Fmt(mmax, "%.0f").c_str(), invalid);
+  }
+
+  PrintTargets(configs, rows);
+  if (!svg.empty() && !WritePlot(svg, configs, rows, folder)) {
+    std::fprintf(stderr, "cannot write %s\n", svg.c_str());
+    return 1;
   }
 
   if (!csv.empty()) {

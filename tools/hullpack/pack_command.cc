@@ -271,7 +271,8 @@ void AddPackOptions(CliArgs& cli, PackOptions* options) {
            "code values in vertex id order: faster decoding, 2-5% larger");
   cli.Flag("--fallback", &o.glb.fallback,
            "also write plain accessors (readers without the extension still work)");
-  cli.Value("--hulls", "all|none|auto", "which meshes get collision hulls (auto)",
+  cli.Value("--hulls", "all|none|auto|N",
+            "which meshes get collision hulls (auto); a number N: exactly N hulls per mesh",
             [&o](const std::string& v) {
               if (v == "all") {
                 o.collision.policy = HullPolicy::kAll;
@@ -279,8 +280,12 @@ void AddPackOptions(CliArgs& cli, PackOptions* options) {
                 o.collision.policy = HullPolicy::kNone;
               } else if (v == "auto") {
                 o.collision.policy = HullPolicy::kAuto;
+              } else if (!v.empty() && v.size() <= 6 &&
+                         v.find_first_not_of("0123456789") == std::string::npos &&
+                         std::stol(v) >= 1 && std::stol(v) <= 100000) {
+                o.collision.parameters.hull_count = static_cast<uint32_t>(std::stol(v));
               } else {
-                return "takes all, none or auto, not '" + v + "'";
+                return "takes all, none, auto or a count 1-100000, not '" + v + "'";
               }
               return std::string();
             });
@@ -325,6 +330,8 @@ void AddPackOptions(CliArgs& cli, PackOptions* options) {
   });
   cli.Double("--concavity", "F", 0, 1, &p.concavity,
              "largest concavity of a part, fraction of the diagonal");
+  cli.Double("--max-concavity", "D", 0, 1, &p.max_concavity,
+             "hulls within D x the mesh's diagonal of its surface, as few as that allows");
 }
 
 std::vector<std::string> OutputArgs(const std::vector<std::string>& args,

@@ -58,6 +58,14 @@ bool WriteDecompositionReport(const std::string& path, const std::string& input,
   f << "  \"voxel_count\": " << rep.voxel_count << ",\n";
   f << "  \"tetrahedron_count\": " << rep.tetrahedron_count << ",\n";
   f << "  \"parts_before_merge\": " << rep.parts_before_merge << ",\n";
+  f << "  \"target_reached\": " << (rep.target_reached ? "true" : "false") << ",\n";
+  f << "  \"target_note\": \"";
+  for (char c : rep.target_note) {
+    if (c == '"' || c == '\\') f << '\\';
+    f << c;
+  }
+  f << "\",\n";
+  f << "  \"attempts\": " << rep.attempts << ",\n";
   f << "  \"seconds\": {\"voxelize\": " << JsonNumber(rep.seconds_voxelize)
     << ", \"fill\": " << JsonNumber(rep.seconds_fill)
     << ", \"tetrahedra\": " << JsonNumber(rep.seconds_tetrahedra)
@@ -72,7 +80,8 @@ bool WriteDecompositionReport(const std::string& path, const std::string& input,
   for (size_t i = 0; i < rep.hulls.size(); ++i) {
     f << (i ? ",\n    " : "\n    ") << "{\"vertices\": " << rep.hulls[i].vertex_count
       << ", \"volume\": " << JsonNumber(rep.hulls[i].volume)
-      << ", \"concavity\": " << JsonNumber(rep.hulls[i].concavity) << "}";
+      << ", \"concavity\": " << JsonNumber(rep.hulls[i].concavity)
+      << ", \"distance\": " << JsonNumber(rep.hulls[i].distance) << "}";
   }
   f << (rep.hulls.empty() ? "]\n" : "\n  ]\n") << "}\n";
   const std::string text = f.str();

@@ -128,6 +128,12 @@ std::optional<int> ParseCommandLine(const std::vector<std::string>& args, Comman
   cli.Double("--max-distance", "X", -1e300, 1e300, &p.max_distance,
              "split and merge hulls while they stick out by at most X of the diagonal");
   cli.Int("--threads", "N", 0, kU32, &p.num_threads, "worker threads (0: every core)");
+  cli.Double("--max-concavity", "D", -1e300, 1e300, &p.max_concavity,
+             "every hull within D x the diagonal of the surface (the reported concavity), as few "
+             "hulls as that allows");
+  cli.Int("--hulls", "N", 0, kU32, &p.hull_count, "exactly N hulls (when the mesh can give N)");
+  cli.Double("--min-opening", "X", -1e300, 1e300, &p.min_opening,
+             "fill rule: cavities behind openings wider than X of the diagonal stay empty");
   cli.Epilog(kPositionalForm);
   if (IsPositionalForm(args)) {
     if (std::optional<int> exit_code = ParsePositionalForm(cli, args, cmd)) return exit_code;
@@ -178,6 +184,7 @@ int Report(const CommandLine& cmd, const vhacd::Result& r) {
       rep.hausdorff_hulls_to_mesh,
       rep.volume_iou >= 0 ? hullpack::JsonNumber(rep.volume_iou).c_str() : "n/a",
       rep.seconds_total);
+  if (!rep.target_reached) std::printf("target not reached: %s\n", rep.target_note.c_str());
   if (!cmd.report_path.empty()) {
     if (!hullpack::WriteDecompositionReport(cmd.report_path, cmd.input, "vhacd", r)) {
       std::fprintf(stderr, "testVHACD: cannot write %s\n", cmd.report_path.c_str());

@@ -15,11 +15,173 @@ struct Task {
   int axis;
   int c;
 };
+
+// Concavity and depth (when a distance field is set and measure_depth) of every part.
+bool MeasureParts(const std::vector<Part>& current, const ClipParams& params, bool measure_depth,
+                  double volume0, Context* ctx, std::vector<double>* conc_out,
+                  std::vector<double>* depth_out) {
+  const size_t n = current.size();
+  std::vector<double>& conc = *conc_out;
+  std::vector<double>& depth = *depth_out;
+  conc.assign(n, 0.0);
+  depth.assign(n, 0.0);
+  if (!ParallelFor(ctx, n, [&](size_t i) {
+        std::vector<Vec3> pts;
+        PrimitiveHullPoints(current[i], &pts);
+        HullMesh h;
+        double volume = current[i].volume();
+        if (!PrimitiveHull(current[i], pts, &h)) {
+          // Mode 1: the trimmed cells of a flat part (a thin sheet) can be coplanar; measure
+          // it on its voxels then, or a large flat L-shaped part would never be split.
+          if (!current[i].tetra) return;
+          PartHullPoints(current[i], false, &pts);
+          if (ComputeConvexHull(pts, 0.0, &h) != HullStatus::kOk) return;
+          volume = static_cast<double>(current[i].voxels.size());
+        }
+        conc[i] = std::max(0.0, h.Volume() - volume) / volume0;
+        if (params.field != nullptr && params.max_depth > 0 && measure_depth) {
+          depth[i] = params.field->HullDepth(h);
+          // Mode 1 hulls follow the surface within a voxel and can be thinner than a voxel
+          // (a bar bridging a gap holds no voxel centre): also sample the hull's surface.
+          if (current[i].tetra && depth[i] <= params.max_depth)
+            depth[i] = std::max(depth[i], params.field->SurfaceDepth(h, params.max_depth));
+        }
+      }))
+    return false;
+  return true;
+}
+
+// Cuts every part current[split[k]] by its best plane into next[2k] and next[2k + 1] (a part
+// without a usable plane moves whole into next[2k]). Moves the parts' primitives out of current.
+bool CutParts(std::vector<Part>* current_io, const std::vector<uint32_t>& split,
+              const std::vector<double>& conc, const ClipParams& params, const CutWeights& weights,
+              Context* ctx, std::vector<Part>* next_out) {
+  std::vector<Part>& cur = *current_io;
+  std::vector<Part>& next = *next_out;
+  const size_t m = split.size();
+  std::vector<AxisLines> lines(m * 3);
+  std::vector<TetraAxis> tetra(m * 3);  // mode 1 only
+  std::vector<RevolutionHint> hints(m);
+  if (!ParallelFor(ctx, m * 4, [&](size_t i) {
+        if (i < m * 3) {
+          const Part& p = cur[split[i / 3]];
+          lines[i] = BuildAxisLines(p, static_cast<int>(i % 3));
+          if (p.tetra) tetra[i] = BuildTetraAxis(p, static_cast<int>(i % 3));
+        } else {
+          hints[i - m * 3] = ComputeRevolutionHint(cur[split[i - m * 3]]);
+        }
+      }))
+    return false;
+
+  // Coarse search.
+  std::vector<Task> tasks;
+  for (size_t k = 0; k < m; ++k)
+    for (int axis = 0; axis < 3; ++axis)
+      for (int c : CandidatePlanes(cur[split[k]], axis, params.plane_downsampling))
+        tasks.push_back({static_cast<uint32_t>(k), axis, c});
+  std::vector<double> cost(tasks.size());
+  auto run = [&](int hull_ds) {
+    return ParallelFor(ctx, tasks.size(), [&](size_t t) {
+      const Task& tk = tasks[t];
+      const uint32_t pi = split[tk.part];
+      const size_t li = tk.part * 3 + tk.axis;
+      cost[t] = CutCost(cur[pi], lines[li], tk.c, hull_ds, weights, hints[tk.part], conc[pi],
+                        cur[pi].tetra ? &tetra[li] : nullptr);
+    });
+  };
+  if (!run(params.convexhull_downsampling)) return false;
+  std::vector<Task> best(m, Task{0, -1, 0});
+  std::vector<double> best_cost(m, std::numeric_limits<double>::infinity());
+  auto keep_best = [&]() {  // ties keep the earlier task: deterministic
+    for (size_t t = 0; t < tasks.size(); ++t)
+      if (cost[t] < best_cost[tasks[t].part]) {
+        best_cost[tasks[t].part] = cost[t];
+        best[tasks[t].part] = tasks[t];
+      }
+  };
+  keep_best();
+  const std::vector<double> coarse_cost = best_cost;  // the downsampled estimates
+  // Exact search around the best plane of each part in `parts`.
+  auto refine = [&](const std::vector<uint32_t>& parts) {
+    tasks.clear();
+    for (uint32_t k : parts) {
+      if (best[k].axis < 0) continue;
+      const Part& p = cur[split[k]];
+      const int a = best[k].axis;
+      const int lo = std::max(p.bmin[a] + 1, best[k].c - params.plane_downsampling + 1);
+      const int hi = std::min(p.bmax[a], best[k].c + params.plane_downsampling - 1);
+      for (int c = lo; c <= hi; ++c) tasks.push_back({k, a, c});
+    }
+    cost.assign(tasks.size(), 0.0);
+    if (!run(1)) return false;
+    keep_best();
+    return true;
+  };
+  if (params.plane_downsampling > 1 || params.convexhull_downsampling > 1) {
+    std::vector<uint32_t> all(m);
+    for (size_t k = 0; k < m; ++k) all[k] = static_cast<uint32_t>(k);
+    std::fill(best_cost.begin(), best_cost.end(), std::numeric_limits<double>::infinity());
+    if (!refine(all)) return false;
+  }
+  // The downsampled hulls skip all but every convexhull_downsampling-th row of voxel lines, so a
+  // feature thinner than that (a one-voxel sheet floating over a slab) can be invisible to the
+  // coarse costs of two axes: their planes look free, the cut removes no concavity, and the part
+  // was cut again and again into single voxel columns (thousands of parts, a merge of tens of
+  // seconds) before the one plane through the gap was tried. When the exact cost of the chosen
+  // cut shows no gain over the part's concavity although the estimate promised one (less than
+  // half the exact cost), the estimate was blind: search every plane again with exact hulls.
+  if (params.convexhull_downsampling > 1) {
+    std::vector<uint32_t> blind;
+    for (size_t k = 0; k < m; ++k)
+      if (best[k].axis >= 0 && best_cost[k] >= conc[split[k]] &&
+          coarse_cost[k] < 0.5 * best_cost[k])
+        blind.push_back(static_cast<uint32_t>(k));
+    if (!blind.empty()) {
+      tasks.clear();
+      for (uint32_t k : blind)
+        for (int axis = 0; axis < 3; ++axis)
+          for (int c : CandidatePlanes(cur[split[k]], axis, params.plane_downsampling))
+            tasks.push_back({k, axis, c});
+      cost.assign(tasks.size(), 0.0);
+      if (!run(1)) return false;
+      keep_best();
+      if (params.plane_downsampling > 1 && !refine(blind)) return false;
+    }
+  }
+  // Split.
+  next.assign(m * 2, Part());
+  if (!ParallelFor(ctx, m, [&](size_t k) {
+        Part& p = cur[split[k]];
+        const int a = best[k].axis, c = best[k].c;
+        if (a < 0) {
+          next[2 * k] = std::move(p);
+          return;
+        }
+        for (const Voxel& v : p.voxels)
+          (v.c[a] < c ? next[2 * k] : next[2 * k + 1]).voxels.push_back(v);
+        std::vector<Voxel>().swap(p.voxels);
+        for (int side = 0; side < 2; ++side) {
+          next[2 * k + side].ComputeBounds();
+          next[2 * k + side].tetra = p.tetra;
+        }
+        if (p.tetra) {
+          for (const SurfaceCell& cell : p.cells)
+            (cell.c[a] < c ? next[2 * k] : next[2 * k + 1]).cells.push_back(cell);
+          std::vector<SurfaceCell>().swap(p.cells);
+          next[2 * k].ComputeCellVolume();
+          next[2 * k + 1].ComputeCellVolume();
+        }
+      }))
+    return false;
+  return true;
+}
+
 }  // namespace
 
 bool ClipRecursively(Part root, const ClipParams& params, Context* ctx, ClipOutput* out) {
   out->parts.clear();
   out->concavity.clear();
+  out->depth.clear();
   root.ComputeBounds();
   if (root.tetra) root.ComputeCellVolume();
   {
@@ -38,29 +200,8 @@ bool ClipRecursively(Part root, const ClipParams& params, Context* ctx, ClipOutp
   for (int level = 0;; ++level) {
     out->levels = level;
     const size_t n = current.size();
-    std::vector<double> conc(n, 0.0), depth(n, 0.0);
-    if (!ParallelFor(ctx, n, [&](size_t i) {
-          std::vector<Vec3> pts;
-          PrimitiveHullPoints(current[i], &pts);
-          HullMesh h;
-          double volume = current[i].volume();
-          if (!PrimitiveHull(current[i], pts, &h)) {
-            // Mode 1: the trimmed cells of a flat part (a thin sheet) can be coplanar; measure
-            // it on its voxels then, or a large flat L-shaped part would never be split.
-            if (!current[i].tetra) return;
-            PartHullPoints(current[i], false, &pts);
-            if (ComputeConvexHull(pts, 0.0, &h) != HullStatus::kOk) return;
-            volume = static_cast<double>(current[i].voxels.size());
-          }
-          conc[i] = std::max(0.0, h.Volume() - volume) / out->volume0;
-          if (params.field != nullptr && params.max_depth > 0 && level < params.depth) {
-            depth[i] = params.field->HullDepth(h);
-            // Mode 1 hulls follow the surface within a voxel and can be thinner than a voxel
-            // (a bar bridging a gap holds no voxel centre): also sample the hull's surface.
-            if (current[i].tetra && depth[i] <= params.max_depth)
-              depth[i] = std::max(depth[i], params.field->SurfaceDepth(h, params.max_depth));
-          }
-        }))
+    std::vector<double> conc, depth;
+    if (!MeasureParts(current, params, level < params.depth, out->volume0, ctx, &conc, &depth))
       return false;
     std::vector<uint32_t> split;
     for (size_t i = 0; i < n; ++i) {
@@ -72,130 +213,83 @@ bool ClipRecursively(Part root, const ClipParams& params, Context* ctx, ClipOutp
       } else {
         out->parts.push_back(std::move(current[i]));
         out->concavity.push_back(conc[i]);
+        out->depth.push_back(depth[i]);
       }
     }
     ctx->Log("clipping level " + std::to_string(level) + ": " + std::to_string(n) + " parts, " +
              std::to_string(split.size()) + " to split");
     if (split.empty()) break;
-    const size_t m = split.size();
-    std::vector<AxisLines> lines(m * 3);
-    std::vector<TetraAxis> tetra(m * 3);  // mode 1 only
-    std::vector<RevolutionHint> hints(m);
-    if (!ParallelFor(ctx, m * 4, [&](size_t i) {
-          if (i < m * 3) {
-            const Part& p = current[split[i / 3]];
-            lines[i] = BuildAxisLines(p, static_cast<int>(i % 3));
-            if (p.tetra) tetra[i] = BuildTetraAxis(p, static_cast<int>(i % 3));
-          } else {
-            hints[i - m * 3] = ComputeRevolutionHint(current[split[i - m * 3]]);
-          }
-        }))
-      return false;
-
-    // Coarse search.
-    std::vector<Task> tasks;
-    for (size_t k = 0; k < m; ++k)
-      for (int axis = 0; axis < 3; ++axis)
-        for (int c : CandidatePlanes(current[split[k]], axis, params.plane_downsampling))
-          tasks.push_back({static_cast<uint32_t>(k), axis, c});
-    std::vector<double> cost(tasks.size());
-    auto run = [&](int hull_ds) {
-      return ParallelFor(ctx, tasks.size(), [&](size_t t) {
-        const Task& tk = tasks[t];
-        const uint32_t pi = split[tk.part];
-        const size_t li = tk.part * 3 + tk.axis;
-        cost[t] = CutCost(current[pi], lines[li], tk.c, hull_ds, weights, hints[tk.part], conc[pi],
-                          current[pi].tetra ? &tetra[li] : nullptr);
-      });
-    };
-    if (!run(params.convexhull_downsampling)) return false;
-    std::vector<Task> best(m, Task{0, -1, 0});
-    std::vector<double> best_cost(m, std::numeric_limits<double>::infinity());
-    auto keep_best = [&]() {  // ties keep the earlier task: deterministic
-      for (size_t t = 0; t < tasks.size(); ++t)
-        if (cost[t] < best_cost[tasks[t].part]) {
-          best_cost[tasks[t].part] = cost[t];
-          best[tasks[t].part] = tasks[t];
-        }
-    };
-    keep_best();
-    const std::vector<double> coarse_cost = best_cost;  // the downsampled estimates
-    // Exact search around the best plane of each part in `parts`.
-    auto refine = [&](const std::vector<uint32_t>& parts) {
-      tasks.clear();
-      for (uint32_t k : parts) {
-        if (best[k].axis < 0) continue;
-        const Part& p = current[split[k]];
-        const int a = best[k].axis;
-        const int lo = std::max(p.bmin[a] + 1, best[k].c - params.plane_downsampling + 1);
-        const int hi = std::min(p.bmax[a], best[k].c + params.plane_downsampling - 1);
-        for (int c = lo; c <= hi; ++c) tasks.push_back({k, a, c});
-      }
-      cost.assign(tasks.size(), 0.0);
-      if (!run(1)) return false;
-      keep_best();
-      return true;
-    };
-    if (params.plane_downsampling > 1 || params.convexhull_downsampling > 1) {
-      std::vector<uint32_t> all(m);
-      for (size_t k = 0; k < m; ++k) all[k] = static_cast<uint32_t>(k);
-      std::fill(best_cost.begin(), best_cost.end(), std::numeric_limits<double>::infinity());
-      if (!refine(all)) return false;
-    }
-    // The downsampled hulls skip all but every convexhull_downsampling-th row of voxel lines, so a
-    // feature thinner than that (a one-voxel sheet floating over a slab) can be invisible to the
-    // coarse costs of two axes: their planes look free, the cut removes no concavity, and the part
-    // would be cut again and again into single voxel columns (thousands of parts and a very long
-    // merge) before the one plane through the gap is tried. When the exact cost of the chosen
-    // cut shows no gain over the part's concavity although the estimate promised one (less than
-    // half the exact cost), the estimate was blind: search every plane again with exact hulls.
-    if (params.convexhull_downsampling > 1) {
-      std::vector<uint32_t> blind;
-      for (size_t k = 0; k < m; ++k)
-        if (best[k].axis >= 0 && best_cost[k] >= conc[split[k]] &&
-            coarse_cost[k] < 0.5 * best_cost[k])
-          blind.push_back(static_cast<uint32_t>(k));
-      if (!blind.empty()) {
-        tasks.clear();
-        for (uint32_t k : blind)
-          for (int axis = 0; axis < 3; ++axis)
-            for (int c : CandidatePlanes(current[split[k]], axis, params.plane_downsampling))
-              tasks.push_back({k, axis, c});
-        cost.assign(tasks.size(), 0.0);
-        if (!run(1)) return false;
-        keep_best();
-        if (params.plane_downsampling > 1 && !refine(blind)) return false;
-      }
-    }
-    // Split.
-    std::vector<Part> next(m * 2);
-    if (!ParallelFor(ctx, m, [&](size_t k) {
-          Part& p = current[split[k]];
-          const int a = best[k].axis, c = best[k].c;
-          if (a < 0) {
-            next[2 * k] = std::move(p);
-            return;
-          }
-          for (const Voxel& v : p.voxels)
-            (v.c[a] < c ? next[2 * k] : next[2 * k + 1]).voxels.push_back(v);
-          std::vector<Voxel>().swap(p.voxels);
-          for (int side = 0; side < 2; ++side) {
-            next[2 * k + side].ComputeBounds();
-            next[2 * k + side].tetra = p.tetra;
-          }
-          if (p.tetra) {
-            for (const SurfaceCell& cell : p.cells)
-              (cell.c[a] < c ? next[2 * k] : next[2 * k + 1]).cells.push_back(cell);
-            std::vector<SurfaceCell>().swap(p.cells);
-            next[2 * k].ComputeCellVolume();
-            next[2 * k + 1].ComputeCellVolume();
-          }
-        }))
-      return false;
+    std::vector<Part> next;
+    if (!CutParts(&current, split, conc, params, weights, ctx, &next)) return false;
     current.clear();
     for (Part& p : next)
       if (!p.voxels.empty()) current.push_back(std::move(p));
     ctx->Progress(100.0 * (level + 1) / std::max(1, params.depth), "clipping");
+  }
+  return true;
+}
+
+bool SplitToCount(size_t count, const ClipParams& params, Context* ctx, ClipOutput* out) {
+  CutWeights weights;
+  weights.alpha = params.alpha;
+  weights.beta = params.beta;
+  weights.volume0 = out->volume0;
+  std::vector<char> stuck(out->parts.size(), 0);  // no plane divides it
+  while (out->parts.size() < count) {
+    // The parts sticking out farthest first, then the most concave; ties keep the lower index.
+    std::vector<uint32_t> order;
+    for (uint32_t i = 0; i < out->parts.size(); ++i) {
+      const Part& p = out->parts[i];
+      const bool thick = p.bmax[0] > p.bmin[0] || p.bmax[1] > p.bmin[1] || p.bmax[2] > p.bmin[2];
+      if (thick && !stuck[i]) order.push_back(i);
+    }
+    if (order.empty()) break;
+    std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+      if (out->depth[a] != out->depth[b]) return out->depth[a] > out->depth[b];
+      return out->concavity[a] > out->concavity[b];
+    });
+    order.resize(std::min(order.size(), count - out->parts.size()));
+    std::sort(order.begin(), order.end());
+    std::vector<double> conc(out->parts.size(), 0.0);
+    for (uint32_t i : order) conc[i] = out->concavity[i];
+    std::vector<Part> next;
+    if (!CutParts(&out->parts, order, conc, params, weights, ctx, &next)) return false;
+    // Rebuild the leaf list: untouched parts keep their place, cut ones are replaced by their
+    // halves (measured again).
+    std::vector<Part> halves;
+    std::vector<char> was_stuck;
+    for (size_t k = 0; k < order.size(); ++k) {
+      const bool cut = !next[2 * k + 1].voxels.empty();
+      for (int side = 0; side < 2; ++side)
+        if (!next[2 * k + side].voxels.empty()) {
+          halves.push_back(std::move(next[2 * k + side]));
+          was_stuck.push_back(!cut);
+        }
+    }
+    std::vector<double> hc, hd;
+    if (!MeasureParts(halves, params, true, out->volume0, ctx, &hc, &hd)) return false;
+    std::vector<Part> parts;
+    std::vector<double> pc, pd;
+    std::vector<char> ps;
+    std::vector<char> cut_mask(out->parts.size(), 0);
+    for (uint32_t i : order) cut_mask[i] = 1;
+    for (size_t i = 0; i < out->parts.size(); ++i)
+      if (!cut_mask[i]) {
+        parts.push_back(std::move(out->parts[i]));
+        pc.push_back(out->concavity[i]);
+        pd.push_back(out->depth[i]);
+        ps.push_back(stuck[i]);
+      }
+    for (size_t k = 0; k < halves.size(); ++k) {
+      parts.push_back(std::move(halves[k]));
+      pc.push_back(hc[k]);
+      pd.push_back(hd[k]);
+      ps.push_back(was_stuck[k]);
+    }
+    out->parts = std::move(parts);
+    out->concavity = std::move(pc);
+    out->depth = std::move(pd);
+    stuck = std::move(ps);
   }
   return true;
 }

@@ -27,6 +27,7 @@ struct ClipParams {
 struct ClipOutput {
   std::vector<Part> parts;
   std::vector<double> concavity;  // of each part, as measured before it became a leaf (-1: not)
+  std::vector<double> depth;      // how far each part's hull sticks out (voxels; 0: not measured)
   double volume0 = 0.0;           // volume of the hull of the whole voxel set (voxel units)
   int levels = 0;
 };
@@ -37,6 +38,11 @@ struct ClipOutput {
 // cost is computed by one task, so the result does not depend on the thread count.
 // Returns false when cancelled.
 bool ClipRecursively(Part root, const ClipParams& params, Context* ctx, ClipOutput* out);
+
+// Cuts the leaves of `out` further until there are at least `count` (or no leaf can be cut): each
+// round cuts the leaves whose hulls stick out farthest (then the most concave), as many as are
+// missing, by the same plane search. Deterministic. Returns false when cancelled.
+bool SplitToCount(size_t count, const ClipParams& params, Context* ctx, ClipOutput* out);
 
 }  // namespace internal
 }  // namespace vhacd

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <new>
 #include <string>
@@ -84,6 +85,9 @@ Status ValidateParameters(const Parameters& p, std::string* why) {
   if (!in01(p.min_volume_per_hull, 0.01)) return bad("min_volume_per_hull must be in [0, 0.01]");
   if (!in01(p.max_distance, 1.0)) return bad("max_distance must be in [0, 1]");
   if (p.max_convex_hulls > 100000) return bad("max_convex_hulls must be in [0, 100000]");
+  if (!in01(p.max_concavity, 1.0)) return bad("max_concavity must be in [0, 1]");
+  if (p.hull_count > 100000) return bad("hull_count must be in [0, 100000]");
+  if (!in01(p.min_opening, 1.0)) return bad("min_opening must be in [0, 1]");
   if (p.num_threads > 256) return bad("num_threads must be in [0, 256]");
   if (why != nullptr) why->clear();
   return Status::kOk;
@@ -185,7 +189,19 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     nlo = nlo.cwiseMin(p);
     nhi = nhi.cwiseMax(p);
   }
-  const internal::GridPlacement place = internal::ChooseGrid(nlo, nhi, params.resolution);
+  const bool exact_count = params.hull_count > 0;
+  const bool target = !exact_count && params.max_concavity > 0;
+  internal::GridPlacement place = internal::ChooseGrid(nlo, nhi, params.resolution);
+  if (target) {
+    // The split and merge limits are measured on the grid: let max_concavity span a few voxels.
+    constexpr double kVoxelsPerTarget = 3.0, kMaxTargetResolution = 1e6;
+    const double spans = params.max_concavity * (nhi - nlo).norm() / place.h;
+    if (spans < kVoxelsPerTarget && params.resolution < kMaxTargetResolution) {
+      const double wanted = params.resolution * std::pow(kVoxelsPerTarget / spans, 3.0);
+      place = internal::ChooseGrid(nlo, nhi,
+                                   static_cast<uint32_t>(std::min(wanted, kMaxTargetResolution)));
+    }
+  }
   internal::GridMesh gmesh;
   gmesh.triangles = std::move(input.triangles);
   gmesh.points.resize(pn.size());
@@ -199,7 +215,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   // Voxelization.
   ctx.BeginStage("Voxelization", 0, 15);
   internal::VoxelGrid grid;
-  if (!internal::Voxelize(gmesh, place.dims, &ctx, &grid, &rep.seconds_fill))
+  if (!internal::Voxelize(gmesh, place.dims, &ctx, &grid, &rep.seconds_fill, params.min_opening))
     return Fail(Status::kCancelled, "cancelled");
   rep.seconds_voxelize = clock.Lap() - rep.seconds_fill;
   internal::Part root;
@@ -266,87 +282,207 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
       params.max_distance > 0 ? std::max(0.25, params.max_distance * diag_grid - 0.5) : 0.0;
   rep.seconds_distance = clock.Lap();
 
-  // Clipping.
-  ctx.BeginStage("Clipping", 15, 60);
-  internal::ClipParams cp;
-  cp.depth = static_cast<int>(params.depth);
-  cp.concavity = params.concavity;
-  cp.plane_downsampling = static_cast<int>(params.plane_downsampling);
-  cp.convexhull_downsampling = static_cast<int>(params.convexhull_downsampling);
-  cp.alpha = params.alpha;
-  cp.beta = params.beta;
-  cp.field = &field;
-  cp.max_depth = max_depth;
-  internal::ClipOutput clip;
-  if (!internal::ClipRecursively(std::move(root), cp, &ctx, &clip))
-    return Fail(Status::kCancelled, "cancelled");
-  rep.parts_before_merge = static_cast<uint32_t>(clip.parts.size());
-  rep.seconds_clip = clock.Lap();
+  // Clipping, hulls, merge, simplification and report, with the split and merge limits of one
+  // attempt. max_concavity: the volume criteria are off, parts are split while their hull sticks
+  // out more than the limit and merged while the merged hull does not.
+  struct Limits {
+    double concavity, gamma, max_depth;
+  };
+  std::vector<internal::HullMesh> hulls;
+  int clip_levels = 0;
+  const size_t kOverSplit = static_cast<size_t>(2);
+  auto run = [&](const Limits& lim, Report* rep_out) -> Status {
+    Report& r = *rep_out;
+    clock.Lap();
+    ctx.BeginStage("Clipping", 15, 60);
+    internal::ClipParams cp;
+    cp.depth = static_cast<int>(params.depth);
+    cp.concavity = lim.concavity;
+    cp.plane_downsampling = static_cast<int>(params.plane_downsampling);
+    cp.convexhull_downsampling = static_cast<int>(params.convexhull_downsampling);
+    cp.alpha = params.alpha;
+    cp.beta = params.beta;
+    cp.field = &field;
+    cp.max_depth = lim.max_depth;
+    internal::ClipOutput clip;
+    // Only max_concavity runs more than one attempt: the others hand the voxels over.
+    const bool ok = target ? internal::ClipRecursively(root, cp, &ctx, &clip)
+                           : internal::ClipRecursively(std::move(root), cp, &ctx, &clip);
+    if (!ok) return Status::kCancelled;
+    // hull_count: at least kOverSplit x N parts, so that the merge down to N has a choice.
+    const size_t want = static_cast<size_t>(params.hull_count) * kOverSplit;
+    if (exact_count && clip.parts.size() < want && !internal::SplitToCount(want, cp, &ctx, &clip))
+      return Status::kCancelled;
+    clip_levels = clip.levels;
+    r.parts_before_merge = static_cast<uint32_t>(clip.parts.size());
+    r.seconds_clip = clock.Lap();
 
-  // One hull per part.
-  ctx.BeginStage("Hull generation", 60, 75);
-  std::vector<internal::HullMesh> hulls(clip.parts.size());
-  {
-    const internal::TriangleIndex index(gmesh, grid.dims, 8);
-    if (!internal::ParallelFor(&ctx, clip.parts.size(), [&](size_t i) {
-          hulls[i] = internal::BuildPartHull(clip.parts[i], index);
-        }))
-      return Fail(Status::kCancelled, "cancelled");
-  }
-  hulls.erase(std::remove_if(hulls.begin(), hulls.end(),
-                             [](const internal::HullMesh& h) { return h.empty(); }),
-              hulls.end());
-  std::vector<internal::Part>().swap(clip.parts);
-  rep.seconds_hulls = clock.Lap();
+    // One hull per part.
+    ctx.BeginStage("Hull generation", 60, 75);
+    hulls.assign(clip.parts.size(), internal::HullMesh());
+    {
+      const internal::TriangleIndex index(gmesh, grid.dims, 8);
+      if (!internal::ParallelFor(&ctx, clip.parts.size(), [&](size_t i) {
+            hulls[i] = internal::BuildPartHull(clip.parts[i], index);
+          }))
+        return Status::kCancelled;
+    }
+    hulls.erase(std::remove_if(hulls.begin(), hulls.end(),
+                               [](const internal::HullMesh& h) { return h.empty(); }),
+                hulls.end());
+    std::vector<internal::Part>().swap(clip.parts);
+    r.seconds_hulls = clock.Lap();
 
-  // Simplify before merging (cheaper merges; the merged hulls are simplified again below).
-  // Adaptive sampling: a vertex adding less than min_volume_per_hull of the whole hull's volume is
-  // dropped, but never one adding more than kMaxRelativeLoss of its own hull (small hulls would
-  // shrink away from their neighbours and open gaps).
-  const double min_volume = params.min_volume_per_hull * clip.volume0;
-  constexpr double kMaxRelativeLoss = 0.002;
-  if (!internal::ParallelFor(&ctx, hulls.size(), [&](size_t i) {
+    // Simplify before merging (cheaper merges; the merged hulls are simplified again below).
+    // Adaptive sampling: a vertex adding less than min_volume_per_hull of the whole hull's volume
+    // is dropped, but never one adding more than kMaxRelativeLoss of its own hull (small hulls
+    // would shrink away from their neighbours and open gaps).
+    const double min_volume = params.min_volume_per_hull * clip.volume0;
+    constexpr double kMaxRelativeLoss = 0.002;
+    auto simplify = [&]() {
+      return internal::ParallelFor(&ctx, hulls.size(), [&](size_t i) {
         hulls[i] =
             internal::SimplifyHull(hulls[i], params.max_vertices_per_hull,
                                    std::min(min_volume, kMaxRelativeLoss * hulls[i].Volume()));
-      }))
-    return Fail(Status::kCancelled, "cancelled");
+      });
+    };
+    if (!simplify()) return Status::kCancelled;
 
-  // Merge.
-  ctx.BeginStage("Merging", 75, 85);
-  internal::MergeParams mp;
-  mp.gamma = params.gamma;
-  mp.max_hulls = params.max_convex_hulls;
-  mp.volume0 = clip.volume0;
-  mp.adjacency = 1.0;
-  mp.field = &field;
-  mp.max_depth = max_depth;
-  if (!internal::MergeHulls(&hulls, mp, &ctx)) return Fail(Status::kCancelled, "cancelled");
-  rep.seconds_merge = clock.Lap();
+    // Merge.
+    ctx.BeginStage("Merging", 75, 85);
+    internal::MergeParams mp;
+    mp.gamma = lim.gamma;
+    mp.max_hulls = exact_count ? params.hull_count : params.max_convex_hulls;
+    mp.min_hulls = exact_count ? params.hull_count : 0;
+    mp.volume0 = clip.volume0;
+    mp.adjacency = 1.0;
+    mp.field = &field;
+    mp.max_depth = lim.max_depth;
+    if (!internal::MergeHulls(&hulls, mp, &ctx)) return Status::kCancelled;
+    r.seconds_merge = clock.Lap();
 
-  // Simplification.
-  ctx.BeginStage("Simplification", 85, 90);
-  if (!internal::ParallelFor(&ctx, hulls.size(), [&](size_t i) {
-        hulls[i] =
-            internal::SimplifyHull(hulls[i], params.max_vertices_per_hull,
-                                   std::min(min_volume, kMaxRelativeLoss * hulls[i].Volume()));
-      }))
-    return Fail(Status::kCancelled, "cancelled");
-  rep.seconds_simplify = clock.Lap();
+    // Simplification.
+    ctx.BeginStage("Simplification", 85, 90);
+    if (!simplify()) return Status::kCancelled;
+    r.seconds_simplify = clock.Lap();
 
-  // Report.
-  ctx.BeginStage("Error report", 90, 100);
-  if (params.compute_report) {
-    internal::MetricsInput mi;
-    mi.mesh = &gmesh;
-    mi.grid = &grid;
-    mi.hulls = &hulls;
-    mi.diagonal = diag_grid;
-    mi.volume0 = clip.volume0;
-    mi.closed = input.closed;
-    if (!internal::ComputeErrorReport(mi, &ctx, &rep)) return Fail(Status::kCancelled, "cancelled");
+    // Report.
+    ctx.BeginStage("Error report", 90, 100);
+    if (params.compute_report || target) {
+      internal::MetricsInput mi;
+      mi.mesh = &gmesh;
+      mi.grid = &grid;
+      mi.hulls = &hulls;
+      mi.diagonal = diag_grid;
+      mi.volume0 = clip.volume0;
+      mi.closed = input.closed;
+      if (!internal::ComputeErrorReport(mi, &ctx, &r)) return Status::kCancelled;
+    }
+    r.seconds_report = clock.Lap();
+    return Status::kOk;
+  };
+
+  if (!target) {
+    rep.attempts = 1;
+    // hull_count: parts split by how far their hull sticks out only (0.6 x the max_distance limit,
+    // at least a voxel), which the merge down to N then trades best.
+    constexpr double kExactSplit = 0.6;
+    const Limits lim = exact_count && max_depth > 0
+                           ? Limits{1.0, params.gamma, std::max(1.0, kExactSplit * max_depth)}
+                           : Limits{params.concavity, params.gamma, max_depth};
+    if (run(lim, &rep) != Status::kOk) return Fail(Status::kCancelled, "cancelled");
+    if (exact_count && hulls.size() != params.hull_count) {
+      rep.target_reached = false;
+      rep.target_note = "the voxel set could be cut into only " + std::to_string(hulls.size()) +
+                        " parts (raise resolution for more)";
+    }
+  } else {
+    // Each attempt splits with a tighter limit until the measured concavity reaches the target;
+    // the first that does is kept, else the closest.
+    const double d = params.max_concavity;
+    constexpr int kAttempts = 3;
+    constexpr double kTighten = 0.6;
+    // Below one voxel no outside voxel centre may lie in a hull at all: parts then split into
+    // slivers along every curved surface without getting closer to it.
+    constexpr double kMinLimit = 1.0;
+    double limit = std::max(kMinLimit, d * diag_grid - 0.5);
+    std::vector<internal::HullMesh> best_hulls;
+    Report best;
+    bool have = false;
+    for (int attempt = 0; attempt < kAttempts; ++attempt) {
+      Report r = rep;
+      if (run(Limits{1.0, 1.0, limit}, &r) != Status::kOk)
+        return Fail(Status::kCancelled, "cancelled");
+      ctx.Log("max_concavity attempt " + std::to_string(attempt + 1) + ": split limit " +
+              std::to_string(limit) + " voxels, " + std::to_string(hulls.size()) +
+              " hulls, concavity " + std::to_string(r.concavity));
+      r.attempts = static_cast<uint32_t>(attempt + 1);
+      if (!have || r.concavity < best.concavity) {
+        best = r;
+        best_hulls = hulls;
+        have = true;
+      }
+      if (r.concavity <= d || limit <= kMinLimit) break;
+      limit = std::max(kMinLimit, limit * kTighten);
+    }
+    hulls = std::move(best_hulls);
+    const uint32_t attempts = best.attempts;
+    rep = best;
+    rep.attempts = attempts;
+    rep.target_reached = rep.concavity <= d;
+    if (!rep.target_reached) {
+      std::string over;
+      size_t n_over = 0;
+      for (size_t i = 0; i < rep.hulls.size(); ++i)
+        if (rep.hulls[i].distance > d) {
+          if (n_over++ < 8) over += (over.empty() ? "" : ", ") + std::to_string(i);
+        }
+      std::string cause;
+      if (rep.hausdorff_mesh_to_hulls > d)
+        cause = "parts of the surface lie outside every hull by " +
+                std::to_string(rep.hausdorff_mesh_to_hulls) +
+                " (features thinner than a voxel, or vertices dropped by max_vertices_per_hull)";
+      if (n_over > 0) {
+        if (!cause.empty()) cause += "; ";
+        size_t in_solid = 0;
+        for (size_t i = 0; i < rep.hulls.size(); ++i)
+          if (rep.hulls[i].distance > d && field.HullDepth(hulls[i]) <= 1.0) ++in_solid;
+        cause += std::to_string(n_over) + " hull(s) stick out by more than max_concavity (" + over +
+                 (n_over > 8 ? ", ..." : "") + "): " +
+                 (in_solid == n_over
+                      ? "they lie within the filled voxel solid, which is farther than "
+                        "max_concavity from the surface there (a hole or an open side closed by "
+                        "the fill rule, see min_opening)"
+                  : clip_levels >= static_cast<int>(params.depth)
+                      ? "the clipping depth limit was reached"
+                      : "a voxel-aligned cut could not separate them at this resolution");
+      }
+      rep.target_note = "max_concavity " + std::to_string(d) + " not reached (" +
+                        std::to_string(rep.concavity) + "): " + cause;
+    }
   }
-  rep.seconds_report = clock.Lap();
+  if (!params.compute_report) {
+    // The caller did not ask for the measures (a max_concavity run needed them internally).
+    const Report keep = rep;
+    rep = Report();
+    rep.closed_input = keep.closed_input;
+    rep.voxel_count = keep.voxel_count;
+    rep.surface_voxel_count = keep.surface_voxel_count;
+    rep.tetrahedron_count = keep.tetrahedron_count;
+    rep.parts_before_merge = keep.parts_before_merge;
+    rep.target_reached = keep.target_reached;
+    rep.target_note = keep.target_note;
+    rep.attempts = keep.attempts;
+    rep.seconds_voxelize = keep.seconds_voxelize;
+    rep.seconds_fill = keep.seconds_fill;
+    rep.seconds_tetrahedra = keep.seconds_tetrahedra;
+    rep.seconds_distance = keep.seconds_distance;
+    rep.seconds_clip = keep.seconds_clip;
+    rep.seconds_hulls = keep.seconds_hulls;
+    rep.seconds_merge = keep.seconds_merge;
+    rep.seconds_simplify = keep.seconds_simplify;
+    rep.seconds_report = keep.seconds_report;
+  }
 
   // Output in input coordinates.
   const double vol_scale = std::pow(scale * place.h, 3);

@@ -54,25 +54,20 @@ void Edt1D(const double* f, double* out, int n, int* v, double* z) {
 }
 }  // namespace
 
-bool DistanceField::Build(const VoxelGrid& grid, Context* ctx) {
-  for (int a = 0; a < 3; ++a) dims_[a] = grid.dims[a];
-  const size_t n = grid.size();
-  // Squared distances in float: ample precision here, half the memory of double.
-  std::vector<float> sq(n);
-  for (size_t i = 0; i < n; ++i)
-    sq[i] = grid.cell[i] == kCellOutside ? std::numeric_limits<float>::infinity() : 0.0f;
-  const size_t stride[3] = {1, static_cast<size_t>(dims_[0]),
-                            static_cast<size_t>(dims_[0]) * dims_[1]};
+bool SquaredDistanceTransform(const int dims[3], Context* ctx, std::vector<float>* sq_io) {
+  std::vector<float>& sq = *sq_io;
+  const size_t stride[3] = {1, static_cast<size_t>(dims[0]),
+                            static_cast<size_t>(dims[0]) * dims[1]};
   for (int axis = 0; axis < 3; ++axis) {
     const int u = (axis + 1) % 3, w = (axis + 2) % 3;
-    const size_t nlines = static_cast<size_t>(dims_[u]) * dims_[w];
-    const int len = dims_[axis];
+    const size_t nlines = static_cast<size_t>(dims[u]) * dims[w];
+    const int len = dims[axis];
     const size_t kChunk = 64;
     if (!ParallelFor(ctx, (nlines + kChunk - 1) / kChunk, [&](size_t c) {
           std::vector<double> f(len), out(len), z(len + 1);
           std::vector<int> v(len);
           for (size_t l = c * kChunk; l < std::min(nlines, (c + 1) * kChunk); ++l) {
-            const size_t iu = l % dims_[u], iw = l / dims_[u];
+            const size_t iu = l % dims[u], iw = l / dims[u];
             const size_t base = iu * stride[u] + iw * stride[w];
             for (int q = 0; q < len; ++q) f[q] = sq[base + q * stride[axis]];
             Edt1D(f.data(), out.data(), len, v.data(), z.data());
@@ -81,6 +76,17 @@ bool DistanceField::Build(const VoxelGrid& grid, Context* ctx) {
         }))
       return false;
   }
+  return true;
+}
+
+bool DistanceField::Build(const VoxelGrid& grid, Context* ctx) {
+  for (int a = 0; a < 3; ++a) dims_[a] = grid.dims[a];
+  const size_t n = grid.size();
+  // Squared distances in float: ample precision here, half the memory of double.
+  std::vector<float> sq(n);
+  for (size_t i = 0; i < n; ++i)
+    sq[i] = grid.cell[i] == kCellOutside ? std::numeric_limits<float>::infinity() : 0.0f;
+  if (!SquaredDistanceTransform(dims_, ctx, &sq)) return false;
   for (float& s : sq) s = std::isfinite(s) ? std::sqrt(s) : 1e6f;  // in place: no second array
   d_ = std::move(sq);
   return true;

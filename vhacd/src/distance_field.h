@@ -14,6 +14,10 @@
 namespace vhacd {
 namespace internal {
 
+// Squared Euclidean distance transform in place: every cell gets the squared distance (in cells)
+// to the nearest cell holding 0 (cells hold 0 or +infinity on entry). False when cancelled.
+bool SquaredDistanceTransform(const int dims[3], Context* ctx, std::vector<float>* sq);
+
 class DistanceField {
  public:
   // False when cancelled.

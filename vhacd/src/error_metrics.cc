@@ -252,6 +252,7 @@ bool ComputeErrorReport(const MetricsInput& in, Context* ctx, Report* report) {
   TriangleLocator locator(*in.mesh, cell);
   const double gap = kGap * in.diagonal;
   chunk_max.assign((hs.size() + kChunk - 1) / kChunk, 0.0);
+  std::vector<float> point_distance(hs.size(), 0.0f);
   if (!ParallelFor(ctx, chunk_max.size(), [&](size_t c) {
         double m = 0.0;
         for (size_t k = c * kChunk; k < std::min(hs.size(), (c + 1) * kChunk); ++k) {
@@ -270,6 +271,7 @@ bool ComputeErrorReport(const MetricsInput& in, Context* ctx, Report* report) {
           if (!interior) {
             const double dd = locator.Distance(p);
             m = std::max(m, dd);
+            point_distance[k] = static_cast<float>(dd);
           }
         }
         chunk_max[c] = m;
@@ -281,6 +283,11 @@ bool ComputeErrorReport(const MetricsInput& in, Context* ctx, Report* report) {
   report->hausdorff_mesh_to_hulls = std::isfinite(d_mh) ? d_mh / diag : 1.0;
   report->hausdorff_hulls_to_mesh = std::isfinite(d_hm) ? d_hm / diag : 1.0;
   report->concavity = std::max(report->hausdorff_mesh_to_hulls, report->hausdorff_hulls_to_mesh);
+  for (HullReport& h : report->hulls) h.distance = 0.0;
+  for (size_t k = 0; k < hs.size(); ++k) {
+    double& d = report->hulls[hs[k].first].distance;
+    d = std::max(d, point_distance[k] / diag);
+  }
   return true;
 }
 

@@ -120,7 +120,7 @@ bool MergeHulls(std::vector<HullMesh>* hulls_io, const MergeParams& params, Cont
     const bool over_budget = budget && count > params.max_hulls;
     Cand pick{};
     bool have = false;
-    if (!under.empty()) {
+    if (!under.empty() && count > params.min_hulls) {
       pick = under.top();
       under.pop();
       have = true;

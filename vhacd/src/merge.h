@@ -14,6 +14,7 @@ namespace internal {
 struct MergeParams {
   double gamma = 0.00125;  // merge while the cost is below this
   uint32_t max_hulls = 0;  // then keep merging while more hulls remain (0 = no budget)
+  uint32_t min_hulls = 0;  // merges under gamma stop at this many hulls
   double volume0 = 1.0;    // cost normalization
   double adjacency = 1.0;  // pairs whose boxes are farther apart than this are not merged
                            // under gamma (they still are to meet max_hulls)

@@ -4,8 +4,10 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <memory>
 
+#include "distance_field.h"
 #include "thread_pool.h"
 
 namespace vhacd {
@@ -132,8 +134,121 @@ void CollectCrossings(const GridMesh& mesh, const int dims[3], int axis, size_t 
 
 }  // namespace
 
+bool SweepOpenings(const int dims[3], double opening, Context* ctx, VoxelGrid* grid) {
+  // Only voxels that the flood fill reached but the parity vote called inside can change.
+  bool any = false;
+  for (size_t i = 0; i < grid->size() && !any; ++i)
+    any = grid->cell[i] != kCellSurface && !grid->enclosed[i] && grid->votes[i] >= 4;
+  if (!any) return true;
+  double diag2 = 0.0;
+  for (int k = 0; k < 3; ++k) diag2 += static_cast<double>(dims[k] - 2) * (dims[k] - 2);
+  const double r = 0.5 * opening * std::sqrt(diag2);
+  if (r < 1.0) return true;  // a ball narrower than a voxel passes through any crack
+  // The grid padded by pad cells on every side, so that balls also start outside the grid.
+  const int pad = static_cast<int>(std::ceil(r)) + 1;
+  int pd[3];
+  for (int k = 0; k < 3; ++k) pd[k] = dims[k] + 2 * pad;
+  const size_t n = static_cast<size_t>(pd[0]) * pd[1] * pd[2];
+  auto padded = [&](int x, int y, int z) {
+    return (static_cast<size_t>(z) * pd[1] + y) * pd[0] + x;
+  };
+  const float kInf = std::numeric_limits<float>::infinity();
+  std::vector<float> sq(n, kInf);
+  for (int z = 0; z < dims[2]; ++z)
+    for (int y = 0; y < dims[1]; ++y)
+      for (int x = 0; x < dims[0]; ++x)
+        if (grid->cell[grid->Index(x, y, z)] == kCellSurface)
+          sq[padded(x + pad, y + pad, z + pad)] = 0.0f;
+  if (!SquaredDistanceTransform(pd, ctx, &sq)) return false;
+  // Ball centres: cells at least r from every surface voxel centre, connected to the padding.
+  const float r2 = static_cast<float>(r * r);
+  std::vector<uint8_t> centre(n, 0);
+  std::vector<size_t> stack;
+  auto push = [&](size_t i) {
+    if (!centre[i] && sq[i] >= r2) {
+      centre[i] = 1;
+      stack.push_back(i);
+    }
+  };
+  for (int z = 0; z < pd[2]; ++z)
+    for (int y = 0; y < pd[1]; ++y)
+      for (int x = 0; x < pd[0]; ++x)
+        if (x == 0 || y == 0 || z == 0 || x == pd[0] - 1 || y == pd[1] - 1 || z == pd[2] - 1)
+          push(padded(x, y, z));
+  const size_t sy = pd[0], sz = static_cast<size_t>(pd[0]) * pd[1];
+  size_t popped = 0;
+  while (!stack.empty()) {
+    if ((++popped & 0xfffff) == 0 && ctx->Cancelled()) return false;
+    const size_t i = stack.back();
+    stack.pop_back();
+    const int x = static_cast<int>(i % sy), y = static_cast<int>((i / sy) % pd[1]),
+              z = static_cast<int>(i / sz);
+    if (x > 0) push(i - 1);
+    if (x + 1 < pd[0]) push(i + 1);
+    if (y > 0) push(i - sy);
+    if (y + 1 < pd[1]) push(i + sy);
+    if (z > 0) push(i - sz);
+    if (z + 1 < pd[2]) push(i + sz);
+  }
+  // Swept: within r of a ball centre.
+  for (size_t i = 0; i < n; ++i) sq[i] = centre[i] ? 0.0f : kInf;
+  std::vector<uint8_t>().swap(centre);
+  if (!SquaredDistanceTransform(pd, ctx, &sq)) return false;
+  const size_t nvox = grid->size();
+  std::vector<uint8_t> swept(nvox, 0);
+  for (int z = 0; z < dims[2]; ++z)
+    for (int y = 0; y < dims[1]; ++y)
+      for (int x = 0; x < dims[0]; ++x) {
+        const size_t i = grid->Index(x, y, z);
+        if (grid->cell[i] != kCellSurface && !grid->enclosed[i] &&
+            sq[padded(x + pad, y + pad, z + pad)] <= r2) {
+          swept[i] = 1;
+          grid->votes[i] = 0;
+        }
+      }
+  std::vector<float>().swap(sq);
+  // The ball cannot reach into the concave corners of a cavity (a fillet of its radius stays).
+  // Such a left-over region is thin: its volume over its contact with the swept region is below
+  // the radius, where the solid behind a hole (the inside of a scan) is far thicker than that.
+  const size_t gx = 1, gy = dims[0], gz = static_cast<size_t>(dims[0]) * dims[1];
+  auto candidate = [&](size_t i) {
+    return grid->cell[i] != kCellSurface && !grid->enclosed[i] && grid->votes[i] >= 4;
+  };
+  std::vector<uint32_t> label(nvox, 0);
+  std::vector<size_t> members;
+  uint32_t next_label = 0;
+  for (size_t seed = 0; seed < nvox; ++seed) {
+    if (label[seed] != 0 || !candidate(seed)) continue;
+    if ((++next_label & 0xff) == 0 && ctx->Cancelled()) return false;
+    members.clear();
+    members.push_back(seed);
+    label[seed] = next_label;
+    size_t contact = 0;
+    for (size_t k = 0; k < members.size(); ++k) {
+      const size_t i = members[k];
+      const int x = static_cast<int>(i % gy), y = static_cast<int>((i / gy) % dims[1]),
+                z = static_cast<int>(i / gz);
+      const bool has[6] = {x > 0, x + 1 < dims[0], y > 0, y + 1 < dims[1], z > 0, z + 1 < dims[2]};
+      const size_t nb[6] = {i - gx, i + gx, i - gy, i + gy, i - gz, i + gz};
+      for (int e = 0; e < 6; ++e) {
+        if (!has[e]) continue;
+        const size_t j = nb[e];
+        if (swept[j]) {
+          ++contact;
+        } else if (label[j] == 0 && candidate(j)) {
+          label[j] = next_label;
+          members.push_back(j);
+        }
+      }
+    }
+    if (static_cast<double>(members.size()) < r * static_cast<double>(contact))
+      for (size_t i : members) grid->votes[i] = 0;
+  }
+  return true;
+}
+
 bool Voxelize(const GridMesh& mesh, const int dims[3], Context* ctx, VoxelGrid* grid,
-              double* fill_seconds) {
+              double* fill_seconds, double opening) {
   for (int a = 0; a < 3; ++a) grid->dims[a] = dims[a];
   const size_t nvox = static_cast<size_t>(dims[0]) * dims[1] * dims[2];
   const size_t ntri = mesh.triangles.size();
@@ -294,7 +409,11 @@ bool Voxelize(const GridMesh& mesh, const int dims[3], Context* ctx, VoxelGrid* 
     ctx->Progress(45 + 18 * (axis + 1), "ray parity");
   }
 
-  // 4. Classification.
+  // 4. Wide openings: the voxels a ball of the opening's radius sweeps from outside the grid are
+  // outside whatever their votes (the cavity of an open container).
+  if (opening > 0.0 && !SweepOpenings(dims, opening, ctx, grid)) return false;
+
+  // 5. Classification.
   for (size_t i = 0; i < nvox; ++i)
     if (grid->cell[i] != kCellSurface && (grid->enclosed[i] || grid->votes[i] >= 4))
       grid->cell[i] = kCellInside;

@@ -51,9 +51,15 @@ bool TriangleBoxOverlap(const Vec3& center, double half, const Vec3& a, const Ve
                         const Vec3& c);
 
 // Marks surface voxels and fills the interior. Returns false when cancelled. *fill_seconds (when
-// non-null) receives the time spent on the interior fill.
+// non-null) receives the time spent on the interior fill. `opening` (a fraction of the grid's
+// diagonal, 0 = off): voxels that a ball of that diameter reaches from outside the grid through
+// the gaps between surface voxels are outside even when the parity vote says inside.
 bool Voxelize(const GridMesh& mesh, const int dims[3], Context* ctx, VoxelGrid* grid,
-              double* fill_seconds = nullptr);
+              double* fill_seconds = nullptr, double opening = 0.0);
+
+// Step 4 of Voxelize: clears the votes of the voxels swept by a ball of diameter `opening` times
+// the diagonal coming from outside the grid. False when cancelled.
+bool SweepOpenings(const int dims[3], double opening, Context* ctx, VoxelGrid* grid);
 
 }  // namespace internal
 }  // namespace vhacd

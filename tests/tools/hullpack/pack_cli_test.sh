@@ -61,6 +61,11 @@ run 1 batch-one-failure -- "$bin" pack "$tmp/in.obj" "$tmp/bad.obj" "$tmp/second
 grep -q "$tmp/bad.obj" "$tmp/err" && pass || fail "batch error does not name the file"
 ls "$tmp/batch" | grep -q tmp && fail "temporary file left behind" || pass
 run 64 usage -- "$bin" pack "$sample"
+# --hulls N: exactly N hulls for the torus; --max-concavity D; a bad count is a usage error.
+run 0 hulls-count -- "$bin" pack "$sample" -o "$tmp/n.glb" --hulls 5 --report "$tmp/n.json" --quiet
+grep -q '"hull_count": *5[,}]' "$tmp/n.json" && pass || fail "--hulls 5: $(grep -o '"hull_count": *[0-9]*' "$tmp/n.json")"
+run 0 max-concavity -- "$bin" pack "$sample" -o "$tmp/d.glb" --max-concavity 0.05 --quiet
+run 64 bad-hull-count -- "$bin" pack "$sample" -o "$tmp/x.glb" --hulls 0
 run 64 bad-option -- "$bin" pack "$sample" -o "$tmp/x.glb" --max-error -1
 
 # The Khronos validator on the packed and unpacked files (skipped without node + gltf-validator).

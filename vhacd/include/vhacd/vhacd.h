@@ -16,10 +16,12 @@
 //            surface an odd number of times.
 //      Rule (a) is exact for closed surfaces, including overlapping closed components; rule (b)
 //      keeps meshes with small holes (scans such as the Stanford bunny, open at the base) solid,
-//      because a ray only escapes through a hole it is aimed at. A thin open sheet whose opening
-//      is as large as the shape (a single-sheet hemisphere) may be filled; a closed thick bowl's
-//      cavity is kept empty. Crossings are counted with a tie-breaking rule so that a ray through
-//      a shared edge or vertex is counted once.
+//      because a ray only escapes through a hole it is aimed at. Crossings are counted with a
+//      tie-breaking rule so that a ray through a shared edge or vertex is counted once.
+//      Rule (b) does not apply where a ball of diameter `min_opening` x diagonal reaches from
+//      outside the grid between the surface voxels (the cavity of an open pot, cup or lidless
+//      box), nor to the thin left-over regions the ball leaves in the corners of such a cavity
+//      (fewer voxels than the ball radius times their faces shared with the swept region).
 //   4. recursive clipping, up to `depth` levels: each part is cut while its concavity
 //      (volume of its hull - its volume) / (volume of the hull of the whole voxel set) exceeds
 //      `concavity`, or while its hull sticks out of the solid by more than `max_distance` (measured
@@ -105,6 +107,21 @@ struct Parameters {
   // the bounding-box diagonal; parts are split further and merges refused beyond it (measured on
   // the voxel grid, so it is only as precise as a voxel). 0 disables it (pure V-HACD 2.0). [0, 1]
   double max_distance = 0.03;
+  // Target error: when > 0, parts are split until every hull lies within max_concavity x the
+  // bounding-box diagonal of the input surface (the Report's `concavity` measure), then merged
+  // while the merged hull stays within it; `concavity`, `gamma` and `max_distance` are then
+  // ignored, and the grid is refined (up to 1,000,000 voxels) when max_concavity spans fewer than 3
+  // voxels. The report says whether it was reached (target_reached, target_note). [0, 1]
+  double max_concavity = 0.0;
+  // Exact hull count: when > 0, the result has exactly this many hulls whenever the voxel set can
+  // be cut into that many parts (parts are cut further when the clipping gives fewer, the pairs
+  // whose merged hull sticks out least are merged when it gives more). Takes precedence over
+  // max_convex_hulls and max_concavity. [0, 100000]
+  uint32_t hull_count = 0;
+  // Fill rule for open meshes: a cavity that a ball of this diameter (fraction of the diagonal)
+  // can reach from outside stays empty (open containers: pots, cups, lidless boxes); smaller
+  // openings (holes in scans) are filled by the parity vote. 0 = parity vote only. [0, 1]
+  double min_opening = 0.2;
   uint32_t num_threads = 0;    // 0 = std::thread::hardware_concurrency() [0, 256]
   bool compute_report = true;  // fill Result::report's error measures (costs time)
 
@@ -169,6 +186,10 @@ struct HullReport {
   // (hull volume - volume of the input solid inside the hull) / volume of the input's hull,
   // measured on the voxel centres.
   double concavity = 0.0;
+  // Largest distance from this hull's part of the boundary of the union of hulls to the input
+  // surface, as a fraction of the diagonal (the hull's share of hausdorff_hulls_to_mesh); -1 when
+  // not measured.
+  double distance = -1.0;
 };
 
 // Error measures of a decomposition. Distances are fractions of the bounding-box diagonal of the
@@ -192,6 +213,12 @@ struct Report {
   uint64_t tetrahedron_count =
       0;  // mode 1: 5 per interior voxel + the surface voxels' trimmed ones
   uint32_t parts_before_merge = 0;
+  // Parameters::max_concavity / hull_count: whether the target was met (always true without a
+  // target) and, when not, why (which hulls stay over max_concavity, or how many parts the mesh
+  // could give).
+  bool target_reached = true;
+  std::string target_note;
+  uint32_t attempts = 0;  // max_concavity: decompositions tried (each with a tighter split limit)
   // Wall-clock seconds per stage (distance: the distance transform used by max_distance).
   // tetrahedra: mode 1's trimmed tetrahedra of the surface voxels.
   double seconds_voxelize = 0.0, seconds_fill = 0.0, seconds_tetrahedra = 0.0,
