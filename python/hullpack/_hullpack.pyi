@@ -36,6 +36,9 @@ def decompose(
     min_volume_per_hull: Optional[float] = None,
     max_convex_hulls: Optional[int] = None,
     max_distance: Optional[float] = None,
+    max_concavity: Optional[float] = None,
+    hulls: Optional[int] = None,
+    min_opening: Optional[float] = None,
     # HACD only (method="hacd").
     target_triangles: Optional[int] = None,
     scale_factor: Optional[float] = None,
@@ -98,7 +101,7 @@ def pack(
     keep_order: bool = False,
     fast_decode: bool = False,
     fallback: bool = False,
-    hulls: str = "auto",
+    hulls: Union[str, int] = "auto",
     physics: str = "omi",
     method: str = "vhacd",
     quality: str = "default",
@@ -106,6 +109,7 @@ def pack(
     max_hulls: Optional[int] = None,
     max_vertices: Optional[int] = None,
     concavity: Optional[float] = None,
+    max_concavity: Optional[float] = None,
     force: bool = False,
     progress: Progress = None,
 ) -> Dict[str, Any]: ...

@@ -36,6 +36,9 @@ py::dict ReportDict(const vhacd::Report& r) {
   d["surface_voxel_count"] = r.surface_voxel_count;
   d["tetrahedron_count"] = r.tetrahedron_count;
   d["parts_before_merge"] = r.parts_before_merge;
+  d["target_reached"] = r.target_reached;
+  d["target_note"] = r.target_note;
+  d["attempts"] = r.attempts;
   py::dict s;
   s["voxelize"] = r.seconds_voxelize;
   s["fill"] = r.seconds_fill;
@@ -94,28 +97,27 @@ vhacd::HacdParameters HacdParameters(const std::string& preset) {
       preset + "'");
 }
 
-py::tuple Decompose(py::handle vertices, py::handle faces, const std::string& method,
-                    const std::string& preset,
-                    // Both methods.
-                    std::optional<double> concavity, std::optional<int64_t> max_vertices_per_hull,
-                    std::optional<int64_t> num_threads, bool compute_report,
-                    // V-HACD only.
-                    std::optional<int64_t> resolution, std::optional<int64_t> depth,
-                    std::optional<int64_t> plane_downsampling,
-                    std::optional<int64_t> convexhull_downsampling, std::optional<double> alpha,
-                    std::optional<double> beta, std::optional<double> gamma,
-                    std::optional<bool> pca, std::optional<std::string> mode,
-                    std::optional<double> min_volume_per_hull,
-                    std::optional<int64_t> max_convex_hulls, std::optional<double> max_distance,
-                    // HACD only.
-                    std::optional<int64_t> target_triangles, std::optional<double> scale_factor,
-                    std::optional<double> small_cluster_threshold,
-                    std::optional<bool> add_face_points, std::optional<bool> add_extra_dist_points,
-                    std::optional<bool> invert_input_faces, std::optional<int64_t> min_clusters,
-                    std::optional<double> connect_distance, std::optional<double> volume_weight,
-                    std::optional<double> compacity_weight,
-                    std::optional<double> flat_region_threshold,
-                    std::optional<double> computation_weight, py::object progress) {
+py::tuple Decompose(
+    py::handle vertices, py::handle faces, const std::string& method, const std::string& preset,
+    // Both methods.
+    std::optional<double> concavity, std::optional<int64_t> max_vertices_per_hull,
+    std::optional<int64_t> num_threads, bool compute_report,
+    // V-HACD only.
+    std::optional<int64_t> resolution, std::optional<int64_t> depth,
+    std::optional<int64_t> plane_downsampling, std::optional<int64_t> convexhull_downsampling,
+    std::optional<double> alpha, std::optional<double> beta, std::optional<double> gamma,
+    std::optional<bool> pca, std::optional<std::string> mode,
+    std::optional<double> min_volume_per_hull, std::optional<int64_t> max_convex_hulls,
+    std::optional<double> max_distance, std::optional<double> max_concavity,
+    std::optional<int64_t> hulls, std::optional<double> min_opening,
+    // HACD only.
+    std::optional<int64_t> target_triangles, std::optional<double> scale_factor,
+    std::optional<double> small_cluster_threshold, std::optional<bool> add_face_points,
+    std::optional<bool> add_extra_dist_points, std::optional<bool> invert_input_faces,
+    std::optional<int64_t> min_clusters, std::optional<double> connect_distance,
+    std::optional<double> volume_weight, std::optional<double> compacity_weight,
+    std::optional<double> flat_region_threshold, std::optional<double> computation_weight,
+    py::object progress) {
   const Given vhacd_only = {{"resolution", resolution.has_value()},
                             {"depth", depth.has_value()},
                             {"plane_downsampling", plane_downsampling.has_value()},
@@ -127,7 +129,10 @@ py::tuple Decompose(py::handle vertices, py::handle faces, const std::string& me
                             {"mode", mode.has_value()},
                             {"min_volume_per_hull", min_volume_per_hull.has_value()},
                             {"max_convex_hulls", max_convex_hulls.has_value()},
-                            {"max_distance", max_distance.has_value()}};
+                            {"max_distance", max_distance.has_value()},
+                            {"max_concavity", max_concavity.has_value()},
+                            {"hulls", hulls.has_value()},
+                            {"min_opening", min_opening.has_value()}};
   const Given hacd_only = {{"target_triangles", target_triangles.has_value()},
                            {"scale_factor", scale_factor.has_value()},
                            {"small_cluster_threshold", small_cluster_threshold.has_value()},
@@ -167,6 +172,10 @@ py::tuple Decompose(py::handle vertices, py::handle faces, const std::string& me
     Set(min_volume_per_hull, &p.min_volume_per_hull);
     SetCount("max_convex_hulls", max_convex_hulls, &p.max_convex_hulls);
     Set(max_distance, &p.max_distance);
+    Set(max_concavity, &p.max_concavity);
+    SetCount("hulls", hulls, &p.hull_count);
+    if (p.hull_count > 100000) throw py::value_error("decompose: hulls must be in [0, 100000]");
+    Set(min_opening, &p.min_opening);
     SetCount("num_threads", num_threads, &p.num_threads);
     p.compute_report = compute_report;
     if (vhacd::ValidateParameters(p, &why) != vhacd::Status::kOk)
@@ -209,13 +218,13 @@ py::tuple Decompose(py::handle vertices, py::handle faces, const std::string& me
   watch.Run([&] { result = run(mesh.view, &observer); });
   if (!result.ok()) RaiseStatus("decompose", result.status, result.message);
 
-  py::list hulls;
+  py::list out;
   for (vhacd::ConvexHull& h : result.hulls) {
     const size_t nv = h.vertex_count(), nt = h.triangle_count();
-    hulls.append(py::make_tuple(OwnedArray(std::move(h.points), nv, 3),
-                                OwnedArray(std::move(h.triangles), nt, 3)));
+    out.append(py::make_tuple(OwnedArray(std::move(h.points), nv, 3),
+                              OwnedArray(std::move(h.triangles), nt, 3)));
   }
-  return py::make_tuple(hulls, ReportDict(result.report));
+  return py::make_tuple(out, ReportDict(result.report));
 }
 
 const char kDoc[] = R"(Decompose a triangle mesh into convex hulls with V-HACD 2.0 or HACD.
@@ -292,6 +301,22 @@ max_convex_hulls : int, optional
 max_distance : float, optional
     Largest distance a hull may stick out of the mesh, as a fraction of the bounding-box
     diagonal, 0 to 1 (default 0.03; 0 = pure V-HACD 2.0).
+max_concavity : float, optional
+    Target error: parts are split until every hull lies within max_concavity times the
+    bounding-box diagonal of the surface (the report's "concavity"), then merged while the
+    merged hull stays within it; concavity, gamma and max_distance are then ignored and the
+    grid is refined (up to 1000000 voxels) when the target spans fewer than 3 voxels. 0 to 1;
+    0 = no target (default). report["target_reached"] and report["target_note"] say whether
+    it was met.
+hulls : int, optional
+    Exactly this many hulls whenever the voxel set can be cut into that many parts (parts are
+    cut further or merged, least stick-out first); takes precedence over max_convex_hulls and
+    max_concavity. 0 to 100000; 0 = no count (default). When the mesh cannot give that many,
+    report["target_reached"] is False and report["target_note"] says why.
+min_opening : float, optional
+    Fill rule for open meshes: a cavity that a ball of this diameter (fraction of the
+    diagonal) reaches from outside stays empty (pots, cups, lidless boxes); smaller openings
+    (holes in scans) are filled. 0 to 1 (default 0.2); 0 = parity vote only.
 
 HACD only
 ---------
@@ -334,7 +359,9 @@ Returns
     vertex_count, volume, concavity), "volume_iou", "solid_coverage",
     "hausdorff_mesh_to_hulls", "hausdorff_hulls_to_mesh", "concavity" (fractions of the
     bounding-box diagonal; -1 = not measured), voxel counts, "parts_before_merge" (HACD: the
-    triangles clustered) and "seconds" per stage (HACD: "simplify" = decimation, "clip" =
+    triangles clustered), "target_reached" / "target_note" (whether max_concavity or hulls
+    was met and, if not, why; True and "" without a target), "attempts" (max_concavity: the
+    decompositions tried) and "seconds" per stage (HACD: "simplify" = decimation, "clip" =
     clustering).
 
 Raises
@@ -362,13 +389,15 @@ void BindDecompose(py::module_& m) {
         py::arg("alpha") = py::none(), py::arg("beta") = py::none(), py::arg("gamma") = py::none(),
         py::arg("pca") = py::none(), py::arg("mode") = py::none(),
         py::arg("min_volume_per_hull") = py::none(), py::arg("max_convex_hulls") = py::none(),
-        py::arg("max_distance") = py::none(), py::arg("target_triangles") = py::none(),
-        py::arg("scale_factor") = py::none(), py::arg("small_cluster_threshold") = py::none(),
-        py::arg("add_face_points") = py::none(), py::arg("add_extra_dist_points") = py::none(),
-        py::arg("invert_input_faces") = py::none(), py::arg("min_clusters") = py::none(),
-        py::arg("connect_distance") = py::none(), py::arg("volume_weight") = py::none(),
-        py::arg("compacity_weight") = py::none(), py::arg("flat_region_threshold") = py::none(),
-        py::arg("computation_weight") = py::none(), py::arg("progress") = py::none());
+        py::arg("max_distance") = py::none(), py::arg("max_concavity") = py::none(),
+        py::arg("hulls") = py::none(), py::arg("min_opening") = py::none(),
+        py::arg("target_triangles") = py::none(), py::arg("scale_factor") = py::none(),
+        py::arg("small_cluster_threshold") = py::none(), py::arg("add_face_points") = py::none(),
+        py::arg("add_extra_dist_points") = py::none(), py::arg("invert_input_faces") = py::none(),
+        py::arg("min_clusters") = py::none(), py::arg("connect_distance") = py::none(),
+        py::arg("volume_weight") = py::none(), py::arg("compacity_weight") = py::none(),
+        py::arg("flat_region_threshold") = py::none(), py::arg("computation_weight") = py::none(),
+        py::arg("progress") = py::none());
 }
 
 }  // namespace hullpack::python

@@ -4,7 +4,6 @@
 #include <optional>
 
 #include "common/file_util.h"
-#include "gltf/external_images.h"
 #include "hullpack/cli_util.h"
 #include "hullpack/scene_summary.h"
 #include "io/scene_io.h"
@@ -38,12 +37,6 @@ namespace {
 
 py::object FromJson(const nlohmann::json& j) {
   return py::module_::import("json").attr("loads")(j.dump());
-}
-
-std::string FolderOf(const std::string& path) {
-  const size_t slash = path.find_last_of('/');
-  if (slash == std::string::npos) return ".";
-  return slash == 0 ? "/" : path.substr(0, slash);
 }
 
 class PackWatch : public PackObserver {
@@ -99,9 +92,35 @@ py::dict PackReportDict(const PackReport& r) {
   return d;
 }
 
+// `hulls`: "all", "none", "auto" or a count 1-100000 (an int or its digits); returns the count
+// (0 for the words, whose policy it sets).
+uint32_t ApplyHulls(py::handle hulls, HullPolicy* policy) {
+  const char* const kWhat = "hulls must be 'all', 'none', 'auto' or a count 1-100000, not ";
+  if (py::isinstance<py::str>(hulls)) {
+    const std::string v = hulls.cast<std::string>();
+    if (v == "all") {
+      *policy = HullPolicy::kAll;
+    } else if (v == "none") {
+      *policy = HullPolicy::kNone;
+    } else if (v != "auto") {
+      if (v.empty() || v.size() > 6 || v.find_first_not_of("0123456789") != std::string::npos ||
+          std::stol(v) < 1 || std::stol(v) > 100000)
+        throw py::value_error(kWhat + ("'" + v + "'"));
+      return static_cast<uint32_t>(std::stol(v));
+    }
+    return 0;
+  }
+  if (py::isinstance<py::int_>(hulls) && !py::isinstance<py::bool_>(hulls)) {
+    const long long n = hulls.cast<long long>();
+    if (n < 1 || n > 100000) throw py::value_error(kWhat + std::to_string(n));
+    return static_cast<uint32_t>(n);
+  }
+  throw py::value_error(kWhat + py::repr(hulls).cast<std::string>());
+}
+
 void ApplyDecomposition(vhacd::Parameters* p, const std::string& quality,
                         std::optional<uint32_t> resolution, std::optional<uint32_t> max_hulls,
-                        std::optional<double> concavity) {
+                        std::optional<double> concavity, std::optional<double> max_concavity) {
   if (quality == "high") {
     *p = vhacd::Parameters::High();
   } else if (quality != "default") {
@@ -110,6 +129,7 @@ void ApplyDecomposition(vhacd::Parameters* p, const std::string& quality,
   if (resolution) p->resolution = *resolution;
   if (max_hulls) p->max_convex_hulls = *max_hulls;
   if (concavity) p->concavity = *concavity;
+  if (max_concavity) p->max_concavity = *max_concavity;
   std::string why;
   if (vhacd::ValidateParameters(*p, &why) != vhacd::Status::kOk)
     throw py::value_error("invalid decomposition parameter: " + why);
@@ -117,11 +137,11 @@ void ApplyDecomposition(vhacd::Parameters* p, const std::string& quality,
 
 py::dict Pack(const std::string& input, const std::string& output, double max_error,
               double hull_error, std::optional<int> position_bits, int normal_bits, int uv_bits,
-              bool ascii, bool keep_order, bool fast_decode, bool fallback,
-              const std::string& hulls, const std::string& physics, const std::string& method,
-              const std::string& quality, std::optional<uint32_t> resolution,
-              std::optional<uint32_t> max_hulls, std::optional<uint32_t> max_vertices,
-              std::optional<double> concavity, bool force, py::object progress) {
+              bool ascii, bool keep_order, bool fast_decode, bool fallback, py::handle hulls,
+              const std::string& physics, const std::string& method, const std::string& quality,
+              std::optional<uint32_t> resolution, std::optional<uint32_t> max_hulls,
+              std::optional<uint32_t> max_vertices, std::optional<double> concavity,
+              std::optional<double> max_concavity, bool force, py::object progress) {
   PackOptions o;
   if (!(max_error > 0 && max_error <= 0.5)) throw py::value_error("max_error must be in (0, 0.5]");
   if (!(hull_error > 0 && hull_error <= 0.5))
@@ -137,13 +157,9 @@ py::dict Pack(const std::string& input, const std::string& output, double max_er
   o.keep_order = keep_order;
   o.fast_decode = fast_decode;
   o.glb.fallback = fallback;
-  if (hulls == "all") {
-    o.collision.policy = HullPolicy::kAll;
-  } else if (hulls == "none") {
-    o.collision.policy = HullPolicy::kNone;
-  } else if (hulls != "auto") {
-    throw py::value_error("hulls must be 'all', 'none' or 'auto', not '" + hulls + "'");
-  }
+  // As `hullpack pack --hulls all|none|auto|N`: a count asks for exactly N hulls per mesh (with
+  // the automatic choice of meshes).
+  const uint32_t hull_count = ApplyHulls(hulls, &o.collision.policy);
   if (physics != "omi" && physics != "khr")
     throw py::value_error("physics must be 'omi' or 'khr', not '" + physics + "'");
   o.glb.physics = physics == "omi" ? PhysicsForm::kOmi : PhysicsForm::kKhr;
@@ -159,7 +175,14 @@ py::dict Pack(const std::string& input, const std::string& output, double max_er
   } else if (method != "vhacd") {
     throw py::value_error("method must be 'vhacd' or 'hacd', not '" + method + "'");
   }
-  ApplyDecomposition(&o.collision.parameters, quality, resolution, max_hulls, concavity);
+  if (method == "hacd" && (hull_count || max_concavity)) {
+    throw py::value_error(
+        "a hull count and max_concavity are V-HACD options (method=\"vhacd\"), not options of "
+        "method=\"hacd\"");
+  }
+  ApplyDecomposition(&o.collision.parameters, quality, resolution, max_hulls, concavity,
+                     max_concavity);
+  o.collision.parameters.hull_count = hull_count;
   if (max_vertices) {
     if (*max_vertices < 4 || *max_vertices > 1024)
       throw py::value_error("max_vertices must be in [4, 1024]");
@@ -173,21 +196,14 @@ py::dict Pack(const std::string& input, const std::string& output, double max_er
   PackWatch observer(watch);
   Status failed;
   PackReport report;
+  // The command's path: check the output, PackInput (load, embed images, the stages), write
+  // atomically.
   watch.Run([&] {
-    Result<Scene> scene = ReadScene(input);
-    if (!scene.ok()) {
-      failed = scene.status();
-      return;
-    }
-    Status writable = CheckOutputPath(output, {input}, force);
-    if (!writable.ok()) {
-      failed = writable;
-      return;
-    }
-    EmbedExternalImages(scene.value(), FolderOf(input));
-    Result<PackResult> packed = PackScene(std::move(scene.value()), o, &observer);
+    failed = CheckOutputPath(output, {input}, force);
+    if (!failed.ok()) return;
+    Result<PackResult> packed = PackInput(input, o, &observer);
     if (!packed.ok()) {
-      failed = Status(packed.status().code(), input + ": " + packed.status().message());
+      failed = packed.status();
       return;
     }
     failed = WriteFileAtomically(output, packed->glb);
@@ -279,7 +295,7 @@ py::dict Collision(const std::string& input, const std::string& output_dir,
   if (max_hull_vertices && *max_hull_vertices == 0)
     throw py::value_error("max_hull_vertices must be at least 4");
   o.force = force;
-  ApplyDecomposition(&o.parameters, quality, resolution, max_hulls, concavity);
+  ApplyDecomposition(&o.parameters, quality, resolution, max_hulls, concavity, std::nullopt);
   Watch watch(std::move(progress));
   VhacdWatch observer(watch);
   Status failed;
@@ -363,8 +379,10 @@ normal_bits, uv_bits : int
     Bits for normals (10) and texture coordinates (12).
 ascii, keep_order, fast_decode, fallback : bool
     As the command's --ascii, --keep-order, --fast-decode, --fallback.
-hulls : str
-    Which meshes get hulls: "auto" (default), "all" or "none".
+hulls : str or int
+    As --hulls: which meshes get hulls, "auto" (default), "all" or "none"; or a count N
+    (1 to 100000, an int or its digits): exactly N hulls per mesh (V-HACD's hull count, on
+    the meshes "auto" picks).
 physics : str
     "omi" (OMI_physics_shape/body, default) or "khr" (the KHR_physics_rigid_bodies draft).
 method : str
@@ -379,6 +397,9 @@ max_vertices : int, optional
     Vertex cap per hull, 4 to 1024 (both methods).
 concavity : float, optional
     Largest concavity of a part (0 to 1).
+max_concavity : float, optional
+    As --max-concavity D: hulls within D times the mesh's bounding-box diagonal of its
+    surface, as few as that allows (0 to 1; 0 or None = no target). V-HACD only.
 force : bool
     Replace an existing output.
 progress : callable, optional
@@ -404,8 +425,8 @@ OSError
         py::arg("hulls") = "auto", py::arg("physics") = "omi", py::arg("method") = "vhacd",
         py::arg("quality") = "default", py::arg("resolution") = py::none(),
         py::arg("max_hulls") = py::none(), py::arg("max_vertices") = py::none(),
-        py::arg("concavity") = py::none(), py::arg("force") = false,
-        py::arg("progress") = py::none());
+        py::arg("concavity") = py::none(), py::arg("max_concavity") = py::none(),
+        py::arg("force") = false, py::arg("progress") = py::none());
   m.def("unpack", &Unpack, R"(Decode a packed GLB back to plain glTF (.glb) or a mesh file.
 
 Parameters
