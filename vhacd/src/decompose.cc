@@ -98,16 +98,6 @@ namespace {
 
 using internal::Vec3;
 
-struct Clock {
-  std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
-  double Lap() {
-    const auto t = std::chrono::steady_clock::now();
-    const double s = std::chrono::duration<double>(t - t0).count();
-    t0 = t;
-    return s;
-  }
-};
-
 Result Fail(Status s, std::string message) {
   Result r;
   r.status = s;
@@ -119,17 +109,14 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   std::string why;
   Status st = ValidateParameters(params, &why);
   if (st != Status::kOk) return Fail(st, why);
-  const int threads = params.num_threads > 0
-                          ? static_cast<int>(params.num_threads)
-                          : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  internal::Context ctx(observer, threads);
+  internal::Context ctx(observer, internal::ThreadCount(params.num_threads));
   internal::InputMesh input;
   st = internal::ReadMesh(view, &ctx, &input, &why);
   if (st != Status::kOk) return Fail(st, why);
   Result result;
   Report& rep = result.report;
   rep.closed_input = input.closed;
-  Clock clock, total;
+  internal::Clock clock, total;
 
   // Normalization.
   Vec3 center;

@@ -70,16 +70,6 @@ namespace {
 using internal::Vec3;
 using Tri = std::array<uint32_t, 3>;
 
-struct Clock {
-  std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
-  double Lap() {
-    const auto t = std::chrono::steady_clock::now();
-    const double s = std::chrono::duration<double>(t - t0).count();
-    t0 = t;
-    return s;
-  }
-};
-
 Result Fail(Status s, std::string message) {
   Result r;
   r.status = s;
@@ -293,17 +283,14 @@ Result DecomposeHacdImpl(const MeshView& view, const HacdParameters& params, Obs
   std::string why;
   Status st = ValidateHacdParameters(params, &why);
   if (st != Status::kOk) return Fail(st, why);
-  const int threads = params.num_threads > 0
-                          ? static_cast<int>(params.num_threads)
-                          : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  internal::Context ctx(observer, threads);
+  internal::Context ctx(observer, internal::ThreadCount(params.num_threads));
   internal::InputMesh input;
   st = internal::ReadMesh(view, &ctx, &input, &why);
   if (st != Status::kOk) return Fail(st, why);
   Result result;
   Report& rep = result.report;
   rep.closed_input = input.closed;
-  Clock clock, total;
+  internal::Clock clock, total;
 
   // Normalization: centre of the box, then the diagonal scaled to 2 * scale_factor.
   Vec3 center;
