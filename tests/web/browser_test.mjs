@@ -4,11 +4,9 @@
 // --work holds torus.glb, torus.s3d and torus.glb.ref.json (tests/web/make_glb.mjs) and receives
 // the screenshots. Exit 0 pass, 1 fail, 77 skip.
 import fs from 'node:fs';
-import os from 'node:os';
 import path from 'node:path';
-import { startServer } from './static_server.mjs';
+import { requirePlaywright, startSession } from './chromium_session.mjs';
 
-const SKIP = 77;
 const a = {};
 for (let i = 2; i + 1 < process.argv.length; i += 2) a[process.argv[i].replace(/^--/, '')] = process.argv[i + 1];
 const repo = path.resolve(a.repo || '.');
@@ -23,40 +21,20 @@ function check(cond, what) {
 const close = (x, y, tol = 1e-5) => Math.abs(x - y) <= tol * Math.max(1, Math.abs(y));
 const closeVec = (u, v) => u.length === v.length && u.every((x, i) => close(x, v[i]));
 
-let playwright;
-try {
-  playwright = await import('playwright-core');
-} catch {
-  console.log('SKIP: playwright-core is not installed (npm ci at the repository root)');
-  process.exit(SKIP);
-}
-if (!fs.existsSync(chromiumPath)) {
-  console.log(`SKIP: ${chromiumPath} not found (apt-get install chromium)`);
-  process.exit(SKIP);
-}
+const playwright = await requirePlaywright({ chromiumPath, repo });
 const ref = JSON.parse(fs.readFileSync(path.join(work, 'torus.glb.ref.json'), 'utf8'));
 
-const { server, url } = await startServer({ root: repo, mounts: { '/__work/': work } });
-const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'hullpack-chromium-'));
-const watchdog = setTimeout(() => {
-  console.log('FAIL: browser test timed out');
-  process.exit(1);
-}, 150000);
-let context;
+const session = await startSession({
+  playwright, chromiumPath, repo, work, profilePrefix: 'hullpack-chromium-', what: 'browser test', timeoutMs: 150000,
+});
+const { url } = session;
 try {
-  context = await playwright.chromium.launchPersistentContext(profile, {
-    executablePath: chromiumPath,
-    headless: true,
-    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-      '--disable-background-networking', '--disable-component-update', '--disable-sync',
-      '--enable-unsafe-swiftshader', '--use-angle=swiftshader'],
+  // Nothing but the local server (session.launch aborts every other request).
+  const page = await session.launch({
+    extraArgs: ['--enable-unsafe-swiftshader', '--use-angle=swiftshader'],
     viewport: { width: 800, height: 600 },
-    timeout: 60000,
   });
-  // Nothing but the local server.
-  await context.route((u) => !u.href.startsWith(url) && !u.href.startsWith('data:') && !u.href.startsWith('blob:'),
-    (route) => route.abort());
-  const page = context.pages()[0] || await context.newPage();
+  const context = session.context;
   page.setDefaultTimeout(60000);
   const errors = [];
   page.on('pageerror', (e) => errors.push(String(e)));
@@ -367,10 +345,7 @@ try {
   console.log(`FAIL: ${e && e.stack ? e.stack : e}`);
   failures += 1;
 } finally {
-  clearTimeout(watchdog);
-  if (context) await context.close().catch(() => {});
-  server.close();
-  fs.rmSync(profile, { recursive: true, force: true });
+  await session.close();
 }
 console.log(failures ? `${failures} check(s) failed` : 'all browser checks passed');
 process.exit(failures ? 1 : 0);

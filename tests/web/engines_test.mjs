@@ -7,11 +7,9 @@
 // the hull points the C++ reader reads. Nothing is fetched but the local server (node_modules).
 // Exit 0 pass, 1 fail, 77 skip.
 import fs from 'node:fs';
-import os from 'node:os';
 import path from 'node:path';
-import { startServer } from './static_server.mjs';
+import { requirePlaywright, startSession } from './chromium_session.mjs';
 
-const SKIP = 77;
 const a = {};
 for (let i = 2; i + 1 < process.argv.length; i += 2) a[process.argv[i].replace(/^--/, '')] = process.argv[i + 1];
 if (!a.repo || !a.work) {
@@ -28,23 +26,11 @@ function check(cond, what) {
   if (!cond) failures += 1;
 }
 
-let playwright;
-try {
-  playwright = await import('playwright-core');
-} catch {
-  console.log('SKIP: playwright-core is not installed (npm ci at the repository root)');
-  process.exit(SKIP);
-}
-for (const pkg of ['three', '@babylonjs/core', '@babylonjs/loaders', '@babylonjs/havok', '@dimforge/rapier3d-compat']) {
-  if (!fs.existsSync(path.join(repo, 'node_modules', pkg))) {
-    console.log(`SKIP: npm package ${pkg} is not installed (npm ci at the repository root)`);
-    process.exit(SKIP);
-  }
-}
-if (!fs.existsSync(chromiumPath)) {
-  console.log(`SKIP: ${chromiumPath} not found (apt-get install chromium)`);
-  process.exit(SKIP);
-}
+const playwright = await requirePlaywright({
+  chromiumPath,
+  repo,
+  packages: ['three', '@babylonjs/core', '@babylonjs/loaders', '@babylonjs/havok', '@dimforge/rapier3d-compat'],
+});
 
 // Same points: every hull, every coordinate, as float32 (the C++ reader prints 9 digits).
 function samePoints(engine, native) {
@@ -58,25 +44,12 @@ function samePoints(engine, native) {
   return '';
 }
 
-const { server, url } = await startServer({ root: repo, mounts: { '/__work/': work } });
-const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'hullpack-engines-'));
-const watchdog = setTimeout(() => {
-  console.log('FAIL: engine test timed out');
-  process.exit(1);
-}, 200000);
-let context;
+const session = await startSession({
+  playwright, chromiumPath, repo, work, profilePrefix: 'hullpack-engines-', what: 'engine test', timeoutMs: 200000,
+});
+const { url, outside } = session;
 try {
-  context = await playwright.chromium.launchPersistentContext(profile, {
-    executablePath: chromiumPath,
-    headless: true,
-    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-      '--disable-background-networking', '--disable-component-update', '--disable-sync'],
-    timeout: 60000,
-  });
-  const outside = [];
-  await context.route((u) => !u.href.startsWith(url) && !u.href.startsWith('data:') && !u.href.startsWith('blob:'),
-    (route) => { outside.push(route.request().url()); route.abort(); });
-  const page = context.pages()[0] || await context.newPage();
+  const page = await session.launch();
   page.setDefaultTimeout(120000);
   const errors = [];
   page.on('pageerror', (e) => errors.push(String(e)));
@@ -120,10 +93,7 @@ try {
   console.log(`FAIL: ${e && e.stack ? e.stack : e}`);
   failures += 1;
 } finally {
-  clearTimeout(watchdog);
-  if (context) await context.close().catch(() => {});
-  server.close();
-  fs.rmSync(profile, { recursive: true, force: true });
+  await session.close();
 }
 console.log(failures ? `${failures} check(s) failed` : 'all engine checks passed');
 process.exit(failures ? 1 : 0);

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,27 @@ inline bool ListFiles(const std::string& folder, const std::vector<std::string>&
   std::sort(out->begin(), out->end());
   return true;
 }
+
+namespace bench {
+
+// The median of `v` (the mean of the two middle values for an even count); -1 when `v` is empty,
+// which Fmt prints as "-".
+inline double Median(std::vector<double> v) {
+  if (v.empty()) return -1.0;
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// `v` printed with the printf format `f`; "-" for a negative value (not measured).
+inline std::string Fmt(double v, const char* f = "%.4f") {
+  if (v < 0) return "-";
+  char b[64];
+  std::snprintf(b, sizeof(b), f, v);
+  return b;
+}
+
+}  // namespace bench
 
 // Median wall time of `repeats` calls, in milliseconds.
 template <typename F>

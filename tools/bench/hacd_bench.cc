@@ -58,7 +58,9 @@
 
 namespace {
 
+using hullpack::bench::Fmt;
 using hullpack::bench::HullMetrics;
+using hullpack::bench::Median;
 using hullpack::bench::MeshMeasure;
 using hullpack::bench::MetricsOptions;
 using hullpack::bench::Soup;
@@ -69,20 +71,6 @@ double CpuSeconds() {
   timespec ts{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
   return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
-
-double Median(std::vector<double> v) {
-  if (v.empty()) return -1;
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-std::string Fmt(double v, const char* f = "%.4f") {
-  if (v < 0) return "-";
-  char b[64];
-  std::snprintf(b, sizeof(b), f, v);
-  return b;
 }
 
 struct Mesh {

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <limits>
 
+#include "common/xml_escape.h"
+
 namespace hullpack {
 namespace {
 
@@ -116,33 +118,6 @@ Scale MakeScale(double min, double max, bool log) {
 }
 
 }  // namespace
-
-std::string XmlEscape(const std::string& text) {
-  std::string out;
-  out.reserve(text.size());
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&apos;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
 
 std::string RenderSvg(const Plot& plot, size_t* drawn) {
   double xmin = std::numeric_limits<double>::infinity(), xmax = -xmin, ymin = xmin, ymax = -xmin;

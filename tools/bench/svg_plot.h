@@ -36,9 +36,6 @@ struct Plot {
 // drawn (points of series with markers). An empty plot still gives a valid document with its axes.
 std::string RenderSvg(const Plot& plot, size_t* drawn = nullptr);
 
-// Text with &, <, >, " and ' escaped for XML character data and attribute values.
-std::string XmlEscape(const std::string& text);
-
 }  // namespace hullpack
 
 #endif  // HULLPACK_TOOLS_BENCH_SVG_PLOT_H_

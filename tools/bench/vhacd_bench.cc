@@ -55,7 +55,9 @@
 
 namespace {
 
+using hullpack::bench::Fmt;
 using hullpack::bench::HullMetrics;
+using hullpack::bench::Median;
 using hullpack::bench::MeshMeasure;
 using hullpack::bench::MetricsOptions;
 using hullpack::bench::Soup;
@@ -280,20 +282,6 @@ struct Row {
   std::map<std::string, double> own;  // hullpack's own report
   double seconds = 0.0, library_seconds = -1.0, peak_mb = 0.0;
 };
-
-double Median(std::vector<double> v) {
-  if (v.empty()) return -1.0;
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-std::string Fmt(double v, const char* f = "%.4f") {
-  if (v < 0) return "-";
-  char b[64];
-  std::snprintf(b, sizeof(b), f, v);
-  return b;
-}
 
 std::vector<std::string> SplitComma(const std::string& s) {
   std::vector<std::string> out;

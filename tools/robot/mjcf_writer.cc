@@ -1,5 +1,7 @@
 #include "robot/mjcf_writer.h"
 
+#include "common/xml_escape.h"
+
 namespace hullpack {
 
 std::string WriteMjcf(const RobotModel& model) {

@@ -38,8 +38,6 @@ std::string SanitizeName(const std::string& name);
 
 // A number as XML attribute text: shortest round-trip form, never NaN ("0" instead).
 std::string XmlNumber(double value);
-// Escapes & < > " for attribute values.
-std::string XmlEscape(const std::string& text);
 
 }  // namespace hullpack
 

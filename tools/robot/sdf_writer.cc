@@ -1,5 +1,7 @@
 #include "robot/sdf_writer.h"
 
+#include "common/xml_escape.h"
+
 namespace hullpack {
 namespace {
 

@@ -1,5 +1,7 @@
 #include "robot/urdf_writer.h"
 
+#include "common/xml_escape.h"
+
 namespace hullpack {
 
 std::string WriteUrdf(const RobotModel& model) {

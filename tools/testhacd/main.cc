@@ -46,12 +46,7 @@ std::optional<int> ParseCommandLine(std::vector<std::string> args, CommandLine* 
                         "HACD convex decomposition (dual-graph clustering of the surface, after "
                         "quadric\nsimplification) of every mesh of INPUT, as one soup. Defaults: "
                         "the HACD parameter table.");
-  cli.Positional("INPUT", &inputs, 1, 1);
-  cli.String("-o, --output", "HULLS", &cmd->output,
-             "the hulls, one mesh each (.obj .wrl .glb .off .ply)");
-  cli.String("--report", "FILE.json", &cmd->report_path,
-             "hull count, error measures, per-stage seconds, per-hull volume");
-  cli.String("--log", "FILE", &cmd->log_path, "the library's log messages");
+  hullpack::AddFileOptions(&cli, &inputs, &cmd->output, &cmd->report_path, &cmd->log_path);
   cli.Value("--preset", "default|recommended",
             "the parameter table, or the recommended line 2 100 0 1 1 30 2000",
             [&p](const std::string& v) {
@@ -131,13 +126,7 @@ int main(int argc, char** argv) {
 
   std::vector<double> points;
   std::vector<uint32_t> indices;
-  const std::string read_error = hullpack::ReadSoup(input, &points, &indices);
-  if (!read_error.empty()) {
-    std::fprintf(stderr, "testHACD: %s\n", read_error.c_str());
-    return 1;
-  }
-  std::printf("input: %s, %zu points, %zu triangles\n", input.c_str(), points.size() / 3,
-              indices.size() / 3);
+  if (!hullpack::ReadInput("testHACD", input, &points, &indices)) return 1;
   hullpack::ProgressLine progress(log_path);
   if (!log_path.empty() && !progress.log_ok()) {
     std::fprintf(stderr, "testHACD: cannot write %s\n", log_path.c_str());
@@ -148,9 +137,7 @@ int main(int argc, char** argv) {
                                                        indices.data(), indices.size() / 3),
                            p, &progress);
   if (!r.ok()) {
-    std::fprintf(stderr, "\ntestHACD: %s: %s\n", vhacd::StatusName(r.status), r.message.c_str());
-    if (!report_path.empty()) hullpack::WriteDecompositionReport(report_path, input, "hacd", r);
-    return 1;
+    return hullpack::ReportFailure("testHACD", input, report_path, "hacd", r);
   }
   const vhacd::Report& rep = r.report;
   if (rep.concavity >= 0)
@@ -164,20 +151,5 @@ int main(int argc, char** argv) {
   else
     std::printf("hulls: %zu (from %u triangles), %.2f s\n", r.hulls.size(), rep.parts_before_merge,
                 rep.seconds_total);
-  if (!report_path.empty()) {
-    if (!hullpack::WriteDecompositionReport(report_path, input, "hacd", r)) {
-      std::fprintf(stderr, "testHACD: cannot write %s\n", report_path.c_str());
-      return 1;
-    }
-    std::printf("wrote %s\n", report_path.c_str());
-  }
-  if (!output.empty()) {
-    const std::string write_error = hullpack::WriteHullScene(r, output);
-    if (!write_error.empty()) {
-      std::fprintf(stderr, "testHACD: %s\n", write_error.c_str());
-      return 1;
-    }
-    std::printf("wrote %s\n", output.c_str());
-  }
-  return 0;
+  return hullpack::WriteResults("testHACD", input, report_path, output, "hacd", r);
 }

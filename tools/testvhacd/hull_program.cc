@@ -110,4 +110,53 @@ std::string ReadSoup(const std::string& input, std::vector<double>* points,
   return "";
 }
 
+void AddFileOptions(CliArgs* cli, std::vector<std::string>* inputs, std::string* output,
+                    std::string* report_path, std::string* log_path) {
+  cli->Positional("INPUT", inputs, 1, 1);
+  cli->String("-o, --output", "HULLS", output,
+              "the hulls, one mesh each (.obj .wrl .glb .off .ply)");
+  cli->String("--report", "FILE.json", report_path,
+              "hull count, error measures, per-stage seconds, per-hull volume");
+  cli->String("--log", "FILE", log_path, "the library's log messages");
+}
+
+bool ReadInput(const char* program, const std::string& input, std::vector<double>* points,
+               std::vector<uint32_t>* indices) {
+  const std::string read_error = ReadSoup(input, points, indices);
+  if (!read_error.empty()) {
+    std::fprintf(stderr, "%s: %s\n", program, read_error.c_str());
+    return false;
+  }
+  std::printf("input: %s, %zu points, %zu triangles\n", input.c_str(), points->size() / 3,
+              indices->size() / 3);
+  return true;
+}
+
+int ReportFailure(const char* program, const std::string& input, const std::string& report_path,
+                  const std::string& method, const vhacd::Result& r) {
+  std::fprintf(stderr, "\n%s: %s: %s\n", program, vhacd::StatusName(r.status), r.message.c_str());
+  if (!report_path.empty()) WriteDecompositionReport(report_path, input, method, r);
+  return 1;
+}
+
+int WriteResults(const char* program, const std::string& input, const std::string& report_path,
+                 const std::string& output, const std::string& method, const vhacd::Result& r) {
+  if (!report_path.empty()) {
+    if (!WriteDecompositionReport(report_path, input, method, r)) {
+      std::fprintf(stderr, "%s: cannot write %s\n", program, report_path.c_str());
+      return 1;
+    }
+    std::printf("wrote %s\n", report_path.c_str());
+  }
+  if (!output.empty()) {
+    const std::string write_error = WriteHullScene(r, output);
+    if (!write_error.empty()) {
+      std::fprintf(stderr, "%s: %s\n", program, write_error.c_str());
+      return 1;
+    }
+    std::printf("wrote %s\n", output.c_str());
+  }
+  return 0;
+}
+
 }  // namespace hullpack

@@ -1,5 +1,5 @@
-// Pieces shared by the decomposition programs (testVHACD, testHACD): the progress line and log
-// file, the JSON report and the hull scene writer.
+// Pieces shared by the decomposition programs (testVHACD, testHACD): the file options, reading the
+// input, the progress line and log file, the JSON report and the hull scene writer.
 #ifndef HULLPACK_TOOLS_TESTVHACD_HULL_PROGRAM_H_
 #define HULLPACK_TOOLS_TESTVHACD_HULL_PROGRAM_H_
 
@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "common/cli_args.h"
 #include "vhacd/vhacd.h"
 
 namespace hullpack {
@@ -41,6 +42,23 @@ std::string WriteHullScene(const vhacd::Result& r, const std::string& output);
 // Reads every mesh of `input` (node transforms applied) as one soup. "" on success, else the error.
 std::string ReadSoup(const std::string& input, std::vector<double>* points,
                      std::vector<uint32_t>* indices);
+
+// Declares the options every decomposition program has: INPUT, -o/--output, --report, --log.
+void AddFileOptions(CliArgs* cli, std::vector<std::string>* inputs, std::string* output,
+                    std::string* report_path, std::string* log_path);
+
+// ReadSoup, then the "input:" line on stdout; false after naming the error on stderr.
+bool ReadInput(const char* program, const std::string& input, std::vector<double>* points,
+               std::vector<uint32_t>* indices);
+
+// A failed decomposition: the status on stderr and, with a path, the report. Returns exit code 1.
+int ReportFailure(const char* program, const std::string& input, const std::string& report_path,
+                  const std::string& method, const vhacd::Result& r);
+
+// A successful decomposition: the report and the hulls where paths are given, a "wrote" line for
+// each. Returns the exit code.
+int WriteResults(const char* program, const std::string& input, const std::string& report_path,
+                 const std::string& output, const std::string& method, const vhacd::Result& r);
 
 }  // namespace hullpack
 

@@ -79,12 +79,7 @@ std::optional<int> ParseCommandLine(const std::vector<std::string>& args, Comman
   hullpack::CliArgs cli("testVHACD", "INPUT [-o HULLS] [options]",
                         "Approximate convex decomposition (V-HACD 2.0) of every mesh of INPUT "
                         "(.obj .off .wrl .ply .stl\n.glb .gltf .fbx .dae), as one soup.");
-  cli.Positional("INPUT", &inputs, 1, 1);
-  cli.String("-o, --output", "HULLS", &cmd->output,
-             "the hulls, one mesh each (.obj .wrl .glb .off .ply)");
-  cli.String("--report", "FILE.json", &cmd->report_path,
-             "hull count, error measures, per-stage seconds, per-hull volume");
-  cli.String("--log", "FILE", &cmd->log_path, "the library's log messages");
+  hullpack::AddFileOptions(&cli, &inputs, &cmd->output, &cmd->report_path, &cmd->log_path);
   cli.Value("--quality, --preset", "default|high", "parameter preset the other options refine",
             [&p](const std::string& v) {
               if (v != "default" && v != "high") return "takes default or high, not '" + v + "'";
@@ -150,13 +145,7 @@ std::optional<int> ParseCommandLine(const std::vector<std::string>& args, Comman
 std::optional<int> Run(const CommandLine& cmd, vhacd::Result* result) {
   std::vector<double> points;
   std::vector<uint32_t> indices;
-  const std::string read_error = hullpack::ReadSoup(cmd.input, &points, &indices);
-  if (!read_error.empty()) {
-    std::fprintf(stderr, "testVHACD: %s\n", read_error.c_str());
-    return 1;
-  }
-  std::printf("input: %s, %zu points, %zu triangles\n", cmd.input.c_str(), points.size() / 3,
-              indices.size() / 3);
+  if (!hullpack::ReadInput("testVHACD", cmd.input, &points, &indices)) return 1;
   hullpack::ProgressLine progress(cmd.log_path);
   if (!cmd.log_path.empty() && !progress.log_ok()) {
     std::fprintf(stderr, "testVHACD: cannot write %s\n", cmd.log_path.c_str());
@@ -171,10 +160,7 @@ std::optional<int> Run(const CommandLine& cmd, vhacd::Result* result) {
 // The summary line on stdout, the report and the hulls; returns the exit code.
 int Report(const CommandLine& cmd, const vhacd::Result& r) {
   if (!r.ok()) {
-    std::fprintf(stderr, "\ntestVHACD: %s: %s\n", vhacd::StatusName(r.status), r.message.c_str());
-    if (!cmd.report_path.empty())
-      hullpack::WriteDecompositionReport(cmd.report_path, cmd.input, "vhacd", r);
-    return 1;
+    return hullpack::ReportFailure("testVHACD", cmd.input, cmd.report_path, "vhacd", r);
   }
   const vhacd::Report& rep = r.report;
   std::printf(
@@ -185,22 +171,7 @@ int Report(const CommandLine& cmd, const vhacd::Result& r) {
       rep.volume_iou >= 0 ? hullpack::JsonNumber(rep.volume_iou).c_str() : "n/a",
       rep.seconds_total);
   if (!rep.target_reached) std::printf("target not reached: %s\n", rep.target_note.c_str());
-  if (!cmd.report_path.empty()) {
-    if (!hullpack::WriteDecompositionReport(cmd.report_path, cmd.input, "vhacd", r)) {
-      std::fprintf(stderr, "testVHACD: cannot write %s\n", cmd.report_path.c_str());
-      return 1;
-    }
-    std::printf("wrote %s\n", cmd.report_path.c_str());
-  }
-  if (!cmd.output.empty()) {
-    const std::string write_error = hullpack::WriteHullScene(r, cmd.output);
-    if (!write_error.empty()) {
-      std::fprintf(stderr, "testVHACD: %s\n", write_error.c_str());
-      return 1;
-    }
-    std::printf("wrote %s\n", cmd.output.c_str());
-  }
-  return 0;
+  return hullpack::WriteResults("testVHACD", cmd.input, cmd.report_path, cmd.output, "vhacd", r);
 }
 
 }  // namespace

@@ -1,9 +1,15 @@
 #include "context.h"
 
 #include <algorithm>
+#include <thread>
 
 namespace vhacd {
 namespace internal {
+
+int ThreadCount(uint32_t requested) {
+  return requested > 0 ? static_cast<int>(requested)
+                       : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
 
 namespace {
 int64_t NowNs() {

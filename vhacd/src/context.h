@@ -13,6 +13,20 @@
 namespace vhacd {
 namespace internal {
 
+// The worker threads for a requested count: the count itself, or one per hardware thread for 0.
+int ThreadCount(uint32_t requested);
+
+// Seconds between laps of a steady clock, for the per-stage times of a report.
+struct Clock {
+  std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
+  double Lap() {
+    const auto t = std::chrono::steady_clock::now();
+    const double s = std::chrono::duration<double>(t - t0).count();
+    t0 = t;
+    return s;
+  }
+};
+
 class Context {
  public:
   Context(Observer* observer, int num_threads) : observer_(observer), num_threads_(num_threads) {}

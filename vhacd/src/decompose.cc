@@ -22,6 +22,7 @@
 #include "thread_pool.h"
 #include "vhacd/vhacd.h"
 #include "voxelizer.h"
+#include "working_frame.h"
 
 namespace vhacd {
 
@@ -97,16 +98,6 @@ namespace {
 
 using internal::Vec3;
 
-struct Clock {
-  std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
-  double Lap() {
-    const auto t = std::chrono::steady_clock::now();
-    const double s = std::chrono::duration<double>(t - t0).count();
-    t0 = t;
-    return s;
-  }
-};
-
 Result Fail(Status s, std::string message) {
   Result r;
   r.status = s;
@@ -114,42 +105,25 @@ Result Fail(Status s, std::string message) {
   return r;
 }
 
-double Quantize(double x) {
-  const double q = 1099511627776.0;  // 2^40: makes the normalized mesh scale-invariant
-  return std::nearbyint(x * q) / q;
-}
-
 Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* observer) {
   std::string why;
   Status st = ValidateParameters(params, &why);
   if (st != Status::kOk) return Fail(st, why);
-  const int threads = params.num_threads > 0
-                          ? static_cast<int>(params.num_threads)
-                          : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  internal::Context ctx(observer, threads);
+  internal::Context ctx(observer, internal::ThreadCount(params.num_threads));
   internal::InputMesh input;
   st = internal::ReadMesh(view, &ctx, &input, &why);
   if (st != Status::kOk) return Fail(st, why);
   Result result;
   Report& rep = result.report;
   rep.closed_input = input.closed;
-  Clock clock, total;
+  internal::Clock clock, total;
 
   // Normalization.
-  Vec3 lo = input.points[0], hi = input.points[0];
-  for (const Vec3& p : input.points) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  const Vec3 center = 0.5 * (lo + hi);
-  const double scale = (hi - lo).maxCoeff();
-  if (!(scale > 0) || !std::isfinite(scale) || !center.allFinite())
+  Vec3 center;
+  double scale = 0.0;
+  std::vector<Vec3> pn;
+  if (!internal::NormalizeToUnitBox(input.points, &center, &scale, &pn))
     return Fail(Status::kInvalidMesh, "the mesh has a degenerate or overflowing bounding box");
-  std::vector<Vec3> pn(input.points.size());
-  for (size_t i = 0; i < pn.size(); ++i) {
-    const Vec3 q = (input.points[i] - center) / scale;
-    pn[i] = Vec3(Quantize(q[0]), Quantize(q[1]), Quantize(q[2]));
-  }
   Eigen::Matrix3d rot = Eigen::Matrix3d::Identity();
   if (params.pca) {
     Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
@@ -489,20 +463,8 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   if (rep.hulls.size() != hulls.size()) rep.hulls.assign(hulls.size(), HullReport());
   for (size_t i = 0; i < hulls.size(); ++i) {
     ConvexHull out;
-    out.points.reserve(hulls[i].vertices.size() * 3);
-    for (const Vec3& g : hulls[i].vertices) {
-      const Vec3 w = to_world(g);
-      out.points.insert(out.points.end(), {w[0], w[1], w[2]});
-    }
-    for (const auto& t : hulls[i].triangles)
-      out.triangles.insert(out.triangles.end(), {t[0], t[1], t[2]});
-    // Volumes of extreme-scale inputs may leave the double range: clamp, never return Inf.
-    out.volume = std::min(hulls[i].Volume() * vol_scale, std::numeric_limits<double>::max());
-    const Vec3 c = to_world(hulls[i].Centroid());
-    for (int k = 0; k < 3; ++k) out.center[k] = c[k];
-    bool finite = std::isfinite(out.volume) && c.allFinite();
-    for (double v : out.points) finite = finite && std::isfinite(v);
-    if (!finite) return Fail(Status::kInternalError, "a hull has a non-finite coordinate");
+    if (!internal::ToOutputHull(hulls[i], to_world, vol_scale, &out))
+      return Fail(Status::kInternalError, "a hull has a non-finite coordinate");
     rep.hulls[i].vertex_count = static_cast<uint32_t>(hulls[i].vertices.size());
     rep.hulls[i].volume = out.volume;
     result.hulls.push_back(std::move(out));

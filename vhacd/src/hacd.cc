@@ -23,6 +23,7 @@
 #include "simplify_qem.h"
 #include "thread_pool.h"
 #include "voxelizer.h"
+#include "working_frame.h"
 
 namespace vhacd {
 
@@ -69,26 +70,11 @@ namespace {
 using internal::Vec3;
 using Tri = std::array<uint32_t, 3>;
 
-struct Clock {
-  std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
-  double Lap() {
-    const auto t = std::chrono::steady_clock::now();
-    const double s = std::chrono::duration<double>(t - t0).count();
-    t0 = t;
-    return s;
-  }
-};
-
 Result Fail(Status s, std::string message) {
   Result r;
   r.status = s;
   r.message = std::move(message);
   return r;
-}
-
-double Quantize(double x) {
-  const double q = 1099511627776.0;  // 2^40: makes the normalized mesh scale-invariant
-  return std::nearbyint(x * q) / q;
 }
 
 // The clustering state: the dual graph whose nodes are clusters.
@@ -297,35 +283,25 @@ Result DecomposeHacdImpl(const MeshView& view, const HacdParameters& params, Obs
   std::string why;
   Status st = ValidateHacdParameters(params, &why);
   if (st != Status::kOk) return Fail(st, why);
-  const int threads = params.num_threads > 0
-                          ? static_cast<int>(params.num_threads)
-                          : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  internal::Context ctx(observer, threads);
+  internal::Context ctx(observer, internal::ThreadCount(params.num_threads));
   internal::InputMesh input;
   st = internal::ReadMesh(view, &ctx, &input, &why);
   if (st != Status::kOk) return Fail(st, why);
   Result result;
   Report& rep = result.report;
   rep.closed_input = input.closed;
-  Clock clock, total;
+  internal::Clock clock, total;
 
   // Normalization: centre of the box, then the diagonal scaled to 2 * scale_factor.
-  Vec3 lo = input.points[0], hi = input.points[0];
-  for (const Vec3& p : input.points) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  const Vec3 center = 0.5 * (lo + hi);
-  const double extent = (hi - lo).maxCoeff();
-  if (!(extent > 0) || !std::isfinite(extent) || !center.allFinite())
+  Vec3 center;
+  double extent = 0.0;
+  std::vector<Vec3> pq;
+  if (!internal::NormalizeToUnitBox(input.points, &center, &extent, &pq))
     return Fail(Status::kInvalidMesh, "the mesh has a degenerate or overflowing bounding box");
-  std::vector<Vec3> pq(input.points.size());
   Vec3 qlo = Vec3::Constant(HUGE_VAL), qhi = -qlo;
-  for (size_t i = 0; i < pq.size(); ++i) {
-    const Vec3 q = (input.points[i] - center) / extent;
-    pq[i] = Vec3(Quantize(q[0]), Quantize(q[1]), Quantize(q[2]));
-    qlo = qlo.cwiseMin(pq[i]);
-    qhi = qhi.cwiseMax(pq[i]);
+  for (const Vec3& p : pq) {
+    qlo = qlo.cwiseMin(p);
+    qhi = qhi.cwiseMax(p);
   }
   const double qdiag = (qhi - qlo).norm();
   const double to_norm = 2.0 * params.scale_factor / qdiag;
@@ -535,19 +511,8 @@ Result DecomposeHacdImpl(const MeshView& view, const HacdParameters& params, Obs
   if (rep.hulls.size() != hulls.size()) rep.hulls.assign(hulls.size(), HullReport());
   for (size_t i = 0; i < hulls.size(); ++i) {
     ConvexHull out;
-    out.points.reserve(hulls[i].vertices.size() * 3);
-    for (const Vec3& g : hulls[i].vertices) {
-      const Vec3 w = to_world(g);
-      out.points.insert(out.points.end(), {w[0], w[1], w[2]});
-    }
-    for (const auto& t : hulls[i].triangles)
-      out.triangles.insert(out.triangles.end(), {t[0], t[1], t[2]});
-    out.volume = std::min(hulls[i].Volume() * vol_scale, std::numeric_limits<double>::max());
-    const Vec3 c = to_world(hulls[i].Centroid());
-    for (int k = 0; k < 3; ++k) out.center[k] = c[k];
-    bool finite = std::isfinite(out.volume) && c.allFinite();
-    for (double v : out.points) finite = finite && std::isfinite(v);
-    if (!finite) return Fail(Status::kInternalError, "a hull has a non-finite coordinate");
+    if (!internal::ToOutputHull(hulls[i], to_world, vol_scale, &out))
+      return Fail(Status::kInternalError, "a hull has a non-finite coordinate");
     rep.hulls[i].vertex_count = static_cast<uint32_t>(hulls[i].vertices.size());
     rep.hulls[i].volume = out.volume;
     result.hulls.push_back(std::move(out));

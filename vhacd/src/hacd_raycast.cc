@@ -56,6 +56,22 @@ uint32_t RayCaster::Build(uint32_t first, uint32_t count, const std::vector<Vec3
   return id;
 }
 
+bool RayCaster::HitTriangle(uint32_t tri, const Vec3& origin, const Vec3& dir, double* t) const {
+  const Vec3& a = points_[triangles_[tri][0]];
+  const Vec3 e1 = points_[triangles_[tri][1]] - a, e2 = points_[triangles_[tri][2]] - a;
+  const Vec3 pv = dir.cross(e2);
+  const double det = e1.dot(pv);
+  if (!(std::fabs(det) > 1e-300)) return false;
+  const Vec3 tv = origin - a;
+  const double u = tv.dot(pv) / det;
+  if (u < 0 || u > 1) return false;
+  const Vec3 qv = tv.cross(e1);
+  const double v = dir.dot(qv) / det;
+  if (v < 0 || u + v > 1) return false;
+  *t = e2.dot(qv) / det;
+  return true;
+}
+
 bool RayCaster::Cast(const Vec3& origin, const Vec3& dir, double min_t, uint32_t skip,
                      uint32_t* triangle, double* t_out) const {
   if (nodes_.empty()) return false;
@@ -90,18 +106,8 @@ bool RayCaster::Cast(const Vec3& origin, const Vec3& dir, double min_t, uint32_t
     for (uint32_t i = n.first; i < n.first + n.count; ++i) {
       const uint32_t tri = order_[i];
       if (tri == skip) continue;
-      const Vec3& a = points_[triangles_[tri][0]];
-      const Vec3 e1 = points_[triangles_[tri][1]] - a, e2 = points_[triangles_[tri][2]] - a;
-      const Vec3 pv = dir.cross(e2);
-      const double det = e1.dot(pv);
-      if (!(std::fabs(det) > 1e-300)) continue;
-      const Vec3 tv = origin - a;
-      const double u = tv.dot(pv) / det;
-      if (u < 0 || u > 1) continue;
-      const Vec3 qv = tv.cross(e1);
-      const double v = dir.dot(qv) / det;
-      if (v < 0 || u + v > 1) continue;
-      const double t = e2.dot(qv) / det;
+      double t = 0.0;
+      if (!HitTriangle(tri, origin, dir, &t)) continue;
       if (t > min_t && (t < best || (t == best && tri < best_tri))) {
         best = t;
         best_tri = tri;
@@ -139,18 +145,8 @@ int RayCaster::CountHits(const Vec3& origin, const Vec3& dir) const {
     }
     for (uint32_t i = n.first; i < n.first + n.count; ++i) {
       const uint32_t tri = order_[i];
-      const Vec3& a = points_[triangles_[tri][0]];
-      const Vec3 e1 = points_[triangles_[tri][1]] - a, e2 = points_[triangles_[tri][2]] - a;
-      const Vec3 pv = dir.cross(e2);
-      const double det = e1.dot(pv);
-      if (!(std::fabs(det) > 1e-300)) continue;
-      const Vec3 tv = origin - a;
-      const double u = tv.dot(pv) / det;
-      if (u < 0 || u > 1) continue;
-      const Vec3 qv = tv.cross(e1);
-      const double v = dir.dot(qv) / det;
-      if (v < 0 || u + v > 1) continue;
-      if (e2.dot(qv) / det > 0) ++hits;
+      double t = 0.0;
+      if (HitTriangle(tri, origin, dir, &t) && t > 0) ++hits;
     }
   }
   return hits;

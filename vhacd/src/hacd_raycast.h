@@ -32,6 +32,8 @@ class RayCaster {
     uint32_t first = 0, count = 0;  // leaf: order_[first, first + count)
     uint32_t left = 0, right = 0;
   };
+  // Möller-Trumbore: *t is the ray parameter of the hit; false when the ray misses the triangle.
+  bool HitTriangle(uint32_t tri, const Vec3& origin, const Vec3& dir, double* t) const;
   int CountHits(const Vec3& origin, const Vec3& dir) const;
   uint32_t Build(uint32_t first, uint32_t count, const std::vector<Vec3>& centroids);
   const std::vector<Vec3>& points_;

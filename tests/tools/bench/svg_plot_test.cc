@@ -228,7 +228,5 @@ TEST(SvgPlot, SeriesKeepTheirColourAndLongNotesWrap) {
   EXPECT_EQ(Count(svg, ">" + std::string(60, 'b') + "</text>"), 1u);
 }
 
-TEST(SvgPlot, XmlEscape) { EXPECT_EQ(XmlEscape("a<b>&\"c'"), "a&lt;b&gt;&amp;&quot;c&apos;"); }
-
 }  // namespace
 }  // namespace hullpack

@@ -1,6 +1,6 @@
 // Drops a compound of convex hulls on a plane in Bullet (Debian's libbullet-dev): the native
-// physics reference of physics_test.cc and of the engine drop tests in tests/web/
-// (web_bullet_drop). Header-only test helper.
+// physics reference of physics_test.cc, robot_physics_test.cc and of the engine drop tests in
+// tests/web/ (web_bullet_drop). Header-only test helper.
 #ifndef HULLPACK_TESTS_TOOLS_PIPELINE_BULLET_DROP_H_
 #define HULLPACK_TESTS_TOOLS_PIPELINE_BULLET_DROP_H_
 
@@ -23,36 +23,58 @@ struct Drop {
   double tilt = 0;           // angle (radians) between the body's z axis and the world's
 };
 
+// A Bullet world with gravity along -z and the static ground plane z = 0.
+struct PlaneWorld {
+  btDefaultCollisionConfiguration config;
+  btCollisionDispatcher dispatcher{&config};
+  btDbvtBroadphase broadphase;
+  btSequentialImpulseConstraintSolver solver;
+  btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &config};
+  btStaticPlaneShape plane{btVector3(0, 0, 1), 0};
+  btRigidBody ground{btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &plane)};
+
+  PlaneWorld() {
+    world.setGravity(btVector3(0, 0, -9.81));
+    world.addRigidBody(&ground);
+  }
+  ~PlaneWorld() { world.removeRigidBody(&ground); }
+  PlaneWorld(const PlaneWorld&) = delete;
+  PlaneWorld& operator=(const PlaneWorld&) = delete;
+};
+
+// Convex hulls as one compound shape, each point moved by -offset (e.g. into a centre-of-mass
+// frame).
+struct HullCompound {
+  btCompoundShape compound;
+  std::vector<std::unique_ptr<btConvexHullShape>> parts;
+
+  explicit HullCompound(const std::vector<Mesh>& hulls, const double offset[3] = nullptr) {
+    const double zero[3] = {0, 0, 0};
+    const double* o = offset != nullptr ? offset : zero;
+    for (const Mesh& hull : hulls) {
+      auto shape = std::make_unique<btConvexHullShape>();
+      for (size_t v = 0; v < hull.vertex_count(); ++v) {
+        shape->addPoint(btVector3(hull.positions[v * 3] - o[0], hull.positions[v * 3 + 1] - o[1],
+                                  hull.positions[v * 3 + 2] - o[2]),
+                        false);
+      }
+      shape->recalcLocalAabb();
+      shape->setMargin(0.001f);
+      btTransform identity;
+      identity.setIdentity();
+      compound.addChildShape(identity, shape.get());
+      parts.push_back(std::move(shape));
+    }
+  }
+};
+
 // Drops the hull compound of `mesh` from `height` onto the plane z = 0 and simulates `seconds`.
 inline Drop DropOnPlane(const Mesh& mesh, const std::vector<Mesh>& hulls, double height,
                         double seconds) {
-  btDefaultCollisionConfiguration config;
-  btCollisionDispatcher dispatcher(&config);
-  btDbvtBroadphase broadphase;
-  btSequentialImpulseConstraintSolver solver;
-  btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &config);
-  world.setGravity(btVector3(0, 0, -9.81));
-
-  btStaticPlaneShape plane(btVector3(0, 0, 1), 0);
-  btRigidBody ground(btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &plane));
-  world.addRigidBody(&ground);
-
-  btCompoundShape compound;
-  std::vector<std::unique_ptr<btConvexHullShape>> parts;
-  for (const Mesh& hull : hulls) {
-    auto shape = std::make_unique<btConvexHullShape>();
-    for (size_t v = 0; v < hull.vertex_count(); ++v) {
-      shape->addPoint(
-          btVector3(hull.positions[v * 3], hull.positions[v * 3 + 1], hull.positions[v * 3 + 2]),
-          false);
-    }
-    shape->recalcLocalAabb();
-    shape->setMargin(0.001f);
-    btTransform identity;
-    identity.setIdentity();
-    compound.addChildShape(identity, shape.get());
-    parts.push_back(std::move(shape));
-  }
+  PlaneWorld pw;
+  btDiscreteDynamicsWorld& world = pw.world;
+  HullCompound hull_compound(hulls);
+  btCompoundShape& compound = hull_compound.compound;
   const btScalar mass = 1;
   btVector3 inertia;
   compound.calculateLocalInertia(mass, inertia);
@@ -79,7 +101,6 @@ inline Drop DropOnPlane(const Mesh& mesh, const std::vector<Mesh>& hulls, double
   const btVector3 up = end.getBasis() * btVector3(0, 0, 1);
   d.tilt = std::acos(std::min<btScalar>(1, std::max<btScalar>(-1, up.z())));
   world.removeRigidBody(&body);
-  world.removeRigidBody(&ground);
   return d;
 }
 

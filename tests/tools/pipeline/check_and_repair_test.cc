@@ -2,22 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include "attributed_quad.h"
+
 namespace hullpack {
 namespace {
 
-// Two triangles sharing an edge, with normals and UVs.
 Scene OneQuadScene() {
-  Mesh m;
-  m.name = "quad";
-  m.positions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
-  m.indices = {0, 1, 2, 0, 2, 3};
-  m.normals = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1};
-  m.tangents = {1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1};
-  m.uv_sets = {{0, 0, 1, 0, 1, 1, 0, 1}, {0, 0, 1, 0, 1, 1, 0, 1}};
-  m.colors = {0.5f, 1, 1, 1, 0.5f, 1, 1, 1, 0.5f, 1, 1, 1, 0.5f, 1, 1, 1};
-  m.material_ids = {0, 0};
   Scene s;
-  s.meshes.push_back(m);
+  s.meshes.push_back(testing::AttributedQuad());
   s.materials.resize(1);
   AddRootNodeForAllMeshes(s, "root");
   return s;

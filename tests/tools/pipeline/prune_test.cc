@@ -2,26 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include "attributed_quad.h"
+
 namespace hullpack {
 namespace {
 
-// Two triangles sharing an edge, with every optional attribute present.
-Mesh Quad() {
-  Mesh m;
-  m.name = "quad";
-  m.positions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
-  m.indices = {0, 1, 2, 0, 2, 3};
-  m.normals = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1};
-  m.tangents = {1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1};
-  m.uv_sets = {{0, 0, 1, 0, 1, 1, 0, 1}, {0, 0, 1, 0, 1, 1, 0, 1}};
-  m.colors = {0.5f, 1, 1, 1, 0.5f, 1, 1, 1, 0.5f, 1, 1, 1, 0.5f, 1, 1, 1};
-  m.material_ids = {0, 0};
-  return m;
-}
-
 Scene OneQuadScene() {
   Scene s;
-  s.meshes.push_back(Quad());
+  s.meshes.push_back(testing::AttributedQuad());
   s.materials.resize(1);
   s.materials[0].name = "plain";
   AddRootNodeForAllMeshes(s, "root");
@@ -71,7 +59,7 @@ TEST(Prune, TrailingUnusedUvSetGoes) {
 
 TEST(Prune, UnreferencedMeshesMaterialsAndImagesGoAndIndicesAreRemapped) {
   Scene s = OneQuadScene();
-  s.meshes.insert(s.meshes.begin(), Quad());  // mesh 0: shown by no node
+  s.meshes.insert(s.meshes.begin(), testing::AttributedQuad());  // mesh 0: shown by no node
   s.nodes[0].meshes = {1};
   s.materials.resize(3);
   s.materials[2].name = "used";

@@ -14,6 +14,7 @@
 #include <memory>
 #include <string>
 
+#include "../pipeline/bullet_drop.h"
 #include "common/file_util.h"
 #include "common/test_shapes.h"
 #include "io/scene_io.h"
@@ -60,16 +61,9 @@ LoadedUrdf LoadUrdf(const std::string& dir, const std::string& file) {
 // and its tilt.
 double DropOnPlane(const Mesh& mesh, const LoadedUrdf& u, btCollisionShape* shape, double drop,
                    double* tilt) {
-  btDefaultCollisionConfiguration config;
-  btCollisionDispatcher dispatcher(&config);
-  btGImpactCollisionAlgorithm::registerAlgorithm(&dispatcher);
-  btDbvtBroadphase broadphase;
-  btSequentialImpulseConstraintSolver solver;
-  btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &config);
-  world.setGravity(btVector3(0, 0, -9.81));
-  btStaticPlaneShape plane(btVector3(0, 0, 1), 0);
-  btRigidBody ground(btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &plane));
-  world.addRigidBody(&ground);
+  testing::PlaneWorld pw;
+  btGImpactCollisionAlgorithm::registerAlgorithm(&pw.dispatcher);
+  btDiscreteDynamicsWorld& world = pw.world;
 
   double min_z = 1e300;
   for (size_t v = 0; v < mesh.vertex_count(); ++v)
@@ -95,30 +89,13 @@ double DropOnPlane(const Mesh& mesh, const LoadedUrdf& u, btCollisionShape* shap
   const btVector3 up = end.getBasis() * btVector3(0, 0, 1);
   *tilt = std::acos(std::min<btScalar>(1, std::max<btScalar>(-1, up.z())));
   world.removeRigidBody(&body);
-  world.removeRigidBody(&ground);
   return lowest;
 }
 
 // The URDF's hulls as one compound (Bullet's body frame is the centre of mass: shifted by it).
 double DropHulls(const Mesh& mesh, const LoadedUrdf& u, double drop, double* tilt) {
-  btCompoundShape compound;
-  std::vector<std::unique_ptr<btConvexHullShape>> parts;
-  for (const Mesh& hull : u.hulls) {
-    auto shape = std::make_unique<btConvexHullShape>();
-    for (size_t v = 0; v < hull.vertex_count(); ++v) {
-      shape->addPoint(
-          btVector3(hull.positions[v * 3] - u.com[0], hull.positions[v * 3 + 1] - u.com[1],
-                    hull.positions[v * 3 + 2] - u.com[2]),
-          false);
-    }
-    shape->recalcLocalAabb();
-    shape->setMargin(0.001f);
-    btTransform identity;
-    identity.setIdentity();
-    compound.addChildShape(identity, shape.get());
-    parts.push_back(std::move(shape));
-  }
-  return DropOnPlane(mesh, u, &compound, drop, tilt);
+  testing::HullCompound hulls(u.hulls, u.com);
+  return DropOnPlane(mesh, u, &hulls.compound, drop, tilt);
 }
 
 // The exact mesh as a moving triangle mesh (GImpact), with the same mass and inertia.

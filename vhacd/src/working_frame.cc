@@ -1,0 +1,56 @@
+#include "working_frame.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace vhacd {
+namespace internal {
+
+namespace {
+
+double Quantize(double x) {
+  const double q = 1099511627776.0;  // 2^40: makes the normalized mesh scale-invariant
+  return std::nearbyint(x * q) / q;
+}
+
+}  // namespace
+
+bool NormalizeToUnitBox(const std::vector<Vec3>& points, Vec3* center, double* scale,
+                        std::vector<Vec3>* out) {
+  Vec3 lo = points[0], hi = points[0];
+  for (const Vec3& p : points) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  *center = 0.5 * (lo + hi);
+  *scale = (hi - lo).maxCoeff();
+  if (!(*scale > 0) || !std::isfinite(*scale) || !center->allFinite()) return false;
+  out->resize(points.size());
+  for (size_t i = 0; i < points.size(); ++i) {
+    const Vec3 q = (points[i] - *center) / *scale;
+    (*out)[i] = Vec3(Quantize(q[0]), Quantize(q[1]), Quantize(q[2]));
+  }
+  return true;
+}
+
+bool ToOutputHull(const HullMesh& hull, const std::function<Vec3(const Vec3&)>& to_world,
+                  double volume_scale, ConvexHull* out) {
+  out->points.reserve(hull.vertices.size() * 3);
+  for (const Vec3& g : hull.vertices) {
+    const Vec3 w = to_world(g);
+    out->points.insert(out->points.end(), {w[0], w[1], w[2]});
+  }
+  for (const auto& t : hull.triangles)
+    out->triangles.insert(out->triangles.end(), {t[0], t[1], t[2]});
+  // Volumes of extreme-scale inputs may leave the double range: clamp, never return Inf.
+  out->volume = std::min(hull.Volume() * volume_scale, std::numeric_limits<double>::max());
+  const Vec3 c = to_world(hull.Centroid());
+  for (int k = 0; k < 3; ++k) out->center[k] = c[k];
+  bool finite = std::isfinite(out->volume) && c.allFinite();
+  for (double v : out->points) finite = finite && std::isfinite(v);
+  return finite;
+}
+
+}  // namespace internal
+}  // namespace vhacd
