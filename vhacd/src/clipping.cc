@@ -4,6 +4,8 @@
 #include <limits>
 #include <string>
 
+#include "part_hull.h"
+#include "stick_out.h"
 #include "thread_pool.h"
 
 namespace vhacd {
@@ -49,6 +51,19 @@ bool MeasureParts(const std::vector<Part>& current, const ClipParams& params, bo
       }))
     return false;
   return true;
+}
+
+// stick[i] for every i in `which`: how far part i's hull sticks out of the exact surface (any
+// value above `limit` once known to exceed it).
+bool MeasureStick(const std::vector<Part>& parts, const std::vector<uint32_t>& which,
+                  const ClipParams& params, double limit, Context* ctx,
+                  std::vector<double>* stick) {
+  stick->resize(parts.size(), 0.0);
+  if (params.meter == nullptr || params.index == nullptr) return true;
+  return ParallelFor(ctx, which.size(), [&](size_t k) {
+    const HullMesh h = BuildPartHull(parts[which[k]], *params.index);
+    (*stick)[which[k]] = h.empty() ? 0.0 : params.meter->Measure(h, limit);
+  });
 }
 
 // Cuts every part current[split[k]] by its best plane into next[2k] and next[2k + 1] (a part
@@ -182,6 +197,7 @@ bool ClipRecursively(Part root, const ClipParams& params, Context* ctx, ClipOutp
   out->parts.clear();
   out->concavity.clear();
   out->depth.clear();
+  out->stick.clear();
   root.ComputeBounds();
   if (root.tetra) root.ComputeCellVolume();
   {
@@ -203,17 +219,32 @@ bool ClipRecursively(Part root, const ClipParams& params, Context* ctx, ClipOutp
     std::vector<double> conc, depth;
     if (!MeasureParts(current, params, level < params.depth, out->volume0, ctx, &conc, &depth))
       return false;
-    std::vector<uint32_t> split;
+    std::vector<uint32_t> split, rest;
+    std::vector<char> cut(n, 0);
+    auto thick = [&](const Part& p) {
+      return p.bmax[0] > p.bmin[0] || p.bmax[1] > p.bmin[1] || p.bmax[2] > p.bmin[2];
+    };
     for (size_t i = 0; i < n; ++i) {
-      const Part& p = current[i];
-      const bool thick = p.bmax[0] > p.bmin[0] || p.bmax[1] > p.bmin[1] || p.bmax[2] > p.bmin[2];
       const bool too_deep = params.max_depth > 0 && depth[i] > params.max_depth;
-      if (level < params.depth && (conc[i] > params.concavity || too_deep) && thick) {
+      cut[i] =
+          level < params.depth && (conc[i] > params.concavity || too_deep) && thick(current[i]);
+      if (!cut[i]) rest.push_back(static_cast<uint32_t>(i));
+    }
+    // The exact measure, on the parts the voxel criteria keep.
+    std::vector<double> stick;
+    const double limit = params.max_stick > 0 ? params.max_stick : 1e30;
+    if (!MeasureStick(current, rest, params, limit, ctx, &stick)) return false;
+    for (size_t i = 0; i < n; ++i) {
+      if (!cut[i] && params.meter != nullptr && params.max_stick > 0 && level < params.depth &&
+          thick(current[i]) && stick[i] > params.max_stick)
+        cut[i] = 1;
+      if (cut[i]) {
         split.push_back(static_cast<uint32_t>(i));
       } else {
         out->parts.push_back(std::move(current[i]));
         out->concavity.push_back(conc[i]);
         out->depth.push_back(depth[i]);
+        out->stick.push_back(stick[i]);
       }
     }
     ctx->Log("clipping level " + std::to_string(level) + ": " + std::to_string(n) + " parts, " +
@@ -245,6 +276,8 @@ bool SplitToCount(size_t count, const ClipParams& params, Context* ctx, ClipOutp
     }
     if (order.empty()) break;
     std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+      if (params.meter != nullptr && out->stick[a] != out->stick[b])
+        return out->stick[a] > out->stick[b];
       if (out->depth[a] != out->depth[b]) return out->depth[a] > out->depth[b];
       return out->concavity[a] > out->concavity[b];
     });
@@ -266,10 +299,13 @@ bool SplitToCount(size_t count, const ClipParams& params, Context* ctx, ClipOutp
           was_stuck.push_back(!cut);
         }
     }
-    std::vector<double> hc, hd;
+    std::vector<double> hc, hd, hs;
     if (!MeasureParts(halves, params, true, out->volume0, ctx, &hc, &hd)) return false;
+    std::vector<uint32_t> all(halves.size());
+    for (size_t k = 0; k < halves.size(); ++k) all[k] = static_cast<uint32_t>(k);
+    if (!MeasureStick(halves, all, params, 1e30, ctx, &hs)) return false;
     std::vector<Part> parts;
-    std::vector<double> pc, pd;
+    std::vector<double> pc, pd, pst;
     std::vector<char> ps;
     std::vector<char> cut_mask(out->parts.size(), 0);
     for (uint32_t i : order) cut_mask[i] = 1;
@@ -278,17 +314,20 @@ bool SplitToCount(size_t count, const ClipParams& params, Context* ctx, ClipOutp
         parts.push_back(std::move(out->parts[i]));
         pc.push_back(out->concavity[i]);
         pd.push_back(out->depth[i]);
+        pst.push_back(out->stick[i]);
         ps.push_back(stuck[i]);
       }
     for (size_t k = 0; k < halves.size(); ++k) {
       parts.push_back(std::move(halves[k]));
       pc.push_back(hc[k]);
       pd.push_back(hd[k]);
+      pst.push_back(hs[k]);
       ps.push_back(was_stuck[k]);
     }
     out->parts = std::move(parts);
     out->concavity = std::move(pc);
     out->depth = std::move(pd);
+    out->stick = std::move(pst);
     stuck = std::move(ps);
   }
   return true;

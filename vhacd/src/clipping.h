@@ -22,12 +22,19 @@ struct ClipParams {
   // voxels (measured on `field`; disabled when field is null or max_depth <= 0).
   const class DistanceField* field = nullptr;
   double max_depth = 0.0;
+  // When set, a part is also split while its hull (BuildPartHull on `index`) sticks out of the
+  // exact surface by more than max_stick grid units, and SplitToCount cuts the parts sticking out
+  // farthest by that measure first.
+  const class StickOutMeter* meter = nullptr;
+  const class TriangleIndex* index = nullptr;
+  double max_stick = 0.0;
 };
 
 struct ClipOutput {
   std::vector<Part> parts;
   std::vector<double> concavity;  // of each part, as measured before it became a leaf (-1: not)
   std::vector<double> depth;      // how far each part's hull sticks out (voxels; 0: not measured)
+  std::vector<double> stick;      // the same on the exact surface (grid units; 0: not measured)
   double volume0 = 0.0;           // volume of the hull of the whole voxel set (voxel units)
   int levels = 0;
 };

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <memory>
 #include <new>
 #include <string>
 #include <thread>
@@ -19,6 +20,7 @@
 #include "merge.h"
 #include "part_hull.h"
 #include "primitive_set.h"
+#include "stick_out.h"
 #include "thread_pool.h"
 #include "vhacd/vhacd.h"
 #include "voxelizer.h"
@@ -261,7 +263,13 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   // out more than the limit and merged while the merged hull does not.
   struct Limits {
     double concavity, gamma, max_depth;
+    double max_stick;  // grid units, exact surface (targets only; 0: off)
   };
+  // The targets decide splits and merges on the exact surface (stick_out.h).
+  const bool exact_measure = exact_count || target;
+  const internal::TriangleIndex index(gmesh, grid.dims, 8);
+  std::unique_ptr<internal::StickOutMeter> meter;
+  if (exact_measure) meter.reset(new internal::StickOutMeter(gmesh, grid, input.closed));
   std::vector<internal::HullMesh> hulls;
   int clip_levels = 0;
   const size_t kOverSplit = static_cast<size_t>(2);
@@ -278,6 +286,9 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     cp.beta = params.beta;
     cp.field = &field;
     cp.max_depth = lim.max_depth;
+    cp.meter = meter.get();
+    cp.index = &index;
+    cp.max_stick = lim.max_stick;
     internal::ClipOutput clip;
     // Only max_concavity runs more than one attempt: the others hand the voxels over.
     const bool ok = target ? internal::ClipRecursively(root, cp, &ctx, &clip)
@@ -294,13 +305,10 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     // One hull per part.
     ctx.BeginStage("Hull generation", 60, 75);
     hulls.assign(clip.parts.size(), internal::HullMesh());
-    {
-      const internal::TriangleIndex index(gmesh, grid.dims, 8);
-      if (!internal::ParallelFor(&ctx, clip.parts.size(), [&](size_t i) {
-            hulls[i] = internal::BuildPartHull(clip.parts[i], index);
-          }))
-        return Status::kCancelled;
-    }
+    if (!internal::ParallelFor(&ctx, clip.parts.size(), [&](size_t i) {
+          hulls[i] = internal::BuildPartHull(clip.parts[i], index);
+        }))
+      return Status::kCancelled;
     hulls.erase(std::remove_if(hulls.begin(), hulls.end(),
                                [](const internal::HullMesh& h) { return h.empty(); }),
                 hulls.end());
@@ -313,11 +321,16 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     // would shrink away from their neighbours and open gaps).
     const double min_volume = params.min_volume_per_hull * clip.volume0;
     constexpr double kMaxRelativeLoss = 0.002;
+    // ... and never one farther than kKeepDistance of the diagonal from the hull of the others
+    // (a thin part's corner adds little volume but sticks out far, and shrinking it opens cracks
+    // between neighbours).
+    constexpr double kKeepDistance = 0.002;
+    const double keep_distance = kKeepDistance * diag_grid;
     auto simplify = [&]() {
       return internal::ParallelFor(&ctx, hulls.size(), [&](size_t i) {
-        hulls[i] =
-            internal::SimplifyHull(hulls[i], params.max_vertices_per_hull,
-                                   std::min(min_volume, kMaxRelativeLoss * hulls[i].Volume()));
+        hulls[i] = internal::SimplifyHull(
+            hulls[i], params.max_vertices_per_hull,
+            std::min(min_volume, kMaxRelativeLoss * hulls[i].Volume()), keep_distance);
       });
     };
     if (!simplify()) return Status::kCancelled;
@@ -332,6 +345,8 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     mp.adjacency = 1.0;
     mp.field = &field;
     mp.max_depth = lim.max_depth;
+    mp.meter = meter.get();
+    mp.max_stick = lim.max_stick;
     if (!internal::MergeHulls(&hulls, mp, &ctx)) return Status::kCancelled;
     r.seconds_merge = clock.Lap();
 
@@ -362,8 +377,9 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     // at least a voxel), which the merge down to N then trades best.
     constexpr double kExactSplit = 0.6;
     const Limits lim = exact_count && max_depth > 0
-                           ? Limits{1.0, params.gamma, std::max(1.0, kExactSplit * max_depth)}
-                           : Limits{params.concavity, params.gamma, max_depth};
+                           ? Limits{1.0, params.gamma, std::max(1.0, kExactSplit * max_depth),
+                                    kExactSplit * params.max_distance * diag_grid}
+                           : Limits{params.concavity, params.gamma, max_depth, 0.0};
     if (run(lim, &rep) != Status::kOk) return Fail(Status::kCancelled, "cancelled");
     if (exact_count && hulls.size() != params.hull_count) {
       rep.target_reached = false;
@@ -379,13 +395,16 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     // Below one voxel no outside voxel centre may lie in a hull at all: parts then split into
     // slivers along every curved surface without getting closer to it.
     constexpr double kMinLimit = 1.0;
+    // Cuts are voxel-aligned: a tighter exact limit only multiplies slivers.
+    constexpr double kMinStick = 0.5;
     double limit = std::max(kMinLimit, d * diag_grid - 0.5);
+    double stick = std::max(kMinStick, d * diag_grid);
     std::vector<internal::HullMesh> best_hulls;
     Report best;
     bool have = false;
     for (int attempt = 0; attempt < kAttempts; ++attempt) {
       Report r = rep;
-      if (run(Limits{1.0, 1.0, limit}, &r) != Status::kOk)
+      if (run(Limits{1.0, 1.0, limit, stick}, &r) != Status::kOk)
         return Fail(Status::kCancelled, "cancelled");
       ctx.Log("max_concavity attempt " + std::to_string(attempt + 1) + ": split limit " +
               std::to_string(limit) + " voxels, " + std::to_string(hulls.size()) +
@@ -398,6 +417,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
       }
       if (r.concavity <= d || limit <= kMinLimit) break;
       limit = std::max(kMinLimit, limit * kTighten);
+      stick = std::max(kMinStick, stick * kTighten);
     }
     hulls = std::move(best_hulls);
     const uint32_t attempts = best.attempts;

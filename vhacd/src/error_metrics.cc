@@ -58,6 +58,12 @@ TriangleLocator::TriangleLocator(const GridMesh& mesh, double cell_size)
 }
 
 double TriangleLocator::Distance(const Vec3& p) const {
+  uint32_t nearest;
+  return Distance(p, &nearest);
+}
+
+double TriangleLocator::Distance(const Vec3& p, uint32_t* nearest) const {
+  *nearest = static_cast<uint32_t>(mesh_.triangles.size());
   int c0[3];
   for (int a = 0; a < 3; ++a)
     c0[a] = std::clamp(static_cast<int>(std::floor((p[a] - origin_[a]) / cell_)), 0, dims_[a] - 1);
@@ -79,8 +85,12 @@ double TriangleLocator::Distance(const Vec3& p) const {
           const size_t c = (static_cast<size_t>(z) * dims_[1] + y) * dims_[0] + x;
           for (uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
             const auto& t = mesh_.triangles[ids_[k]];
-            best = std::min(best, PointTriangleDistance(p, mesh_.points[t[0]], mesh_.points[t[1]],
-                                                        mesh_.points[t[2]]));
+            const double d = PointTriangleDistance(p, mesh_.points[t[0]], mesh_.points[t[1]],
+                                                   mesh_.points[t[2]]);
+            if (d < best) {
+              best = d;
+              *nearest = ids_[k];
+            }
           }
         }
     // Distance from p to the space outside the visited block (infinite beyond the grid).
@@ -129,8 +139,6 @@ constexpr double kGap = 0.002;
 
 }  // namespace
 
-// Points about `spacing` apart inside the triangle, in rows parallel to its longest edge (linear
-// in the area, and empty for a degenerate triangle).
 void SampleTriangle(Vec3 a, Vec3 b, Vec3 c, double spacing, std::vector<Vec3>* out) {
   if ((c - b).norm() > (b - a).norm() && (c - b).norm() >= (a - c).norm())
     std::swap(a, c);

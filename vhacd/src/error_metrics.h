@@ -19,6 +19,8 @@ class TriangleLocator {
  public:
   TriangleLocator(const GridMesh& mesh, double cell_size);
   double Distance(const Vec3& p) const;
+  // Also gives the index of a nearest triangle (mesh.triangles.size() when there is none).
+  double Distance(const Vec3& p, uint32_t* nearest) const;
 
  private:
   const GridMesh& mesh_;
@@ -36,6 +38,10 @@ struct MetricsInput {
   double volume0 = 1.0;   // concavity normalization, voxel units
   bool closed = false;
 };
+
+// Points about `spacing` apart inside the triangle, in rows parallel to its longest edge (linear
+// in the area, and empty for a degenerate triangle).
+void SampleTriangle(Vec3 a, Vec3 b, Vec3 c, double spacing, std::vector<Vec3>* out);
 
 // About `count` points spread over the surface (vertices first, then a stratified grid on each
 // triangle), deterministic.

@@ -6,11 +6,24 @@
 namespace vhacd {
 namespace internal {
 
-HullMesh SimplifyHull(const HullMesh& hull, uint32_t max_vertices, double min_volume) {
+HullMesh SimplifyHull(const HullMesh& hull, uint32_t max_vertices, double min_volume,
+                      double min_distance) {
   const size_t n = hull.vertices.size();
   max_vertices = std::max<uint32_t>(4, max_vertices);
-  if (n <= 4 || (n <= max_vertices && min_volume <= 0.0)) return hull;
+  const bool by_distance = min_distance > 0.0;
+  if (n <= 4 || (n <= max_vertices && min_volume <= 0.0 && !by_distance)) return hull;
   const std::vector<Vec3>& p = hull.vertices;
+  // Distance mode: a vertex this close to the hull of the kept ones would only add a sliver face
+  // (whose plane rounding to a few digits in a file can flip).
+  double tol = -1.0;
+  if (by_distance) {
+    Vec3 lo = p[0], hi = p[0];
+    for (const Vec3& q : p) {
+      lo = lo.cwiseMin(q);
+      hi = hi.cwiseMax(q);
+    }
+    tol = 1e-6 * (hi - lo).norm();
+  }
   // Initial tetrahedron: farthest pair, farthest from their line, farthest from their plane.
   size_t i0 = 0, i1 = 0;
   for (size_t i = 0; i < n; ++i)
@@ -36,28 +49,45 @@ HullMesh SimplifyHull(const HullMesh& hull, uint32_t max_vertices, double min_vo
   if (kept.size() < 4 || ComputeConvexHull(kept, -1.0, &cur) != HullStatus::kOk) return hull;
   while (kept.size() < max_vertices) {
     // Volume increment of adding point i = sum over visible faces of the tetrahedron volume.
+    // Distance of point i above the hull of the kept ones = the largest height above a face.
     std::vector<Vec3> fn(cur.triangles.size());
+    std::vector<double> flen(cur.triangles.size());
     for (size_t f = 0; f < cur.triangles.size(); ++f) {
       const auto& t = cur.triangles[f];
       fn[f] =
           (cur.vertices[t[1]] - cur.vertices[t[0]]).cross(cur.vertices[t[2]] - cur.vertices[t[0]]);
+      flen[f] = fn[f].norm();
     }
-    double best = 0.0;
-    size_t best_i = n;
+    double best = 0.0, farthest = 0.0;
+    size_t best_i = n, far_i = n;
     for (size_t i = 0; i < n; ++i) {
       if (used[i]) continue;
-      double inc = 0.0;
+      double inc = 0.0, height = 0.0;
       for (size_t f = 0; f < fn.size(); ++f) {
         const double d = fn[f].dot(p[i] - cur.vertices[cur.triangles[f][0]]);
-        if (d > 0) inc += d;
+        if (d > 0) {
+          inc += d;
+          if (flen[f] > 0) height = std::max(height, d / flen[f]);
+        }
       }
       inc /= 6.0;
+      if (by_distance && height <= tol) continue;
       if (inc > best) {
         best = inc;
         best_i = i;
       }
+      if (height > farthest) {
+        farthest = height;
+        far_i = i;
+      }
     }
-    if (best_i == n || best < min_volume) break;
+    if (best_i == n) break;
+    if (best < min_volume) {
+      // Adaptive sampling by volume alone would drop it: keep it when it lies farther than
+      // min_distance (a thin part's corner adds little volume but sticks out far).
+      if (!by_distance || farthest <= min_distance) break;
+      best_i = far_i;
+    }
     used[best_i] = 1;
     kept.push_back(p[best_i]);
     HullMesh next;

@@ -5,6 +5,7 @@
 #include <limits>
 #include <queue>
 
+#include "stick_out.h"
 #include "thread_pool.h"
 
 namespace vhacd {
@@ -45,6 +46,7 @@ bool MergeHulls(std::vector<HullMesh>* hulls_io, const MergeParams& params, Cont
   const double kInf = std::numeric_limits<double>::infinity();
   const bool use_depth = params.field != nullptr && params.max_depth > 0;
   const bool budget = params.max_hulls > 0 && n > params.max_hulls;
+  const double stick_cap = params.max_stick > 0 ? 3.0 * params.max_stick : 1e30;
   std::vector<double> vol(n);
   std::vector<Box> box(n);
   std::vector<char> alive(n, 1);
@@ -75,7 +77,18 @@ bool MergeHulls(std::vector<HullMesh>* hulls_io, const MergeParams& params, Cont
           const double c = std::max(0.0, m.Volume() - vol[i] - vol[j]) / params.volume0;
           cost[k] = c;
           // The exact depth only matters for the budget; otherwise whether it exceeds the limit.
-          if (!use_depth)
+          if (params.meter != nullptr) {
+            if (budget)  // merges sticking out beyond the cap are ranked by volume alone
+              depth[k] = std::min(stick_cap, params.meter->Measure(m, stick_cap));
+            else if (params.max_stick <= 0)
+              depth[k] = c < params.gamma ? 0.0 : kInf;
+            else if (c < params.gamma &&
+                     (!use_depth ||
+                      params.field->HullDepth(m, params.max_depth) <= params.max_depth))
+              depth[k] = params.meter->Measure(m, params.max_stick);
+            else
+              depth[k] = kInf;
+          } else if (!use_depth)
             depth[k] = 0.0;
           else if (budget)
             depth[k] = std::max(params.field->SurfaceDepth(m), params.field->HullDepth(m));
@@ -89,10 +102,13 @@ bool MergeHulls(std::vector<HullMesh>* hulls_io, const MergeParams& params, Cont
       return false;
     for (size_t k = 0; k < pairs.size(); ++k) {
       const uint32_t i = pairs[k].first, j = pairs[k].second;
-      if (cost[k] < params.gamma && (!use_depth || depth[k] <= params.max_depth))
+      const double limit =
+          params.meter != nullptr ? std::max(0.0, params.max_stick) : params.max_depth;
+      if (cost[k] < params.gamma && (!(use_depth || params.meter) || depth[k] <= limit))
         under.push({cost[k], 0.0, i, j, version[i], version[j]});
       if (budget)
-        over.push({use_depth ? depth[k] : cost[k], cost[k], i, j, version[i], version[j]});
+        over.push({use_depth || params.meter ? depth[k] : cost[k], cost[k], i, j, version[i],
+                   version[j]});
     }
     return true;
   };

@@ -22,6 +22,11 @@ struct MergeParams {
   // max_depth voxels; over the budget, the pair with the smallest depth is merged.
   const DistanceField* field = nullptr;
   double max_depth = 0.0;
+  // When set, the same on the exact surface: a merge under gamma also needs the merged hull to
+  // stick out by at most max_stick grid units, and over the budget the pair whose merged hull
+  // sticks out least is merged.
+  const class StickOutMeter* meter = nullptr;
+  double max_stick = 0.0;
 };
 
 // cost(i, j) = max(0, |CH(Hi u Hj)| - |Hi| - |Hj|) / volume0; among the pairs with cost < gamma
