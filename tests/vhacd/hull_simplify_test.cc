@@ -48,6 +48,25 @@ TEST(HullSimplifyTest, MinVolumeStopsEarlyAndSmallHullsAreUnchanged) {
   EXPECT_GT(four.Volume(), 0.0);
 }
 
+TEST(HullSimplifyTest, MinDistanceKeepsFarVerticesOfThinHulls) {
+  // A thin slab with one corner pulled out: the corner adds little volume but lies far out.
+  std::vector<Vec3> pts;
+  for (int i = 0; i < 8; ++i) pts.emplace_back(i & 1 ? 10 : 0, i & 2 ? 10 : 0, i & 4 ? 0.2 : 0);
+  pts.emplace_back(10.8, 10.8, 0.1);  // adds about 2.5 % of the volume, 1.1 from the slab
+  HullMesh h;
+  ASSERT_EQ(ComputeConvexHull(pts, -1.0, &h), HullStatus::kOk);
+  const HullMesh by_volume = SimplifyHull(h, 64, 0.05 * h.Volume());
+  const HullMesh by_distance = SimplifyHull(h, 64, 0.05 * h.Volume(), 0.5);
+  auto has = [](const HullMesh& m, const Vec3& p) {
+    for (const Vec3& q : m.vertices)
+      if (q == p) return true;
+    return false;
+  };
+  EXPECT_FALSE(has(by_volume, Vec3(10.8, 10.8, 0.1)));
+  EXPECT_TRUE(has(by_distance, Vec3(10.8, 10.8, 0.1)));
+  EXPECT_LE(by_distance.MaxConvexityViolation(), 1e-9);
+}
+
 }  // namespace
 }  // namespace internal
 }  // namespace vhacd
