@@ -269,7 +269,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   const bool exact_measure = exact_count || target;
   const internal::TriangleIndex index(gmesh, grid.dims, 8);
   std::unique_ptr<internal::StickOutMeter> meter;
-  if (exact_measure) meter.reset(new internal::StickOutMeter(gmesh, grid, input.closed));
+  if (exact_measure) meter.reset(new internal::StickOutMeter(gmesh, grid, input.closed, &field));
   std::vector<internal::HullMesh> hulls;
   int clip_levels = 0;
   const size_t kOverSplit = static_cast<size_t>(2);

@@ -23,6 +23,13 @@ TriangleLocator::TriangleLocator(const GridMesh& mesh, double cell_size)
     dims_[a] = std::max(1, static_cast<int>(std::ceil((hi[a] - lo[a]) / cell_)) + 1);
   const size_t ncell = static_cast<size_t>(dims_[0]) * dims_[1] * dims_[2];
   start_.assign(ncell + 1, 0);
+  tlo_.resize(mesh.triangles.size());
+  thi_.resize(mesh.triangles.size());
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& tr = mesh.triangles[t];
+    tlo_[t] = mesh.points[tr[0]].cwiseMin(mesh.points[tr[1]]).cwiseMin(mesh.points[tr[2]]);
+    thi_[t] = mesh.points[tr[0]].cwiseMax(mesh.points[tr[1]]).cwiseMax(mesh.points[tr[2]]);
+  }
   auto range = [&](const std::array<uint32_t, 3>& t, int* clo, int* chi) {
     for (int a = 0; a < 3; ++a) {
       double mn = mesh.points[t[0]][a], mx = mn;
@@ -84,7 +91,10 @@ double TriangleLocator::Distance(const Vec3& p, uint32_t* nearest) const {
             continue;
           const size_t c = (static_cast<size_t>(z) * dims_[1] + y) * dims_[0] + x;
           for (uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
-            const auto& t = mesh_.triangles[ids_[k]];
+            const uint32_t ti = ids_[k];
+            if ((tlo_[ti] - p).cwiseMax(p - thi_[ti]).cwiseMax(0.0).squaredNorm() >= best * best)
+              continue;
+            const auto& t = mesh_.triangles[ti];
             const double d = PointTriangleDistance(p, mesh_.points[t[0]], mesh_.points[t[1]],
                                                    mesh_.points[t[2]]);
             if (d < best) {

@@ -47,7 +47,7 @@ bool MergeHulls(std::vector<HullMesh>* hulls_io, const MergeParams& params, Cont
   const bool use_depth = params.field != nullptr && params.max_depth > 0;
   const bool budget = params.max_hulls > 0 && n > params.max_hulls;
   const double stick_cap = params.max_stick > 0 ? 3.0 * params.max_stick : 1e30;
-  std::vector<double> vol(n);
+  std::vector<double> vol(n), stick(n, 0.0);
   std::vector<Box> box(n);
   std::vector<char> alive(n, 1);
   std::vector<uint32_t> version(n, 0);
@@ -55,12 +55,17 @@ bool MergeHulls(std::vector<HullMesh>* hulls_io, const MergeParams& params, Cont
     vol[i] = hulls[i].Volume();
     box[i] = BoxOf(hulls[i]);
   }
+  if (params.meter != nullptr && !ParallelFor(ctx, n, [&](size_t i) {
+        stick[i] = params.meter->Measure(hulls[i], stick_cap);
+      }))
+    return false;
   // Candidate pairs, ordered by (key1, key2, i, j); stale entries (an older version of a hull, or
   // a merged-away hull) are skipped when popped. `under` holds the merges allowed under gamma,
   // `over` every evaluated pair for the hull budget.
   struct Cand {
     double key1, key2;
     uint32_t i, j, vi, vj;
+    bool exact;  // key1 is the merged hull's stick-out, not yet only its lower bound
     bool operator>(const Cand& o) const {
       if (key1 != o.key1) return key1 > o.key1;
       if (key2 != o.key2) return key2 > o.key2;
@@ -70,7 +75,7 @@ bool MergeHulls(std::vector<HullMesh>* hulls_io, const MergeParams& params, Cont
   };
   std::priority_queue<Cand, std::vector<Cand>, std::greater<Cand>> under, over;
   auto evaluate = [&](const std::vector<std::pair<uint32_t, uint32_t>>& pairs) {
-    std::vector<double> cost(pairs.size()), depth(pairs.size());
+    std::vector<double> cost(pairs.size()), depth(pairs.size()), lower(pairs.size());
     if (!ParallelFor(ctx, pairs.size(), [&](size_t k) {
           const uint32_t i = pairs[k].first, j = pairs[k].second;
           const HullMesh m = MergedHull(hulls[i], hulls[j]);
@@ -78,14 +83,14 @@ bool MergeHulls(std::vector<HullMesh>* hulls_io, const MergeParams& params, Cont
           cost[k] = c;
           // The exact depth only matters for the budget; otherwise whether it exceeds the limit.
           if (params.meter != nullptr) {
-            if (budget)  // merges sticking out beyond the cap are ranked by volume alone
-              depth[k] = std::min(stick_cap, params.meter->Measure(m, stick_cap));
-            else if (params.max_stick <= 0)
+            lower[k] = std::min(stick_cap, std::max(stick[i], stick[j]));
+            if (params.max_stick <= 0)
               depth[k] = c < params.gamma ? 0.0 : kInf;
             else if (c < params.gamma &&
                      (!use_depth ||
                       params.field->HullDepth(m, params.max_depth) <= params.max_depth))
-              depth[k] = params.meter->Measure(m, params.max_stick);
+              depth[k] = params.meter->MeasureMerged(m, hulls[i], stick[i], hulls[j], stick[j],
+                                                     params.max_stick);
             else
               depth[k] = kInf;
           } else if (!use_depth)
@@ -105,10 +110,12 @@ bool MergeHulls(std::vector<HullMesh>* hulls_io, const MergeParams& params, Cont
       const double limit =
           params.meter != nullptr ? std::max(0.0, params.max_stick) : params.max_depth;
       if (cost[k] < params.gamma && (!(use_depth || params.meter) || depth[k] <= limit))
-        under.push({cost[k], 0.0, i, j, version[i], version[j]});
+        under.push({cost[k], 0.0, i, j, version[i], version[j], true});
       if (budget)
-        over.push({use_depth || params.meter ? depth[k] : cost[k], cost[k], i, j, version[i],
-                   version[j]});
+        over.push({params.meter ? lower[k]
+                   : use_depth  ? depth[k]
+                                : cost[k],
+                   cost[k], i, j, version[i], version[j], params.meter == nullptr});
     }
     return true;
   };
@@ -156,12 +163,26 @@ bool MergeHulls(std::vector<HullMesh>* hulls_io, const MergeParams& params, Cont
       if (!over.empty()) {
         pick = over.top();
         over.pop();
+        if (!pick.exact) {
+          // Lazy: the exact stick-out (merges beyond the cap are ranked by volume alone).
+          const HullMesh m = MergedHull(hulls[pick.i], hulls[pick.j]);
+          pick.key1 = std::min(
+              stick_cap, params.meter->MeasureMerged(m, hulls[pick.i], stick[pick.i], hulls[pick.j],
+                                                     stick[pick.j], stick_cap));
+          pick.exact = true;
+          over.push(pick);
+          continue;
+        }
         have = true;
       }
     }
     if (!have) break;
     const uint32_t bi = pick.i, bj = pick.j;
-    hulls[bi] = MergedHull(hulls[bi], hulls[bj]);
+    HullMesh merged = MergedHull(hulls[bi], hulls[bj]);
+    if (params.meter != nullptr)
+      stick[bi] = params.meter->MeasureMerged(merged, hulls[bi], stick[bi], hulls[bj], stick[bj],
+                                              stick_cap);
+    hulls[bi] = std::move(merged);
     vol[bi] = hulls[bi].Volume();
     box[bi] = BoxOf(hulls[bi]);
     ++version[bi];

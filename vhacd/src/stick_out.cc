@@ -1,6 +1,7 @@
 #include "stick_out.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -12,12 +13,19 @@ namespace {
 constexpr double kLocatorCell = 2.0;
 // Sample spacing on the hull's faces, voxels.
 constexpr double kSpacing = 0.5;
+// ... or this fraction of the largest distance found so far, when larger.
+constexpr double kRelativeSpacing = 0.2;
 }  // namespace
 
-StickOutMeter::StickOutMeter(const GridMesh& mesh, const VoxelGrid& grid, bool closed)
-    : mesh_(mesh), grid_(grid), closed_(closed), locator_(mesh, kLocatorCell) {}
+// A point of a voxel that meets the surface is within the voxel's diagonal of it; an outside
+// voxel's centre is within its field value plus half a diagonal of a solid voxel's centre.
+constexpr double kVoxelDiagonal = 1.7320508075688772;
 
-double StickOutMeter::OutsideDistance(const Vec3& p) const {
+StickOutMeter::StickOutMeter(const GridMesh& mesh, const VoxelGrid& grid, bool closed,
+                             const DistanceField* field)
+    : mesh_(mesh), grid_(grid), closed_(closed), field_(field), locator_(mesh, kLocatorCell) {}
+
+double StickOutMeter::OutsideDistance(const Vec3& p, double best) const {
   int c[3];
   bool in_grid = true;
   for (int a = 0; a < 3; ++a) {
@@ -25,8 +33,12 @@ double StickOutMeter::OutsideDistance(const Vec3& p) const {
     in_grid = in_grid && c[a] >= 0 && c[a] < grid_.dims[a];
   }
   if (in_grid) {
-    const uint8_t cell = grid_.cell[grid_.Index(c[0], c[1], c[2])];
+    const size_t index = grid_.Index(c[0], c[1], c[2]);
+    const uint8_t cell = grid_.cell[index];
     if (cell == kCellInside) return 0.0;
+    if (cell == kCellSurface && best >= kVoxelDiagonal) return 0.0;
+    if (cell == kCellOutside && field_ != nullptr && field_->At(index) + kVoxelDiagonal <= best)
+      return 0.0;
     if (cell == kCellSurface) {
       // An open surface has no side: trust the voxel centre's parity vote for the whole voxel.
       if (!closed_)
@@ -45,22 +57,57 @@ double StickOutMeter::OutsideDistance(const Vec3& p) const {
   return locator_.Distance(p);
 }
 
-double StickOutMeter::Measure(const HullMesh& hull, double limit) const {
-  double best = 0.0;
-  auto visit = [&](const Vec3& p) {
-    best = std::max(best, OutsideDistance(p));
-    return best > limit;
-  };
-  for (const Vec3& v : hull.vertices)
-    if (visit(v)) return best;
+double StickOutMeter::SampleFaces(const HullMesh& hull, const std::vector<char>* skip, double best,
+                                  double limit) const {
   std::vector<Vec3> pts;
-  for (const auto& t : hull.triangles) {
+  for (size_t f = 0; f < hull.triangles.size(); ++f) {
+    if (skip != nullptr && (*skip)[f]) continue;
+    const auto& t = hull.triangles[f];
     pts.clear();
-    SampleTriangle(hull.vertices[t[0]], hull.vertices[t[1]], hull.vertices[t[2]], kSpacing, &pts);
-    for (const Vec3& p : pts)
-      if (visit(p)) return best;
+    // The distance is 1-Lipschitz: once the maximum is large, coarser samples rank as well.
+    const double spacing = std::max(kSpacing, kRelativeSpacing * best);
+    SampleTriangle(hull.vertices[t[0]], hull.vertices[t[1]], hull.vertices[t[2]], spacing, &pts);
+    for (const Vec3& p : pts) {
+      best = std::max(best, OutsideDistance(p, best));
+      if (best > limit) return best;
+    }
   }
   return best;
+}
+
+double StickOutMeter::Measure(const HullMesh& hull, double limit) const {
+  double best = 0.0;
+  for (const Vec3& v : hull.vertices) {
+    best = std::max(best, OutsideDistance(v, best));
+    if (best > limit) return best;
+  }
+  return SampleFaces(hull, nullptr, best, limit);
+}
+
+double StickOutMeter::MeasureMerged(const HullMesh& merged, const HullMesh& a, double stick_a,
+                                    const HullMesh& b, double stick_b, double limit) const {
+  const double best = std::max(stick_a, stick_b);
+  if (best > limit) return best;
+  // A face is old when its three corners are the corners of one face of a or of b.
+  using Key = std::array<double, 9>;
+  auto key = [](const HullMesh& h, const std::array<uint32_t, 3>& t) {
+    std::array<std::array<double, 3>, 3> c;
+    for (int k = 0; k < 3; ++k)
+      c[k] = {h.vertices[t[k]][0], h.vertices[t[k]][1], h.vertices[t[k]][2]};
+    std::sort(c.begin(), c.end());
+    Key out;
+    for (int k = 0; k < 9; ++k) out[k] = c[k / 3][k % 3];
+    return out;
+  };
+  std::vector<Key> old;
+  old.reserve(a.triangles.size() + b.triangles.size());
+  for (const auto& t : a.triangles) old.push_back(key(a, t));
+  for (const auto& t : b.triangles) old.push_back(key(b, t));
+  std::sort(old.begin(), old.end());
+  std::vector<char> skip(merged.triangles.size(), 0);
+  for (size_t f = 0; f < merged.triangles.size(); ++f)
+    skip[f] = std::binary_search(old.begin(), old.end(), key(merged, merged.triangles[f]));
+  return SampleFaces(merged, &skip, best, limit);
 }
 
 }  // namespace internal
