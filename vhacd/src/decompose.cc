@@ -288,7 +288,9 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     cp.max_depth = lim.max_depth;
     cp.meter = meter.get();
     cp.index = &index;
-    cp.max_stick = lim.max_stick;
+    // On an open surface the side is only known per voxel: the exact measure ranks, it does not
+    // split (splitting by it multiplied hulls without getting closer).
+    cp.max_stick = input.closed ? lim.max_stick : 0.0;
     internal::ClipOutput clip;
     // Only max_concavity runs more than one attempt: the others hand the voxels over.
     const bool ok = target ? internal::ClipRecursively(root, cp, &ctx, &clip)
@@ -324,7 +326,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     // ... and never one farther than kKeepDistance of the diagonal from the hull of the others
     // (a thin part's corner adds little volume but sticks out far, and shrinking it opens cracks
     // between neighbours).
-    constexpr double kKeepDistance = 0.002;
+    constexpr double kKeepDistance = 0.001;
     const double keep_distance = kKeepDistance * diag_grid;
     auto simplify = [&]() {
       return internal::ParallelFor(&ctx, hulls.size(), [&](size_t i) {
@@ -410,7 +412,10 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
               std::to_string(limit) + " voxels, " + std::to_string(hulls.size()) +
               " hulls, concavity " + std::to_string(r.concavity));
       r.attempts = static_cast<uint32_t>(attempt + 1);
-      if (!have || r.concavity < best.concavity) {
+      // A tighter attempt costs hulls: keep it only when it reaches D or is clearly closer.
+      constexpr double kMinGain = 0.95;
+      if (!have || (r.concavity <= d && best.concavity > d) ||
+          r.concavity < kMinGain * best.concavity) {
         best = r;
         best_hulls = hulls;
         have = true;
