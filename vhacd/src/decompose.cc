@@ -288,9 +288,10 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     cp.max_depth = lim.max_depth;
     cp.meter = meter.get();
     cp.index = &index;
-    // On an open surface the side is only known per voxel: the exact measure ranks, it does not
-    // split (splitting by it multiplied hulls without getting closer).
-    cp.max_stick = input.closed ? lim.max_stick : 0.0;
+    // On an open surface the side is only known per voxel: for max_concavity the exact measure
+    // then ranks but does not split (splitting by it multiplied hulls without getting closer);
+    // hull_count merges down to N anyway.
+    cp.max_stick = input.closed || exact_count ? lim.max_stick : 0.0;
     internal::ClipOutput clip;
     // Only max_concavity runs more than one attempt: the others hand the voxels over.
     const bool ok = target ? internal::ClipRecursively(root, cp, &ctx, &clip)
