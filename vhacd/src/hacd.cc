@@ -1,7 +1,6 @@
 // vhacd::DecomposeHacd: the HACD pipeline (see include/vhacd/hacd.h).
 #include "vhacd/hacd.h"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -16,9 +15,9 @@
 #include "error_metrics.h"
 #include "hacd_cost.h"
 #include "hacd_graph.h"
+#include "hacd_hull.h"
 #include "hacd_orient.h"
 #include "hacd_raycast.h"
-#include "hull_simplify.h"
 #include "input_mesh.h"
 #include "simplify_qem.h"
 #include "thread_pool.h"
@@ -105,6 +104,7 @@ class Clustering {
   }
 
   std::vector<Cluster>& clusters() { return clusters_; }
+  const std::vector<internal::DistPoint>& dist() const { return dist_; }
   std::vector<Edge>& edges() { return edges_; }
   size_t alive_count() const { return alive_; }
 
@@ -238,46 +238,6 @@ class Clustering {
   size_t alive_ = 0;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap_;
 };
-
-// The hull of one cluster's mesh vertices, made solid when the cluster is flat or thin.
-internal::HullMesh ClusterHull(const std::vector<Vec3>& pts, double thickness,
-                               uint32_t max_vertices) {
-  internal::HullMesh hull;
-  internal::HullStatus st = internal::ComputeConvexHull(pts, -1.0, &hull);
-  bool thin = st != internal::HullStatus::kOk;
-  if (!thin) {
-    // Thinner than `thickness` everywhere: give it that thickness.
-    double area = 0.0;
-    for (const auto& t : hull.triangles)
-      area += 0.5 * (hull.vertices[t[1]] - hull.vertices[t[0]])
-                        .cross(hull.vertices[t[2]] - hull.vertices[t[0]])
-                        .norm();
-    thin = hull.Volume() < 0.25 * area * thickness;
-  }
-  if (thin) {
-    Vec3 c = Vec3::Zero();
-    for (const Vec3& p : pts) c += p;
-    c /= static_cast<double>(pts.size());
-    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-    for (const Vec3& p : pts) cov += (p - c) * (p - c).transpose();
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
-    std::vector<Vec3> thick;
-    const Vec3 n = es.eigenvectors().col(0), m = es.eigenvectors().col(1);
-    const bool line = es.eigenvalues()[1] <= 1e-18 * std::max(1e-300, es.eigenvalues()[2]);
-    for (const Vec3& p : pts) {
-      thick.push_back(p + 0.5 * thickness * n);
-      thick.push_back(p - 0.5 * thickness * n);
-      if (line) {
-        thick.push_back(p + 0.5 * thickness * m);
-        thick.push_back(p - 0.5 * thickness * m);
-      }
-    }
-    internal::HullMesh h2;
-    if (internal::ComputeConvexHull(thick, -1.0, &h2) == internal::HullStatus::kOk) hull = h2;
-  }
-  if (hull.empty()) return hull;
-  return internal::SimplifyHull(hull, max_vertices, 0.0);
-}
 
 Result DecomposeHacdImpl(const MeshView& view, const HacdParameters& params, Observer* observer) {
   std::string why;
@@ -439,35 +399,23 @@ Result DecomposeHacdImpl(const MeshView& view, const HacdParameters& params, Obs
     if (c.alive) alive.push_back(&c);
   std::vector<internal::HullMesh> hulls(alive.size());
   if (!internal::ParallelFor(&ctx, alive.size(), [&](size_t i) {
-        std::vector<Vec3> cp_pts;
+        internal::FillInput fi;
         for (uint32_t id : alive[i]->dist)
-          if (id < nv) cp_pts.push_back(pts[id]);
-        hulls[i] = ClusterHull(cp_pts, 1e-4 * diag, params.max_vertices_per_hull);
-        // Fill toward the middle of the solid behind the surface patch, so that the hulls of the
-        // patches around a solid meet inside it instead of leaving a hollow between them; kept
-        // only when what it adds lies inside the solid.
-        if (hulls[i].empty()) return;
-        const internal::HullPlanes before(hulls[i]);
-        const size_t surface_points = cp_pts.size();
-        for (double fraction : {0.5, 0.25}) {
-          cp_pts.resize(surface_points);
-          for (uint32_t t : alive[i]->triangles)
-            if (depth[t] > 0) cp_pts.push_back(centroid[t] - (fraction * depth[t]) * fnormal[t]);
-          if (cp_pts.size() == surface_points) return;
-          internal::HullMesh filled =
-              ClusterHull(cp_pts, 1e-4 * diag, params.max_vertices_per_hull);
-          if (filled.empty()) return;
-          const Vec3 c = filled.Centroid();
-          bool inside = true;
-          for (size_t k = 0; k <= filled.vertices.size() && inside; ++k) {
-            const Vec3 q = k == 0 ? c : Vec3(0.5 * (filled.vertices[k - 1] + c));
-            inside = before.Contains(q, 1e-4 * diag) || caster.Inside(q);
-          }
-          if (inside) {
-            hulls[i] = std::move(filled);
-            return;
-          }
+          if (id < nv) fi.surface.push_back(pts[id]);
+        for (uint32_t t : alive[i]->triangles) {
+          fi.behind.push_back(centroid[t]);
+          fi.inward.push_back(-fnormal[t]);
+          fi.depth.push_back(depth[t]);
         }
+        fi.dist = &clustering.dist();
+        fi.dist_ids = &alive[i]->dist;
+        fi.area = alive[i]->area;
+        fi.cost = &cp;
+        fi.caster = &caster;
+        fi.thickness = 1e-4 * diag;
+        fi.tolerance = cp.inside_margin;
+        fi.max_vertices = params.max_vertices_per_hull;
+        hulls[i] = internal::FilledClusterHull(fi);
       }))
     return Fail(Status::kCancelled, "cancelled");
   hulls.erase(std::remove_if(hulls.begin(), hulls.end(),
