@@ -164,25 +164,28 @@ py::dict Pack(const std::string& input, const std::string& output, double max_er
     throw py::value_error("physics must be 'omi' or 'khr', not '" + physics + "'");
   o.glb.physics = physics == "omi" ? PhysicsForm::kOmi : PhysicsForm::kKhr;
   if (method == "hacd") {
-    // As `hullpack pack --method hacd`: testHACD's recommended line; the V-HACD options do not
+    // As `hullpack pack --method hacd`: testHACD's recommended line; the voxel options do not
     // apply, so giving one is an error rather than silently ignored.
     o.collision.method = DecompositionMethod::kHacd;
-    if (quality != "default" || resolution || max_hulls || concavity) {
+    if (quality != "default" || resolution) {
       throw py::value_error(
-          "quality, resolution, max_hulls and concavity are V-HACD options (method=\"vhacd\"), "
-          "not options of method=\"hacd\"");
+          "quality and resolution are V-HACD options (method=\"vhacd\"), not options of "
+          "method=\"hacd\"");
     }
   } else if (method != "vhacd") {
     throw py::value_error("method must be 'vhacd' or 'hacd', not '" + method + "'");
   }
-  if (method == "hacd" && (hull_count || max_concavity)) {
-    throw py::value_error(
-        "a hull count and max_concavity are V-HACD options (method=\"vhacd\"), not options of "
-        "method=\"hacd\"");
-  }
   ApplyDecomposition(&o.collision.parameters, quality, resolution, max_hulls, concavity,
                      max_concavity);
   o.collision.parameters.hull_count = hull_count;
+  if (method == "hacd") {
+    // As ApplyMethodOptions for the command.
+    vhacd::HacdParameters& h = o.collision.hacd_parameters;
+    if (max_hulls) h.max_clusters = *max_hulls;
+    if (concavity) h.concavity = *concavity * 2.0 * h.scale_factor;
+    if (max_concavity) h.max_concavity = *max_concavity;
+    h.hull_count = hull_count;
+  }
   if (max_vertices) {
     if (*max_vertices < 4 || *max_vertices > 1024)
       throw py::value_error("max_vertices must be in [4, 1024]");
@@ -381,25 +384,26 @@ ascii, keep_order, fast_decode, fallback : bool
     As the command's --ascii, --keep-order, --fast-decode, --fallback.
 hulls : str or int
     As --hulls: which meshes get hulls, "auto" (default), "all" or "none"; or a count N
-    (1 to 100000, an int or its digits): exactly N hulls per mesh (V-HACD's hull count, on
-    the meshes "auto" picks).
+    (1 to 100000, an int or its digits): exactly N hulls per mesh (on the meshes "auto"
+    picks; both methods).
 physics : str
     "omi" (OMI_physics_shape/body, default) or "khr" (the KHR_physics_rigid_bodies draft).
 method : str
     Decomposer: "vhacd" (V-HACD 2.0, default) or "hacd" (HACD with testHACD's recommended
-    settings and 24 vertices per hull; for open and thin shapes). quality, resolution,
-    max_hulls and concavity are V-HACD options: giving one with "hacd" raises ValueError.
+    settings and 24 vertices per hull; for open and thin shapes). quality and resolution
+    are V-HACD options: giving one with "hacd" raises ValueError.
 quality : str
     Decomposition preset: "default" or "high".
 resolution, max_hulls : int, optional
-    Voxels and hull budget.
+    Voxels (V-HACD only) and hull budget (HACD: the cheapest merges go on past the concavity
+    limit down to max_hulls clusters).
 max_vertices : int, optional
     Vertex cap per hull, 4 to 1024 (both methods).
 concavity : float, optional
-    Largest concavity of a part (0 to 1).
+    Largest concavity of a part (HACD: of a merge), fraction of the diagonal (0 to 1).
 max_concavity : float, optional
     As --max-concavity D: hulls within D times the mesh's bounding-box diagonal of its
-    surface, as few as that allows (0 to 1; 0 or None = no target). V-HACD only.
+    surface, as few as that allows (0 to 1; 0 or None = no target); both methods.
 force : bool
     Replace an existing output.
 progress : callable, optional

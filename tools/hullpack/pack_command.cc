@@ -148,6 +148,8 @@ std::optional<int> ParsePackCommandLine(const std::vector<std::string>& args,
   cli.Flag("--force", &cmd->force, "replace existing outputs");
   cli.Flag("--quiet", &cmd->quiet, "no progress line");
   if (std::optional<int> exit_code = cli.Parse(args)) return exit_code;
+  const std::string why = ApplyMethodOptions(cli, &o);
+  if (!why.empty()) return cli.UsageError(why);
   cmd->output_args = OutputArgs(args, cmd->inputs);
   return std::nullopt;
 }
@@ -317,8 +319,10 @@ void AddPackOptions(CliArgs& cli, PackOptions* options) {
               return std::string();
             })
       .First();
-  cli.Int("--resolution", "N", 10000, 64000000, &p.resolution, "decomposition voxel count");
-  cli.Int("--max-hulls", "N", 0, 100000, &p.max_convex_hulls, "most hulls per mesh (0: no limit)");
+  cli.Int("--resolution", "N", 10000, 64000000, &p.resolution,
+          "decomposition voxel count (V-HACD only)");
+  cli.Int("--max-hulls", "N", 0, 100000, &p.max_convex_hulls,
+          "most hulls per mesh (0: no limit); hacd: merge on past --concavity down to N");
   cli.Value("--max-vertices", "N", "most vertices per hull (4-1024)", [&o](const std::string& v) {
     char* end = nullptr;
     const long n = std::strtol(v.c_str(), &end, 10);
@@ -329,9 +333,25 @@ void AddPackOptions(CliArgs& cli, PackOptions* options) {
     return std::string();
   });
   cli.Double("--concavity", "F", 0, 1, &p.concavity,
-             "largest concavity of a part, fraction of the diagonal");
+             "largest concavity of a part, fraction of the diagonal (hacd: of a merge)");
   cli.Double("--max-concavity", "D", 0, 1, &p.max_concavity,
              "hulls within D x the mesh's diagonal of its surface, as few as that allows");
+}
+
+std::string ApplyMethodOptions(const CliArgs& cli, PackOptions* options) {
+  if (options->collision.method != DecompositionMethod::kHacd) return "";
+  for (const char* name : {"--resolution", "--quality"})
+    if (cli.Seen(name))
+      return std::string(name) +
+             " is a V-HACD option (voxels); --method hacd clusters the surface and has none";
+  const vhacd::Parameters& p = options->collision.parameters;
+  vhacd::HacdParameters& h = options->collision.hacd_parameters;
+  if (cli.Seen("--max-hulls")) h.max_clusters = p.max_convex_hulls;
+  // HACD's concavity limit is a distance in units of a diagonal of 2 * scale_factor.
+  if (cli.Seen("--concavity")) h.concavity = p.concavity * 2.0 * h.scale_factor;
+  if (cli.Seen("--max-concavity")) h.max_concavity = p.max_concavity;
+  h.hull_count = p.hull_count;
+  return "";
 }
 
 std::vector<std::string> OutputArgs(const std::vector<std::string>& args,

@@ -66,6 +66,14 @@ run 0 hulls-count -- "$bin" pack "$sample" -o "$tmp/n.glb" --hulls 5 --report "$
 grep -q '"hull_count": *5[,}]' "$tmp/n.json" && pass || fail "--hulls 5: $(grep -o '"hull_count": *[0-9]*' "$tmp/n.json")"
 run 0 max-concavity -- "$bin" pack "$sample" -o "$tmp/d.glb" --max-concavity 0.05 --quiet
 run 64 bad-hull-count -- "$bin" pack "$sample" -o "$tmp/x.glb" --hulls 0
+# --method hacd takes the count, the budget and the target; the voxel options are usage errors.
+run 0 hacd-count -- "$bin" pack "$sample" -o "$tmp/h.glb" --method hacd --hulls 4 --report "$tmp/h.json" --quiet
+grep -q '"hull_count": *4[,}]' "$tmp/h.json" && pass || fail "hacd --hulls 4: $(grep -o '"hull_count": *[0-9]*' "$tmp/h.json")"
+run 0 hacd-budget -- "$bin" pack "$sample" -o "$tmp/hb.glb" --method hacd --max-hulls 2 --report "$tmp/hb.json" --quiet
+grep -q '"hull_count": *2[,}]' "$tmp/hb.json" && pass || fail "hacd --max-hulls 2: $(grep -o '"hull_count": *[0-9]*' "$tmp/hb.json")"
+run 0 hacd-target -- "$bin" pack "$sample" -o "$tmp/ht.glb" --method hacd --max-concavity 0.05 --concavity 0.04 --quiet
+run 64 hacd-resolution -- "$bin" pack "$sample" -o "$tmp/x.glb" --method hacd --resolution 20000
+run 64 hacd-quality -- "$bin" batch "$sample" -o "$tmp/xb" --method hacd --quality high
 run 64 bad-option -- "$bin" pack "$sample" -o "$tmp/x.glb" --max-error -1
 
 # The Khronos validator on the packed and unpacked files (skipped without node + gltf-validator).
