@@ -9,6 +9,38 @@
 namespace vhacd {
 namespace internal {
 
+namespace {
+
+// The hull without faces whose corners are (nearly) collinear: a point left on a hull edge makes a
+// zero-area face whose normal is noise, which physics engines and convexity checks trip over. The
+// middle point of such a face is dropped (the hull loses nothing) and the hull rebuilt.
+HullMesh WithoutSlivers(HullMesh hull) {
+  constexpr int kRounds = 16;
+  constexpr double kMinSine = 1e-8;
+  for (int round = 0; round < kRounds; ++round) {
+    uint32_t middle = UINT32_MAX;
+    for (const auto& t : hull.triangles) {
+      const Vec3 &a = hull.vertices[t[0]], &b = hull.vertices[t[1]], &c = hull.vertices[t[2]];
+      const double ab = (b - a).squaredNorm(), bc = (c - b).squaredNorm(),
+                   ca = (a - c).squaredNorm();
+      const double longest = std::max({ab, bc, ca});
+      if ((b - a).cross(c - a).norm() > kMinSine * longest) continue;
+      middle = longest == ab ? t[2] : longest == bc ? t[0] : t[1];
+      break;
+    }
+    if (middle == UINT32_MAX) return hull;
+    std::vector<Vec3> pts;
+    for (uint32_t v = 0; v < hull.vertices.size(); ++v)
+      if (v != middle) pts.push_back(hull.vertices[v]);
+    HullMesh rebuilt;
+    if (ComputeConvexHull(pts, -1.0, &rebuilt) != HullStatus::kOk) return hull;
+    hull = std::move(rebuilt);
+  }
+  return hull;
+}
+
+}  // namespace
+
 HullMesh ClusterHull(const std::vector<Vec3>& pts, double thickness, uint32_t max_vertices) {
   HullMesh hull;
   HullStatus st = ComputeConvexHull(pts, -1.0, &hull);
@@ -44,7 +76,7 @@ HullMesh ClusterHull(const std::vector<Vec3>& pts, double thickness, uint32_t ma
     if (ComputeConvexHull(thick, -1.0, &h2) == HullStatus::kOk) hull = h2;
   }
   if (hull.empty()) return hull;
-  return SimplifyHull(hull, max_vertices, 0.0);
+  return WithoutSlivers(SimplifyHull(hull, max_vertices, 0.0));
 }
 
 HullMesh FilledClusterHull(const FillInput& in) {
