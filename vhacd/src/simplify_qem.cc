@@ -140,6 +140,7 @@ class Collapser {
       std::make_heap(heap_.begin(), heap_.end(), std::greater<Entry>());
     }
     std::vector<uint64_t>().swap(unique_edges_);
+    if (cancelled_) return false;
     const size_t start = alive_tris_;
     size_t pops = 0;
     while (!heap_.empty() && alive_tris_ > opt_.target_triangles) {
@@ -168,12 +169,14 @@ class Collapser {
 
  private:
   // fn(i) for i in [0, n) on ctx's threads, in blocks (the per-item work is small).
+  // A cancelled loop leaves work undone: cancelled_ then makes Run fail.
   template <typename F>
-  void Chunked(size_t n, const F& fn) const {
+  void Chunked(size_t n, const F& fn) {
     constexpr size_t kBlock = 2048;
-    ParallelFor(ctx_, (n + kBlock - 1) / kBlock, [&](size_t b) {
-      for (size_t i = b * kBlock, end = std::min(n, i + kBlock); i < end; ++i) fn(i);
-    });
+    if (!ParallelFor(ctx_, (n + kBlock - 1) / kBlock, [&](size_t b) {
+          for (size_t i = b * kBlock, end = std::min(n, i + kBlock); i < end; ++i) fn(i);
+        }))
+      cancelled_ = true;
   }
 
   void AddPlane(uint32_t v, const Vec3& n, const Vec3& p, double w) {
@@ -427,6 +430,7 @@ class Collapser {
   std::vector<Vec3> pos_;
   std::vector<Tri> tris_;
   Context* ctx_ = nullptr;
+  bool cancelled_ = false;
   std::vector<Eigen::Matrix4d, Eigen::aligned_allocator<Eigen::Matrix4d>> quadric_;
   std::vector<double> area_;
   std::vector<std::vector<uint32_t>> vtris_, seam_nbrs_;
