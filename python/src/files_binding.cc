@@ -6,6 +6,7 @@
 #include "common/file_util.h"
 #include "hullpack/cli_util.h"
 #include "hullpack/scene_summary.h"
+#include "hullpack/unpack_command.h"
 #include "io/scene_io.h"
 #include "mesh/flatten.h"
 #include "mesh/validate.h"
@@ -217,39 +218,21 @@ py::dict Pack(const std::string& input, const std::string& output, double max_er
 }
 
 py::dict Unpack(const std::string& input, const std::string& output, bool force) {
-  const FileFormat format = FormatFromExtension(output);
-  if (format == FileFormat::kUnknown)
+  if (FormatFromExtension(output) == FileFormat::kUnknown)
     throw py::value_error(output + ": unknown output format (.glb .obj .off .wrl .ply)");
-  Status failed;
-  size_t meshes = 0, triangles = 0;
+  Result<UnpackSummary> done = UnpackSummary();
   {
     py::gil_scoped_release release;
-    failed = CheckOutputPath(output, {input}, force);
-    Result<std::vector<uint8_t>> bytes =
-        failed.ok() ? ReadFileBytes(input) : Result<std::vector<uint8_t>>(failed);
-    if (!bytes.ok()) {
-      failed = bytes.status();
-    } else {
-      GltfDocument plain;
-      Result<Scene> scene =
-          ReadPackedGltf(bytes.value().data(), bytes.value().size(), input, "", &plain);
-      if (!scene.ok()) {
-        failed = scene.status();
-      } else if (format == FileFormat::kGlb) {
-        Result<std::vector<uint8_t>> glb = plain.Serialize();
-        failed = glb.ok() ? WriteFileAtomically(output, glb.value()) : glb.status();
-      } else {
-        failed = WriteScene(scene.value(), output);
-      }
-      if (scene.ok()) meshes = scene->meshes.size(), triangles = scene->triangle_count();
-    }
+    done = hullpack::Unpack(input, output, force);
   }
-  if (!failed.ok()) Raise(failed);
+  if (!done.ok()) Raise(done.status());
   py::dict d;
   d["input"] = input;
   d["output"] = output;
-  d["meshes"] = meshes;
-  d["triangles"] = triangles;
+  d["meshes"] = done->meshes;
+  d["triangles"] = done->triangles;
+  d["hulls"] = done->hulls;
+  if (!done->hulls_path.empty()) d["hulls_output"] = done->hulls_path;
   return d;
 }
 
@@ -434,15 +417,17 @@ Parameters
 input : str
     A GLB written by pack.
 output : str
-    .glb (every compressed primitive decoded into plain accessors, hull extensions kept) or
-    .obj .off .wrl .ply (the decoded meshes, hulls included).
+    .glb (every compressed primitive decoded into plain accessors, colliders and hulls kept);
+    .obj .wrl (the render meshes, then each hull as a closed mesh named hull_N); .off .ply
+    (the render meshes; the hulls go to STEM.hulls.off / .ply beside it).
 force : bool
     Replace an existing output.
 
 Returns
 -------
 dict
-    "input", "output", "meshes", "triangles".)",
+    "input", "output", "meshes" (render meshes; .glb: every mesh), "triangles" (of those),
+    "hulls", and "hulls_output" when the hulls went to a file of their own.)",
         py::arg("input"), py::arg("output"), py::kw_only(), py::arg("force") = false);
   m.def("load_mesh", &LoadMesh, R"(Read a mesh or scene file into numpy arrays.
 

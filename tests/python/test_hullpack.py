@@ -209,13 +209,20 @@ class Files(unittest.TestCase):
             hullpack.pack(self.obj, glb)
         out = os.path.join(self.dir.name, "back.obj")
         back = hullpack.unpack(glb, out)
-        self.assertGreater(back["meshes"], 2)  # the mesh and its hulls
+        self.assertEqual(back["meshes"], 1)
+        self.assertEqual(back["triangles"], 24 * 12 * 2)
+        hulls = report["meshes"][0]["hull_count"]
+        self.assertEqual(back["hulls"], hulls)
+        # The OBJ holds the render mesh, then each hull as a closed mesh (object hull_N).
         summary = hullpack.info(out)
         self.assertEqual(summary["format"].lower(), "obj")
-        # The hulls are points (docs/packed-gltf.md): an OBJ gets the render mesh's triangles.
-        self.assertEqual(summary["meshes"], 1)
-        self.assertEqual(summary["triangles"], back["triangles"])
-        self.assertEqual(summary["triangles"], 24 * 12 * 2)
+        self.assertEqual(summary["meshes"], 1 + hulls)
+        self.assertGreater(summary["triangles"], back["triangles"] + 4 * hulls - 1)
+        # OFF holds one mesh: the hulls go to a file of their own beside it.
+        off = hullpack.unpack(glb, os.path.join(self.dir.name, "back.off"))
+        self.assertTrue(off["hulls_output"].endswith("back.hulls.off"))
+        self.assertEqual(hullpack.info(off["hulls_output"])["triangles"],
+                         summary["triangles"] - back["triangles"])
         with self.assertRaises(OSError):
             hullpack.info(os.path.join(self.dir.name, "missing.obj"))
 
