@@ -226,6 +226,26 @@ class Files(unittest.TestCase):
         with self.assertRaises(OSError):
             hullpack.info(os.path.join(self.dir.name, "missing.obj"))
 
+    def test_pack_quantized_hulls(self):
+        # Default hulls are floats (nothing required because of them); quantized_hulls stores the
+        # same grid integers as bytes/shorts and requires KHR_mesh_quantization.
+        import json
+        import struct
+
+        def required(path):
+            with open(path, "rb") as f:
+                data = f.read()
+            length = struct.unpack("<I", data[12:16])[0]
+            return json.loads(data[20:20 + length]).get("extensionsRequired", [])
+
+        floats = os.path.join(self.dir.name, "f.glb")
+        quantized = os.path.join(self.dir.name, "q.glb")
+        hullpack.pack(self.obj, floats, resolution=20000)
+        hullpack.pack(self.obj, quantized, resolution=20000, quantized_hulls=True)
+        self.assertNotIn("KHR_mesh_quantization", required(floats))
+        self.assertIn("KHR_mesh_quantization", required(quantized))
+        self.assertLess(os.path.getsize(quantized), os.path.getsize(floats))
+
     def test_pack_with_hacd(self):
         hacd = os.path.join(self.dir.name, "hacd.glb")
         vhacd = os.path.join(self.dir.name, "vhacd.glb")

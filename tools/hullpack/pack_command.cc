@@ -271,6 +271,9 @@ void AddPackOptions(CliArgs& cli, PackOptions* options) {
            "code values in vertex id order: faster decoding, 2-5% larger");
   cli.Flag("--fallback", &o.glb.fallback,
            "also write plain accessors (readers without the extension still work)");
+  cli.Flag("--quantized-hulls", &o.glb.quantized_hulls,
+           "hull points as bytes/shorts with KHR_mesh_quantization, which the file then\n"
+           "requires (smaller; default: floats, no extension needed because of hulls)");
   cli.Value("--hulls", "all|none|auto|N",
             "which meshes get collision hulls (auto); a number N: exactly N hulls per mesh",
             [&o](const std::string& v) {
@@ -308,8 +311,8 @@ void AddPackOptions(CliArgs& cli, PackOptions* options) {
               return std::string();
             });
   cli.Value("--quality", "default|high",
-            "decomposition preset (default: V-HACD 2.0's, hulls merged while they\n"
-            "stick out by at most 3 % of the diagonal, at most 24 vertices per hull);\n"
+            "decomposition preset (default: --max-concavity 0.07, at most 24 vertices\n"
+            "per hull; high: V-HACD 2.0's volume criteria, finer, up to 128 vertices);\n"
             "the decomposition options below refine it",
             [&p](const std::string& v) {
               if (v != "default" && v != "high") return "takes default or high, not '" + v + "'";
@@ -329,9 +332,11 @@ void AddPackOptions(CliArgs& cli, PackOptions* options) {
     return std::string();
   });
   cli.Double("--concavity", "F", 0, 1, &p.concavity,
-             "largest concavity of a part, fraction of the diagonal");
+             "largest concavity of a part, fraction of the diagonal (V-HACD 2.0's\n"
+             "volume criterion: applies with --max-concavity 0)");
   cli.Double("--max-concavity", "D", 0, 1, &p.max_concavity,
-             "hulls within D x the mesh's diagonal of its surface, as few as that allows");
+             "hulls within D x the mesh's diagonal of its surface, as few as that allows\n"
+             "(0.07; 0: V-HACD 2.0's volume criteria)");
 }
 
 std::vector<std::string> OutputArgs(const std::vector<std::string>& args,

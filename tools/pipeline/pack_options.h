@@ -19,8 +19,9 @@ struct PackOptions {
   // Largest position error allowed, as a fraction of each mesh's bounding-box diagonal; it sets the
   // position bits unless position_bits is given.
   double max_error = 0.0005;
-  // The same for collision-hull vertices. Hulls already stand off the surface by their concavity
-  // (typically 0.01-0.03 of the diagonal), so they need far fewer bits than the render mesh.
+  // The same for collision-hull vertices. Hulls already stand off the surface by up to their
+  // concavity (the preset's max_concavity, 0.07 of the diagonal), so they need far fewer bits than
+  // the render mesh.
   double hull_error = 0.002;
   int position_bits = 0;  // 0 = from max_error
   int normal_bits = 10;
