@@ -176,7 +176,8 @@ Status MakeHulls(const Mesh& mesh, const PackOptions& options, vhacd::Observer* 
     const HullGrid& grid = quantized->grids[h];
     const bool wide =
         !grid.local.empty() && *std::max_element(grid.local.begin(), grid.local.end()) > 255;
-    r.hull_bytes += hull.vertex_count() * (wide ? 8 : 4);
+    const bool floats = options.glb.fallback || !options.glb.quantized_hulls;
+    r.hull_bytes += hull.vertex_count() * (floats ? 12 : wide ? 8 : 4);
     out.hulls.push_back(std::move(hull));
     out.hull_grids.push_back(std::move(quantized->grids[h]));
   }

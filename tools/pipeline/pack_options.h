@@ -50,7 +50,7 @@ struct MeshPackReport {
   std::string no_hulls_reason;    // why the mesh has no hulls, "" when it has some
   size_t hull_count = 0;
   size_t hull_vertices = 0;
-  size_t hull_bytes = 0;  // the hulls' accessor data (quantized positions)
+  size_t hull_bytes = 0;  // the hulls' accessor data (their points as stored: floats or integers)
   int hull_position_bits = 0;
   std::string hull_position_range;
   double hull_concavity = -1;  // vhacd's report (fractions of the diagonal); -1 = not measured
