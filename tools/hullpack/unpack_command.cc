@@ -13,6 +13,9 @@
 namespace hullpack {
 namespace {
 
+// Hulls `hullpack pack` writes have at most 1024 points (--max-vertices).
+constexpr size_t kMaxUnpackedHullPoints = 16384;
+
 // "dir/name.off" -> "dir/name.hulls.off"
 std::string HullsPath(const std::string& output) {
   const size_t slash = output.find_last_of("/\\");
@@ -70,6 +73,13 @@ Result<UnpackSummary> Unpack(const std::string& input, const std::string& output
   summary.meshes = render.meshes.size();
   Scene& hull_target = separate_hulls ? hull_scene : render;
   for (const CollisionHull& h : hulls.value()) {
+    // The hull's triangles cost O(points x faces): a file's hull may be hostile.
+    if (h.hull.triangle_count() == 0 && h.hull.vertex_count() > kMaxUnpackedHullPoints) {
+      return Status(StatusCode::kInvalidArgument,
+                    input + ": nodes[" + std::to_string(h.collider_node) + "]: a hull of " +
+                        std::to_string(h.hull.vertex_count()) + " points (unpack triangulates " +
+                        "hulls of at most " + std::to_string(kMaxUnpackedHullPoints) + ")");
+    }
     Mesh mesh = h.hull.triangle_count() > 0 ? h.hull : ConvexHullOfPoints(h.hull.positions);
     mesh.name = "hull_" + std::to_string(summary.hulls);
     mesh.normals.clear();

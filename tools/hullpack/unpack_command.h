@@ -24,7 +24,8 @@ struct UnpackSummary {
 //  - .off, .ply (one mesh per file): the render meshes into `output`, the hulls into
 //    STEM.hulls.off / STEM.hulls.ply beside it.
 // Hulls are in the space of the render mesh their body node shows, as the writers write every mesh
-// (without node transforms). Existing outputs are replaced only with `force`.
+// (without node transforms); a hull of more than 16384 points (pack writes at most 1024) is an
+// error for the mesh formats. Existing outputs are replaced only with `force`.
 Result<UnpackSummary> Unpack(const std::string& input, const std::string& output, bool force);
 
 int RunUnpackCommand(const std::vector<std::string>& args);

@@ -151,6 +151,7 @@ Mesh ConvexHullOfPoints(const std::vector<float>& points) {
 
   std::set<std::pair<int, int>> edges;
   std::vector<size_t> visible;
+  size_t dead = 0;
   for (size_t i = 0; i < n; ++i) {
     const int pi = static_cast<int>(i);
     if (pi == i0 || pi == i1 || pi == i2 || pi == i3) continue;
@@ -169,6 +170,13 @@ Mesh ConvexHullOfPoints(const std::vector<float>& points) {
         const int a = faces[f].v[k], b = faces[f].v[(k + 1) % 3];
         if (!edges.count({b, a})) faces.push_back(MakeFace(p, a, b, pi));  // a horizon edge
       }
+    }
+    dead += visible.size();
+    if (dead * 2 > faces.size()) {  // drop the dead faces once they are half the list
+      faces.erase(
+          std::remove_if(faces.begin(), faces.end(), [](const Face& f) { return !f.alive; }),
+          faces.end());
+      dead = 0;
     }
   }
   std::vector<int> triangles;
