@@ -66,6 +66,13 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
     return a < b;
   });
   std::vector<uint32_t> remap(np, 0);
+  // Sized before they are filled: the mesh stays for the whole decomposition, and grown one
+  // element at a time it would hold up to twice its size.
+  size_t distinct = 0;
+  for (size_t k = 0; k < order.size(); ++k)
+    distinct += k == 0 || pts[order[k]] != pts[order[k - 1]];
+  out->points.reserve(distinct);
+  out->point_source.reserve(distinct);
   for (size_t k = 0; k < order.size(); ++k) {
     if (k == 0 || pts[order[k]] != pts[order[k - 1]]) {
       out->points.push_back(pts[order[k]]);
@@ -76,6 +83,7 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
   if (cancelled()) return Status::kCancelled;
   // Triangles: drop degenerate and duplicate (same vertex set) ones, keep the first.
   std::vector<std::pair<std::array<uint32_t, 3>, uint32_t>> keyed;
+  keyed.reserve(m.triangle_count);
   for (size_t t = 0; t < m.triangle_count; ++t) {
     std::array<uint32_t, 3> tri;
     for (int k = 0; k < 3; ++k) tri[k] = remap[m.indices[t * m.triangle_stride + k]];
@@ -86,9 +94,12 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
   }
   std::sort(keyed.begin(), keyed.end());
   std::vector<uint32_t> keep;
+  keep.reserve(keyed.size());
   for (size_t k = 0; k < keyed.size(); ++k)
     if (k == 0 || keyed[k].first != keyed[k - 1].first) keep.push_back(keyed[k].second);
   std::sort(keep.begin(), keep.end());
+  out->triangles.reserve(keep.size());
+  out->triangle_source.reserve(keep.size());
   for (uint32_t t : keep) {
     std::array<uint32_t, 3> tri;
     for (int k = 0; k < 3; ++k) tri[k] = remap[m.indices[t * m.triangle_stride + k]];
