@@ -631,8 +631,11 @@ class ObjParser {
         }
       }
       if (!lacks_normal.empty()) FillNormalsFromFaces(m, lacks_normal);
+      // Grown face by face: down to their size, the mesh lives through the whole pipeline.
       m.indices = std::move(b.indices);
+      m.indices.shrink_to_fit();
       m.material_ids = std::move(b.material_ids);
+      m.material_ids.shrink_to_fit();
       scene.meshes.push_back(std::move(m));
     }
     // Faces before the first `usemtl` carry kNoMaterial: without any material in the file the ids
@@ -641,7 +644,7 @@ class ObjParser {
     uint32_t fallback = kNoMaterial;
     for (Mesh& m : scene.meshes) {
       if (!file_has_materials) {
-        m.material_ids.clear();
+        m.material_ids = std::vector<uint32_t>();
         continue;
       }
       for (uint32_t& id : m.material_ids) {
