@@ -5,6 +5,15 @@
 namespace vhacd {
 namespace internal {
 
+namespace {
+
+template <typename T>
+void FreeMemory(std::vector<T>& v) {
+  std::vector<T>().swap(v);
+}
+
+}  // namespace
+
 Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* why) {
   if (m.point_count == 0 || m.triangle_count == 0) {
     *why = "the mesh has no points or no triangles";
@@ -80,6 +89,11 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
     }
     remap[order[k]] = static_cast<uint32_t>(out->points.size() - 1);
   }
+  // Each working array is freed once done: the decomposition beside which this may run (a
+  // pipeline also encodes the mesh) feels the sum of what is alive at once.
+  FreeMemory(pts);
+  FreeMemory(used);
+  FreeMemory(order);
   if (cancelled()) return Status::kCancelled;
   // Triangles: drop degenerate and duplicate (same vertex set) ones, keep the first.
   std::vector<std::pair<std::array<uint32_t, 3>, uint32_t>> keyed;
@@ -97,6 +111,7 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
   keep.reserve(keyed.size());
   for (size_t k = 0; k < keyed.size(); ++k)
     if (k == 0 || keyed[k].first != keyed[k - 1].first) keep.push_back(keyed[k].second);
+  FreeMemory(keyed);
   std::sort(keep.begin(), keep.end());
   out->triangles.reserve(keep.size());
   out->triangle_source.reserve(keep.size());
@@ -106,6 +121,8 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
     out->triangles.push_back(tri);
     out->triangle_source.push_back(t);
   }
+  FreeMemory(keep);
+  FreeMemory(remap);
   if (out->triangles.empty()) {
     *why = "every triangle is degenerate";
     return Status::kEmptyMesh;
