@@ -590,7 +590,7 @@ class ObjParser {
       if (b.indices.empty()) continue;
       b.first_of_v = std::vector<uint32_t>();
       b.next_same_v = std::vector<uint32_t>();
-      KeepFileOrder(b);
+      KeepFileOrder(b, ThreadCount(options_.threads));
       Mesh m;
       m.name = b.name;
       const size_t n = b.corners.size();
@@ -676,14 +676,21 @@ class ObjParser {
 
   // Vertices were numbered in order of first use; renumber them in the order of their (v, vt, vn)
   // triples so that a file's vertex order survives (a positions-only file keeps its `v` order).
-  static void KeepFileOrder(MeshBuilder& b) {
+  // The sort runs on `threads`; corners are distinct, so the order is total (the index breaks
+  // ties that cannot happen) and the result does not depend on the thread count.
+  static void KeepFileOrder(MeshBuilder& b, int threads) {
     std::vector<uint32_t> order(b.corners.size());
     for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) {
-      const Corner& a = b.corners[x];
-      const Corner& c = b.corners[y];
-      return a.v != c.v ? a.v < c.v : a.vt != c.vt ? a.vt < c.vt : a.vn < c.vn;
-    });
+    ParallelSort(
+        order.begin(), order.end(),
+        [&](uint32_t x, uint32_t y) {
+          const Corner& a = b.corners[x];
+          const Corner& c = b.corners[y];
+          if (a.v != c.v) return a.v < c.v;
+          if (a.vt != c.vt) return a.vt < c.vt;
+          return a.vn != c.vn ? a.vn < c.vn : x < y;
+        },
+        threads);
     std::vector<uint32_t> new_index(order.size());
     std::vector<Corner> sorted(order.size());
     for (uint32_t i = 0; i < order.size(); ++i) {
