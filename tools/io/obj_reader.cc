@@ -255,18 +255,22 @@ class ObjParser {
   }
 
   // The read-ahead part holding the line at `at`, once read, when it read it; null otherwise.
-  // Parts left behind are freed.
+  // Parts left behind are freed. The lock is taken once per part, not once per line.
   ReadAhead* AheadAt(const char* at) {
     while (ahead_at_ < ahead_.size() && ahead_[ahead_at_].end <= at) {
-      WaitUntilRead(ahead_at_);  // a reader may still be writing it
+      if (!ahead_at_read_) WaitUntilRead(ahead_at_);  // a reader may still be writing it
       ahead_[ahead_at_] = ReadAhead();
       ++ahead_at_;
+      ahead_at_read_ = false;
       std::lock_guard<std::mutex> lock(ready_mutex_);
       consumed_ = ahead_at_;
       ready_changed_.notify_all();
     }
     if (ahead_at_ == ahead_.size()) return nullptr;
-    WaitUntilRead(ahead_at_);
+    if (!ahead_at_read_) {
+      WaitUntilRead(ahead_at_);
+      ahead_at_read_ = true;
+    }
     return ahead_[ahead_at_].ok ? &ahead_[ahead_at_] : nullptr;
   }
 
@@ -730,6 +734,7 @@ class ObjParser {
   TextScanner scan_;
   std::vector<ReadAhead> ahead_;
   size_t ahead_at_ = 0;
+  bool ahead_at_read_ = false;  // part ahead_at_ is known to be read (sequential pass only)
   std::vector<std::thread> readers_;
   std::atomic<size_t> next_to_read_{0};
   // Guarded by ready_mutex_: per part, read; the parts the sequential pass is done with; stop.
