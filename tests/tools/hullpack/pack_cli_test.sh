@@ -27,6 +27,8 @@ sample=$src/samples/torus.obj
 run 0 pack -- "$bin" pack "$sample" -o "$tmp/t.glb" --report "$tmp/t.json" --quiet
 [ -s "$tmp/t.glb" ] && pass || fail "pack wrote nothing"
 grep -q '"hull_count"' "$tmp/t.json" && grep -q '"max_error_fraction"' "$tmp/t.json" && pass || fail "report lacks fields"
+# The write stage (temp file + rename) is timed: a positive number, not the 0 of an untimed stage.
+grep -Eq '"write": [0-9.]+e-[0-9]+|"write": 0\.[0-9]*[1-9]' "$tmp/t.json" && pass || fail "seconds.write is not timed: $(grep '"write"' "$tmp/t.json")"
 run 0 info-packed -- "$bin" info "$tmp/t.glb"
 cp "$tmp/t.glb" "$tmp/hulls.glb"  # compressed mesh + OMI hulls, no fallback (validated below)
 grep -q '"hull_position_bits"' "$tmp/t.json" && grep -q '"hull_encode"' "$tmp/t.json" && pass || fail "report lacks hull fields"
