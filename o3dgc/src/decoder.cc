@@ -89,7 +89,7 @@ Status DecodeTriangles(DecodeState& st) {
     attribute_wedges |= d.prediction == Prediction::kParallelogram;
   return DecodeConnectivity(&st.dec, st.nt, st.nv, &st.tris, &st.nc,
                             attribute_wedges ? &st.opposite : nullptr, &st.opposite_vertices,
-                            &st.vertex_triangles);
+                            &st.vertex_triangles, st.sh.minor);
 }
 
 Status DecodeSeams(DecodeState& st) {

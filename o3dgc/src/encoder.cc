@@ -249,7 +249,7 @@ void EncodeTriangles(EncodeState& st) {
   bool attribute_wedges = h.has_normals && h.normal.prediction == Prediction::kParallelogram;
   for (const AttributeDesc& d : h.floats)
     attribute_wedges |= d.prediction == Prediction::kParallelogram;
-  EncodeConnectivity(welded_tris, num_welded, &enc, &conn, attribute_wedges);
+  EncodeConnectivity(welded_tris, num_welded, &enc, &conn, attribute_wedges, kFormatMinor);
   nc = uint32_t(conn.old_of_new.size());
   welded_new.assign(num_welded, kNone);
   for (uint32_t i = 0; i < nc; ++i) welded_new[conn.old_of_new[i]] = i;

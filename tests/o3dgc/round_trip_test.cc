@@ -427,7 +427,7 @@ TEST(RoundTrip, DeterministicAndStreamInfoAddsUp) {
   EXPECT_EQ(read.version_major, kFormatMajor);
   EXPECT_EQ(read.version_minor, kFormatMinor);
   EXPECT_EQ(info.version_major, 1u);
-  EXPECT_STREQ(FormatVersionString(), "1.0");
+  EXPECT_STREQ(FormatVersionString(), "1.1");
 }
 
 TEST(RoundTrip, RejectsInvalidInput) {
