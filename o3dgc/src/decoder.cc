@@ -1,7 +1,9 @@
 // Top-level decoder: the mirror of encoder.cc. Every count is checked against what the stream can
 // hold before anything is allocated, every value against its valid range.
+#include <algorithm>
 #include <cstring>
 #include <memory>
+#include <type_traits>
 
 #include "arithmetic_coder.h"
 #include "ascii_stream.h"
@@ -205,48 +207,96 @@ Status DecodePositions(DecodeState& st, DecodedMesh* m) {
   return Status::kOk;
 }
 
-// Normals, float attributes and int attributes, over the attribute vertices.
+// The mesh an attribute is coded over: the attribute vertices, or (format 1.1, an attribute
+// `shared` across seams) the position vertices; what its predictors need, built on first use.
+struct AttributeMesh {
+  const std::vector<uint32_t>* tris = nullptr;
+  uint32_t n = 0;
+  const uint32_t* position_of = nullptr;  // vertex -> position vertex
+  bool positions = false;                 // the position mesh (the connectivity's)
+  MeshAdjacency adj;
+  bool adj_built = false;
+  WedgeTable wedges;
+  bool wedges_built = false;
+  std::vector<double> geometry;
+};
+
+// Normals, float attributes and int attributes, over the attribute vertices (or, shared, over
+// the position vertices and then copied to each attribute vertex).
 Status DecodeAttributes(DecodeState& st, DecodedMesh* m) {
   const PayloadHeader& h = st.h;
   ArithmeticDecoder& dec = st.dec;
   StreamInfo& si = st.si;
   const uint32_t nv = st.nv;
-  const std::vector<uint32_t>& attr_tris = st.attr_tris();
   Status s;
-  MeshAdjacency attr_adj;
-  if (h.has_normals && h.normal.prediction == Prediction::kSurfaceNormal)
-    attr_adj.Build(attr_tris, nv);
-  WedgeTable attr_wedges;
-  bool attr_wedges_built = false;
+  AttributeMesh attr, pos;
+  attr.tris = &st.attr_tris();
+  attr.n = nv;
+  attr.position_of = st.welded_of.data();
+  std::vector<uint32_t> identity;
+  // Format 1.1: with seams, each attribute says whether it is coded per position vertex.
+  const bool may_share = st.sh.minor >= 1 && st.has_seams;
+  if (may_share) {
+    identity.resize(st.nw);
+    for (uint32_t i = 0; i < st.nw; ++i) identity[i] = i;
+    pos.tris = &st.tris;
+    pos.n = st.nw;
+    pos.position_of = identity.data();
+    pos.positions = true;
+  }
   NormalGeometry geo;
   geo.positions = st.qpos.data();
   for (int k = 0; k < 3; ++k) {
     geo.scale[k] = double(h.position.quant.range[k]) / double(h.position.quant.max_q());
   }
-  geo.position_of = st.welded_of.data();
-  std::vector<double> attr_geometry;
-  auto decode_float = [&](const AttributeDesc& d, std::vector<float>* values) {
+  auto mesh_for = [&]() -> AttributeMesh& { return may_share && dec.DecodeBits(1) ? pos : attr; };
+  // Copies per-position values to the attribute vertices.
+  auto expand = [&](const AttributeMesh& mesh, auto* values, uint32_t dim) {
+    if (!mesh.positions) return;
+    std::remove_reference_t<decltype(*values)> out(size_t(nv) * dim);
+    for (uint32_t v = 0; v < nv; ++v) {
+      std::copy_n(values->data() + size_t(st.welded_of[v]) * dim, dim,
+                  out.data() + size_t(v) * dim);
+    }
+    *values = std::move(out);
+  };
+  auto decode_float = [&](const AttributeDesc& d, AttributeMesh& mesh, std::vector<float>* values) {
     std::vector<int32_t> q;
     const bool texcoord = d.semantic == Semantic::kTexCoord && d.dimension == 2 &&
                           d.prediction == Prediction::kParallelogram;
-    if (texcoord && attr_geometry.empty()) attr_geometry = AttributeGeometry(geo, nv);
-    if (d.prediction == Prediction::kParallelogram && !attr_wedges_built) {
-      attr_wedges.Build(attr_tris, nv, st.opposite, st.has_seams);
-      attr_wedges_built = true;
+    geo.position_of = mesh.position_of;
+    if (texcoord && mesh.geometry.empty()) mesh.geometry = AttributeGeometry(geo, mesh.n);
+    if (d.prediction == Prediction::kParallelogram && !mesh.wedges_built) {
+      if (mesh.positions) {
+        mesh.wedges.BuildFromOppositeVertices(st.tris, st.nw, st.opposite_vertices,
+                                              &st.vertex_triangles);
+      } else {
+        mesh.wedges.Build(*mesh.tris, mesh.n, st.opposite, st.has_seams);
+      }
+      mesh.wedges_built = true;
     }
-    const Status r = DecodeQuantized(&dec, &attr_wedges, nv, int(d.dimension), d.bits, d.prediction,
-                                     st.order, &q, texcoord ? &attr_geometry : nullptr);
+    const Status r =
+        DecodeQuantized(&dec, &mesh.wedges, mesh.n, int(d.dimension), d.bits, d.prediction,
+                        st.order, &q, texcoord ? &mesh.geometry : nullptr);
     if (r != Status::kOk) return r;
     values->resize(q.size());
-    d.quant.DequantizeAll(q.data(), nullptr, nv, values->data());
+    d.quant.DequantizeAll(q.data(), nullptr, mesh.n, values->data());
+    expand(mesh, values, d.dimension);
     return Status::kOk;
   };
   size_t mark = dec.BytesConsumed();
   if (h.has_normals) {
+    AttributeMesh& mesh = mesh_for();
     if (h.normal.prediction == Prediction::kSurfaceNormal) {
-      s = DecodeOctNormals(&dec, attr_adj, geo, nv, h.normal.bits, &m->normals);
+      if (!mesh.adj_built) {
+        mesh.adj.Build(*mesh.tris, mesh.n);
+        mesh.adj_built = true;
+      }
+      geo.position_of = mesh.position_of;
+      s = DecodeOctNormals(&dec, mesh.adj, geo, mesh.n, h.normal.bits, &m->normals);
+      if (s == Status::kOk) expand(mesh, &m->normals, 3);
     } else {
-      s = decode_float(h.normal, &m->normals);
+      s = decode_float(h.normal, mesh, &m->normals);
     }
     if (s != Status::kOk) return s;
   }
@@ -256,7 +306,7 @@ Status DecodeAttributes(DecodeState& st, DecodedMesh* m) {
     DecodedFloatAttribute a;
     a.semantic = d.semantic;
     a.dimension = d.dimension;
-    if ((s = decode_float(d, &a.values)) != Status::kOk) return s;
+    if ((s = decode_float(d, mesh_for(), &a.values)) != Status::kOk) return s;
     m->float_attributes.push_back(std::move(a));
     si.float_attributes.push_back(dec.BytesConsumed() - mark);
   }
@@ -265,9 +315,11 @@ Status DecodeAttributes(DecodeState& st, DecodedMesh* m) {
     DecodedIntAttribute a;
     a.semantic = d.semantic;
     a.dimension = d.dimension;
-    if ((s = DecodeInts(&dec, nv, int(d.dimension), d.prediction, &a.values)) != Status::kOk) {
+    const AttributeMesh& mesh = mesh_for();
+    if ((s = DecodeInts(&dec, mesh.n, int(d.dimension), d.prediction, &a.values)) != Status::kOk) {
       return s;
     }
+    expand(mesh, &a.values, d.dimension);
     m->int_attributes.push_back(std::move(a));
     si.int_attributes.push_back(dec.BytesConsumed() - mark);
   }

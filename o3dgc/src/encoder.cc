@@ -49,7 +49,7 @@ bool AllFinite(const std::vector<float>& v) {
 
 std::vector<float> Reorder(const std::vector<float>& v, uint32_t dim,
                            const std::vector<uint32_t>& old_of_new) {
-  std::vector<float> out(v.size());
+  std::vector<float> out(old_of_new.size() * dim);
   for (size_t i = 0; i < old_of_new.size(); ++i) {
     std::memcpy(&out[i * dim], &v[size_t(old_of_new[i]) * dim], dim * sizeof(float));
   }
@@ -94,6 +94,7 @@ struct EncodeState {
   // an input vertex for each position vertex.
   std::vector<uint32_t> orig_new, old_of_orig, welded_of_orig, rep_of_welded;
   uint32_t nw = 0;
+  bool has_seams = false;
   std::vector<int32_t> qpos;  // quantized positions per position vertex
 };
 
@@ -296,6 +297,7 @@ void EncodeSeams(EncodeState& st) {
   bool has_seams = false;
   for (uint32_t w = 0; w < nc && !has_seams; ++w) has_seams = split_count[w] > 1;
   enc.EncodeBits(has_seams ? 1 : 0, 1);
+  st.has_seams = has_seams;
   if (has_seams) {
     for (uint32_t w = 0; w < nc; ++w) EncodeEG(enc, sm->seam_count, split_count[w] - 1);
   }
@@ -416,6 +418,35 @@ void EncodePositions(EncodeState& st) {
 }
 
 // Normals, float and int attributes, over the attribute vertices.
+// The mesh an attribute is coded over (see decoder.cc): the attribute vertices, or the position
+// vertices for an attribute shared across seams; `input_of` maps its vertices to input vertices.
+struct AttributeMesh {
+  const std::vector<uint32_t>* tris = nullptr;
+  uint32_t n = 0;
+  const uint32_t* position_of = nullptr;
+  const std::vector<uint32_t>* input_of = nullptr;
+  bool positions = false;
+  MeshAdjacency adj;
+  bool adj_built = false;
+  WedgeTable wedges;
+  bool wedges_built = false;
+  std::vector<double> geometry;
+};
+
+// Format 1.1: whether every attribute vertex of each position vertex holds the same value (the
+// attribute is then coded once per position vertex). Why: UV seams split vertices whose normals,
+// skin weights and joints are continuous across the seam (smooth shading, a DCC export); coding
+// them per attribute vertex coded those values twice and predicted each copy from half a fan.
+template <typename T>
+bool SharedAcrossSeams(const EncodeState& st, const T* values, uint32_t dim) {
+  for (uint32_t i = 0; i < st.old_of_orig.size(); ++i) {
+    const size_t a = size_t(st.old_of_orig[i]) * dim;
+    const size_t b = size_t(st.rep_of_welded[st.welded_of_orig[i]]) * dim;
+    if (std::memcmp(values + a, values + b, dim * sizeof(T)) != 0) return false;
+  }
+  return true;
+}
+
 void EncodeAttributes(EncodeState& st) {
   const size_t nv = st.nv;
   const size_t nt = st.nt;
@@ -429,45 +460,70 @@ void EncodeAttributes(EncodeState& st) {
   ConnectivityEncoding& conn = st.conn;
   std::vector<uint32_t>& corner_vertex = st.corner_vertex;
   std::vector<uint32_t>& orig_new = st.orig_new;
-  std::vector<uint32_t>& old_of_orig = st.old_of_orig;
-  std::vector<uint32_t>& welded_of_orig = st.welded_of_orig;
   std::vector<int32_t>& qpos = st.qpos;
   std::vector<uint32_t> attr_tris;  // only attributes beside positions need it
   if (h.has_normals || !h.floats.empty()) {
     attr_tris.resize(3 * nt);
     for (size_t i = 0; i < 3 * nt; ++i) attr_tris[i] = orig_new[corner_vertex[i]];
   }
-  MeshAdjacency attr_adj;
-  if (h.has_normals && h.normal.prediction == Prediction::kSurfaceNormal) {
-    attr_adj.Build(attr_tris, uint32_t(nv));
+  AttributeMesh attr, pos;
+  attr.tris = &attr_tris;
+  attr.n = uint32_t(nv);
+  attr.position_of = st.welded_of_orig.data();
+  attr.input_of = &st.old_of_orig;
+  std::vector<uint32_t> identity;
+  const bool may_share = kFormatMinor >= 1 && st.has_seams;
+  if (may_share) {
+    identity.resize(st.nw);
+    for (uint32_t i = 0; i < st.nw; ++i) identity[i] = i;
+    pos.tris = &conn.triangles;
+    pos.n = st.nw;
+    pos.position_of = identity.data();
+    pos.input_of = &st.rep_of_welded;
+    pos.positions = true;
   }
-  WedgeTable attr_wedges;
-  bool attr_wedges_built = false;
   NormalGeometry geo;
   geo.positions = qpos.data();
   for (int k = 0; k < 3; ++k) {
     geo.scale[k] = double(h.position.quant.range[k]) / double(h.position.quant.max_q());
   }
-  geo.position_of = welded_of_orig.data();
-  std::vector<double> attr_geometry;
+  // Writes the 1.1 bit and picks the mesh.
+  auto mesh_for = [&](bool shared) -> AttributeMesh& {
+    if (!may_share) return attr;
+    enc.EncodeBits(shared ? 1 : 0, 1);
+    return shared ? pos : attr;
+  };
   auto code_float = [&](const AttributeDesc& d, const std::vector<float>& values) {
-    const std::vector<float> v = Reorder(values, d.dimension, old_of_orig);
+    AttributeMesh& mesh = mesh_for(may_share && SharedAcrossSeams(st, values.data(), d.dimension));
+    const std::vector<float> v = Reorder(values, d.dimension, *mesh.input_of);
     std::vector<int32_t> q(v.size());
     for (size_t i = 0; i < v.size(); ++i) q[i] = d.quant.Quantize(v[i], uint32_t(i % d.dimension));
     const bool texcoord = d.semantic == Semantic::kTexCoord && d.dimension == 2 &&
                           d.prediction == Prediction::kParallelogram;
-    if (texcoord && attr_geometry.empty()) attr_geometry = AttributeGeometry(geo, uint32_t(nv));
-    if (d.prediction == Prediction::kParallelogram && !attr_wedges_built) {
-      attr_wedges.Build(attr_tris, uint32_t(nv), conn.opposite, true);
-      attr_wedges_built = true;
+    geo.position_of = mesh.position_of;
+    if (texcoord && mesh.geometry.empty()) mesh.geometry = AttributeGeometry(geo, mesh.n);
+    if (d.prediction == Prediction::kParallelogram && !mesh.wedges_built) {
+      if (mesh.positions) {
+        mesh.wedges.BuildFromOppositeVertices(conn.triangles, st.nw, conn.opposite_vertices,
+                                              &conn.vertex_triangles);
+      } else {
+        mesh.wedges.Build(*mesh.tris, mesh.n, conn.opposite, true);
+      }
+      mesh.wedges_built = true;
     }
-    EncodeQuantized(&enc, &attr_wedges, q, int(d.dimension), d.bits, d.prediction, order,
-                    texcoord ? &attr_geometry : nullptr);
+    EncodeQuantized(&enc, &mesh.wedges, q, int(d.dimension), d.bits, d.prediction, order,
+                    texcoord ? &mesh.geometry : nullptr);
   };
   size_t mark = enc.BytesSoFar();
   if (h.has_normals) {
     if (h.normal.prediction == Prediction::kSurfaceNormal) {
-      EncodeOctNormals(&enc, attr_adj, geo, Reorder(normals, 3, old_of_orig), h.normal.bits);
+      AttributeMesh& mesh = mesh_for(may_share && SharedAcrossSeams(st, normals.data(), 3));
+      if (!mesh.adj_built) {
+        mesh.adj.Build(*mesh.tris, mesh.n);
+        mesh.adj_built = true;
+      }
+      geo.position_of = mesh.position_of;
+      EncodeOctNormals(&enc, mesh.adj, geo, Reorder(normals, 3, *mesh.input_of), h.normal.bits);
     } else {
       code_float(h.normal, normals);
     }
@@ -481,9 +537,10 @@ void EncodeAttributes(EncodeState& st) {
   for (size_t i = 0; i < h.ints.size(); ++i) {
     mark = enc.BytesSoFar();
     const uint32_t dim = h.ints[i].dimension;
-    std::vector<int32_t> v(ints[i].size());
-    for (size_t j = 0; j < nv; ++j) {
-      std::memcpy(&v[j * dim], &ints[i][size_t(old_of_orig[j]) * dim], dim * sizeof(int32_t));
+    const AttributeMesh& mesh = mesh_for(may_share && SharedAcrossSeams(st, ints[i].data(), dim));
+    std::vector<int32_t> v(size_t(mesh.n) * dim);
+    for (size_t j = 0; j < mesh.n; ++j) {
+      std::memcpy(&v[j * dim], &ints[i][size_t((*mesh.input_of)[j]) * dim], dim * sizeof(int32_t));
     }
     EncodeInts(&enc, v, int(dim), h.ints[i].prediction);
     si.int_attributes.push_back(enc.BytesSoFar() - mark);
