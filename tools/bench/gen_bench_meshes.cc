@@ -13,7 +13,8 @@
 //  - scan-like surfaces: dense, irregular, noisy samples of smooth shapes with missing patches;
 //  - multi-component scenes of primitives with per-face UV charts (seams on every edge of a box);
 //  - tiny meshes (a tetrahedron, a box, a quad, an icosahedron);
-//  - a skinned character (GLB: joints and weights, normals, UVs with seams).
+//  - a skinned character (GLB: joints and weights, normals, UVs with seams);
+//  - copies of the real scans of samples/scans (GLB; origin and licence in its SOURCES.md).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -25,6 +26,7 @@
 #include <utility>
 #include <vector>
 
+#include "bench/bench_util.h"
 #include "common/cli_args.h"
 #include "common/file_util.h"
 #include "io/scene_io.h"
@@ -778,13 +780,36 @@ hullpack::Scene SkinnedCharacter() {
 
 int main(int argc, char** argv) {
   std::vector<std::string> operands;
-  hullpack::CliArgs cli("gen_bench_meshes", "OUT_FOLDER",
-                        "Writes the second codec benchmark set (23 meshes generated in code: CAD\n"
-                        "parts as exported to STL, noisy scans, UV-mapped scenes, tiny meshes as\n"
-                        "OBJ files; a skinned character as GLB) into OUT_FOLDER, for codec_bench.");
+  hullpack::CliArgs cli(
+      "gen_bench_meshes", "OUT_FOLDER",
+      "Writes the second codec benchmark set into OUT_FOLDER, for codec_bench: 23\n"
+      "meshes generated in code (CAD parts as exported to STL, noisy scan-like\n"
+      "surfaces, UV-mapped scenes, tiny meshes as OBJ files; a skinned character\n"
+      "as GLB) and copies of the real scans of --scans (GLB).");
+  std::string scans = HULLPACK_SAMPLE_SCANS;
   cli.Positional("OUT_FOLDER", &operands, 1, 1);
+  cli.String("--scans", "DIR", &scans,
+             "copy every .glb of DIR too (default: samples/scans of the source tree)");
   if (std::optional<int> exit_code = cli.Parse(argc, argv)) return *exit_code;
   const std::string dir = operands[0];
+  {
+    // The real scans (samples/scans/SOURCES.md) join the generated meshes as they are.
+    std::vector<std::string> files;
+    if (!hullpack::ListFiles(scans, {"glb"}, &files)) {
+      std::fprintf(stderr, "gen_bench_meshes: %s: cannot open the scans folder\n", scans.c_str());
+      return 1;
+    }
+    for (const std::string& f : files) {
+      const hullpack::Result<std::vector<uint8_t>> bytes = hullpack::ReadFileBytes(scans + "/" + f);
+      hullpack::Status s =
+          bytes.ok() ? hullpack::WriteFileAtomically(dir + "/" + f, bytes.value()) : bytes.status();
+      if (!s.ok()) {
+        std::fprintf(stderr, "gen_bench_meshes: %s\n", s.message().c_str());
+        return 1;
+      }
+      std::printf("%-24s copied from %s\n", (dir + "/" + f).c_str(), scans.c_str());
+    }
+  }
   std::vector<std::pair<std::string, ObjMesh>> meshes;
   meshes.emplace_back("cad_plate_4x4", Plate(4, 4, 25, 7, 32, 6, true));
   meshes.emplace_back("cad_plate_12x8", Plate(12, 8, 10, 3, 24, 4, true));
