@@ -418,14 +418,15 @@ void EncodePositions(EncodeState& st) {
 }
 
 // Normals, float and int attributes, over the attribute vertices.
-// The mesh an attribute is coded over (see decoder.cc): the attribute vertices, or the position
-// vertices for an attribute shared across seams; `input_of` maps its vertices to input vertices.
+// The mesh an attribute is coded over (see decoder.cc): the attribute vertices, or (format 1.1,
+// with seams) those left once the ones equal to the first attribute vertex of their position
+// vertex are merged into it; `input_of` maps its vertices to input vertices.
 struct AttributeMesh {
   const std::vector<uint32_t>* tris = nullptr;
   uint32_t n = 0;
   const uint32_t* position_of = nullptr;
   const std::vector<uint32_t>* input_of = nullptr;
-  bool positions = false;
+  std::vector<uint32_t> own_tris, own_position_of, own_input_of;
   MeshAdjacency adj;
   bool adj_built = false;
   WedgeTable wedges;
@@ -433,18 +434,52 @@ struct AttributeMesh {
   std::vector<double> geometry;
 };
 
-// Format 1.1: whether every attribute vertex of each position vertex holds the same value (the
-// attribute is then coded once per position vertex). Why: UV seams split vertices whose normals,
-// skin weights and joints are continuous across the seam (smooth shading, a DCC export); coding
-// them per attribute vertex coded those values twice and predicted each copy from half a fan.
+// Format 1.1, with seams: codes which attribute vertices merge into the first attribute vertex of
+// their position vertex (those holding bit for bit its value) and returns the mesh to code over.
+// Why: UV seams split vertices whose normals, skin weights and joints are continuous across the
+// seam (smooth shading, scans, DCC exports); coded per attribute vertex, each copy was coded
+// again and its normal predicted from half a fan.
 template <typename T>
-bool SharedAcrossSeams(const EncodeState& st, const T* values, uint32_t dim) {
-  for (uint32_t i = 0; i < st.old_of_orig.size(); ++i) {
-    const size_t a = size_t(st.old_of_orig[i]) * dim;
-    const size_t b = size_t(st.rep_of_welded[st.welded_of_orig[i]]) * dim;
-    if (std::memcmp(values + a, values + b, dim * sizeof(T)) != 0) return false;
+AttributeMesh* CodeMerges(EncodeState& st, const std::vector<uint32_t>& attr_tris,
+                          const std::vector<uint32_t>& first, const T* values, uint32_t dim,
+                          AttributeMesh* attr, AttributeMesh* merged) {
+  const size_t nv = st.nv;
+  std::vector<uint8_t> merge(nv, 0);
+  bool any = false;
+  for (uint32_t i = 0; i < nv; ++i) {
+    const uint32_t f = first[st.welded_of_orig[i]];
+    if (f == i) continue;
+    merge[i] = std::memcmp(values + size_t(st.old_of_orig[i]) * dim,
+                           values + size_t(st.old_of_orig[f]) * dim, dim * sizeof(T)) == 0;
+    any |= merge[i] != 0;
   }
-  return true;
+  st.enc.EncodeBits(any ? 1 : 0, 1);
+  if (!any) return attr;
+  BitModel model;
+  std::vector<uint32_t> of_vertex(nv);
+  merged->own_position_of.clear();
+  merged->own_input_of.clear();
+  uint32_t n = 0;
+  for (uint32_t i = 0; i < nv; ++i) {
+    const uint32_t f = first[st.welded_of_orig[i]];
+    if (f != i) st.enc.Encode(merge[i], model);
+    if (merge[i]) {
+      of_vertex[i] = of_vertex[f];
+    } else {
+      of_vertex[i] = n++;
+      merged->own_position_of.push_back(st.welded_of_orig[i]);
+      merged->own_input_of.push_back(st.old_of_orig[i]);
+    }
+  }
+  merged->own_tris.resize(attr_tris.size());
+  for (size_t i = 0; i < attr_tris.size(); ++i) merged->own_tris[i] = of_vertex[attr_tris[i]];
+  merged->tris = &merged->own_tris;
+  merged->n = n;
+  merged->position_of = merged->own_position_of.data();
+  merged->input_of = &merged->own_input_of;
+  merged->adj_built = merged->wedges_built = false;
+  merged->geometry.clear();
+  return merged;
 }
 
 void EncodeAttributes(EncodeState& st) {
@@ -461,40 +496,29 @@ void EncodeAttributes(EncodeState& st) {
   std::vector<uint32_t>& corner_vertex = st.corner_vertex;
   std::vector<uint32_t>& orig_new = st.orig_new;
   std::vector<int32_t>& qpos = st.qpos;
-  std::vector<uint32_t> attr_tris;  // only attributes beside positions need it
-  if (h.has_normals || !h.floats.empty()) {
-    attr_tris.resize(3 * nt);
-    for (size_t i = 0; i < 3 * nt; ++i) attr_tris[i] = orig_new[corner_vertex[i]];
-  }
-  AttributeMesh attr, pos;
+  std::vector<uint32_t> attr_tris(3 * nt);
+  for (size_t i = 0; i < 3 * nt; ++i) attr_tris[i] = orig_new[corner_vertex[i]];
+  AttributeMesh attr, merged;
   attr.tris = &attr_tris;
   attr.n = uint32_t(nv);
   attr.position_of = st.welded_of_orig.data();
   attr.input_of = &st.old_of_orig;
-  std::vector<uint32_t> identity;
-  const bool may_share = kFormatMinor >= 1 && st.has_seams;
-  if (may_share) {
-    identity.resize(st.nw);
-    for (uint32_t i = 0; i < st.nw; ++i) identity[i] = i;
-    pos.tris = &conn.triangles;
-    pos.n = st.nw;
-    pos.position_of = identity.data();
-    pos.input_of = &st.rep_of_welded;
-    pos.positions = true;
+  const bool may_merge = kFormatMinor >= 1 && st.has_seams;
+  std::vector<uint32_t> first;  // the first (smallest) attribute vertex of each position vertex
+  if (may_merge) {
+    first.assign(st.nw, kNone);
+    for (uint32_t i = uint32_t(nv); i-- > 0;) first[st.welded_of_orig[i]] = i;
   }
   NormalGeometry geo;
   geo.positions = qpos.data();
   for (int k = 0; k < 3; ++k) {
     geo.scale[k] = double(h.position.quant.range[k]) / double(h.position.quant.max_q());
   }
-  // Writes the 1.1 bit and picks the mesh.
-  auto mesh_for = [&](bool shared) -> AttributeMesh& {
-    if (!may_share) return attr;
-    enc.EncodeBits(shared ? 1 : 0, 1);
-    return shared ? pos : attr;
+  auto mesh_for = [&](const auto* values, uint32_t dim) {
+    return may_merge ? CodeMerges(st, attr_tris, first, values, dim, &attr, &merged) : &attr;
   };
   auto code_float = [&](const AttributeDesc& d, const std::vector<float>& values) {
-    AttributeMesh& mesh = mesh_for(may_share && SharedAcrossSeams(st, values.data(), d.dimension));
+    AttributeMesh& mesh = *mesh_for(values.data(), d.dimension);
     const std::vector<float> v = Reorder(values, d.dimension, *mesh.input_of);
     std::vector<int32_t> q(v.size());
     for (size_t i = 0; i < v.size(); ++i) q[i] = d.quant.Quantize(v[i], uint32_t(i % d.dimension));
@@ -503,12 +527,7 @@ void EncodeAttributes(EncodeState& st) {
     geo.position_of = mesh.position_of;
     if (texcoord && mesh.geometry.empty()) mesh.geometry = AttributeGeometry(geo, mesh.n);
     if (d.prediction == Prediction::kParallelogram && !mesh.wedges_built) {
-      if (mesh.positions) {
-        mesh.wedges.BuildFromOppositeVertices(conn.triangles, st.nw, conn.opposite_vertices,
-                                              &conn.vertex_triangles);
-      } else {
-        mesh.wedges.Build(*mesh.tris, mesh.n, conn.opposite, true);
-      }
+      mesh.wedges.Build(*mesh.tris, mesh.n, conn.opposite, true);
       mesh.wedges_built = true;
     }
     EncodeQuantized(&enc, &mesh.wedges, q, int(d.dimension), d.bits, d.prediction, order,
@@ -517,7 +536,7 @@ void EncodeAttributes(EncodeState& st) {
   size_t mark = enc.BytesSoFar();
   if (h.has_normals) {
     if (h.normal.prediction == Prediction::kSurfaceNormal) {
-      AttributeMesh& mesh = mesh_for(may_share && SharedAcrossSeams(st, normals.data(), 3));
+      AttributeMesh& mesh = *mesh_for(normals.data(), 3);
       if (!mesh.adj_built) {
         mesh.adj.Build(*mesh.tris, mesh.n);
         mesh.adj_built = true;
@@ -537,7 +556,7 @@ void EncodeAttributes(EncodeState& st) {
   for (size_t i = 0; i < h.ints.size(); ++i) {
     mark = enc.BytesSoFar();
     const uint32_t dim = h.ints[i].dimension;
-    const AttributeMesh& mesh = mesh_for(may_share && SharedAcrossSeams(st, ints[i].data(), dim));
+    const AttributeMesh& mesh = *mesh_for(ints[i].data(), dim);
     std::vector<int32_t> v(size_t(mesh.n) * dim);
     for (size_t j = 0; j < mesh.n; ++j) {
       std::memcpy(&v[j * dim], &ints[i][size_t((*mesh.input_of)[j]) * dim], dim * sizeof(int32_t));
