@@ -407,10 +407,23 @@ void EncodePositions(EncodeState& st) {
         e.Finish();
         return double(scratch.size());
       };
-      if (bits_in(CodingOrder::kVertexId) <= kAutoFastDecodeTry * bits_in(CodingOrder::kGreedy) &&
-          size_in(CodingOrder::kVertexId) <= kAutoFastDecodeCost * size_in(CodingOrder::kGreedy)) {
-        fast_decode = true;
-        order = CodingOrder::kVertexId;
+      if (bits_in(CodingOrder::kVertexId) <= kAutoFastDecodeTry * bits_in(CodingOrder::kGreedy)) {
+        // The id order is coded into the stream itself and the greedy order aside; if the id
+        // order loses, the stream is rolled back and the greedy order coded again. Two codings
+        // instead of three when the id order wins (the scans), the same three when it loses.
+        const ArithmeticEncoder saved = enc;
+        const size_t saved_size = st.payload.size();
+        const size_t start = enc.BytesSoFar();
+        EncodeQuantized(&enc, &wedges, qpos, 3, h.position.bits, h.position.prediction,
+                        CodingOrder::kVertexId);
+        const double id_bytes = double(enc.BytesSoFar() - start);
+        if (id_bytes <= kAutoFastDecodeCost * size_in(CodingOrder::kGreedy)) {
+          fast_decode = true;
+          order = CodingOrder::kVertexId;
+          return;
+        }
+        enc = saved;
+        st.payload.resize(saved_size);
       }
     }
     EncodeQuantized(&enc, &wedges, qpos, 3, h.position.bits, h.position.prediction, order);
