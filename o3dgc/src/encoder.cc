@@ -406,6 +406,7 @@ void EncodePositions(EncodeState& st) {
   Release(positions);
   Release(rep_of_welded);
   {
+    bool coded = false;  // the positions are in the stream already (auto_fast_decode)
     WedgeTable wedges;
     if (h.position.prediction == Prediction::kParallelogram) {
       wedges.BuildFromOppositeVertices(conn.triangles, nw, conn.opposite_vertices,
@@ -440,13 +441,16 @@ void EncodePositions(EncodeState& st) {
         if (id_bytes <= kAutoFastDecodeCost * size_in(CodingOrder::kGreedy)) {
           fast_decode = true;
           order = CodingOrder::kVertexId;
-          return;
+          coded = true;
+        } else {
+          enc = saved;
+          st.payload.resize(saved_size);
         }
-        enc = saved;
-        st.payload.resize(saved_size);
       }
     }
-    EncodeQuantized(&enc, &wedges, qpos, 3, h.position.bits, h.position.prediction, order);
+    if (!coded) {
+      EncodeQuantized(&enc, &wedges, qpos, 3, h.position.bits, h.position.prediction, order);
+    }
   }
   Release(conn.triangles);
   Release(conn.opposite_vertices);
@@ -532,8 +536,11 @@ void EncodeAttributes(EncodeState& st) {
   std::vector<uint32_t>& corner_vertex = st.corner_vertex;
   std::vector<uint32_t>& orig_new = st.orig_new;
   std::vector<int32_t>& qpos = st.qpos;
-  std::vector<uint32_t> attr_tris(3 * nt);
-  for (size_t i = 0; i < 3 * nt; ++i) attr_tris[i] = orig_new[corner_vertex[i]];
+  std::vector<uint32_t> attr_tris;  // only normals and float attributes need it (not ints)
+  if (h.has_normals || !h.floats.empty()) {
+    attr_tris.resize(3 * nt);
+    for (size_t i = 0; i < 3 * nt; ++i) attr_tris[i] = orig_new[corner_vertex[i]];
+  }
   AttributeMesh attr, merged;
   attr.tris = &attr_tris;
   attr.n = uint32_t(nv);

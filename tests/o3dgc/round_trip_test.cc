@@ -569,6 +569,25 @@ TEST(RoundTrip, AttributesContinuousAcrossSeamsAreCodedOnce) {
   }
 }
 
+// Split vertices with joint ids only (no normal, no UV): the joints merge, nothing else needs the
+// attribute mesh.
+TEST(RoundTrip, JointsOnlyAcrossSeams) {
+  TestMesh s = SeamedGrid(false);
+  s.normals.clear();
+  s.uvs.clear();
+  for (bool keep : {false, true}) {
+    EncodeParams p;
+    p.keep_order = keep;
+    const DecodedMesh m = DecodeOk(EncodeOk(s, p));
+    ASSERT_EQ(m.int_attributes.size(), 1u);
+    if (keep) {
+      EXPECT_EQ(m.int_attributes[0].values, s.joints);
+    } else {
+      CheckTriangleSet(s, m, 14);
+    }
+  }
+}
+
 TEST(RoundTrip, SeamsShareWeldedPositions) {
   // A grid whose right half uses its own copies of the middle column (a UV seam): the copies share
   // positions, so the stream must barely grow, and the round trip keeps both sides.
