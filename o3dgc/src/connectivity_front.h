@@ -64,13 +64,15 @@ class Front {
   static constexpr uint32_t kNoEdge = 0xFFFFFFFFu;
   static constexpr int kMaxScan = 64;
 
-  // Capacities for a mesh of this size: each triangle opens at most 3 gates. Callers never code
-  // more than `triangles` triangles (the neighbour tables are sized for them; vertices and gates
-  // still grow if needed). Without `keep_edges` only the opposite vertices are recorded
-  // (TakeOpposite is then empty).
+  // Capacities for a mesh of this size. A triangle opens at most 3 gates, but a manifold mesh
+  // opens about one per edge: 1.5 per triangle, plus half a boundary edge. Gates start a little
+  // above that (at 32 bytes each, the worst case doubled the coder's largest array) and grow by
+  // half when a mesh needs more. Callers never code more than `triangles` triangles (the
+  // neighbour tables are sized for them; vertices and gates still grow if needed). Without
+  // `keep_edges` only the opposite vertices are recorded (TakeOpposite is then empty).
   void Reserve(size_t vertices, size_t triangles, bool keep_edges = true) {
     GrowVertices(vertices < 16 ? 16 : vertices);
-    GrowGates(3 * triangles + 3);
+    GrowGates(3 * triangles / 2 + triangles / 16 + 64);
     keep_edges_ = keep_edges;
     if (keep_edges_) opp_.assign(3 * triangles, kNoEdge);
     oppv_.assign(3 * triangles, kNoEdge);
@@ -161,7 +163,7 @@ class Front {
   }
   // Opens gate u->v (AddHalfEdge when v has no open gate to u).
   void Open(uint32_t u, uint32_t v, uint32_t edge, uint32_t apex) {
-    if (num_gates_ == gate_capacity_) GrowGates(2 * gate_capacity_ + 16);
+    if (num_gates_ == gate_capacity_) GrowGates(gate_capacity_ + gate_capacity_ / 2 + 16);
     const int32_t id = int32_t(num_gates_++);
     gates_[id] = Gate{u, v, edge, apex, vertices_[u].head_out, vertices_[v].head_in, 1, 0};
     vertices_[u].head_out = id;

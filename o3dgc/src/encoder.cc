@@ -97,6 +97,24 @@ struct EncodeState {
   std::vector<int32_t> qpos;  // quantized positions per position vertex
 };
 
+// Frees a working array whose last stage is done: the encoder's peak memory is the sum of the
+// arrays alive at once.
+template <typename T>
+void Release(std::vector<T>& v) {
+  std::vector<T>().swap(v);
+}
+
+// The working arrays the stages after connectivity and seams no longer read.
+void ReleaseConnectivityWork(EncodeState& st) {
+  Release(st.welded_tris);
+  Release(st.weld);
+  Release(st.welded_new);
+  Release(st.rotation);
+  Release(st.conn.old_of_new);
+  if (!st.h.has_groups) Release(st.conn.source);
+  if (!st.h.has_normals && st.h.floats.empty()) Release(st.corner_vertex);
+}
+
 // The checks that need no copy of the input.
 Status Validate(const MeshView& mesh, const EncodeParams& params) {
   const size_t nv = mesh.num_vertices, nt = mesh.num_triangles;
@@ -383,6 +401,8 @@ void EncodePositions(EncodeState& st) {
           h.position.quant.Quantize(positions[3 * size_t(rep_of_welded[w]) + k], k);
     }
   }
+  Release(positions);
+  Release(rep_of_welded);
   {
     WedgeTable wedges;
     if (h.position.prediction == Prediction::kParallelogram) {
@@ -413,6 +433,9 @@ void EncodePositions(EncodeState& st) {
     }
     EncodeQuantized(&enc, &wedges, qpos, 3, h.position.bits, h.position.prediction, order);
   }
+  Release(conn.triangles);
+  Release(conn.opposite_vertices);
+  Release(conn.vertex_triangles);
 }
 
 // Normals, float and int attributes, over the attribute vertices.
@@ -528,6 +551,7 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
   if (!progress(0.2f)) return Status::kCancelled;
   EncodeSeams(st);
   if (params.keep_order) EncodeExactOrder(st);
+  ReleaseConnectivityWork(st);
   si.connectivity = enc.BytesSoFar() - si.header;
   if (!progress(0.4f)) return Status::kCancelled;
   size_t mark = enc.BytesSoFar();
