@@ -7,12 +7,14 @@
 //   import { registerHullpackExtension, readCollisionHulls } from './hullpack_babylon.js';
 //   registerHullpackExtension(await createDecoder({ wasmUrl }));
 //   const container = await LoadAssetContainerAsync('model.glb', scene);
-//   const hulls = readCollisionHulls(await (await fetch('model.glb')).arrayBuffer());
+//   const hulls = await readCollisionHulls(await (await fetch('model.glb')).arrayBuffer(), decoder);
 //
 // HULLPACK_mesh_compression primitives get their vertex data from the decoded stream (each
 // bufferView decoded once, the primitive's group cut out); everything else is Babylon's own path.
-// The collision hulls are plain glTF (quantized POINTS meshes referenced by OMI_physics_shape or
-// KHR_physics_rigid_bodies colliders), so readCollisionHulls needs no decoder.
+// The collision hulls `hullpack pack` writes are plain glTF (quantized POINTS meshes referenced by
+// OMI_physics_shape or KHR_physics_rigid_bodies colliders), so readCollisionHulls needs no decoder
+// for them; files of the earlier release hold their hulls as HULLPACK_mesh_compression streams,
+// which it decodes with the decoder when one is given.
 import { VertexBuffer } from '@babylonjs/core/Buffers/buffer.js';
 import { Geometry } from '@babylonjs/core/Meshes/geometry.js';
 import { GLTFLoader } from '@babylonjs/loaders/glTF/2.0/glTFLoader.js';
@@ -153,17 +155,39 @@ function transformPoint(node, p) {
   return [0, 1, 2].map((k) => v[k] + 2 * (qw * c[k] + cc[k]) + t[k]);
 }
 
-// Every convex collider of a packed GLB (either form, docs/packed-gltf.md), in node order:
-// [{colliderNode, bodyNode, mesh, points: Float32Array}], points in the body node's space (the
-// collider node's transform applied, which dequantizes the hull) -- what a physics engine is given.
-export function readCollisionHulls(arrayBuffer) {
+// Every convex collider of a packed GLB (either collider form, and the hulls of either release:
+// docs/packed-gltf.md), in node order: a Promise of [{colliderNode, bodyNode, mesh, points:
+// Float32Array}], points in the body node's space (the collider node's transform applied, which
+// dequantizes the hull) -- what a physics engine is given. `decoder` ({decode(Uint8Array) -> mesh |
+// Promise<mesh>}, from createDecoder or createWorkerDecoder) is needed only for hulls stored as
+// HULLPACK_mesh_compression streams (the earlier form); without it such a file is an error.
+export async function readCollisionHulls(arrayBuffer, decoder) {
   const { json, bin } = parseGlb(arrayBuffer);
   const nodes = json.nodes || [];
   const parents = new Map();
   nodes.forEach((n, i) => (n.children || []).forEach((c) => parents.set(c, i)));
   const shapes = json.extensions?.OMI_physics_shape?.shapes || [];
+  const streams = new Map();  // bufferView -> decoded mesh (hulls of one render mesh share a stream)
+  const streamPositions = async (prim) => {
+    const ext = prim.extensions[EXTENSION_NAME];
+    if (!decoder) throw new Error(`${EXTENSION_NAME}: this file's hulls are compressed streams (the earlier form): pass a decoder`);
+    const view = json.bufferViews?.[ext.bufferView];
+    if (!view) throw new Error(`${EXTENSION_NAME}: bufferViews[${ext.bufferView}] does not exist`);
+    if (!streams.has(ext.bufferView)) {
+      const start = view.byteOffset || 0;
+      if (start + view.byteLength > bin.byteLength) throw new Error(`bufferViews[${ext.bufferView}] lies outside the binary chunk`);
+      streams.set(ext.bufferView, decoder.decode(bin.slice(start, start + view.byteLength)));
+    }
+    const whole = await streams.get(ext.bufferView);
+    const mesh = ext.group === undefined ? whole : selectGroup(whole, ext.group, ext.compactVertices === true);
+    const id = ext.attributes?.POSITION;
+    const positions = id === undefined ? mesh.positions : mesh.attributes[id]?.array;
+    if (!positions) throw new Error(`${EXTENSION_NAME}: POSITION -> stream id ${id} is not in the stream`);
+    return positions;
+  };
   const hulls = [];
-  nodes.forEach((node, i) => {
+  for (let i = 0; i < nodes.length; ++i) {
+    const node = nodes[i];
     const omi = node.extensions?.OMI_physics_body?.collider;
     const khr = node.extensions?.KHR_physics_rigid_bodies?.collider?.geometry;
     let mesh;
@@ -173,13 +197,15 @@ export function readCollisionHulls(arrayBuffer) {
     } else if (khr?.convexHull) {
       mesh = khr.node !== undefined ? nodes[khr.node]?.mesh : khr.mesh;
     }
-    if (mesh === undefined) return;
+    if (mesh === undefined) continue;
     const points = [];
     for (const prim of json.meshes?.[mesh]?.primitives || []) {
-      const { values } = readAccessor(json, bin, prim.attributes.POSITION);
-      for (let v = 0; v < values.length; v += 3) points.push(...transformPoint(node, values.slice(v, v + 3)));
+      const values = prim.extensions?.[EXTENSION_NAME]
+        ? await streamPositions(prim)
+        : readAccessor(json, bin, prim.attributes.POSITION).values;
+      for (let v = 0; v < values.length; v += 3) points.push(...transformPoint(node, [values[v], values[v + 1], values[v + 2]]));
     }
     hulls.push({ colliderNode: i, bodyNode: parents.get(i), mesh, points: Float32Array.from(points) });
-  });
+  }
   return hulls;
 }

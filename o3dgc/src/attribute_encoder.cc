@@ -90,12 +90,13 @@ template <int kDim, bool kRawLow>
 void EncodeParallelogram(ArithmeticEncoder* enc, const WedgeTable& wedges, CodingOrder::Kind kind,
                          int64_t maxq, int coarse, ResidualModels& models, const int32_t* q,
                          uint32_t* mags, double* estimate = nullptr) {
+  // One per vertex of the mesh, kept until coded: small. Values and clamped predictions lie in
+  // [0, maxq] with maxq < 2^30, so a residual fits 32 bits.
   struct Vertex {
     uint8_t kind, mctx;
-    int8_t choices;      // parallelograms offered to the selection (0: no symbol)
-    uint8_t selected;    // selection symbol (0: combined prediction)
-    int64_t r[kDim];     // residual against the combined prediction
-    int64_t best[kDim];  // residual against the selected prediction
+    int8_t choices;    // parallelograms offered to the selection (0: no symbol)
+    uint8_t selected;  // selection symbol (0: combined prediction)
+    int32_t r[kDim];   // residual that will be coded: the selected prediction's when `select`
   };
   // Estimated bits of a residual: its class and the bits below it.
   auto cost = [](const int64_t* r) {
@@ -127,11 +128,13 @@ void EncodeParallelogram(ArithmeticEncoder* enc, const WedgeTable& wedges, Codin
       Vertex v;
       v.kind = uint8_t(pc.kind);
       v.mctx = uint8_t(MagContext(pc.neighbour_magnitude) >> coarse);
-      for (int k = 0; k < kDim; ++k) v.r[k] = int64_t(q[size_t(c) * kDim + k]) - clamp(pred[k]);
+      int64_t combined[kDim], selected[kDim];
+      for (int k = 0; k < kDim; ++k)
+        combined[k] = int64_t(q[size_t(c) * kDim + k]) - clamp(pred[k]);
       v.choices = int8_t(n_par >= 2 ? (n_par < kMaxSelected ? n_par : kMaxSelected) : 0);
       v.selected = 0;
-      std::copy(v.r, v.r + kDim, v.best);
-      const int base = cost(v.r);
+      std::copy(combined, combined + kDim, selected);
+      const int base = cost(combined);
       int best = base;
       for (int i = 0; i < v.choices; ++i) {
         const Wedge* w = order.parallelograms()[i];
@@ -145,14 +148,15 @@ void EncodeParallelogram(ArithmeticEncoder* enc, const WedgeTable& wedges, Codin
         if (b < best) {
           best = b;
           v.selected = uint8_t(1 + i);
-          std::copy(r, r + kDim, v.best);
+          std::copy(r, r + kDim, selected);
         }
       }
       *combined_bits += base;
       *selected_bits += best;
       if (v.choices) ++symbol_counts[SelectionModels::Context(v.choices)][v.selected];
-      if (select) std::copy(v.best, v.best + kDim, v.r);
-      mags[c] = SaturatingMagnitude(v.r, kDim);
+      const int64_t* const r = select ? selected : combined;
+      for (int k = 0; k < kDim; ++k) v.r[k] = int32_t(r[k]);
+      mags[c] = SaturatingMagnitude(r, kDim);
       coded.push_back(v);
     }
     // The selection symbols' cost: their empirical entropy per context.

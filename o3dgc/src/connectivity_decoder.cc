@@ -12,12 +12,12 @@ namespace {
 class Decoder {
  public:
   Decoder(ArithmeticDecoder* dec, size_t num_triangles, size_t max_vertices,
-          std::vector<uint32_t>* out, bool keep_edges)
+          std::vector<uint32_t>* out, bool keep_edges, uint32_t minor)
       : dec_(*dec),
         nt_(num_triangles),
         max_vertices_(max_vertices),
         out_(*out),
-        m_(new ConnectivityModels),
+        m_(new ConnectivityModels(minor)),
         keep_edges_(keep_edges) {}
 
   Status Run() {
@@ -30,6 +30,8 @@ class Decoder {
     front_.Reserve(max_vertices_ < nt_ + 3 ? max_vertices_ : nt_ + 3, nt_, keep_edges_);
     has_flips_ = dec.DecodeBits(1) != 0;
     has_copies_ = dec.DecodeBits(1) != 0;
+    const bool rich = m_->rich;
+    int prev = 0;  // the previous gate outcome (format 1.1 contexts)
     // Bounded work whatever the stream: every pass pops a gate (at most 3 per triangle) or starts
     // a triangle (at most nt_), so a truncated stream (read as zeros) is found after the loop.
     for (;;) {
@@ -49,9 +51,9 @@ class Decoder {
       const int32_t g = front_.Pop();
       if (g < 0) continue;
       const uint32_t a = front_.gate(g).a, b = front_.gate(g).b;
-      const Front::Candidates cand = front_.Look(a, b);
-      const int ctx = cand.context;
-      const int outcome = dec.Decode(m_->gate[ctx]);
+      const Front::Candidates cand = front_.Look(a, b, rich ? prev : -1);
+      const int outcome = dec.Decode(m_->gate[size_t(cand.context)]);
+      prev = outcome;
       if (outcome == kGateClose) {
         front_.Close(g);
         continue;
@@ -69,9 +71,8 @@ class Decoder {
       } else if (outcome == kGateLeft && cand.left >= 0) {
         c = uint32_t(cand.left);
       } else if (outcome == kGateOther) {
-        const uint64_t d = DecodeEG(dec, m_->other_ref);
-        if (d >= front_.num_vertices()) return Status::kCorrupt;
-        c = uint32_t(front_.num_vertices() - 1 - d);
+        const Status s = Other(dec, a, b, &c);
+        if (s != Status::kOk) return s;
       } else {
         return Status::kCorrupt;  // a candidate that does not exist, or an unused symbol
       }
@@ -121,6 +122,23 @@ class Decoder {
     t[2] = z;
   }
 
+  // The third vertex of a kGateOther triangle at gate a->b (see the encoder's CodeOther).
+  O3DGC_NOINLINE Status Other(ArithmeticDecoder& dec, uint32_t a, uint32_t b, uint32_t* c) {
+    if (m_->rich && dec.Decode(m_->walk)) {
+      const bool left = dec.Decode(m_->walk_side) != 0;
+      const uint64_t steps = DecodeEG(dec, m_->walk_steps) + 2;
+      if (steps > kMaxWalkSteps) return Status::kCorrupt;
+      const int64_t v = front_.Walk(left ? a : b, left, uint32_t(steps));
+      if (v < 0) return Status::kCorrupt;
+      *c = uint32_t(v);
+      return Status::kOk;
+    }
+    const uint64_t d = DecodeEG(dec, m_->other_ref);
+    if (d >= front_.num_vertices()) return Status::kCorrupt;
+    *c = uint32_t(front_.num_vertices() - 1 - d);
+    return Status::kOk;
+  }
+
   O3DGC_INLINE Status VertexRef(ArithmeticDecoder& dec, uint32_t* v) {
     if (dec.Decode(m_->start_new)) {
       if (front_.num_vertices() >= max_vertices_) return Status::kCorrupt;
@@ -166,8 +184,8 @@ class Decoder {
 Status DecodeConnectivity(ArithmeticDecoder* dec, size_t num_triangles, size_t max_vertices,
                           std::vector<uint32_t>* triangles, uint32_t* num_vertices,
                           std::vector<uint32_t>* opposite, std::vector<uint32_t>* opposite_vertices,
-                          std::vector<uint32_t>* vertex_triangles) {
-  Decoder d(dec, num_triangles, max_vertices, triangles, opposite != nullptr);
+                          std::vector<uint32_t>* vertex_triangles, uint32_t minor) {
+  Decoder d(dec, num_triangles, max_vertices, triangles, opposite != nullptr, minor);
   const Status s = d.Run();
   *dec = d.decoder();
   *num_vertices = d.num_vertices();

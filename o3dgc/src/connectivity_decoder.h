@@ -15,12 +15,12 @@ namespace o3dgc {
 // `opposite` and `opposite_vertices` (if not null) the neighbours found by the traversal (see
 // Front::TakeOpposite and TakeOppositeVertices). `vertex_triangles` (if not null) receives the
 // number of triangles at each vertex when the traversal knows it (every triangle attached to the
-// front: no repeated or degenerate ones), else stays empty.
+// front: no repeated or degenerate ones), else stays empty. `minor`: the stream's format minor
+// version (0 or 1: see EncodeConnectivity).
 Status DecodeConnectivity(ArithmeticDecoder* dec, size_t num_triangles, size_t max_vertices,
                           std::vector<uint32_t>* triangles, uint32_t* num_vertices,
-                          std::vector<uint32_t>* opposite = nullptr,
-                          std::vector<uint32_t>* opposite_vertices = nullptr,
-                          std::vector<uint32_t>* vertex_triangles = nullptr);
+                          std::vector<uint32_t>* opposite, std::vector<uint32_t>* opposite_vertices,
+                          std::vector<uint32_t>* vertex_triangles, uint32_t minor);
 
 }  // namespace o3dgc
 

@@ -16,13 +16,13 @@ constexpr uint32_t kNext[3] = {1, 2, 0}, kPrev[3] = {2, 0, 1};
 class Encoder {
  public:
   Encoder(const std::vector<uint32_t>& tris, uint32_t num_vertices, ArithmeticEncoder* enc,
-          ConnectivityEncoding* out, bool keep_edges)
+          ConnectivityEncoding* out, bool keep_edges, uint32_t minor)
       : tris_(tris),
         nt_(tris.size() / 3),
         nv_in_(num_vertices),
         enc_(*enc),
         out_(*out),
-        m_(new ConnectivityModels),
+        m_(new ConnectivityModels(minor)),
         keep_edges_(keep_edges) {}
 
   void Run() {
@@ -111,28 +111,30 @@ class Encoder {
           oc = third;
         }
       }
-      const Front::Candidates cand = front_.Look(a, b);
-      const int ctx = cand.context;
+      const Front::Candidates cand = front_.Look(a, b, m_->rich ? prev_ : -1);
+      GateModel& model = m_->gate[size_t(cand.context)];
       if (found == kNone) {
-        enc_.Encode(kGateClose, m_->gate[ctx]);
+        enc_.Encode(kGateClose, model);
+        prev_ = kGateClose;
         front_.Close(g);
         continue;
       }
       uint32_t c = new_of_old_[oc];
       int32_t gate_bc = Front::kSearch;
       if (c == kNone) {
-        enc_.Encode(kGateNew, m_->gate[ctx]);
+        prev_ = kGateNew;
         c = NewVertex(oc);
         gate_bc = Front::kNoGate;
       } else if (cand.right >= 0 && c == cand.right) {
-        enc_.Encode(kGateRight, m_->gate[ctx]);
+        prev_ = kGateRight;
         gate_bc = cand.right_gate;
       } else if (cand.left >= 0 && c == cand.left) {
-        enc_.Encode(kGateLeft, m_->gate[ctx]);
+        prev_ = kGateLeft;
       } else {
-        enc_.Encode(kGateOther, m_->gate[ctx]);
-        EncodeEG(enc_, m_->other_ref, front_.num_vertices() - 1 - c);
+        prev_ = kGateOther;
       }
+      enc_.Encode(prev_, model);
+      if (prev_ == kGateOther) CodeOther(a, b, c);
       if (has_flips_) enc_.Encode(flip, m_->flip);
       visited_[found] = 1;
       front_.Attach(g, uint32_t(emitted_), a, b, c, flip != 0, gate_bc);
@@ -281,6 +283,23 @@ class Encoder {
     return id;
   }
 
+  // The third vertex c of a kGateOther triangle at gate a->b: format 1.0 codes how far back it
+  // was created; format 1.1 first tries the shorter walk along the front from b or from a (near
+  // the gate on CAD meshes: around a hole, the far side of a fan's apex), falling back on that.
+  void CodeOther(uint32_t a, uint32_t b, uint32_t c) {
+    if (m_->rich) {
+      const uint32_t right = front_.WalkSteps(b, false, c), left = front_.WalkSteps(a, true, c);
+      enc_.Encode(right != 0 || left != 0, m_->walk);
+      if (right != 0 || left != 0) {
+        const bool use_left = right == 0 || (left != 0 && left < right);
+        enc_.Encode(use_left, m_->walk_side);
+        EncodeEG(enc_, m_->walk_steps, (use_left ? left : right) - 2);  // 1 step: a candidate
+        return;
+      }
+    }
+    EncodeEG(enc_, m_->other_ref, front_.num_vertices() - 1 - c);
+  }
+
   uint32_t CodeVertexRef(uint32_t old) {
     const uint32_t v = new_of_old_[old];
     if (v == kNone) {
@@ -326,18 +345,20 @@ class Encoder {
   std::vector<uint32_t> new_of_old_;
   bool has_flips_ = false, has_copies_ = false;
   size_t emitted_ = 0;  // triangles in out_ so far
+  int prev_ = 0;        // the previous gate outcome (format 1.1 contexts)
   const bool keep_edges_;
 };
 
 }  // namespace
 
 void EncodeConnectivity(const std::vector<uint32_t>& triangles, uint32_t num_vertices,
-                        ArithmeticEncoder* enc, ConnectivityEncoding* out, bool keep_edges) {
+                        ArithmeticEncoder* enc, ConnectivityEncoding* out, bool keep_edges,
+                        uint32_t minor) {
   out->triangles.clear();
   out->source.clear();
   out->old_of_new.clear();
   out->vertex_triangles.clear();
-  Encoder(triangles, num_vertices, enc, out, keep_edges).Run();
+  Encoder(triangles, num_vertices, enc, out, keep_edges, minor).Run();
 }
 
 }  // namespace o3dgc

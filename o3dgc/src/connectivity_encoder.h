@@ -2,7 +2,8 @@
 //
 // Per gate a->b the coder says whether a triangle is attached across it and, if so, where its third
 // vertex comes from: a new vertex, the end of the gate leaving b ("right"), the start of the gate
-// entering a ("left"), or any earlier vertex (explicit back reference). Inconsistently oriented
+// entering a ("left"), or any earlier vertex (a walk along the front from format 1.1 on, else an
+// explicit back reference). Inconsistently oriented
 // triangles carry a flip bit, repeated triangles (same vertex set) a copy count and orientation,
 // degenerate triangles (a repeated vertex) are coded at the end with explicit references, and
 // disconnected parts start with a seed triangle. Vertices are numbered in order of appearance.
@@ -29,9 +30,11 @@ struct ConnectivityEncoding {
 
 // `triangles`: 3 * num_triangles vertex ids < num_vertices, every vertex referenced at least once.
 // Without `keep_edges`, out->opposite stays empty (only parallelogram-coded attributes besides
-// positions need it).
+// positions need it). `minor`: the format minor version to write (0: format 1.0's gate contexts
+// and back references; 1: format 1.1's).
 void EncodeConnectivity(const std::vector<uint32_t>& triangles, uint32_t num_vertices,
-                        ArithmeticEncoder* enc, ConnectivityEncoding* out, bool keep_edges = true);
+                        ArithmeticEncoder* enc, ConnectivityEncoding* out, bool keep_edges,
+                        uint32_t minor);
 
 }  // namespace o3dgc
 

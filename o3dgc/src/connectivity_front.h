@@ -21,11 +21,10 @@
 
 namespace o3dgc {
 
-constexpr int kConnectivityContexts = 64;
-
 // What happens at a gate, one multi-symbol decision per gate (contexts from Front::Look): nothing
 // (the gate is a boundary, it closes), or a triangle attaches whose third vertex is new, the
-// right or the left candidate, or another earlier vertex (then coded as a back reference).
+// right or the left candidate, or another earlier vertex (then coded as a back reference, or from
+// format 1.1 on as a walk along the front when one reaches it).
 enum GateOutcome : int {
   kGateClose = 0,
   kGateNew = 1,
@@ -36,19 +35,33 @@ enum GateOutcome : int {
 constexpr int kGateOutcomes = 5;
 using GateModel = SymbolModelN<8>;
 
+// Gate contexts: format 1.0 has 64 (which candidates exist, degree of a >= 5, degree of b up to
+// 7); format 1.1 has 1280 (which candidates exist, degrees of a and of b up to 7, the previous
+// gate outcome). See Front::Look.
+constexpr int kGateContexts10 = 64;
+constexpr int kGateContexts11 = 4 * 8 * 8 * kGateOutcomes;
+// Format 1.1: the most steps a walk along the front may take to reach an "other" vertex.
+constexpr uint32_t kMaxWalkSteps = 64;
+
+// `minor`: the stream's format minor version (0 or 1), which decides how gates are coded.
 struct ConnectivityModels {
-  ConnectivityModels() {
-    for (GateModel& m : gate) m = GateModel(kGateOutcomes);
-  }
+  explicit ConnectivityModels(uint32_t minor)
+      : rich(minor >= 1),
+        gate(rich ? kGateContexts11 : kGateContexts10, GateModel(kGateOutcomes)) {}
+  const bool rich;  // format 1.1: the 1280 gate contexts and walks
   BitModel more_components;
   BitModel start_new;
   EGModel start_ref;
-  GateModel gate[kConnectivityContexts];
+  std::vector<GateModel> gate;
   EGModel other_ref;
   BitModel flip;
   EGModel copies;
   BitModel copy_flip;
   EGModel extra_count;
+  // Format 1.1, after kGateOther: whether a walk reaches the vertex, its side, its steps - 2.
+  BitModel walk;
+  BitModel walk_side;
+  EGModel walk_steps;
 };
 
 class Front {
@@ -64,13 +77,15 @@ class Front {
   static constexpr uint32_t kNoEdge = 0xFFFFFFFFu;
   static constexpr int kMaxScan = 64;
 
-  // Capacities for a mesh of this size: each triangle opens at most 3 gates. Callers never code
-  // more than `triangles` triangles (the neighbour tables are sized for them; vertices and gates
-  // still grow if needed). Without `keep_edges` only the opposite vertices are recorded
-  // (TakeOpposite is then empty).
+  // Capacities for a mesh of this size. A triangle opens at most 3 gates, but a manifold mesh
+  // opens about one per edge: 1.5 per triangle, plus half a boundary edge. Gates start a little
+  // above that (at 32 bytes each, the worst case doubled the coder's largest array) and grow by
+  // half when a mesh needs more. Callers never code more than `triangles` triangles (the
+  // neighbour tables are sized for them; vertices and gates still grow if needed). Without
+  // `keep_edges` only the opposite vertices are recorded (TakeOpposite is then empty).
   void Reserve(size_t vertices, size_t triangles, bool keep_edges = true) {
     GrowVertices(vertices < 16 ? 16 : vertices);
-    GrowGates(3 * triangles + 3);
+    GrowGates(3 * triangles / 2 + triangles / 16 + 64);
     keep_edges_ = keep_edges;
     if (keep_edges_) opp_.assign(3 * triangles, kNoEdge);
     oppv_.assign(3 * triangles, kNoEdge);
@@ -106,18 +121,25 @@ class Front {
 
   // The context of gate a->b and the candidate third vertices: the end of the newest gate leaving
   // b ("right"), the start of the newest gate entering a ("left"), -1 if none.
+  // `prev`: the previous gate outcome (0 before the first) for format 1.1's contexts, -1 for
+  // format 1.0's. Why 1.1 adds them: on CAD tessellations (fans, strips of slivers) the outcomes
+  // come in runs that the degree of a and the previous outcome predict.
   struct Candidates {
     int context;
     int64_t right, left;
     int32_t right_gate;  // the gate b->right, -1 if none
   };
-  Candidates Look(uint32_t a, uint32_t b) {
+  Candidates Look(uint32_t a, uint32_t b, int prev = -1) {
     const int32_t r = HeadOut(b), l = HeadIn(a);
-    const uint32_t db = vertices_[b].deg;
+    const uint32_t db = vertices_[b].deg, da = vertices_[a].deg;
     const uint32_t d = db < 7 ? db : 7;
-    const uint32_t da = vertices_[a].deg >= 5 ? 1 : 0;
+    const int sides = (r >= 0) + 2 * (l >= 0);
     Candidates c;
-    c.context = int((((r >= 0) + 2 * (l >= 0)) * 2 + da) * 8 + d);
+    if (prev < 0) {
+      c.context = int((sides * 2 + (da >= 5 ? 1 : 0)) * 8 + d);
+    } else {
+      c.context = int(((sides * 8 + (da < 7 ? da : 7)) * 8 + d) * kGateOutcomes) + prev;
+    }
     c.right = r >= 0 ? int64_t(gates_[r].b) : -1;
     c.left = l >= 0 ? int64_t(gates_[l].a) : -1;
     c.right_gate = r;
@@ -125,6 +147,29 @@ class Front {
   }
 
   void Close(int32_t g) { gates_[g].open = 0; }
+
+  // Format 1.1 walks along the front: from v, `steps` times to the end of the newest open gate
+  // leaving the vertex (`left` false) or to the start of the newest open gate entering it (`left`
+  // true). Returns the vertex reached, or -1 if a vertex on the way has no such gate. One step
+  // from b (right) or from a (left) reaches the gate's candidates.
+  int64_t Walk(uint32_t v, bool left, uint32_t steps) {
+    for (uint32_t i = 0; i < steps; ++i) {
+      const int32_t g = left ? HeadIn(v) : HeadOut(v);
+      if (g < 0) return -1;
+      v = left ? gates_[g].a : gates_[g].b;
+    }
+    return v;
+  }
+  // The fewest steps (1..kMaxWalkSteps) of such a walk from v that reach `target`, 0 if none.
+  uint32_t WalkSteps(uint32_t v, bool left, uint32_t target) {
+    for (uint32_t i = 1; i <= kMaxWalkSteps; ++i) {
+      const int32_t g = left ? HeadIn(v) : HeadOut(v);
+      if (g < 0) return 0;
+      v = left ? gates_[g].a : gates_[g].b;
+      if (v == target) return i;
+    }
+    return 0;
+  }
 
   // A new triangle edge u->v (edge = triangle * 3 + slot, the corner opposite the edge): closes
   // the open gate v->u if there is one (the two triangles become neighbours), else opens u->v.
@@ -161,7 +206,7 @@ class Front {
   }
   // Opens gate u->v (AddHalfEdge when v has no open gate to u).
   void Open(uint32_t u, uint32_t v, uint32_t edge, uint32_t apex) {
-    if (num_gates_ == gate_capacity_) GrowGates(2 * gate_capacity_ + 16);
+    if (num_gates_ == gate_capacity_) GrowGates(gate_capacity_ + gate_capacity_ / 2 + 16);
     const int32_t id = int32_t(num_gates_++);
     gates_[id] = Gate{u, v, edge, apex, vertices_[u].head_out, vertices_[v].head_in, 1, 0};
     vertices_[u].head_out = id;

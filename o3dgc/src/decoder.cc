@@ -1,7 +1,9 @@
 // Top-level decoder: the mirror of encoder.cc. Every count is checked against what the stream can
 // hold before anything is allocated, every value against its valid range.
+#include <algorithm>
 #include <cstring>
 #include <memory>
+#include <type_traits>
 
 #include "arithmetic_coder.h"
 #include "ascii_stream.h"
@@ -89,7 +91,7 @@ Status DecodeTriangles(DecodeState& st) {
     attribute_wedges |= d.prediction == Prediction::kParallelogram;
   return DecodeConnectivity(&st.dec, st.nt, st.nv, &st.tris, &st.nc,
                             attribute_wedges ? &st.opposite : nullptr, &st.opposite_vertices,
-                            &st.vertex_triangles);
+                            &st.vertex_triangles, st.sh.minor);
 }
 
 Status DecodeSeams(DecodeState& st) {
@@ -205,46 +207,127 @@ Status DecodePositions(DecodeState& st, DecodedMesh* m) {
   return Status::kOk;
 }
 
-// Normals, float attributes and int attributes, over the attribute vertices.
+// The mesh an attribute is coded over: the attribute vertices, or (format 1.1, with seams) the
+// attribute vertices once those that merge into the first attribute vertex of their position
+// vertex are left out; what its predictors need, built on first use.
+struct AttributeMesh {
+  const std::vector<uint32_t>* tris = nullptr;
+  uint32_t n = 0;
+  const uint32_t* position_of = nullptr;  // vertex -> position vertex
+  std::vector<uint32_t> of_vertex;        // attribute vertex -> vertex (empty: the same)
+  std::vector<uint32_t> own_tris, own_position_of;
+  MeshAdjacency adj;
+  bool adj_built = false;
+  WedgeTable wedges;
+  bool wedges_built = false;
+  std::vector<double> geometry;
+};
+
+// Format 1.1, with seams: an attribute section's merge flags (section 5.1 of the format).
+// Returns kOk with `merged` left unused when nothing merges.
+Status DecodeMerges(ArithmeticDecoder& dec, const DecodeState& st,
+                    const std::vector<uint32_t>& first, AttributeMesh* merged, bool* any) {
+  *any = dec.DecodeBits(1) != 0;
+  if (!*any) return Status::kOk;
+  const uint32_t nv = st.nv;
+  BitModel merge;
+  merged->of_vertex.resize(nv);
+  merged->own_position_of.clear();
+  uint32_t n = 0;
+  for (uint32_t v = 0; v < nv; ++v) {
+    const uint32_t f = first[st.welded_of[v]];
+    if (f != v && dec.Decode(merge)) {
+      merged->of_vertex[v] = merged->of_vertex[f];
+    } else {
+      merged->of_vertex[v] = n++;
+      merged->own_position_of.push_back(st.welded_of[v]);
+    }
+    if ((v & 4095) == 0 && dec.failed()) return Status::kTruncated;
+  }
+  const std::vector<uint32_t>& at = st.attr_tris();
+  merged->own_tris.resize(at.size());
+  for (size_t i = 0; i < at.size(); ++i) merged->own_tris[i] = merged->of_vertex[at[i]];
+  merged->tris = &merged->own_tris;
+  merged->n = n;
+  merged->position_of = merged->own_position_of.data();
+  merged->adj_built = merged->wedges_built = false;
+  merged->geometry.clear();
+  return Status::kOk;
+}
+
+// Normals, float attributes and int attributes, over the attribute vertices (format 1.1: over
+// the merged ones, then copied to each attribute vertex).
 Status DecodeAttributes(DecodeState& st, DecodedMesh* m) {
   const PayloadHeader& h = st.h;
   ArithmeticDecoder& dec = st.dec;
   StreamInfo& si = st.si;
   const uint32_t nv = st.nv;
-  const std::vector<uint32_t>& attr_tris = st.attr_tris();
   Status s;
-  MeshAdjacency attr_adj;
-  if (h.has_normals && h.normal.prediction == Prediction::kSurfaceNormal)
-    attr_adj.Build(attr_tris, nv);
-  WedgeTable attr_wedges;
-  bool attr_wedges_built = false;
+  AttributeMesh attr, merged;
+  attr.tris = &st.attr_tris();
+  attr.n = nv;
+  attr.position_of = st.welded_of.data();
+  // Format 1.1: with seams, each attribute says which attribute vertices merge.
+  const bool may_merge = st.sh.minor >= 1 && st.has_seams;
+  std::vector<uint32_t> first;  // the first (smallest) attribute vertex of each position vertex
+  if (may_merge) {
+    first.assign(st.nw, kNone);
+    for (uint32_t v = nv; v-- > 0;) first[st.welded_of[v]] = v;
+  }
   NormalGeometry geo;
   geo.positions = st.qpos.data();
   for (int k = 0; k < 3; ++k) {
     geo.scale[k] = double(h.position.quant.range[k]) / double(h.position.quant.max_q());
   }
-  geo.position_of = st.welded_of.data();
-  std::vector<double> attr_geometry;
+  AttributeMesh* mesh = &attr;
+  auto read_merges = [&]() {
+    mesh = &attr;
+    if (!may_merge) return Status::kOk;
+    bool any = false;
+    const Status r = DecodeMerges(dec, st, first, &merged, &any);
+    if (any) mesh = &merged;
+    return r;
+  };
+  // Copies the merged vertices' values to the attribute vertices.
+  auto expand = [&](auto* values, uint32_t dim) {
+    if (mesh->of_vertex.empty()) return;
+    std::remove_reference_t<decltype(*values)> out(size_t(nv) * dim);
+    for (uint32_t v = 0; v < nv; ++v) {
+      std::copy_n(values->data() + size_t(mesh->of_vertex[v]) * dim, dim,
+                  out.data() + size_t(v) * dim);
+    }
+    *values = std::move(out);
+  };
   auto decode_float = [&](const AttributeDesc& d, std::vector<float>* values) {
     std::vector<int32_t> q;
     const bool texcoord = d.semantic == Semantic::kTexCoord && d.dimension == 2 &&
                           d.prediction == Prediction::kParallelogram;
-    if (texcoord && attr_geometry.empty()) attr_geometry = AttributeGeometry(geo, nv);
-    if (d.prediction == Prediction::kParallelogram && !attr_wedges_built) {
-      attr_wedges.Build(attr_tris, nv, st.opposite, st.has_seams);
-      attr_wedges_built = true;
+    geo.position_of = mesh->position_of;
+    if (texcoord && mesh->geometry.empty()) mesh->geometry = AttributeGeometry(geo, mesh->n);
+    if (d.prediction == Prediction::kParallelogram && !mesh->wedges_built) {
+      mesh->wedges.Build(*mesh->tris, mesh->n, st.opposite, st.has_seams);
+      mesh->wedges_built = true;
     }
-    const Status r = DecodeQuantized(&dec, &attr_wedges, nv, int(d.dimension), d.bits, d.prediction,
-                                     st.order, &q, texcoord ? &attr_geometry : nullptr);
+    const Status r =
+        DecodeQuantized(&dec, &mesh->wedges, mesh->n, int(d.dimension), d.bits, d.prediction,
+                        st.order, &q, texcoord ? &mesh->geometry : nullptr);
     if (r != Status::kOk) return r;
     values->resize(q.size());
-    d.quant.DequantizeAll(q.data(), nullptr, nv, values->data());
+    d.quant.DequantizeAll(q.data(), nullptr, mesh->n, values->data());
+    expand(values, d.dimension);
     return Status::kOk;
   };
   size_t mark = dec.BytesConsumed();
   if (h.has_normals) {
+    if ((s = read_merges()) != Status::kOk) return s;
     if (h.normal.prediction == Prediction::kSurfaceNormal) {
-      s = DecodeOctNormals(&dec, attr_adj, geo, nv, h.normal.bits, &m->normals);
+      if (!mesh->adj_built) {
+        mesh->adj.Build(*mesh->tris, mesh->n);
+        mesh->adj_built = true;
+      }
+      geo.position_of = mesh->position_of;
+      s = DecodeOctNormals(&dec, mesh->adj, geo, mesh->n, h.normal.bits, &m->normals);
+      if (s == Status::kOk) expand(&m->normals, 3);
     } else {
       s = decode_float(h.normal, &m->normals);
     }
@@ -256,6 +339,7 @@ Status DecodeAttributes(DecodeState& st, DecodedMesh* m) {
     DecodedFloatAttribute a;
     a.semantic = d.semantic;
     a.dimension = d.dimension;
+    if ((s = read_merges()) != Status::kOk) return s;
     if ((s = decode_float(d, &a.values)) != Status::kOk) return s;
     m->float_attributes.push_back(std::move(a));
     si.float_attributes.push_back(dec.BytesConsumed() - mark);
@@ -265,9 +349,11 @@ Status DecodeAttributes(DecodeState& st, DecodedMesh* m) {
     DecodedIntAttribute a;
     a.semantic = d.semantic;
     a.dimension = d.dimension;
-    if ((s = DecodeInts(&dec, nv, int(d.dimension), d.prediction, &a.values)) != Status::kOk) {
+    if ((s = read_merges()) != Status::kOk) return s;
+    if ((s = DecodeInts(&dec, mesh->n, int(d.dimension), d.prediction, &a.values)) != Status::kOk) {
       return s;
     }
+    expand(&a.values, d.dimension);
     m->int_attributes.push_back(std::move(a));
     si.int_attributes.push_back(dec.BytesConsumed() - mark);
   }

@@ -49,7 +49,7 @@ bool AllFinite(const std::vector<float>& v) {
 
 std::vector<float> Reorder(const std::vector<float>& v, uint32_t dim,
                            const std::vector<uint32_t>& old_of_new) {
-  std::vector<float> out(v.size());
+  std::vector<float> out(old_of_new.size() * dim);
   for (size_t i = 0; i < old_of_new.size(); ++i) {
     std::memcpy(&out[i * dim], &v[size_t(old_of_new[i]) * dim], dim * sizeof(float));
   }
@@ -94,8 +94,27 @@ struct EncodeState {
   // an input vertex for each position vertex.
   std::vector<uint32_t> orig_new, old_of_orig, welded_of_orig, rep_of_welded;
   uint32_t nw = 0;
+  bool has_seams = false;
   std::vector<int32_t> qpos;  // quantized positions per position vertex
 };
+
+// Frees a working array whose last stage is done: the encoder's peak memory is the sum of the
+// arrays alive at once.
+template <typename T>
+void Release(std::vector<T>& v) {
+  std::vector<T>().swap(v);
+}
+
+// The working arrays the stages after connectivity and seams no longer read.
+void ReleaseConnectivityWork(EncodeState& st) {
+  Release(st.welded_tris);
+  Release(st.weld);
+  Release(st.welded_new);
+  Release(st.rotation);
+  Release(st.conn.old_of_new);
+  if (!st.h.has_groups) Release(st.conn.source);
+  if (!st.h.has_normals && st.h.floats.empty()) Release(st.corner_vertex);
+}
 
 // The checks that need no copy of the input.
 Status Validate(const MeshView& mesh, const EncodeParams& params) {
@@ -249,7 +268,7 @@ void EncodeTriangles(EncodeState& st) {
   bool attribute_wedges = h.has_normals && h.normal.prediction == Prediction::kParallelogram;
   for (const AttributeDesc& d : h.floats)
     attribute_wedges |= d.prediction == Prediction::kParallelogram;
-  EncodeConnectivity(welded_tris, num_welded, &enc, &conn, attribute_wedges);
+  EncodeConnectivity(welded_tris, num_welded, &enc, &conn, attribute_wedges, kFormatMinor);
   nc = uint32_t(conn.old_of_new.size());
   welded_new.assign(num_welded, kNone);
   for (uint32_t i = 0; i < nc; ++i) welded_new[conn.old_of_new[i]] = i;
@@ -296,6 +315,7 @@ void EncodeSeams(EncodeState& st) {
   bool has_seams = false;
   for (uint32_t w = 0; w < nc && !has_seams; ++w) has_seams = split_count[w] > 1;
   enc.EncodeBits(has_seams ? 1 : 0, 1);
+  st.has_seams = has_seams;
   if (has_seams) {
     for (uint32_t w = 0; w < nc; ++w) EncodeEG(enc, sm->seam_count, split_count[w] - 1);
   }
@@ -383,7 +403,10 @@ void EncodePositions(EncodeState& st) {
           h.position.quant.Quantize(positions[3 * size_t(rep_of_welded[w]) + k], k);
     }
   }
+  Release(positions);
+  Release(rep_of_welded);
   {
+    bool coded = false;  // the positions are in the stream already (auto_fast_decode)
     WedgeTable wedges;
     if (h.position.prediction == Prediction::kParallelogram) {
       wedges.BuildFromOppositeVertices(conn.triangles, nw, conn.opposite_vertices,
@@ -405,17 +428,100 @@ void EncodePositions(EncodeState& st) {
         e.Finish();
         return double(scratch.size());
       };
-      if (bits_in(CodingOrder::kVertexId) <= kAutoFastDecodeTry * bits_in(CodingOrder::kGreedy) &&
-          size_in(CodingOrder::kVertexId) <= kAutoFastDecodeCost * size_in(CodingOrder::kGreedy)) {
-        fast_decode = true;
-        order = CodingOrder::kVertexId;
+      if (bits_in(CodingOrder::kVertexId) <= kAutoFastDecodeTry * bits_in(CodingOrder::kGreedy)) {
+        // The id order is coded into the stream itself and the greedy order aside; if the id
+        // order loses, the stream is rolled back and the greedy order coded again. Two codings
+        // instead of three when the id order wins (the scans), the same three when it loses.
+        const ArithmeticEncoder saved = enc;
+        const size_t saved_size = st.payload.size();
+        const size_t start = enc.BytesSoFar();
+        EncodeQuantized(&enc, &wedges, qpos, 3, h.position.bits, h.position.prediction,
+                        CodingOrder::kVertexId);
+        const double id_bytes = double(enc.BytesSoFar() - start);
+        if (id_bytes <= kAutoFastDecodeCost * size_in(CodingOrder::kGreedy)) {
+          fast_decode = true;
+          order = CodingOrder::kVertexId;
+          coded = true;
+        } else {
+          enc = saved;
+          st.payload.resize(saved_size);
+        }
       }
     }
-    EncodeQuantized(&enc, &wedges, qpos, 3, h.position.bits, h.position.prediction, order);
+    if (!coded) {
+      EncodeQuantized(&enc, &wedges, qpos, 3, h.position.bits, h.position.prediction, order);
+    }
   }
+  Release(conn.triangles);
+  Release(conn.opposite_vertices);
+  Release(conn.vertex_triangles);
 }
 
 // Normals, float and int attributes, over the attribute vertices.
+// The mesh an attribute is coded over (see decoder.cc): the attribute vertices, or (format 1.1,
+// with seams) those left once the ones equal to the first attribute vertex of their position
+// vertex are merged into it; `input_of` maps its vertices to input vertices.
+struct AttributeMesh {
+  const std::vector<uint32_t>* tris = nullptr;
+  uint32_t n = 0;
+  const uint32_t* position_of = nullptr;
+  const std::vector<uint32_t>* input_of = nullptr;
+  std::vector<uint32_t> own_tris, own_position_of, own_input_of;
+  MeshAdjacency adj;
+  bool adj_built = false;
+  WedgeTable wedges;
+  bool wedges_built = false;
+  std::vector<double> geometry;
+};
+
+// Format 1.1, with seams: codes which attribute vertices merge into the first attribute vertex of
+// their position vertex (those holding bit for bit its value) and returns the mesh to code over.
+// Why: UV seams split vertices whose normals, skin weights and joints are continuous across the
+// seam (smooth shading, scans, DCC exports); coded per attribute vertex, each copy was coded
+// again and its normal predicted from half a fan.
+template <typename T>
+AttributeMesh* CodeMerges(EncodeState& st, const std::vector<uint32_t>& attr_tris,
+                          const std::vector<uint32_t>& first, const T* values, uint32_t dim,
+                          AttributeMesh* attr, AttributeMesh* merged) {
+  const size_t nv = st.nv;
+  std::vector<uint8_t> merge(nv, 0);
+  bool any = false;
+  for (uint32_t i = 0; i < nv; ++i) {
+    const uint32_t f = first[st.welded_of_orig[i]];
+    if (f == i) continue;
+    merge[i] = std::memcmp(values + size_t(st.old_of_orig[i]) * dim,
+                           values + size_t(st.old_of_orig[f]) * dim, dim * sizeof(T)) == 0;
+    any |= merge[i] != 0;
+  }
+  st.enc.EncodeBits(any ? 1 : 0, 1);
+  if (!any) return attr;
+  BitModel model;
+  std::vector<uint32_t> of_vertex(nv);
+  merged->own_position_of.clear();
+  merged->own_input_of.clear();
+  uint32_t n = 0;
+  for (uint32_t i = 0; i < nv; ++i) {
+    const uint32_t f = first[st.welded_of_orig[i]];
+    if (f != i) st.enc.Encode(merge[i], model);
+    if (merge[i]) {
+      of_vertex[i] = of_vertex[f];
+    } else {
+      of_vertex[i] = n++;
+      merged->own_position_of.push_back(st.welded_of_orig[i]);
+      merged->own_input_of.push_back(st.old_of_orig[i]);
+    }
+  }
+  merged->own_tris.resize(attr_tris.size());
+  for (size_t i = 0; i < attr_tris.size(); ++i) merged->own_tris[i] = of_vertex[attr_tris[i]];
+  merged->tris = &merged->own_tris;
+  merged->n = n;
+  merged->position_of = merged->own_position_of.data();
+  merged->input_of = &merged->own_input_of;
+  merged->adj_built = merged->wedges_built = false;
+  merged->geometry.clear();
+  return merged;
+}
+
 void EncodeAttributes(EncodeState& st) {
   const size_t nv = st.nv;
   const size_t nt = st.nt;
@@ -429,45 +535,57 @@ void EncodeAttributes(EncodeState& st) {
   ConnectivityEncoding& conn = st.conn;
   std::vector<uint32_t>& corner_vertex = st.corner_vertex;
   std::vector<uint32_t>& orig_new = st.orig_new;
-  std::vector<uint32_t>& old_of_orig = st.old_of_orig;
-  std::vector<uint32_t>& welded_of_orig = st.welded_of_orig;
   std::vector<int32_t>& qpos = st.qpos;
-  std::vector<uint32_t> attr_tris;  // only attributes beside positions need it
+  std::vector<uint32_t> attr_tris;  // only normals and float attributes need it (not ints)
   if (h.has_normals || !h.floats.empty()) {
     attr_tris.resize(3 * nt);
     for (size_t i = 0; i < 3 * nt; ++i) attr_tris[i] = orig_new[corner_vertex[i]];
   }
-  MeshAdjacency attr_adj;
-  if (h.has_normals && h.normal.prediction == Prediction::kSurfaceNormal) {
-    attr_adj.Build(attr_tris, uint32_t(nv));
+  AttributeMesh attr, merged;
+  attr.tris = &attr_tris;
+  attr.n = uint32_t(nv);
+  attr.position_of = st.welded_of_orig.data();
+  attr.input_of = &st.old_of_orig;
+  const bool may_merge = kFormatMinor >= 1 && st.has_seams;
+  std::vector<uint32_t> first;  // the first (smallest) attribute vertex of each position vertex
+  if (may_merge) {
+    first.assign(st.nw, kNone);
+    for (uint32_t i = uint32_t(nv); i-- > 0;) first[st.welded_of_orig[i]] = i;
   }
-  WedgeTable attr_wedges;
-  bool attr_wedges_built = false;
   NormalGeometry geo;
   geo.positions = qpos.data();
   for (int k = 0; k < 3; ++k) {
     geo.scale[k] = double(h.position.quant.range[k]) / double(h.position.quant.max_q());
   }
-  geo.position_of = welded_of_orig.data();
-  std::vector<double> attr_geometry;
+  auto mesh_for = [&](const auto* values, uint32_t dim) {
+    return may_merge ? CodeMerges(st, attr_tris, first, values, dim, &attr, &merged) : &attr;
+  };
   auto code_float = [&](const AttributeDesc& d, const std::vector<float>& values) {
-    const std::vector<float> v = Reorder(values, d.dimension, old_of_orig);
+    AttributeMesh& mesh = *mesh_for(values.data(), d.dimension);
+    const std::vector<float> v = Reorder(values, d.dimension, *mesh.input_of);
     std::vector<int32_t> q(v.size());
     for (size_t i = 0; i < v.size(); ++i) q[i] = d.quant.Quantize(v[i], uint32_t(i % d.dimension));
     const bool texcoord = d.semantic == Semantic::kTexCoord && d.dimension == 2 &&
                           d.prediction == Prediction::kParallelogram;
-    if (texcoord && attr_geometry.empty()) attr_geometry = AttributeGeometry(geo, uint32_t(nv));
-    if (d.prediction == Prediction::kParallelogram && !attr_wedges_built) {
-      attr_wedges.Build(attr_tris, uint32_t(nv), conn.opposite, true);
-      attr_wedges_built = true;
+    geo.position_of = mesh.position_of;
+    if (texcoord && mesh.geometry.empty()) mesh.geometry = AttributeGeometry(geo, mesh.n);
+    if (d.prediction == Prediction::kParallelogram && !mesh.wedges_built) {
+      mesh.wedges.Build(*mesh.tris, mesh.n, conn.opposite, true);
+      mesh.wedges_built = true;
     }
-    EncodeQuantized(&enc, &attr_wedges, q, int(d.dimension), d.bits, d.prediction, order,
-                    texcoord ? &attr_geometry : nullptr);
+    EncodeQuantized(&enc, &mesh.wedges, q, int(d.dimension), d.bits, d.prediction, order,
+                    texcoord ? &mesh.geometry : nullptr);
   };
   size_t mark = enc.BytesSoFar();
   if (h.has_normals) {
     if (h.normal.prediction == Prediction::kSurfaceNormal) {
-      EncodeOctNormals(&enc, attr_adj, geo, Reorder(normals, 3, old_of_orig), h.normal.bits);
+      AttributeMesh& mesh = *mesh_for(normals.data(), 3);
+      if (!mesh.adj_built) {
+        mesh.adj.Build(*mesh.tris, mesh.n);
+        mesh.adj_built = true;
+      }
+      geo.position_of = mesh.position_of;
+      EncodeOctNormals(&enc, mesh.adj, geo, Reorder(normals, 3, *mesh.input_of), h.normal.bits);
     } else {
       code_float(h.normal, normals);
     }
@@ -481,9 +599,10 @@ void EncodeAttributes(EncodeState& st) {
   for (size_t i = 0; i < h.ints.size(); ++i) {
     mark = enc.BytesSoFar();
     const uint32_t dim = h.ints[i].dimension;
-    std::vector<int32_t> v(ints[i].size());
-    for (size_t j = 0; j < nv; ++j) {
-      std::memcpy(&v[j * dim], &ints[i][size_t(old_of_orig[j]) * dim], dim * sizeof(int32_t));
+    const AttributeMesh& mesh = *mesh_for(ints[i].data(), dim);
+    std::vector<int32_t> v(size_t(mesh.n) * dim);
+    for (size_t j = 0; j < mesh.n; ++j) {
+      std::memcpy(&v[j * dim], &ints[i][size_t((*mesh.input_of)[j]) * dim], dim * sizeof(int32_t));
     }
     EncodeInts(&enc, v, int(dim), h.ints[i].prediction);
     si.int_attributes.push_back(enc.BytesSoFar() - mark);
@@ -528,6 +647,7 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
   if (!progress(0.2f)) return Status::kCancelled;
   EncodeSeams(st);
   if (params.keep_order) EncodeExactOrder(st);
+  ReleaseConnectivityWork(st);
   si.connectivity = enc.BytesSoFar() - si.header;
   if (!progress(0.4f)) return Status::kCancelled;
   size_t mark = enc.BytesSoFar();

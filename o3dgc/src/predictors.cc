@@ -122,10 +122,23 @@ CodingOrder::CodingOrder(const WedgeTable& wedges, Kind kind)
   moved_.resize(size_t(wedges.max_wedges()) + 1);
   degree_.assign(wedges.num_vertices(), 0);
   log_.reset(new Visited[wedges.num_vertices()]);
+  // The stacks' usual size: a front of candidates, far below one entry per wedge.
+  const size_t start = std::min<size_t>(wedges.num_wedges(), 1024 + wedges.num_vertices() / 16) + 1;
   for (int l = 1; l < kLevels; ++l) {
-    stacks_[l].reset(new uint32_t[wedges.num_wedges() + 1]);
+    stacks_[l].reset(new uint32_t[start]);
     top_[l] = stacks_[l].get();
+    end_[l] = top_[l] + start;
   }
+}
+
+void CodingOrder::Grow(int level, size_t pushes) {
+  const size_t used = size_t(top_[level] - stacks_[level].get());
+  const size_t capacity = std::max(2 * size_t(end_[level] - stacks_[level].get()), used + pushes);
+  std::unique_ptr<uint32_t[]> grown(new uint32_t[capacity]);
+  std::copy(stacks_[level].get(), top_[level], grown.get());
+  stacks_[level] = std::move(grown);
+  top_[level] = stacks_[level].get() + used;
+  end_[level] = stacks_[level].get() + capacity;
 }
 
 uint32_t CodingOrder::NextWithoutParallelogram() {

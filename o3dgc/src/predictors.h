@@ -114,10 +114,18 @@ class CodingOrder {
   // kGreedy only (left empty for kVertexId):
   std::vector<uint8_t> degree_;  // saturating at kLevels - 1: only the level is needed
   // Candidates at levels 1..3 (stack 0 is not used), top_[l] one past the newest entry. A visit
-  // pushes at most one entry per wedge, so num_wedges() entries per level are never exceeded: no
-  // capacity checks.
+  // pushes at most one entry per wedge of c: room for that is made once per visit (Reserve). The
+  // stacks start small and double: sized for the worst case (every wedge) they took 12 bytes per
+  // wedge, more than the wedge table itself.
   std::unique_ptr<uint32_t[]> stacks_[kLevels];
   uint32_t* top_[kLevels] = {nullptr, nullptr, nullptr, nullptr};
+  uint32_t* end_[kLevels] = {nullptr, nullptr, nullptr, nullptr};
+  void Reserve(int pushes) {
+    for (int l = 1; l < kLevels; ++l) {
+      if (end_[l] - top_[l] < pushes) Grow(l, size_t(pushes));
+    }
+  }
+  void Grow(int level, size_t pushes);
   // Level 0 holds the neighbours of visited vertices that have no parallelogram yet, newest
   // first; it is only needed when levels 1..3 are empty, so instead of pushing them at every
   // visit, the visits are logged and their wedges searched on demand (see
@@ -233,6 +241,7 @@ inline int CodingOrder::VisitGreedy(uint32_t c) {
     n_moved += int(one);
   }
   // The same pushes, in wedge order per level, as pushing in the loop would make.
+  Reserve(n_moved);
   for (int i = 0; i < n_moved; ++i) *top_[moved[i] & 3]++ = uint32_t(moved[i] >> 2);
   log_[log_size_++] = Visited{c, 0};
   done_[c] = 1;

@@ -128,10 +128,7 @@ py::tuple Decompose(
                             {"pca", pca.has_value()},
                             {"mode", mode.has_value()},
                             {"min_volume_per_hull", min_volume_per_hull.has_value()},
-                            {"max_convex_hulls", max_convex_hulls.has_value()},
                             {"max_distance", max_distance.has_value()},
-                            {"max_concavity", max_concavity.has_value()},
-                            {"hulls", hulls.has_value()},
                             {"min_opening", min_opening.has_value()}};
   const Given hacd_only = {{"target_triangles", target_triangles.has_value()},
                            {"scale_factor", scale_factor.has_value()},
@@ -200,6 +197,10 @@ py::tuple Decompose(
     Set(compacity_weight, &p.compacity_weight);
     Set(flat_region_threshold, &p.flat_region_threshold);
     Set(computation_weight, &p.computation_weight);
+    SetCount("max_convex_hulls", max_convex_hulls, &p.max_clusters);
+    Set(max_concavity, &p.max_concavity);
+    SetCount("hulls", hulls, &p.hull_count);
+    if (p.hull_count > 100000) throw py::value_error("decompose: hulls must be in [0, 100000]");
     SetCount("num_threads", num_threads, &p.num_threads);
     p.compute_report = compute_report;
     if (vhacd::ValidateHacdParameters(p, &why) != vhacd::Status::kOk)
@@ -265,6 +266,24 @@ max_vertices_per_hull : int, optional
     Vertex cap of each hull, 4 to 1024 (default 64 for V-HACD, 100 for HACD).
 num_threads : int, optional
     Worker threads, 0 to 256, 0 = every core (default). The result does not depend on it.
+max_convex_hulls : int, optional
+    Hull budget: hulls are merged until at most this many remain (HACD: the cheapest merges
+    go on past `concavity` down to this many clusters); 0 = no budget (default).
+max_concavity : float, optional
+    Target error, every hull within max_concavity times the bounding-box diagonal of the
+    surface (the report's "concavity"), 0 to 1; 0 = no target (default). V-HACD: parts are
+    split until they are, then merged while the merged hull stays within it; concavity, gamma
+    and max_distance are then ignored and the grid is refined (up to 1000000 voxels) when the
+    target spans fewer than 3 voxels. HACD: the concavity limit of a merge becomes
+    max_concavity times the diagonal (concavity is ignored), tightened (x0.6, up to 3
+    attempts) while the measured concavity is over it. report["target_reached"] and
+    report["target_note"] say whether it was met.
+hulls : int, optional
+    Exactly this many hulls whenever the mesh can give them (V-HACD: parts are cut further or
+    merged, least stick-out first; HACD: clusters merged, past `concavity` if needed, down to
+    this many); takes precedence over max_convex_hulls and max_concavity. 0 to 100000; 0 = no
+    count (default). When the mesh cannot give that many, report["target_reached"] is False
+    and report["target_note"] says why.
 compute_report : bool
     Measure the error report (IoU, Hausdorff distances; costs time). Default True.
 progress : callable, optional
@@ -296,23 +315,9 @@ mode : str, optional
 min_volume_per_hull : float, optional
     Hull simplification stops adding points below this volume gain, 0 to 0.01 (default
     0.0001).
-max_convex_hulls : int, optional
-    Hull budget: hulls are merged until at most this many remain; 0 = no budget.
 max_distance : float, optional
     Largest distance a hull may stick out of the mesh, as a fraction of the bounding-box
     diagonal, 0 to 1 (default 0.03; 0 = pure V-HACD 2.0).
-max_concavity : float, optional
-    Target error: parts are split until every hull lies within max_concavity times the
-    bounding-box diagonal of the surface (the report's "concavity"), then merged while the
-    merged hull stays within it; concavity, gamma and max_distance are then ignored and the
-    grid is refined (up to 1000000 voxels) when the target spans fewer than 3 voxels. 0 to 1;
-    0 = no target (default). report["target_reached"] and report["target_note"] say whether
-    it was met.
-hulls : int, optional
-    Exactly this many hulls whenever the voxel set can be cut into that many parts (parts are
-    cut further or merged, least stick-out first); takes precedence over max_convex_hulls and
-    max_concavity. 0 to 100000; 0 = no count (default). When the mesh cannot give that many,
-    report["target_reached"] is False and report["target_note"] says why.
 min_opening : float, optional
     Fill rule for open meshes: a cavity that a ball of this diameter (fraction of the
     diagonal) reaches from outside stays empty (pots, cups, lidless boxes); smaller openings

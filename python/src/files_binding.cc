@@ -6,6 +6,7 @@
 #include "common/file_util.h"
 #include "hullpack/cli_util.h"
 #include "hullpack/scene_summary.h"
+#include "hullpack/unpack_command.h"
 #include "io/scene_io.h"
 #include "mesh/flatten.h"
 #include "mesh/validate.h"
@@ -137,11 +138,12 @@ void ApplyDecomposition(vhacd::Parameters* p, const std::string& quality,
 
 py::dict Pack(const std::string& input, const std::string& output, double max_error,
               double hull_error, std::optional<int> position_bits, int normal_bits, int uv_bits,
-              bool ascii, bool keep_order, bool fast_decode, bool fallback, py::handle hulls,
-              const std::string& physics, const std::string& method, const std::string& quality,
-              std::optional<uint32_t> resolution, std::optional<uint32_t> max_hulls,
-              std::optional<uint32_t> max_vertices, std::optional<double> concavity,
-              std::optional<double> max_concavity, bool force, py::object progress) {
+              bool ascii, bool keep_order, bool fast_decode, bool fallback, bool quantized_hulls,
+              py::handle hulls, const std::string& physics, const std::string& method,
+              const std::string& quality, std::optional<uint32_t> resolution,
+              std::optional<uint32_t> max_hulls, std::optional<uint32_t> max_vertices,
+              std::optional<double> concavity, std::optional<double> max_concavity, bool force,
+              py::object progress) {
   PackOptions o;
   if (!(max_error > 0 && max_error <= 0.5)) throw py::value_error("max_error must be in (0, 0.5]");
   if (!(hull_error > 0 && hull_error <= 0.5))
@@ -157,6 +159,7 @@ py::dict Pack(const std::string& input, const std::string& output, double max_er
   o.keep_order = keep_order;
   o.fast_decode = fast_decode;
   o.glb.fallback = fallback;
+  o.glb.quantized_hulls = quantized_hulls;
   // As `hullpack pack --hulls all|none|auto|N`: a count asks for exactly N hulls per mesh (with
   // the automatic choice of meshes).
   const uint32_t hull_count = ApplyHulls(hulls, &o.collision.policy);
@@ -164,25 +167,28 @@ py::dict Pack(const std::string& input, const std::string& output, double max_er
     throw py::value_error("physics must be 'omi' or 'khr', not '" + physics + "'");
   o.glb.physics = physics == "omi" ? PhysicsForm::kOmi : PhysicsForm::kKhr;
   if (method == "hacd") {
-    // As `hullpack pack --method hacd`: testHACD's recommended line; the V-HACD options do not
+    // As `hullpack pack --method hacd`: testHACD's recommended line; the voxel options do not
     // apply, so giving one is an error rather than silently ignored.
     o.collision.method = DecompositionMethod::kHacd;
-    if (quality != "default" || resolution || max_hulls || concavity) {
+    if (quality != "default" || resolution) {
       throw py::value_error(
-          "quality, resolution, max_hulls and concavity are V-HACD options (method=\"vhacd\"), "
-          "not options of method=\"hacd\"");
+          "quality and resolution are V-HACD options (method=\"vhacd\"), not options of "
+          "method=\"hacd\"");
     }
   } else if (method != "vhacd") {
     throw py::value_error("method must be 'vhacd' or 'hacd', not '" + method + "'");
   }
-  if (method == "hacd" && (hull_count || max_concavity)) {
-    throw py::value_error(
-        "a hull count and max_concavity are V-HACD options (method=\"vhacd\"), not options of "
-        "method=\"hacd\"");
-  }
   ApplyDecomposition(&o.collision.parameters, quality, resolution, max_hulls, concavity,
                      max_concavity);
   o.collision.parameters.hull_count = hull_count;
+  if (method == "hacd") {
+    // As ApplyMethodOptions for the command.
+    vhacd::HacdParameters& h = o.collision.hacd_parameters;
+    if (max_hulls) h.max_clusters = *max_hulls;
+    if (concavity) h.concavity = *concavity * 2.0 * h.scale_factor;
+    if (max_concavity) h.max_concavity = *max_concavity;
+    h.hull_count = hull_count;
+  }
   if (max_vertices) {
     if (*max_vertices < 4 || *max_vertices > 1024)
       throw py::value_error("max_vertices must be in [4, 1024]");
@@ -217,39 +223,21 @@ py::dict Pack(const std::string& input, const std::string& output, double max_er
 }
 
 py::dict Unpack(const std::string& input, const std::string& output, bool force) {
-  const FileFormat format = FormatFromExtension(output);
-  if (format == FileFormat::kUnknown)
+  if (FormatFromExtension(output) == FileFormat::kUnknown)
     throw py::value_error(output + ": unknown output format (.glb .obj .off .wrl .ply)");
-  Status failed;
-  size_t meshes = 0, triangles = 0;
+  Result<UnpackSummary> done = UnpackSummary();
   {
     py::gil_scoped_release release;
-    failed = CheckOutputPath(output, {input}, force);
-    Result<std::vector<uint8_t>> bytes =
-        failed.ok() ? ReadFileBytes(input) : Result<std::vector<uint8_t>>(failed);
-    if (!bytes.ok()) {
-      failed = bytes.status();
-    } else {
-      GltfDocument plain;
-      Result<Scene> scene =
-          ReadPackedGltf(bytes.value().data(), bytes.value().size(), input, "", &plain);
-      if (!scene.ok()) {
-        failed = scene.status();
-      } else if (format == FileFormat::kGlb) {
-        Result<std::vector<uint8_t>> glb = plain.Serialize();
-        failed = glb.ok() ? WriteFileAtomically(output, glb.value()) : glb.status();
-      } else {
-        failed = WriteScene(scene.value(), output);
-      }
-      if (scene.ok()) meshes = scene->meshes.size(), triangles = scene->triangle_count();
-    }
+    done = hullpack::Unpack(input, output, force);
   }
-  if (!failed.ok()) Raise(failed);
+  if (!done.ok()) Raise(done.status());
   py::dict d;
   d["input"] = input;
   d["output"] = output;
-  d["meshes"] = meshes;
-  d["triangles"] = triangles;
+  d["meshes"] = done->meshes;
+  d["triangles"] = done->triangles;
+  d["hulls"] = done->hulls;
+  if (!done->hulls_path.empty()) d["hulls_output"] = done->hulls_path;
   return d;
 }
 
@@ -377,29 +365,30 @@ position_bits : int, optional
     Explicit position bits (1 to 30) instead of max_error.
 normal_bits, uv_bits : int
     Bits for normals (10) and texture coordinates (12).
-ascii, keep_order, fast_decode, fallback : bool
-    As the command's --ascii, --keep-order, --fast-decode, --fallback.
+ascii, keep_order, fast_decode, fallback, quantized_hulls : bool
+    As the command's --ascii, --keep-order, --fast-decode, --fallback, --quantized-hulls.
 hulls : str or int
     As --hulls: which meshes get hulls, "auto" (default), "all" or "none"; or a count N
-    (1 to 100000, an int or its digits): exactly N hulls per mesh (V-HACD's hull count, on
-    the meshes "auto" picks).
+    (1 to 100000, an int or its digits): exactly N hulls per mesh (on the meshes "auto"
+    picks; both methods).
 physics : str
     "omi" (OMI_physics_shape/body, default) or "khr" (the KHR_physics_rigid_bodies draft).
 method : str
     Decomposer: "vhacd" (V-HACD 2.0, default) or "hacd" (HACD with testHACD's recommended
-    settings and 24 vertices per hull; for open and thin shapes). quality, resolution,
-    max_hulls and concavity are V-HACD options: giving one with "hacd" raises ValueError.
+    settings and 24 vertices per hull; for open and thin shapes). quality and resolution
+    are V-HACD options: giving one with "hacd" raises ValueError.
 quality : str
     Decomposition preset: "default" or "high".
 resolution, max_hulls : int, optional
-    Voxels and hull budget.
+    Voxels (V-HACD only) and hull budget (HACD: the cheapest merges go on past the concavity
+    limit down to max_hulls clusters).
 max_vertices : int, optional
     Vertex cap per hull, 4 to 1024 (both methods).
 concavity : float, optional
-    Largest concavity of a part (0 to 1).
+    Largest concavity of a part (HACD: of a merge), fraction of the diagonal (0 to 1).
 max_concavity : float, optional
     As --max-concavity D: hulls within D times the mesh's bounding-box diagonal of its
-    surface, as few as that allows (0 to 1; 0 or None = no target). V-HACD only.
+    surface, as few as that allows (0 to 1; 0 or None = no target); both methods.
 force : bool
     Replace an existing output.
 progress : callable, optional
@@ -422,11 +411,12 @@ OSError
         py::arg("hull_error") = 0.002, py::arg("position_bits") = py::none(),
         py::arg("normal_bits") = 10, py::arg("uv_bits") = 12, py::arg("ascii") = false,
         py::arg("keep_order") = false, py::arg("fast_decode") = false, py::arg("fallback") = false,
-        py::arg("hulls") = "auto", py::arg("physics") = "omi", py::arg("method") = "vhacd",
-        py::arg("quality") = "default", py::arg("resolution") = py::none(),
-        py::arg("max_hulls") = py::none(), py::arg("max_vertices") = py::none(),
-        py::arg("concavity") = py::none(), py::arg("max_concavity") = py::none(),
-        py::arg("force") = false, py::arg("progress") = py::none());
+        py::arg("quantized_hulls") = false, py::arg("hulls") = "auto", py::arg("physics") = "omi",
+        py::arg("method") = "vhacd", py::arg("quality") = "default",
+        py::arg("resolution") = py::none(), py::arg("max_hulls") = py::none(),
+        py::arg("max_vertices") = py::none(), py::arg("concavity") = py::none(),
+        py::arg("max_concavity") = py::none(), py::arg("force") = false,
+        py::arg("progress") = py::none());
   m.def("unpack", &Unpack, R"(Decode a packed GLB back to plain glTF (.glb) or a mesh file.
 
 Parameters
@@ -434,15 +424,17 @@ Parameters
 input : str
     A GLB written by pack.
 output : str
-    .glb (every compressed primitive decoded into plain accessors, hull extensions kept) or
-    .obj .off .wrl .ply (the decoded meshes, hulls included).
+    .glb (every compressed primitive decoded into plain accessors, colliders and hulls kept);
+    .obj .wrl (the render meshes, then each hull as a closed mesh named hull_N); .off .ply
+    (the render meshes; the hulls go to STEM.hulls.off / .ply beside it).
 force : bool
     Replace an existing output.
 
 Returns
 -------
 dict
-    "input", "output", "meshes", "triangles".)",
+    "input", "output", "meshes" (render meshes; .glb: every mesh), "triangles" (of those),
+    "hulls", and "hulls_output" when the hulls went to a file of their own.)",
         py::arg("input"), py::arg("output"), py::kw_only(), py::arg("force") = false);
   m.def("load_mesh", &LoadMesh, R"(Read a mesh or scene file into numpy arrays.
 

@@ -209,6 +209,9 @@ std::vector<Vector> Vectors() {
       {"generic_float_attribute", [] { return CubeSphere(3, true); }, none, true},
       {"colors_joints", [] { return RationalTorus(12, 8); }, none},
       {"awkward_groups", [] { return o3dgc_test::Awkward(); }, none},
+      // From 1.1: an STL-style CAD part (fans, slivers, holes and pockets) whose connectivity
+      // uses walks along the front.
+      {"cad_pocket_plate", [] { return o3dgc_test::PocketPlate(3, 2); }, none},
       {"keep_order", [] { return o3dgc_test::Awkward(); },
        [](EncodeParams* p) { p->keep_order = true; }},
       {"keep_order_torus", [] { return RationalTorus(9, 6); },

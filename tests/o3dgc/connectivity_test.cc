@@ -59,24 +59,32 @@ void ExpectCopiesFollowTheirPrimary(const std::vector<uint32_t>& tris,
   }
 }
 
+// Round trip in every format minor version (0: 1.0, 1: 1.1); `bytes` gets the current one's size.
 void RoundTrip(const std::vector<uint32_t>& tris, uint32_t nv, size_t* bytes = nullptr) {
-  std::vector<uint8_t> buf;
-  ConnectivityEncoding enc_out;
-  {
-    ArithmeticEncoder enc(&buf);
-    EncodeConnectivity(tris, nv, &enc, &enc_out);
-    enc.Finish();
+  for (uint32_t minor = 0; minor <= kFormatMinor; ++minor) {
+    SCOPED_TRACE("format 1." + std::to_string(minor));
+    std::vector<uint8_t> buf;
+    ConnectivityEncoding enc_out;
+    {
+      ArithmeticEncoder enc(&buf);
+      EncodeConnectivity(tris, nv, &enc, &enc_out, true, minor);
+      enc.Finish();
+    }
+    ASSERT_EQ(enc_out.old_of_new.size(), nv);
+    ExpectCopiesFollowTheirPrimary(tris, enc_out.source);
+    ArithmeticDecoder dec(buf.data(), buf.size());
+    std::vector<uint32_t> out, opposite, opposite_vertices;
+    uint32_t dnv = 0;
+    ASSERT_EQ(DecodeConnectivity(&dec, tris.size() / 3, nv, &out, &dnv, &opposite,
+                                 &opposite_vertices, nullptr, minor),
+              Status::kOk);
+    EXPECT_EQ(dnv, nv);
+    EXPECT_EQ(out, enc_out.triangles);
+    EXPECT_EQ(opposite, enc_out.opposite);
+    EXPECT_EQ(opposite_vertices, enc_out.opposite_vertices);
+    EXPECT_EQ(Canon(out, &enc_out.old_of_new), Canon(tris, nullptr));
+    if (bytes) *bytes = buf.size();
   }
-  ASSERT_EQ(enc_out.old_of_new.size(), nv);
-  ExpectCopiesFollowTheirPrimary(tris, enc_out.source);
-  ArithmeticDecoder dec(buf.data(), buf.size());
-  std::vector<uint32_t> out;
-  uint32_t dnv = 0;
-  ASSERT_EQ(DecodeConnectivity(&dec, tris.size() / 3, nv, &out, &dnv), Status::kOk);
-  EXPECT_EQ(dnv, nv);
-  EXPECT_EQ(out, enc_out.triangles);
-  EXPECT_EQ(Canon(out, &enc_out.old_of_new), Canon(tris, nullptr));
-  if (bytes) *bytes = buf.size();
 }
 
 TEST(Connectivity, ManifoldMeshes) {
@@ -87,6 +95,50 @@ TEST(Connectivity, ManifoldMeshes) {
   EXPECT_LT(double(bytes) * 8 / s.nv(), 1.0);
   const auto t = o3dgc_test::Torus(30, 17);
   RoundTrip(t.indices, uint32_t(t.nv()));
+}
+
+// Size of the connectivity of `tris` in format 1.minor.
+size_t ConnectivityBytes(const std::vector<uint32_t>& tris, uint32_t nv, uint32_t minor) {
+  std::vector<uint8_t> buf;
+  ConnectivityEncoding out;
+  ArithmeticEncoder enc(&buf);
+  EncodeConnectivity(tris, nv, &enc, &out, false, minor);
+  enc.Finish();
+  return buf.size();
+}
+
+// Format 1.1's gate contexts and walks along the front, on an STL-style part (fans, slivers, a
+// hole per cell): the round trip holds in both versions and 1.1 takes clearly fewer bytes.
+TEST(Connectivity, CadTessellationSmallerInFormat11) {
+  const o3dgc_test::TestMesh t = o3dgc_test::PocketPlate(6, 5);
+  RoundTrip(t.indices, uint32_t(t.nv()));
+  const size_t v10 = ConnectivityBytes(t.indices, uint32_t(t.nv()), 0);
+  const size_t v11 = ConnectivityBytes(t.indices, uint32_t(t.nv()), 1);
+  EXPECT_LT(double(v11), 0.9 * double(v10)) << v10 << " -> " << v11;
+}
+
+// A hostile format 1.1 stream cannot make a walk run long: the steps are capped.
+TEST(Connectivity, WalkStepsAreBounded) {
+  const o3dgc_test::TestMesh t = o3dgc_test::PocketPlate(2, 2);
+  std::vector<uint8_t> buf;
+  ConnectivityEncoding enc_out;
+  ArithmeticEncoder enc(&buf);
+  EncodeConnectivity(t.indices, uint32_t(t.nv()), &enc, &enc_out, false, 1);
+  enc.Finish();
+  std::mt19937 rng(7);
+  for (int i = 0; i < 2000; ++i) {
+    std::vector<uint8_t> c = buf;
+    c[rng() % c.size()] ^= uint8_t(1u << (rng() % 8));
+    ArithmeticDecoder dec(c.data(), c.size());
+    std::vector<uint32_t> out;
+    uint32_t nv = 0;
+    const Status s =
+        DecodeConnectivity(&dec, t.nt(), t.nv(), &out, &nv, nullptr, nullptr, nullptr, 1);
+    if (s == Status::kOk) {
+      ASSERT_EQ(out.size(), 3 * t.nt());
+      for (uint32_t v : out) ASSERT_LT(v, nv);
+    }
+  }
 }
 
 TEST(Connectivity, NonManifoldFlippedDuplicatedDegenerate) {

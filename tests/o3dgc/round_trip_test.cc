@@ -427,7 +427,7 @@ TEST(RoundTrip, DeterministicAndStreamInfoAddsUp) {
   EXPECT_EQ(read.version_major, kFormatMajor);
   EXPECT_EQ(read.version_minor, kFormatMinor);
   EXPECT_EQ(info.version_major, 1u);
-  EXPECT_STREQ(FormatVersionString(), "1.0");
+  EXPECT_STREQ(FormatVersionString(), "1.1");
 }
 
 TEST(RoundTrip, RejectsInvalidInput) {
@@ -486,6 +486,106 @@ TEST(RoundTrip, TwoSidedMeshCostsLittleMore) {
   EncodeParams keep;
   keep.keep_order = true;
   CheckExact(two, DecodeOk(EncodeOk(two, keep)), 14, 10, 12);
+}
+
+// A grid with a varied normal field and joint ids whose right half uses its own copies of the
+// middle column (a UV seam). `hard`: the copies in rows 8 and up get another normal (a hard edge
+// along half the seam).
+TestMesh SeamedGrid(bool hard) {
+  const uint32_t n = 16;
+  TestMesh g = o3dgc_test::Grid(n, n);
+  for (size_t v = 0; v < g.nv(); ++v) {
+    const double x = g.positions[3 * v] - 0.5, y = g.positions[3 * v + 1] - 0.5;
+    const double l = std::sqrt(x * x + y * y + 1);
+    g.normals[3 * v] = float(x / l);
+    g.normals[3 * v + 1] = float(y / l);
+    g.normals[3 * v + 2] = float(1 / l);
+    g.joints.insert(g.joints.end(), {int32_t(v % 7), int32_t(v / 40), 0, 3});
+  }
+  TestMesh s = g;
+  std::vector<uint32_t> copy_of(g.nv(), 0xFFFFFFFFu);
+  for (uint32_t j = 0; j <= n; ++j) {
+    const uint32_t v = j * (n + 1) + n / 2;
+    copy_of[v] = uint32_t(s.nv());
+    s.positions.insert(s.positions.end(), &g.positions[3 * v], &g.positions[3 * v] + 3);
+    s.normals.insert(s.normals.end(),
+                     {g.normals[3 * v], g.normals[3 * v + 1],
+                      hard && j >= 8 ? -g.normals[3 * v + 2] : g.normals[3 * v + 2]});
+    s.joints.insert(s.joints.end(), &g.joints[4 * v], &g.joints[4 * v] + 4);
+    s.uvs.insert(s.uvs.end(), {g.uvs[2 * v] + 0.5f, g.uvs[2 * v + 1]});
+  }
+  for (size_t t = 0; t < s.nt(); ++t) {
+    bool right = false;
+    for (int k = 0; k < 3; ++k) right |= (s.indices[3 * t + k] % (n + 1)) > n / 2;
+    if (!right) continue;
+    for (int k = 0; k < 3; ++k) {
+      uint32_t& v = s.indices[3 * t + k];
+      if (copy_of[v] != 0xFFFFFFFFu) v = copy_of[v];
+    }
+  }
+  return s;
+}
+
+// Format 1.1: the copies a UV seam makes merge back where their normals and joints equal the
+// original's (they decode to the same values and cost no more than without the seam); along a hard
+// edge (normals that differ) the copies keep their own normals.
+TEST(RoundTrip, AttributesContinuousAcrossSeamsAreCodedOnce) {
+  for (bool hard : {false, true}) {
+    SCOPED_TRACE(hard ? "hard edge" : "smooth");
+    const TestMesh s = SeamedGrid(hard);
+    EncodeParams keep;
+    keep.keep_order = true;
+    StreamInfo info;
+    const DecodedMesh m = DecodeOk(EncodeOk(s, keep, &info));
+    CheckExact(s, m, 14, 10, 12);
+    ASSERT_EQ(m.int_attributes.size(), 1u);
+    EXPECT_EQ(m.int_attributes[0].values, s.joints);
+    // The copies (the last 17 vertices) against their originals.
+    const size_t first_copy = s.nv() - 17;
+    for (uint32_t j = 0; j <= 16; ++j) {
+      const size_t v = j * 17 + 8, c = first_copy + j;
+      const bool same = std::equal(&m.normals[3 * v], &m.normals[3 * v] + 3, &m.normals[3 * c]);
+      EXPECT_EQ(same, !hard || j < 8) << "row " << j;
+    }
+    // Without the seam (the copies welded back): the normals' and joints' bytes barely differ.
+    TestMesh welded = s;
+    welded.uvs.clear();
+    for (size_t i = 0; i < welded.indices.size(); ++i) {
+      if (welded.indices[i] >= first_copy)
+        welded.indices[i] = uint32_t((welded.indices[i] - first_copy) * 17 + 8);
+    }
+    welded.positions.resize(3 * first_copy);
+    welded.normals.resize(3 * first_copy);
+    welded.joints.resize(4 * first_copy);
+    StreamInfo seamed_info, welded_info;
+    EncodeOk(s, EncodeParams(), &seamed_info);
+    EncodeOk(welded, EncodeParams(), &welded_info);
+    if (!hard) {
+      EXPECT_LE(seamed_info.normals, welded_info.normals + 2);
+      EXPECT_LE(seamed_info.int_attributes[0], welded_info.int_attributes[0] + 2);
+    } else {
+      EXPECT_GT(seamed_info.normals, welded_info.normals + 8);
+    }
+  }
+}
+
+// Split vertices with joint ids only (no normal, no UV): the joints merge, nothing else needs the
+// attribute mesh.
+TEST(RoundTrip, JointsOnlyAcrossSeams) {
+  TestMesh s = SeamedGrid(false);
+  s.normals.clear();
+  s.uvs.clear();
+  for (bool keep : {false, true}) {
+    EncodeParams p;
+    p.keep_order = keep;
+    const DecodedMesh m = DecodeOk(EncodeOk(s, p));
+    ASSERT_EQ(m.int_attributes.size(), 1u);
+    if (keep) {
+      EXPECT_EQ(m.int_attributes[0].values, s.joints);
+    } else {
+      CheckTriangleSet(s, m, 14);
+    }
+  }
 }
 
 TEST(RoundTrip, SeamsShareWeldedPositions) {

@@ -117,6 +117,92 @@ inline TestMesh Awkward() {
   return t;
 }
 
+// A closed CAD-like part tessellated as an STL exporter does (planar faces without inner
+// vertices, welded): an nx x ny plate of 4 x 4 cells, 1 thick, each with an octagonal opening,
+// a through hole or (every other cell) a pocket 0.5 deep whose floor is a fan from one vertex. The
+// top face of a cell is a strip of slivers between its square and its octagon. Every coordinate is
+// a multiple of 0.5 (exact on every platform).
+inline TestMesh PocketPlate(int nx, int ny) {
+  TestMesh t;
+  std::map<std::array<float, 3>, uint32_t> ids;
+  auto vertex = [&](double x, double y, double z) {
+    const std::array<float, 3> key = {float(x), float(y), float(z)};
+    auto it = ids.find(key);
+    if (it != ids.end()) return it->second;
+    const uint32_t id = uint32_t(t.nv());
+    t.positions.insert(t.positions.end(), key.begin(), key.end());
+    ids.emplace(key, id);
+    return id;
+  };
+  // The octagon, counter-clockwise, around a cell's centre (2, 2); p[2s], p[2s+1] face side s.
+  const double oct[8][2] = {{2.5, 1}, {3, 1.5}, {3, 2.5}, {2.5, 3},
+                            {1.5, 3}, {1, 2.5}, {1, 1.5}, {1.5, 1}};
+  const double sq[4][2] = {{0, 0}, {4, 0}, {4, 4}, {0, 4}};
+  std::vector<std::array<double, 6>> top;     // top-face triangles as (x, y) corners
+  std::vector<std::array<double, 2>> floors;  // cell origins of the pockets
+  for (int j = 0; j < ny; ++j) {
+    for (int i = 0; i < nx; ++i) {
+      const double ox = 4.0 * i, oy = 4.0 * j;
+      auto c = [&](int k) { return std::array<double, 2>{ox + sq[k & 3][0], oy + sq[k & 3][1]}; };
+      auto p = [&](int k) {
+        return std::array<double, 2>{ox + oct[(k + 8) % 8][0], oy + oct[(k + 8) % 8][1]};
+      };
+      auto tri = [&](std::array<double, 2> a, std::array<double, 2> b, std::array<double, 2> d) {
+        top.push_back({a[0], a[1], b[0], b[1], d[0], d[1]});
+      };
+      for (int s = 0; s < 4; ++s) {
+        tri(c(s + 1), p(2 * s + 1), p(2 * s));  // fan at the corner
+        tri(c(s), c(s + 1), p(2 * s));          // the side
+        tri(c(s), p(2 * s), p(2 * s - 1));
+      }
+      if ((i + j) % 2) floors.push_back({ox, oy});
+    }
+  }
+  // Directed edges of the top face; an edge without its reverse is on a boundary (outer or hole).
+  std::map<std::array<double, 4>, int> edges;
+  for (const auto& x : top) {
+    for (int k = 0; k < 3; ++k)
+      ++edges[{x[2 * k], x[2 * k + 1], x[(2 * k + 2) % 6], x[(2 * k + 3) % 6]}];
+  }
+  auto in_pocket = [&](double x, double y) {
+    for (const auto& f : floors) {
+      if (x > f[0] && x < f[0] + 4 && y > f[1] && y < f[1] + 4) return true;
+    }
+    return false;
+  };
+  for (const auto& x : top) {
+    t.indices.insert(t.indices.end(),
+                     {vertex(x[0], x[1], 1), vertex(x[2], x[3], 1), vertex(x[4], x[5], 1)});
+    for (int k = 0; k < 3; ++k) {
+      const double ax = x[2 * k], ay = x[2 * k + 1], bx = x[(2 * k + 2) % 6],
+                   by = x[(2 * k + 3) % 6];
+      if (edges.count({bx, by, ax, ay})) continue;
+      // A hole edge lies inside its cell; the plate's outline does not.
+      const bool inner = in_pocket((ax + bx) / 2, (ay + by) / 2);
+      const double z0 = inner ? 0.5 : 0;
+      t.indices.insert(t.indices.end(),
+                       {vertex(ax, ay, z0), vertex(bx, by, z0), vertex(bx, by, 1)});
+      t.indices.insert(t.indices.end(), {vertex(ax, ay, z0), vertex(bx, by, 1), vertex(ax, ay, 1)});
+    }
+    // The bottom face mirrors the top, except under pockets (there a whole square, below).
+    if (!in_pocket((x[0] + x[2] + x[4]) / 3, (x[1] + x[3] + x[5]) / 3)) {
+      t.indices.insert(t.indices.end(),
+                       {vertex(x[0], x[1], 0), vertex(x[4], x[5], 0), vertex(x[2], x[3], 0)});
+    }
+  }
+  for (const auto& f : floors) {
+    const uint32_t c0 = vertex(f[0], f[1], 0), c1 = vertex(f[0] + 4, f[1], 0),
+                   c2 = vertex(f[0] + 4, f[1] + 4, 0), c3 = vertex(f[0], f[1] + 4, 0);
+    t.indices.insert(t.indices.end(), {c0, c2, c1, c0, c3, c2});
+    for (int k = 1; k + 1 < 8; ++k) {
+      t.indices.insert(t.indices.end(), {vertex(f[0] + oct[0][0], f[1] + oct[0][1], 0.5),
+                                         vertex(f[0] + oct[k][0], f[1] + oct[k][1], 0.5),
+                                         vertex(f[0] + oct[k + 1][0], f[1] + oct[k + 1][1], 0.5)});
+    }
+  }
+  return t;
+}
+
 // Sorted multiset of triangles up to rotation (winding kept), over vertex positions.
 inline std::vector<std::array<float, 9>> TriangleSet(const std::vector<float>& p,
                                                      const std::vector<uint32_t>& idx) {

@@ -74,6 +74,19 @@ class Hacd(unittest.TestCase):
             timer.cancel()
         self.assertLess(time.monotonic() - start, 1.5)
 
+    def test_hacd_hull_count_budget_and_target(self):
+        v, f = meshes.l_block()
+        hulls, report = hullpack.decompose(v, f, method="hacd", hulls=3)
+        self.assertEqual(len(hulls), 3)
+        self.assertTrue(report["target_reached"])
+        hulls, _ = hullpack.decompose(v, f, method="hacd", max_convex_hulls=1)
+        self.assertEqual(len(hulls), 1)
+        hulls, report = hullpack.decompose(v, f, method="hacd", max_concavity=0.02)
+        self.assertEqual(report["target_reached"], report["concavity"] <= 0.02)
+        _, report = hullpack.decompose(v, f, method="hacd", hulls=100000)
+        self.assertFalse(report["target_reached"])
+        self.assertIn("could be clustered into only", report["target_note"])
+
     def test_keyword_of_the_other_method_raises_value_error(self):
         v, f = meshes.box()
         cases = [

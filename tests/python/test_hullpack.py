@@ -209,15 +209,42 @@ class Files(unittest.TestCase):
             hullpack.pack(self.obj, glb)
         out = os.path.join(self.dir.name, "back.obj")
         back = hullpack.unpack(glb, out)
-        self.assertGreater(back["meshes"], 2)  # the mesh and its hulls
+        self.assertEqual(back["meshes"], 1)
+        self.assertEqual(back["triangles"], 24 * 12 * 2)
+        hulls = report["meshes"][0]["hull_count"]
+        self.assertEqual(back["hulls"], hulls)
+        # The OBJ holds the render mesh, then each hull as a closed mesh (object hull_N).
         summary = hullpack.info(out)
         self.assertEqual(summary["format"].lower(), "obj")
-        # The hulls are points (docs/packed-gltf.md): an OBJ gets the render mesh's triangles.
-        self.assertEqual(summary["meshes"], 1)
-        self.assertEqual(summary["triangles"], back["triangles"])
-        self.assertEqual(summary["triangles"], 24 * 12 * 2)
+        self.assertEqual(summary["meshes"], 1 + hulls)
+        self.assertGreater(summary["triangles"], back["triangles"] + 4 * hulls - 1)
+        # OFF holds one mesh: the hulls go to a file of their own beside it.
+        off = hullpack.unpack(glb, os.path.join(self.dir.name, "back.off"))
+        self.assertTrue(off["hulls_output"].endswith("back.hulls.off"))
+        self.assertEqual(hullpack.info(off["hulls_output"])["triangles"],
+                         summary["triangles"] - back["triangles"])
         with self.assertRaises(OSError):
             hullpack.info(os.path.join(self.dir.name, "missing.obj"))
+
+    def test_pack_quantized_hulls(self):
+        # Default hulls are floats (nothing required because of them); quantized_hulls stores the
+        # same grid integers as bytes/shorts and requires KHR_mesh_quantization.
+        import json
+        import struct
+
+        def required(path):
+            with open(path, "rb") as f:
+                data = f.read()
+            length = struct.unpack("<I", data[12:16])[0]
+            return json.loads(data[20:20 + length]).get("extensionsRequired", [])
+
+        floats = os.path.join(self.dir.name, "f.glb")
+        quantized = os.path.join(self.dir.name, "q.glb")
+        hullpack.pack(self.obj, floats, resolution=20000)
+        hullpack.pack(self.obj, quantized, resolution=20000, quantized_hulls=True)
+        self.assertNotIn("KHR_mesh_quantization", required(floats))
+        self.assertIn("KHR_mesh_quantization", required(quantized))
+        self.assertLess(os.path.getsize(quantized), os.path.getsize(floats))
 
     def test_pack_with_hacd(self):
         hacd = os.path.join(self.dir.name, "hacd.glb")

@@ -58,10 +58,12 @@ class DecomposeTargets(unittest.TestCase):
             with self.subTest(kw=kw, value=value):
                 with self.assertRaisesRegex(ValueError, kw):
                     hullpack.decompose(v, f, **{kw: value})
-        for kw in ("max_concavity", "hulls", "min_opening"):
+        with self.assertRaisesRegex(ValueError, "min_opening is a V-HACD keyword"):
+            hullpack.decompose(v, f, method="hacd", min_opening=0.1)
+        for kw, value in (("max_concavity", 2.0), ("hulls", 100001)):
             with self.subTest(method="hacd", kw=kw):
-                with self.assertRaisesRegex(ValueError, kw + " is a V-HACD keyword"):
-                    hullpack.decompose(v, f, method="hacd", **{kw: 1})
+                with self.assertRaisesRegex(ValueError, kw):
+                    hullpack.decompose(v, f, method="hacd", **{kw: value})
 
 
 class PackTargets(unittest.TestCase):
@@ -96,8 +98,16 @@ class PackTargets(unittest.TestCase):
                 with self.assertRaisesRegex(ValueError, "max_concavity"):
                     hullpack.pack(self.obj, self.out("bad.glb"), max_concavity=value)
         with self.assertRaisesRegex(ValueError, "V-HACD options"):
-            hullpack.pack(self.obj, self.out("bad.glb"), method="hacd", hulls=3)
+            hullpack.pack(self.obj, self.out("bad.glb"), method="hacd", resolution=20000)
         self.assertFalse(os.path.exists(self.out("bad.glb")))
+
+    def test_hacd_takes_the_count_the_budget_and_the_target(self):
+        r = hullpack.pack(self.obj, self.out("h3.glb"), method="hacd", hulls=3)
+        self.assertEqual(r["meshes"][0]["hull_count"], 3)
+        r = hullpack.pack(self.obj, self.out("h1.glb"), method="hacd", max_hulls=1)
+        self.assertEqual(r["meshes"][0]["hull_count"], 1)
+        r = hullpack.pack(self.obj, self.out("hd.glb"), method="hacd", max_concavity=0.05)
+        self.assertLessEqual(r["meshes"][0]["hull_concavity"], 0.05)
 
     @unittest.skipUnless(os.environ.get("HULLPACK_EXE"), "HULLPACK_EXE (the hullpack program) "
                          "is not set; ctest sets it")

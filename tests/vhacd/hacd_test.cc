@@ -110,8 +110,10 @@ TEST(HacdTest, ScaledMeshGivesScaledHulls) {
 }
 
 TEST(HacdTest, SameOutputForAnyThreadCount) {
-  const Mesh torus = vhacd_test::Torus(1.0, 0.3, 40, 20);
+  // 9600 triangles, decimated to 2000 first: the simplifier's set-up runs on the threads too.
+  const Mesh torus = vhacd_test::Torus(1.0, 0.3, 120, 40);
   vhacd::HacdParameters p = Recommended();
+  ASSERT_GT(torus.indices.size() / 3, p.target_triangles);
   p.num_threads = 1;
   const vhacd::Result r1 = vhacd::DecomposeHacd(torus.View(), p);
   p.num_threads = 3;
@@ -204,6 +206,63 @@ TEST(HacdTest, InvalidInputsGiveErrors) {
   bad([](vhacd::HacdParameters* q) { q->connect_distance = std::nan(""); }, "connect_distance");
   bad([](vhacd::HacdParameters* q) { q->small_cluster_threshold = 101; },
       "small_cluster_threshold");
+  bad([](vhacd::HacdParameters* q) { q->max_clusters = 100001; }, "max_clusters");
+  bad([](vhacd::HacdParameters* q) { q->max_concavity = 1.5; }, "max_concavity");
+  bad([](vhacd::HacdParameters* q) { q->hull_count = 100001; }, "hull_count");
+}
+
+TEST(HacdTest, HullCountGivesExactlyThatMany) {
+  const Mesh torus = vhacd_test::Torus(1.0, 0.3, 32, 16);
+  for (uint32_t n : {1u, 3u, 12u, 40u}) {
+    vhacd::HacdParameters p = Recommended();
+    p.hull_count = n;
+    const vhacd::Result r = vhacd::DecomposeHacd(torus.View(), p);
+    ExpectValid(r);
+    EXPECT_EQ(r.hulls.size(), n);
+    EXPECT_TRUE(r.report.target_reached) << r.report.target_note;
+  }
+  // More clusters than triangles: as many as there are, and the report says why.
+  const Mesh cube = vhacd_test::Box(0, 0, 0, 1, 1, 1);
+  vhacd::HacdParameters p = Recommended();
+  p.hull_count = 50;
+  const vhacd::Result r = vhacd::DecomposeHacd(cube.View(), p);
+  ExpectValid(r);
+  EXPECT_EQ(r.hulls.size(), 12u);
+  EXPECT_FALSE(r.report.target_reached);
+  EXPECT_NE(r.report.target_note.find("12 triangles"), std::string::npos) << r.report.target_note;
+}
+
+TEST(HacdTest, MaxClustersIsABudget) {
+  const Mesh torus = vhacd_test::Torus(1.0, 0.3, 32, 16);
+  const vhacd::Result free_run = vhacd::DecomposeHacd(torus.View(), Recommended());
+  ASSERT_TRUE(free_run.ok());
+  ASSERT_GT(free_run.hulls.size(), 3u);
+  vhacd::HacdParameters p = Recommended();
+  p.max_clusters = 3;
+  const vhacd::Result r = vhacd::DecomposeHacd(torus.View(), p);
+  ExpectValid(r);
+  EXPECT_EQ(r.hulls.size(), 3u);
+  p.max_clusters = 1;  // below min_clusters (2 in the recommended line): the budget wins
+  EXPECT_EQ(vhacd::DecomposeHacd(torus.View(), p).hulls.size(), 1u);
+}
+
+TEST(HacdTest, MaxConcavityIsATargetTheReportChecks) {
+  const Mesh torus = vhacd_test::Torus(1.0, 0.3, 32, 16);
+  vhacd::HacdParameters p = Recommended();
+  p.max_concavity = 0.05;
+  const vhacd::Result loose = vhacd::DecomposeHacd(torus.View(), p);
+  ExpectValid(loose);
+  EXPECT_GE(loose.report.attempts, 1u);
+  EXPECT_EQ(loose.report.target_reached, loose.report.concavity <= 0.05);
+  EXPECT_LT(loose.report.concavity, 0.0);  // measured for the target, not returned
+  p.max_concavity = 0.02;
+  p.compute_report = true;
+  const vhacd::Result tight = vhacd::DecomposeHacd(torus.View(), p);
+  ExpectValid(tight);
+  EXPECT_GT(tight.hulls.size(), loose.hulls.size());
+  EXPECT_EQ(tight.report.target_reached, tight.report.concavity <= 0.02);
+  if (!tight.report.target_reached)
+    EXPECT_NE(tight.report.target_note.find("not reached"), std::string::npos);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 //  - Babylon.js + Havok: Babylon's glTF loader with the hullpack extension, the compound collider
 //    built from the file's KHR_physics_rigid_bodies hulls (readCollisionHulls).
 // Each returns the body origin's resting height and the hull points the engine was given.
+// babylonEarlierHulls reads the hulls of a file of the earlier release (hull streams).
 import * as THREE from 'three';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import RAPIER from '@dimforge/rapier3d-compat';
@@ -73,7 +74,7 @@ async function babylonHavok(glbUrl, refUrl) {
   const refPrim = ref.json.meshes[0].primitives[0];
   const refPositions = readAccessor(ref.json, ref.bin, refPrim.attributes.POSITION).values;
   // Physics from the file's own collider description.
-  const hulls = readCollisionHulls(await (await fetch(glbUrl)).arrayBuffer());
+  const hulls = await readCollisionHulls(await (await fetch(glbUrl)).arrayBuffer());
   const havok = await HavokPhysics({ locateFile: () => '/node_modules/@babylonjs/havok/lib/esm/HavokPhysics.wasm' });
   scene.enablePhysics(new Vector3(0, 0, -9.81), new HavokPlugin(false, havok));
   const physics = scene.getPhysicsEngine();
@@ -104,5 +105,19 @@ async function babylonHavok(glbUrl, refUrl) {
   };
 }
 
-window.engineTests = { threeRapier, babylonHavok };
+// readCollisionHulls on a file whose hulls are HULLPACK_mesh_compression streams (the earlier
+// form, tests/web/make_glb.mjs): with the decoder it gives the points; without, a clear error.
+async function babylonEarlierHulls(glbUrl) {
+  const glb = await (await fetch(glbUrl)).arrayBuffer();
+  const hulls = await readCollisionHulls(glb, await createDecoder({ wasmUrl: WASM }));
+  let withoutDecoder = '';
+  try {
+    await readCollisionHulls(glb);
+  } catch (e) {
+    withoutDecoder = String(e.message);
+  }
+  return { points: hulls.map((h) => Array.from(h.points)), withoutDecoder };
+}
+
+window.engineTests = { threeRapier, babylonHavok, babylonEarlierHulls };
 window.engineTestsReady = true;

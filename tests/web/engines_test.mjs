@@ -87,6 +87,15 @@ try {
       check(got.samePositions, `${name}: Babylon's decoded render positions == C++ reader's, value for value`);
     }
   }
+  // Babylon's readCollisionHulls on the earlier hull form (streams; make_glb.mjs), against the C++
+  // reader (earlier.bullet.json).
+  const earlierRef = JSON.parse(fs.readFileSync(path.join(work, 'earlier.bullet.json'), 'utf8'));
+  const earlier = await page.evaluate((glb) => window.engineTests.babylonEarlierHulls(glb), '/__work/earlier.glb');
+  const earlierDiff = samePoints(earlier.points, earlierRef.hulls);
+  check(earlierDiff === '' && earlier.points.length > 0,
+    `Babylon readCollisionHulls, earlier form (${earlier.points.length} hull streams): the C++ reader's points${earlierDiff ? `: ${earlierDiff}` : ''}`);
+  check(/pass a decoder/.test(earlier.withoutDecoder),
+    `Babylon readCollisionHulls, earlier form without a decoder: a clear error (${earlier.withoutDecoder})`);
   check(outside.length === 0, `nothing fetched from outside the local server${outside.length ? `: ${outside.join(' ')}` : ''}`);
   check(errors.length === 0, `no page errors${errors.length ? `: ${errors.join(' | ')}` : ''}`);
 } catch (e) {

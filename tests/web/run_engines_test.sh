@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # ctest driver of the engine drop tests:
-#   run_engines_test.sh REPO BUILD_DIR HULLPACK WEB_BULLET_DROP WORK_DIR
+#   run_engines_test.sh REPO BUILD_DIR HULLPACK WEB_BULLET_DROP WORK_DIR TEST_O3DGC WEB_DECODE_REF
 # Packs samples/torus.obj in both collider forms, gets Bullet's resting height and the C++ reader's
-# hull points (web_bullet_drop) and the C++ decode of the KHR file (`hullpack unpack`), then runs
+# hull points (web_bullet_drop) and the C++ decode of the KHR file (`hullpack unpack`), makes a
+# file with hulls in the earlier stream form (make_glb.mjs) and its C++ hull points, then runs
 # tests/web/engines_test.mjs. Exit 77 = skipped.
 set -euo pipefail
-[ $# -eq 5 ] || { echo "usage: run_engines_test.sh REPO BUILD_DIR HULLPACK WEB_BULLET_DROP WORK_DIR" >&2; exit 64; }
-repo=$1 build=$2 hullpack=$3 bullet=$4 work=$5
+[ $# -eq 7 ] || { echo "usage: run_engines_test.sh REPO BUILD_DIR HULLPACK WEB_BULLET_DROP WORK_DIR TEST_O3DGC WEB_DECODE_REF" >&2; exit 64; }
+repo=$1 build=$2 hullpack=$3 bullet=$4 work=$5 encoder=$6 decode_ref=$7
 skip() { echo "SKIP: $*"; exit 77; }
 
 command -v node >/dev/null || skip "node not installed (./setup.sh installs nodejs)"
@@ -23,4 +24,7 @@ rm -rf "$work" && mkdir -p "$work"
 "$hullpack" unpack "$work/omi.glb" -o "$work/omi.ref.glb" >/dev/null
 "$bullet" "$work/omi.glb" >"$work/omi.bullet.json"
 "$bullet" "$work/khr.glb" >"$work/khr.bullet.json"
+node "$repo/tests/web/make_glb.mjs" --encoder "$encoder" --ref "$decode_ref" --mesh "$repo/samples/torus.obj" \
+  --out "$work/earlier.glb" >/dev/null
+"$bullet" "$work/earlier.glb" >"$work/earlier.bullet.json"
 exec node "$repo/tests/web/engines_test.mjs" --repo "$repo" --work "$work"

@@ -69,15 +69,17 @@ double MedianMs(int repeats, F&& run) {
 }
 
 // Every mesh of a scene as one, with the attributes the benchmarks compare (positions, normals,
-// the first UV set: what both codecs and the decomposition are given); see FlattenScene. Vertices
-// that differed only in an attribute left out (a UV set only some meshes have, colours) are welded,
-// as Draco's mesh builder welds them, so that every codec is given the same vertices; nothing
-// else is repaired.
-inline Mesh MergeGeometry(const Scene& scene) {
+// the first UV set: what both codecs and the decomposition are given; with `keep_skin` also the
+// joints and weights); see FlattenScene. Vertices that differed only in an attribute left out (a
+// UV set only some meshes have, colours) are welded, as Draco's mesh builder welds them, so that
+// every codec is given the same vertices; nothing else is repaired.
+inline Mesh MergeGeometry(const Scene& scene, bool keep_skin = false) {
   Mesh out = FlattenScene(scene);
   out.colors.clear();
-  out.joints.clear();
-  out.weights.clear();
+  if (!keep_skin || !out.has_skin()) {
+    out.joints.clear();
+    out.weights.clear();
+  }
   out.material_ids.clear();
   RepairOptions weld_only;
   weld_only.remove_degenerate_triangles = false;

@@ -1,5 +1,5 @@
 // gen_bench_meshes: writes the second codec benchmark set (meshes of kinds the public corpus lacks)
-// as OBJ files into a folder, for codec_bench:
+// as OBJ files (and one GLB) into a folder, for codec_bench:
 //
 //   gen_bench_meshes OUT_FOLDER
 //   codec_bench OUT_FOLDER --clock cpu
@@ -12,7 +12,11 @@
 //    gears, chamfered brackets, heat-sink fins; no normals or UVs (STL has none that matter);
 //  - scan-like surfaces: dense, irregular, noisy samples of smooth shapes with missing patches;
 //  - multi-component scenes of primitives with per-face UV charts (seams on every edge of a box);
-//  - tiny meshes (a tetrahedron, a box, a quad, an icosahedron).
+//  - tiny meshes (a tetrahedron, a box, a quad, an icosahedron);
+//  - a skinned character (GLB: joints and weights, normals, UVs with seams);
+//  - copies of the real scans of samples/scans (GLB; origin and licence in its SOURCES.md).
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -22,8 +26,11 @@
 #include <utility>
 #include <vector>
 
+#include "bench/bench_util.h"
 #include "common/cli_args.h"
 #include "common/file_util.h"
+#include "io/scene_io.h"
+#include "scene/scene.h"
 
 namespace {
 
@@ -582,17 +589,227 @@ ObjMesh Icosahedron() {
   return m;
 }
 
+// A skinned character as a DCC exporter writes it to glTF: a skeleton of 17 joints (hips, spine,
+// chest, neck, head, arms, legs, feet) and a body of capped tubes along the bones (torso, head,
+// arms, legs, feet), with smooth normals, a cylindrical UV map (a seam down every tube: split
+// vertices) and per-vertex JOINTS_0/WEIGHTS_0 (4 slots; two joints blend over a band around each
+// joint, unused slots are joint 0 with weight 0).
+hullpack::Scene SkinnedCharacter() {
+  struct Bone {
+    const char* name;
+    int parent;
+    double head[3];  // bind-pose start; the tail is the first child's head (or `tail`)
+    double tail[3];
+  };
+  const Bone bones[] = {
+      {"hips", -1, {0, 0.95, 0}, {0, 1.05, 0}},
+      {"spine", 0, {0, 1.05, 0}, {0, 1.3, 0}},
+      {"chest", 1, {0, 1.3, 0}, {0, 1.5, 0}},
+      {"neck", 2, {0, 1.5, 0}, {0, 1.6, 0}},
+      {"head", 3, {0, 1.6, 0}, {0, 1.86, 0.02}},
+      {"upper_arm.L", 2, {0.2, 1.45, 0}, {0.47, 1.42, -0.02}},
+      {"forearm.L", 5, {0.47, 1.42, -0.02}, {0.73, 1.4, 0.02}},
+      {"hand.L", 6, {0.73, 1.4, 0.02}, {0.86, 1.39, 0.03}},
+      {"upper_arm.R", 2, {-0.2, 1.45, 0}, {-0.47, 1.42, -0.02}},
+      {"forearm.R", 8, {-0.47, 1.42, -0.02}, {-0.73, 1.4, 0.02}},
+      {"hand.R", 9, {-0.73, 1.4, 0.02}, {-0.86, 1.39, 0.03}},
+      {"thigh.L", 0, {0.1, 0.95, 0}, {0.11, 0.52, 0.01}},
+      {"shin.L", 11, {0.11, 0.52, 0.01}, {0.11, 0.1, -0.01}},
+      {"foot.L", 12, {0.11, 0.1, -0.01}, {0.11, 0.03, 0.16}},
+      {"thigh.R", 0, {-0.1, 0.95, 0}, {-0.11, 0.52, 0.01}},
+      {"shin.R", 14, {-0.11, 0.52, 0.01}, {-0.11, 0.1, -0.01}},
+      {"foot.R", 15, {-0.11, 0.1, -0.01}, {-0.11, 0.03, 0.16}},
+  };
+  constexpr int kBones = int(sizeof(bones) / sizeof(bones[0]));
+  hullpack::Mesh m;
+  m.name = "body";
+  m.uv_sets.resize(1);
+  std::vector<float>& uv = m.uv_sets[0];
+  auto add = [&](const double p[3], const double n[3], double u, double v, int j0, int j1,
+                 double w1) {
+    for (int k = 0; k < 3; ++k) m.positions.push_back(float(p[k]));
+    for (int k = 0; k < 3; ++k) m.normals.push_back(float(n[k]));
+    uv.insert(uv.end(), {float(u), float(v)});
+    const float b = float(w1);
+    m.joints.insert(m.joints.end(), {uint16_t(j0), uint16_t(w1 > 0 ? j1 : 0), 0, 0});
+    m.weights.insert(m.weights.end(), {1.0f - b, w1 > 0 ? b : 0.0f, 0, 0});
+    return uint32_t(m.positions.size() / 3 - 1);
+  };
+  // A capped tube along the chain of bones `chain` (each the next one's parent), radius r(t) at
+  // arc-length fraction t, `segments` around, a ring every `step` along; its UV chart is the
+  // rectangle [u0, u0 + 0.25] x [v0, v0 + 0.25].
+  auto tube = [&](std::vector<int> chain, int segments, double step, double u0, double v0,
+                  auto radius) {
+    std::vector<double> start_len;  // arc length at each bone's head
+    double total = 0;
+    for (int b : chain) {
+      start_len.push_back(total);
+      double d2 = 0;
+      for (int k = 0; k < 3; ++k) d2 += std::pow(bones[b].tail[k] - bones[b].head[k], 2);
+      total += std::sqrt(d2);
+    }
+    const int rings = std::max(2, int(std::ceil(total / step)) + 1);
+    const double band = 0.04;  // half-width of the blend around a joint
+    std::vector<std::vector<uint32_t>> ring_ids;
+    std::vector<std::array<double, 3>> axis_at;
+    for (int r = 0; r < rings; ++r) {
+      const double s = total * r / (rings - 1);
+      size_t i = 0;
+      while (i + 1 < chain.size() && s >= start_len[i + 1]) ++i;
+      const Bone& bone = bones[chain[i]];
+      const double len = (i + 1 < chain.size() ? start_len[i + 1] : total) - start_len[i];
+      const double f = len > 0 ? (s - start_len[i]) / len : 0;
+      double c[3], dir[3];
+      for (int k = 0; k < 3; ++k) {
+        c[k] = bone.head[k] + f * (bone.tail[k] - bone.head[k]);
+        dir[k] = (bone.tail[k] - bone.head[k]) / len;
+      }
+      // Weights: the bone itself, blended with its child past the joint's band and with its
+      // parent in the chain before it.
+      int j0 = chain[i], j1 = chain[i];
+      double w1 = 0;
+      if (i + 1 < chain.size() && start_len[i + 1] - s < band) {
+        j1 = chain[i + 1];
+        w1 = 0.5 * (1 - (start_len[i + 1] - s) / band);
+      } else if (i > 0 && s - start_len[i] < band) {
+        j1 = chain[i - 1];
+        w1 = 0.5 * (1 - (s - start_len[i]) / band);
+      }
+      w1 = std::round(w1 * 255) / 255;  // exporters often store 8-bit weights
+      const double ref[3] = {0, 0, std::fabs(dir[2]) > 0.95 ? 0.0 : 1.0};
+      const double ref2[3] = {1, 0, 0};
+      const double* rr = ref[2] != 0 ? ref : ref2;
+      double n1[3] = {dir[1] * rr[2] - dir[2] * rr[1], dir[2] * rr[0] - dir[0] * rr[2],
+                      dir[0] * rr[1] - dir[1] * rr[0]};
+      const double l1 = std::sqrt(n1[0] * n1[0] + n1[1] * n1[1] + n1[2] * n1[2]);
+      for (double& x : n1) x /= l1;
+      const double n2[3] = {dir[1] * n1[2] - dir[2] * n1[1], dir[2] * n1[0] - dir[0] * n1[2],
+                            dir[0] * n1[1] - dir[1] * n1[0]};
+      const double rad = radius(s / total);
+      std::vector<uint32_t> ids;
+      for (int k = 0; k <= segments; ++k) {  // k == segments: the seam's split vertex
+        const double a = 2 * kPi * (k % segments) / segments;
+        double n[3], p[3];
+        for (int q = 0; q < 3; ++q) {
+          n[q] = std::cos(a) * n1[q] + std::sin(a) * n2[q];
+          p[q] = c[q] + rad * n[q];
+        }
+        ids.push_back(add(p, n, u0 + 0.25 * k / segments, v0 + 0.25 * s / total, j0, j1, w1));
+      }
+      ring_ids.push_back(ids);
+      axis_at.push_back({c[0], c[1], c[2]});
+      if (r == 0 || r == rings - 1) {
+        // A cap: a fan around the centre, normal along the axis.
+        const double sign = r == 0 ? -1 : 1;
+        const double n[3] = {sign * dir[0], sign * dir[1], sign * dir[2]};
+        const uint32_t centre = add(c, n, u0 + 0.125, v0 + (r == 0 ? 0.0 : 0.25), j0, j1, w1);
+        for (int k = 0; k < segments; ++k) {
+          if (r == 0) {
+            m.indices.insert(m.indices.end(), {centre, ids[k + 1], ids[k]});
+          } else {
+            m.indices.insert(m.indices.end(), {centre, ids[k], ids[k + 1]});
+          }
+        }
+      }
+    }
+    for (int r = 0; r + 1 < rings; ++r) {
+      for (int k = 0; k < segments; ++k) {
+        const uint32_t a = ring_ids[r][k], b = ring_ids[r][k + 1], c = ring_ids[r + 1][k],
+                       d = ring_ids[r + 1][k + 1];
+        m.indices.insert(m.indices.end(), {a, b, d, a, d, c});
+      }
+    }
+  };
+  auto profile = [](std::vector<std::pair<double, double>> knots) {
+    return [knots](double t) {
+      for (size_t i = 0; i + 1 < knots.size(); ++i) {
+        if (t <= knots[i + 1].first) {
+          const double f = (t - knots[i].first) / (knots[i + 1].first - knots[i].first);
+          return knots[i].second + f * (knots[i + 1].second - knots[i].second);
+        }
+      }
+      return knots.back().second;
+    };
+  };
+  tube({0, 1, 2, 3}, 32, 0.015, 0, 0,
+       profile({{0, 0.14}, {0.2, 0.15}, {0.45, 0.12}, {0.75, 0.17}, {0.85, 0.12}, {1, 0.06}}));
+  tube({4}, 24, 0.015, 0.25, 0,
+       [](double t) { return 0.03 + 0.09 * std::sqrt(std::max(0.0, std::sin(kPi * t))); });
+  for (int side = 0; side < 2; ++side) {
+    const int arm = 5 + 3 * side, leg = 11 + 3 * side;
+    tube({arm, arm + 1, arm + 2}, 20, 0.015, 0.5, 0.25 * side,
+         profile({{0, 0.055}, {0.4, 0.045}, {0.75, 0.035}, {0.85, 0.04}, {1, 0.02}}));
+    tube({leg, leg + 1}, 24, 0.015, 0.75, 0.25 * side,
+         profile({{0, 0.085}, {0.45, 0.06}, {0.55, 0.055}, {1, 0.04}}));
+    tube({leg + 2}, 16, 0.015, 0.5, 0.5 + 0.25 * side,
+         profile({{0, 0.045}, {0.5, 0.05}, {1, 0.03}}));
+  }
+  hullpack::Scene scene;
+  scene.meshes.push_back(std::move(m));
+  hullpack::Skin skin;
+  skin.name = "armature";
+  for (int b = 0; b < kBones; ++b) {
+    hullpack::Node n;
+    n.name = bones[b].name;
+    n.parent = bones[b].parent;
+    for (int k = 0; k < 3; ++k) {
+      const double parent_head = bones[b].parent < 0 ? 0.0 : bones[bones[b].parent].head[k];
+      n.local_transform[12 + k] = bones[b].head[k] - parent_head;
+    }
+    scene.nodes.push_back(n);
+    skin.joints.push_back(b);
+    hullpack::Matrix4 inverse_bind = hullpack::kIdentity;
+    for (int k = 0; k < 3; ++k) inverse_bind[12 + k] = -bones[b].head[k];
+    skin.inverse_bind_matrices.insert(skin.inverse_bind_matrices.end(), inverse_bind.begin(),
+                                      inverse_bind.end());
+  }
+  for (int b = 0; b < kBones; ++b) {
+    if (bones[b].parent >= 0) scene.nodes[size_t(bones[b].parent)].children.push_back(b);
+  }
+  skin.skeleton = 0;
+  scene.skins.push_back(skin);
+  hullpack::Node body;
+  body.name = "character";
+  body.meshes.push_back(0);
+  body.skin = 0;
+  scene.nodes.push_back(body);
+  return scene;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::vector<std::string> operands;
-  hullpack::CliArgs cli("gen_bench_meshes", "OUT_FOLDER",
-                        "Writes the second codec benchmark set (22 meshes generated in code: CAD\n"
-                        "parts as exported to STL, noisy scans, UV-mapped scenes, tiny meshes) as\n"
-                        "OBJ files into OUT_FOLDER, for codec_bench.");
+  hullpack::CliArgs cli(
+      "gen_bench_meshes", "OUT_FOLDER",
+      "Writes the second codec benchmark set into OUT_FOLDER, for codec_bench: 23\n"
+      "meshes generated in code (CAD parts as exported to STL, noisy scan-like\n"
+      "surfaces, UV-mapped scenes, tiny meshes as OBJ files; a skinned character\n"
+      "as GLB) and copies of the real scans of --scans (GLB).");
+  std::string scans = HULLPACK_SAMPLE_SCANS;
   cli.Positional("OUT_FOLDER", &operands, 1, 1);
+  cli.String("--scans", "DIR", &scans,
+             "copy every .glb of DIR too (default: samples/scans of the source tree)");
   if (std::optional<int> exit_code = cli.Parse(argc, argv)) return *exit_code;
   const std::string dir = operands[0];
+  {
+    // The real scans (samples/scans/SOURCES.md) join the generated meshes as they are.
+    std::vector<std::string> files;
+    if (!hullpack::ListFiles(scans, {"glb"}, &files)) {
+      std::fprintf(stderr, "gen_bench_meshes: %s: cannot open the scans folder\n", scans.c_str());
+      return 1;
+    }
+    for (const std::string& f : files) {
+      const hullpack::Result<std::vector<uint8_t>> bytes = hullpack::ReadFileBytes(scans + "/" + f);
+      hullpack::Status s =
+          bytes.ok() ? hullpack::WriteFileAtomically(dir + "/" + f, bytes.value()) : bytes.status();
+      if (!s.ok()) {
+        std::fprintf(stderr, "gen_bench_meshes: %s\n", s.message().c_str());
+        return 1;
+      }
+      std::printf("%-24s copied from %s\n", (dir + "/" + f).c_str(), scans.c_str());
+    }
+  }
   std::vector<std::pair<std::string, ObjMesh>> meshes;
   meshes.emplace_back("cad_plate_4x4", Plate(4, 4, 25, 7, 32, 6, true));
   meshes.emplace_back("cad_plate_12x8", Plate(12, 8, 10, 3, 24, 4, true));
@@ -633,6 +850,18 @@ int main(int argc, char** argv) {
     return m;
   }());
   meshes.emplace_back("tiny_icosahedron", Icosahedron());
+  {
+    // The skinned character is a glTF file: OBJ has no skins.
+    const hullpack::Scene character = SkinnedCharacter();
+    const std::string path = dir + "/skin_character.glb";
+    const hullpack::Status s = hullpack::WriteScene(character, path);
+    if (!s.ok()) {
+      std::fprintf(stderr, "gen_bench_meshes: %s\n", s.message().c_str());
+      return 1;
+    }
+    std::printf("%-24s %8zu vertices %8zu triangles\n", path.c_str(), character.vertex_count(),
+                character.triangle_count());
+  }
   for (const auto& [name, mesh] : meshes) {
     const std::string text = mesh.Obj();
     const std::string path = dir + "/" + name + ".obj";

@@ -19,9 +19,16 @@ Result<std::vector<uint8_t>> ReadFileBytes(const std::string& path) {
   if (S_ISDIR(st.st_mode)) return Status(StatusCode::kIoError, path + ": is a directory");
   FILE* f = std::fopen(path.c_str(), "rb");
   if (!f) return Status(StatusCode::kIoError, path + ": " + std::strerror(errno));
-  std::vector<uint8_t> bytes;
+  // Read straight into a buffer of the file's size: grown chunk by chunk, a large mesh file was
+  // copied as the buffer doubled and held at up to twice its size. Whatever stat could not size
+  // (a pipe, a file that grew meanwhile) follows in chunks.
+  std::vector<uint8_t> bytes(S_ISREG(st.st_mode) ? static_cast<size_t>(st.st_size) : 0);
+  size_t size = 0, n;
+  while (size < bytes.size() &&
+         (n = std::fread(bytes.data() + size, 1, bytes.size() - size, f)) > 0)
+    size += n;
+  bytes.resize(size);
   uint8_t chunk[1 << 16];
-  size_t n;
   while ((n = std::fread(chunk, 1, sizeof(chunk), f)) > 0)
     bytes.insert(bytes.end(), chunk, chunk + n);
   const bool failed = std::ferror(f) != 0;

@@ -261,6 +261,8 @@ int RunBatchCommand(const std::vector<std::string>& all_args) {
   cli.Flag("--quiet", &parsed.quiet, "no progress line");
   AddPackOptions(cli, &parsed.options);
   if (std::optional<int> exit_code = cli.Parse(args)) return *exit_code;
+  const std::string method_error = ApplyMethodOptions(cli, &parsed.options);
+  if (!method_error.empty()) return cli.UsageError(method_error);
   parsed.output_args = OutputArgs(args, parsed.inputs);
   if (parsed.slurm) parsed.output_args.pop_back();  // "--slurm"
   const long merge = parsed.merge, shards = parsed.shards;

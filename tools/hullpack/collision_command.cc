@@ -52,7 +52,9 @@ int RunCollisionCommand(const std::vector<std::string>& args) {
   cli.Choice("--quality", {"default", "high"}, &quality, "decomposition preset").First();
   cli.Int("--resolution", "N", 10000, 64000000, &resolution, "voxels of the decomposition");
   cli.Int("--max-hulls", "N", 0, 100000, &max_hulls, "hull budget (0: none)");
-  cli.Double("--concavity", "F", 0, 1, &concavity, "largest concavity of a part");
+  cli.Double("--concavity", "F", 0, 1, &concavity,
+             "largest concavity of a part (V-HACD 2.0's volume criterion instead of\n"
+             "the preset's --max-concavity 0.07)");
   cli.Flag("--json", &json, "print the report as JSON");
   cli.Flag("--force", &options.force, "replace existing files");
   cli.Flag("--quiet", &quiet, "no progress line");
@@ -68,7 +70,10 @@ int RunCollisionCommand(const std::vector<std::string>& args) {
   if (quality == "high") p = vhacd::Parameters::High();
   if (resolution) p.resolution = static_cast<uint32_t>(resolution);
   if (max_hulls >= 0) p.max_convex_hulls = static_cast<uint32_t>(max_hulls);
-  if (concavity >= 0) p.concavity = concavity;
+  if (concavity >= 0) {  // V-HACD 2.0's volume criterion instead of the preset's target error
+    p.concavity = concavity;
+    p.max_concavity = 0;
+  }
 
   Result<Scene> scene = ReadScene(input);
   if (!scene.ok()) {

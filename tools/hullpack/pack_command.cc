@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
@@ -86,6 +87,19 @@ nlohmann::json ReportJson(const PackReport& r) {
             {"total", r.seconds_total}}}};
 }
 
+// The write stage is this command's (the temp file written, flushed and renamed), after the
+// report was made: its seconds go in here, and into the total. A cached report's write is this
+// run's too.
+void SetWriteSeconds(double seconds, nlohmann::json& report) {
+  nlohmann::json* s =
+      report.is_object() && report.contains("seconds") ? &report["seconds"] : nullptr;
+  if (!s || !s->is_object()) return;
+  const double before = s->value("write", 0.0);
+  (*s)["write"] = seconds;
+  if (s->contains("total") && (*s)["total"].is_number())
+    (*s)["total"] = (*s)["total"].get<double>() - before + seconds;
+}
+
 void PackOne(Job& job, const std::vector<std::string>& inputs, const PackOptions& options,
              bool force, const AssetCache* cache, ProgressLine& progress) {
   Status writable = CheckOutputPath(job.output, inputs, force);
@@ -99,12 +113,16 @@ void PackOne(Job& job, const std::vector<std::string>& inputs, const PackOptions
     job.error = packed.status().message();
     return;
   }
+  const auto write_start = std::chrono::steady_clock::now();
   Status written = WriteFileAtomically(job.output, packed->glb);
   if (!written.ok()) {
     job.error = written.message();
     return;
   }
   job.report = std::move(packed->report);
+  SetWriteSeconds(
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - write_start).count(),
+      job.report);
   if (cache) job.report["cache_hit"] = packed->cache_hit;
   job.report["input"] = job.input;
   job.report["output"] = job.output;
@@ -148,6 +166,8 @@ std::optional<int> ParsePackCommandLine(const std::vector<std::string>& args,
   cli.Flag("--force", &cmd->force, "replace existing outputs");
   cli.Flag("--quiet", &cmd->quiet, "no progress line");
   if (std::optional<int> exit_code = cli.Parse(args)) return exit_code;
+  const std::string why = ApplyMethodOptions(cli, &o);
+  if (!why.empty()) return cli.UsageError(why);
   cmd->output_args = OutputArgs(args, cmd->inputs);
   return std::nullopt;
 }
@@ -271,6 +291,9 @@ void AddPackOptions(CliArgs& cli, PackOptions* options) {
            "code values in vertex id order: faster decoding, 2-5% larger");
   cli.Flag("--fallback", &o.glb.fallback,
            "also write plain accessors (readers without the extension still work)");
+  cli.Flag("--quantized-hulls", &o.glb.quantized_hulls,
+           "hull points as bytes/shorts with KHR_mesh_quantization, which the file then\n"
+           "requires (smaller; default: floats, no extension needed because of hulls)");
   cli.Value("--hulls", "all|none|auto|N",
             "which meshes get collision hulls (auto); a number N: exactly N hulls per mesh",
             [&o](const std::string& v) {
@@ -308,8 +331,8 @@ void AddPackOptions(CliArgs& cli, PackOptions* options) {
               return std::string();
             });
   cli.Value("--quality", "default|high",
-            "decomposition preset (default: V-HACD 2.0's, hulls merged while they\n"
-            "stick out by at most 3 % of the diagonal, at most 24 vertices per hull);\n"
+            "decomposition preset (default: --max-concavity 0.07, at most 24 vertices\n"
+            "per hull; high: V-HACD 2.0's volume criteria, finer, up to 128 vertices);\n"
             "the decomposition options below refine it",
             [&p](const std::string& v) {
               if (v != "default" && v != "high") return "takes default or high, not '" + v + "'";
@@ -317,8 +340,10 @@ void AddPackOptions(CliArgs& cli, PackOptions* options) {
               return std::string();
             })
       .First();
-  cli.Int("--resolution", "N", 10000, 64000000, &p.resolution, "decomposition voxel count");
-  cli.Int("--max-hulls", "N", 0, 100000, &p.max_convex_hulls, "most hulls per mesh (0: no limit)");
+  cli.Int("--resolution", "N", 10000, 64000000, &p.resolution,
+          "decomposition voxel count (V-HACD only)");
+  cli.Int("--max-hulls", "N", 0, 100000, &p.max_convex_hulls,
+          "most hulls per mesh (0: no limit); hacd: merge on past --concavity down to N");
   cli.Value("--max-vertices", "N", "most vertices per hull (4-1024)", [&o](const std::string& v) {
     char* end = nullptr;
     const long n = std::strtol(v.c_str(), &end, 10);
@@ -329,9 +354,27 @@ void AddPackOptions(CliArgs& cli, PackOptions* options) {
     return std::string();
   });
   cli.Double("--concavity", "F", 0, 1, &p.concavity,
-             "largest concavity of a part, fraction of the diagonal");
+             "largest concavity of a part, fraction of the diagonal (V-HACD 2.0's\n"
+             "volume criterion: applies with --max-concavity 0; hacd: of a merge)");
   cli.Double("--max-concavity", "D", 0, 1, &p.max_concavity,
-             "hulls within D x the mesh's diagonal of its surface, as few as that allows");
+             "hulls within D x the mesh's diagonal of its surface, as few as that allows\n"
+             "(0.07; 0: V-HACD 2.0's volume criteria)");
+}
+
+std::string ApplyMethodOptions(const CliArgs& cli, PackOptions* options) {
+  if (options->collision.method != DecompositionMethod::kHacd) return "";
+  for (const char* name : {"--resolution", "--quality"})
+    if (cli.Seen(name))
+      return std::string(name) +
+             " is a V-HACD option (voxels); --method hacd clusters the surface and has none";
+  const vhacd::Parameters& p = options->collision.parameters;
+  vhacd::HacdParameters& h = options->collision.hacd_parameters;
+  if (cli.Seen("--max-hulls")) h.max_clusters = p.max_convex_hulls;
+  // HACD's concavity limit is a distance in units of a diagonal of 2 * scale_factor.
+  if (cli.Seen("--concavity")) h.concavity = p.concavity * 2.0 * h.scale_factor;
+  if (cli.Seen("--max-concavity")) h.max_concavity = p.max_concavity;
+  h.hull_count = p.hull_count;
+  return "";
 }
 
 std::vector<std::string> OutputArgs(const std::vector<std::string>& args,

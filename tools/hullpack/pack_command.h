@@ -23,6 +23,12 @@ int RunPackCommand(const std::vector<std::string>& args);
 // `hullpack batch` takes the same.
 void AddPackOptions(CliArgs& cli, PackOptions* options);
 
+// After parsing: with --method hacd, carries --max-hulls, --concavity, --max-concavity and --hulls
+// N over to HACD's parameters (a cluster budget, the concavity limit as a fraction of the
+// diagonal, the target error, an exact cluster count); returns the usage error for the V-HACD-only
+// --resolution and --quality, "" otherwise.
+std::string ApplyMethodOptions(const CliArgs& cli, PackOptions* options);
+
 // `args` without the operands and without the options that only steer a run (-o, --report,
 // --jobs, --cache, --force, --quiet, batch's --manifest/--shard/--shards/--merge, and their
 // values): what can change an output's bytes, as given. The cache key holds it.

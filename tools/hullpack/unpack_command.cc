@@ -7,9 +7,103 @@
 #include "gltf/glb_reader.h"
 #include "hullpack/cli_util.h"
 #include "io/scene_io.h"
+#include "mesh/convex_hull.h"
 #include "packed/packed_glb_reader.h"
 
 namespace hullpack {
+namespace {
+
+// Hulls `hullpack pack` writes have at most 1024 points (--max-vertices).
+constexpr size_t kMaxUnpackedHullPoints = 16384;
+
+// "dir/name.off" -> "dir/name.hulls.off"
+std::string HullsPath(const std::string& output) {
+  const size_t slash = output.find_last_of("/\\");
+  const size_t dot = output.rfind('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+    return output + ".hulls";
+  return output.substr(0, dot) + ".hulls" + output.substr(dot);
+}
+
+}  // namespace
+
+Result<UnpackSummary> Unpack(const std::string& input, const std::string& output, bool force) {
+  const FileFormat format = FormatFromExtension(output);
+  if (format != FileFormat::kGlb && format != FileFormat::kObj && format != FileFormat::kOff &&
+      format != FileFormat::kWrl && format != FileFormat::kPly) {
+    return Status(StatusCode::kInvalidArgument,
+                  output + ": unknown output format (.glb .obj .off .wrl .ply)");
+  }
+  const bool separate_hulls = format == FileFormat::kOff || format == FileFormat::kPly;
+  UnpackSummary summary;
+  if (separate_hulls) summary.hulls_path = HullsPath(output);
+  Status writable = CheckOutputPath(output, {input}, force);
+  if (!writable.ok()) return writable;
+  Result<std::vector<uint8_t>> bytes = ReadFileBytes(input);
+  if (!bytes.ok()) return bytes.status();
+  GltfDocument plain;
+  Result<Scene> scene =
+      ReadPackedGltf(bytes.value().data(), bytes.value().size(), input, "", &plain);
+  if (!scene.ok()) return scene.status();
+  if (format == FileFormat::kGlb) {
+    Result<std::vector<uint8_t>> glb = plain.Serialize();
+    if (!glb.ok()) return glb.status();
+    summary.meshes = scene->meshes.size();
+    summary.triangles = scene->triangle_count();
+    Status written = WriteFileAtomically(output, glb.value());
+    if (!written.ok()) return written;
+    return summary;
+  }
+  Result<std::vector<CollisionHull>> hulls = ReadCollisionHulls(plain, input);
+  if (!hulls.ok()) return hulls.status();
+  // Formats without points or colliders: the render meshes, then each hull as triangles.
+  std::vector<bool> is_hull(scene->meshes.size(), false);
+  for (const CollisionHull& h : hulls.value()) {
+    if (h.gltf_mesh >= 0 && static_cast<size_t>(h.gltf_mesh) < is_hull.size())
+      is_hull[h.gltf_mesh] = true;
+  }
+  Scene render, hull_scene;
+  render.materials = scene->materials;
+  render.images = scene->images;
+  for (size_t m = 0; m < scene->meshes.size(); ++m) {
+    if (is_hull[m] || scene->meshes[m].triangle_count() == 0) continue;
+    render.meshes.push_back(scene->meshes[m]);
+    summary.triangles += scene->meshes[m].triangle_count();
+  }
+  summary.meshes = render.meshes.size();
+  Scene& hull_target = separate_hulls ? hull_scene : render;
+  for (const CollisionHull& h : hulls.value()) {
+    // The hull's triangles cost O(points x faces): a file's hull may be hostile.
+    if (h.hull.triangle_count() == 0 && h.hull.vertex_count() > kMaxUnpackedHullPoints) {
+      return Status(StatusCode::kInvalidArgument,
+                    input + ": nodes[" + std::to_string(h.collider_node) + "]: a hull of " +
+                        std::to_string(h.hull.vertex_count()) + " points (unpack triangulates " +
+                        "hulls of at most " + std::to_string(kMaxUnpackedHullPoints) + ")");
+    }
+    Mesh mesh = h.hull.triangle_count() > 0 ? h.hull : ConvexHullOfPoints(h.hull.positions);
+    mesh.name = "hull_" + std::to_string(summary.hulls);
+    mesh.normals.clear();
+    mesh.material_ids.clear();
+    hull_target.meshes.push_back(std::move(mesh));
+    ++summary.hulls;
+  }
+  if (separate_hulls && !hull_scene.meshes.empty()) {
+    Status hulls_writable = CheckOutputPath(summary.hulls_path, {input}, force);
+    if (!hulls_writable.ok()) return hulls_writable;
+  }
+  Status written = WriteScene(render, output);
+  if (!written.ok()) return written;
+  if (separate_hulls) {
+    if (hull_scene.meshes.empty()) {
+      summary.hulls_path.clear();
+    } else {
+      written = WriteScene(hull_scene, summary.hulls_path);
+      if (!written.ok()) return written;
+    }
+  }
+  return summary;
+}
+
 int RunUnpackCommand(const std::vector<std::string>& args) {
   std::vector<std::string> inputs;
   std::string output;
@@ -17,10 +111,10 @@ int RunUnpackCommand(const std::vector<std::string>& args) {
   CliArgs cli("hullpack unpack", "PACKED.glb -o OUTPUT [--force]",
               "Decodes a packed GLB.\n"
               "  OUTPUT .glb: the same glTF with every compressed primitive decoded into plain\n"
-              "               accessors (collision-hull extensions kept);\n"
-              "  OUTPUT .obj .off .wrl .ply: the decoded meshes (hull meshes included, one `o` "
-              "group\n"
-              "               each in OBJ)");
+              "               accessors (collider nodes and hull meshes kept);\n"
+              "  OUTPUT .obj .wrl: the render meshes, then each collision hull as a closed mesh\n"
+              "               (the convex hull of its points), one object/Shape hull_N each;\n"
+              "  OUTPUT .off .ply: the render meshes; the hulls go to STEM.hulls.off/.ply");
   cli.VersionDetail(FormatVersionText());
   cli.Positional("PACKED.glb", &inputs, 1, 1);
   cli.String("-o, --output", "OUTPUT", &output, "the file to write (.glb .obj .off .wrl .ply)")
@@ -28,42 +122,23 @@ int RunUnpackCommand(const std::vector<std::string>& args) {
   cli.Flag("--force", &force, "replace an existing OUTPUT");
   if (std::optional<int> exit_code = cli.Parse(args)) return *exit_code;
   const std::string& input = inputs[0];
-  const FileFormat out_format = FormatFromExtension(output);
-  if (out_format == FileFormat::kUnknown) {
+  if (FormatFromExtension(output) == FileFormat::kUnknown) {
     std::fprintf(stderr, "hullpack unpack: %s: unknown output format (.glb .obj .off .wrl .ply)\n",
                  output.c_str());
     return kExitUsage;
   }
-  Status writable = CheckOutputPath(output, {input}, force);
-  if (!writable.ok()) {
-    std::fprintf(stderr, "hullpack unpack: %s\n", writable.message().c_str());
+  Result<UnpackSummary> done = Unpack(input, output, force);
+  if (!done.ok()) {
+    std::fprintf(stderr, "hullpack unpack: %s\n", done.status().message().c_str());
     return 1;
   }
-  Result<std::vector<uint8_t>> bytes = ReadFileBytes(input);
-  if (!bytes.ok()) {
-    std::fprintf(stderr, "hullpack unpack: %s\n", bytes.status().message().c_str());
-    return 1;
+  std::printf("%s -> %s: %zu meshes, %zu triangles", input.c_str(), output.c_str(), done->meshes,
+              done->triangles);
+  if (done->hulls > 0) {
+    std::printf(", %zu hulls%s%s", done->hulls, done->hulls_path.empty() ? "" : " -> ",
+                done->hulls_path.c_str());
   }
-  GltfDocument plain;
-  Result<Scene> scene =
-      ReadPackedGltf(bytes.value().data(), bytes.value().size(), input, "", &plain);
-  if (!scene.ok()) {
-    std::fprintf(stderr, "hullpack unpack: %s\n", scene.status().message().c_str());
-    return 1;
-  }
-  Status written;
-  if (out_format == FileFormat::kGlb) {
-    Result<std::vector<uint8_t>> glb = plain.Serialize();
-    written = glb.ok() ? WriteFileAtomically(output, glb.value()) : glb.status();
-  } else {
-    written = WriteScene(scene.value(), output);
-  }
-  if (!written.ok()) {
-    std::fprintf(stderr, "hullpack unpack: %s\n", written.message().c_str());
-    return 1;
-  }
-  std::printf("%s -> %s: %zu meshes, %zu triangles\n", input.c_str(), output.c_str(),
-              scene->meshes.size(), scene->triangle_count());
+  std::printf("\n");
   return 0;
 }
 

@@ -255,18 +255,22 @@ class ObjParser {
   }
 
   // The read-ahead part holding the line at `at`, once read, when it read it; null otherwise.
-  // Parts left behind are freed.
+  // Parts left behind are freed. The lock is taken once per part, not once per line.
   ReadAhead* AheadAt(const char* at) {
     while (ahead_at_ < ahead_.size() && ahead_[ahead_at_].end <= at) {
-      WaitUntilRead(ahead_at_);  // a reader may still be writing it
+      if (!ahead_at_read_) WaitUntilRead(ahead_at_);  // a reader may still be writing it
       ahead_[ahead_at_] = ReadAhead();
       ++ahead_at_;
+      ahead_at_read_ = false;
       std::lock_guard<std::mutex> lock(ready_mutex_);
       consumed_ = ahead_at_;
       ready_changed_.notify_all();
     }
     if (ahead_at_ == ahead_.size()) return nullptr;
-    WaitUntilRead(ahead_at_);
+    if (!ahead_at_read_) {
+      WaitUntilRead(ahead_at_);
+      ahead_at_read_ = true;
+    }
     return ahead_[ahead_at_].ok ? &ahead_[ahead_at_] : nullptr;
   }
 
@@ -590,7 +594,7 @@ class ObjParser {
       if (b.indices.empty()) continue;
       b.first_of_v = std::vector<uint32_t>();
       b.next_same_v = std::vector<uint32_t>();
-      KeepFileOrder(b);
+      KeepFileOrder(b, ThreadCount(options_.threads));
       Mesh m;
       m.name = b.name;
       const size_t n = b.corners.size();
@@ -631,8 +635,11 @@ class ObjParser {
         }
       }
       if (!lacks_normal.empty()) FillNormalsFromFaces(m, lacks_normal);
+      // Grown face by face: down to their size, the mesh lives through the whole pipeline.
       m.indices = std::move(b.indices);
+      m.indices.shrink_to_fit();
       m.material_ids = std::move(b.material_ids);
+      m.material_ids.shrink_to_fit();
       scene.meshes.push_back(std::move(m));
     }
     // Faces before the first `usemtl` carry kNoMaterial: without any material in the file the ids
@@ -641,7 +648,7 @@ class ObjParser {
     uint32_t fallback = kNoMaterial;
     for (Mesh& m : scene.meshes) {
       if (!file_has_materials) {
-        m.material_ids.clear();
+        m.material_ids = std::vector<uint32_t>();
         continue;
       }
       for (uint32_t& id : m.material_ids) {
@@ -673,14 +680,21 @@ class ObjParser {
 
   // Vertices were numbered in order of first use; renumber them in the order of their (v, vt, vn)
   // triples so that a file's vertex order survives (a positions-only file keeps its `v` order).
-  static void KeepFileOrder(MeshBuilder& b) {
+  // The sort runs on `threads`; corners are distinct, so the order is total (the index breaks
+  // ties that cannot happen) and the result does not depend on the thread count.
+  static void KeepFileOrder(MeshBuilder& b, int threads) {
     std::vector<uint32_t> order(b.corners.size());
     for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) {
-      const Corner& a = b.corners[x];
-      const Corner& c = b.corners[y];
-      return a.v != c.v ? a.v < c.v : a.vt != c.vt ? a.vt < c.vt : a.vn < c.vn;
-    });
+    ParallelSort(
+        order.begin(), order.end(),
+        [&](uint32_t x, uint32_t y) {
+          const Corner& a = b.corners[x];
+          const Corner& c = b.corners[y];
+          if (a.v != c.v) return a.v < c.v;
+          if (a.vt != c.vt) return a.vt < c.vt;
+          return a.vn != c.vn ? a.vn < c.vn : x < y;
+        },
+        threads);
     std::vector<uint32_t> new_index(order.size());
     std::vector<Corner> sorted(order.size());
     for (uint32_t i = 0; i < order.size(); ++i) {
@@ -720,6 +734,7 @@ class ObjParser {
   TextScanner scan_;
   std::vector<ReadAhead> ahead_;
   size_t ahead_at_ = 0;
+  bool ahead_at_read_ = false;  // part ahead_at_ is known to be read (sequential pass only)
   std::vector<std::thread> readers_;
   std::atomic<size_t> next_to_read_{0};
   // Guarded by ready_mutex_: per part, read; the parts the sequential pass is done with; stop.

@@ -100,6 +100,7 @@ Result<Scene> ReadScene(const std::string& path, const ReadOptions& options) {
   if (HasOwnParser(format)) {
     ObjParseOptions obj_options;
     obj_options.progress = options.progress;
+    obj_options.threads = options.threads;
     const std::string folder = Folder(path);
     obj_options.load_material_library =
         [folder](const std::string& library) -> Result<std::string> {

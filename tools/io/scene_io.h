@@ -32,6 +32,8 @@ struct ReadOptions {
   // Called with the fraction of the file read so far (from the reading thread; the OBJ parser
   // calls it as it goes, other formats once at the end). May be empty.
   std::function<void(double)> progress;
+  // Threads a parser may use (0 = every core); the scene does not depend on it.
+  int threads = 0;
 };
 
 // Reads any supported file. The Status message starts with the path.

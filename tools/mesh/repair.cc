@@ -112,6 +112,7 @@ void MarkDuplicateTriangles(const Mesh& mesh, const RepairOptions& options,
     }
   };
   std::vector<Canonical> canon;
+  canon.reserve(mesh.triangle_count());
   for (size_t t = 0; t < mesh.triangle_count(); ++t) {
     if (remove[t]) continue;
     const uint32_t* p = &mesh.indices[3 * t];
@@ -169,16 +170,27 @@ RepairReport RepairMesh(Mesh& mesh, const RepairOptions& options) {
     std::iota(representative.begin(), representative.end(), 0u);
   }
 
+  // Degenerate and zero-area triangles, in ranges on the threads (each counts its own).
   std::vector<uint8_t> remove(triangle_count, 0);
-  for (size_t t = 0; t < triangle_count; ++t) {
-    const uint32_t* p = &mesh.indices[3 * t];
-    if (options.remove_degenerate_triangles && (p[0] == p[1] || p[1] == p[2] || p[2] == p[0])) {
-      remove[t] = 1;
-      ++report.degenerate_triangles_removed;
-    } else if (options.remove_zero_area_triangles && HasZeroArea(mesh, p)) {
-      remove[t] = 1;
-      ++report.zero_area_triangles_removed;
+  const int threads = std::max(1, options.threads);
+  const size_t ranges =
+      threads > 1 && triangle_count >= 65536 ? 4 * static_cast<size_t>(threads) : 1;
+  std::vector<size_t> degenerate(ranges, 0), zero_area(ranges, 0);
+  ParallelFor(ranges, threads, [&](size_t r) {
+    for (size_t t = triangle_count * r / ranges; t < triangle_count * (r + 1) / ranges; ++t) {
+      const uint32_t* p = &mesh.indices[3 * t];
+      if (options.remove_degenerate_triangles && (p[0] == p[1] || p[1] == p[2] || p[2] == p[0])) {
+        remove[t] = 1;
+        ++degenerate[r];
+      } else if (options.remove_zero_area_triangles && HasZeroArea(mesh, p)) {
+        remove[t] = 1;
+        ++zero_area[r];
+      }
     }
+  });
+  for (size_t r = 0; r < ranges; ++r) {
+    report.degenerate_triangles_removed += degenerate[r];
+    report.zero_area_triangles_removed += zero_area[r];
   }
   MarkDuplicateTriangles(mesh, options, remove, report);
 

@@ -25,9 +25,9 @@ struct EncodedMesh {
   o3dgc::StreamInfo info;
 };
 
-// A collision hull stored as plain accessors quantized with KHR_mesh_quantization: unsigned integer
-// coordinates `local` (3 per vertex) that its collider node's translation and uniform scale map
-// into the body node's space.
+// A collision hull stored as plain accessors on a grid: unsigned integer coordinates `local` (3 per
+// vertex; written as floats, or as bytes/shorts with KHR_mesh_quantization) that its collider
+// node's translation and uniform scale map into the body node's space.
 struct HullGrid {
   double translation[3] = {0, 0, 0};
   double scale = 1;

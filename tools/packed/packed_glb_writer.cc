@@ -42,9 +42,10 @@ void CompressPrimitives(GltfDocument& doc, int gltf_mesh, const MeshSource& sour
 
 // A hull is a mesh of one POINTS primitive whose only attribute is its quantized POSITION: a
 // convex shape is the hull of its points, which every physics engine computes itself, so triangles
-// would only add bytes. The grid integers are stored as VEC3 of unsigned bytes or shorts (padded to
-// 4-byte elements, KHR_mesh_quantization), or, in fallback files, which require no extension, as
-// floats holding the same integers. All hulls share one bufferView per component type.
+// would only add bytes. The grid integers are stored as floats (by default: the hulls then need no
+// extension), or, when asked, as VEC3 of unsigned bytes or shorts (padded to 4-byte elements,
+// KHR_mesh_quantization, which the file then requires). All hulls share one bufferView per
+// component type.
 class HullAccessors {
  public:
   explicit HullAccessors(bool floats) : floats_(floats) {}
@@ -205,7 +206,7 @@ Result<std::vector<uint8_t>> WritePackedGlb(const Scene& decoded, const PackedSt
   }
   if (any) doc.UseExtension(kMeshCompressionExtension, !options.fallback);
   // Fallback files are for readers without extensions: their hulls must not require one.
-  HullAccessors hulls(options.fallback);
+  HullAccessors hulls(options.fallback || !options.quantized_hulls);
   std::vector<int> hull_meshes(decoded.meshes.size(), -1);
   for (size_t m = render_meshes; m < decoded.meshes.size(); ++m)
     hull_meshes[m] = hulls.Add(doc, streams.sources[m].hull_grid);

@@ -1,6 +1,7 @@
 // Assembles the packed GLB (docs/packed-gltf.md): the plain glTF of the DECODED scene, each render
 // primitive pointing at its compressed stream through HULLPACK_mesh_compression; collision hulls as
-// plain accessors quantized with KHR_mesh_quantization (no hullpack extension), referenced as
+// plain accessors on a grid (floats, or bytes/shorts with KHR_mesh_quantization; no hullpack
+// extension), referenced as
 // OMI_physics_shape convex shapes by one collider child node per hull of the body node (or by
 // KHR_physics_rigid_bodies colliders, the draft's geometry.node form).
 // The mirror image is packed_glb_reader.h.
@@ -35,6 +36,10 @@ struct PackedStreams {
 
 struct PackedGlbOptions {
   bool fallback = false;  // also keep the decoded data as plain accessors
+  // Hull points as unsigned bytes/shorts with KHR_mesh_quantization (required then) instead of
+  // FLOATs holding the same grid integers (no extension needed because of hulls): smaller, for
+  // readers that have the extension (docs/packed-gltf.md). Ignored in fallback files.
+  bool quantized_hulls = false;
   PhysicsForm physics = PhysicsForm::kOmi;
 };
 

@@ -7,7 +7,7 @@ namespace hullpack {
 
 vhacd::Parameters PackCollisionParameters() {
   vhacd::Parameters p;
-  p.gamma = 0.02;
+  p.max_concavity = kPackMaxConcavity;
   p.max_vertices_per_hull = 24;
   return p;
 }

@@ -18,13 +18,18 @@ enum class HullPolicy {
   kAuto,  // every mesh except those marked or named non-colliding, and skinned ones unless asked
 };
 
-// The decomposition `hullpack pack` runs by default: V-HACD 2.0's defaults (same voxels, same
-// splitting, same 3 % stick-out bound max_distance) with
-//  - merging driven by that bound: hulls are merged while the merged hull sticks out of the mesh by
-//    no more than max_distance and adds at most 2 % of the whole hull volume (gamma 0.02 instead of
-//    0.00125), so a shape gets the fewest hulls that stay within the stick-out bound;
-//  - at most 24 vertices per hull (instead of 64): what physics engines handle fastest, and plenty
-//    for parts whose stick-out is bounded anyway.
+// The closeness `hullpack pack` asks of its hulls by default, in --max-concavity's units (the
+// larger one-sided Hausdorff distance between the surface and the hulls, as a fraction of the
+// bounding-box diagonal): chosen from the corpus' size and closeness curve (docs/packed-gltf.md,
+// "Sizes") as the closest hulls whose whole file stays within the size of the same meshes
+// Draco-compressed without hulls.
+inline constexpr double kPackMaxConcavity = 0.07;
+
+// The decomposition `hullpack pack` runs by default: V-HACD 2.0's voxels and splitting with
+//  - the target error max_concavity = kPackMaxConcavity: parts are split until every hull lies
+//    within it and merged while the merged hull stays within it, so a shape gets the fewest hulls
+//    that keep that closeness (V-HACD 2.0's volume criteria, concavity and gamma, are off);
+//  - at most 24 vertices per hull (instead of 64): what physics engines handle fastest.
 vhacd::Parameters PackCollisionParameters();
 
 // The decomposer `hullpack pack --method` picks per run.

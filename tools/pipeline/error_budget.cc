@@ -57,6 +57,9 @@ double PositionGridError(const Mesh& mesh, o3dgc::RangeMode mode, int bits) {
                                           mesh.vertex_count(), bits, mode);
 }
 
+// o3dgc::Encode's progress once the connectivity is coded.
+constexpr float kConnectivityCoded = 0.4f;
+
 Result<BudgetedEncoding> EncodeWithinError(const Mesh& mesh, const std::vector<uint32_t>& groups,
                                            const MeshCodecSettings& settings, double max_error,
                                            int threads) {
@@ -105,19 +108,24 @@ Result<BudgetedEncoding> EncodeWithinError(const Mesh& mesh, const std::vector<u
   auto t = Clock::now();
   std::mutex progress_mutex;
   std::vector<float> done(candidates.size(), 0.0f);
+  // An encode holds its largest arrays while it codes the connectivity (the first 40 % of its
+  // progress): parallel candidates take turns there and overlap only after it.
+  std::mutex connectivity_turn;
   ParallelFor(candidates.size(), threads, [&](size_t i) {
     MeshCodecSettings s = settings;
     s.position_bits = candidates[i].bits;
     s.position_range = candidates[i].mode;
-    if (settings.progress) {
-      s.progress = [&, i](float f) {
-        std::lock_guard<std::mutex> lock(progress_mutex);
-        done[i] = f;
-        float sum = 0;
-        for (float d : done) sum += d;
-        return settings.progress(sum / static_cast<float>(done.size()));
-      };
-    }
+    std::unique_lock<std::mutex> turn(connectivity_turn, std::defer_lock);
+    if (threads > 1) turn.lock();
+    s.progress = [&, i](float f) {
+      if (f >= kConnectivityCoded && turn.owns_lock()) turn.unlock();
+      if (!settings.progress) return true;
+      std::lock_guard<std::mutex> lock(progress_mutex);
+      done[i] = f;
+      float sum = 0;
+      for (float d : done) sum += d;
+      return settings.progress(sum / static_cast<float>(done.size()));
+    };
     candidates[i].encoded = EncodeMesh(mesh, groups, s);
   });
   BudgetedEncoding out;

@@ -1,5 +1,6 @@
 // The collision hulls of one mesh as a packed file stores them (docs/packed-gltf.md): plain glTF
-// accessors that any physics importer reads, positions quantized with KHR_mesh_quantization.
+// accessors that any physics importer reads, positions on a grid (stored as floats, or as
+// bytes/shorts with KHR_mesh_quantization).
 //
 // All hulls of a mesh lie on one grid whose step is the largest that keeps every vertex within the
 // hull budget (half a cell diagonal). Each hull is stored as small unsigned integers relative to

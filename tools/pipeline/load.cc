@@ -11,10 +11,11 @@ std::string FolderOf(const std::string& path) {
   return slash == 0 ? "/" : path.substr(0, slash);
 }
 
-Result<LoadedScene> LoadScene(const std::string& path,
-                              const std::function<void(double)>& progress) {
+Result<LoadedScene> LoadScene(const std::string& path, const std::function<void(double)>& progress,
+                              int threads) {
   ReadOptions options;
   options.progress = progress;
+  options.threads = threads;
   Result<Scene> scene = ReadScene(path, options);
   if (!scene.ok()) return scene.status();
   LoadedScene out;

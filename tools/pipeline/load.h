@@ -20,9 +20,10 @@ struct LoadedScene {
   std::vector<std::string> images_kept_outside;  // one line per image left as a URI, and why
 };
 
-// Errors start with the path. `progress` (may be empty) gets the fraction of the file read.
+// Errors start with the path. `progress` (may be empty) gets the fraction of the file read;
+// `threads` (0 = every core) is what the reader may use.
 Result<LoadedScene> LoadScene(const std::string& path,
-                              const std::function<void(double)>& progress = {});
+                              const std::function<void(double)>& progress = {}, int threads = 0);
 
 // The folder part of `path` ("." when it has none).
 std::string FolderOf(const std::string& path);

@@ -89,7 +89,7 @@ Result<PackResult> PackInput(const std::string& input, const PackOptions& option
       observer->OnProgress(0, "load " + std::to_string(static_cast<int>(f * 100)) + "%");
     };
   }
-  Result<LoadedScene> loaded = LoadScene(input, load_progress);
+  Result<LoadedScene> loaded = LoadScene(input, load_progress, options.threads);
   if (!loaded.ok()) return loaded.status();
   const double seconds_load = Seconds(start);
   Result<PackResult> packed = PackLoaded(std::move(loaded->scene), options, observer);

@@ -1,7 +1,11 @@
 #include "pipeline/pack_mesh.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
+#include <limits>
 #include <mutex>
 
 #include "common/parallel.h"
@@ -28,6 +32,41 @@ size_t PlainGeometryBytes(const Mesh& m) {
   if (!m.joints.empty()) per_vertex += 8;
   const size_t index_size = m.vertex_count() < 65536 ? 2 : 4;
   return m.vertex_count() * per_vertex + m.indices.size() * index_size;
+}
+
+// The encoder's working arrays per triangle of a mesh with positions only (measured on large
+// scans); each attribute coded adds a few more.
+constexpr double kEncoderBytesPerTriangle = 200;
+constexpr double kEncoderBytesPerAttribute = 40;
+
+// Memory the system can still give (MemAvailable), or the largest size_t when unknown.
+double AvailableMemory() {
+  if (FILE* f = std::fopen("/proc/meminfo", "r")) {
+    char line[256];
+    unsigned long long kb = 0;
+    bool found = false;
+    while (!found && std::fgets(line, sizeof(line), f))
+      found = std::sscanf(line, "MemAvailable: %llu kB", &kb) == 1;
+    std::fclose(f);
+    if (found) return 1024.0 * static_cast<double>(kb);
+  }
+  const long pages = sysconf(_SC_AVPHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+  if (pages > 0 && page > 0) return static_cast<double>(pages) * static_cast<double>(page);
+  return static_cast<double>(std::numeric_limits<size_t>::max());
+}
+
+// Candidate grids encoded at once for `mesh`: up to `threads`, as many as half the available
+// memory holds encoders for (at least one). Only the run's speed and peak depend on it.
+int CandidateThreads(const Mesh& mesh, int threads) {
+  const size_t attributes = (mesh.normals.empty() ? 0 : 1) + mesh.uv_sets.size() +
+                            (mesh.colors.empty() ? 0 : 1) + (mesh.weights.empty() ? 0 : 2) +
+                            (mesh.tangents.empty() ? 0 : 1);
+  const double per_encoder =
+      static_cast<double>(mesh.triangle_count()) *
+      (kEncoderBytesPerTriangle + kEncoderBytesPerAttribute * static_cast<double>(attributes));
+  if (threads <= 1 || per_encoder <= 0) return std::max(1, threads);
+  const double fits = std::floor(0.5 * AvailableMemory() / per_encoder);
+  return static_cast<int>(std::clamp(fits, 1.0, static_cast<double>(threads)));
 }
 
 MeshCodecSettings SettingsFor(const PackOptions& options) {
@@ -176,7 +215,8 @@ Status MakeHulls(const Mesh& mesh, const PackOptions& options, vhacd::Observer* 
     const HullGrid& grid = quantized->grids[h];
     const bool wide =
         !grid.local.empty() && *std::max_element(grid.local.begin(), grid.local.end()) > 255;
-    r.hull_bytes += hull.vertex_count() * (wide ? 8 : 4);
+    const bool floats = options.glb.fallback || !options.glb.quantized_hulls;
+    r.hull_bytes += hull.vertex_count() * (floats ? 12 : wide ? 8 : 4);
     out.hulls.push_back(std::move(hull));
     out.hull_grids.push_back(std::move(quantized->grids[h]));
   }
@@ -232,10 +272,10 @@ Result<std::vector<PackedMesh>> PackMeshes(const Scene& scene, const PackOptions
       board.Set(k, 1, prefix + "hulls encoded");
     } else {
       board.Set(k, 0, prefix + "encode");
-      // Beside a decomposition, the candidates one after another: each encoder holds working
-      // arrays of about the mesh's size, and the decomposition keeps the other core busy.
-      const int threads =
-          packed[task.mesh].report.no_hulls_reason.empty() ? 1 : ThreadCount(options.threads);
+      // The candidates in parallel even beside a decomposition (the encode is the longer task:
+      // one after another they would leave a core idle once the decomposition ends), as many as
+      // the memory holds.
+      const int threads = CandidateThreads(mesh, ThreadCount(options.threads));
       const o3dgc::ProgressFn progress = [&board, k, &prefix](float f) {
         board.Set(k, f, prefix + "encode " + std::to_string(static_cast<int>(f * 100)) + "%");
         return !board.Cancelled();

@@ -19,8 +19,9 @@ struct PackOptions {
   // Largest position error allowed, as a fraction of each mesh's bounding-box diagonal; it sets the
   // position bits unless position_bits is given.
   double max_error = 0.0005;
-  // The same for collision-hull vertices. Hulls already stand off the surface by their concavity
-  // (typically 0.01-0.03 of the diagonal), so they need far fewer bits than the render mesh.
+  // The same for collision-hull vertices. Hulls already stand off the surface by up to their
+  // concavity (the preset's max_concavity, 0.07 of the diagonal), so they need far fewer bits than
+  // the render mesh.
   double hull_error = 0.002;
   int position_bits = 0;  // 0 = from max_error
   int normal_bits = 10;
@@ -49,7 +50,7 @@ struct MeshPackReport {
   std::string no_hulls_reason;    // why the mesh has no hulls, "" when it has some
   size_t hull_count = 0;
   size_t hull_vertices = 0;
-  size_t hull_bytes = 0;  // the hulls' accessor data (quantized positions)
+  size_t hull_bytes = 0;  // the hulls' accessor data (their points as stored: floats or integers)
   int hull_position_bits = 0;
   std::string hull_position_range;
   double hull_concavity = -1;  // vhacd's report (fractions of the diagonal); -1 = not measured

@@ -40,7 +40,7 @@ void RemoveUnusedTangents(const Scene& scene, Mesh& mesh, PruneReport& report) {
   for (uint32_t id : MaterialsOf(mesh)) {
     if (id < scene.materials.size() && scene.materials[id].normal_texture.used()) return;
   }
-  mesh.tangents.clear();
+  mesh.tangents = {};
   ++report.tangent_sets_removed;
 }
 
@@ -52,7 +52,7 @@ void FoldConstantColors(Scene& scene, Mesh& mesh, PruneReport& report) {
     if (mesh.colors[i] != mesh.colors[i % 4]) return;
   }
   const float c[4] = {mesh.colors[0], mesh.colors[1], mesh.colors[2], mesh.colors[3]};
-  mesh.colors.clear();
+  mesh.colors = {};
   ++report.constant_color_sets_folded;
   if (c[0] == 1 && c[1] == 1 && c[2] == 1 && c[3] == 1) return;
   if (mesh.material_ids.empty()) {
@@ -90,8 +90,8 @@ void RemoveUnusedSkinData(const Scene& scene, size_t mesh_index, Mesh& mesh, Pru
                                     static_cast<int>(mesh_index)) != node.meshes.end())
       return;
   }
-  mesh.joints.clear();
-  mesh.weights.clear();
+  mesh.joints = {};
+  mesh.weights = {};
   ++report.skin_data_removed;
 }
 

@@ -86,6 +86,13 @@ std::optional<int> ParseCommandLine(std::vector<std::string> args, CommandLine* 
              "FlatRegionThreshold, % of ScaleFactor (1)");
   cli.Double("--computation-weight", "X", 0, 1e3, &p.computation_weight,
              "ComputationWeight (0.01)");
+  cli.Int("--max-hulls", "N", 0, 100000, &p.max_clusters,
+          "hull budget: merge on past the concavity limit down to N (0: none)");
+  cli.Double("--max-concavity", "D", 0, 1, &p.max_concavity,
+             "every hull within D x the diagonal of the surface (the reported\n"
+             "concavity): replaces --concavity, tightened up to 3 times");
+  cli.Int("--hulls", "N", 0, 100000, &p.hull_count,
+          "exactly N hulls (when the surface can give N)");
   cli.Int("--threads", "N", 0, 256, &p.num_threads, "worker threads (0: every core)");
   cli.Action("--no-report", "skip the error measures (faster)",
              [&p]() { p.compute_report = false; });
@@ -151,5 +158,6 @@ int main(int argc, char** argv) {
   else
     std::printf("hulls: %zu (from %u triangles), %.2f s\n", r.hulls.size(), rep.parts_before_merge,
                 rep.seconds_total);
+  if (!rep.target_reached) std::printf("target not reached: %s\n", rep.target_note.c_str());
   return hullpack::WriteResults("testHACD", input, report_path, output, "hacd", r);
 }

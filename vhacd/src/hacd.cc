@@ -1,11 +1,11 @@
 // vhacd::DecomposeHacd: the HACD pipeline (see include/vhacd/hacd.h).
 #include "vhacd/hacd.h"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <new>
 #include <queue>
 #include <thread>
@@ -16,9 +16,9 @@
 #include "error_metrics.h"
 #include "hacd_cost.h"
 #include "hacd_graph.h"
+#include "hacd_hull.h"
 #include "hacd_orient.h"
 #include "hacd_raycast.h"
-#include "hull_simplify.h"
 #include "input_mesh.h"
 #include "simplify_qem.h"
 #include "thread_pool.h"
@@ -60,6 +60,9 @@ Status ValidateHacdParameters(const HacdParameters& p, std::string* why) {
   if (!in(p.flat_region_threshold, 0.0, 100.0))
     return bad("flat_region_threshold must be in [0, 100]");
   if (!in(p.computation_weight, 0.0, 1e3)) return bad("computation_weight must be in [0, 1000]");
+  if (p.max_clusters > 100000) return bad("max_clusters must be in [0, 100000]");
+  if (!in(p.max_concavity, 0.0, 1.0)) return bad("max_concavity must be in [0, 1]");
+  if (p.hull_count > 100000) return bad("hull_count must be in [0, 100000]");
   if (p.num_threads > 256) return bad("num_threads must be in [0, 256]");
   if (why != nullptr) why->clear();
   return Status::kOk;
@@ -98,43 +101,37 @@ class Clustering {
     bool alive = true;
   };
 
+  // When the merges stop.
+  struct Limits {
+    double concavity = 0.0;    // merges of this concavity or more are refused...
+    size_t min_clusters = 1;   // ... and none leaves fewer clusters than this, ...
+    size_t max_clusters = 0;   // ... then, when > 0, the cheapest merges go on down to this many
+    bool floor_small = false;  // the forced merges of small clusters also stop at min_clusters
+  };
+
   Clustering(const HacdParameters& p, const internal::HacdCostParams& cp,
-             std::vector<internal::DistPoint> dist, double total_area)
-      : p_(p), cp_(cp), dist_(std::move(dist)) {
+             const std::vector<internal::DistPoint>& dist, double total_area)
+      : p_(p), cp_(cp), dist_(dist) {
     area_threshold_ = total_area * p.small_cluster_threshold / 100.0;
   }
 
   std::vector<Cluster>& clusters() { return clusters_; }
+  const std::vector<Cluster>& clusters() const { return clusters_; }
+  const std::vector<internal::DistPoint>& dist() const { return dist_; }
   std::vector<Edge>& edges() { return edges_; }
   size_t alive_count() const { return alive_; }
 
-  bool Run(internal::Context* ctx) {
+  bool Run(internal::Context* ctx, const Limits& lim) {
     alive_ = clusters_.size();
-    const size_t n0 = alive_;
-    if (!internal::ParallelFor(ctx, edges_.size(), [&](size_t e) { Evaluate(&edges_[e]); }))
-      return false;
-    for (uint32_t e = 0; e < edges_.size(); ++e) Push(e);
-    size_t pops = 0;
-    while (!heap_.empty()) {
-      if ((++pops & 63) == 0 && ctx != nullptr) {
-        if (ctx->Cancelled()) return false;
-        ctx->Progress(100.0 * (n0 - alive_) / std::max<size_t>(1, n0), "merging clusters");
-      }
-      const Entry top = heap_.top();
-      heap_.pop();
-      Edge& e = edges_[top.edge];
-      if (!e.alive || e.generation != top.generation) continue;
-      const bool small =
-          clusters_[e.a].area < area_threshold_ || clusters_[e.b].area < area_threshold_;
-      const bool may_merge = alive_ > p_.min_clusters;
-      if (!small && !may_merge) continue;
-      if (e.version_a != clusters_[e.a].version || e.version_b != clusters_[e.b].version) {
-        Evaluate(&e);
-        Push(top.edge);
-        continue;
-      }
-      if (!small && !(e.concavity < p_.concavity)) continue;
-      Collapse(top.edge);
+    n0_ = alive_;
+    if (!Merge(ctx, lim.concavity, lim)) return false;
+    if (lim.max_clusters > 0 && alive_ > lim.max_clusters) {
+      // The budget: every remaining edge again, without the concavity limit.
+      heap_ = decltype(heap_)();
+      for (Edge& e : edges_) e.version_a = UINT32_MAX;
+      for (uint32_t e = 0; e < edges_.size(); ++e)
+        if (edges_[e].alive) Push(e);
+      if (!Merge(ctx, HUGE_VAL, lim)) return false;
     }
     return true;
   }
@@ -146,6 +143,45 @@ class Clustering {
     bool operator>(const Entry& o) const { return cost != o.cost ? cost > o.cost : edge > o.edge; }
   };
 
+  // Collapses edges cheapest first while their concavity is below `ceiling` (or a cluster is
+  // small) and more than the limits' count remain.
+  bool Merge(internal::Context* ctx, double ceiling, const Limits& lim) {
+    ceiling_ = ceiling;
+    const size_t target =
+        std::max(lim.min_clusters,
+                 lim.max_clusters > 0 && ceiling == HUGE_VAL ? lim.max_clusters : size_t{1});
+    if (!started_) {
+      started_ = true;
+      if (!internal::ParallelFor(ctx, edges_.size(), [&](size_t e) { Evaluate(&edges_[e]); }))
+        return false;
+      for (uint32_t e = 0; e < edges_.size(); ++e) Push(e);
+    }
+    size_t pops = 0;
+    while (!heap_.empty()) {
+      if ((++pops & 63) == 0 && ctx != nullptr) {
+        if (ctx->Cancelled()) return false;
+        ctx->Progress(100.0 * (n0_ - alive_) / std::max<size_t>(1, n0_), "merging clusters");
+      }
+      const Entry top = heap_.top();
+      heap_.pop();
+      Edge& e = edges_[top.edge];
+      if (!e.alive || e.generation != top.generation) continue;
+      const bool small =
+          (clusters_[e.a].area < area_threshold_ || clusters_[e.b].area < area_threshold_) &&
+          (!lim.floor_small || alive_ > lim.min_clusters);
+      const bool may_merge = alive_ > target;
+      if (!small && !may_merge) continue;
+      if (e.version_a != clusters_[e.a].version || e.version_b != clusters_[e.b].version) {
+        Evaluate(&e);
+        Push(top.edge);
+        continue;
+      }
+      if (!small && !(e.concavity < ceiling_)) continue;
+      Collapse(top.edge);
+    }
+    return true;
+  }
+
   bool Small(const Cluster& c) const { return c.area < area_threshold_; }
 
   void Evaluate(Edge* e) const {
@@ -153,7 +189,7 @@ class Clustering {
     const Cluster& b = clusters_[e->b];
     std::vector<Vec3> pts(a.hull_points);
     pts.insert(pts.end(), b.hull_points.begin(), b.hull_points.end());
-    const double limit = (Small(a) || Small(b)) ? HUGE_VAL : p_.concavity;
+    const double limit = (Small(a) || Small(b)) ? HUGE_VAL : ceiling_;
     const internal::MergeCost mc =
         internal::EvaluateCluster(pts, dist_, a.dist, b.dist, a.area + b.area,
                                   a.perimeter + b.perimeter - 2.0 * e->shared, limit, cp_, nullptr);
@@ -231,53 +267,16 @@ class Clustering {
 
   const HacdParameters& p_;
   internal::HacdCostParams cp_;
-  std::vector<internal::DistPoint> dist_;
+  const std::vector<internal::DistPoint>& dist_;
   double area_threshold_ = 0.0;
+  double ceiling_ = 0.0;
+  size_t n0_ = 0;
+  bool started_ = false;
   std::vector<Cluster> clusters_;
   std::vector<Edge> edges_;
   size_t alive_ = 0;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap_;
 };
-
-// The hull of one cluster's mesh vertices, made solid when the cluster is flat or thin.
-internal::HullMesh ClusterHull(const std::vector<Vec3>& pts, double thickness,
-                               uint32_t max_vertices) {
-  internal::HullMesh hull;
-  internal::HullStatus st = internal::ComputeConvexHull(pts, -1.0, &hull);
-  bool thin = st != internal::HullStatus::kOk;
-  if (!thin) {
-    // Thinner than `thickness` everywhere: give it that thickness.
-    double area = 0.0;
-    for (const auto& t : hull.triangles)
-      area += 0.5 * (hull.vertices[t[1]] - hull.vertices[t[0]])
-                        .cross(hull.vertices[t[2]] - hull.vertices[t[0]])
-                        .norm();
-    thin = hull.Volume() < 0.25 * area * thickness;
-  }
-  if (thin) {
-    Vec3 c = Vec3::Zero();
-    for (const Vec3& p : pts) c += p;
-    c /= static_cast<double>(pts.size());
-    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-    for (const Vec3& p : pts) cov += (p - c) * (p - c).transpose();
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
-    std::vector<Vec3> thick;
-    const Vec3 n = es.eigenvectors().col(0), m = es.eigenvectors().col(1);
-    const bool line = es.eigenvalues()[1] <= 1e-18 * std::max(1e-300, es.eigenvalues()[2]);
-    for (const Vec3& p : pts) {
-      thick.push_back(p + 0.5 * thickness * n);
-      thick.push_back(p - 0.5 * thickness * n);
-      if (line) {
-        thick.push_back(p + 0.5 * thickness * m);
-        thick.push_back(p - 0.5 * thickness * m);
-      }
-    }
-    internal::HullMesh h2;
-    if (internal::ComputeConvexHull(thick, -1.0, &h2) == internal::HullStatus::kOk) hull = h2;
-  }
-  if (hull.empty()) return hull;
-  return internal::SimplifyHull(hull, max_vertices, 0.0);
-}
 
 Result DecomposeHacdImpl(const MeshView& view, const HacdParameters& params, Observer* observer) {
   std::string why;
@@ -398,113 +397,213 @@ Result DecomposeHacdImpl(const MeshView& view, const HacdParameters& params, Obs
   cp.computation_weight = params.computation_weight;
   cp.total_dist_points = static_cast<double>(dist.size());
   cp.inside_margin = 1e-6 * diag;
-  Clustering clustering(params, cp, std::move(dist), total_area);
-  auto& clusters = clustering.clusters();
-  clusters.resize(nt);
-  for (size_t t = 0; t < nt; ++t) {
-    auto& c = clusters[t];
-    c.dist.assign(tris[t].begin(), tris[t].end());
-    if (face_id[t] != UINT32_MAX) c.dist.push_back(face_id[t]);
-    if (extra_id[t] != UINT32_MAX) c.dist.push_back(extra_id[t]);
-    std::sort(c.dist.begin(), c.dist.end());
-    for (uint32_t v : tris[t]) c.hull_points.push_back(pts[v]);
-    c.area = farea[t];
-    c.triangles.assign(1, static_cast<uint32_t>(t));
-    for (int k = 0; k < 3; ++k) c.perimeter += (pts[tris[t][k]] - pts[tris[t][(k + 1) % 3]]).norm();
-  }
-  auto& edges = clustering.edges();
-  edges.reserve(dual.size());
-  for (const auto& d : dual) {
-    Clustering::Edge e;
-    e.a = d.a;
-    e.b = d.b;
-    e.shared = d.shared_length;
-    clusters[d.a].edges.push_back(static_cast<uint32_t>(edges.size()));
-    clusters[d.b].edges.push_back(static_cast<uint32_t>(edges.size()));
-    edges.push_back(e);
-  }
   rep.parts_before_merge = static_cast<uint32_t>(nt);
   ctx.Log("dual graph: " + std::to_string(nt) + " nodes, " + std::to_string(dual.size()) +
-          " edges, " + std::to_string(clustering.clusters().size()) + " clusters to merge");
+          " edges");
 
-  // Clustering.
-  ctx.BeginStage("Clustering", 25, 85);
-  if (!clustering.Run(&ctx)) return Fail(Status::kCancelled, "cancelled");
-  rep.seconds_clip = clock.Lap();
+  // Clusters and their hulls, for given limits (max_concavity may tighten them and run again).
+  auto decompose = [&](const Clustering::Limits& lim, std::vector<internal::HullMesh>* hulls,
+                       size_t* clusters_left) {
+    Clustering clustering(params, cp, dist, total_area);
+    auto& clusters = clustering.clusters();
+    clusters.resize(nt);
+    for (size_t t = 0; t < nt; ++t) {
+      auto& c = clusters[t];
+      c.dist.assign(tris[t].begin(), tris[t].end());
+      if (face_id[t] != UINT32_MAX) c.dist.push_back(face_id[t]);
+      if (extra_id[t] != UINT32_MAX) c.dist.push_back(extra_id[t]);
+      std::sort(c.dist.begin(), c.dist.end());
+      for (uint32_t v : tris[t]) c.hull_points.push_back(pts[v]);
+      c.area = farea[t];
+      c.triangles.assign(1, static_cast<uint32_t>(t));
+      for (int k = 0; k < 3; ++k)
+        c.perimeter += (pts[tris[t][k]] - pts[tris[t][(k + 1) % 3]]).norm();
+    }
+    auto& edges = clustering.edges();
+    edges.reserve(dual.size());
+    for (const auto& d : dual) {
+      Clustering::Edge e;
+      e.a = d.a;
+      e.b = d.b;
+      e.shared = d.shared_length;
+      clusters[d.a].edges.push_back(static_cast<uint32_t>(edges.size()));
+      clusters[d.b].edges.push_back(static_cast<uint32_t>(edges.size()));
+      edges.push_back(e);
+    }
+    ctx.BeginStage("Clustering", 25, 85);
+    if (!clustering.Run(&ctx, lim)) return false;
+    rep.seconds_clip += clock.Lap();
+    *clusters_left = clustering.alive_count();
 
-  // One hull per cluster.
-  ctx.BeginStage("Hull generation", 85, 90);
-  std::vector<const Clustering::Cluster*> alive;
-  for (const auto& c : clusters)
-    if (c.alive) alive.push_back(&c);
-  std::vector<internal::HullMesh> hulls(alive.size());
-  if (!internal::ParallelFor(&ctx, alive.size(), [&](size_t i) {
-        std::vector<Vec3> cp_pts;
-        for (uint32_t id : alive[i]->dist)
-          if (id < nv) cp_pts.push_back(pts[id]);
-        hulls[i] = ClusterHull(cp_pts, 1e-4 * diag, params.max_vertices_per_hull);
-        // Fill toward the middle of the solid behind the surface patch, so that the hulls of the
-        // patches around a solid meet inside it instead of leaving a hollow between them; kept
-        // only when what it adds lies inside the solid.
-        if (hulls[i].empty()) return;
-        const internal::HullPlanes before(hulls[i]);
-        const size_t surface_points = cp_pts.size();
-        for (double fraction : {0.5, 0.25}) {
-          cp_pts.resize(surface_points);
-          for (uint32_t t : alive[i]->triangles)
-            if (depth[t] > 0) cp_pts.push_back(centroid[t] - (fraction * depth[t]) * fnormal[t]);
-          if (cp_pts.size() == surface_points) return;
-          internal::HullMesh filled =
-              ClusterHull(cp_pts, 1e-4 * diag, params.max_vertices_per_hull);
-          if (filled.empty()) return;
-          const Vec3 c = filled.Centroid();
-          bool inside = true;
-          for (size_t k = 0; k <= filled.vertices.size() && inside; ++k) {
-            const Vec3 q = k == 0 ? c : Vec3(0.5 * (filled.vertices[k - 1] + c));
-            inside = before.Contains(q, 1e-4 * diag) || caster.Inside(q);
+    // One hull per cluster.
+    ctx.BeginStage("Hull generation", 85, 90);
+    std::vector<const Clustering::Cluster*> alive;
+    for (const auto& c : clusters)
+      if (c.alive) alive.push_back(&c);
+    hulls->assign(alive.size(), internal::HullMesh());
+    if (!internal::ParallelFor(&ctx, alive.size(), [&](size_t i) {
+          internal::FillInput fi;
+          for (uint32_t id : alive[i]->dist)
+            if (id < nv) fi.surface.push_back(pts[id]);
+          for (uint32_t t : alive[i]->triangles) {
+            fi.behind.push_back(centroid[t]);
+            fi.inward.push_back(-fnormal[t]);
+            fi.depth.push_back(depth[t]);
           }
-          if (inside) {
-            hulls[i] = std::move(filled);
-            return;
-          }
-        }
-      }))
-    return Fail(Status::kCancelled, "cancelled");
-  hulls.erase(std::remove_if(hulls.begin(), hulls.end(),
-                             [](const internal::HullMesh& h) { return h.empty(); }),
-              hulls.end());
-  if (hulls.empty()) return Fail(Status::kInternalError, "no cluster gave a hull");
-  rep.seconds_hulls = clock.Lap();
+          fi.dist = &dist;
+          fi.dist_ids = &alive[i]->dist;
+          fi.area = alive[i]->area;
+          fi.cost = &cp;
+          fi.caster = &caster;
+          fi.thickness = 1e-4 * diag;
+          fi.tolerance = cp.inside_margin;
+          fi.max_vertices = params.max_vertices_per_hull;
+          (*hulls)[i] = internal::FilledClusterHull(fi);
+        }))
+      return false;
+    hulls->erase(std::remove_if(hulls->begin(), hulls->end(),
+                                [](const internal::HullMesh& h) { return h.empty(); }),
+                 hulls->end());
+    rep.seconds_hulls += clock.Lap();
+    return true;
+  };
 
-  // Report, measured like Decompose's on a voxel grid of the input (not the decimated mesh).
-  ctx.BeginStage("Error report", 90, 100);
-  if (params.compute_report) {
-    const internal::GridPlacement place =
-        internal::ChooseGrid(qlo * to_norm, qhi * to_norm, 100000);
-    internal::GridMesh gmesh;
-    gmesh.triangles = input.triangles;
-    gmesh.points.resize(pq.size());
-    for (size_t i = 0; i < pq.size(); ++i) gmesh.points[i] = (pq[i] - place.origin) / place.h;
-    internal::VoxelGrid grid;
-    if (!internal::Voxelize(gmesh, place.dims, &ctx, &grid))
-      return Fail(Status::kCancelled, "cancelled");
+  // Error report, measured like Decompose's on a voxel grid of the input (not the decimated mesh).
+  std::unique_ptr<internal::VoxelGrid> grid;
+  internal::GridMesh gmesh;
+  internal::GridPlacement place;
+  double volume0 = 0.0;
+  auto measure = [&](const std::vector<internal::HullMesh>& hulls, Report* r) {
+    ctx.BeginStage("Error report", 90, 100);
+    if (!grid) {
+      place = internal::ChooseGrid(qlo * to_norm, qhi * to_norm, 100000);
+      gmesh.triangles = input.triangles;
+      gmesh.points.resize(pq.size());
+      for (size_t i = 0; i < pq.size(); ++i) gmesh.points[i] = (pq[i] - place.origin) / place.h;
+      grid = std::make_unique<internal::VoxelGrid>();
+      if (!internal::Voxelize(gmesh, place.dims, &ctx, grid.get())) return false;
+      internal::HullMesh whole;
+      if (internal::ComputeConvexHull(gmesh.points, -1.0, &whole) == internal::HullStatus::kOk)
+        volume0 = whole.Volume();
+    }
     std::vector<internal::HullMesh> ghulls = hulls;
     for (auto& h : ghulls)
       for (Vec3& p : h.vertices) p = (p - place.origin) / place.h;
-    internal::HullMesh whole;
-    double volume0 = 0.0;
-    if (internal::ComputeConvexHull(gmesh.points, -1.0, &whole) == internal::HullStatus::kOk)
-      volume0 = whole.Volume();
     internal::MetricsInput mi;
     mi.mesh = &gmesh;
-    mi.grid = &grid;
+    mi.grid = grid.get();
     mi.hulls = &ghulls;
     mi.diagonal = diag / place.h;
     mi.volume0 = std::max(volume0, 1.0);
     mi.closed = input.closed;
-    if (!internal::ComputeErrorReport(mi, &ctx, &rep)) return Fail(Status::kCancelled, "cancelled");
+    const bool ok = internal::ComputeErrorReport(mi, &ctx, r);
+    r->seconds_report += clock.Lap();
+    return ok;
+  };
+
+  // The limits: HACD's own (Concavity, NClusters), or a hull count, a budget or a target error.
+  Clustering::Limits lim;
+  lim.concavity = params.concavity;
+  lim.min_clusters = params.min_clusters;
+  lim.max_clusters = params.max_clusters;
+  if (lim.max_clusters > 0) lim.min_clusters = std::min(lim.min_clusters, lim.max_clusters);
+  const bool exact = params.hull_count > 0;
+  const bool target = !exact && params.max_concavity > 0;
+  if (exact) {
+    lim.min_clusters = lim.max_clusters = params.hull_count;
+    lim.floor_small = true;
+  } else if (target) {
+    lim.concavity = params.max_concavity * diag;
   }
-  rep.seconds_report = clock.Lap();
+  std::vector<internal::HullMesh> hulls;
+  size_t left = 0;
+  if (!target) {
+    if (!decompose(lim, &hulls, &left)) return Fail(Status::kCancelled, "cancelled");
+    if (hulls.empty()) return Fail(Status::kInternalError, "no cluster gave a hull");
+    if (params.compute_report && !measure(hulls, &rep))
+      return Fail(Status::kCancelled, "cancelled");
+    rep.attempts = 1;
+    if (exact && hulls.size() != params.hull_count) {
+      rep.target_reached = false;
+      rep.target_note =
+          "the surface could be clustered into only " + std::to_string(hulls.size()) +
+          (left > params.hull_count
+               ? " clusters (pieces farther apart than connect_distance cannot merge)"
+               : " clusters (it has " + std::to_string(nt) + " triangles after decimation)");
+    }
+  } else {
+    // Each attempt clusters with a tighter ceiling until the measured concavity reaches the
+    // target; the first that does is kept, else the closest.
+    const double d = params.max_concavity;
+    constexpr int kAttempts = 3;
+    constexpr double kTighten = 0.6;
+    Report best;
+    bool have = false;
+    for (int attempt = 0; attempt < kAttempts; ++attempt) {
+      std::vector<internal::HullMesh> h;
+      Report r = rep;
+      if (!decompose(lim, &h, &left) || (!h.empty() && !measure(h, &r)))
+        return Fail(Status::kCancelled, "cancelled");
+      if (h.empty()) continue;
+      ctx.Log("max_concavity attempt " + std::to_string(attempt + 1) + ": ceiling " +
+              std::to_string(lim.concavity / diag) + " of the diagonal, " +
+              std::to_string(h.size()) + " hulls, concavity " + std::to_string(r.concavity));
+      r.attempts = static_cast<uint32_t>(attempt + 1);
+      if (!have || r.concavity < best.concavity) {
+        best = r;
+        hulls = std::move(h);
+        have = true;
+      }
+      if (r.concavity <= d) break;
+      lim.concavity *= kTighten;
+    }
+    if (!have) return Fail(Status::kInternalError, "no cluster gave a hull");
+    const Report stages = rep;
+    rep = best;
+    rep.seconds_simplify = stages.seconds_simplify;
+    rep.seconds_clip = stages.seconds_clip;
+    rep.seconds_hulls = stages.seconds_hulls;
+    rep.target_reached = rep.concavity <= d;
+    if (!rep.target_reached) {
+      std::string over;
+      size_t n_over = 0;
+      for (size_t i = 0; i < rep.hulls.size(); ++i)
+        if (rep.hulls[i].distance > d && n_over++ < 8)
+          over += (over.empty() ? "" : ", ") + std::to_string(i);
+      std::string cause;
+      if (rep.hausdorff_mesh_to_hulls > d)
+        cause = "parts of the surface lie outside every hull by " +
+                std::to_string(rep.hausdorff_mesh_to_hulls) +
+                " (detail lost to the decimation to target_triangles or to "
+                "max_vertices_per_hull)";
+      if (n_over > 0) {
+        if (!cause.empty()) cause += "; ";
+        cause += std::to_string(n_over) + " hull(s) farther than max_concavity from the surface (" +
+                 over + (n_over > 8 ? ", ..." : "") + "): " +
+                 (params.max_clusters > 0 && left >= params.max_clusters
+                      ? "the max_clusters budget forced merges past it"
+                      : "clusters forced to merge (small_cluster_threshold, min_clusters), or "
+                        "concave parts the rays along the surface normals do not see");
+      }
+      rep.target_note = "max_concavity " + std::to_string(d) + " not reached (" +
+                        std::to_string(rep.concavity) + "): " + cause;
+    }
+    if (!params.compute_report) {
+      // The caller did not ask for the measures (the target needed them).
+      const Report keep = rep;
+      rep = Report();
+      rep.closed_input = keep.closed_input;
+      rep.parts_before_merge = keep.parts_before_merge;
+      rep.target_reached = keep.target_reached;
+      rep.target_note = keep.target_note;
+      rep.attempts = keep.attempts;
+      rep.seconds_simplify = keep.seconds_simplify;
+      rep.seconds_clip = keep.seconds_clip;
+      rep.seconds_hulls = keep.seconds_hulls;
+      rep.seconds_report = keep.seconds_report;
+    }
+  }
+  if (!params.compute_report) rep.hulls.clear();
 
   // Output in input coordinates.
   const double vol_scale = std::pow(extent / to_norm, 3);

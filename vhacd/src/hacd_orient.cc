@@ -1,6 +1,7 @@
 #include "hacd_orient.h"
 
 #include <algorithm>
+#include <array>
 #include <tuple>
 
 namespace vhacd {
@@ -10,32 +11,49 @@ size_t OrientConsistently(const std::vector<Vec3>& points,
                           std::vector<std::array<uint32_t, 3>>* triangles) {
   auto& tris = *triangles;
   const uint32_t n = static_cast<uint32_t>(tris.size());
+  // Edge uses bucketed by their smaller vertex, each bucket sorted by (larger vertex, triangle):
+  // the order of one global sort by (edge, triangle), without sorting 3n entries at once.
   struct Use {
-    uint64_t key;
-    uint32_t tri;
+    uint32_t other, tri;
     bool forward;  // the triangle walks the edge from its smaller to its larger vertex
   };
-  std::vector<Use> uses;
-  uses.reserve(size_t{n} * 3);
-  for (uint32_t t = 0; t < n; ++t)
-    for (int k = 0; k < 3; ++k) {
-      const uint32_t a = tris[t][k], b = tris[t][(k + 1) % 3];
-      uses.push_back({(uint64_t{std::min(a, b)} << 32) | std::max(a, b), t, a < b});
+  const size_t nv = points.size();
+  std::vector<uint32_t> first(nv + 1, 0);
+  for (const auto& tri : tris)
+    for (int k = 0; k < 3; ++k) ++first[std::min(tri[k], tri[(k + 1) % 3]) + 1];
+  for (size_t v = 0; v < nv; ++v) first[v + 1] += first[v];
+  std::vector<Use> uses(first[nv]);
+  {
+    std::vector<uint32_t> fill(first.begin(), first.end() - 1);
+    for (uint32_t t = 0; t < n; ++t)
+      for (int k = 0; k < 3; ++k) {
+        const uint32_t a = tris[t][k], b = tris[t][(k + 1) % 3];
+        uses[fill[std::min(a, b)]++] = {std::max(a, b), t, a < b};
+      }
+  }
+  // Manifold neighbours (other triangle, same direction?), at most one per edge of a triangle.
+  struct Neighbours {
+    std::array<std::pair<uint32_t, bool>, 3> of;
+    uint8_t count = 0;
+  };
+  std::vector<Neighbours> nbr(n);
+  for (size_t v = 0; v < nv; ++v) {
+    const auto begin = uses.begin() + first[v], end = uses.begin() + first[v + 1];
+    std::sort(begin, end, [](const Use& x, const Use& y) {
+      return std::tie(x.other, x.tri) < std::tie(y.other, y.tri);
+    });
+    for (auto i = begin; i != end;) {
+      auto j = i;
+      while (j != end && j->other == i->other) ++j;
+      if (j - i == 2) {
+        const bool same = i[0].forward == i[1].forward;
+        Neighbours& x = nbr[i[0].tri];
+        Neighbours& y = nbr[i[1].tri];
+        if (x.count < 3) x.of[x.count++] = {i[1].tri, same};
+        if (y.count < 3) y.of[y.count++] = {i[0].tri, same};
+      }
+      i = j;
     }
-  std::sort(uses.begin(), uses.end(), [](const Use& x, const Use& y) {
-    return std::tie(x.key, x.tri) < std::tie(y.key, y.tri);
-  });
-  // Manifold neighbours: (other triangle, same direction?) per triangle.
-  std::vector<std::vector<std::pair<uint32_t, bool>>> nbr(n);
-  for (size_t i = 0; i < uses.size();) {
-    size_t j = i;
-    while (j < uses.size() && uses[j].key == uses[i].key) ++j;
-    if (j - i == 2) {
-      const bool same = uses[i].forward == uses[i + 1].forward;
-      nbr[uses[i].tri].push_back({uses[i + 1].tri, same});
-      nbr[uses[i + 1].tri].push_back({uses[i].tri, same});
-    }
-    i = j;
   }
   std::vector<int8_t> flip(n, -1);
   std::vector<uint32_t> piece, queue;
@@ -48,7 +66,8 @@ size_t OrientConsistently(const std::vector<Vec3>& points,
     for (size_t q = 0; q < queue.size(); ++q) {
       const uint32_t t = queue[q];
       piece.push_back(t);
-      for (const auto& [o, same] : nbr[t]) {
+      for (uint8_t k = 0; k < nbr[t].count; ++k) {
+        const auto [o, same] = nbr[t].of[k];
         if (flip[o] >= 0) continue;
         flip[o] = static_cast<int8_t>(flip[t] ^ (same ? 1 : 0));
         queue.push_back(o);

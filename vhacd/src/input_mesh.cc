@@ -5,6 +5,15 @@
 namespace vhacd {
 namespace internal {
 
+namespace {
+
+template <typename T>
+void FreeMemory(std::vector<T>& v) {
+  std::vector<T>().swap(v);
+}
+
+}  // namespace
+
 Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* why) {
   if (m.point_count == 0 || m.triangle_count == 0) {
     *why = "the mesh has no points or no triangles";
@@ -66,6 +75,13 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
     return a < b;
   });
   std::vector<uint32_t> remap(np, 0);
+  // Sized before they are filled: the mesh stays for the whole decomposition, and grown one
+  // element at a time it would hold up to twice its size.
+  size_t distinct = 0;
+  for (size_t k = 0; k < order.size(); ++k)
+    distinct += k == 0 || pts[order[k]] != pts[order[k - 1]];
+  out->points.reserve(distinct);
+  out->point_source.reserve(distinct);
   for (size_t k = 0; k < order.size(); ++k) {
     if (k == 0 || pts[order[k]] != pts[order[k - 1]]) {
       out->points.push_back(pts[order[k]]);
@@ -73,9 +89,15 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
     }
     remap[order[k]] = static_cast<uint32_t>(out->points.size() - 1);
   }
+  // Each working array is freed once done: the decomposition beside which this may run (a
+  // pipeline also encodes the mesh) feels the sum of what is alive at once.
+  FreeMemory(pts);
+  FreeMemory(used);
+  FreeMemory(order);
   if (cancelled()) return Status::kCancelled;
   // Triangles: drop degenerate and duplicate (same vertex set) ones, keep the first.
   std::vector<std::pair<std::array<uint32_t, 3>, uint32_t>> keyed;
+  keyed.reserve(m.triangle_count);
   for (size_t t = 0; t < m.triangle_count; ++t) {
     std::array<uint32_t, 3> tri;
     for (int k = 0; k < 3; ++k) tri[k] = remap[m.indices[t * m.triangle_stride + k]];
@@ -86,15 +108,21 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
   }
   std::sort(keyed.begin(), keyed.end());
   std::vector<uint32_t> keep;
+  keep.reserve(keyed.size());
   for (size_t k = 0; k < keyed.size(); ++k)
     if (k == 0 || keyed[k].first != keyed[k - 1].first) keep.push_back(keyed[k].second);
+  FreeMemory(keyed);
   std::sort(keep.begin(), keep.end());
+  out->triangles.reserve(keep.size());
+  out->triangle_source.reserve(keep.size());
   for (uint32_t t : keep) {
     std::array<uint32_t, 3> tri;
     for (int k = 0; k < 3; ++k) tri[k] = remap[m.indices[t * m.triangle_stride + k]];
     out->triangles.push_back(tri);
     out->triangle_source.push_back(t);
   }
+  FreeMemory(keep);
+  FreeMemory(remap);
   if (out->triangles.empty()) {
     *why = "every triangle is degenerate";
     return Status::kEmptyMesh;

@@ -11,33 +11,36 @@ TriangleIndex::TriangleIndex(const GridMesh& mesh, const int dims[3], int cell)
   for (int a = 0; a < 3; ++a) dims_[a] = std::max(1, (dims[a] + cell - 1) / cell);
   const size_t ncell = static_cast<size_t>(dims_[0]) * dims_[1] * dims_[2];
   const size_t nt = mesh.triangles.size();
-  tlo_.resize(nt);
-  thi_.resize(nt);
-  std::vector<std::array<int, 6>> range(nt);
-  start_.assign(ncell + 1, 0);
-  for (size_t t = 0; t < nt; ++t) {
-    const auto& tr = mesh.triangles[t];
-    tlo_[t] = mesh.points[tr[0]].cwiseMin(mesh.points[tr[1]]).cwiseMin(mesh.points[tr[2]]);
-    thi_[t] = mesh.points[tr[0]].cwiseMax(mesh.points[tr[1]]).cwiseMax(mesh.points[tr[2]]);
+  // The cells a triangle's box covers, found again in each pass: stored, they and the boxes took
+  // 72 bytes per triangle, three times the mesh's own points and triangles.
+  auto cells = [&](size_t t, int range[6]) {
+    Vec3 lo, hi;
+    TriangleBox(t, &lo, &hi);
     for (int a = 0; a < 3; ++a) {
-      range[t][a] = std::clamp(static_cast<int>(std::floor(tlo_[t][a])) / cell, 0, dims_[a] - 1);
-      range[t][a + 3] =
-          std::clamp(static_cast<int>(std::floor(thi_[t][a])) / cell, 0, dims_[a] - 1);
+      range[a] = std::clamp(static_cast<int>(std::floor(lo[a])) / cell, 0, dims_[a] - 1);
+      range[a + 3] = std::clamp(static_cast<int>(std::floor(hi[a])) / cell, 0, dims_[a] - 1);
     }
-    for (int z = range[t][2]; z <= range[t][5]; ++z)
-      for (int y = range[t][1]; y <= range[t][4]; ++y)
-        for (int x = range[t][0]; x <= range[t][3]; ++x)
+  };
+  start_.assign(ncell + 1, 0);
+  int range[6];
+  for (size_t t = 0; t < nt; ++t) {
+    cells(t, range);
+    for (int z = range[2]; z <= range[5]; ++z)
+      for (int y = range[1]; y <= range[4]; ++y)
+        for (int x = range[0]; x <= range[3]; ++x)
           ++start_[(static_cast<size_t>(z) * dims_[1] + y) * dims_[0] + x + 1];
   }
   for (size_t c = 0; c < ncell; ++c) start_[c + 1] += start_[c];
   ids_.resize(start_[ncell]);
   std::vector<uint32_t> fill(start_.begin(), start_.end() - 1);
-  for (size_t t = 0; t < nt; ++t)
-    for (int z = range[t][2]; z <= range[t][5]; ++z)
-      for (int y = range[t][1]; y <= range[t][4]; ++y)
-        for (int x = range[t][0]; x <= range[t][3]; ++x)
+  for (size_t t = 0; t < nt; ++t) {
+    cells(t, range);
+    for (int z = range[2]; z <= range[5]; ++z)
+      for (int y = range[1]; y <= range[4]; ++y)
+        for (int x = range[0]; x <= range[3]; ++x)
           ids_[fill[(static_cast<size_t>(z) * dims_[1] + y) * dims_[0] + x]++] =
               static_cast<uint32_t>(t);
+  }
 }
 
 void ClipTriangleToBox(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& lo, const Vec3& hi,

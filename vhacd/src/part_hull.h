@@ -29,8 +29,13 @@ class TriangleIndex {
   const GridMesh& mesh_;
   int cell_;
   int dims_[3];
+  // The bounding box of triangle t.
+  void TriangleBox(size_t t, Vec3* lo, Vec3* hi) const {
+    const auto& tr = mesh_.triangles[t];
+    *lo = mesh_.points[tr[0]].cwiseMin(mesh_.points[tr[1]]).cwiseMin(mesh_.points[tr[2]]);
+    *hi = mesh_.points[tr[0]].cwiseMax(mesh_.points[tr[1]]).cwiseMax(mesh_.points[tr[2]]);
+  }
   std::vector<uint32_t> start_, ids_;
-  std::vector<Vec3> tlo_, thi_;
 };
 
 // Appends the vertices of the polygon (triangle abc) intersected with the box [lo, hi].
@@ -57,8 +62,9 @@ void TriangleIndex::ForEachInBox(const Vec3& lo, const Vec3& hi, std::vector<uin
           const uint32_t t = ids_[k];
           if ((*stamp)[t] == mark) continue;
           (*stamp)[t] = mark;
-          if ((tlo_[t].array() > hi.array()).any() || (thi_[t].array() < lo.array()).any())
-            continue;
+          Vec3 tlo, thi;
+          TriangleBox(t, &tlo, &thi);
+          if ((tlo.array() > hi.array()).any() || (thi.array() < lo.array()).any()) continue;
           fn(t);
         }
       }

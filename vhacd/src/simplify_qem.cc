@@ -6,6 +6,8 @@
 #include <cmath>
 #include <tuple>
 
+#include "thread_pool.h"
+
 namespace vhacd {
 namespace internal {
 namespace {
@@ -35,9 +37,12 @@ struct Entry {
 
 class Collapser {
  public:
-  Collapser(const QemMesh& in, const std::vector<uint64_t>& seams, const QemOptions& opt)
-      : opt_(opt), pos_(in.points), tris_(in.triangles) {
-    const size_t n = pos_.size();
+  // The set-up runs on ctx's threads; every sum keeps the order of a sequential pass (triangles in
+  // index order), so the result does not depend on the thread count.
+  Collapser(const QemMesh& in, const std::vector<uint64_t>& seams, const QemOptions& opt,
+            Context* ctx)
+      : opt_(opt), pos_(in.points), tris_(in.triangles), ctx_(ctx) {
+    const size_t n = pos_.size(), nt = tris_.size();
     quadric_.assign(n, Eigen::Matrix4d::Zero());
     area_.assign(n, 0.0);
     vtris_.resize(n);
@@ -46,58 +51,96 @@ class Collapser {
     border_.assign(n, 0);
     locked_.assign(n, 0);
     seam_nbrs_.resize(n);
-    tri_dead_.assign(tris_.size(), 0);
+    tri_dead_.assign(nt, 0);
     mark_.assign(n, 0);
-    orig_normal_.assign(tris_.size(), Vec3::Zero());
-    alive_tris_ = tris_.size();
-    for (uint32_t t = 0; t < tris_.size(); ++t) {
+    orig_normal_.assign(nt, Vec3::Zero());
+    alive_tris_ = nt;
+    std::vector<uint32_t> degree(n, 0);
+    for (const Tri& tri : tris_)
+      for (uint32_t v : tri) ++degree[v];
+    for (size_t v = 0; v < n; ++v) vtris_[v].reserve(degree[v]);
+    for (uint32_t t = 0; t < nt; ++t)
+      for (uint32_t v : tris_[t]) vtris_[v].push_back(t);
+    // Face planes: per triangle, then summed per vertex over its triangles in index order.
+    std::vector<double> tri_area(nt, 0.0);
+    Chunked(nt, [&](size_t t) {
       const Tri& tri = tris_[t];
-      for (uint32_t v : tri) vtris_[v].push_back(t);
-      Vec3 nrm = (pos_[tri[1]] - pos_[tri[0]]).cross(pos_[tri[2]] - pos_[tri[0]]);
+      const Vec3 nrm = (pos_[tri[1]] - pos_[tri[0]]).cross(pos_[tri[2]] - pos_[tri[0]]);
       const double len = nrm.norm();
-      if (!(len > 0)) continue;
-      nrm /= len;
-      orig_normal_[t] = nrm;
-      const double area = 0.5 * len;
-      for (uint32_t v : tri) {
-        AddPlane(v, nrm, pos_[tri[0]], area);
-        area_[v] += area;
+      if (!(len > 0)) return;
+      orig_normal_[t] = nrm / len;
+      tri_area[t] = 0.5 * len;
+    });
+    Chunked(n, [&](size_t v) {
+      for (uint32_t t : vtris_[v]) {
+        if (!(tri_area[t] > 0)) continue;
+        AddPlane(static_cast<uint32_t>(v), orig_normal_[t], pos_[tris_[t][0]], tri_area[t]);
+        area_[v] += tri_area[t];
       }
+    });
+    // Edges (a < b) with the triangles using them, in (a, b, triangle) order: bucketed by a, each
+    // bucket sorted. Use counts: 1 = border, > 2 = non-manifold (locked).
+    std::vector<uint32_t> first(n + 1, 0);
+    for (const Tri& tri : tris_)
+      for (int k = 0; k < 3; ++k) ++first[std::min(tri[k], tri[(k + 1) % 3]) + 1];
+    for (size_t v = 0; v < n; ++v) first[v + 1] += first[v];
+    std::vector<std::pair<uint32_t, uint32_t>> uses(first[n]);  // (b, triangle)
+    {
+      std::vector<uint32_t> fill(first.begin(), first.end() - 1);
+      for (uint32_t t = 0; t < nt; ++t)
+        for (int k = 0; k < 3; ++k) {
+          const uint32_t a = tris_[t][k], b = tris_[t][(k + 1) % 3];
+          uses[fill[std::min(a, b)]++] = {std::max(a, b), t};
+        }
     }
-    // Edge use counts: 1 = border, > 2 = non-manifold (locked).
-    std::vector<std::pair<uint64_t, uint32_t>> edges;
-    for (uint32_t t = 0; t < tris_.size(); ++t)
-      for (int k = 0; k < 3; ++k) edges.emplace_back(Key(tris_[t][k], tris_[t][(k + 1) % 3]), t);
-    std::sort(edges.begin(), edges.end());
+    Chunked(n, [&](size_t v) { std::sort(uses.begin() + first[v], uses.begin() + first[v + 1]); });
     std::vector<uint64_t> seam_keys(seams);
     std::sort(seam_keys.begin(), seam_keys.end());
-    for (size_t i = 0; i < edges.size();) {
-      size_t j = i;
-      while (j < edges.size() && edges[j].first == edges[i].first) ++j;
-      const uint64_t key = edges[i].first;
-      const uint32_t a = static_cast<uint32_t>(key >> 32), b = static_cast<uint32_t>(key);
-      const bool seam = std::binary_search(seam_keys.begin(), seam_keys.end(), key);
-      if (j - i > 2) {
-        locked_[a] = locked_[b] = 1;
-      } else if (j - i == 1 || seam) {
-        border_[a] = border_[b] = 1;
-        if (seam) {
-          seam_nbrs_[a].push_back(b);
-          seam_nbrs_[b].push_back(a);
+    for (uint32_t a = 0; a < n; ++a) {
+      for (size_t i = first[a]; i < first[a + 1];) {
+        size_t j = i;
+        while (j < first[a + 1] && uses[j].first == uses[i].first) ++j;
+        const uint32_t b = uses[i].first;
+        const uint64_t key = (uint64_t{a} << 32) | b;
+        const bool seam = std::binary_search(seam_keys.begin(), seam_keys.end(), key);
+        if (j - i > 2) {
+          locked_[a] = locked_[b] = 1;
+        } else if (j - i == 1 || seam) {
+          border_[a] = border_[b] = 1;
+          if (seam) {
+            seam_nbrs_[a].push_back(b);
+            seam_nbrs_[b].push_back(a);
+          }
+          for (size_t k = i; k < j; ++k) AddBorderPlane(a, b, uses[k].second);
         }
-        for (size_t k = i; k < j; ++k) AddBorderPlane(a, b, edges[k].second);
+        unique_edges_.push_back(key);
+        i = j;
       }
-      unique_edges_.push_back(key);
-      i = j;
     }
     if (opt_.lock_boundary)
       for (size_t v = 0; v < n; ++v) locked_[v] |= border_[v];
   }
 
   bool Run(Context* ctx, QemMesh* out) {
-    heap_.reserve(unique_edges_.size());
-    for (uint64_t key : unique_edges_) Push(static_cast<uint32_t>(key >> 32), uint32_t(key));
+    // The first candidates in parallel, heaped at once (the pop order depends only on the
+    // entries, which are all distinct).
+    {
+      std::vector<Entry> first(unique_edges_.size());
+      std::vector<uint8_t> ok(unique_edges_.size(), 0);
+      Chunked(unique_edges_.size(), [&](size_t i) {
+        Candidate c;
+        if (!Best(static_cast<uint32_t>(unique_edges_[i] >> 32), uint32_t(unique_edges_[i]), &c))
+          return;
+        first[i] = {c.cost, c.from, c.to, stamp_[c.from], stamp_[c.to]};
+        ok[i] = 1;
+      });
+      heap_.reserve(unique_edges_.size());
+      for (size_t i = 0; i < first.size(); ++i)
+        if (ok[i]) heap_.push_back(first[i]);
+      std::make_heap(heap_.begin(), heap_.end(), std::greater<Entry>());
+    }
     std::vector<uint64_t>().swap(unique_edges_);
+    if (cancelled_) return false;
     const size_t start = alive_tris_;
     size_t pops = 0;
     while (!heap_.empty() && alive_tris_ > opt_.target_triangles) {
@@ -125,9 +168,15 @@ class Collapser {
   }
 
  private:
-  static uint64_t Key(uint32_t a, uint32_t b) {
-    if (a > b) std::swap(a, b);
-    return (uint64_t{a} << 32) | b;
+  // fn(i) for i in [0, n) on ctx's threads, in blocks (the per-item work is small).
+  // A cancelled loop leaves work undone: cancelled_ then makes Run fail.
+  template <typename F>
+  void Chunked(size_t n, const F& fn) {
+    constexpr size_t kBlock = 2048;
+    if (!ParallelFor(ctx_, (n + kBlock - 1) / kBlock, [&](size_t b) {
+          for (size_t i = b * kBlock, end = std::min(n, i + kBlock); i < end; ++i) fn(i);
+        }))
+      cancelled_ = true;
   }
 
   void AddPlane(uint32_t v, const Vec3& n, const Vec3& p, double w) {
@@ -351,8 +400,7 @@ class Collapser {
     ++stamp_[v];
     ++stamp_[u];
     Neighbours(v, &nv_);
-    const std::vector<uint32_t> nbrs = nv_;
-    for (uint32_t w : nbrs) Push(v, w);
+    for (uint32_t w : nv_) Push(v, w);
   }
 
   void Output(QemMesh* out) {
@@ -381,6 +429,8 @@ class Collapser {
   QemOptions opt_;
   std::vector<Vec3> pos_;
   std::vector<Tri> tris_;
+  Context* ctx_ = nullptr;
+  bool cancelled_ = false;
   std::vector<Eigen::Matrix4d, Eigen::aligned_allocator<Eigen::Matrix4d>> quadric_;
   std::vector<double> area_;
   std::vector<std::vector<uint32_t>> vtris_, seam_nbrs_;
@@ -421,7 +471,7 @@ bool SimplifyQem(const QemMesh& in, const std::vector<uint64_t>& seam_edges,
   local.triangles = in.triangles;
   QemOptions opt = options;
   opt.max_error = options.max_error / diag;
-  Collapser collapser(local, seam_edges, opt);
+  Collapser collapser(local, seam_edges, opt, ctx);
   if (!collapser.Run(ctx, out)) return false;
   for (Vec3& p : out->points) p = center + p * diag;
   out->error *= diag;

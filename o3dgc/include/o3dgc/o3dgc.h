@@ -53,7 +53,7 @@ namespace o3dgc {
 
 // Stream format version written by Encode (see "Format versions" above).
 constexpr uint32_t kFormatMajor = 1;
-constexpr uint32_t kFormatMinor = 0;
+constexpr uint32_t kFormatMinor = 1;
 
 // "1.0": the stream format version this library writes, for --version output.
 const char* FormatVersionString();

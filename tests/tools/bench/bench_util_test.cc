@@ -62,5 +62,24 @@ TEST(MergeGeometryTest, WeldsVerticesThatDifferedOnlyInColourButRepairsNothingEl
             (std::vector<float>{5, 5, 5}));
 }
 
+TEST(MergeGeometryTest, KeepsTheSkinOnlyWhenAsked) {
+  Scene scene;
+  Mesh m = SeamQuad();
+  m.joints.assign(4 * m.vertex_count(), 0);
+  m.weights.assign(4 * m.vertex_count(), 0.0f);
+  for (size_t v = 0; v < m.vertex_count(); ++v) {
+    m.joints[4 * v] = uint16_t(v % 2);
+    m.weights[4 * v] = 1.0f;
+  }
+  scene.meshes = {m};
+  const Mesh kept = MergeGeometry(scene, true);
+  EXPECT_TRUE(kept.has_skin());
+  EXPECT_EQ(kept.joints, m.joints);
+  EXPECT_EQ(kept.weights, m.weights);
+  const Mesh dropped = MergeGeometry(scene);
+  EXPECT_FALSE(dropped.has_skin());
+  EXPECT_TRUE(dropped.joints.empty() && dropped.weights.empty());
+}
+
 }  // namespace
 }  // namespace hullpack

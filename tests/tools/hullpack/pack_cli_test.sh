@@ -27,6 +27,8 @@ sample=$src/samples/torus.obj
 run 0 pack -- "$bin" pack "$sample" -o "$tmp/t.glb" --report "$tmp/t.json" --quiet
 [ -s "$tmp/t.glb" ] && pass || fail "pack wrote nothing"
 grep -q '"hull_count"' "$tmp/t.json" && grep -q '"max_error_fraction"' "$tmp/t.json" && pass || fail "report lacks fields"
+# The write stage (temp file + rename) is timed: a positive number, not the 0 of an untimed stage.
+grep -Eq '"write": [0-9.]+e-[0-9]+|"write": 0\.[0-9]*[1-9]' "$tmp/t.json" && pass || fail "seconds.write is not timed: $(grep '"write"' "$tmp/t.json")"
 run 0 info-packed -- "$bin" info "$tmp/t.glb"
 cp "$tmp/t.glb" "$tmp/hulls.glb"  # compressed mesh + OMI hulls, no fallback (validated below)
 grep -q '"hull_position_bits"' "$tmp/t.json" && grep -q '"hull_encode"' "$tmp/t.json" && pass || fail "report lacks hull fields"
@@ -41,6 +43,28 @@ run 0 unpack-glb -- "$bin" unpack "$tmp/t.glb" -o "$tmp/plain.glb"
 run 0 unpack-obj -- "$bin" unpack "$tmp/t.glb" -o "$tmp/plain.obj"
 run 0 info-unpacked -- "$bin" info "$tmp/plain.obj"
 grep -q "triangles 1024" "$tmp/out" && pass || fail "unpacked OBJ: $(cat "$tmp/out")"
+# With hulls: OBJ and WRL get each hull as a closed mesh after the render mesh; OFF and PLY (one
+# mesh per file) get them in STEM.hulls.off / .ply.
+hulls=$(grep -o '"hull_count": *[0-9]*' "$tmp/t.json" | grep -o '[0-9]*$')
+run 0 unpack-hulls-obj -- "$bin" unpack "$tmp/hulls.glb" -o "$tmp/h.obj"
+[ "$(grep -c '^o hull_' "$tmp/h.obj")" = "$hulls" ] && pass || fail "OBJ hull objects: $(grep -c '^o hull_' "$tmp/h.obj"), report $hulls"
+grep -q "$hulls hulls" "$tmp/out" && pass || fail "unpack summary: $(cat "$tmp/out")"
+run 0 info-hulls-obj -- "$bin" info "$tmp/h.obj"
+grep -q "meshes $((hulls + 1))" "$tmp/out" && pass || fail "OBJ read back: $(cat "$tmp/out")"
+run 0 unpack-hulls-wrl -- "$bin" unpack "$tmp/hulls.glb" -o "$tmp/h.wrl"
+run 0 info-hulls-wrl -- "$bin" info "$tmp/h.wrl"
+grep -q "meshes $((hulls + 1))" "$tmp/out" && pass || fail "WRL read back: $(cat "$tmp/out")"
+for ext in off ply; do
+  run 0 unpack-hulls-$ext -- "$bin" unpack "$tmp/hulls.glb" -o "$tmp/h.$ext"
+  run 0 info-render-$ext -- "$bin" info "$tmp/h.$ext"
+  grep -q "triangles 1024" "$tmp/out" && pass || fail "$ext render mesh: $(cat "$tmp/out")"
+  run 0 info-hulls-$ext -- "$bin" info "$tmp/h.hulls.$ext"
+  grep -q "triangles [1-9]" "$tmp/out" && pass || fail "$ext hulls: $(cat "$tmp/out")"
+  # The hulls' file is not replaced without --force either (and then nothing is written).
+  rm "$tmp/h.$ext"
+  run 1 unpack-hulls-$ext-exists -- "$bin" unpack "$tmp/hulls.glb" -o "$tmp/h.$ext"
+  [ ! -e "$tmp/h.$ext" ] && pass || fail "$ext written although its hulls' file exists"
+done
 
 # --fast-decode: another stream (values in vertex id order), the same decoded mesh on the same
 # grid (with --max-error each order may find another grid smallest).
@@ -66,6 +90,14 @@ run 0 hulls-count -- "$bin" pack "$sample" -o "$tmp/n.glb" --hulls 5 --report "$
 grep -q '"hull_count": *5[,}]' "$tmp/n.json" && pass || fail "--hulls 5: $(grep -o '"hull_count": *[0-9]*' "$tmp/n.json")"
 run 0 max-concavity -- "$bin" pack "$sample" -o "$tmp/d.glb" --max-concavity 0.05 --quiet
 run 64 bad-hull-count -- "$bin" pack "$sample" -o "$tmp/x.glb" --hulls 0
+# --method hacd takes the count, the budget and the target; the voxel options are usage errors.
+run 0 hacd-count -- "$bin" pack "$sample" -o "$tmp/h.glb" --method hacd --hulls 4 --report "$tmp/h.json" --quiet
+grep -q '"hull_count": *4[,}]' "$tmp/h.json" && pass || fail "hacd --hulls 4: $(grep -o '"hull_count": *[0-9]*' "$tmp/h.json")"
+run 0 hacd-budget -- "$bin" pack "$sample" -o "$tmp/hb.glb" --method hacd --max-hulls 2 --report "$tmp/hb.json" --quiet
+grep -q '"hull_count": *2[,}]' "$tmp/hb.json" && pass || fail "hacd --max-hulls 2: $(grep -o '"hull_count": *[0-9]*' "$tmp/hb.json")"
+run 0 hacd-target -- "$bin" pack "$sample" -o "$tmp/ht.glb" --method hacd --max-concavity 0.05 --concavity 0.04 --quiet
+run 64 hacd-resolution -- "$bin" pack "$sample" -o "$tmp/x.glb" --method hacd --resolution 20000
+run 64 hacd-quality -- "$bin" batch "$sample" -o "$tmp/xb" --method hacd --quality high
 run 64 bad-option -- "$bin" pack "$sample" -o "$tmp/x.glb" --max-error -1
 
 # The Khronos validator on the packed and unpacked files (skipped without node + gltf-validator).

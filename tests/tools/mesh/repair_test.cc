@@ -221,28 +221,40 @@ TEST(RepairTest, EmptyMesh) {
 namespace hullpack {
 namespace {
 
-// The sorts run on several threads for large meshes: the repaired mesh is the same.
+// The sorts and the degenerate-triangle pass run on several threads for large meshes: the
+// repaired mesh and the counts are the same.
 TEST(RepairMesh, TheResultDoesNotDependOnTheThreadCount) {
+  constexpr uint32_t n = 70000;
   Mesh m;
-  for (uint32_t i = 0; i < 30000; ++i) {
+  for (uint32_t i = 0; i < n; ++i) {
     // Positions repeat every 1000 vertices (welds); a few triangles repeat (duplicates).
     const float x = static_cast<float>(i % 1000);
-    m.positions.insert(m.positions.end(), {x, x * 0.5f, 1.0f});
+    m.positions.insert(m.positions.end(), {x, x * 0.5f + static_cast<float>(i % 1000 % 7),
+                                           static_cast<float>(i % 1000 % 13)});
   }
-  for (uint32_t t = 0; t + 2 < 30000; ++t) {
-    const uint32_t a = (t * 7919u) % 30000u, b = (t * 104729u + 1) % 30000u, c = (t + 5) % 30000u;
+  // Three distinct collinear points for zero-area triangles.
+  m.positions.insert(m.positions.end(), {2000, 2000, 2000, 2001, 2001, 2001, 2002, 2002, 2002});
+  for (uint32_t t = 0; t + 2 < n; ++t) {
+    const uint32_t a = (t * 7919u) % n, b = (t * 104729u + 1) % n, c = (t + 5) % n;
     m.indices.insert(m.indices.end(), {a, b, c});
     if (t % 97 == 0) m.indices.insert(m.indices.end(), {b, c, a});
+    if (t % 101 == 0) m.indices.insert(m.indices.end(), {a, a, c});
+    if (t % 103 == 0) m.indices.insert(m.indices.end(), {n, n + 1 + t % 2, n + 2 - t % 2});
   }
   Mesh one = m, many = m;
   RepairOptions single, threaded;
+  single.remove_zero_area_triangles = threaded.remove_zero_area_triangles = true;
   threaded.threads = 3;
   const RepairReport r1 = RepairMesh(one, single);
   const RepairReport r3 = RepairMesh(many, threaded);
   EXPECT_GT(r1.welded_vertices, 0u);
   EXPECT_GT(r1.duplicate_triangles_removed, 0u);
+  EXPECT_GT(r1.degenerate_triangles_removed, 0u);
+  EXPECT_GT(r1.zero_area_triangles_removed, 0u);
   EXPECT_EQ(r1.welded_vertices, r3.welded_vertices);
   EXPECT_EQ(r1.duplicate_triangles_removed, r3.duplicate_triangles_removed);
+  EXPECT_EQ(r1.degenerate_triangles_removed, r3.degenerate_triangles_removed);
+  EXPECT_EQ(r1.zero_area_triangles_removed, r3.zero_area_triangles_removed);
   EXPECT_EQ(one.positions, many.positions);
   EXPECT_EQ(one.indices, many.indices);
 }

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 
 #include "gltf/glb_reader.h"
 #include "mesh/topology.h"
@@ -145,11 +146,10 @@ TEST(Pack, RoundTripKeepsGeometryWithinTheBudgetMaterialsSkinAndHierarchy) {
 
   const nlohmann::json& json = doc.json();
   // Colliders: OMI shapes, one per hull, each a convex mesh, on children of the wheel's node. The
-  // hulls are plain quantized points: no hullpack extension (KHR_mesh_quantization is required).
+  // hulls are plain points: no hullpack extension, nothing required because of them.
   Result<GltfDocument> raw = DecodeGlbDocument(packed->glb.data(), packed->glb.size(), "p.glb");
   ASSERT_TRUE(raw.ok());
-  EXPECT_EQ(raw->json()["extensionsRequired"],
-            nlohmann::json::array({kMeshCompressionExtension, "KHR_mesh_quantization"}));
+  EXPECT_EQ(raw->json()["extensionsRequired"], nlohmann::json::array({kMeshCompressionExtension}));
   Result<std::vector<CollisionHull>> hulls = ReadCollisionHulls(doc, "packed.glb");
   ASSERT_TRUE(hulls.ok()) << hulls.status().ToString();
   ASSERT_EQ(hulls->size(), r.meshes[0].hull_count);
@@ -237,6 +237,46 @@ TEST(Pack, FallbackFilesWithHullsRequireNoExtension) {
   const std::vector<std::vector<float>> a = hulls_of(plain.value());
   EXPECT_GT(a.size(), 1u);
   EXPECT_EQ(a, hulls_of(fallback.value()));
+}
+
+TEST(Pack, QuantizedHullsRequireKhrMeshQuantizationAndGiveTheSamePoints) {
+  // Default hulls hold their grid integers as floats; --quantized-hulls stores the same integers
+  // as bytes or shorts (smaller) and requires KHR_mesh_quantization. An engine gets the same
+  // points.
+  PackOptions options = FastOptions();
+  Result<PackResult> floats = PackScene(TestScene(), options);
+  options.glb.quantized_hulls = true;
+  Result<PackResult> quantized = PackScene(TestScene(), options);
+  ASSERT_TRUE(floats.ok() && quantized.ok());
+  EXPECT_LT(quantized->glb.size(), floats->glb.size());
+  auto read = [](const PackResult& p, std::vector<std::vector<float>>* points) {
+    GltfDocument d;
+    EXPECT_TRUE(ReadPackedGltf(p.glb.data(), p.glb.size(), "p.glb", "", &d).ok());
+    Result<std::vector<CollisionHull>> h = ReadCollisionHulls(d, "p.glb");
+    EXPECT_TRUE(h.ok());
+    for (const CollisionHull& c : h.value()) points->push_back(c.hull.positions);
+    Result<GltfDocument> raw = DecodeGlbDocument(p.glb.data(), p.glb.size(), "p.glb");
+    EXPECT_TRUE(raw.ok());
+    std::set<int> types;
+    for (const auto& mesh : raw->json()["meshes"]) {
+      const auto& prim = mesh["primitives"][0];
+      if (prim.value("mode", 4) == 0)
+        types.insert(
+            raw->json()["accessors"][prim["attributes"]["POSITION"].get<int>()]["componentType"]
+                .get<int>());
+    }
+    return std::make_pair(raw->json()["extensionsRequired"], types);
+  };
+  std::vector<std::vector<float>> a, b;
+  const auto [required_floats, types_floats] = read(floats.value(), &a);
+  const auto [required_quantized, types_quantized] = read(quantized.value(), &b);
+  EXPECT_EQ(required_floats, nlohmann::json::array({kMeshCompressionExtension}));
+  EXPECT_EQ(types_floats, std::set<int>({gltf::kFloat}));
+  EXPECT_EQ(required_quantized,
+            nlohmann::json::array({kMeshCompressionExtension, "KHR_mesh_quantization"}));
+  EXPECT_EQ(types_quantized.count(gltf::kFloat), 0u);
+  EXPECT_GT(a.size(), 1u);
+  EXPECT_EQ(a, b);
 }
 
 TEST(Pack, KhrPhysicsForm) {

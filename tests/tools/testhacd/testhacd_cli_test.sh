@@ -21,6 +21,7 @@ box_obj() {  # box_obj X0 Y0 Z0 X1 Y1 Z1 FIRST_VERTEX_INDEX
   done
 }
 box_obj 0 0 0 1 1 1 0 >"$tmp/cube.obj"
+samples_torus="$src/samples/torus.obj"
 { box_obj 0 0 0 2 2 2 0; box_obj 4 0 0 6 2 2 8; box_obj 2 0.9 0.9 4 1.1 1.1 16; } >"$tmp/dumbbell.obj"
 
 check_conventions testHACD "$bin"
@@ -40,12 +41,21 @@ grep -q '"method": "hacd"' "$tmp/d.json" && grep -q '"hull_count": 3,' "$tmp/d.j
   fail "named: report: $(head -c 200 "$tmp/d.json")"
 [ -s "$tmp/d.log" ] && pass || fail "named: empty log"
 run min-clusters 0 "hulls: 3 " -- "$bin" "$tmp/cube.obj" --min-clusters 3 --no-report
+# The targets: an exact count, a budget, a target error.
+run hull-count 0 "hulls: 5 " -- "$bin" "$samples_torus" --preset recommended --hulls 5 --no-report
+run hull-count-short 0 "target not reached: the surface could be clustered into only 12" -- \
+  "$bin" "$tmp/cube.obj" --hulls 20 --no-report
+run max-hulls 0 "hulls: 2 " -- "$bin" "$samples_torus" --preset recommended --max-hulls 2 --no-report
+run max-concavity 0 "hulls: " -- "$bin" "$samples_torus" --preset recommended --max-concavity 0.05 \
+  --report "$tmp/t.json"
+grep -q '"attempts": [1-3],' "$tmp/t.json" && pass || fail "max-concavity: no attempts in the report"
 run sample 0 "561 points, 1024 triangles" -- "$bin" "$src/samples/torus.obj" -o "$tmp/torus.glb"
 [ -s "$tmp/torus.glb" ] && pass || fail "sample: no GLB written"
 
 # Mistakes: usage errors exit 64 with one line; a bad input exits 1 naming the file.
 run bad-preset 64 "--preset takes default or recommended" -- "$bin" "$tmp/cube.obj" --preset x
 run out-of-range 64 "--max-vertices" -- "$bin" "$tmp/cube.obj" --max-vertices 2
+run bad-target 64 "--max-concavity" -- "$bin" "$tmp/cube.obj" --max-concavity 2
 run two-inputs 64 "unexpected argument" -- "$bin" "$tmp/cube.obj" "$tmp/cube.obj"
 run missing-file 1 "$tmp/none.obj" -- "$bin" "$tmp/none.obj"
 

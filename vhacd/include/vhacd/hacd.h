@@ -32,13 +32,18 @@
 //      `min_clusters` clusters remain, and always when one of its clusters is smaller than
 //      small_cluster_threshold % of the total area (the blog's Simplify);
 //   7. one convex hull per cluster (a flat cluster is given a thickness of 1e-4 of the diagonal).
-//      Extension: the hull is also extended halfway through the solid behind its surface patch
-//      (to the midpoint of the inward ray from each triangle's centre), so that the hulls of the
-//      patches around a solid meet inside it instead of leaving a hollow between them; the
-//      extension is kept only when the points it adds (the centroid of the extended hull and the
-//      midpoints between it and each vertex) lie inside the surface (ray-parity vote). Each hull
-//      is then reduced to max_vertices_per_hull vertices by largest volume increment;
+//      Extension: the hull is also extended through the solid behind its surface patch (to the
+//      point halfway along the inward ray from each triangle's centre, else 3/8, 1/4 or 1/8 of
+//      the way), so that the hulls of the patches around a solid meet inside it instead of
+//      leaving a hollow between them. An extension is kept only when the points it adds (the
+//      centroid of the extended hull and the midpoints between it and each vertex) lie inside the
+//      surface (ray-parity vote) and the cluster's concavity, measured on the extended hull as in
+//      step 6, does not grow: step 6 bounds the concavity of the patch's own hull, and an
+//      extension bridging a concave part of the patch would otherwise reach out of the solid
+//      unmeasured. Each hull is then reduced to max_vertices_per_hull vertices by largest volume
+//      increment;
 //   8. an error report (as Decompose's, measured on a voxel grid of the input).
+// The extensions max_clusters, max_concavity and hull_count (below) change when step 6 stops.
 //
 // Determinism: the output is identical for any num_threads and from run to run.
 #ifndef VHACD_HACD_H_
@@ -69,8 +74,24 @@ struct HacdParameters {
   double compacity_weight = 0.0001;    // [0, 1e3]
   double flat_region_threshold = 1.0;  // % of scale_factor [0, 100]
   double computation_weight = 0.01;    // [0, 1e3]
-  uint32_t num_threads = 0;            // 0 = std::thread::hardware_concurrency() [0, 256]
-  bool compute_report = true;          // fill Result::report's error measures (costs time)
+  // Extensions: the targets of vhacd::Parameters, for HACD.
+  // Hull budget: when > 0 and more clusters remain after the merges above, the cheapest merges go
+  // on, whatever their concavity, down to this many clusters (it lowers min_clusters). A mesh
+  // whose pieces are farther apart than connect_distance may keep more. [0, 100000]
+  uint32_t max_clusters = 0;
+  // Target error: when > 0, the concavity limit becomes max_concavity x the diagonal (`concavity`
+  // is ignored) and the result is measured with the report's Hausdorff distance (Report::
+  // concavity, fraction of the diagonal); while a hull is farther than that, the clustering runs
+  // again with a limit 0.6 times tighter, up to 3 attempts, and the closest result is kept. The
+  // report says whether it was reached (target_reached, target_note, attempts). [0, 1]
+  double max_concavity = 0.0;
+  // Exact hull count: when > 0, the clusters are merged (past `concavity` when needed, and small
+  // clusters too) down to exactly this many, whenever the surface has that many triangles and
+  // its pieces can merge; Report::target_reached / target_note say when it cannot. Takes
+  // precedence over min_clusters, max_clusters and max_concavity. [0, 100000]
+  uint32_t hull_count = 0;
+  uint32_t num_threads = 0;    // 0 = std::thread::hardware_concurrency() [0, 256]
+  bool compute_report = true;  // fill Result::report's error measures (costs time)
 
   static HacdParameters Default() { return HacdParameters(); }
   // The original testHACD's recommended command line `2 100 0 1 1 30 2000`.
