@@ -111,12 +111,15 @@ struct Parameters {
   // bounding-box diagonal of the input surface (the Report's `concavity` measure), then merged
   // while the merged hull stays within it; `concavity`, `gamma` and `max_distance` are then
   // ignored, and the grid is refined (up to 1,000,000 voxels) when max_concavity spans fewer than 3
-  // voxels. The report says whether it was reached (target_reached, target_note). [0, 1]
+  // voxels. How far a hull sticks out is measured on the exact input surface as well as on the
+  // grid, so targets below a voxel are followed. The report says whether it was reached
+  // (target_reached, target_note). For game colliders 0.02 is the recommended setting (closer than
+  // the defaults with fewer hulls; see vhacd/README.md). [0, 1]
   double max_concavity = 0.0;
   // Exact hull count: when > 0, the result has exactly this many hulls whenever the voxel set can
   // be cut into that many parts (parts are cut further when the clipping gives fewer, the pairs
-  // whose merged hull sticks out least are merged when it gives more). Takes precedence over
-  // max_convex_hulls and max_concavity. [0, 100000]
+  // whose merged hull sticks out least from the exact surface are merged when it gives more). Takes
+  // precedence over max_convex_hulls and max_concavity. [0, 100000]
   uint32_t hull_count = 0;
   // Fill rule for open meshes: a cavity that a ball of this diameter (fraction of the diagonal)
   // can reach from outside stays empty (open containers: pots, cups, lidless boxes); smaller
