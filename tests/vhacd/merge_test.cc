@@ -2,17 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include "test_hulls.h"
+
 namespace vhacd {
 namespace internal {
 namespace {
-
-HullMesh BoxHull(double x0, double y0, double z0, double x1, double y1, double z1) {
-  std::vector<Vec3> pts;
-  for (int i = 0; i < 8; ++i) pts.emplace_back(i & 1 ? x1 : x0, i & 2 ? y1 : y0, i & 4 ? z1 : z0);
-  HullMesh h;
-  EXPECT_EQ(ComputeConvexHull(pts, -1.0, &h), HullStatus::kOk);
-  return h;
-}
 
 TEST(MergeTest, MergesTouchingBoxesButNotAnLShape) {
   Context ctx(nullptr, 2);

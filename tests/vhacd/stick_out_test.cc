@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "context.h"
+#include "test_hulls.h"
 #include "test_meshes.h"
 
 namespace vhacd {
@@ -16,14 +17,6 @@ GridMesh ToGrid(const vhacd_test::Mesh& m) {
   for (size_t k = 0; k < m.triangle_count(); ++k)
     g.triangles.push_back({m.indices[3 * k], m.indices[3 * k + 1], m.indices[3 * k + 2]});
   return g;
-}
-
-HullMesh BoxHull(double x0, double y0, double z0, double x1, double y1, double z1) {
-  std::vector<Vec3> pts;
-  for (int i = 0; i < 8; ++i) pts.emplace_back(i & 1 ? x1 : x0, i & 2 ? y1 : y0, i & 4 ? z1 : z0);
-  HullMesh h;
-  EXPECT_EQ(ComputeConvexHull(pts, -1.0, &h), HullStatus::kOk);
-  return h;
 }
 
 TEST(StickOutTest, MeasuresBelowAVoxelOnTheExactSurface) {

@@ -3,38 +3,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <map>
 #include <random>
-#include <utility>
+
+#include "test_meshes.h"
 
 namespace hullpack {
 namespace {
 
-// Each directed edge of a closed mesh appears once, and its reverse once.
-bool Closed(const Mesh& m) {
-  std::map<std::pair<uint32_t, uint32_t>, int> edges;
-  for (size_t t = 0; t < m.triangle_count(); ++t)
-    for (int k = 0; k < 3; ++k) ++edges[{m.indices[t * 3 + k], m.indices[t * 3 + (k + 1) % 3]}];
-  for (const auto& [e, count] : edges) {
-    auto reverse = edges.find({e.second, e.first});
-    if (count != 1 || reverse == edges.end() || reverse->second != 1) return false;
-  }
-  return true;
-}
-
-// Signed volume (positive when the triangles face outwards).
-double Volume(const Mesh& m) {
-  double v = 0;
-  for (size_t t = 0; t < m.triangle_count(); ++t) {
-    const float* a = &m.positions[m.indices[t * 3] * 3];
-    const float* b = &m.positions[m.indices[t * 3 + 1] * 3];
-    const float* c = &m.positions[m.indices[t * 3 + 2] * 3];
-    v += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
-          a[2] * (b[0] * c[1] - b[1] * c[0])) /
-         6.0;
-  }
-  return v;
-}
+using testing_meshes::IsClosed;
+using testing_meshes::SignedVolume;
 
 TEST(ConvexHullOfPoints, CubeCornersWithInnerPointsGiveTheCube) {
   std::vector<float> points;
@@ -49,8 +26,8 @@ TEST(ConvexHullOfPoints, CubeCornersWithInnerPointsGiveTheCube) {
   const Mesh hull = ConvexHullOfPoints(points);
   EXPECT_EQ(hull.vertex_count(), 8u);
   EXPECT_EQ(hull.triangle_count(), 12u);
-  EXPECT_TRUE(Closed(hull));
-  EXPECT_NEAR(Volume(hull), 1.0, 1e-6);
+  EXPECT_TRUE(IsClosed(hull));
+  EXPECT_NEAR(SignedVolume(hull), 1.0, 1e-6);
 }
 
 TEST(ConvexHullOfPoints, EveryPointOfASphereIsAVertex) {
@@ -63,9 +40,9 @@ TEST(ConvexHullOfPoints, EveryPointOfASphereIsAVertex) {
   const Mesh hull = ConvexHullOfPoints(points);
   EXPECT_EQ(hull.vertex_count(), size_t(n));
   EXPECT_EQ(hull.triangle_count(), size_t(2 * n - 4));  // Euler, every vertex on the hull
-  EXPECT_TRUE(Closed(hull));
-  EXPECT_GT(Volume(hull), 0.9 * 4.0 / 3.0 * M_PI);
-  EXPECT_LT(Volume(hull), 4.0 / 3.0 * M_PI);
+  EXPECT_TRUE(IsClosed(hull));
+  EXPECT_GT(SignedVolume(hull), 0.9 * 4.0 / 3.0 * M_PI);
+  EXPECT_LT(SignedVolume(hull), 4.0 / 3.0 * M_PI);
 }
 
 TEST(ConvexHullOfPoints, FlatSetsGiveTheirPolygonOnBothSides) {
@@ -78,7 +55,7 @@ TEST(ConvexHullOfPoints, FlatSetsGiveTheirPolygonOnBothSides) {
   EXPECT_EQ(hull.indices[3], hull.indices[0]);
   EXPECT_EQ(hull.indices[4], hull.indices[2]);
   EXPECT_EQ(hull.indices[5], hull.indices[1]);
-  EXPECT_NEAR(Volume(hull), 0.0, 1e-9);
+  EXPECT_NEAR(SignedVolume(hull), 0.0, 1e-9);
 }
 
 TEST(ConvexHullOfPoints, FewerThanThreeNonCollinearPointsGiveNoTriangles) {

@@ -129,21 +129,10 @@ TEST(FlattenSceneTest, AMirroredInstanceKeepsItsTrianglesFacingOut) {
   mirror.local_transform = {-1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
   mirror.meshes = {0};
   scene.nodes = {mirror};
-  auto volume = [](const Mesh& m) {
-    double v = 0;
-    for (size_t t = 0; t < m.triangle_count(); ++t) {
-      const float* a = &m.positions[m.indices[t * 3] * 3];
-      const float* b = &m.positions[m.indices[t * 3 + 1] * 3];
-      const float* c = &m.positions[m.indices[t * 3 + 2] * 3];
-      v += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
-            a[2] * (b[0] * c[1] - b[1] * c[0])) /
-           6.0;
-    }
-    return v;
-  };
+
   const Mesh all = FlattenScene(scene);
-  EXPECT_GT(volume(UnitCube()), 0);
-  EXPECT_NEAR(volume(all), volume(UnitCube()), 1e-9);
+  EXPECT_GT(testing_meshes::SignedVolume(UnitCube()), 0);
+  EXPECT_NEAR(testing_meshes::SignedVolume(all), testing_meshes::SignedVolume(UnitCube()), 1e-9);
   EXPECT_EQ(all.positions[0], -UnitCube().positions[0]);
 }
 

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdint>
 #include <initializer_list>
+#include <map>
+#include <utility>
 
 #include "common/test_shapes.h"
 #include "scene/scene.h"
@@ -65,6 +67,32 @@ inline Mesh SplitCube() {
 // (test_shapes::Torus).
 inline void AddTorus(Mesh& mesh, float cx, float R, float r, int rings = 48, int sides = 24) {
   test_shapes::AppendTo(test_shapes::Torus(R, r, rings, sides, cx), &mesh, /*with_normals=*/false);
+}
+
+// Each directed edge of a closed mesh appears once, and its reverse once.
+inline bool IsClosed(const Mesh& m) {
+  std::map<std::pair<uint32_t, uint32_t>, int> edges;
+  for (size_t t = 0; t < m.triangle_count(); ++t)
+    for (int k = 0; k < 3; ++k) ++edges[{m.indices[t * 3 + k], m.indices[t * 3 + (k + 1) % 3]}];
+  for (const auto& [e, count] : edges) {
+    auto reverse = edges.find({e.second, e.first});
+    if (count != 1 || reverse == edges.end() || reverse->second != 1) return false;
+  }
+  return true;
+}
+
+// Signed volume (positive when the triangles face outwards).
+inline double SignedVolume(const Mesh& m) {
+  double v = 0;
+  for (size_t t = 0; t < m.triangle_count(); ++t) {
+    const float* a = &m.positions[m.indices[t * 3] * 3];
+    const float* b = &m.positions[m.indices[t * 3 + 1] * 3];
+    const float* c = &m.positions[m.indices[t * 3 + 2] * 3];
+    v += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+          a[2] * (b[0] * c[1] - b[1] * c[0])) /
+         6.0;
+  }
+  return v;
 }
 
 }  // namespace testing_meshes
