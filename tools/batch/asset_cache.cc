@@ -1,6 +1,11 @@
 #include "batch/asset_cache.h"
 
+#include <dirent.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <ctime>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -79,11 +84,37 @@ AssetCache::AssetCache(std::string dir, std::string salt)
   while (dir_.size() > 1 && dir_.back() == '/') dir_.pop_back();
 }
 
+namespace {
+
+// Removes "NAME.tmp-..." files older than `max_age_seconds` in `folder` and its sub-folders.
+void RemoveOldTemporaries(const std::string& folder, double max_age_seconds, int depth) {
+  DIR* dir = opendir(folder.c_str());
+  if (!dir) return;
+  const time_t now = time(nullptr);
+  while (dirent* e = readdir(dir)) {
+    const std::string name = e->d_name;
+    if (name == "." || name == "..") continue;
+    const std::string path = folder + "/" + name;
+    struct stat st;
+    if (lstat(path.c_str(), &st) != 0) continue;
+    if (S_ISDIR(st.st_mode)) {
+      if (depth > 0) RemoveOldTemporaries(path, max_age_seconds, depth - 1);
+    } else if (name.find(".tmp-") != std::string::npos &&
+               difftime(now, st.st_mtime) > max_age_seconds) {
+      unlink(path.c_str());
+    }
+  }
+  closedir(dir);
+}
+
+}  // namespace
+
 Status AssetCache::Prepare() const {
   for (const char* kind : {"", "/inputs", "/objects"}) {
     Status s = MakeDirectories(dir_ + kind);
     if (!s.ok()) return s;
   }
+  RemoveOldTemporaries(dir_, 3600.0, 2);
   return Status::Ok();
 }
 

@@ -32,7 +32,9 @@ class AssetCache {
   // `salt`: everything besides the input that decides the output (CacheSalt).
   AssetCache(std::string dir, std::string salt);
 
-  // Creates the folder. Errors name it.
+  // Creates the folder and removes temporary files that a killed run left in it over an hour ago
+  // (a live writer renames its file within seconds; hosts sharing the cache cannot see each
+  // other's processes, so age decides). Errors name the folder.
   Status Prepare() const;
 
   // Hashes `input` (and the files it referenced last time) and looks the entry up. An error only

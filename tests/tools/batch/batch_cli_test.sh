@@ -83,11 +83,19 @@ check "killed half-way ($done_before of 24 done)" '[ "$done_before" -ge 1 ] && [
 partial=0
 for f in "$tmp"/killed/*.packed.glb; do cmp -s "$f" "$tmp/whole/$(basename "$f")" || partial=1; done
 check "every output present after the kill is complete" '[ $partial = 0 ]'
+# The cache is shared by shards and hosts: only temporaries over an hour old are a dead run's.
+mkdir -p "$tmp/killed/.hullpack-cache/objects/00"
+touch -d '2 hours ago' "$tmp/killed/.hullpack-cache/objects/00/old.glb.tmp-1-1"
+touch "$tmp/killed/.hullpack-cache/objects/00/fresh.glb.tmp-1-2"
 "$bin" batch "$tmp"/many/*.obj -o "$tmp/killed" --jobs 2 "${opts[@]}" >/dev/null 2>&1
 check "the restarted run succeeds" '[ $? = 0 ]'
 check "the restart redoes no finished asset" '[ "$(count "$tmp/killed/summary.json" cached)" -ge "$done_before" ]'
 check "the restart gives the uninterrupted run's outputs" 'same_outputs "$tmp/whole" "$tmp/killed"'
-check "no temporary file is left" '[ -z "$(find "$tmp/killed" -name "*.tmp-*")" ]'
+check "no temporary output is left" \
+  '[ -z "$(find "$tmp/killed" -path "*/.hullpack-cache" -prune -o -name "*.tmp-*" -print)" ]'
+check "the cache's old temporaries are removed, fresh ones kept" \
+  '[ ! -e "$tmp/killed/.hullpack-cache/objects/00/old.glb.tmp-1-1" ] &&
+   [ -e "$tmp/killed/.hullpack-cache/objects/00/fresh.glb.tmp-1-2" ]'
 
 # SIGTERM (Ctrl-C, scancel, a Slurm time limit): a summary of what was done, exit 128+15.
 "$bin" batch "$tmp"/many/*.obj -o "$tmp/stopped" --jobs 2 "${opts[@]}" >"$tmp/o7" 2>&1 &
