@@ -65,7 +65,9 @@ nlohmann::json ReportJson(const PackReport& r) {
     if (m.hull_count) {
       j["hull_error"] = {{"concavity", m.hull_concavity},
                          {"volume_iou", m.hull_iou},
-                         {"quantization", m.hull_quantization_error}};
+                         {"quantization", m.hull_quantization_error},
+                         {"target_reached", m.hull_target_reached}};
+      if (!m.hull_target_reached) j["hull_error"]["target_note"] = m.hull_target_note;
       j["hull_position_bits"] = m.hull_position_bits;
       j["hull_position_range"] = m.hull_position_range;
     }

@@ -196,6 +196,8 @@ Status MakeHulls(const Mesh& mesh, const PackOptions& options, vhacd::Observer* 
   r.hull_count = set->hulls.size();
   r.hull_concavity = set->report.concavity;
   r.hull_iou = set->report.volume_iou;
+  r.hull_target_reached = set->report.target_reached;
+  r.hull_target_note = set->report.target_note;
   if (set->hulls.empty()) return Status::Ok();
   for (const Mesh& hull : set->hulls) r.hull_vertices += hull.vertex_count();
   const double diagonal = BoundingBoxDiagonal(mesh);

@@ -55,6 +55,9 @@ struct MeshPackReport {
   std::string hull_position_range;
   double hull_concavity = -1;  // vhacd's report (fractions of the diagonal); -1 = not measured
   double hull_iou = -1;
+  // Whether the decomposition reached its --max-concavity or --hulls target, and if not, why.
+  bool hull_target_reached = true;
+  std::string hull_target_note;
   double hull_quantization_error = 0;  // hull vertex error after quantization, fraction of diagonal
   // encode: the render stream's candidate grids (encoded in parallel); decode: the chosen stream
   // once; hull_encode: quantizing, welding and encoding the hulls. The render stream and the hulls

@@ -88,7 +88,12 @@ run 64 usage -- "$bin" pack "$sample"
 # --hulls N: exactly N hulls for the torus; --max-concavity D; a bad count is a usage error.
 run 0 hulls-count -- "$bin" pack "$sample" -o "$tmp/n.glb" --hulls 5 --report "$tmp/n.json" --quiet
 grep -q '"hull_count": *5[,}]' "$tmp/n.json" && pass || fail "--hulls 5: $(grep -o '"hull_count": *[0-9]*' "$tmp/n.json")"
-run 0 max-concavity -- "$bin" pack "$sample" -o "$tmp/d.glb" --max-concavity 0.05 --quiet
+run 0 max-concavity -- "$bin" pack "$sample" -o "$tmp/d.glb" --max-concavity 0.05 --report "$tmp/d.json" --quiet
+grep -q '"target_reached": *true' "$tmp/d.json" && pass || fail "--max-concavity 0.05 not reported as reached"
+# A target finer than the voxel grid can give: the report says so, and why.
+run 0 max-concavity-missed -- "$bin" pack "$sample" -o "$tmp/d2.glb" --max-concavity 0.002 --report "$tmp/d2.json" --quiet
+grep -q '"target_reached": *false' "$tmp/d2.json" && grep -q '"target_note": *"max_concavity' "$tmp/d2.json" &&
+  pass || fail "--max-concavity 0.002: target_reached/target_note missing from the report"
 run 64 bad-hull-count -- "$bin" pack "$sample" -o "$tmp/x.glb" --hulls 0
 # --method hacd takes the count, the budget and the target; the voxel options are usage errors.
 run 0 hacd-count -- "$bin" pack "$sample" -o "$tmp/h.glb" --method hacd --hulls 4 --report "$tmp/h.json" --quiet
