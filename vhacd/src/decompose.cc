@@ -463,25 +463,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   }
   if (!params.compute_report) {
     // The caller did not ask for the measures (a max_concavity run needed them internally).
-    const Report keep = rep;
-    rep = Report();
-    rep.closed_input = keep.closed_input;
-    rep.voxel_count = keep.voxel_count;
-    rep.surface_voxel_count = keep.surface_voxel_count;
-    rep.tetrahedron_count = keep.tetrahedron_count;
-    rep.parts_before_merge = keep.parts_before_merge;
-    rep.target_reached = keep.target_reached;
-    rep.target_note = keep.target_note;
-    rep.attempts = keep.attempts;
-    rep.seconds_voxelize = keep.seconds_voxelize;
-    rep.seconds_fill = keep.seconds_fill;
-    rep.seconds_tetrahedra = keep.seconds_tetrahedra;
-    rep.seconds_distance = keep.seconds_distance;
-    rep.seconds_clip = keep.seconds_clip;
-    rep.seconds_hulls = keep.seconds_hulls;
-    rep.seconds_merge = keep.seconds_merge;
-    rep.seconds_simplify = keep.seconds_simplify;
-    rep.seconds_report = keep.seconds_report;
+    internal::ClearMeasures(&rep);
   }
 
   // Output in input coordinates.

@@ -309,5 +309,15 @@ bool ComputeErrorReport(const MetricsInput& in, Context* ctx, Report* report) {
   return true;
 }
 
+void ClearMeasures(Report* report) {
+  const Report none;
+  report->hulls.clear();
+  report->volume_iou = none.volume_iou;
+  report->solid_coverage = none.solid_coverage;
+  report->hausdorff_mesh_to_hulls = none.hausdorff_mesh_to_hulls;
+  report->hausdorff_hulls_to_mesh = none.hausdorff_hulls_to_mesh;
+  report->concavity = none.concavity;
+}
+
 }  // namespace internal
 }  // namespace vhacd

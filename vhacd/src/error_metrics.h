@@ -51,6 +51,10 @@ std::vector<Vec3> SampleSurface(const GridMesh& mesh, size_t count);
 // Fills report->hulls, volume_iou, the Hausdorff distances and concavity. False when cancelled.
 bool ComputeErrorReport(const MetricsInput& in, Context* ctx, Report* report);
 
+// Resets the measures ComputeErrorReport fills (per-hull reports, IoU, coverage, Hausdorff
+// distances, concavity) and keeps the rest: for a run that needed them only internally.
+void ClearMeasures(Report* report);
+
 }  // namespace internal
 }  // namespace vhacd
 

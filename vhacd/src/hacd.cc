@@ -588,22 +588,9 @@ Result DecomposeHacdImpl(const MeshView& view, const HacdParameters& params, Obs
       rep.target_note = "max_concavity " + std::to_string(d) + " not reached (" +
                         std::to_string(rep.concavity) + "): " + cause;
     }
-    if (!params.compute_report) {
-      // The caller did not ask for the measures (the target needed them).
-      const Report keep = rep;
-      rep = Report();
-      rep.closed_input = keep.closed_input;
-      rep.parts_before_merge = keep.parts_before_merge;
-      rep.target_reached = keep.target_reached;
-      rep.target_note = keep.target_note;
-      rep.attempts = keep.attempts;
-      rep.seconds_simplify = keep.seconds_simplify;
-      rep.seconds_clip = keep.seconds_clip;
-      rep.seconds_hulls = keep.seconds_hulls;
-      rep.seconds_report = keep.seconds_report;
-    }
   }
-  if (!params.compute_report) rep.hulls.clear();
+  // The caller did not ask for the measures (a target may have needed them).
+  if (!params.compute_report) internal::ClearMeasures(&rep);
 
   // Output in input coordinates.
   const double vol_scale = std::pow(extent / to_norm, 3);
