@@ -140,6 +140,11 @@ struct alignas(16) SymbolModelN {
   // i < kSymbols - 1 with r * cumulative(i) <= code, i.e. with cumulative(i) <= code / r. Its
   // interval is [*lo, *hi) (in 1/2^16).
   int Find(uint32_t r, uint32_t code, uint32_t* lo, uint32_t* hi) const;
+  // The same symbol, with its interval scaled by r: [*lo, *hi) = r * [cumulative(s - 1),
+  // cumulative(s)) (r * 2^16 for the last symbol's end). No division: the decoder's symbol search
+  // is on the dependency chain from one decision to the next, and r * cumulative(i) <= code is
+  // cumulative(i) <= code / r without the divider's latency.
+  O3DGC_INLINE int FindScaled(uint32_t r, uint32_t code, uint32_t* lo, uint32_t* hi) const;
   int Find(uint32_t r, uint32_t code) const {
     uint32_t lo, hi;
     return Find(r, code, &lo, &hi);
@@ -228,7 +233,54 @@ O3DGC_INLINE int SymbolModelN<N>::Find(uint32_t r, uint32_t code, uint32_t* lo,
   *hi = ((uint32_t(cum[8 + symbol]) - 1) & 0xFFFFu) + 1;  // the total, 2^16, wrapped to 0
   return symbol;
 }
+template <int N>
+O3DGC_INLINE int SymbolModelN<N>::FindScaled(uint32_t r, uint32_t code, uint32_t* lo,
+                                             uint32_t* hi) const {
+  // 32-bit products r * cumulative(i) from the 16-bit halves (entries below the last are below
+  // 2^16, so each product is below 2^32), compared with code as signed numbers after flipping the
+  // top bits. The products are kept, after a zero, for the interval's ends.
+  const __m128i* sp = reinterpret_cast<const __m128i*>(slow);
+  const __m128i* fp = reinterpret_cast<const __m128i*>(fast);
+  const __m128i rv = _mm_set1_epi16(short(r));
+  const __m128i flip = _mm_set1_epi32(int(0x80000000u));
+  const __m128i cv = _mm_set1_epi32(int(code ^ 0x80000000u));
+  alignas(16) uint32_t prod[N + 4];
+  prod[3] = 0;
+  __m128i gt[N / 4];
+  for (int v = 0; v < N / 8; ++v) {
+    const __m128i c = _mm_add_epi16(_mm_load_si128(sp + v), _mm_load_si128(fp + v));
+    const __m128i pl = _mm_mullo_epi16(c, rv), ph = _mm_mulhi_epu16(c, rv);
+    const __m128i p0 = _mm_unpacklo_epi16(pl, ph), p1 = _mm_unpackhi_epi16(pl, ph);
+    _mm_store_si128(reinterpret_cast<__m128i*>(prod + 4 + 8 * v), p0);
+    _mm_store_si128(reinterpret_cast<__m128i*>(prod + 8 + 8 * v), p1);
+    gt[2 * v] = _mm_cmpgt_epi32(_mm_xor_si128(p0, flip), cv);
+    gt[2 * v + 1] = _mm_cmpgt_epi32(_mm_xor_si128(p1, flip), cv);
+  }
+  prod[N + 3] = r << 16;  // the total, 2^16, wrapped to 0 in its lane
+  uint32_t above = 0;
+  for (int v = 0; v < N / 8; ++v) {
+    above |= uint32_t(_mm_movemask_epi8(
+                 _mm_packs_epi16(_mm_packs_epi32(gt[2 * v], gt[2 * v + 1]), _mm_setzero_si128())))
+             << (8 * v);
+  }
+  // Entries i < N - 1 with r * cumulative(i) <= code form a prefix; the last entry counts as above.
+  above |= uint32_t(1) << (N - 1);
+  const int symbol = __builtin_ctz(above);
+  *lo = prod[3 + symbol];
+  *hi = prod[4 + symbol];
+  return symbol;
+}
 #else
+template <int N>
+O3DGC_INLINE int SymbolModelN<N>::FindScaled(uint32_t r, uint32_t code, uint32_t* lo,
+                                             uint32_t* hi) const {
+  uint32_t l, h;
+  const int symbol = Find(r, code, &l, &h);
+  *lo = r * l;
+  *hi = r * h;
+  return symbol;
+}
+
 template <int N>
 O3DGC_INLINE void SymbolModelN<N>::Move(int symbol, int rate, int fast_rate) {
   const uint16_t* t = symbol_tables::kTables<N>.target[symbol];
@@ -360,9 +412,9 @@ class ArithmeticDecoder {
   O3DGC_INLINE int Decode(SymbolModelN<N>& m) {
     const uint32_t r = range_ >> 16;
     uint32_t lo, hi;
-    const int symbol = m.Find(r, code_, &lo, &hi);
-    code_ -= r * lo;
-    range_ = r * (hi - lo);
+    const int symbol = m.FindScaled(r, code_, &lo, &hi);
+    code_ -= lo;
+    range_ = hi - lo;
     m.Update(symbol);
     Normalize();
     return symbol;

@@ -66,9 +66,18 @@ Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges,
     for (int k = 0; k < kDim; ++k) {
       const int64_t p = pred[k] < 0 ? 0 : (pred[k] > maxq ? maxq : pred[k]);
       ResidualModel& m = row[stride * k + intra];
-      r[k] = kShifted ? DecodeShiftedResidual<kRawLow>(dec, m, models.escape, shift)
-                      : DecodeResidual<kRawLow>(dec, m, models.escape);
-      intra = coarse ? 0 : IntraContext(r[k]);
+      if (kShifted) {
+        r[k] = DecodeShiftedResidual<kRawLow>(dec, m, models.escape, shift);
+        intra = coarse ? 0 : IntraContext(r[k]);
+      } else {
+        // The next component's context from the class, before this residual's low bits: the
+        // same value as IntraContext(r[k]) (the bit length of |r[k]|, capped), one step earlier
+        // on the chain from one decision to the next.
+        int symbol;
+        r[k] = DecodeResidual<kRawLow>(dec, m, models.escape, &symbol);
+        static_assert(kIntraContexts <= kDirectClasses + 1, "the class names the intra context");
+        intra = coarse ? 0 : (symbol < kIntraContexts ? symbol : kIntraContexts - 1);
+      }
       const int64_t v = p + r[k];
       ok &= uint64_t(v) <= uint64_t(maxq);
       q[size_t(c) * kDim + k] = int32_t(v);

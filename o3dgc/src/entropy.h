@@ -268,10 +268,14 @@ O3DGC_INLINE int64_t DecodeSignAndLowBits(ArithmeticDecoder& d, ResidualModel& m
   return (int64_t(v) ^ sign) - sign;
 }
 
-// Inverse of EncodeResidual with shift 0.
+// Inverse of EncodeResidual with shift 0. `symbol` (optional) receives the first decision's
+// symbol: min(symbol, kDirectClasses + 1) is min(bit length of |r|, kDirectClasses + 1), known
+// before the sign and the low bits are read.
 template <bool kRawLow>
-O3DGC_INLINE int64_t DecodeResidual(ArithmeticDecoder& d, ResidualModel& m, ResidualEscape& x) {
+O3DGC_INLINE int64_t DecodeResidual(ArithmeticDecoder& d, ResidualModel& m, ResidualEscape& x,
+                                    int* first_symbol = nullptr) {
   const int symbol = d.Decode(m.magnitude);
+  if (first_symbol) *first_symbol = symbol;
   if (symbol == 0) return 0;
   int k = symbol - 1;
   if (O3DGC_UNLIKELY(symbol == kEscapeSymbol)) {
