@@ -67,8 +67,9 @@ Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges,
       const int64_t p = pred[k] < 0 ? 0 : (pred[k] > maxq ? maxq : pred[k]);
       ResidualModel& m = row[stride * k + intra];
       if (kShifted) {
-        r[k] = DecodeShiftedResidual<kRawLow>(dec, m, models.escape, shift);
-        intra = coarse ? 0 : IntraContext(r[k]);
+        int bit_length;
+        r[k] = DecodeShiftedResidual<kRawLow>(dec, m, models.escape, shift, &bit_length);
+        intra = coarse ? 0 : (bit_length < kIntraContexts ? bit_length : kIntraContexts - 1);
       } else {
         // The next component's context from the class, before this residual's low bits: the
         // same value as IntraContext(r[k]) (the bit length of |r[k]|, capped), one step earlier

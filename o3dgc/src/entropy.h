@@ -285,13 +285,16 @@ O3DGC_INLINE int64_t DecodeResidual(ArithmeticDecoder& d, ResidualModel& m, Resi
 }
 
 // Inverse of EncodeResidual with any shift (0..kMaxClassShift). A separate function: the loops
-// without shifts keep DecodeResidual's shorter code.
+// without shifts keep DecodeResidual's shorter code. `*bit_length` receives the bit length of
+// |r| (its class), known before the sign and the low bits are read.
 template <bool kRawLow>
 O3DGC_INLINE int64_t DecodeShiftedResidual(ArithmeticDecoder& d, ResidualModel& m,
-                                           ResidualEscape& x, int shift) {
+                                           ResidualEscape& x, int shift, int* bit_length) {
   const int symbol = d.Decode(m.magnitude);
   int k = symbol - 1 + shift;
+  *bit_length = k + 1;
   if (O3DGC_UNLIKELY(symbol == 0 || symbol == kEscapeSymbol)) {
+    *bit_length = 0;
     if (symbol == 0 && shift == 0) return 0;
     // One decoding step for both second decisions: each inlined step adds to the loops' code
     // (and to the WebAssembly decoder's download).
@@ -303,6 +306,7 @@ O3DGC_INLINE int64_t DecodeShiftedResidual(ArithmeticDecoder& d, ResidualModel& 
     } else {
       k = DecodeHighClass(d, x, h, kDirectClasses + shift);
     }
+    *bit_length = k + 1;
   }
   return DecodeSignAndLowBits<kRawLow>(d, m, k);
 }
