@@ -48,9 +48,9 @@ class Decoder {
         if ((s = Emit(dec, x, y, z)) != Status::kOk) return s;
         continue;
       }
-      const int32_t g = front_.Pop();
+      uint32_t a, b;
+      const int32_t g = front_.PopWithEnds(&a, &b);
       if (g < 0) continue;
-      const uint32_t a = front_.gate(g).a, b = front_.gate(g).b;
       const Front::Candidates cand = front_.Look(a, b, rich ? prev : -1);
       const int outcome = dec.Decode(m_->gate[size_t(cand.context)]);
       prev = outcome;

@@ -104,6 +104,23 @@ class Front {
     return gates_[g].open ? g : -1;
   }
   const Gate& gate(int32_t g) const { return gates_[g]; }
+  // Pop, also giving the gate's ends. The gate popped is most often the last one opened (the
+  // traversal goes on from the triangle just attached); its ends are then taken from registers
+  // instead of the gate just stored, which the pop would otherwise wait for (the decoder's loop is
+  // bound by such chains from one gate to the next).
+  O3DGC_INLINE int32_t PopWithEnds(uint32_t* a, uint32_t* b) {
+    const int32_t g = stack_[--stack_top_];
+    if (g == last_open_) {
+      last_open_ = -1;
+      *a = last_a_;
+      *b = last_b_;
+      return g;
+    }
+    if (!gates_[g].open) return -1;
+    *a = gates_[g].a;
+    *b = gates_[g].b;
+    return g;
+  }
 
   // The newest open gate leaving v / entering v, or -1 (closed gates at the head are dropped).
   int32_t HeadOut(uint32_t v) {
@@ -146,7 +163,10 @@ class Front {
     return c;
   }
 
-  void Close(int32_t g) { gates_[g].open = 0; }
+  void Close(int32_t g) {
+    gates_[g].open = 0;
+    last_open_ = -1;
+  }
 
   // Format 1.1 walks along the front: from v, `steps` times to the end of the newest open gate
   // leaving the vertex (`left` false) or to the start of the newest open gate entering it (`left`
@@ -212,10 +232,14 @@ class Front {
     vertices_[u].head_out = id;
     vertices_[v].head_in = id;
     stack_[stack_top_++] = id;
+    last_open_ = id;
+    last_a_ = u;
+    last_b_ = v;
   }
 
   // Triangle `tri` = (x, y, z) starts a new part.
   void StartTriangle(uint32_t tri, uint32_t x, uint32_t y, uint32_t z) {
+    last_open_ = -1;
     ++vertices_[x].deg;
     ++vertices_[y].deg;
     ++vertices_[z].deg;
@@ -232,6 +256,7 @@ class Front {
   // when `flipped`.
   O3DGC_INLINE void Attach(int32_t g, uint32_t tri, uint32_t a, uint32_t b, uint32_t c,
                            bool flipped, int32_t gate_bc = kSearch) {
+    last_open_ = -1;  // only a gate this attach opens is known open at the next pop
     Link(tri * 3 + 2, c, gates_[g].edge, gates_[g].apex);
     gates_[g].open = 0;
     ++vertices_[a].deg;
@@ -292,6 +317,10 @@ class Front {
   std::unique_ptr<Gate[]> gates_;
   std::unique_ptr<int32_t[]> stack_;
   size_t num_gates_ = 0, gate_capacity_ = 0, stack_top_ = 0;
+  // The last gate opened since the last attach, close or new part (-1 if none), and its ends:
+  // still open and on the top of the stack.
+  int32_t last_open_ = -1;
+  uint32_t last_a_ = 0, last_b_ = 0;
   struct Vertex {
     int32_t head_out, head_in;  // newest gate leaving / entering the vertex, -1 if none
     uint32_t deg;               // triangles at the vertex so far
