@@ -247,8 +247,8 @@ class Front {
     AddHalfEdge(y, z, tri * 3 + 0, x);
     AddHalfEdge(z, x, tri * 3 + 1, y);
   }
-  // What Attach knows beforehand of the gates b->c: nothing (kSearch), that there is none
-  // (kNoGate: c is new), or the one AddHalfEdge(c, b) would close (its id: the right candidate's
+  // What Attach knows beforehand of the gates b->c: nothing (kSearch), that c is new (kNoGate:
+  // no gate touches c), or the one AddHalfEdge(c, b) would close (its id: the right candidate's
   // gate is the newest open gate leaving b, the first one the search meets). Knowing it spares the
   // search and changes nothing else.
   static constexpr int32_t kSearch = -2, kNoGate = -1;
@@ -262,12 +262,16 @@ class Front {
     ++vertices_[a].deg;
     ++vertices_[b].deg;
     ++vertices_[c].deg;
-    AddHalfEdge(a, c, tri * 3 + (flipped ? 1 : 0), b);
     const uint32_t edge = tri * 3 + (flipped ? 0 : 1);
+    if (gate_bc == kNoGate) {
+      // c is new: no gate leaves it, so a->c opens without a search of c's (empty) list.
+      Open(a, c, tri * 3 + (flipped ? 1 : 0), b);
+      Open(c, b, edge, a);
+      return;
+    }
+    AddHalfEdge(a, c, tri * 3 + (flipped ? 1 : 0), b);
     if (gate_bc == kSearch) {
       AddHalfEdge(c, b, edge, a);
-    } else if (gate_bc == kNoGate) {
-      Open(c, b, edge, a);
     } else {
       Link(edge, a, gates_[gate_bc].edge, gates_[gate_bc].apex);
       gates_[gate_bc].open = 0;
