@@ -128,12 +128,13 @@ class Collapser {
     const size_t nt = tris_.size();
     // Phase one, on large meshes: the mesh cut into slabs, each decimated on its own (in
     // parallel) with the vertices of triangles crossing a cut kept in place, down to its share
-    // of a count well above the target. The slabs are a function of the mesh alone, and no two
-    // touch the same vertex or triangle, so the result does not depend on the thread count.
+    // of a count well above the target (only when that is at most half the mesh). The slabs are a
+    // function of the mesh alone, and no two touch the same vertex or triangle, so the result does
+    // not depend on the thread count.
     const size_t blocks = std::min<size_t>(kMaxBlocks, nt / kBlockTriangles);
     const size_t phase1 = std::max(2 * opt_.target_triangles, nt / 16);
     double done = 0.0;  // the share of the progress bar phase one takes
-    if (blocks >= 2 && phase1 < nt) {
+    if (blocks >= 2 && 2 * phase1 <= nt) {
       done = static_cast<double>(nt - phase1) /
              static_cast<double>(nt - std::min(nt, opt_.target_triangles));
       AssignBlocks(blocks);
