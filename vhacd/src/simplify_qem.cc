@@ -133,7 +133,8 @@ class Collapser {
     // not depend on the thread count.
     const size_t blocks = std::min<size_t>(kMaxBlocks, nt / kBlockTriangles);
     const size_t phase1 = std::max(2 * opt_.target_triangles, nt / 16);
-    double done = 0.0;  // the share of the progress bar phase one takes
+    double done = 0.0;   // the share of the progress bar phase one takes
+    uint64_t marks = 0;  // the largest link-condition mark phase one wrote
     if (blocks >= 2 && 2 * phase1 <= nt) {
       done = static_cast<double>(nt - phase1) /
              static_cast<double>(nt - std::min(nt, opt_.target_triangles));
@@ -158,14 +159,18 @@ class Collapser {
       for (size_t i = 0; i < keys.size(); ++i)
         if (ok[i]) lanes[block_[keys[i] >> 32]].heap.push_back(first[i]);
       std::vector<uint64_t>().swap(unique_edges_);
+      std::vector<uint8_t> stopped(blocks, 0);  // per lane: cancelled
       if (!ParallelFor(ctx, blocks, [&](size_t b) {
             Lane& lane = lanes[b];
             std::make_heap(lane.heap.begin(), lane.heap.end(), std::greater<Entry>());
-            if (!Loop(&lane, ctx, b == 0, 0.0, done)) cancelled_ = true;
+            if (!Loop(&lane, ctx, b == 0, 0.0, done)) stopped[b] = 1;
           }))
         return false;
-      if (cancelled_) return false;
-      for (const Lane& lane : lanes) error_ = std::max(error_, lane.error);
+      if (std::find(stopped.begin(), stopped.end(), 1) != stopped.end()) return false;
+      for (const Lane& lane : lanes) {
+        error_ = std::max(error_, lane.error);
+        marks = std::max(marks, lane.mark_generation);
+      }
       std::fill(block_.begin(), block_.end(), kAnyBlock);
       for (size_t t = 0; t < nt; ++t)
         if (!tri_dead_[t])
@@ -180,6 +185,7 @@ class Collapser {
     // Phase two (the only one on smaller meshes): every edge, cheapest first, one at a time.
     Lane lane;
     lane.target = opt_.target_triangles;
+    lane.mark_generation = marks;
     for (uint8_t dead : tri_dead_) lane.alive += dead ? 0 : 1;
     {
       std::vector<Entry> first;
@@ -208,7 +214,7 @@ class Collapser {
     double error = 0.0;
     std::vector<Entry> heap;  // a binary min-heap (std::push_heap / pop_heap)
     std::vector<uint32_t> nv;
-    uint32_t mark_generation = 0;
+    uint64_t mark_generation = 0;
   };
 
   // The candidates of `keys` (a < b edges), computed on ctx's threads.
@@ -422,12 +428,9 @@ class Collapser {
     const uint32_t u = c.from, v = c.to;
     // Link condition: the common neighbours are exactly the apexes of the edge's triangles.
     // Neighbours of u get mark `first`; those also around v are moved to `first + 1` and counted.
-    // (Lanes mark only the vertices of their own slab; the marks restart only in phase two.)
-    if (lane->mark_generation > UINT32_MAX - 4) {
-      std::fill(mark_.begin(), mark_.end(), 0u);
-      lane->mark_generation = 0;
-    }
-    const uint32_t first = lane->mark_generation += 2, common = first + 1;
+    // (Lanes mark only the vertices of their own slab; phase two starts above every lane's marks.
+    // 64 bits: the marks never wrap.)
+    const uint64_t first = lane->mark_generation += 2, common = first + 1;
     for (uint32_t t : vtris_[u])
       if (!tri_dead_[t])
         for (uint32_t w : tris_[t])
@@ -557,7 +560,7 @@ class Collapser {
   std::vector<uint64_t> unique_edges_;
   std::vector<Vec3> orig_normal_;
   double error_ = 0.0;
-  std::vector<uint32_t> mark_;   // link-condition marks, see Valid()
+  std::vector<uint64_t> mark_;   // link-condition marks, see Valid()
   std::vector<uint32_t> block_;  // phase one's slabs, see AssignBlocks()
 };
 
