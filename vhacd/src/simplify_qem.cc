@@ -138,49 +138,7 @@ class Collapser {
     if (blocks >= 2 && 2 * phase1 <= nt) {
       done = static_cast<double>(nt - phase1) /
              static_cast<double>(nt - std::min(nt, opt_.target_triangles));
-      AssignBlocks(blocks);
-      std::vector<Lane> lanes(blocks);
-      for (size_t b = 0; b < blocks; ++b) lanes[b].block = static_cast<uint32_t>(b);
-      for (const Tri& tri : tris_)
-        if (block_[tri[0]] == block_[tri[1]] && block_[tri[1]] == block_[tri[2]] &&
-            block_[tri[0]] < blocks)
-          ++lanes[block_[tri[0]]].alive;
-      // Lanes count the triangles whose corners are all in their slab (a triangle dies only by a
-      // collapse of two of its free corners).
-      for (Lane& lane : lanes) lane.target = lane.alive * phase1 / nt;
-      std::vector<uint64_t> keys;
-      for (uint64_t key : unique_edges_)
-        if (block_[key >> 32] < blocks && block_[key >> 32] == block_[uint32_t(key)])
-          keys.push_back(key);
-      std::vector<Entry> first;
-      std::vector<uint8_t> ok;
-      FirstCandidates(keys, &first, &ok);
-      if (cancelled_) return false;
-      for (size_t i = 0; i < keys.size(); ++i)
-        if (ok[i]) lanes[block_[keys[i] >> 32]].heap.push_back(first[i]);
-      std::vector<uint64_t>().swap(unique_edges_);
-      std::vector<uint8_t> stopped(blocks, 0);  // per lane: cancelled
-      if (!ParallelFor(ctx, blocks, [&](size_t b) {
-            Lane& lane = lanes[b];
-            std::make_heap(lane.heap.begin(), lane.heap.end(), std::greater<Entry>());
-            if (!Loop(&lane, ctx, b == 0, 0.0, done)) stopped[b] = 1;
-          }))
-        return false;
-      if (std::find(stopped.begin(), stopped.end(), 1) != stopped.end()) return false;
-      for (const Lane& lane : lanes) {
-        error_ = std::max(error_, lane.error);
-        marks = std::max(marks, lane.mark_generation);
-      }
-      std::fill(block_.begin(), block_.end(), kAnyBlock);
-      for (size_t t = 0; t < nt; ++t)
-        if (!tri_dead_[t])
-          for (int k = 0; k < 3; ++k) {
-            const uint32_t a = tris_[t][k], b = tris_[t][(k + 1) % 3];
-            unique_edges_.push_back((uint64_t{std::min(a, b)} << 32) | std::max(a, b));
-          }
-      std::sort(unique_edges_.begin(), unique_edges_.end());
-      unique_edges_.erase(std::unique(unique_edges_.begin(), unique_edges_.end()),
-                          unique_edges_.end());
+      if (!DecimateSlabs(ctx, blocks, phase1, done, &marks)) return false;
     }
     // Phase two (the only one on smaller meshes): every edge, cheapest first, one at a time.
     Lane lane;
@@ -216,6 +174,57 @@ class Collapser {
     std::vector<uint32_t> nv;
     uint64_t mark_generation = 0;
   };
+
+  // Phase one: each of `blocks` slabs decimated on its own lane down to its share of `count`
+  // triangles (`share` of the progress bar); the edges left go to unique_edges_ for phase two.
+  // *marks receives the largest link-condition mark written. Returns false when cancelled.
+  bool DecimateSlabs(Context* ctx, size_t blocks, size_t count, double share, uint64_t* marks) {
+    const size_t nt = tris_.size();
+    AssignBlocks(blocks);
+    std::vector<Lane> lanes(blocks);
+    for (size_t b = 0; b < blocks; ++b) lanes[b].block = static_cast<uint32_t>(b);
+    for (const Tri& tri : tris_)
+      if (block_[tri[0]] == block_[tri[1]] && block_[tri[1]] == block_[tri[2]] &&
+          block_[tri[0]] < blocks)
+        ++lanes[block_[tri[0]]].alive;
+    // Lanes count the triangles whose corners are all in their slab (a triangle dies only by a
+    // collapse of two of its free corners).
+    for (Lane& lane : lanes) lane.target = lane.alive * count / nt;
+    std::vector<uint64_t> keys;
+    for (uint64_t key : unique_edges_)
+      if (block_[key >> 32] < blocks && block_[key >> 32] == block_[uint32_t(key)])
+        keys.push_back(key);
+    std::vector<Entry> first;
+    std::vector<uint8_t> ok;
+    FirstCandidates(keys, &first, &ok);
+    if (cancelled_) return false;
+    for (size_t i = 0; i < keys.size(); ++i)
+      if (ok[i]) lanes[block_[keys[i] >> 32]].heap.push_back(first[i]);
+    std::vector<uint64_t>().swap(unique_edges_);
+    std::vector<uint8_t> stopped(blocks, 0);  // per lane: cancelled
+    if (!ParallelFor(ctx, blocks, [&](size_t b) {
+          Lane& lane = lanes[b];
+          std::make_heap(lane.heap.begin(), lane.heap.end(), std::greater<Entry>());
+          if (!Loop(&lane, ctx, b == 0, 0.0, share)) stopped[b] = 1;
+        }))
+      return false;
+    if (std::find(stopped.begin(), stopped.end(), 1) != stopped.end()) return false;
+    for (const Lane& lane : lanes) {
+      error_ = std::max(error_, lane.error);
+      *marks = std::max(*marks, lane.mark_generation);
+    }
+    std::fill(block_.begin(), block_.end(), kAnyBlock);
+    for (size_t t = 0; t < nt; ++t)
+      if (!tri_dead_[t])
+        for (int k = 0; k < 3; ++k) {
+          const uint32_t a = tris_[t][k], b = tris_[t][(k + 1) % 3];
+          unique_edges_.push_back((uint64_t{std::min(a, b)} << 32) | std::max(a, b));
+        }
+    std::sort(unique_edges_.begin(), unique_edges_.end());
+    unique_edges_.erase(std::unique(unique_edges_.begin(), unique_edges_.end()),
+                        unique_edges_.end());
+    return true;
+  }
 
   // The candidates of `keys` (a < b edges), computed on ctx's threads.
   void FirstCandidates(const std::vector<uint64_t>& keys, std::vector<Entry>* first,
