@@ -17,10 +17,10 @@ constexpr uint32_t kNext[3] = {1, 2, 0}, kPrev[3] = {2, 0, 1};
 template <typename Coder>
 class Encoder {
  public:
-  Encoder(const std::vector<uint32_t>& tris, uint32_t num_vertices, Coder* enc,
+  Encoder(const uint32_t* tris, size_t num_triangles, uint32_t num_vertices, Coder* enc,
           ConnectivityEncoding* out, bool keep_edges, uint32_t minor)
       : tris_(tris),
-        nt_(tris.size() / 3),
+        nt_(num_triangles),
         nv_in_(num_vertices),
         enc_(*enc),
         out_(*out),
@@ -58,6 +58,7 @@ class Encoder {
     // Every input triangle is emitted once (primary, copy or degenerate).
     out_.triangles.resize(nt_ * 3);
     out_.source.resize(nt_);
+    out_.old_of_new.reserve(nv_in_);  // every vertex is referenced: each gets a new id
     front_.Reserve(nv_in_, nt_, keep_edges_);
 
     size_t scan = 0;
@@ -337,7 +338,7 @@ class Encoder {
     }
   }
 
-  const std::vector<uint32_t>& tris_;
+  const uint32_t* tris_;
   const size_t nt_;
   const uint32_t nv_in_;
   Coder& enc_;
@@ -355,13 +356,13 @@ class Encoder {
 };
 
 template <typename Coder>
-void Run(const std::vector<uint32_t>& triangles, uint32_t num_vertices, Coder* enc,
+void Run(const uint32_t* triangles, size_t num_triangles, uint32_t num_vertices, Coder* enc,
          ConnectivityEncoding* out, bool keep_edges, uint32_t minor) {
   out->triangles.clear();
   out->source.clear();
   out->old_of_new.clear();
   out->vertex_triangles.clear();
-  Encoder<Coder>(triangles, num_vertices, enc, out, keep_edges, minor).Run();
+  Encoder<Coder>(triangles, num_triangles, num_vertices, enc, out, keep_edges, minor).Run();
 }
 
 }  // namespace
@@ -369,13 +370,13 @@ void Run(const std::vector<uint32_t>& triangles, uint32_t num_vertices, Coder* e
 void EncodeConnectivity(const std::vector<uint32_t>& triangles, uint32_t num_vertices,
                         ArithmeticEncoder* enc, ConnectivityEncoding* out, bool keep_edges,
                         uint32_t minor) {
-  Run(triangles, num_vertices, enc, out, keep_edges, minor);
+  Run(triangles.data(), triangles.size() / 3, num_vertices, enc, out, keep_edges, minor);
 }
 
-void EncodeConnectivity(const std::vector<uint32_t>& triangles, uint32_t num_vertices,
+void EncodeConnectivity(const uint32_t* triangles, size_t num_triangles, uint32_t num_vertices,
                         DecisionLog* log, ConnectivityEncoding* out, bool keep_edges,
                         uint32_t minor) {
-  Run(triangles, num_vertices, log, out, keep_edges, minor);
+  Run(triangles, num_triangles, num_vertices, log, out, keep_edges, minor);
 }
 
 }  // namespace o3dgc

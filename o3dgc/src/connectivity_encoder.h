@@ -36,8 +36,9 @@ struct ConnectivityEncoding {
 void EncodeConnectivity(const std::vector<uint32_t>& triangles, uint32_t num_vertices,
                         ArithmeticEncoder* enc, ConnectivityEncoding* out, bool keep_edges,
                         uint32_t minor);
-// The same decisions recorded into `log` (see decision_log.h), to be replayed into an encoder.
-void EncodeConnectivity(const std::vector<uint32_t>& triangles, uint32_t num_vertices,
+// The same decisions recorded into `log` (see decision_log.h), to be replayed into an encoder;
+// the triangles as 3 * num_triangles ids.
+void EncodeConnectivity(const uint32_t* triangles, size_t num_triangles, uint32_t num_vertices,
                         DecisionLog* log, ConnectivityEncoding* out, bool keep_edges,
                         uint32_t minor);
 

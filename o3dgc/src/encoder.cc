@@ -78,6 +78,8 @@ struct GridEncoder::Prepared {
   // Welding: input vertex -> welded vertex (kNone if unreferenced), the triangles over them.
   std::vector<uint32_t> weld;
   uint32_t num_welded = 0;
+  // Empty when welding changes no index (every vertex referenced, no two equal): the connectivity
+  // then reads mesh.indices itself.
   std::vector<uint32_t> welded_tris;
   // The connectivity's, seams' and order tables' decisions, coded after each grid's header.
   DecisionLog log;
@@ -279,6 +281,9 @@ void Weld(Prepared& st) {
       weld[v] = first == v ? num_welded++ : weld[first];
     }
   }
+  bool identity = num_welded == nv;
+  for (uint32_t v = 0; v < nv && identity; ++v) identity = weld[v] == v;
+  if (identity) return;
   welded_tris.resize(3 * nt);
   for (size_t i = 0; i < 3 * nt; ++i) welded_tris[i] = weld[mesh.indices[i]];
 }
@@ -302,7 +307,8 @@ void EncodeTriangles(Prepared& st) {
   bool attribute_wedges = h.has_normals && h.normal.prediction == Prediction::kParallelogram;
   for (const AttributeDesc& d : h.floats)
     attribute_wedges |= d.prediction == Prediction::kParallelogram;
-  EncodeConnectivity(welded_tris, num_welded, &enc, &conn, attribute_wedges, kFormatMinor);
+  const uint32_t* tris = welded_tris.empty() ? mesh.indices : welded_tris.data();
+  EncodeConnectivity(tris, nt, num_welded, &enc, &conn, attribute_wedges, kFormatMinor);
   nc = uint32_t(conn.old_of_new.size());
   welded_new.assign(num_welded, kNone);
   for (uint32_t i = 0; i < nc; ++i) welded_new[conn.old_of_new[i]] = i;
