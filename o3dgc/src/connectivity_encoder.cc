@@ -59,10 +59,11 @@ class Encoder {
     out_.triangles.resize(nt_ * 3);
     out_.source.resize(nt_);
     out_.old_of_new.reserve(nv_in_);  // every vertex is referenced: each gets a new id
-    front_.Reserve(nv_in_, nt_, keep_edges_);
+    front_.Reserve(nv_in_, nt_, keep_edges_, /*compact=*/true);
 
     size_t scan = 0;
     for (;;) {
+      front_.MakeRoom();
       if (front_.empty()) {
         while (scan < nt_ && (kind_[scan] != kPrimary || visited_[scan])) ++scan;
         if (scan == nt_) {
