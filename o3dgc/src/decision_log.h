@@ -72,6 +72,8 @@ class DecisionLog {
     }
   }
 
+  // Once every decision is recorded: frees the spare capacity growth left (up to half).
+  void ShrinkToFit() { words_.shrink_to_fit(); }
   size_t bytes() const { return words_.capacity() * sizeof(uint32_t); }
 
  private:

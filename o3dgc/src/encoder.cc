@@ -427,6 +427,7 @@ void EncodeExactOrder(Prepared& st) {
 // After the seams: the working arrays no grid needs, and the positions' wedges built.
 void FinishPrepare(Prepared& st) {
   ReleaseConnectivityWork(st);
+  st.log.ShrinkToFit();
   ConnectivityEncoding& conn = st.conn;
   if (st.h.position.prediction == Prediction::kParallelogram) {
     st.wedges.BuildFromOppositeVertices(conn.triangles, st.nw, conn.opposite_vertices,

@@ -34,9 +34,10 @@ size_t PlainGeometryBytes(const Mesh& m) {
   return m.vertex_count() * per_vertex + m.indices.size() * index_size;
 }
 
-// The encoder's working arrays per triangle of a mesh with positions only (measured on large
-// scans); each attribute coded adds a few more.
-constexpr double kEncoderBytesPerTriangle = 200;
+// A candidate grid's working arrays per triangle of a mesh with positions only (its quantized
+// positions, prediction records and coding order: about 20 bytes on igea x1, bounded here with a
+// margin); each attribute coded adds a few more. The stages all grids share run once, before.
+constexpr double kEncoderBytesPerTriangle = 40;
 constexpr double kEncoderBytesPerAttribute = 40;
 
 // Memory the system can still give (MemAvailable), or the largest size_t when unknown.
