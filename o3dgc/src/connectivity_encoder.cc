@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <type_traits>
 
 #include "connectivity_front.h"
 #include "entropy.h"
@@ -28,6 +29,8 @@ class Encoder {
         keep_edges_(keep_edges) {}
 
   void Run() {
+    // Recorded, the gate outcomes take their model's index instead of its probabilities.
+    if constexpr (std::is_same<Coder, DecisionLog>::value) enc_.UseModels(m_->gate);
     Classify();
     BuildVertexTriangles();
     // Two flags spare the per-triangle flip and copy decisions when they cannot occur: a triangle
