@@ -12,13 +12,14 @@ namespace {
 class Decoder {
  public:
   Decoder(ArithmeticDecoder* dec, size_t num_triangles, size_t max_vertices,
-          std::vector<uint32_t>* out, bool keep_edges, uint32_t minor)
+          std::vector<uint32_t>* out, bool keep_edges, uint32_t minor, bool compact)
       : dec_(*dec),
         nt_(num_triangles),
         max_vertices_(max_vertices),
         out_(*out),
         m_(new ConnectivityModels(minor)),
-        keep_edges_(keep_edges) {}
+        keep_edges_(keep_edges),
+        compact_(compact) {}
 
   Status Run() {
     ScopedDecoder scoped(&dec_);  // the state in registers for the loop
@@ -27,7 +28,7 @@ class Decoder {
     // the front for them is bounded by the stream's size.
     out_.resize(nt_ * 3);
     tri_ = out_.data();
-    front_.Reserve(max_vertices_ < nt_ + 3 ? max_vertices_ : nt_ + 3, nt_, keep_edges_);
+    front_.Reserve(max_vertices_ < nt_ + 3 ? max_vertices_ : nt_ + 3, nt_, keep_edges_, compact_);
     has_flips_ = dec.DecodeBits(1) != 0;
     has_copies_ = dec.DecodeBits(1) != 0;
     const bool rich = m_->rich;
@@ -35,6 +36,7 @@ class Decoder {
     // Bounded work whatever the stream: every pass pops a gate (at most 3 per triangle) or starts
     // a triangle (at most nt_), so a truncated stream (read as zeros) is found after the loop.
     for (;;) {
+      if (compact_) front_.MakeRoom();
       if (front_.empty()) {
         if (!dec.Decode(m_->more_components)) break;
         if (Full()) return Status::kCorrupt;
@@ -177,6 +179,7 @@ class Decoder {
   bool has_flips_ = false, has_copies_ = false;
   uint64_t extras_ = 0;
   const bool keep_edges_;
+  const bool compact_;  // Front::MakeRoom between steps
 };
 
 }  // namespace
@@ -184,8 +187,9 @@ class Decoder {
 Status DecodeConnectivity(ArithmeticDecoder* dec, size_t num_triangles, size_t max_vertices,
                           std::vector<uint32_t>* triangles, uint32_t* num_vertices,
                           std::vector<uint32_t>* opposite, std::vector<uint32_t>* opposite_vertices,
-                          std::vector<uint32_t>* vertex_triangles, uint32_t minor) {
-  Decoder d(dec, num_triangles, max_vertices, triangles, opposite != nullptr, minor);
+                          std::vector<uint32_t>* vertex_triangles, uint32_t minor,
+                          bool compact_front) {
+  Decoder d(dec, num_triangles, max_vertices, triangles, opposite != nullptr, minor, compact_front);
   const Status s = d.Run();
   *dec = d.decoder();
   *num_vertices = d.num_vertices();

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <type_traits>
 
 #include "connectivity_front.h"
 #include "entropy.h"
@@ -13,12 +14,14 @@ namespace {
 constexpr uint32_t kNone = 0xFFFFFFFFu;
 constexpr uint32_t kNext[3] = {1, 2, 0}, kPrev[3] = {2, 0, 1};
 
+// `Coder`: an ArithmeticEncoder, or a DecisionLog to replay into one.
+template <typename Coder>
 class Encoder {
  public:
-  Encoder(const std::vector<uint32_t>& tris, uint32_t num_vertices, ArithmeticEncoder* enc,
+  Encoder(const uint32_t* tris, size_t num_triangles, uint32_t num_vertices, Coder* enc,
           ConnectivityEncoding* out, bool keep_edges, uint32_t minor)
       : tris_(tris),
-        nt_(tris.size() / 3),
+        nt_(num_triangles),
         nv_in_(num_vertices),
         enc_(*enc),
         out_(*out),
@@ -26,6 +29,8 @@ class Encoder {
         keep_edges_(keep_edges) {}
 
   void Run() {
+    // Recorded, the gate outcomes take their model's index instead of its probabilities.
+    if constexpr (std::is_same<Coder, DecisionLog>::value) enc_.UseModels(m_->gate);
     Classify();
     BuildVertexTriangles();
     // Two flags spare the per-triangle flip and copy decisions when they cannot occur: a triangle
@@ -56,10 +61,12 @@ class Encoder {
     // Every input triangle is emitted once (primary, copy or degenerate).
     out_.triangles.resize(nt_ * 3);
     out_.source.resize(nt_);
-    front_.Reserve(nv_in_, nt_, keep_edges_);
+    out_.old_of_new.reserve(nv_in_);  // every vertex is referenced: each gets a new id
+    front_.Reserve(nv_in_, nt_, keep_edges_, /*compact=*/true);
 
     size_t scan = 0;
     for (;;) {
+      front_.MakeRoom();
       if (front_.empty()) {
         while (scan < nt_ && (kind_[scan] != kPrimary || visited_[scan])) ++scan;
         if (scan == nt_) {
@@ -171,8 +178,6 @@ class Encoder {
   // hash table of all triangles, whose random accesses dominated encoding large meshes.
   void Classify() {
     kind_.assign(nt_, kPrimary);
-    first_copy_.assign(nt_, kNone);
-    next_copy_.assign(nt_, kNone);
     std::vector<uint32_t> start(size_t(nv_in_) + 1, 0);
     for (size_t t = 0; t < nt_; ++t) {
       const uint32_t a = tris_[3 * t], b = tris_[3 * t + 1], c = tris_[3 * t + 2];
@@ -193,9 +198,14 @@ class Encoder {
         bucket[fill[std::min(a, std::min(b, c))]++] = uint32_t(t);
       }
     }
-    std::vector<uint32_t> last_copy;  // allocated at the first copy: most meshes have none
+    // The copy chains are allocated at the first copy: most meshes have none.
+    std::vector<uint32_t> last_copy;
     auto add_copy = [&](uint32_t p, uint32_t t) {
-      if (last_copy.empty()) last_copy.assign(nt_, kNone);
+      if (last_copy.empty()) {
+        last_copy.assign(nt_, kNone);
+        first_copy_.assign(nt_, kNone);
+        next_copy_.assign(nt_, kNone);
+      }
       kind_[t] = kCopy;
       if (first_copy_[p] == kNone) {
         first_copy_[p] = t;
@@ -332,10 +342,10 @@ class Encoder {
     }
   }
 
-  const std::vector<uint32_t>& tris_;
+  const uint32_t* tris_;
   const size_t nt_;
   const uint32_t nv_in_;
-  ArithmeticEncoder& enc_;
+  Coder& enc_;
   ConnectivityEncoding& out_;
   std::unique_ptr<ConnectivityModels> m_;
   Front front_;
@@ -349,16 +359,28 @@ class Encoder {
   const bool keep_edges_;
 };
 
+template <typename Coder>
+void Run(const uint32_t* triangles, size_t num_triangles, uint32_t num_vertices, Coder* enc,
+         ConnectivityEncoding* out, bool keep_edges, uint32_t minor) {
+  out->triangles.clear();
+  out->source.clear();
+  out->old_of_new.clear();
+  out->vertex_triangles.clear();
+  Encoder<Coder>(triangles, num_triangles, num_vertices, enc, out, keep_edges, minor).Run();
+}
+
 }  // namespace
 
 void EncodeConnectivity(const std::vector<uint32_t>& triangles, uint32_t num_vertices,
                         ArithmeticEncoder* enc, ConnectivityEncoding* out, bool keep_edges,
                         uint32_t minor) {
-  out->triangles.clear();
-  out->source.clear();
-  out->old_of_new.clear();
-  out->vertex_triangles.clear();
-  Encoder(triangles, num_vertices, enc, out, keep_edges, minor).Run();
+  Run(triangles.data(), triangles.size() / 3, num_vertices, enc, out, keep_edges, minor);
+}
+
+void EncodeConnectivity(const uint32_t* triangles, size_t num_triangles, uint32_t num_vertices,
+                        DecisionLog* log, ConnectivityEncoding* out, bool keep_edges,
+                        uint32_t minor) {
+  Run(triangles, num_triangles, num_vertices, log, out, keep_edges, minor);
 }
 
 }  // namespace o3dgc

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "arithmetic_coder.h"
+#include "decision_log.h"
 
 namespace o3dgc {
 
@@ -34,6 +35,11 @@ struct ConnectivityEncoding {
 // and back references; 1: format 1.1's).
 void EncodeConnectivity(const std::vector<uint32_t>& triangles, uint32_t num_vertices,
                         ArithmeticEncoder* enc, ConnectivityEncoding* out, bool keep_edges,
+                        uint32_t minor);
+// The same decisions recorded into `log` (see decision_log.h), to be replayed into an encoder;
+// the triangles as 3 * num_triangles ids.
+void EncodeConnectivity(const uint32_t* triangles, size_t num_triangles, uint32_t num_vertices,
+                        DecisionLog* log, ConnectivityEncoding* out, bool keep_edges,
                         uint32_t minor);
 
 }  // namespace o3dgc

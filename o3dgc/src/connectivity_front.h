@@ -8,6 +8,8 @@
 //
 // Gates are never reused: closing one only clears its flag, and the lists drop closed gates when
 // they are next walked (each gate leaves each list once), so opening and closing cost a few stores.
+// The encoder also compacts the gates between steps (MakeRoom), which bounds its memory by the
+// front instead of the mesh; the decoder, whose speed matters more, does not.
 #ifndef O3DGC_SRC_CONNECTIVITY_FRONT_H_
 #define O3DGC_SRC_CONNECTIVITY_FRONT_H_
 
@@ -83,9 +85,11 @@ class Front {
   // half when a mesh needs more. Callers never code more than `triangles` triangles (the
   // neighbour tables are sized for them; vertices and gates still grow if needed). Without
   // `keep_edges` only the opposite vertices are recorded (TakeOpposite is then empty).
-  void Reserve(size_t vertices, size_t triangles, bool keep_edges = true) {
+  // With `compact` (the encoder, which calls MakeRoom between steps) the gates start at a quarter
+  // of that.
+  void Reserve(size_t vertices, size_t triangles, bool keep_edges = true, bool compact = false) {
     GrowVertices(vertices < 16 ? 16 : vertices);
-    GrowGates(3 * triangles / 2 + triangles / 16 + 64);
+    GrowGates(compact ? triangles / 4 + 64 : 3 * triangles / 2 + triangles / 16 + 64);
     keep_edges_ = keep_edges;
     if (keep_edges_) opp_.assign(3 * triangles, kNoEdge);
     oppv_.assign(3 * triangles, kNoEdge);
@@ -166,6 +170,18 @@ class Front {
   void Close(int32_t g) {
     gates_[g].open = 0;
     last_open_ = -1;
+  }
+
+  // Room for the 3 gates a step opens at most: when the array is full, the closed gates are
+  // dropped (from the per-vertex lists and the stack, which skip them anyway) and the open ones
+  // renumbered, and the array grows only if they still fill half of it. Gate ids are handles, so
+  // the coding is the same; the array then holds about the front instead of every gate ever
+  // opened (about 56 bytes per triangle of a large mesh). Only between steps: no gate id may be
+  // held across it.
+  void MakeRoom() {
+    if (gate_capacity_ - num_gates_ >= 3) return;
+    Compact();
+    if (2 * num_gates_ + 3 > gate_capacity_) GrowGates(gate_capacity_ + gate_capacity_ / 2 + 16);
   }
 
   // Format 1.1 walks along the front: from v, `steps` times to the end of the newest open gate
@@ -311,13 +327,57 @@ class Front {
     Grow(&vertices_, num_vertices_, capacity);
     vertex_capacity_ = capacity;
   }
+  // See MakeRoom. The lists and the stack keep their order.
+  O3DGC_NOINLINE void Compact() {
+    auto relink = [this](int32_t head, int32_t Gate::*next) {
+      int32_t first = -1, last = -1;
+      for (int32_t g = head; g >= 0; g = gates_[g].*next) {
+        if (!gates_[g].open) continue;
+        if (last < 0) {
+          first = g;
+        } else {
+          gates_[last].*next = g;
+        }
+        last = g;
+      }
+      if (last >= 0) gates_[last].*next = -1;
+      return first;
+    };
+    for (uint32_t v = 0; v < num_vertices_; ++v) {
+      vertices_[v].head_out = relink(vertices_[v].head_out, &Gate::next_out);
+      vertices_[v].head_in = relink(vertices_[v].head_in, &Gate::next_in);
+    }
+    std::vector<int32_t> id(num_gates_, -1);
+    size_t n = 0;
+    for (size_t g = 0; g < num_gates_; ++g) {
+      if (!gates_[g].open) continue;
+      id[g] = int32_t(n);
+      gates_[n++] = gates_[g];
+    }
+    auto renumber = [&id](int32_t g) { return g < 0 ? g : id[size_t(g)]; };
+    for (size_t g = 0; g < n; ++g) {
+      gates_[g].next_out = renumber(gates_[g].next_out);
+      gates_[g].next_in = renumber(gates_[g].next_in);
+    }
+    for (uint32_t v = 0; v < num_vertices_; ++v) {
+      vertices_[v].head_out = renumber(vertices_[v].head_out);
+      vertices_[v].head_in = renumber(vertices_[v].head_in);
+    }
+    size_t top = 0;
+    for (size_t k = 0; k < stack_top_; ++k) {
+      if (id[size_t(stack_[k])] >= 0) stack_[top++] = id[size_t(stack_[k])];
+    }
+    stack_top_ = top;
+    num_gates_ = n;
+  }
   O3DGC_NOINLINE void GrowGates(size_t capacity) {
     Grow(&gates_, num_gates_, capacity);
     Grow(&stack_, stack_top_, capacity);  // never more entries than gates
     gate_capacity_ = capacity;
   }
 
-  // Gates are never reused: at most one per AddHalfEdge, each on the stack once.
+  // Gates are never reused (but renumbered by Compact): at most one per AddHalfEdge, each on the
+  // stack once.
   std::unique_ptr<Gate[]> gates_;
   std::unique_ptr<int32_t[]> stack_;
   size_t num_gates_ = 0, gate_capacity_ = 0, stack_top_ = 0;

@@ -91,7 +91,7 @@ Status DecodeTriangles(DecodeState& st) {
     attribute_wedges |= d.prediction == Prediction::kParallelogram;
   return DecodeConnectivity(&st.dec, st.nt, st.nv, &st.tris, &st.nc,
                             attribute_wedges ? &st.opposite : nullptr, &st.opposite_vertices,
-                            &st.vertex_triangles, st.sh.minor);
+                            &st.vertex_triangles, st.sh.minor, st.nt >= kCompactFrontTriangles);
 }
 
 Status DecodeSeams(DecodeState& st) {

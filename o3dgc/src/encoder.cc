@@ -9,6 +9,7 @@
 #include "ascii_stream.h"
 #include "attribute_coder.h"
 #include "connectivity_encoder.h"
+#include "decision_log.h"
 #include "entropy.h"
 #include "key_table.h"
 #include "o3dgc/o3dgc.h"
@@ -56,33 +57,32 @@ std::vector<float> Reorder(const std::vector<float>& v, uint32_t dim,
   return out;
 }
 
-// What the stages of one encode share. The stages follow the payload's parts (payload_header.h);
-// decoder.cc mirrors each.
-struct EncodeState {
-  EncodeState(const MeshView& m, const EncodeParams& p)
-      : mesh(m),
-        params(p),
-        nv(m.num_vertices),
-        nt(m.num_triangles),
-        fast_decode(p.fast_decode),
-        order(CodingOrder::ForStream(p.fast_decode)) {}
-  const MeshView& mesh;
-  const EncodeParams& params;
+}  // namespace
+
+// What every position grid shares: the stages up to the positions (validation, welding,
+// connectivity, seams, the order tables), their coded decisions recorded, and the positions'
+// wedges. The stages follow the payload's parts (payload_header.h); decoder.cc mirrors each.
+struct GridEncoder::Prepared {
+  Prepared(const MeshView& m, const EncodeParams& p)
+      : mesh(m), params(p), nv(m.num_vertices), nt(m.num_triangles) {}
+  const MeshView mesh;
+  const EncodeParams params;
   const size_t nv, nt;
-  bool fast_decode;  // the stream's flag (EncodeParams::fast_decode or auto_fast_decode)
-  CodingOrder::Kind order;
-  PayloadHeader h;
-  // The input's values, dense.
-  std::vector<float> positions, normals;
+  PayloadHeader h;  // the position quantizer is each grid's
+  // The input's values, dense: `positions` points at the caller's array when it is dense, else
+  // at own_positions.
+  const float* positions = nullptr;
+  std::vector<float> own_positions, normals;
   std::vector<std::vector<float>> floats;
   std::vector<std::vector<int32_t>> ints;
   // Welding: input vertex -> welded vertex (kNone if unreferenced), the triangles over them.
   std::vector<uint32_t> weld;
   uint32_t num_welded = 0;
+  // Empty when welding changes no index (every vertex referenced, no two equal): the connectivity
+  // then reads mesh.indices itself.
   std::vector<uint32_t> welded_tris;
-  std::vector<uint8_t> payload;
-  ArithmeticEncoder enc{&payload};
-  StreamInfo si;
+  // The connectivity's, seams' and order tables' decisions, coded after each grid's header.
+  DecisionLog log;
   // Connectivity: the decoder's numbering of welded vertices, the input vertex at each decoded
   // corner, the rotation of each decoded triangle.
   ConnectivityEncoding conn;
@@ -95,6 +95,32 @@ struct EncodeState {
   std::vector<uint32_t> orig_new, old_of_orig, welded_of_orig, rep_of_welded;
   uint32_t nw = 0;
   bool has_seams = false;
+  // The positions' wedges (parallelogram prediction), the same for every grid.
+  WedgeTable wedges;
+};
+
+namespace {
+
+using Prepared = GridEncoder::Prepared;
+
+// One grid's stream.
+struct GridState {
+  GridState(const Prepared& p, int bits, RangeMode range)
+      : pre(p),
+        h(p.h),
+        fast_decode(p.params.fast_decode),
+        order(CodingOrder::ForStream(p.params.fast_decode)) {
+    h.position.bits = bits;
+    h.position.range = range;
+  }
+  const Prepared& pre;
+  PayloadHeader h;
+  std::vector<uint8_t> payload;
+  ArithmeticEncoder enc{&payload};
+  StreamInfo si;
+  bool fast_decode;  // the stream's flag (EncodeParams::fast_decode or auto_fast_decode)
+  CodingOrder::Kind order;
+  std::unique_ptr<SideModels> sm{new SideModels};
   std::vector<int32_t> qpos;  // quantized positions per position vertex
 };
 
@@ -106,7 +132,7 @@ void Release(std::vector<T>& v) {
 }
 
 // The working arrays the stages after connectivity and seams no longer read.
-void ReleaseConnectivityWork(EncodeState& st) {
+void ReleaseConnectivityWork(Prepared& st) {
   Release(st.welded_tris);
   Release(st.weld);
   Release(st.welded_new);
@@ -117,11 +143,11 @@ void ReleaseConnectivityWork(EncodeState& st) {
 }
 
 // The checks that need no copy of the input.
+// (The position bits are checked per grid: ValidGrid.)
 Status Validate(const MeshView& mesh, const EncodeParams& params) {
   const size_t nv = mesh.num_vertices, nt = mesh.num_triangles;
   if (nv > kMaxCount || nt > kMaxCount) return Status::kInvalidArgument;
   if ((nv > 0 && !mesh.positions) || (nt > 0 && !mesh.indices)) return Status::kInvalidArgument;
-  if (params.position_bits < 1 || params.position_bits > 30) return Status::kInvalidArgument;
   if (params.normal_bits < 1 || params.normal_bits > 30) return Status::kInvalidArgument;
   if (params.position_prediction == Prediction::kSurfaceNormal) return Status::kInvalidArgument;
   for (size_t i = 0; i < 3 * nt; ++i) {
@@ -130,14 +156,23 @@ Status Validate(const MeshView& mesh, const EncodeParams& params) {
   return Status::kOk;
 }
 
-// Attribute descriptors and quantizers; the input's values copied densely (and checked).
-Status Describe(EncodeState& st) {
+bool ValidGrid(int position_bits) { return position_bits >= 1 && position_bits <= 30; }
+
+bool AllFinite(const float* v, size_t n) {
+  for (size_t i = 0; i < n; ++i) {
+    if (!std::isfinite(v[i])) return false;
+  }
+  return true;
+}
+
+// Attribute descriptors and quantizers (but the positions', which is each grid's); the input's
+// values copied densely where they are not (and checked).
+Status Describe(Prepared& st) {
   const MeshView& mesh = st.mesh;
   const EncodeParams& params = st.params;
   const size_t nv = st.nv;
   const size_t nt = st.nt;
   PayloadHeader& h = st.h;
-  std::vector<float>& positions = st.positions;
   std::vector<float>& normals = st.normals;
   std::vector<std::vector<float>>& floats = st.floats;
   std::vector<std::vector<int32_t>>& ints = st.ints;
@@ -148,13 +183,16 @@ Status Describe(EncodeState& st) {
   h.has_groups = mesh.triangle_groups != nullptr;
   h.position.semantic = Semantic::kPosition;
   h.position.dimension = 3;
-  h.position.bits = params.position_bits;
   h.position.prediction = params.position_prediction == Prediction::kDefault
                               ? Prediction::kParallelogram
                               : params.position_prediction;
-  h.position.range = params.position_range;
-  positions = nv ? Gather(mesh.positions, mesh.position_stride, 3, nv) : std::vector<float>();
-  if (!AllFinite(positions)) return Status::kInvalidArgument;
+  if (mesh.position_stride == 0 || mesh.position_stride == 3 * sizeof(float)) {
+    st.positions = mesh.positions;
+  } else {
+    st.own_positions = Gather(mesh.positions, mesh.position_stride, 3, nv);
+    st.positions = st.own_positions.data();
+  }
+  if (nv > 0 && !AllFinite(st.positions, 3 * nv)) return Status::kInvalidArgument;
   if (h.has_normals) {
     h.normal.semantic = Semantic::kNormal;
     h.normal.dimension = 3;
@@ -208,11 +246,9 @@ Status Describe(EncodeState& st) {
     d->quant.mode = d->range;
     d->quant.Fit(v.data(), d->dimension * sizeof(float), nv);
   };
-  fit(&h.position, positions);
   if (h.has_normals && h.normal.prediction != Prediction::kSurfaceNormal) fit(&h.normal, normals);
   for (size_t i = 0; i < h.floats.size(); ++i) fit(&h.floats[i], floats[i]);
   // Values near FLT_MAX can give a range whose end overflows: not representable in a stream.
-  if (!h.position.quant.Valid()) return Status::kUnsupported;
   if (h.has_normals && h.normal.prediction != Prediction::kSurfaceNormal &&
       !h.normal.quant.Valid()) {
     return Status::kUnsupported;
@@ -224,11 +260,11 @@ Status Describe(EncodeState& st) {
   return Status::kOk;
 }
 
-void Weld(EncodeState& st) {
+void Weld(Prepared& st) {
   const MeshView& mesh = st.mesh;
   const size_t nv = st.nv;
   const size_t nt = st.nt;
-  std::vector<float>& positions = st.positions;
+  const float* positions = st.positions;
   std::vector<uint32_t>& weld = st.weld;
   uint32_t& num_welded = st.num_welded;
   std::vector<uint32_t>& welded_tris = st.welded_tris;
@@ -238,25 +274,28 @@ void Weld(EncodeState& st) {
   {
     std::vector<uint8_t> referenced(nv, 0);
     for (size_t i = 0; i < 3 * nt; ++i) referenced[mesh.indices[i]] = 1;
-    KeyTable table(positions.data(), nv);
+    KeyTable table(positions, nv);
     for (uint32_t v = 0; v < nv; ++v) {
       if (!referenced[v]) continue;
       const uint32_t first = table.FindOrInsert(v);
       weld[v] = first == v ? num_welded++ : weld[first];
     }
   }
+  bool identity = num_welded == nv;
+  for (uint32_t v = 0; v < nv && identity; ++v) identity = weld[v] == v;
+  if (identity) return;
   welded_tris.resize(3 * nt);
   for (size_t i = 0; i < 3 * nt; ++i) welded_tris[i] = weld[mesh.indices[i]];
 }
 
-void EncodeTriangles(EncodeState& st) {
+void EncodeTriangles(Prepared& st) {
   const MeshView& mesh = st.mesh;
   const size_t nt = st.nt;
   PayloadHeader& h = st.h;
   std::vector<uint32_t>& weld = st.weld;
   uint32_t& num_welded = st.num_welded;
   std::vector<uint32_t>& welded_tris = st.welded_tris;
-  ArithmeticEncoder& enc = st.enc;
+  DecisionLog& enc = st.log;
   ConnectivityEncoding& conn = st.conn;
   uint32_t& nc = st.nc;
   std::vector<uint32_t>& welded_new = st.welded_new;
@@ -268,7 +307,8 @@ void EncodeTriangles(EncodeState& st) {
   bool attribute_wedges = h.has_normals && h.normal.prediction == Prediction::kParallelogram;
   for (const AttributeDesc& d : h.floats)
     attribute_wedges |= d.prediction == Prediction::kParallelogram;
-  EncodeConnectivity(welded_tris, num_welded, &enc, &conn, attribute_wedges, kFormatMinor);
+  const uint32_t* tris = welded_tris.empty() ? mesh.indices : welded_tris.data();
+  EncodeConnectivity(tris, nt, num_welded, &enc, &conn, attribute_wedges, kFormatMinor);
   nc = uint32_t(conn.old_of_new.size());
   welded_new.assign(num_welded, kNone);
   for (uint32_t i = 0; i < nc; ++i) welded_new[conn.old_of_new[i]] = i;
@@ -293,11 +333,11 @@ void EncodeTriangles(EncodeState& st) {
   }
 }
 
-void EncodeSeams(EncodeState& st) {
+void EncodeSeams(Prepared& st) {
   const size_t nv = st.nv;
   const size_t nt = st.nt;
   std::vector<uint32_t>& weld = st.weld;
-  ArithmeticEncoder& enc = st.enc;
+  DecisionLog& enc = st.log;
   uint32_t& nc = st.nc;
   std::vector<uint32_t>& welded_new = st.welded_new;
   std::vector<uint32_t>& corner_vertex = st.corner_vertex;
@@ -362,10 +402,10 @@ void EncodeSeams(EncodeState& st) {
 }
 
 // The input order (keep_order): vertex and triangle permutations, corner rotations.
-void EncodeExactOrder(EncodeState& st) {
+void EncodeExactOrder(Prepared& st) {
   const size_t nv = st.nv;
   const size_t nt = st.nt;
-  ArithmeticEncoder& enc = st.enc;
+  DecisionLog& enc = st.log;
   ConnectivityEncoding& conn = st.conn;
   std::vector<uint8_t>& rotation = st.rotation;
   SideModels* const sm = st.sm.get();
@@ -384,17 +424,37 @@ void EncodeExactOrder(EncodeState& st) {
   }
 }
 
+// After the seams: the working arrays no grid needs, and the positions' wedges built.
+void FinishPrepare(Prepared& st) {
+  ReleaseConnectivityWork(st);
+  st.log.ShrinkToFit();
+  ConnectivityEncoding& conn = st.conn;
+  if (st.h.position.prediction == Prediction::kParallelogram) {
+    st.wedges.BuildFromOppositeVertices(conn.triangles, st.nw, conn.opposite_vertices,
+                                        &conn.vertex_triangles);
+  }
+  Release(conn.triangles);
+  Release(conn.opposite_vertices);
+  Release(conn.vertex_triangles);
+  if (!st.h.has_normals && st.h.floats.empty() && st.h.ints.empty()) {
+    // Only the attributes read the attribute vertices.
+    Release(st.orig_new);
+    Release(st.old_of_orig);
+    Release(st.welded_of_orig);
+  }
+}
+
 // Positions, per position (welded) vertex.
-void EncodePositions(EncodeState& st) {
-  const EncodeParams& params = st.params;
+void EncodePositions(GridState& st) {
+  const Prepared& pre = st.pre;
+  const EncodeParams& params = pre.params;
   bool& fast_decode = st.fast_decode;
   CodingOrder::Kind& order = st.order;
   PayloadHeader& h = st.h;
-  std::vector<float>& positions = st.positions;
+  const float* positions = pre.positions;
   ArithmeticEncoder& enc = st.enc;
-  ConnectivityEncoding& conn = st.conn;
-  std::vector<uint32_t>& rep_of_welded = st.rep_of_welded;
-  uint32_t& nw = st.nw;
+  const std::vector<uint32_t>& rep_of_welded = pre.rep_of_welded;
+  const uint32_t nw = pre.nw;
   std::vector<int32_t>& qpos = st.qpos;
   qpos.resize(size_t(nw) * 3);
   for (uint32_t w = 0; w < nw; ++w) {
@@ -403,58 +463,47 @@ void EncodePositions(EncodeState& st) {
           h.position.quant.Quantize(positions[3 * size_t(rep_of_welded[w]) + k], k);
     }
   }
-  Release(positions);
-  Release(rep_of_welded);
-  {
-    bool coded = false;  // the positions are in the stream already (auto_fast_decode)
-    WedgeTable wedges;
-    if (h.position.prediction == Prediction::kParallelogram) {
-      wedges.BuildFromOppositeVertices(conn.triangles, nw, conn.opposite_vertices,
-                                       &conn.vertex_triangles);
-    }
-    if (!fast_decode && params.auto_fast_decode &&
-        h.position.prediction == Prediction::kParallelogram && RawLowBits(nw)) {
-      // The bytes of the positions alone in each order (see EncodeParams::auto_fast_decode). The
-      // estimates (a pass without coding) rule out the meshes where the id order is clearly
-      // larger (CAD parts: 1.7-2.5x, igea 1.10x); they are too coarse to decide the close ones
-      // (bunny: +0.7 % estimated, +4 % coded; a noisy scan: +0.6 %, +2.4 %).
-      auto bits_in = [&](CodingOrder::Kind kind) {
-        return EstimatePositionBits(wedges, qpos, h.position.bits, kind);
-      };
-      auto size_in = [&](CodingOrder::Kind kind) {
-        std::vector<uint8_t> scratch;
-        ArithmeticEncoder e(&scratch);
-        EncodeQuantized(&e, &wedges, qpos, 3, h.position.bits, h.position.prediction, kind);
-        e.Finish();
-        return double(scratch.size());
-      };
-      if (bits_in(CodingOrder::kVertexId) <= kAutoFastDecodeTry * bits_in(CodingOrder::kGreedy)) {
-        // The id order is coded into the stream itself and the greedy order aside; if the id
-        // order loses, the stream is rolled back and the greedy order coded again. Two codings
-        // instead of three when the id order wins (the scans), the same three when it loses.
-        const ArithmeticEncoder saved = enc;
-        const size_t saved_size = st.payload.size();
-        const size_t start = enc.BytesSoFar();
-        EncodeQuantized(&enc, &wedges, qpos, 3, h.position.bits, h.position.prediction,
-                        CodingOrder::kVertexId);
-        const double id_bytes = double(enc.BytesSoFar() - start);
-        if (id_bytes <= kAutoFastDecodeCost * size_in(CodingOrder::kGreedy)) {
-          fast_decode = true;
-          order = CodingOrder::kVertexId;
-          coded = true;
-        } else {
-          enc = saved;
-          st.payload.resize(saved_size);
-        }
+  bool coded = false;  // the positions are in the stream already (auto_fast_decode)
+  const WedgeTable& wedges = pre.wedges;
+  if (!fast_decode && params.auto_fast_decode &&
+      h.position.prediction == Prediction::kParallelogram && RawLowBits(nw)) {
+    // The bytes of the positions alone in each order (see EncodeParams::auto_fast_decode). The
+    // estimates (a pass without coding) rule out the meshes where the id order is clearly
+    // larger (CAD parts: 1.7-2.5x, igea 1.10x); they are too coarse to decide the close ones
+    // (bunny: +0.7 % estimated, +4 % coded; a noisy scan: +0.6 %, +2.4 %).
+    auto bits_in = [&](CodingOrder::Kind kind) {
+      return EstimatePositionBits(wedges, qpos, h.position.bits, kind);
+    };
+    auto size_in = [&](CodingOrder::Kind kind) {
+      std::vector<uint8_t> scratch;
+      ArithmeticEncoder e(&scratch);
+      EncodeQuantized(&e, &wedges, qpos, 3, h.position.bits, h.position.prediction, kind);
+      e.Finish();
+      return double(scratch.size());
+    };
+    if (bits_in(CodingOrder::kVertexId) <= kAutoFastDecodeTry * bits_in(CodingOrder::kGreedy)) {
+      // The id order is coded into the stream itself and the greedy order aside; if the id
+      // order loses, the stream is rolled back and the greedy order coded again. Two codings
+      // instead of three when the id order wins (the scans), the same three when it loses.
+      const ArithmeticEncoder saved = enc;
+      const size_t saved_size = st.payload.size();
+      const size_t start = enc.BytesSoFar();
+      EncodeQuantized(&enc, &wedges, qpos, 3, h.position.bits, h.position.prediction,
+                      CodingOrder::kVertexId);
+      const double id_bytes = double(enc.BytesSoFar() - start);
+      if (id_bytes <= kAutoFastDecodeCost * size_in(CodingOrder::kGreedy)) {
+        fast_decode = true;
+        order = CodingOrder::kVertexId;
+        coded = true;
+      } else {
+        enc = saved;
+        st.payload.resize(saved_size);
       }
     }
-    if (!coded) {
-      EncodeQuantized(&enc, &wedges, qpos, 3, h.position.bits, h.position.prediction, order);
-    }
   }
-  Release(conn.triangles);
-  Release(conn.opposite_vertices);
-  Release(conn.vertex_triangles);
+  if (!coded) {
+    EncodeQuantized(&enc, &wedges, qpos, 3, h.position.bits, h.position.prediction, order);
+  }
 }
 
 // Normals, float and int attributes, over the attribute vertices.
@@ -480,17 +529,18 @@ struct AttributeMesh {
 // seam (smooth shading, scans, DCC exports); coded per attribute vertex, each copy was coded
 // again and its normal predicted from half a fan.
 template <typename T>
-AttributeMesh* CodeMerges(EncodeState& st, const std::vector<uint32_t>& attr_tris,
+AttributeMesh* CodeMerges(GridState& st, const std::vector<uint32_t>& attr_tris,
                           const std::vector<uint32_t>& first, const T* values, uint32_t dim,
                           AttributeMesh* attr, AttributeMesh* merged) {
-  const size_t nv = st.nv;
+  const Prepared& pre = st.pre;
+  const size_t nv = pre.nv;
   std::vector<uint8_t> merge(nv, 0);
   bool any = false;
   for (uint32_t i = 0; i < nv; ++i) {
-    const uint32_t f = first[st.welded_of_orig[i]];
+    const uint32_t f = first[pre.welded_of_orig[i]];
     if (f == i) continue;
-    merge[i] = std::memcmp(values + size_t(st.old_of_orig[i]) * dim,
-                           values + size_t(st.old_of_orig[f]) * dim, dim * sizeof(T)) == 0;
+    merge[i] = std::memcmp(values + size_t(pre.old_of_orig[i]) * dim,
+                           values + size_t(pre.old_of_orig[f]) * dim, dim * sizeof(T)) == 0;
     any |= merge[i] != 0;
   }
   st.enc.EncodeBits(any ? 1 : 0, 1);
@@ -501,14 +551,14 @@ AttributeMesh* CodeMerges(EncodeState& st, const std::vector<uint32_t>& attr_tri
   merged->own_input_of.clear();
   uint32_t n = 0;
   for (uint32_t i = 0; i < nv; ++i) {
-    const uint32_t f = first[st.welded_of_orig[i]];
+    const uint32_t f = first[pre.welded_of_orig[i]];
     if (f != i) st.enc.Encode(merge[i], model);
     if (merge[i]) {
       of_vertex[i] = of_vertex[f];
     } else {
       of_vertex[i] = n++;
-      merged->own_position_of.push_back(st.welded_of_orig[i]);
-      merged->own_input_of.push_back(st.old_of_orig[i]);
+      merged->own_position_of.push_back(pre.welded_of_orig[i]);
+      merged->own_input_of.push_back(pre.old_of_orig[i]);
     }
   }
   merged->own_tris.resize(attr_tris.size());
@@ -522,19 +572,20 @@ AttributeMesh* CodeMerges(EncodeState& st, const std::vector<uint32_t>& attr_tri
   return merged;
 }
 
-void EncodeAttributes(EncodeState& st) {
-  const size_t nv = st.nv;
-  const size_t nt = st.nt;
+void EncodeAttributes(GridState& st) {
+  const Prepared& pre = st.pre;
+  const size_t nv = pre.nv;
+  const size_t nt = pre.nt;
   CodingOrder::Kind& order = st.order;
   PayloadHeader& h = st.h;
-  std::vector<float>& normals = st.normals;
-  std::vector<std::vector<float>>& floats = st.floats;
-  std::vector<std::vector<int32_t>>& ints = st.ints;
+  const std::vector<float>& normals = pre.normals;
+  const std::vector<std::vector<float>>& floats = pre.floats;
+  const std::vector<std::vector<int32_t>>& ints = pre.ints;
   ArithmeticEncoder& enc = st.enc;
   StreamInfo& si = st.si;
-  ConnectivityEncoding& conn = st.conn;
-  std::vector<uint32_t>& corner_vertex = st.corner_vertex;
-  std::vector<uint32_t>& orig_new = st.orig_new;
+  const ConnectivityEncoding& conn = pre.conn;
+  const std::vector<uint32_t>& corner_vertex = pre.corner_vertex;
+  const std::vector<uint32_t>& orig_new = pre.orig_new;
   std::vector<int32_t>& qpos = st.qpos;
   std::vector<uint32_t> attr_tris;  // only normals and float attributes need it (not ints)
   if (h.has_normals || !h.floats.empty()) {
@@ -544,13 +595,14 @@ void EncodeAttributes(EncodeState& st) {
   AttributeMesh attr, merged;
   attr.tris = &attr_tris;
   attr.n = uint32_t(nv);
-  attr.position_of = st.welded_of_orig.data();
-  attr.input_of = &st.old_of_orig;
-  const bool may_merge = kFormatMinor >= 1 && st.has_seams;
+  attr.position_of = pre.welded_of_orig.data();
+  attr.input_of = &pre.old_of_orig;
+  const bool any = h.has_normals || !h.floats.empty() || !h.ints.empty();
+  const bool may_merge = kFormatMinor >= 1 && pre.has_seams && any;
   std::vector<uint32_t> first;  // the first (smallest) attribute vertex of each position vertex
   if (may_merge) {
-    first.assign(st.nw, kNone);
-    for (uint32_t i = uint32_t(nv); i-- > 0;) first[st.welded_of_orig[i]] = i;
+    first.assign(pre.nw, kNone);
+    for (uint32_t i = uint32_t(nv); i-- > 0;) first[pre.welded_of_orig[i]] = i;
   }
   NormalGeometry geo;
   geo.positions = qpos.data();
@@ -609,12 +661,12 @@ void EncodeAttributes(EncodeState& st) {
   }
 }
 
-void EncodeGroups(EncodeState& st) {
-  const MeshView& mesh = st.mesh;
-  const size_t nt = st.nt;
+void EncodeGroups(GridState& st) {
+  const MeshView& mesh = st.pre.mesh;
+  const size_t nt = st.pre.nt;
   PayloadHeader& h = st.h;
   ArithmeticEncoder& enc = st.enc;
-  ConnectivityEncoding& conn = st.conn;
+  const ConnectivityEncoding& conn = st.pre.conn;
   SideModels* const sm = st.sm.get();
   if (h.has_groups) {
     uint32_t prev = 0;
@@ -627,32 +679,49 @@ void EncodeGroups(EncodeState& st) {
   }
 }
 
-}  // namespace
-
-Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint8_t>* out,
-              StreamInfo* info) {
-  if (!out) return Status::kInvalidArgument;
-  Status s = Validate(mesh, params);
+// The stages up to the positions, for every grid.
+Status PrepareStages(Prepared& st, const std::function<bool(float)>& progress) {
+  Status s = Validate(st.mesh, st.params);
   if (s != Status::kOk) return s;
-  auto progress = [&](float f) { return !params.progress || params.progress(f); };
-  std::unique_ptr<EncodeState> state(new EncodeState(mesh, params));
-  EncodeState& st = *state;
   if ((s = Describe(st)) != Status::kOk) return s;
   Weld(st);
+  EncodeTriangles(st);
+  if (!progress(0.2f)) return Status::kCancelled;
+  EncodeSeams(st);
+  if (st.params.keep_order) EncodeExactOrder(st);
+  FinishPrepare(st);
+  if (!progress(0.4f)) return Status::kCancelled;
+  return Status::kOk;
+}
+
+// One grid's stream from the prepared stages. `release` (may be null: then `pre` is shared with
+// other grids) is `pre` itself when this is its only grid: its arrays are freed once done.
+Status EncodeGrid(const Prepared& pre, Prepared* release, int position_bits,
+                  RangeMode position_range, const std::function<bool(float)>& progress,
+                  std::vector<uint8_t>* out, StreamInfo* info) {
+  if (!out || !ValidGrid(position_bits)) return Status::kInvalidArgument;
+  std::unique_ptr<GridState> state(new GridState(pre, position_bits, position_range));
+  GridState& st = *state;
+  AttributeDesc& position = st.h.position;
+  position.quant.dimension = 3;
+  position.quant.bits = position.bits;
+  position.quant.mode = position.range;
+  position.quant.Fit(pre.positions, 3 * sizeof(float), pre.nv);
+  // Values near FLT_MAX can give a range whose end overflows: not representable in a stream.
+  if (!position.quant.Valid()) return Status::kUnsupported;
   ArithmeticEncoder& enc = st.enc;
   StreamInfo& si = st.si;
   EncodePayloadHeader(&enc, st.h);
   si.header = enc.BytesSoFar();
-  EncodeTriangles(st);
-  if (!progress(0.2f)) return Status::kCancelled;
-  EncodeSeams(st);
-  if (params.keep_order) EncodeExactOrder(st);
-  ReleaseConnectivityWork(st);
+  pre.log.ReplayInto(&enc);
   si.connectivity = enc.BytesSoFar() - si.header;
-  if (!progress(0.4f)) return Status::kCancelled;
   size_t mark = enc.BytesSoFar();
   EncodePositions(st);
   si.positions = enc.BytesSoFar() - mark;
+  if (release) {
+    release->wedges = WedgeTable();
+    Release(release->rep_of_welded);
+  }
   if (!progress(0.6f)) return Status::kCancelled;
   EncodeAttributes(st);
   if (!progress(0.9f)) return Status::kCancelled;
@@ -664,10 +733,12 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
   const uint64_t min_payload = (budget + kElementsPerByte - 1) / kElementsPerByte;
   enc.Finish(min_payload > kBudgetSlackBytes ? size_t(min_payload - kBudgetSlackBytes) : 0);
   AddTailBytes(h, st.payload.size() > mark ? st.payload.size() - mark : 0, &si);
+  const EncodeParams& params = pre.params;
   out->clear();
   WriteHeader(params.keep_order, st.fast_decode, st.payload.size(), out);
   const size_t byte_header = out->size();
   out->insert(out->end(), st.payload.begin(), st.payload.end());
+  Release(st.payload);
   FinalizeCrc(out);
   si.header += byte_header;
   si.stream_type = params.stream_type;
@@ -675,13 +746,47 @@ Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint
   si.version_minor = kFormatMinor;
   si.keep_order = params.keep_order;
   si.fast_decode = st.fast_decode;
-  si.num_vertices = st.nv;
-  si.num_triangles = st.nt;
+  si.num_vertices = pre.nv;
+  si.num_triangles = pre.nt;
   if (params.stream_type == StreamType::kAscii) *out = PackAscii(*out);
   si.total = out->size();
   if (info) *info = si;
   if (!progress(1.0f)) return Status::kCancelled;
   return Status::kOk;
+}
+
+std::function<bool(float)> Checked(const ProgressFn& fn) {
+  return [fn](float f) { return !fn || fn(f); };
+}
+
+}  // namespace
+
+GridEncoder::GridEncoder() = default;
+GridEncoder::~GridEncoder() = default;
+
+Status GridEncoder::Prepare(const MeshView& mesh, const EncodeParams& params) {
+  prepared_.reset(new Prepared(mesh, params));
+  const Status s = PrepareStages(*prepared_, Checked(params.progress));
+  if (s != Status::kOk) prepared_.reset();
+  return s;
+}
+
+Status GridEncoder::Encode(int position_bits, RangeMode position_range, std::vector<uint8_t>* out,
+                           StreamInfo* info, const ProgressFn& progress) const {
+  if (!prepared_) return Status::kInvalidArgument;
+  return EncodeGrid(*prepared_, nullptr, position_bits, position_range, Checked(progress), out,
+                    info);
+}
+
+Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint8_t>* out,
+              StreamInfo* info) {
+  if (!out || !ValidGrid(params.position_bits)) return Status::kInvalidArgument;
+  const std::function<bool(float)> progress = Checked(params.progress);
+  std::unique_ptr<Prepared> pre(new Prepared(mesh, params));
+  const Status s = PrepareStages(*pre, progress);
+  if (s != Status::kOk) return s;
+  return EncodeGrid(*pre, pre.get(), params.position_bits, params.position_range, progress, out,
+                    info);
 }
 
 }  // namespace o3dgc

@@ -27,7 +27,9 @@ inline int FloorLog2(uint64_t v) { return 63 - __builtin_clzll(v); }
 
 // The k bits of v below its leading one (v >= 1, k = FloorLog2(v)): the top two through adaptive
 // models (the second conditioned on the first), the rest raw. Shared by EG and signed residuals.
-inline void EncodeMantissa(ArithmeticEncoder& e, BitModel (&suffix)[3], uint64_t v, int k) {
+// (Templates on the coder: an ArithmeticEncoder, or a DecisionLog that records for it.)
+template <typename Coder>
+inline void EncodeMantissa(Coder& e, BitModel (&suffix)[3], uint64_t v, int k) {
   if (k == 0) return;
   const int top = int((v >> (k - 1)) & 1);
   e.Encode(top, suffix[0]);
@@ -58,7 +60,8 @@ inline uint64_t DecodeMantissa(ArithmeticDecoder& d, BitModel (&suffix)[3], int 
   return v;
 }
 
-inline void EncodeEG(ArithmeticEncoder& e, EGModel& m, uint64_t u) {
+template <typename Coder>
+inline void EncodeEG(Coder& e, EGModel& m, uint64_t u) {
   const uint64_t v = u + 1;
   const int k = FloorLog2(v);
   for (int i = 0; i < k; ++i) e.Encode(1, m.prefix[i]);

@@ -78,6 +78,19 @@ void RoundTrip(const std::vector<uint32_t>& tris, uint32_t nv, size_t* bytes = n
     ASSERT_EQ(DecodeConnectivity(&dec, tris.size() / 3, nv, &out, &dnv, &opposite,
                                  &opposite_vertices, nullptr, minor),
               Status::kOk);
+    {
+      // With the front's gates compacted between steps: the same triangles and neighbours.
+      ArithmeticDecoder again(buf.data(), buf.size());
+      std::vector<uint32_t> c_out, c_opposite, c_opposite_vertices;
+      uint32_t c_nv = 0;
+      ASSERT_EQ(DecodeConnectivity(&again, tris.size() / 3, nv, &c_out, &c_nv, &c_opposite,
+                                   &c_opposite_vertices, nullptr, minor, /*compact_front=*/true),
+                Status::kOk);
+      EXPECT_EQ(c_out, out);
+      EXPECT_EQ(c_nv, dnv);
+      EXPECT_EQ(c_opposite, opposite);
+      EXPECT_EQ(c_opposite_vertices, opposite_vertices);
+    }
     EXPECT_EQ(dnv, nv);
     EXPECT_EQ(out, enc_out.triangles);
     EXPECT_EQ(opposite, enc_out.opposite);

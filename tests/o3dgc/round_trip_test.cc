@@ -172,6 +172,52 @@ TEST(RoundTrip, DefaultModeKeepsTriangleSet) {
   }
 }
 
+TestMesh SeamedGrid(bool hard);  // below
+
+// A GridEncoder's stream for a grid is Encode's with that grid, byte for byte, and its part sizes
+// too: every grid of every mode, grids encoded in any order from one Prepare, with seams, normals,
+// uvs, groups, the input order kept, ASCII streams, and on a mesh large enough for the positions'
+// automatic vertex-id order.
+TEST(RoundTrip, GridEncoderGivesEncodesStreams) {
+  std::vector<TestMesh> meshes = AllMeshes();
+  meshes.push_back(o3dgc_test::Torus(72, 60));  // 4320 vertices: auto_fast_decode runs
+  meshes.push_back(SeamedGrid(false));
+  meshes.push_back(SeamedGrid(true));
+  for (const TestMesh& t : meshes) {
+    for (int variant = 0; variant < 3; ++variant) {
+      EncodeParams p;
+      p.keep_order = variant == 1;
+      p.stream_type = variant == 2 ? StreamType::kAscii : StreamType::kBinary;
+      GridEncoder grids;
+      ASSERT_EQ(grids.Prepare(t.View(), p), Status::kOk);
+      for (RangeMode mode : {RangeMode::kDiagonal, RangeMode::kUniform, RangeMode::kPerAxis}) {
+        for (int bits : {14, 3, 21}) {
+          EncodeParams one = p;
+          one.position_bits = bits;
+          one.position_range = mode;
+          StreamInfo want_info, got_info;
+          const std::vector<uint8_t> want = EncodeOk(t, one, &want_info);
+          std::vector<uint8_t> got;
+          ASSERT_EQ(grids.Encode(bits, mode, &got, &got_info), Status::kOk);
+          EXPECT_EQ(got, want) << t.nv() << " vertices, variant " << variant << ", " << bits
+                               << " bits, mode " << int(mode);
+          EXPECT_EQ(got_info.connectivity, want_info.connectivity);
+          EXPECT_EQ(got_info.positions, want_info.positions);
+          EXPECT_EQ(got_info.total, want_info.total);
+        }
+      }
+      std::vector<uint8_t> s;
+      EXPECT_EQ(grids.Encode(0, RangeMode::kUniform, &s), Status::kInvalidArgument);
+    }
+  }
+  GridEncoder unprepared;
+  std::vector<uint8_t> s;
+  EXPECT_EQ(unprepared.Encode(14, RangeMode::kUniform, &s), Status::kInvalidArgument);
+  TestMesh bad = o3dgc_test::Sphere(8, 5);
+  bad.indices[4] = uint32_t(bad.nv());
+  EXPECT_EQ(unprepared.Prepare(bad.View(), EncodeParams()), Status::kInvalidArgument);
+}
+
 TEST(RoundTrip, KeepOrderIsExact) {
   for (const TestMesh& t : AllMeshes()) {
     EncodeParams p;

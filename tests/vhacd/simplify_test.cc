@@ -96,6 +96,26 @@ TEST(SimplifyTest, SphereKeepsItsVolumeAtTenPercent) {
   }
 }
 
+TEST(SimplifyTest, LargeSphereDecimatedInSlabsFirst) {
+  // 65k triangles: the first phase decimates slabs of the mesh apart, the second the whole.
+  const Mesh sphere = vhacd_test::Sphere(1.0, 256, 128);
+  ASSERT_GT(sphere.triangle_count(), 60000u);
+  for (uint32_t target : {6500u, 650u}) {
+    vhacd::SimplifyParameters p;
+    p.target_triangles = target;
+    const vhacd::SimplifyResult r = vhacd::Simplify(sphere.View(), p);
+    ASSERT_TRUE(r.ok()) << r.message;
+    EXPECT_LE(r.triangle_count(), target);
+    EXPECT_GE(r.triangle_count(), target - 2);
+    EXPECT_NEAR(Volume(r) / Volume(sphere), 1.0, target > 1000 ? 0.002 : 0.01);
+    for (size_t t = 0; t < r.triangle_count(); ++t) {
+      const V a = Point(r, r.indices[3 * t]), b = Point(r, r.indices[3 * t + 1]),
+              c = Point(r, r.indices[3 * t + 2]);
+      EXPECT_GT((b - a).cross(c - a).dot(a + b + c), 0.0) << "triangle " << t;
+    }
+  }
+}
+
 TEST(SimplifyTest, TorusNeverFlipsATriangle) {
   const Mesh torus = vhacd_test::Torus(1.0, 0.3, 96, 48);
   for (uint32_t target : {2000u, 400u}) {

@@ -5,8 +5,8 @@
 //   hacd_bench FOLDER [--hacd 'minNClusters maxConcavity invert extraDist facesPoints connectDist
 //              targetTriangles'] [--only NAME,NAME] [--repeats N] [--timeout S] [--samples N]
 //              [--threads N] [--csv FILE] [--no-bullet] [--no-vhacd]
-//   hacd_bench --timing MESH [--targets 500,1000,...] [--hacd '12 1000 0 1 1 30 0'] [--hulls DIR]
-//   hacd_bench --simplify FOLDER [--only NAME,NAME] [--node PATH] [--samples N]
+//   hacd_bench --timing MESH [--targets 500,1000,...] [--hacd '12 1000 0 1 1 30 0'] [--repeats N]
+//   [--hulls DIR] hacd_bench --simplify FOLDER [--only NAME,NAME] [--node PATH] [--samples N]
 //
 // Decomposition: every method runs in its own child process (a crash or hang of one does not stop
 // the run), `repeats` times; the medians of wall and CPU seconds are listed. The hulls of the first
@@ -426,6 +426,7 @@ int Timing(const std::string& path, const std::map<std::string, std::string>& op
   if (!ParseHacdLine(opt.count("--hacd") ? opt.at("--hacd") : "12 1000 0 1 1 30 0", &hp)) return 64;
   hp.num_threads = opt.count("--threads") ? std::atoi(opt.at("--threads").c_str()) : 0;
   hp.compute_report = false;
+  const int repeats = opt.count("--repeats") ? std::atoi(opt.at("--repeats").c_str()) : 1;
   Mesh mesh;
   if (!LoadMesh(path, &mesh)) return 1;
   std::vector<std::string> targets =
@@ -437,12 +438,16 @@ int Timing(const std::string& path, const std::map<std::string, std::string>& op
                                       {4000, 21}, {8000, 70},  {16000, 192}};
   for (const std::string& t : targets) {
     hp.target_triangles = static_cast<uint32_t>(std::atoi(t.c_str()));
-    const auto t0 = std::chrono::steady_clock::now();
-    const double c0 = CpuSeconds();
-    const vhacd::Result r = vhacd::DecomposeHacd(mesh.view(), hp);
-    const double cpu = CpuSeconds() - c0;
-    const double wall =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::vector<double> walls, cpus;
+    vhacd::Result r;
+    for (int k = 0; k < std::max(1, repeats); ++k) {
+      const auto t0 = std::chrono::steady_clock::now();
+      const double c0 = CpuSeconds();
+      r = vhacd::DecomposeHacd(mesh.view(), hp);
+      cpus.push_back(CpuSeconds() - c0);
+      walls.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    }
+    const double wall = Median(walls), cpu = Median(cpus);
     const auto it = blog.find(static_cast<int>(hp.target_triangles));
     std::printf("%9u %8s %6zu %8.3f %8.3f\n", hp.target_triangles,
                 it != blog.end() ? Fmt(it->second, "%.1f").c_str() : "-", r.hulls.size(), wall,
@@ -651,7 +656,7 @@ int main(int argc, char** argv) {
   };
   text("--hacd", "LINE", "the seven testHACD numbers (default '2 100 0 1 1 30 2000')");
   text("--only", "A,B", "only these meshes (file names without extension)");
-  text("--repeats", "N", "runs per method and mesh; times are medians (1)");
+  text("--repeats", "N", "runs per method and mesh (per row with --timing); times are medians (1)");
   text("--timeout", "S", "seconds before a run is stopped (600)");
   text("--samples", "N", "surface samples per measure");
   text("--threads", "N", "threads of hullpack's methods (decomposition 1, timing 0 = every core)");

@@ -4,7 +4,7 @@
 // the bytes checked against a single-thread run. Writes OUT/pack_speed.csv and
 // OUT/pack_speed.svg (time per triangle against triangles).
 //
-//   pack_speed_bench MESH... -o OUT [--levels 0,1,2] [--repeats 3] [--timeout S]
+//   pack_speed_bench MESH... -o OUT [--levels 0,1,2] [--repeats 3] [--timeout S] [--keep-meshes]
 //   e.g. pack_speed_bench bunny.obj igea.obj -o /tmp/speed --levels 0,1,2
 //
 // Each MESH (any format hullpack reads; a scene is flattened with its node transforms) is
@@ -24,6 +24,7 @@
 #include "bench/svg_plot.h"
 #include "common/cli_args.h"
 #include "common/file_util.h"
+#include "common/parallel.h"
 #include "hullpack/cli_util.h"
 #include "io/scene_io.h"
 #include "mesh/flatten.h"
@@ -145,10 +146,12 @@ struct Row {
 }  // namespace
 
 int main(int argc, char** argv) {
+  hullpack::UseOneMallocArena();  // as hullpack does: the packs run in children of this process
   std::vector<std::string> meshes;
   std::string out, level_list = "0,1,2";
   int repeats = 3;
   double timeout = 900;
+  bool keep_meshes = false;
   hullpack::CliArgs cli("pack_speed_bench", "MESH... -o OUT [options]",
                         "hullpack pack at defaults (with hulls) on each MESH subdivided 0, 1, 2, "
                         "... times\n"
@@ -160,6 +163,8 @@ int main(int argc, char** argv) {
   cli.String("--levels", "L,L,...", &level_list, "subdivision levels (default 0,1,2; each 0-6)");
   cli.Int("--repeats", "N", 1, 100, &repeats, "runs per mesh, median (default 3)");
   cli.Double("--timeout", "S", 1, 1e6, &timeout, "longest run, seconds (default 900)");
+  cli.Flag("--keep-meshes", &keep_meshes,
+           "keep the subdivided OBJ files in OUT (to profile a run of them)");
   if (std::optional<int> exit_code = cli.Parse(argc, argv)) return *exit_code;
   std::vector<int> levels;
   for (const char* p = level_list.c_str(); *p;) {
@@ -220,7 +225,7 @@ int main(int argc, char** argv) {
       const hullpack::Result<std::vector<uint8_t>> a = hullpack::ReadFileBytes(packed);
       const hullpack::Result<std::vector<uint8_t>> b = hullpack::ReadFileBytes(single);
       row.identical = one.ok && a.ok() && b.ok() && a.value() == b.value();
-      std::remove(obj.c_str());
+      if (!keep_meshes) std::remove(obj.c_str());
       rows.push_back(std::move(row));
     }
   }

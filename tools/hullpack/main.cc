@@ -2,6 +2,7 @@
 #include <string>
 #include <vector>
 
+#include "common/parallel.h"
 #include "hullpack/batch_command.h"
 #include "hullpack/cli_util.h"
 #include "hullpack/collision_command.h"
@@ -10,6 +11,7 @@
 #include "hullpack/unpack_command.h"
 
 int main(int argc, char** argv) {
+  hullpack::UseOneMallocArena();
   hullpack::CliArgs cli(
       "hullpack", "COMMAND [options]",
       "Convex collision hulls and compressed meshes, packed for the web and game engines.\n"

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <mutex>
 
 #include "common/parallel.h"
@@ -57,8 +58,10 @@ double PositionGridError(const Mesh& mesh, o3dgc::RangeMode mode, int bits) {
                                           mesh.vertex_count(), bits, mode);
 }
 
-// o3dgc::Encode's progress once the connectivity is coded.
-constexpr float kConnectivityCoded = 0.4f;
+// o3dgc::GridEncoder's progress: Prepare (the shared stages) reports up to kPrepared, each grid's
+// Encode from kGridStart on.
+constexpr float kPrepared = 0.4f;
+constexpr float kGridStart = 0.6f;
 
 Result<BudgetedEncoding> EncodeWithinError(const Mesh& mesh, const std::vector<uint32_t>& groups,
                                            const MeshCodecSettings& settings, double max_error,
@@ -106,28 +109,50 @@ Result<BudgetedEncoding> EncodeWithinError(const Mesh& mesh, const std::vector<u
                   "mesh '" + mesh.name + "': no position grid keeps the error within the budget");
   }
   auto t = Clock::now();
+  // The stages every grid shares run once; then the candidates, in parallel.
+  CodecInput in;
+  Status status = MakeCodecInput(mesh, groups, settings, &in);
+  if (!status.ok()) return status;
   std::mutex progress_mutex;
+  float prepared = 0;
   std::vector<float> done(candidates.size(), 0.0f);
-  // An encode holds its largest arrays while it codes the connectivity (the first 40 % of its
-  // progress): parallel candidates take turns there and overlap only after it.
-  std::mutex connectivity_turn;
+  // The fraction of the whole: Prepare's share, then the candidates' (each from kGridStart to 1).
+  auto report = [&]() {
+    float sum = 0;
+    for (float d : done) sum += d;
+    return settings.progress(prepared * kPrepared +
+                             (1 - kPrepared) * sum / static_cast<float>(done.size()));
+  };
+  in.params.progress = [&](float f) {
+    if (!settings.progress) return true;
+    std::lock_guard<std::mutex> lock(progress_mutex);
+    prepared = std::min(f / kPrepared, 1.0f);
+    return report();
+  };
+  // Freed before the chosen stream is decoded: the peak is the larger of the two, not their sum.
+  std::unique_ptr<o3dgc::GridEncoder> shared(new o3dgc::GridEncoder);
+  const o3dgc::GridEncoder& grids = *shared;
+  status = EncoderStatus(shared->Prepare(in.view, in.params), mesh.name);
+  if (!status.ok()) return status;
   ParallelFor(candidates.size(), threads, [&](size_t i) {
-    MeshCodecSettings s = settings;
-    s.position_bits = candidates[i].bits;
-    s.position_range = candidates[i].mode;
-    std::unique_lock<std::mutex> turn(connectivity_turn, std::defer_lock);
-    if (threads > 1) turn.lock();
-    s.progress = [&, i](float f) {
-      if (f >= kConnectivityCoded && turn.owns_lock()) turn.unlock();
+    const o3dgc::ProgressFn progress = [&, i](float f) {
       if (!settings.progress) return true;
       std::lock_guard<std::mutex> lock(progress_mutex);
-      done[i] = f;
-      float sum = 0;
-      for (float d : done) sum += d;
-      return settings.progress(sum / static_cast<float>(done.size()));
+      done[i] = std::max(0.0f, (f - kGridStart) / (1 - kGridStart));
+      return report();
     };
-    candidates[i].encoded = EncodeMesh(mesh, groups, s);
+    EncodedMesh encoded;
+    encoded.gltf_attributes = in.attributes.gltf_attributes;
+    const Status s = EncoderStatus(grids.Encode(candidates[i].bits, candidates[i].mode,
+                                                &encoded.stream, &encoded.info, progress),
+                                   mesh.name);
+    if (s.ok()) {
+      candidates[i].encoded = std::move(encoded);
+    } else {
+      candidates[i].encoded = s;
+    }
   });
+  shared.reset();
   BudgetedEncoding out;
   out.seconds_encode = Seconds(t);
   // The smallest stream; on a tie the first candidate, whatever the thread count.

@@ -11,7 +11,9 @@
 // distances below it. The error of a grid is known without coding (o3dgc::PositionQuantizationError
 // applies the encoder's quantizer and the decoder's reconstruction to every vertex), so
 // EncodeWithinError finds, for each mode, the fewest bits whose error is within the budget, encodes
-// only those candidates (at most three, in parallel) and keeps the smallest stream.
+// only those candidates and keeps the smallest stream. The candidates share one o3dgc::GridEncoder:
+// what does not depend on the grid (connectivity, seams) is coded once, then the candidates' grids
+// (at most three) run in parallel.
 #ifndef HULLPACK_TOOLS_PIPELINE_ERROR_BUDGET_H_
 #define HULLPACK_TOOLS_PIPELINE_ERROR_BUDGET_H_
 

@@ -22,10 +22,12 @@ o3dgc::FloatAttributeView FloatView(const std::vector<float>& values, uint32_t d
 
 }  // namespace
 
-Result<EncodedMesh> EncodeMesh(const Mesh& mesh, const std::vector<uint32_t>& groups,
-                               const MeshCodecSettings& s) {
-  EncodedMesh out;
-  o3dgc::MeshView view;
+Status MakeCodecInput(const Mesh& mesh, const std::vector<uint32_t>& groups,
+                      const MeshCodecSettings& s, CodecInput* in) {
+  EncodedMesh& out = in->attributes;
+  out.gltf_attributes.clear();
+  in->view = o3dgc::MeshView();
+  o3dgc::MeshView& view = in->view;
   view.positions = mesh.positions.data();
   view.position_stride = 3 * sizeof(float);
   view.num_vertices = mesh.vertex_count();
@@ -63,7 +65,8 @@ Result<EncodedMesh> EncodeMesh(const Mesh& mesh, const std::vector<uint32_t>& gr
         FloatView(mesh.tangents, 4, o3dgc::Semantic::kGeneric, s.tangent_bits));
     out.gltf_attributes.emplace_back("TANGENT", id++);
   }
-  std::vector<int32_t> joints(mesh.joints.begin(), mesh.joints.end());
+  std::vector<int32_t>& joints = in->joints;
+  joints.assign(mesh.joints.begin(), mesh.joints.end());
   if (!joints.empty()) {
     o3dgc::IntAttributeView j;
     j.data = joints.data();
@@ -80,7 +83,8 @@ Result<EncodedMesh> EncodeMesh(const Mesh& mesh, const std::vector<uint32_t>& gr
     }
     view.triangle_groups = groups.data();
   }
-  o3dgc::EncodeParams params;
+  o3dgc::EncodeParams& params = in->params;
+  params = o3dgc::EncodeParams();
   params.stream_type = s.stream_type;
   params.keep_order = s.keep_order;
   params.fast_decode = s.fast_decode;
@@ -88,12 +92,24 @@ Result<EncodedMesh> EncodeMesh(const Mesh& mesh, const std::vector<uint32_t>& gr
   params.position_range = s.position_range;
   params.normal_bits = s.normal_bits;
   params.progress = s.progress;
-  const o3dgc::Status st = o3dgc::Encode(view, params, &out.stream, &out.info);
+  return Status::Ok();
+}
+
+Status EncoderStatus(o3dgc::Status st, const std::string& mesh_name) {
+  if (st == o3dgc::Status::kOk) return Status::Ok();
   if (st == o3dgc::Status::kCancelled) return Status(StatusCode::kCancelled, "cancelled");
-  if (st != o3dgc::Status::kOk) {
-    return Status(StatusCode::kInvalidMesh,
-                  std::string("mesh '") + mesh.name + "': encoder: " + o3dgc::StatusName(st));
-  }
+  return Status(StatusCode::kInvalidMesh,
+                std::string("mesh '") + mesh_name + "': encoder: " + o3dgc::StatusName(st));
+}
+
+Result<EncodedMesh> EncodeMesh(const Mesh& mesh, const std::vector<uint32_t>& groups,
+                               const MeshCodecSettings& s) {
+  CodecInput in;
+  Status status = MakeCodecInput(mesh, groups, s, &in);
+  if (!status.ok()) return status;
+  EncodedMesh out = std::move(in.attributes);
+  status = EncoderStatus(o3dgc::Encode(in.view, in.params, &out.stream, &out.info), mesh.name);
+  if (!status.ok()) return status;
   return out;
 }
 

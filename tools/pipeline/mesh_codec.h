@@ -37,6 +37,20 @@ struct MeshCodecSettings {
   o3dgc::ProgressFn progress;
 };
 
+// `mesh` as the codec takes it: views of its arrays (which must outlive this), the parameters
+// from the settings, and the stream attribute ids.
+struct CodecInput {
+  o3dgc::MeshView view;
+  o3dgc::EncodeParams params;
+  EncodedMesh attributes;       // gltf_attributes only
+  std::vector<int32_t> joints;  // the joints widened for the codec (the view points here)
+};
+Status MakeCodecInput(const Mesh& mesh, const std::vector<uint32_t>& groups,
+                      const MeshCodecSettings& settings, CodecInput* in);
+
+// An encoder status as a Status naming the mesh.
+Status EncoderStatus(o3dgc::Status status, const std::string& mesh_name);
+
 // Encodes every attribute of `mesh`. `groups` (one per triangle, or empty) are stored as the
 // stream's triangle groups; DecodeMesh returns them.
 Result<EncodedMesh> EncodeMesh(const Mesh& mesh, const std::vector<uint32_t>& groups,

@@ -34,9 +34,10 @@ size_t PlainGeometryBytes(const Mesh& m) {
   return m.vertex_count() * per_vertex + m.indices.size() * index_size;
 }
 
-// The encoder's working arrays per triangle of a mesh with positions only (measured on large
-// scans); each attribute coded adds a few more.
-constexpr double kEncoderBytesPerTriangle = 200;
+// A candidate grid's working arrays per triangle of a mesh with positions only (its quantized
+// positions, prediction records and coding order: about 20 bytes on igea x1, bounded here with a
+// margin); each attribute coded adds a few more. The stages all grids share run once, before.
+constexpr double kEncoderBytesPerTriangle = 40;
 constexpr double kEncoderBytesPerAttribute = 40;
 
 // Memory the system can still give (MemAvailable), or the largest size_t when unknown.
@@ -274,10 +275,12 @@ Result<std::vector<PackedMesh>> PackMeshes(const Scene& scene, const PackOptions
       board.Set(k, 1, prefix + "hulls encoded");
     } else {
       board.Set(k, 0, prefix + "encode");
-      // The candidates in parallel even beside a decomposition (the encode is the longer task:
-      // one after another they would leave a core idle once the decomposition ends), as many as
-      // the memory holds.
-      const int threads = CandidateThreads(mesh, ThreadCount(options.threads));
+      // The candidates in parallel, as many as the memory holds; beside this mesh's
+      // decomposition, on one thread fewer: the decomposition is then the longer task (the
+      // candidates share one connectivity coding), and the encode's threads only slowed it.
+      const bool beside = packed[task.mesh].report.no_hulls_reason.empty();
+      const int threads =
+          CandidateThreads(mesh, std::max(1, ThreadCount(options.threads) - (beside ? 1 : 0)));
       const o3dgc::ProgressFn progress = [&board, k, &prefix](float f) {
         board.Set(k, f, prefix + "encode " + std::to_string(static_cast<int>(f * 100)) + "%");
         return !board.Cancelled();

@@ -113,7 +113,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   if (st != Status::kOk) return Fail(st, why);
   internal::Context ctx(observer, internal::ThreadCount(params.num_threads));
   internal::InputMesh input;
-  st = internal::ReadMesh(view, &ctx, &input, &why);
+  st = internal::ReadMesh(view, &ctx, &input, &why, /*keep_sources=*/false);
   if (st != Status::kOk) return Fail(st, why);
   Result result;
   Report& rep = result.report;
@@ -126,6 +126,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   std::vector<Vec3> pn;
   if (!internal::NormalizeToUnitBox(input.points, &center, &scale, &pn))
     return Fail(Status::kInvalidMesh, "the mesh has a degenerate or overflowing bounding box");
+  std::vector<Vec3>().swap(input.points);  // only the normalized copy is read from here on
   Eigen::Matrix3d rot = Eigen::Matrix3d::Identity();
   if (params.pca) {
     Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
@@ -180,8 +181,8 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   }
   internal::GridMesh gmesh;
   gmesh.triangles = std::move(input.triangles);
-  gmesh.points.resize(pn.size());
-  for (size_t i = 0; i < pn.size(); ++i) gmesh.points[i] = (pn[i] - place.origin) / place.h;
+  gmesh.points = std::move(pn);  // mapped to the grid in place
+  for (Vec3& p : gmesh.points) p = (p - place.origin) / place.h;
   // grid -> world: center + scale * rot^T * (origin + h * g)
   auto to_world = [&](const Vec3& g) -> Vec3 {
     return center + scale * (rot.transpose() * (place.origin + place.h * g));

@@ -28,7 +28,6 @@ class TriangleLocator {
   Vec3 origin_;
   int dims_[3];
   std::vector<uint32_t> start_, ids_;
-  std::vector<Vec3> tlo_, thi_;  // triangle boxes: a cheap lower bound before the exact distance
 };
 
 struct MetricsInput {

@@ -309,11 +309,9 @@ Result DecomposeHacdImpl(const MeshView& view, const HacdParameters& params, Obs
   const double diag = 2.0 * params.scale_factor;
 
   std::vector<Tri> tris = input.triangles;
-  internal::OrientConsistently(pq, &tris);
-  if (params.invert_input_faces)
-    for (Tri& t : tris) std::swap(t[1], t[2]);
 
-  // Decimation.
+  // Decimation (the simplifier does not need consistent windings: the triangles are oriented
+  // after it, on the smaller mesh).
   ctx.BeginStage("Simplification", 0, 15);
   std::vector<Vec3> pts = pq;
   if (params.target_triangles > 0 && tris.size() > params.target_triangles) {
@@ -328,8 +326,11 @@ Result DecomposeHacdImpl(const MeshView& view, const HacdParameters& params, Obs
     tris = std::move(out.triangles);
     ctx.Log("decimated to " + std::to_string(tris.size()) + " triangles");
   }
-  rep.seconds_simplify = clock.Lap();
   if (tris.empty()) return Fail(Status::kInternalError, "decimation left no triangle");
+  internal::OrientConsistently(pts, &tris);
+  if (params.invert_input_faces)
+    for (Tri& t : tris) std::swap(t[1], t[2]);
+  rep.seconds_simplify = clock.Lap();
 
   // Dual graph and distance points.
   ctx.BeginStage("Dual graph", 15, 25);

@@ -33,13 +33,18 @@ struct FillInput {
   uint32_t max_vertices = 100;
 };
 
-// The cluster's hull, extended through the solid behind its patch (halfway, else 3/8, 1/4 or 1/8
-// of the depth), so that the hulls of the patches around a solid meet inside it instead of
-// leaving a hollow between them. An extension is kept only when the middle of the extended hull
-// is inside the solid and the cluster's concavity, measured on the extended hull exactly as the
-// clustering measured it on the patch's own hull, does not grow: the clustering bounds the
-// concavity of the patch hull, so an extension that reaches out of the solid (a hull face bridging
-// a concave part of the patch) would otherwise escape the Concavity limit unmeasured.
+// The cluster's hull, extended through the solid behind its patch, so that the hulls of the
+// patches around a solid meet inside it instead of leaving a hollow between them. Each triangle's
+// point behind it starts halfway through the solid. The extension is kept when the middle of the
+// extended hull is inside the solid and no ray of the cluster's concavity (from its distance points
+// along their normals to the hull, as the clustering measures it on the patch's own hull) runs
+// farther *outside the solid* than the patch hull's concavity: the clustering bounds that
+// concavity, so an extension bridging a concave part of the patch would otherwise escape the
+// Concavity limit unmeasured, while a stretch of hull that stays inside the solid (a pot under its
+// lid) reaches out of nothing. Otherwise the behind points at the corners of the faces those rays
+// end on go back by an eighth of the depth (all of them when the middle left the solid) and the
+// hull is made again: the rest of the patch keeps its full extension, and the hollows next to it
+// stay closed.
 HullMesh FilledClusterHull(const FillInput& in);
 
 }  // namespace internal

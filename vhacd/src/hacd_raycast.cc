@@ -146,7 +146,10 @@ int RayCaster::CountHits(const Vec3& origin, const Vec3& dir) const {
     for (uint32_t i = n.first; i < n.first + n.count; ++i) {
       const uint32_t tri = order_[i];
       double t = 0.0;
-      if (HitTriangle(tri, origin, dir, &t) && t > 0) ++hits;
+      if (!HitTriangle(tri, origin, dir, &t) || !(t > 0)) continue;
+      const auto& v = triangles_[tri];
+      const Vec3 normal = (points_[v[1]] - points_[v[0]]).cross(points_[v[2]] - points_[v[0]]);
+      hits += normal.dot(dir) > 0 ? 1 : -1;
     }
   }
   return hits;
@@ -157,7 +160,7 @@ bool RayCaster::Inside(const Vec3& p) const {
                                Vec3(-0.0789, 1.0, 0.1357).normalized(),
                                Vec3(0.1111, -0.0987, -1.0).normalized()};
   int votes = 0;
-  for (const Vec3& d : dirs) votes += CountHits(p, d) & 1;
+  for (const Vec3& d : dirs) votes += CountHits(p, d) != 0 ? 1 : 0;
   return votes >= 2;
 }
 

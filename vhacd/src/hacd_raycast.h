@@ -22,8 +22,10 @@ class RayCaster {
   bool Cast(const Vec3& origin, const Vec3& dir, double min_t, uint32_t skip, uint32_t* triangle,
             double* t) const;
 
-  // Whether p is inside the surface: at least two of three fixed, slightly skewed rays cross it an
-  // odd number of times (exact for closed surfaces, a vote for open ones).
+  // Whether p is inside the surface: along at least two of three fixed, slightly skewed rays the
+  // crossings leaving the surface (along its normals) outnumber or undercut those entering it, i.e.
+  // the winding number is not zero (exact for consistently oriented closed surfaces, also where
+  // closed pieces overlap; a vote for open ones).
   bool Inside(const Vec3& p) const;
 
  private:
@@ -34,6 +36,7 @@ class RayCaster {
   };
   // Möller-Trumbore: *t is the ray parameter of the hit; false when the ray misses the triangle.
   bool HitTriangle(uint32_t tri, const Vec3& origin, const Vec3& dir, double* t) const;
+  // Crossings of origin + t * dir (t > 0) leaving the surface minus those entering it.
   int CountHits(const Vec3& origin, const Vec3& dir) const;
   uint32_t Build(uint32_t first, uint32_t count, const std::vector<Vec3>& centroids);
   const std::vector<Vec3>& points_;

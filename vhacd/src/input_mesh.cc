@@ -14,7 +14,8 @@ void FreeMemory(std::vector<T>& v) {
 
 }  // namespace
 
-Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* why) {
+Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* why,
+                bool keep_sources) {
   if (m.point_count == 0 || m.triangle_count == 0) {
     *why = "the mesh has no points or no triangles";
     return Status::kEmptyMesh;
@@ -36,12 +37,13 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
     return Status::kInvalidMesh;
   }
   const size_t np = m.point_count;
-  std::vector<Vec3> pts(np);
-  for (size_t i = 0; i < np; ++i) {
-    for (int k = 0; k < 3; ++k)
-      pts[i][k] = m.points_d ? m.points_d[i * m.point_stride + k]
-                             : static_cast<double>(m.points_f[i * m.point_stride + k]);
-  }
+  // Point i in double, read from the view (no copy: float inputs would double in size).
+  auto point = [&m](size_t i) {
+    const size_t at = i * m.point_stride;
+    if (m.points_d) return Vec3(m.points_d[at], m.points_d[at + 1], m.points_d[at + 2]);
+    return Vec3(static_cast<double>(m.points_f[at]), static_cast<double>(m.points_f[at + 1]),
+                static_cast<double>(m.points_f[at + 2]));
+  };
   std::vector<char> used(np, 0);
   for (size_t t = 0; t < m.triangle_count; ++t)
     for (int k = 0; k < 3; ++k) {
@@ -54,7 +56,7 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
       used[v] = 1;
     }
   for (size_t i = 0; i < np; ++i)
-    if (used[i] && !pts[i].allFinite()) {
+    if (used[i] && !point(i).allFinite()) {
       *why = "point " + std::to_string(i) + " has a non-finite coordinate";
       return Status::kInvalidMesh;
     }
@@ -69,9 +71,10 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
   for (uint32_t i = 0; i < np; ++i)
     if (used[i]) order.push_back(i);
   std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
-    if (pts[a][0] != pts[b][0]) return pts[a][0] < pts[b][0];
-    if (pts[a][1] != pts[b][1]) return pts[a][1] < pts[b][1];
-    if (pts[a][2] != pts[b][2]) return pts[a][2] < pts[b][2];
+    const Vec3 pa = point(a), pb = point(b);
+    if (pa[0] != pb[0]) return pa[0] < pb[0];
+    if (pa[1] != pb[1]) return pa[1] < pb[1];
+    if (pa[2] != pb[2]) return pa[2] < pb[2];
     return a < b;
   });
   std::vector<uint32_t> remap(np, 0);
@@ -79,19 +82,19 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
   // element at a time it would hold up to twice its size.
   size_t distinct = 0;
   for (size_t k = 0; k < order.size(); ++k)
-    distinct += k == 0 || pts[order[k]] != pts[order[k - 1]];
+    distinct += k == 0 || point(order[k]) != point(order[k - 1]);
   out->points.reserve(distinct);
-  out->point_source.reserve(distinct);
+  if (keep_sources) out->point_source.reserve(distinct);
   for (size_t k = 0; k < order.size(); ++k) {
-    if (k == 0 || pts[order[k]] != pts[order[k - 1]]) {
-      out->points.push_back(pts[order[k]]);
-      out->point_source.push_back(order[k]);
+    const Vec3 p = point(order[k]);
+    if (k == 0 || p != out->points.back()) {
+      out->points.push_back(p);
+      if (keep_sources) out->point_source.push_back(order[k]);
     }
     remap[order[k]] = static_cast<uint32_t>(out->points.size() - 1);
   }
   // Each working array is freed once done: the decomposition beside which this may run (a
   // pipeline also encodes the mesh) feels the sum of what is alive at once.
-  FreeMemory(pts);
   FreeMemory(used);
   FreeMemory(order);
   if (cancelled()) return Status::kCancelled;
@@ -114,12 +117,12 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
   FreeMemory(keyed);
   std::sort(keep.begin(), keep.end());
   out->triangles.reserve(keep.size());
-  out->triangle_source.reserve(keep.size());
+  if (keep_sources) out->triangle_source.reserve(keep.size());
   for (uint32_t t : keep) {
     std::array<uint32_t, 3> tri;
     for (int k = 0; k < 3; ++k) tri[k] = remap[m.indices[t * m.triangle_stride + k]];
     out->triangles.push_back(tri);
-    out->triangle_source.push_back(t);
+    if (keep_sources) out->triangle_source.push_back(t);
   }
   FreeMemory(keep);
   FreeMemory(remap);
@@ -128,21 +131,34 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
     return Status::kEmptyMesh;
   }
   if (cancelled()) return Status::kCancelled;
-  // Closed: every undirected edge used by exactly two triangles.
-  std::vector<uint64_t> edges;
-  edges.reserve(out->triangles.size() * 3);
+  // Closed: every undirected edge used by exactly two triangles. The edges are listed at their
+  // smaller vertex (its larger vertex, 4 bytes per edge instead of a sorted list of 8-byte pairs)
+  // and each vertex's short list is sorted.
+  const size_t nv = out->points.size();
+  std::vector<uint32_t> start(nv + 1, 0);
   for (const auto& t : out->triangles)
-    for (int k = 0; k < 3; ++k) {
-      const uint64_t a = std::min(t[k], t[(k + 1) % 3]), b = std::max(t[k], t[(k + 1) % 3]);
-      edges.push_back((a << 32) | b);
-    }
-  std::sort(edges.begin(), edges.end());
+    for (int k = 0; k < 3; ++k) ++start[std::min(t[k], t[(k + 1) % 3]) + 1];
+  for (size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+  std::vector<uint32_t> other(start[nv]);
+  {
+    std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+    for (const auto& t : out->triangles)
+      for (int k = 0; k < 3; ++k) {
+        const uint32_t a = t[k], b = t[(k + 1) % 3];
+        other[fill[std::min(a, b)]++] = std::max(a, b);
+      }
+  }
   out->closed = true;
-  for (size_t i = 0; i < edges.size();) {
-    size_t j = i;
-    while (j < edges.size() && edges[j] == edges[i]) ++j;
-    if (j - i != 2) out->closed = false;
-    i = j;
+  for (size_t v = 0; v < nv && out->closed; ++v) {
+    uint32_t* first = other.data() + start[v];
+    uint32_t* last = other.data() + start[v + 1];
+    std::sort(first, last);
+    for (uint32_t* i = first; i < last;) {
+      uint32_t* j = i;
+      while (j < last && *j == *i) ++j;
+      if (j - i != 2) out->closed = false;
+      i = j;
+    }
   }
   return Status::kOk;
 }

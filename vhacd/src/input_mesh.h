@@ -24,7 +24,10 @@ struct InputMesh {
 };
 
 // Validates `m` and fills *out; on failure returns the status and names the problem in *why.
-Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* why);
+// Without `keep_sources`, point_source and triangle_source stay empty (for callers that do not
+// map back to the input).
+Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* why,
+                bool keep_sources = true);
 
 }  // namespace internal
 }  // namespace vhacd

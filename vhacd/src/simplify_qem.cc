@@ -18,6 +18,10 @@ using Tri = std::array<uint32_t, 3>;
 constexpr double kBorderWeight = 8.0;
 // A collapse may turn a triangle's normal by at most acos(kMinNormalCos).
 constexpr double kMinNormalCos = 0.2;
+// Phase one's slabs: one per this many triangles, at most kMaxBlocks (see Collapser::Run).
+constexpr size_t kBlockTriangles = 16384;
+constexpr size_t kMaxBlocks = 8;
+constexpr uint32_t kAnyBlock = UINT32_MAX, kCut = UINT32_MAX - 1;
 
 struct Candidate {
   double cost = 0.0;
@@ -54,7 +58,6 @@ class Collapser {
     tri_dead_.assign(nt, 0);
     mark_.assign(n, 0);
     orig_normal_.assign(nt, Vec3::Zero());
-    alive_tris_ = nt;
     std::vector<uint32_t> degree(n, 0);
     for (const Tri& tri : tris_)
       for (uint32_t v : tri) ++degree[v];
@@ -122,36 +125,165 @@ class Collapser {
   }
 
   bool Run(Context* ctx, QemMesh* out) {
-    // The first candidates in parallel, heaped at once (the pop order depends only on the
-    // entries, which are all distinct).
+    const size_t nt = tris_.size();
+    // Phase one, on large meshes: the mesh cut into slabs, each decimated on its own (in
+    // parallel) with the vertices of triangles crossing a cut kept in place, down to its share
+    // of a count well above the target (only when that is at most half the mesh). The slabs are a
+    // function of the mesh alone, and no two touch the same vertex or triangle, so the result does
+    // not depend on the thread count.
+    const size_t blocks = std::min<size_t>(kMaxBlocks, nt / kBlockTriangles);
+    const size_t phase1 = std::max(2 * opt_.target_triangles, nt / 16);
+    double done = 0.0;   // the share of the progress bar phase one takes
+    uint64_t marks = 0;  // the largest link-condition mark phase one wrote
+    if (blocks >= 2 && 2 * phase1 <= nt) {
+      done = static_cast<double>(nt - phase1) /
+             static_cast<double>(nt - std::min(nt, opt_.target_triangles));
+      if (!DecimateSlabs(ctx, blocks, phase1, done, &marks)) return false;
+    }
+    // Phase two (the only one on smaller meshes): every edge, cheapest first, one at a time.
+    Lane lane;
+    lane.target = opt_.target_triangles;
+    lane.mark_generation = marks;
+    for (uint8_t dead : tri_dead_) lane.alive += dead ? 0 : 1;
     {
-      std::vector<Entry> first(unique_edges_.size());
-      std::vector<uint8_t> ok(unique_edges_.size(), 0);
-      Chunked(unique_edges_.size(), [&](size_t i) {
-        Candidate c;
-        if (!Best(static_cast<uint32_t>(unique_edges_[i] >> 32), uint32_t(unique_edges_[i]), &c))
-          return;
-        first[i] = {c.cost, c.from, c.to, stamp_[c.from], stamp_[c.to]};
-        ok[i] = 1;
-      });
-      heap_.reserve(unique_edges_.size());
+      std::vector<Entry> first;
+      std::vector<uint8_t> ok;
+      FirstCandidates(unique_edges_, &first, &ok);
+      lane.heap.reserve(unique_edges_.size());
       for (size_t i = 0; i < first.size(); ++i)
-        if (ok[i]) heap_.push_back(first[i]);
-      std::make_heap(heap_.begin(), heap_.end(), std::greater<Entry>());
+        if (ok[i]) lane.heap.push_back(first[i]);
+      std::make_heap(lane.heap.begin(), lane.heap.end(), std::greater<Entry>());
     }
     std::vector<uint64_t>().swap(unique_edges_);
     if (cancelled_) return false;
-    const size_t start = alive_tris_;
+    if (!Loop(&lane, ctx, true, done, 1.0 - done)) return false;
+    error_ = std::max(error_, lane.error);
+    Output(out);
+    return true;
+  }
+
+ private:
+  // One collapse sequence: its heap, its scratch space and the slab it may touch (phase one),
+  // or the whole mesh.
+  struct Lane {
+    uint32_t block = kAnyBlock;
+    size_t alive = 0;   // its triangles still alive
+    size_t target = 0;  // it stops at this many
+    double error = 0.0;
+    std::vector<Entry> heap;  // a binary min-heap (std::push_heap / pop_heap)
+    std::vector<uint32_t> nv;
+    uint64_t mark_generation = 0;
+  };
+
+  // Phase one: each of `blocks` slabs decimated on its own lane down to its share of `count`
+  // triangles (`share` of the progress bar); the edges left go to unique_edges_ for phase two.
+  // *marks receives the largest link-condition mark written. Returns false when cancelled.
+  bool DecimateSlabs(Context* ctx, size_t blocks, size_t count, double share, uint64_t* marks) {
+    const size_t nt = tris_.size();
+    AssignBlocks(blocks);
+    std::vector<Lane> lanes(blocks);
+    for (size_t b = 0; b < blocks; ++b) lanes[b].block = static_cast<uint32_t>(b);
+    for (const Tri& tri : tris_)
+      if (block_[tri[0]] == block_[tri[1]] && block_[tri[1]] == block_[tri[2]] &&
+          block_[tri[0]] < blocks)
+        ++lanes[block_[tri[0]]].alive;
+    // Lanes count the triangles whose corners are all in their slab (a triangle dies only by a
+    // collapse of two of its free corners).
+    for (Lane& lane : lanes) lane.target = lane.alive * count / nt;
+    std::vector<uint64_t> keys;
+    for (uint64_t key : unique_edges_)
+      if (block_[key >> 32] < blocks && block_[key >> 32] == block_[uint32_t(key)])
+        keys.push_back(key);
+    std::vector<Entry> first;
+    std::vector<uint8_t> ok;
+    FirstCandidates(keys, &first, &ok);
+    if (cancelled_) return false;
+    for (size_t i = 0; i < keys.size(); ++i)
+      if (ok[i]) lanes[block_[keys[i] >> 32]].heap.push_back(first[i]);
+    std::vector<uint64_t>().swap(unique_edges_);
+    std::vector<uint8_t> stopped(blocks, 0);  // per lane: cancelled
+    if (!ParallelFor(ctx, blocks, [&](size_t b) {
+          Lane& lane = lanes[b];
+          std::make_heap(lane.heap.begin(), lane.heap.end(), std::greater<Entry>());
+          if (!Loop(&lane, ctx, b == 0, 0.0, share)) stopped[b] = 1;
+        }))
+      return false;
+    if (std::find(stopped.begin(), stopped.end(), 1) != stopped.end()) return false;
+    for (const Lane& lane : lanes) {
+      error_ = std::max(error_, lane.error);
+      *marks = std::max(*marks, lane.mark_generation);
+    }
+    std::fill(block_.begin(), block_.end(), kAnyBlock);
+    for (size_t t = 0; t < nt; ++t)
+      if (!tri_dead_[t])
+        for (int k = 0; k < 3; ++k) {
+          const uint32_t a = tris_[t][k], b = tris_[t][(k + 1) % 3];
+          unique_edges_.push_back((uint64_t{std::min(a, b)} << 32) | std::max(a, b));
+        }
+    std::sort(unique_edges_.begin(), unique_edges_.end());
+    unique_edges_.erase(std::unique(unique_edges_.begin(), unique_edges_.end()),
+                        unique_edges_.end());
+    return true;
+  }
+
+  // The candidates of `keys` (a < b edges), computed on ctx's threads.
+  void FirstCandidates(const std::vector<uint64_t>& keys, std::vector<Entry>* first,
+                       std::vector<uint8_t>* ok) {
+    first->assign(keys.size(), Entry());
+    ok->assign(keys.size(), 0);
+    Chunked(keys.size(), [&](size_t i) {
+      Candidate c;
+      if (!Best(static_cast<uint32_t>(keys[i] >> 32), uint32_t(keys[i]), &c)) return;
+      (*first)[i] = {c.cost, c.from, c.to, stamp_[c.from], stamp_[c.to]};
+      (*ok)[i] = 1;
+    });
+  }
+
+  // block_[v]: the slab of v along the box's longest axis (equal vertex counts), or kCut when v
+  // is a corner of a triangle with corners in two slabs.
+  void AssignBlocks(size_t blocks) {
+    const size_t n = pos_.size();
+    Vec3 lo = Vec3::Constant(HUGE_VAL), hi = -lo;
+    for (const Vec3& p : pos_) {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+    int axis = 0;
+    (hi - lo).maxCoeff(&axis);
+    std::vector<std::pair<double, uint32_t>> order(n);
+    for (uint32_t v = 0; v < n; ++v) order[v] = {pos_[v][axis], v};
+    std::sort(order.begin(), order.end());
+    block_.assign(n, kAnyBlock);
+    for (size_t i = 0; i < n; ++i) block_[order[i].second] = static_cast<uint32_t>(i * blocks / n);
+    std::vector<uint8_t> cut(n, 0);
+    for (const Tri& tri : tris_)
+      if (block_[tri[0]] != block_[tri[1]] || block_[tri[1]] != block_[tri[2]])
+        for (uint32_t v : tri) cut[v] = 1;
+    for (size_t v = 0; v < n; ++v)
+      if (cut[v]) block_[v] = kCut;
+  }
+
+  // In phase one a lane collapses only edges whose ends are both free vertices of its slab.
+  bool InLane(const Lane& lane, uint32_t a, uint32_t b) const {
+    return lane.block == kAnyBlock || (block_[a] == lane.block && block_[b] == lane.block);
+  }
+
+  // Collapses the lane's cheapest valid edges until its target (or the error limit) is reached.
+  // Returns false when cancelled. With `report`, its progress is shown as `base` + `span` * its
+  // own fraction.
+  bool Loop(Lane* lane, Context* ctx, bool report, double base, double share) {
+    const size_t start = lane->alive;
     size_t pops = 0;
-    while (!heap_.empty() && alive_tris_ > opt_.target_triangles) {
+    while (!lane->heap.empty() && lane->alive > lane->target) {
       if ((++pops & 1023) == 0 && ctx != nullptr) {
         if (ctx->Cancelled()) return false;
-        const double span = static_cast<double>(start - std::min(start, opt_.target_triangles));
-        if (span > 0) ctx->Progress(100.0 * (start - alive_tris_) / span, "collapsing edges");
+        const double span = static_cast<double>(start - std::min(start, lane->target));
+        if (report && span > 0)
+          ctx->Progress(100.0 * (base + share * (start - lane->alive) / span), "collapsing edges");
       }
-      std::pop_heap(heap_.begin(), heap_.end(), std::greater<Entry>());
-      const Entry e = heap_.back();
-      heap_.pop_back();
+      std::pop_heap(lane->heap.begin(), lane->heap.end(), std::greater<Entry>());
+      const Entry e = lane->heap.back();
+      lane->heap.pop_back();
       if (dead_[e.from] || dead_[e.to] || stamp_[e.from] != e.stamp_from ||
           stamp_[e.to] != e.stamp_to)
         continue;
@@ -159,15 +291,13 @@ class Collapser {
       if (!Best(e.from, e.to, &c)) continue;
       const double err = ErrorOf(c);
       if (opt_.max_error > 0 && err > opt_.max_error) break;
-      if (!Valid(c)) continue;
-      Collapse(c);
-      error_ = std::max(error_, err);
+      if (!Valid(lane, c)) continue;
+      Collapse(lane, c);
+      lane->error = std::max(lane->error, err);
     }
-    Output(out);
     return true;
   }
 
- private:
   // fn(i) for i in [0, n) on ctx's threads, in blocks (the per-item work is small).
   // A cancelled loop leaves work undone: cancelled_ then makes Run fail.
   template <typename F>
@@ -221,22 +351,24 @@ class Collapser {
   }
   static bool Has(const Tri& t, uint32_t v) { return t[0] == v || t[1] == v || t[2] == v; }
 
-  void Push(uint32_t a, uint32_t b) {
+  void Push(Lane* lane, uint32_t a, uint32_t b) {
+    if (!InLane(*lane, a, b)) return;
     Candidate best;
     if (!Best(a, b, &best)) return;
-    heap_.push_back({best.cost, best.from, best.to, stamp_[best.from], stamp_[best.to]});
-    std::push_heap(heap_.begin(), heap_.end(), std::greater<Entry>());
+    auto& heap = lane->heap;
+    heap.push_back({best.cost, best.from, best.to, stamp_[best.from], stamp_[best.to]});
+    std::push_heap(heap.begin(), heap.end(), std::greater<Entry>());
     // Superseded entries pile up (each collapse re-pushes the edges around the kept vertex); a
     // heap several times larger than the mesh's edge count is mostly cache misses, so drop them.
-    if (heap_.size() > 64 && heap_.size() > 4 * alive_tris_) {
-      heap_.erase(std::remove_if(heap_.begin(), heap_.end(),
-                                 [&](const Entry& x) {
-                                   return dead_[x.from] || dead_[x.to] ||
-                                          stamp_[x.from] != x.stamp_from ||
-                                          stamp_[x.to] != x.stamp_to;
-                                 }),
-                  heap_.end());
-      std::make_heap(heap_.begin(), heap_.end(), std::greater<Entry>());
+    if (heap.size() > 64 && heap.size() > 4 * lane->alive) {
+      heap.erase(std::remove_if(heap.begin(), heap.end(),
+                                [&](const Entry& x) {
+                                  return dead_[x.from] || dead_[x.to] ||
+                                         stamp_[x.from] != x.stamp_from ||
+                                         stamp_[x.to] != x.stamp_to;
+                                }),
+                 heap.end());
+      std::make_heap(heap.begin(), heap.end(), std::greater<Entry>());
     }
   }
 
@@ -301,15 +433,13 @@ class Collapser {
     out->erase(std::unique(out->begin(), out->end()), out->end());
   }
 
-  bool Valid(const Candidate& c) {
+  bool Valid(Lane* lane, const Candidate& c) {
     const uint32_t u = c.from, v = c.to;
     // Link condition: the common neighbours are exactly the apexes of the edge's triangles.
     // Neighbours of u get mark `first`; those also around v are moved to `first + 1` and counted.
-    if (mark_generation_ > UINT32_MAX - 4) {
-      std::fill(mark_.begin(), mark_.end(), 0u);
-      mark_generation_ = 0;
-    }
-    const uint32_t first = mark_generation_ += 2, common = first + 1;
+    // (Lanes mark only the vertices of their own slab; phase two starts above every lane's marks.
+    // 64 bits: the marks never wrap.)
+    const uint64_t first = lane->mark_generation += 2, common = first + 1;
     for (uint32_t t : vtris_[u])
       if (!tri_dead_[t])
         for (uint32_t w : tris_[t])
@@ -361,14 +491,14 @@ class Collapser {
     return true;
   }
 
-  void Collapse(const Candidate& c) {
+  void Collapse(Lane* lane, const Candidate& c) {
     const uint32_t u = c.from, v = c.to;
     for (uint32_t t : vtris_[u]) {
       if (tri_dead_[t]) continue;
       Tri& tri = tris_[t];
       if (Has(tri, v)) {
         tri_dead_[t] = 1;
-        --alive_tris_;
+        --lane->alive;
         continue;
       }
       for (uint32_t& w : tri)
@@ -399,8 +529,8 @@ class Collapser {
     dead_[u] = 1;
     ++stamp_[v];
     ++stamp_[u];
-    Neighbours(v, &nv_);
-    for (uint32_t w : nv_) Push(v, w);
+    Neighbours(v, &lane->nv);
+    for (uint32_t w : lane->nv) Push(lane, v, w);
   }
 
   void Output(QemMesh* out) {
@@ -438,12 +568,9 @@ class Collapser {
   std::vector<uint8_t> dead_, border_, locked_, tri_dead_;
   std::vector<uint64_t> unique_edges_;
   std::vector<Vec3> orig_normal_;
-  size_t alive_tris_ = 0;
   double error_ = 0.0;
-  std::vector<Entry> heap_;  // a binary min-heap (std::push_heap / pop_heap)
-  std::vector<uint32_t> nv_;
-  std::vector<uint32_t> mark_;  // link-condition marks, see Valid()
-  uint32_t mark_generation_ = 0;
+  std::vector<uint64_t> mark_;   // link-condition marks, see Valid()
+  std::vector<uint32_t> block_;  // phase one's slabs, see AssignBlocks()
 };
 
 }  // namespace

@@ -47,6 +47,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace o3dgc {
@@ -243,6 +244,39 @@ struct StreamInfo {
 // 2^28.
 Status Encode(const MeshView& mesh, const EncodeParams& params, std::vector<uint8_t>* out,
               StreamInfo* info = nullptr);
+
+// Encodes one mesh on several position grids (bits and RangeMode) for about the cost of one: the
+// stages that do not depend on the grid (checks, welding, connectivity, seams, order tables, the
+// positions' prediction wedges) run once in Prepare and are shared; each Encode codes the header,
+// positions and attributes of one grid. For callers that choose a grid by the stream's size (an
+// error budget met by several grids).
+//
+//   o3dgc::GridEncoder grids;
+//   if (grids.Prepare(mesh, params) == o3dgc::Status::kOk)
+//     grids.Encode(12, o3dgc::RangeMode::kPerAxis, &stream);  // one call per grid, any thread
+class GridEncoder {
+ public:
+  GridEncoder();
+  ~GridEncoder();
+  GridEncoder(const GridEncoder&) = delete;
+  GridEncoder& operator=(const GridEncoder&) = delete;
+
+  // Checks `mesh` and runs the shared stages. params.position_bits and position_range are not
+  // used (each Encode gives its own); params.progress sees 0 to 0.4. The arrays `mesh` points at
+  // must stay valid and unchanged until the last Encode. Returns what Encode would for a mesh it
+  // rejects.
+  Status Prepare(const MeshView& mesh, const EncodeParams& params);
+  // The stream that o3dgc::Encode(mesh, params with these position_bits and position_range) gives,
+  // byte for byte, and its part sizes. Several threads may call it at once. `progress` (may be
+  // empty) sees 0.6 to 1. kInvalidArgument before a successful Prepare or for bits outside 1..30.
+  Status Encode(int position_bits, RangeMode position_range, std::vector<uint8_t>* out,
+                StreamInfo* info = nullptr, const ProgressFn& progress = ProgressFn()) const;
+
+  struct Prepared;  // (src/encoder.cc)
+
+ private:
+  std::unique_ptr<Prepared> prepared_;
+};
 
 // Decodes `size` bytes at `data` (binary or ASCII stream, detected from the magic). Streams written
 // by the original Open3DGC encoder (2013; binary or ASCII, recognised by their start code) are

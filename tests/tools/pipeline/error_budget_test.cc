@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 namespace hullpack {
 namespace {
@@ -88,6 +89,31 @@ TEST(ErrorBudget, ChoosesTheSmallestStreamWithinTheBudget) {
   // On this stretched shape the per-axis grid needs fewer bits than the cube of the largest extent.
   EXPECT_LT(GuaranteedPositionBits(o3dgc::RangeMode::kPerAxis, PositionExtent(mesh), budget),
             s.position_bits);
+}
+
+// The candidates share one o3dgc::GridEncoder: the chosen stream is, byte for byte, the one a
+// whole encode at its grid gives, with normals and triangle groups, on any number of threads.
+TEST(ErrorBudget, TheChosenStreamIsAWholeEncodeOfItsGrid) {
+  const Mesh mesh = testing::TorusMesh(40, 14);
+  ASSERT_FALSE(mesh.normals.empty());
+  std::vector<uint32_t> groups(mesh.triangle_count());
+  for (size_t t = 0; t < groups.size(); ++t)
+    groups[t] = static_cast<uint32_t>(t * 3 / groups.size());
+  const double budget = 0.001 * BoundingBoxDiagonal(mesh);
+  for (int threads : {1, 3}) {
+    Result<BudgetedEncoding> chosen =
+        EncodeWithinError(mesh, groups, MeshCodecSettings(), budget, threads);
+    ASSERT_TRUE(chosen.ok()) << chosen.status().ToString();
+    MeshCodecSettings s;
+    s.position_bits = chosen->position_bits;
+    s.position_range = chosen->position_range;
+    Result<EncodedMesh> whole = EncodeMesh(mesh, groups, s);
+    ASSERT_TRUE(whole.ok());
+    EXPECT_EQ(chosen->encoded.stream, whole->stream) << threads << " threads";
+    EXPECT_EQ(chosen->encoded.gltf_attributes, whole->gltf_attributes);
+    EXPECT_EQ(chosen->encoded.info.positions, whole->info.positions);
+    EXPECT_EQ(chosen->groups.size(), groups.size());
+  }
 }
 
 TEST(ErrorBudget, TriesFewerBitsWhenTheMeasuredErrorLeavesRoom) {

@@ -15,6 +15,12 @@
 //   - move a boundary or seam vertex off its endpoint position, or join two boundary or seam
 //     vertices through an edge that is not a boundary (seam) edge itself.
 // Edges shared by more than two triangles are never collapsed.
+//
+// A mesh of 32768 triangles or more is first cut into slabs along its longest axis (one per 16384
+// triangles, at most 8). When max(2 x target, 1/16 of the mesh) is at most half the mesh, each slab
+// is decimated on its own down to its share of that count, the vertices of triangles crossing a cut
+// kept in place; then the whole mesh goes on as one. The slabs depend on the mesh only, so the
+// result does not depend on the thread count (HACD runs the slabs side by side).
 #ifndef VHACD_SIMPLIFY_H_
 #define VHACD_SIMPLIFY_H_
 
