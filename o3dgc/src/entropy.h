@@ -288,11 +288,14 @@ O3DGC_INLINE int64_t DecodeResidual(ArithmeticDecoder& d, ResidualModel& m, Resi
 }
 
 // Inverse of EncodeResidual with any shift (0..kMaxClassShift). A separate function: the loops
-// without shifts keep DecodeResidual's shorter code. `*bit_length` receives the bit length of
-// |r| (its class), known before the sign and the low bits are read.
+// without shifts keep DecodeResidual's shorter code. `*bit_length` (optional) receives the bit
+// length of |r| (its class), known before the sign and the low bits are read.
 template <bool kRawLow>
 O3DGC_INLINE int64_t DecodeShiftedResidual(ArithmeticDecoder& d, ResidualModel& m,
-                                           ResidualEscape& x, int shift, int* bit_length) {
+                                           ResidualEscape& x, int shift,
+                                           int* bit_length = nullptr) {
+  int unused;
+  if (!bit_length) bit_length = &unused;
   const int symbol = d.Decode(m.magnitude);
   int k = symbol - 1 + shift;
   *bit_length = k + 1;
