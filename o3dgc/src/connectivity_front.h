@@ -369,6 +369,7 @@ class Front {
     }
     stack_top_ = top;
     num_gates_ = n;
+    last_open_ = renumber(last_open_);  // open, so it keeps a number
   }
   O3DGC_NOINLINE void GrowGates(size_t capacity) {
     Grow(&gates_, num_gates_, capacity);
