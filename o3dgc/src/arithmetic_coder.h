@@ -25,6 +25,11 @@
 #if defined(__SSE2__) && !defined(O3DGC_NO_SIMD)
 #include <emmintrin.h>
 #endif
+#if defined(__SSE2__) && !defined(O3DGC_NO_SIMD) && !defined(__wasm__)
+#define O3DGC_SCALED_SEARCH_SIMD 1
+#else
+#define O3DGC_SCALED_SEARCH_SIMD 0
+#endif
 
 // Hot coder paths must inline into the coding loops, so that the coder's state can stay in
 // registers there; rare paths stay out of line so that the hot ones stay small.
@@ -233,6 +238,7 @@ O3DGC_INLINE int SymbolModelN<N>::Find(uint32_t r, uint32_t code, uint32_t* lo,
   *hi = ((uint32_t(cum[8 + symbol]) - 1) & 0xFFFFu) + 1;  // the total, 2^16, wrapped to 0
   return symbol;
 }
+#if O3DGC_SCALED_SEARCH_SIMD
 template <int N>
 O3DGC_INLINE int SymbolModelN<N>::FindScaled(uint32_t r, uint32_t code, uint32_t* lo,
                                              uint32_t* hi) const {
@@ -270,17 +276,8 @@ O3DGC_INLINE int SymbolModelN<N>::FindScaled(uint32_t r, uint32_t code, uint32_t
   *hi = prod[4 + symbol];
   return symbol;
 }
+#endif  // O3DGC_SCALED_SEARCH_SIMD
 #else
-template <int N>
-O3DGC_INLINE int SymbolModelN<N>::FindScaled(uint32_t r, uint32_t code, uint32_t* lo,
-                                             uint32_t* hi) const {
-  uint32_t l, h;
-  const int symbol = Find(r, code, &l, &h);
-  *lo = r * l;
-  *hi = r * h;
-  return symbol;
-}
-
 template <int N>
 O3DGC_INLINE void SymbolModelN<N>::Move(int symbol, int rate, int fast_rate) {
   const uint16_t* t = symbol_tables::kTables<N>.target[symbol];
@@ -299,6 +296,20 @@ O3DGC_INLINE int SymbolModelN<N>::Find(uint32_t r, uint32_t code, uint32_t* lo,
   for (int i = 0; i < kSymbols - 1; ++i) symbol += cumulative(i) <= q;
   *lo = symbol ? cumulative(symbol - 1) : 0;
   *hi = cumulative(symbol);
+  return symbol;
+}
+#endif
+
+// Without SSE2, and in WebAssembly (where the SIMD search's code weighs more in the download than
+// it saves in time), the scaled search is the search with the division.
+#if !O3DGC_SCALED_SEARCH_SIMD
+template <int N>
+O3DGC_INLINE int SymbolModelN<N>::FindScaled(uint32_t r, uint32_t code, uint32_t* lo,
+                                             uint32_t* hi) const {
+  uint32_t l, h;
+  const int symbol = Find(r, code, &l, &h);
+  *lo = r * l;
+  *hi = r * h;
   return symbol;
 }
 #endif
