@@ -297,10 +297,17 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     const bool ok = target ? internal::ClipRecursively(root, cp, &ctx, &clip)
                            : internal::ClipRecursively(std::move(root), cp, &ctx, &clip);
     if (!ok) return Status::kCancelled;
-    // hull_count: at least kOverSplit x N parts, so that the merge down to N has a choice.
-    const size_t want = static_cast<size_t>(params.hull_count) * kOverSplit;
-    if (exact_count && clip.parts.size() < want && !internal::SplitToCount(want, cp, &ctx, &clip))
-      return Status::kCancelled;
+    // hull_count: N more cuts of the parts sticking out farthest (at least kOverSplit x N parts),
+    // N / kCutRounds per round so that a half still sticking out is cut again. The clip's own
+    // limit is fixed, so without them every N had the same worst part and the error stopped
+    // falling with N; the merge down to N then has finer parts to choose from.
+    if (exact_count) {
+      const size_t n = params.hull_count;
+      constexpr size_t kCutRounds = 8;
+      const size_t want = std::max(n * kOverSplit, clip.parts.size()) + n;
+      if (!internal::SplitToCount(want, cp, &ctx, &clip, std::max<size_t>(1, n / kCutRounds)))
+        return Status::kCancelled;
+    }
     clip_levels = clip.levels;
     r.parts_before_merge = static_cast<uint32_t>(clip.parts.size());
     r.seconds_clip = clock.Lap();
@@ -341,7 +348,9 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     // Merge.
     ctx.BeginStage("Merging", 75, 85);
     internal::MergeParams mp;
-    mp.gamma = lim.gamma;
+    // hull_count merges by the merged hull's stick-out alone: merges in volume order under gamma
+    // took every pair up to the split limit first, which then was the error at any N.
+    mp.gamma = exact_count ? 0.0 : lim.gamma;
     mp.max_hulls = exact_count ? params.hull_count : params.max_convex_hulls;
     mp.min_hulls = exact_count ? params.hull_count : 0;
     mp.volume0 = clip.volume0;
