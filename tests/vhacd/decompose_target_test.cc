@@ -76,6 +76,22 @@ TEST(HullCountTest, GivesExactlyNHulls) {
   }
 }
 
+TEST(HullCountTest, MergesByStickOutAfterCuttingTheWorstParts) {
+  // A thick ring: its inner wall is concave everywhere, so every hull added can get closer. With
+  // merges in volume order under gamma and no cuts beyond 2 x N parts it reached 0.0124 at 16
+  // hulls and 0.0046 at 48.
+  const ShapeMesh ring = hullpack::shapes::Ring(0.0, 0.0, 0.6, 1.0, 0.0, 0.5, 96);
+  for (uint32_t n : {16u, 48u}) {
+    vhacd::Parameters p = Fast();
+    p.resolution = 100000;
+    p.hull_count = n;
+    const vhacd::Result r = DecomposeShape(ring, p);
+    ASSERT_TRUE(r.ok()) << r.message;
+    EXPECT_EQ(r.hulls.size(), n);
+    EXPECT_LT(r.report.concavity, n == 16 ? 0.010 : 0.0035) << n;
+  }
+}
+
 TEST(MaxConcavityTest, ReachesTheTargetWithFewerHullsWhenLooser) {
   const ShapeMesh gears = hullpack::shapes::GearTrain();
   size_t tight_hulls = 0;
