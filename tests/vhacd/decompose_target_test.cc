@@ -143,6 +143,31 @@ TEST(FillRuleTest, OpenPotCavityStaysEmptySingleAndDoubleSided) {
   }
 }
 
+TEST(MaxConcavityTest, StopsWhenOnlyTheFilledSolidMissesTheTarget) {
+  // The parity vote fills the pot: its cover is 0.28 from any surface whatever the split limits.
+  // Tighter retries cut the filled cavity into hundreds of hulls (minutes at D = 0.02); one
+  // attempt says why.
+  const ShapeMesh pot = hullpack::shapes::OpenPot(1.0, 1.2, 32);
+  vhacd::Parameters p = Fast();
+  p.min_opening = 0.0;
+  p.max_concavity = 0.05;
+  struct CountAttempts : vhacd::Observer {
+    int attempts = 0;
+    void OnLog(const char* message) override {
+      attempts += std::string(message).rfind("max_concavity attempt", 0) == 0;
+    }
+  } log;
+  const vhacd::Result r =
+      vhacd::Decompose(vhacd::MeshView::FromDouble(pot.points.data(), pot.point_count(),
+                                                   pot.indices.data(), pot.triangle_count()),
+                       p, &log);
+  ASSERT_TRUE(r.ok()) << r.message;
+  EXPECT_FALSE(r.report.target_reached);
+  EXPECT_EQ(log.attempts, 1);
+  EXPECT_NE(r.report.target_note.find("filled voxel solid"), std::string::npos)
+      << r.report.target_note;
+}
+
 TEST(FillRuleTest, LidlessBoxAndCupStayEmpty) {
   ShapeMesh box = hullpack::shapes::LidlessBox(2.0, 1.4, 1.0, 6);
   box.AddBackFaces();

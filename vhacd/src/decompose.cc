@@ -441,6 +441,16 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
         have = true;
       }
       if (r.concavity <= stop) break;
+      // Every hull over D lies within the filled voxel solid (a hole the fill rule closed): its
+      // cover is farther than D from any surface whatever the split limits, and tighter attempts
+      // only cut the filled cavity into hundreds of parts.
+      bool over = false, only_in_solid = true;
+      for (size_t i = 0; i < r.hulls.size() && i < hulls.size() && only_in_solid; ++i)
+        if (r.hulls[i].distance > d) {
+          over = true;
+          only_in_solid = field.HullDepth(hulls[i]) <= 1.0;
+        }
+      if (over && only_in_solid) break;
       if (!input.closed && !split_open) {  // the same limits, split by the exact measure too
         split_open = true;
         continue;
