@@ -76,6 +76,22 @@ TEST(HullCountTest, GivesExactlyNHulls) {
   }
 }
 
+TEST(HullCountTest, MergesByStickOutAfterCuttingTheWorstParts) {
+  // A thick ring: its inner wall is concave everywhere, so every hull added can get closer. With
+  // merges in volume order under gamma and no cuts beyond 2 x N parts it reached 0.0124 at 16
+  // hulls and 0.0046 at 48.
+  const ShapeMesh ring = hullpack::shapes::Ring(0.0, 0.0, 0.6, 1.0, 0.0, 0.5, 96);
+  for (uint32_t n : {16u, 48u}) {
+    vhacd::Parameters p = Fast();
+    p.resolution = 100000;
+    p.hull_count = n;
+    const vhacd::Result r = DecomposeShape(ring, p);
+    ASSERT_TRUE(r.ok()) << r.message;
+    EXPECT_EQ(r.hulls.size(), n);
+    EXPECT_LT(r.report.concavity, n == 16 ? 0.010 : 0.0035) << n;
+  }
+}
+
 TEST(MaxConcavityTest, ReachesTheTargetWithFewerHullsWhenLooser) {
   const ShapeMesh gears = hullpack::shapes::GearTrain();
   size_t tight_hulls = 0;
@@ -125,6 +141,31 @@ TEST(FillRuleTest, OpenPotCavityStaysEmptySingleAndDoubleSided) {
     ASSERT_TRUE(filled.ok());
     EXPECT_GT(CylinderFill(filled, 0.75, 0.15, 1.1), 0.9) << two_sided;
   }
+}
+
+TEST(MaxConcavityTest, StopsWhenOnlyTheFilledSolidMissesTheTarget) {
+  // The parity vote fills the pot: its cover is 0.28 from any surface whatever the split limits.
+  // Tighter retries cut the filled cavity into hundreds of hulls (minutes at D = 0.02); one
+  // attempt says why.
+  const ShapeMesh pot = hullpack::shapes::OpenPot(1.0, 1.2, 32);
+  vhacd::Parameters p = Fast();
+  p.min_opening = 0.0;
+  p.max_concavity = 0.05;
+  struct CountAttempts : vhacd::Observer {
+    int attempts = 0;
+    void OnLog(const char* message) override {
+      attempts += std::string(message).rfind("max_concavity attempt", 0) == 0;
+    }
+  } log;
+  const vhacd::Result r =
+      vhacd::Decompose(vhacd::MeshView::FromDouble(pot.points.data(), pot.point_count(),
+                                                   pot.indices.data(), pot.triangle_count()),
+                       p, &log);
+  ASSERT_TRUE(r.ok()) << r.message;
+  EXPECT_FALSE(r.report.target_reached);
+  EXPECT_EQ(log.attempts, 1);
+  EXPECT_NE(r.report.target_note.find("filled voxel solid"), std::string::npos)
+      << r.report.target_note;
 }
 
 TEST(FillRuleTest, LidlessBoxAndCupStayEmpty) {

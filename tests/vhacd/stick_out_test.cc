@@ -51,6 +51,32 @@ TEST(StickOutTest, OpenSurfacesTrustTheVoxelVote) {
   EXPECT_GT(meter.Measure(BoxHull(2.3, 2.3, 2.3, 12.7, 12.7, 15.2)), 1.5);
 }
 
+TEST(StickOutTest, FillCapsAreMeasuredFromTheSolid) {
+  // A box without its top, filled by the parity rule alone: the fill closes the top. A hull 2.5
+  // voxels above that cap is within a few voxels of the solid the decomposition works on, though
+  // its corners are 8 voxels from the nearest wall: splits and merges must not chase the cap.
+  const vhacd_test::Mesh box = vhacd_test::Box(2.3, 2.3, 2.3, 28.7, 28.7, 28.7);
+  GridMesh closed = ToGrid(box), mesh;
+  mesh.points = closed.points;
+  for (const auto& t : closed.triangles)
+    if (closed.points[t[0]].z() < 28.0 || closed.points[t[1]].z() < 28.0 ||
+        closed.points[t[2]].z() < 28.0)
+      mesh.triangles.push_back(t);
+  ASSERT_EQ(mesh.triangles.size(), closed.triangles.size() - 2);
+  const int dims[3] = {32, 32, 32};
+  Context ctx(nullptr, 2);
+  VoxelGrid grid;
+  ASSERT_TRUE(Voxelize(mesh, dims, &ctx, &grid, nullptr, 0.0));
+  DistanceField field;
+  ASSERT_TRUE(field.Build(grid, &ctx));
+  const StickOutMeter meter(mesh, grid, false, &field);
+  const double above_cap = meter.Measure(BoxHull(10, 10, 10, 20, 20, 31.2));
+  EXPECT_GT(above_cap, 1.5);
+  EXPECT_LT(above_cap, 5.0);
+  // Beside a wall the surface is the nearer: measured from it as before.
+  EXPECT_NEAR(meter.Measure(BoxHull(2.3, 2.3, 2.3, 28.7, 28.7 + 2.5, 20)), 2.5, 1e-9);
+}
+
 }  // namespace
 }  // namespace internal
 }  // namespace vhacd

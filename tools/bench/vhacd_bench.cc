@@ -16,7 +16,9 @@
 // library's own report is printed next to it.
 //
 // hullpack configurations (--ours, comma-separated): default, high, tetra (default + mode 1),
-// high+tetra. Without --ours, one configuration from --preset/--quality and --mode.
+// high+tetra, vhacd2 (the defaults with max_concavity 0: V-HACD 2.0's volume criteria), d=X
+// (max_concavity X), n=N (hull_count N), match=REF (REF's hull count per mesh). Without --ours,
+// one configuration from --preset/--quality and --mode.
 // The reference: --reference-bin PATH runs `PATH {in}` in a fresh folder and reads the hulls from
 // its decomp.obj (what V-HACD 4.x's TestVHACD writes); --reference-cmd runs a shell command in a
 // fresh folder {dir} with {in} (the input OBJ) and {out} (where it must leave the hulls, one `o`
@@ -151,7 +153,7 @@ int RunOurs(int argc, char** argv) {
   vhacd::Parameters p = preset == "high" ? vhacd::Parameters::High() : vhacd::Parameters::Default();
   p.mode = std::atoi(argv[5]) == 1 ? vhacd::Mode::kTetrahedron : vhacd::Mode::kVoxel;
   p.num_threads = static_cast<uint32_t>(std::atoi(argv[6]));
-  p.max_concavity = std::atof(argv[7]);
+  if (std::atof(argv[7]) >= 0) p.max_concavity = std::atof(argv[7]);  // < 0: the preset's
   p.hull_count = static_cast<uint32_t>(std::atoi(argv[8]));
   std::vector<Soup> parts;
   std::string why;
@@ -268,9 +270,9 @@ struct Config {
   std::string command;  // a named reference's template (--reference NAME=TEMPLATE)
   std::string preset = "default";
   int mode = 0;
-  double max_concavity = 0.0;  // d=X
-  int hulls = 0;               // n=N
-  std::string match;           // match=REF: the hull count REF gave on the same mesh
+  double max_concavity = -1.0;  // d=X (0: V-HACD 2.0's criteria, < 0: the preset's)
+  int hulls = 0;                // n=N
+  std::string match;            // match=REF: the hull count REF gave on the same mesh
 };
 
 struct Row {
@@ -537,7 +539,8 @@ int main(int argc, char** argv) {
              "{out} the OBJ it must write (one `o` per hull)");
   cli.Int("--repeats", "N", 1, 1000, &repeats, "runs per program, median time and memory (1)");
   cli.String("--ours", "LIST", &ours_list,
-             "hullpack configurations: default, high, tetra, high+tetra (comma-separated)");
+             "hullpack configurations: default, high, tetra, high+tetra, vhacd2, d=X, n=N, "
+             "match=REF (comma-separated)");
   cli.Choice("--quality, --preset", {"default", "high"}, &preset,
              "without --ours: the preset of the one configuration");
   cli.Value("--mode", "voxel|tetra", "without --ours: voxel (0) or tetrahedron (1) sets",
@@ -635,6 +638,8 @@ int main(int argc, char** argv) {
     else if (c == "high+tetra") {
       cfg.preset = "high";
       cfg.mode = 1;
+    } else if (c == "vhacd2") {  // V-HACD 2.0's volume criteria, the defaults before the target
+      cfg.max_concavity = 0.0;
     } else if (c.rfind("d=", 0) == 0 && std::atof(c.c_str() + 2) > 0)
       cfg.max_concavity = std::atof(c.c_str() + 2);
     else if (c.rfind("n=", 0) == 0 && std::atoi(c.c_str() + 2) > 0)

@@ -260,7 +260,8 @@ bool ClipRecursively(Part root, const ClipParams& params, Context* ctx, ClipOutp
   return true;
 }
 
-bool SplitToCount(size_t count, const ClipParams& params, Context* ctx, ClipOutput* out) {
+bool SplitToCount(size_t count, const ClipParams& params, Context* ctx, ClipOutput* out,
+                  size_t per_round) {
   CutWeights weights;
   weights.alpha = params.alpha;
   weights.beta = params.beta;
@@ -281,7 +282,9 @@ bool SplitToCount(size_t count, const ClipParams& params, Context* ctx, ClipOutp
       if (out->depth[a] != out->depth[b]) return out->depth[a] > out->depth[b];
       return out->concavity[a] > out->concavity[b];
     });
-    order.resize(std::min(order.size(), count - out->parts.size()));
+    size_t cuts = count - out->parts.size();
+    if (per_round > 0) cuts = std::min(cuts, per_round);
+    order.resize(std::min(order.size(), cuts));
     std::sort(order.begin(), order.end());
     std::vector<double> conc(out->parts.size(), 0.0);
     for (uint32_t i : order) conc[i] = out->concavity[i];

@@ -48,8 +48,10 @@ bool ClipRecursively(Part root, const ClipParams& params, Context* ctx, ClipOutp
 
 // Cuts the leaves of `out` further until there are at least `count` (or no leaf can be cut): each
 // round cuts the leaves whose hulls stick out farthest (then the most concave), as many as are
-// missing, by the same plane search. Deterministic. Returns false when cancelled.
-bool SplitToCount(size_t count, const ClipParams& params, Context* ctx, ClipOutput* out);
+// missing but at most `per_round` (0: no limit), by the same plane search. Deterministic. Returns
+// false when cancelled.
+bool SplitToCount(size_t count, const ClipParams& params, Context* ctx, ClipOutput* out,
+                  size_t per_round = 0);
 
 }  // namespace internal
 }  // namespace vhacd

@@ -265,6 +265,8 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   struct Limits {
     double concavity, gamma, max_depth;
     double max_stick;  // grid units, exact surface (targets only; 0: off)
+    // max_concavity on an open surface: split by the exact measure too (else it only ranks).
+    bool split_open = false;
   };
   // The targets decide splits and merges on the exact surface (stick_out.h).
   const bool exact_measure = exact_count || target;
@@ -290,18 +292,25 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     cp.meter = meter.get();
     cp.index = &index;
     // On an open surface the side is only known per voxel: for max_concavity the exact measure
-    // then ranks but does not split (splitting by it multiplied hulls without getting closer);
-    // hull_count merges down to N anyway.
-    cp.max_stick = input.closed || exact_count ? lim.max_stick : 0.0;
+    // splits only from the second attempt on, kept when it gets closer (on scans with filled
+    // holes it multiplied hulls without getting closer); hull_count merges down to N anyway.
+    cp.max_stick = input.closed || exact_count || lim.split_open ? lim.max_stick : 0.0;
     internal::ClipOutput clip;
     // Only max_concavity runs more than one attempt: the others hand the voxels over.
     const bool ok = target ? internal::ClipRecursively(root, cp, &ctx, &clip)
                            : internal::ClipRecursively(std::move(root), cp, &ctx, &clip);
     if (!ok) return Status::kCancelled;
-    // hull_count: at least kOverSplit x N parts, so that the merge down to N has a choice.
-    const size_t want = static_cast<size_t>(params.hull_count) * kOverSplit;
-    if (exact_count && clip.parts.size() < want && !internal::SplitToCount(want, cp, &ctx, &clip))
-      return Status::kCancelled;
+    // hull_count: N more cuts of the parts sticking out farthest (at least kOverSplit x N parts),
+    // N / kCutRounds per round so that a half still sticking out is cut again. The clip's own
+    // limit is fixed, so without them every N had the same worst part and the error stopped
+    // falling with N; the merge down to N then has finer parts to choose from.
+    if (exact_count) {
+      const size_t n = params.hull_count;
+      constexpr size_t kCutRounds = 8;
+      const size_t want = std::max(n * kOverSplit, clip.parts.size()) + n;
+      if (!internal::SplitToCount(want, cp, &ctx, &clip, std::max<size_t>(1, n / kCutRounds)))
+        return Status::kCancelled;
+    }
     clip_levels = clip.levels;
     r.parts_before_merge = static_cast<uint32_t>(clip.parts.size());
     r.seconds_clip = clock.Lap();
@@ -342,7 +351,9 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     // Merge.
     ctx.BeginStage("Merging", 75, 85);
     internal::MergeParams mp;
-    mp.gamma = lim.gamma;
+    // hull_count merges by the merged hull's stick-out alone: merges in volume order under gamma
+    // took every pair up to the split limit first, which then was the error at any N.
+    mp.gamma = exact_count ? 0.0 : lim.gamma;
     mp.max_hulls = exact_count ? params.hull_count : params.max_convex_hulls;
     mp.min_hulls = exact_count ? params.hull_count : 0;
     mp.volume0 = clip.volume0;
@@ -402,13 +413,21 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     // Cuts are voxel-aligned: a tighter exact limit only multiplies slivers.
     constexpr double kMinStick = 0.5;
     double limit = std::max(kMinLimit, d * diag_grid - 0.5);
-    double stick = std::max(kMinStick, d * diag_grid);
+    // The exact measure samples the faces half a voxel apart and the report samples them its own
+    // way: split and merge a margin below D, or a mesh at D by one measure was just over by the
+    // other (spot, chair: 0.0200 and 0.0222 at D = 0.02 without it).
+    constexpr double kStickMargin = 0.85;
+    double stick = std::max(kMinStick, kStickMargin * d * diag_grid);
+    bool split_open = false;
+    // On an open surface the report's measure is the more lenient (it cannot tell sides inside
+    // surface voxels either): stop there only a margin below D.
+    const double stop = input.closed ? d : kStickMargin * d;
     std::vector<internal::HullMesh> best_hulls;
     Report best;
     bool have = false;
     for (int attempt = 0; attempt < kAttempts; ++attempt) {
       Report r = rep;
-      if (run(Limits{1.0, 1.0, limit, stick}, &r) != Status::kOk)
+      if (run(Limits{1.0, 1.0, limit, stick, split_open}, &r) != Status::kOk)
         return Fail(Status::kCancelled, "cancelled");
       ctx.Log("max_concavity attempt " + std::to_string(attempt + 1) + ": split limit " +
               std::to_string(limit) + " voxels, " + std::to_string(hulls.size()) +
@@ -416,13 +435,28 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
       r.attempts = static_cast<uint32_t>(attempt + 1);
       // A tighter attempt costs hulls: keep it only when it reaches D or is clearly closer.
       constexpr double kMinGain = 0.95;
-      if (!have || (r.concavity <= d && best.concavity > d) ||
+      if (!have || (r.concavity <= stop && best.concavity > stop) ||
           r.concavity < kMinGain * best.concavity) {
         best = r;
         best_hulls = hulls;
         have = true;
       }
-      if (r.concavity <= d || limit <= kMinLimit) break;
+      if (r.concavity <= stop) break;
+      // Every hull over D lies within the filled voxel solid (a hole the fill rule closed): its
+      // cover is farther than D from any surface whatever the split limits, and tighter attempts
+      // only cut the filled cavity into hundreds of parts.
+      bool over = false, only_in_solid = true;
+      for (size_t i = 0; i < r.hulls.size() && i < hulls.size() && only_in_solid; ++i)
+        if (r.hulls[i].distance > d) {
+          over = true;
+          only_in_solid = field.HullDepth(hulls[i]) <= 1.0;
+        }
+      if (over && only_in_solid) break;
+      if (!input.closed && !split_open) {  // the same limits, split by the exact measure too
+        split_open = true;
+        continue;
+      }
+      if (limit <= kMinLimit) break;
       limit = std::max(kMinLimit, limit * kTighten);
       stick = std::max(kMinStick, stick * kTighten);
     }

@@ -20,6 +20,10 @@ constexpr double kRelativeSpacing = 0.2;
 // A point of a voxel that meets the surface is within the voxel's diagonal of it; an outside
 // voxel's centre is within its field value plus half a diagonal of a solid voxel's centre.
 constexpr double kVoxelDiagonal = 1.7320508075688772;
+// Any point is within a voxel's diagonal of the surface in the nearest surface voxel; farther
+// than that (plus the field's interpolation error) from the surface than from the solid voxels, the
+// nearest solid is a fill cap.
+constexpr double kCapMargin = kVoxelDiagonal + 0.5;
 
 StickOutMeter::StickOutMeter(const GridMesh& mesh, const VoxelGrid& grid, bool closed,
                              const DistanceField* field)
@@ -39,6 +43,14 @@ double StickOutMeter::OutsideDistance(const Vec3& p, double best) const {
     if (cell == kCellSurface && best >= kVoxelDiagonal) return 0.0;
     if (cell == kCellOutside && field_ != nullptr && field_->At(index) + kVoxelDiagonal <= best)
       return 0.0;
+    if (cell == kCellOutside && field_ != nullptr) {
+      // Farther from the surface than from the solid voxels by more than a voxel's diagonal:
+      // the nearest solid voxel is a fill cap (an opening the fill rule closed), not the
+      // surface. Measure from the solid the decomposition works on there.
+      const double to_solid = std::max(0.0, field_->Interpolate(p) - 0.5);
+      const double d = locator_.Distance(p);
+      return d > to_solid + kCapMargin ? to_solid : d;
+    }
     if (cell == kCellSurface) {
       // An open surface has no side: trust the voxel centre's parity vote for the whole voxel.
       if (!closed_)
