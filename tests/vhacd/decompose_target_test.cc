@@ -168,6 +168,35 @@ TEST(MaxConcavityTest, StopsWhenOnlyTheFilledSolidMissesTheTarget) {
       << r.report.target_note;
 }
 
+TEST(MaxConcavityTest, MissOnTheRefinedGridIsRetriedAtTheRequestedGrid) {
+  // At D = 0.03 the grid is refined (D spans under 3 voxels at 40,000) and the filled pot misses:
+  // the requested grid is run too, and the result is never farther than the refined grid's alone.
+  const ShapeMesh pot = hullpack::shapes::OpenPot(1.0, 1.2, 32);
+  const vhacd::MeshView view = vhacd::MeshView::FromDouble(
+      pot.points.data(), pot.point_count(), pot.indices.data(), pot.triangle_count());
+  vhacd::Parameters p = Fast();
+  p.min_opening = 0.0;
+  p.max_concavity = 0.03;
+  struct Grids : vhacd::Observer {
+    std::vector<std::string> grids;
+    double refined_concavity = 0.0;
+    void OnLog(const char* message) override {
+      const std::string m(message);
+      if (m.rfind("grid ", 0) == 0) grids.push_back(m);
+      const std::string missed = "max_concavity missed on the refined grid (";
+      if (m.rfind(missed, 0) == 0) refined_concavity = std::stod(m.substr(missed.size()));
+    }
+  } log;
+  const vhacd::Result r = vhacd::Decompose(view, p, &log);
+  ASSERT_TRUE(r.ok()) << r.message;
+  EXPECT_FALSE(r.report.target_reached);
+  ASSERT_EQ(log.grids.size(), 2u);  // the refined grid, then the requested one
+  EXPECT_NE(log.grids[0].substr(0, log.grids[0].find(',')),
+            log.grids[1].substr(0, log.grids[1].find(',')));
+  ASSERT_GT(log.refined_concavity, 0.0);
+  EXPECT_LE(r.report.concavity, log.refined_concavity + 1e-6);  // the log has 6 decimals
+}
+
 TEST(FillRuleTest, LidlessBoxAndCupStayEmpty) {
   ShapeMesh box = hullpack::shapes::LidlessBox(2.0, 1.4, 1.0, 6);
   box.AddBackFaces();

@@ -100,6 +100,10 @@ namespace {
 
 using internal::Vec3;
 
+// max_concavity keeps another attempt's result only when it reaches D or is this much closer: the
+// report's measure and an independent one differ by a few percent.
+constexpr double kMinGain = 0.95;
+
 Result Fail(Status s, std::string message) {
   Result r;
   r.status = s;
@@ -107,7 +111,10 @@ Result Fail(Status s, std::string message) {
   return r;
 }
 
-Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* observer) {
+// refine_grid: max_concavity may refine the grid so that D spans a few voxels (off for the
+// comparison run at the requested resolution, see the end).
+Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* observer,
+                     bool refine_grid = true) {
   std::string why;
   Status st = ValidateParameters(params, &why);
   if (st != Status::kOk) return Fail(st, why);
@@ -169,7 +176,8 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   const bool exact_count = params.hull_count > 0;
   const bool target = !exact_count && params.max_concavity > 0;
   internal::GridPlacement place = internal::ChooseGrid(nlo, nhi, params.resolution);
-  if (target) {
+  bool refined = false;
+  if (target && refine_grid) {
     // The split and merge limits are measured on the grid: let max_concavity span a few voxels.
     constexpr double kVoxelsPerTarget = 3.0, kMaxTargetResolution = 1e6;
     const double spans = params.max_concavity * (nhi - nlo).norm() / place.h;
@@ -177,6 +185,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
       const double wanted = params.resolution * std::pow(kVoxelsPerTarget / spans, 3.0);
       place = internal::ChooseGrid(nlo, nhi,
                                    static_cast<uint32_t>(std::min(wanted, kMaxTargetResolution)));
+      refined = true;
     }
   }
   internal::GridMesh gmesh;
@@ -434,7 +443,6 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
               " hulls, concavity " + std::to_string(r.concavity));
       r.attempts = static_cast<uint32_t>(attempt + 1);
       // A tighter attempt costs hulls: keep it only when it reaches D or is clearly closer.
-      constexpr double kMinGain = 0.95;
       if (!have || (r.concavity <= stop && best.concavity > stop) ||
           r.concavity < kMinGain * best.concavity) {
         best = r;
@@ -496,6 +504,8 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
                         std::to_string(rep.concavity) + "): " + cause;
     }
   }
+  const bool missed = target && !rep.target_reached;
+  const double reached = rep.concavity;
   if (!params.compute_report) {
     // The caller did not ask for the measures (a max_concavity run needed them internally).
     internal::ClearMeasures(&rep);
@@ -511,6 +521,25 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     rep.hulls[i].vertex_count = static_cast<uint32_t>(hulls[i].vertices.size());
     rep.hulls[i].volume = out.volume;
     result.hulls.push_back(std::move(out));
+  }
+  if (missed && refined) {
+    // The refined grid's voxel solid can differ from the requested grid's (the fill decision at a
+    // narrow opening, a gap between hulls): when the target was missed, the requested grid is
+    // tried too and the closer result kept, so refining never returns a result farther than the
+    // requested resolution would have given (by the same rule as the attempts).
+    ctx.Log("max_concavity missed on the refined grid (" + std::to_string(reached) +
+            "): trying the requested resolution");
+    Parameters coarse = params;
+    coarse.compute_report = true;
+    Result other = DecomposeImpl(view, coarse, observer, false);
+    if (other.status != Status::kOk) return other;
+    if (other.report.target_reached || other.report.concavity < kMinGain * reached) {
+      ctx.Log("kept the requested resolution's result (" + std::to_string(other.report.concavity) +
+              ")");
+      if (!params.compute_report) internal::ClearMeasures(&other.report);
+      other.report.seconds_total = total.Lap();
+      return other;
+    }
   }
   rep.seconds_total = total.Lap();
   ctx.Progress(100, "done");
