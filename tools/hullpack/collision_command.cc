@@ -54,7 +54,7 @@ int RunCollisionCommand(const std::vector<std::string>& args) {
   cli.Int("--max-hulls", "N", 0, 100000, &max_hulls, "hull budget (0: none)");
   cli.Double("--concavity", "F", 0, 1, &concavity,
              "largest concavity of a part (V-HACD 2.0's volume criterion instead of\n"
-             "the preset's --max-concavity 0.07)");
+             "the preset's --max-concavity 0.08)");
   cli.Flag("--json", &json, "print the report as JSON");
   cli.Flag("--force", &options.force, "replace existing files");
   cli.Flag("--quiet", &quiet, "no progress line");

@@ -333,7 +333,7 @@ void AddPackOptions(CliArgs& cli, PackOptions* options) {
               return std::string();
             });
   cli.Value("--quality", "default|high",
-            "decomposition preset (default: --max-concavity 0.07, at most 24 vertices\n"
+            "decomposition preset (default: --max-concavity 0.08, at most 24 vertices\n"
             "per hull; high: V-HACD 2.0's volume criteria, finer, up to 128 vertices);\n"
             "the decomposition options below refine it",
             [&p](const std::string& v) {
@@ -360,7 +360,7 @@ void AddPackOptions(CliArgs& cli, PackOptions* options) {
              "volume criterion: applies with --max-concavity 0; hacd: of a merge)");
   cli.Double("--max-concavity", "D", 0, 1, &p.max_concavity,
              "hulls within D x the mesh's diagonal of its surface, as few as that allows\n"
-             "(0.07; 0: V-HACD 2.0's volume criteria)");
+             "(0.08; 0: V-HACD 2.0's volume criteria)");
 }
 
 std::string ApplyMethodOptions(const CliArgs& cli, PackOptions* options) {

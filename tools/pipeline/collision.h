@@ -23,7 +23,7 @@ enum class HullPolicy {
 // bounding-box diagonal): chosen from the corpus' size and closeness curve (docs/packed-gltf.md,
 // "Sizes") as the closest hulls whose whole file stays within the size of the same meshes
 // Draco-compressed without hulls.
-inline constexpr double kPackMaxConcavity = 0.07;
+inline constexpr double kPackMaxConcavity = 0.08;
 
 // The decomposition `hullpack pack` runs by default: V-HACD 2.0's voxels and splitting with
 //  - the target error max_concavity = kPackMaxConcavity: parts are split until every hull lies

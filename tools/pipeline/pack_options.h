@@ -20,7 +20,7 @@ struct PackOptions {
   // position bits unless position_bits is given.
   double max_error = 0.0005;
   // The same for collision-hull vertices. Hulls already stand off the surface by up to their
-  // concavity (the preset's max_concavity, 0.07 of the diagonal), so they need far fewer bits than
+  // concavity (the preset's max_concavity, 0.08 of the diagonal), so they need far fewer bits than
   // the render mesh.
   double hull_error = 0.002;
   int position_bits = 0;  // 0 = from max_error
