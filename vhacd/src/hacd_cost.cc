@@ -7,17 +7,24 @@
 namespace vhacd {
 namespace internal {
 
-double FlatHull(const std::vector<Vec3>& points, std::vector<Vec3>* kept) {
-  if (points.size() < 3) {
-    if (kept != nullptr) *kept = points;
-    return 0.0;
-  }
+Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> PrincipalAxes(const std::vector<Vec3>& points,
+                                                             Vec3* centroid) {
   Vec3 c = Vec3::Zero();
   for (const Vec3& p : points) c += p;
   c /= static_cast<double>(points.size());
   Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
   for (const Vec3& p : points) cov += (p - c) * (p - c).transpose();
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
+  if (centroid != nullptr) *centroid = c;
+  return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(cov);
+}
+
+double FlatHull(const std::vector<Vec3>& points, std::vector<Vec3>* kept) {
+  if (points.size() < 3) {
+    if (kept != nullptr) *kept = points;
+    return 0.0;
+  }
+  Vec3 c;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es = PrincipalAxes(points, &c);
   const Vec3 u = es.eigenvectors().col(2), v = es.eigenvectors().col(1);
   struct P2 {
     double x, y;

@@ -4,6 +4,7 @@
 #ifndef VHACD_SRC_HACD_COST_H_
 #define VHACD_SRC_HACD_COST_H_
 
+#include <Eigen/Eigenvalues>
 #include <cstdint>
 #include <vector>
 
@@ -42,6 +43,11 @@ MergeCost EvaluateCluster(const std::vector<Vec3>& hull_points, const std::vecto
                           const std::vector<uint32_t>& ids_a, const std::vector<uint32_t>& ids_b,
                           double area, double perimeter, double limit, const HacdCostParams& params,
                           std::vector<Vec3>* kept);
+
+// The principal axes of a point set: the eigen decomposition of its covariance about its
+// centroid, written to *centroid when non-null (eigenvalues ascending: col(0) spreads least).
+Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> PrincipalAxes(const std::vector<Vec3>& points,
+                                                             Vec3* centroid = nullptr);
 
 // Vertices of the 2D convex hull of (nearly) coplanar points and its area. Used for flat clusters.
 double FlatHull(const std::vector<Vec3>& points, std::vector<Vec3>* kept);

@@ -56,12 +56,7 @@ HullMesh ClusterHull(const std::vector<Vec3>& pts, double thickness, uint32_t ma
     thin = hull.Volume() < 0.25 * area * thickness;
   }
   if (thin) {
-    Vec3 c = Vec3::Zero();
-    for (const Vec3& p : pts) c += p;
-    c /= static_cast<double>(pts.size());
-    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-    for (const Vec3& p : pts) cov += (p - c) * (p - c).transpose();
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es = PrincipalAxes(pts);
     std::vector<Vec3> thick;
     const Vec3 n = es.eigenvectors().col(0), m = es.eigenvectors().col(1);
     const bool line = es.eigenvalues()[1] <= 1e-18 * std::max(1e-300, es.eigenvalues()[2]);

@@ -90,6 +90,18 @@ size_t Nearest(const Mesh& m, const float* p) {
   return best;
 }
 
+// The collision-hull points an engine reads from a packed file, hull by hull.
+std::vector<std::vector<float>> HullPoints(const PackResult& packed) {
+  GltfDocument d;
+  EXPECT_TRUE(ReadPackedGltf(packed.glb.data(), packed.glb.size(), "p.glb", "", &d).ok());
+  Result<std::vector<CollisionHull>> h = ReadCollisionHulls(d, "p.glb");
+  EXPECT_TRUE(h.ok());
+  std::vector<std::vector<float>> points;
+  if (h.ok())
+    for (const CollisionHull& c : h.value()) points.push_back(c.hull.positions);
+  return points;
+}
+
 TEST(Pack, RoundTripKeepsGeometryWithinTheBudgetMaterialsSkinAndHierarchy) {
   const Scene in = TestScene();
   const PackOptions options = FastOptions();
@@ -224,19 +236,9 @@ TEST(Pack, FallbackFilesWithHullsRequireNoExtension) {
   EXPECT_FALSE(doc->json().contains("extensionsRequired"));
   for (const auto& name : doc->json()["extensionsUsed"])
     EXPECT_NE(name.get<std::string>(), "KHR_mesh_quantization");
-  auto hulls_of = [](const PackResult& p) {
-    GltfDocument d;
-    Result<Scene> s = ReadPackedGltf(p.glb.data(), p.glb.size(), "p.glb", "", &d);
-    EXPECT_TRUE(s.ok());
-    Result<std::vector<CollisionHull>> h = ReadCollisionHulls(d, "p.glb");
-    EXPECT_TRUE(h.ok());
-    std::vector<std::vector<float>> points;
-    for (const CollisionHull& c : h.value()) points.push_back(c.hull.positions);
-    return points;
-  };
-  const std::vector<std::vector<float>> a = hulls_of(plain.value());
+  const std::vector<std::vector<float>> a = HullPoints(plain.value());
   EXPECT_GT(a.size(), 1u);
-  EXPECT_EQ(a, hulls_of(fallback.value()));
+  EXPECT_EQ(a, HullPoints(fallback.value()));
 }
 
 TEST(Pack, QuantizedHullsRequireKhrMeshQuantizationAndGiveTheSamePoints) {
@@ -250,11 +252,7 @@ TEST(Pack, QuantizedHullsRequireKhrMeshQuantizationAndGiveTheSamePoints) {
   ASSERT_TRUE(floats.ok() && quantized.ok());
   EXPECT_LT(quantized->glb.size(), floats->glb.size());
   auto read = [](const PackResult& p, std::vector<std::vector<float>>* points) {
-    GltfDocument d;
-    EXPECT_TRUE(ReadPackedGltf(p.glb.data(), p.glb.size(), "p.glb", "", &d).ok());
-    Result<std::vector<CollisionHull>> h = ReadCollisionHulls(d, "p.glb");
-    EXPECT_TRUE(h.ok());
-    for (const CollisionHull& c : h.value()) points->push_back(c.hull.positions);
+    *points = HullPoints(p);
     Result<GltfDocument> raw = DecodeGlbDocument(p.glb.data(), p.glb.size(), "p.glb");
     EXPECT_TRUE(raw.ok());
     std::set<int> types;
