@@ -49,6 +49,10 @@ Result<PackResult> PackLoaded(Scene scene, const PackOptions& options, PackObser
   if (repairs.changed()) report.left_out.push_back(DescribeRepairs(repairs));
   for (const std::string& line : repaired->lines) report.left_out.push_back(line);
   report.seconds_prune = Seconds(t);
+  if (pruned.empty_meshes_removed > 0 && scene.triangle_count() == 0) {
+    return Status(StatusCode::kInvalidArgument,
+                  "nothing to pack: every triangle is degenerate (zero area at float precision)");
+  }
 
   t = Clock::now();
   Result<std::vector<PackedMesh>> packed =

@@ -95,21 +95,16 @@ void RemoveUnusedSkinData(const Scene& scene, size_t mesh_index, Mesh& mesh, Pru
   ++report.skin_data_removed;
 }
 
-void RemoveUnreferencedMeshes(Scene& scene, PruneReport& report) {
-  if (scene.nodes.empty()) return;
+// Keeps the meshes `keep` marks, renumbering the nodes' references; returns how many went.
+size_t KeepMeshes(Scene& scene, const std::vector<bool>& keep) {
   std::vector<int> new_index(scene.meshes.size(), -1);
-  for (const Node& node : scene.nodes) {
-    for (int m : node.meshes) {
-      if (m >= 0 && static_cast<size_t>(m) < scene.meshes.size()) new_index[m] = 0;
-    }
-  }
   std::vector<Mesh> kept;
   for (size_t i = 0; i < scene.meshes.size(); ++i) {
-    if (new_index[i] < 0) continue;
+    if (!keep[i]) continue;
     new_index[i] = static_cast<int>(kept.size());
     kept.push_back(std::move(scene.meshes[i]));
   }
-  report.meshes_removed += scene.meshes.size() - kept.size();
+  const size_t removed = scene.meshes.size() - kept.size();
   scene.meshes = std::move(kept);
   for (Node& node : scene.nodes) {
     std::vector<int> meshes;
@@ -119,6 +114,28 @@ void RemoveUnreferencedMeshes(Scene& scene, PruneReport& report) {
     }
     node.meshes = std::move(meshes);
   }
+  return removed;
+}
+
+void RemoveUnreferencedMeshes(Scene& scene, PruneReport& report) {
+  if (scene.nodes.empty()) return;
+  std::vector<bool> shown(scene.meshes.size(), false);
+  for (const Node& node : scene.nodes) {
+    for (int m : node.meshes) {
+      if (m >= 0 && static_cast<size_t>(m) < scene.meshes.size()) shown[m] = true;
+    }
+  }
+  report.meshes_removed += KeepMeshes(scene, shown);
+}
+
+// A mesh whose every triangle the repairs dropped (all degenerate: a collapsed helper object, or
+// coordinates too far out for float precision) has nothing to draw or to collide with, and glTF
+// has no empty meshes.
+void RemoveEmptyMeshes(Scene& scene, PruneReport& report) {
+  std::vector<bool> has_triangles(scene.meshes.size());
+  for (size_t i = 0; i < scene.meshes.size(); ++i)
+    has_triangles[i] = scene.meshes[i].triangle_count() > 0;
+  report.empty_meshes_removed += KeepMeshes(scene, has_triangles);
 }
 
 void RemoveUnreferencedMaterials(Scene& scene, PruneReport& report) {
@@ -171,6 +188,7 @@ void RemoveUnreferencedImages(Scene& scene, PruneReport& report) {
 
 PruneReport LeaveOutUnused(Scene& scene, const PruneOptions& options) {
   PruneReport report;
+  if (options.empty_meshes) RemoveEmptyMeshes(scene, report);
   if (options.unreferenced_meshes) RemoveUnreferencedMeshes(scene, report);
   for (size_t i = 0; i < scene.meshes.size(); ++i) {
     Mesh& mesh = scene.meshes[i];
@@ -192,6 +210,7 @@ PruneReport LeaveOutUnused(Scene& scene, const PruneOptions& options) {
   line(report.tangent_sets_removed, "tangent sets without a normal map");
   line(report.constant_color_sets_folded, "constant vertex colour sets (folded into the material)");
   line(report.skin_data_removed, "joint/weight sets of meshes no skinned node shows");
+  line(report.empty_meshes_removed, "meshes with no triangle left (every triangle degenerate)");
   line(report.meshes_removed, "meshes no node shows");
   line(report.materials_removed, "materials no triangle uses");
   line(report.images_removed, "images no material uses");

@@ -17,6 +17,7 @@ struct PruneOptions {
   bool unused_tangents = true;      // tangents when no material of the mesh has a normal map
   bool constant_colors = true;      // one colour on every vertex: folded into the material
   bool unused_skin_data = true;     // joints/weights of a mesh no skinned node shows
+  bool empty_meshes = true;         // meshes the repairs left without a triangle
   bool unreferenced_meshes = true;  // meshes no node shows (when the scene has nodes)
   bool unreferenced_materials = true;
   bool unreferenced_images = true;
@@ -30,7 +31,8 @@ struct PruneReport {
   size_t tangent_sets_removed = 0;
   size_t constant_color_sets_folded = 0;
   size_t skin_data_removed = 0;
-  size_t meshes_removed = 0;
+  size_t empty_meshes_removed = 0;
+  size_t meshes_removed = 0;  // unreferenced
   size_t materials_removed = 0;
   size_t images_removed = 0;
   RepairReport repairs;            // the welds after removals, summed over meshes

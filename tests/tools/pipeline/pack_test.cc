@@ -335,6 +335,35 @@ TEST(Pack, InvalidMeshesAreErrors) {
   EXPECT_FALSE(PackScene(TestScene(), bad).ok());
 }
 
+// A collapsed helper object (every triangle degenerate) is left out, not a failure of the scene;
+// a scene of nothing else has nothing to pack.
+TEST(Pack, MeshesWithOnlyDegenerateTrianglesAreLeftOut) {
+  Scene s = TestScene();
+  Mesh collapsed;
+  collapsed.name = "collapsed";
+  collapsed.positions = {5, 5, 5, 5, 5, 5, 5, 5, 5, 6, 5, 5};
+  collapsed.indices = {0, 1, 2, 0, 1, 3};
+  s.meshes.push_back(collapsed);
+  s.nodes[1].meshes.push_back(2);
+  Result<PackResult> r = PackScene(s, FastOptions());
+  ASSERT_TRUE(r.ok()) << r.status().message();
+  EXPECT_EQ(r->report.meshes.size(), 2u);
+  const std::vector<std::string>& left_out = r->report.left_out;
+  EXPECT_NE(std::find_if(left_out.begin(), left_out.end(),
+                         [](const std::string& l) {
+                           return l.find("no triangle left") != std::string::npos;
+                         }),
+            left_out.end());
+
+  Scene only;
+  only.meshes.push_back(collapsed);
+  AddRootNodeForAllMeshes(only, "root");
+  Result<PackResult> nothing = PackScene(only, FastOptions());
+  ASSERT_FALSE(nothing.ok());
+  EXPECT_EQ(nothing.status().code(), StatusCode::kInvalidArgument);
+  EXPECT_NE(nothing.status().message().find("degenerate"), std::string::npos);
+}
+
 TEST(Pack, CancelStopsIt) {
   struct Cancel : PackObserver {
     bool IsCancelled() override { return true; }

@@ -82,6 +82,18 @@ TEST(Prune, UnreferencedMeshesMaterialsAndImagesGoAndIndicesAreRemapped) {
   EXPECT_EQ(r.images_removed, 1u);
 }
 
+TEST(Prune, MeshesWithoutTrianglesGoAndIndicesAreRemapped) {
+  Scene s = OneQuadScene();
+  s.meshes.insert(s.meshes.begin(), Mesh());  // every triangle dropped by the repairs
+  s.nodes[0].meshes = {0, 1};
+  const PruneReport r = LeaveOutUnused(s);
+  ASSERT_EQ(s.meshes.size(), 1u);
+  EXPECT_EQ(s.meshes[0].triangle_count(), 2u);
+  EXPECT_EQ(s.nodes[0].meshes, std::vector<int>{0});
+  EXPECT_EQ(r.empty_meshes_removed, 1u);
+  EXPECT_EQ(r.meshes_removed, 0u);
+}
+
 TEST(Prune, SkinDataWithoutASkinnedNodeGoes) {
   Scene s = OneQuadScene();
   s.meshes[0].joints.assign(16, 0);
