@@ -286,13 +286,14 @@ int main(int argc, char** argv) {
   hullpack::CliArgs cli(
       "test_o3dgc", "-c|-d -i INPUT [options]",
       "Compresses a mesh file (.obj .off .wrl .ply .stl .glb .gltf .fbx .dae) to an o3dgc stream\n"
-      "INPUT.s3d, or decompresses a stream (this project's or the original Open3DGC tool's) to\n"
-      "INPUT_dec.obj, both next to INPUT. The single-dash spellings are the original tool's.");
+      "NAME.s3d, or decompresses a stream (this project's or the original Open3DGC tool's) to\n"
+      "NAME_dec.obj, both next to INPUT, where NAME is INPUT without its extension. The\n"
+      "single-dash spellings are the original tool's.");
   cli.VersionDetail(std::string("writes o3dgc stream format ") + o3dgc::FormatVersionString() +
                     "; reads formats " + std::to_string(o3dgc::kFormatMajor) + ".0 to " +
                     o3dgc::FormatVersionString() + " and original Open3DGC (2013) streams");
-  cli.Flag("-c, --compress", &compress, "compress INPUT to INPUT.s3d");
-  cli.Flag("-d, --decompress", &decompress, "decompress the stream INPUT to INPUT_dec.obj");
+  cli.Flag("-c, --compress", &compress, "compress INPUT to NAME.s3d");
+  cli.Flag("-d, --decompress", &decompress, "decompress the stream INPUT to NAME_dec.obj");
   cli.String("-i, --input", "INPUT", &input, "the file to read (or give it as the operand)");
   cli.Positional("INPUT", &operands, 0, 1);
   cli.Value("-st, --stream-type", "binary|ascii", "binary (default) or 7-bit ASCII stream",
