@@ -20,6 +20,7 @@
 #include "merge.h"
 #include "part_hull.h"
 #include "primitive_set.h"
+#include "solid_corners.h"
 #include "stick_out.h"
 #include "thread_pool.h"
 #include "vhacd/vhacd.h"
@@ -282,6 +283,10 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   const internal::TriangleIndex index(gmesh, grid.dims, 8);
   std::unique_ptr<internal::StickOutMeter> meter;
   if (exact_measure) meter.reset(new internal::StickOutMeter(gmesh, grid, input.closed, &field));
+  // hull_count cuts parts finely: their hulls must reach the cuts inside surface voxels too.
+  internal::SolidCorners corners;
+  if (exact_count && !corners.Build(gmesh, grid, meter->locator(), &ctx))
+    return Fail(Status::kCancelled, "cancelled");
   std::vector<internal::HullMesh> hulls;
   int clip_levels = 0;
   const size_t kOverSplit = static_cast<size_t>(2);
@@ -300,6 +305,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     cp.max_depth = lim.max_depth;
     cp.meter = meter.get();
     cp.index = &index;
+    cp.corners = exact_count ? &corners : nullptr;
     // On an open surface the side is only known per voxel: for max_concavity the exact measure
     // splits only from the second attempt on, kept when it gets closer (on scans with filled
     // holes it multiplied hulls without getting closer); hull_count merges down to N anyway.
@@ -328,7 +334,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     ctx.BeginStage("Hull generation", 60, 75);
     hulls.assign(clip.parts.size(), internal::HullMesh());
     if (!internal::ParallelFor(&ctx, clip.parts.size(), [&](size_t i) {
-          hulls[i] = internal::BuildPartHull(clip.parts[i], index);
+          hulls[i] = internal::BuildPartHull(clip.parts[i], index, cp.corners);
         }))
       return Status::kCancelled;
     hulls.erase(std::remove_if(hulls.begin(), hulls.end(),
