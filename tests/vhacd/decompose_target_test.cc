@@ -92,6 +92,27 @@ TEST(HullCountTest, MergesByStickOutAfterCuttingTheWorstParts) {
   }
 }
 
+TEST(HullCountTest, GetsCloserFrom32To64Hulls) {
+  // A lidless box of one layer of faces: its walls are a voxel or two thick. At the fixed grid
+  // both counts stopped at the same error (0.0111 at 32 and 64): a hull cannot be finer than a
+  // voxel, and a thin wall's part hulls stopped short of their cuts, leaving cracks inside the
+  // wall. The grid now refines with N and part hulls reach their cuts.
+  const ShapeMesh box = hullpack::shapes::LidlessBox(2.0, 1.4, 1.0, 8);
+  double at32 = 0.0;
+  for (uint32_t n : {32u, 64u}) {
+    vhacd::Parameters p;
+    p.num_threads = 2;
+    p.hull_count = n;
+    const vhacd::Result r = DecomposeShape(box, p);
+    ASSERT_TRUE(r.ok()) << r.message;
+    EXPECT_EQ(r.hulls.size(), n);
+    if (n == 32)
+      at32 = r.report.concavity;
+    else
+      EXPECT_LT(r.report.concavity, 0.85 * at32);
+  }
+}
+
 TEST(MaxConcavityTest, ReachesTheTargetWithFewerHullsWhenLooser) {
   const ShapeMesh gears = hullpack::shapes::GearTrain();
   size_t tight_hulls = 0;

@@ -112,8 +112,8 @@ Result Fail(Status s, std::string message) {
   return r;
 }
 
-// refine_grid: max_concavity may refine the grid so that D spans a few voxels (off for the
-// comparison run at the requested resolution, see the end).
+// refine_grid: max_concavity and hull_count may refine the grid (off for the comparison run at
+// the requested resolution, see the end).
 Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* observer,
                      bool refine_grid = true) {
   std::string why;
@@ -178,6 +178,16 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   const bool target = !exact_count && params.max_concavity > 0;
   internal::GridPlacement place = internal::ChooseGrid(nlo, nhi, params.resolution);
   bool refined = false;
+  if (exact_count && refine_grid) {
+    // The error N hulls can reach falls with N, but no cut or hull is finer than a voxel: give
+    // each hull a share of voxels, so that the grid stops bounding the error as N grows.
+    constexpr double kVoxelsPerHull = 6250.0, kMaxCountResolution = 1e6;
+    const double wanted = std::min(kVoxelsPerHull * params.hull_count, kMaxCountResolution);
+    if (wanted > params.resolution) {
+      place = internal::ChooseGrid(nlo, nhi, static_cast<uint32_t>(wanted));
+      refined = true;
+    }
+  }
   if (target && refine_grid) {
     // The split and merge limits are measured on the grid: let max_concavity span a few voxels.
     constexpr double kVoxelsPerTarget = 3.0, kMaxTargetResolution = 1e6;
@@ -387,7 +397,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
 
     // Report.
     ctx.BeginStage("Error report", 90, 100);
-    if (params.compute_report || target) {
+    if (params.compute_report || target || refined) {
       internal::MetricsInput mi;
       mi.mesh = &gmesh;
       mi.grid = &grid;
@@ -527,6 +537,23 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     rep.hulls[i].vertex_count = static_cast<uint32_t>(hulls[i].vertices.size());
     rep.hulls[i].volume = out.volume;
     result.hulls.push_back(std::move(out));
+  }
+  if (exact_count && refined) {
+    // A finer grid's voxel solid can differ from the requested grid's at a narrow opening (the
+    // teapot's spout): the requested grid is run too and the closer of the two kept.
+    Parameters coarse = params;
+    coarse.compute_report = true;
+    Result other = DecomposeImpl(view, coarse, observer, false);
+    if (other.status != Status::kOk) return other;
+    const bool both_exact = other.hulls.size() == result.hulls.size();
+    if ((both_exact && other.report.concavity < reached) ||
+        (!both_exact && other.hulls.size() == params.hull_count)) {
+      ctx.Log("hull_count: kept the requested resolution's result (" +
+              std::to_string(other.report.concavity) + " against " + std::to_string(reached) + ")");
+      if (!params.compute_report) internal::ClearMeasures(&other.report);
+      other.report.seconds_total = total.Lap();
+      return other;
+    }
   }
   if (missed && refined) {
     // The refined grid's voxel solid can differ from the requested grid's (the fill decision at a
