@@ -94,9 +94,8 @@ TEST(HullCountTest, MergesByStickOutAfterCuttingTheWorstParts) {
 
 TEST(HullCountTest, GetsCloserFrom32To64Hulls) {
   // A lidless box of one layer of faces: its walls are a voxel or two thick. At the fixed grid
-  // both counts stopped at the same error (0.0111 at 32 and 64): a hull cannot be finer than a
-  // voxel, and a thin wall's part hulls stopped short of their cuts, leaving cracks inside the
-  // wall. The grid now refines with N and part hulls reach their cuts.
+  // both counts stopped at the same error (0.0111 at 32 and 64): no cut or hull is finer than a
+  // voxel. The grid now refines with N.
   const ShapeMesh box = hullpack::shapes::LidlessBox(2.0, 1.4, 1.0, 8);
   double at32 = 0.0;
   for (uint32_t n : {32u, 64u}) {

@@ -293,9 +293,10 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   const internal::TriangleIndex index(gmesh, grid.dims, 8);
   std::unique_ptr<internal::StickOutMeter> meter;
   if (exact_measure) meter.reset(new internal::StickOutMeter(gmesh, grid, input.closed, &field));
-  // hull_count cuts parts finely: their hulls must reach the cuts inside surface voxels too.
+  // hull_count cuts parts finely: their hulls must reach the cuts inside surface voxels too. Only
+  // on a closed surface: an open one has no side to tell inside corners by (teapot: farther).
   internal::SolidCorners corners;
-  if (exact_count && !corners.Build(gmesh, grid, meter->locator(), &ctx))
+  if (exact_count && input.closed && !corners.Build(gmesh, grid, meter->locator(), &ctx))
     return Fail(Status::kCancelled, "cancelled");
   std::vector<internal::HullMesh> hulls;
   int clip_levels = 0;
@@ -315,7 +316,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     cp.max_depth = lim.max_depth;
     cp.meter = meter.get();
     cp.index = &index;
-    cp.corners = exact_count ? &corners : nullptr;
+    cp.corners = exact_count && input.closed ? &corners : nullptr;
     // On an open surface the side is only known per voxel: for max_concavity the exact measure
     // splits only from the second attempt on, kept when it gets closer (on scans with filled
     // holes it multiplied hulls without getting closer); hull_count merges down to N anyway.

@@ -4,7 +4,8 @@
 // corners. Where the solid meets a face of the box inside surface voxels only (a wall thinner than
 // a few voxels, a cut next to the surface) neither gives a point there, so the hull stopped up to a
 // voxel short of the box face while the neighbour across the cut reached it: a crack inside the
-// solid, and the more cuts, the more cracks. The inside corners of those voxels fill it.
+// solid, and the more cuts, the more cracks. The inside corners of those voxels fill it (closed
+// surfaces only: the side test needs one).
 #ifndef VHACD_SRC_SOLID_CORNERS_H_
 #define VHACD_SRC_SOLID_CORNERS_H_
 
