@@ -269,6 +269,25 @@ TEST(TargetTest, IdenticalOutputForAnyThreadCount) {
   }
 }
 
+TEST(TargetTest, HullCountOnAClosedSurfaceIsIdenticalForAnyThreadCount) {
+  // A closed surface: the inside corners of surface voxels (solid_corners.h) and a refined grid.
+  const ShapeMesh ring = hullpack::shapes::Ring(0.0, 0.0, 0.6, 1.0, 0.0, 0.5, 48);
+  std::vector<vhacd::Result> results;
+  for (uint32_t threads : {1u, 3u}) {
+    vhacd::Parameters p = Fast();
+    p.num_threads = threads;
+    p.hull_count = 20;
+    results.push_back(DecomposeShape(ring, p));
+    ASSERT_TRUE(results.back().ok());
+  }
+  ASSERT_EQ(results[0].hulls.size(), 20u);
+  ASSERT_EQ(results[1].hulls.size(), 20u);
+  for (size_t h = 0; h < results[0].hulls.size(); ++h) {
+    EXPECT_EQ(results[0].hulls[h].points, results[1].hulls[h].points);
+    EXPECT_EQ(results[0].hulls[h].triangles, results[1].hulls[h].triangles);
+  }
+}
+
 TEST(TargetTest, OutOfRangeValuesAreRejected) {
   std::string why;
   vhacd::Parameters p;
