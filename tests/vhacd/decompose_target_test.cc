@@ -92,6 +92,26 @@ TEST(HullCountTest, MergesByStickOutAfterCuttingTheWorstParts) {
   }
 }
 
+TEST(HullCountTest, GetsCloserFrom32To64Hulls) {
+  // A lidless box of one layer of faces: its walls are a voxel or two thick. At the fixed grid
+  // both counts stopped at the same error (0.0111 at 32 and 64): no cut or hull is finer than a
+  // voxel. The grid now refines with N.
+  const ShapeMesh box = hullpack::shapes::LidlessBox(2.0, 1.4, 1.0, 8);
+  double at32 = 0.0;
+  for (uint32_t n : {32u, 64u}) {
+    vhacd::Parameters p;
+    p.num_threads = 2;
+    p.hull_count = n;
+    const vhacd::Result r = DecomposeShape(box, p);
+    ASSERT_TRUE(r.ok()) << r.message;
+    EXPECT_EQ(r.hulls.size(), n);
+    if (n == 32)
+      at32 = r.report.concavity;
+    else
+      EXPECT_LT(r.report.concavity, 0.85 * at32);
+  }
+}
+
 TEST(MaxConcavityTest, ReachesTheTargetWithFewerHullsWhenLooser) {
   const ShapeMesh gears = hullpack::shapes::GearTrain();
   size_t tight_hulls = 0;
@@ -246,6 +266,25 @@ TEST(TargetTest, IdenticalOutputForAnyThreadCount) {
       EXPECT_EQ(results[0].hulls[h].triangles, results[1].hulls[h].triangles) << mode;
     }
     EXPECT_EQ(results[0].report.concavity, results[1].report.concavity);
+  }
+}
+
+TEST(TargetTest, HullCountOnAClosedSurfaceIsIdenticalForAnyThreadCount) {
+  // A closed surface: the inside corners of surface voxels (solid_corners.h) and a refined grid.
+  const ShapeMesh ring = hullpack::shapes::Ring(0.0, 0.0, 0.6, 1.0, 0.0, 0.5, 48);
+  std::vector<vhacd::Result> results;
+  for (uint32_t threads : {1u, 3u}) {
+    vhacd::Parameters p = Fast();
+    p.num_threads = threads;
+    p.hull_count = 20;
+    results.push_back(DecomposeShape(ring, p));
+    ASSERT_TRUE(results.back().ok());
+  }
+  ASSERT_EQ(results[0].hulls.size(), 20u);
+  ASSERT_EQ(results[1].hulls.size(), 20u);
+  for (size_t h = 0; h < results[0].hulls.size(); ++h) {
+    EXPECT_EQ(results[0].hulls[h].points, results[1].hulls[h].points);
+    EXPECT_EQ(results[0].hulls[h].triangles, results[1].hulls[h].triangles);
   }
 }
 

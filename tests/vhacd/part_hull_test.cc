@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include "context.h"
+#include "error_metrics.h"
+#include "solid_corners.h"
 #include "test_meshes.h"
 
 namespace vhacd {
@@ -57,6 +60,71 @@ TEST(PartHullTest, HullOfAPartHugsTheSurfaceInsideItsBox) {
   ASSERT_FALSE(h.empty());
   // The mesh box clipped to x <= 5: [2.3, 5] x [2.2, 5.9] x [2.1, 4.8].
   EXPECT_NEAR(h.Volume(), (5 - 2.3) * (5.9 - 2.2) * (4.8 - 2.1), 1e-9);
+}
+
+// Whether p lies in the hull (within tol).
+bool HullContains(const HullMesh& h, const Vec3& p, double tol) {
+  for (const auto& t : h.triangles) {
+    const Vec3& a = h.vertices[t[0]];
+    const Vec3 n = (h.vertices[t[1]] - a).cross(h.vertices[t[2]] - a).normalized();
+    if (n.dot(p - a) > tol) return false;
+  }
+  return true;
+}
+
+TEST(PartHullTest, InsideCornersOfSurfaceVoxelsReachTheCut) {
+  // An L-shaped prism (grid units): a floor x in [0.25, 6.25], y in [0.25, 4.75] and a wall x in
+  // [4.75, 6.25] up to y = 10.25, z in [0.5, 9.5]. The part is cut at x = 5, y = 6, z = 3 and z =
+  // 7: in its box the wall is a quarter voxel thick and all surface voxels, and no surface crosses
+  // the box faces near the corner (5, 6), so surface and interior voxels alone leave that corner of
+  // the solid out (its neighbours across the cuts cover it: a crack).
+  const double outline[6][2] = {{0.25, 0.25},  {6.25, 0.25}, {6.25, 10.25},
+                                {4.75, 10.25}, {4.75, 4.75}, {0.25, 4.75}};
+  GridMesh g;
+  for (double z : {0.5, 9.5})
+    for (const auto& p : outline) g.points.emplace_back(p[0], p[1], z);
+  const int fan[4][2] = {{5, 0}, {0, 1}, {1, 2}, {2, 3}};  // from the reflex vertex 4
+  for (const auto& f : fan) {
+    g.triangles.push_back({4, static_cast<uint32_t>(f[1]), static_cast<uint32_t>(f[0])});
+    g.triangles.push_back({10, static_cast<uint32_t>(6 + f[0]), static_cast<uint32_t>(6 + f[1])});
+  }
+  for (uint32_t i = 0; i < 6; ++i) {
+    const uint32_t j = (i + 1) % 6;
+    g.triangles.push_back({i, j, 6 + j});
+    g.triangles.push_back({i, 6 + j, 6 + i});
+  }
+  const int dims[3] = {8, 12, 11};
+  Context ctx(nullptr, 1);
+  VoxelGrid grid;
+  ASSERT_TRUE(Voxelize(g, dims, &ctx, &grid));
+  Part part;
+  for (int z = 3; z <= 6; ++z)
+    for (int y = 0; y <= 5; ++y)
+      for (int x = 0; x <= 4; ++x) {
+        const uint8_t c = grid.cell[grid.Index(x, y, z)];
+        if (c == kCellOutside) continue;
+        Voxel v;
+        v.c[0] = static_cast<uint16_t>(x);
+        v.c[1] = static_cast<uint16_t>(y);
+        v.c[2] = static_cast<uint16_t>(z);
+        v.surface = c == kCellSurface;
+        part.voxels.push_back(v);
+      }
+  part.ComputeBounds();
+  const TriangleIndex index(g, dims, 4);
+  const TriangleLocator locator(g, 2.0);
+  SolidCorners corners;
+  ASSERT_TRUE(corners.Build(g, grid, locator, &ctx));
+  const Vec3 corner(4.95, 5.95, 5.0);
+  EXPECT_FALSE(HullContains(BuildPartHull(part, index), corner, 1e-9));
+  const HullMesh h = BuildPartHull(part, index, &corners);
+  EXPECT_TRUE(HullContains(h, corner, 1e-9));
+  // Only inside corners were added: the hull stays within the part's box and the solid's hull.
+  for (const Vec3& v : h.vertices) {
+    EXPECT_LE(v.x(), 5.0);
+    EXPECT_LE(v.y(), 6.0);
+    EXPECT_GE(v.x() + 1e-9, v.y() < 4.75 + 1e-9 ? 0.25 : 4.75) << v.transpose();
+  }
 }
 
 }  // namespace

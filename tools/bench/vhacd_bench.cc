@@ -199,6 +199,8 @@ struct RunStats {
   bool timed_out = false;
   int exit_code = -1;
   double seconds = 0.0;
+  double cpu_seconds =
+      0.0;  // user + system time of the child (wall time is noisy on a shared machine)
   double peak_mb = 0.0;
 };
 
@@ -245,6 +247,8 @@ RunStats RunProcess(const std::vector<std::string>& args, const std::string& com
   }
   st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   st.peak_mb = ru.ru_maxrss / 1024.0;
+  st.cpu_seconds =
+      ru.ru_utime.tv_sec + ru.ru_stime.tv_sec + 1e-6 * (ru.ru_utime.tv_usec + ru.ru_stime.tv_usec);
   st.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   st.ok = !st.timed_out && st.exit_code == 0;
   return st;
@@ -282,7 +286,7 @@ struct Row {
   std::string status = "ok";
   HullMetrics m;
   std::map<std::string, double> own;  // hullpack's own report
-  double seconds = 0.0, library_seconds = -1.0, peak_mb = 0.0;
+  double seconds = 0.0, cpu_seconds = 0.0, library_seconds = -1.0, peak_mb = 0.0;
 };
 
 std::vector<std::string> SplitComma(const std::string& s) {
@@ -709,7 +713,7 @@ int main(int argc, char** argv) {
       row.mesh = name;
       row.triangles = ntri;
       row.closed = measure.closed();
-      std::vector<double> secs, mem;
+      std::vector<double> secs, cpus, mem;
       std::vector<Soup> hulls;
       int hull_count = c.hulls;
       if (!c.match.empty()) {
@@ -774,6 +778,7 @@ int main(int argc, char** argv) {
           sf << st.seconds << " " << st.peak_mb << "\n";
         }
         secs.push_back(st.seconds);
+        cpus.push_back(st.cpu_seconds);
         mem.push_back(st.peak_mb);
         if (rep == 0) {
           std::string why;
@@ -799,6 +804,7 @@ int main(int argc, char** argv) {
       }
       if (row.status == "ok") {
         row.seconds = Median(secs);
+        row.cpu_seconds = Median(cpus);
         row.peak_mb = Median(mem);
         row.m = measure.Measure(hulls);
       }
@@ -880,18 +886,18 @@ int main(int argc, char** argv) {
         "mesh,config,triangles,closed,status,hulls,max_hull_vertices,concavity,mesh_to_hulls,hulls_"
         "to_mesh,iou,"
         "coverage,own_concavity,own_mesh_to_hulls,own_hulls_to_mesh,own_iou,own_coverage,seconds,"
-        "library_seconds,peak_mb,invalid_hulls\n");
+        "library_seconds,peak_mb,invalid_hulls,cpu_seconds\n");
     for (const Config& c : configs)
       for (const Row& r : rows[c.name]) {
         auto own = [&](const char* k) { return r.own.count(k) ? r.own.at(k) : -1.0; };
         std::fprintf(f,
                      "%s,%s,%zu,%d,%s,%zu,%zu,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%."
-                     "4f,%.4f,%.1f,%zu\n",
+                     "4f,%.4f,%.1f,%zu,%.4f\n",
                      r.mesh.c_str(), c.name.c_str(), r.triangles, r.closed ? 1 : 0,
                      r.status.c_str(), r.m.hulls, r.m.max_hull_vertices, r.m.concavity,
                      r.m.mesh_to_hulls, r.m.hulls_to_mesh, r.m.iou, r.m.coverage, own("concavity"),
                      own("mesh_to_hulls"), own("hulls_to_mesh"), own("iou"), own("coverage"),
-                     r.seconds, r.library_seconds, r.peak_mb, r.m.invalid_hulls);
+                     r.seconds, r.library_seconds, r.peak_mb, r.m.invalid_hulls, r.cpu_seconds);
       }
     std::fclose(f);
     std::printf("wrote %s\n", csv.c_str());

@@ -61,7 +61,7 @@ bool MeasureStick(const std::vector<Part>& parts, const std::vector<uint32_t>& w
   stick->resize(parts.size(), 0.0);
   if (params.meter == nullptr || params.index == nullptr) return true;
   return ParallelFor(ctx, which.size(), [&](size_t k) {
-    const HullMesh h = BuildPartHull(parts[which[k]], *params.index);
+    const HullMesh h = BuildPartHull(parts[which[k]], *params.index, params.corners);
     (*stick)[which[k]] = h.empty() ? 0.0 : params.meter->Measure(h, limit);
   });
 }

@@ -27,6 +27,7 @@ struct ClipParams {
   // farthest by that measure first.
   const class StickOutMeter* meter = nullptr;
   const class TriangleIndex* index = nullptr;
+  const class SolidCorners* corners = nullptr;  // passed to BuildPartHull
   double max_stick = 0.0;
 };
 

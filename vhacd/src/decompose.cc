@@ -20,6 +20,7 @@
 #include "merge.h"
 #include "part_hull.h"
 #include "primitive_set.h"
+#include "solid_corners.h"
 #include "stick_out.h"
 #include "thread_pool.h"
 #include "vhacd/vhacd.h"
@@ -111,8 +112,8 @@ Result Fail(Status s, std::string message) {
   return r;
 }
 
-// refine_grid: max_concavity may refine the grid so that D spans a few voxels (off for the
-// comparison run at the requested resolution, see the end).
+// refine_grid: max_concavity and hull_count may refine the grid (off for the comparison run at
+// the requested resolution, see the end).
 Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* observer,
                      bool refine_grid = true) {
   std::string why;
@@ -177,6 +178,16 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   const bool target = !exact_count && params.max_concavity > 0;
   internal::GridPlacement place = internal::ChooseGrid(nlo, nhi, params.resolution);
   bool refined = false;
+  if (exact_count && refine_grid) {
+    // The error N hulls can reach falls with N, but no cut or hull is finer than a voxel: give
+    // each hull a share of voxels, so that the grid stops bounding the error as N grows.
+    constexpr double kVoxelsPerHull = 6250.0, kMaxCountResolution = 1e6;
+    const double wanted = std::min(kVoxelsPerHull * params.hull_count, kMaxCountResolution);
+    if (wanted > params.resolution) {
+      place = internal::ChooseGrid(nlo, nhi, static_cast<uint32_t>(wanted));
+      refined = true;
+    }
+  }
   if (target && refine_grid) {
     // The split and merge limits are measured on the grid: let max_concavity span a few voxels.
     constexpr double kVoxelsPerTarget = 3.0, kMaxTargetResolution = 1e6;
@@ -282,6 +293,11 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   const internal::TriangleIndex index(gmesh, grid.dims, 8);
   std::unique_ptr<internal::StickOutMeter> meter;
   if (exact_measure) meter.reset(new internal::StickOutMeter(gmesh, grid, input.closed, &field));
+  // hull_count cuts parts finely: their hulls must reach the cuts inside surface voxels too. Only
+  // on a closed surface: an open one has no side to tell inside corners by (teapot: farther).
+  internal::SolidCorners corners;
+  if (exact_count && input.closed && !corners.Build(gmesh, grid, meter->locator(), &ctx))
+    return Fail(Status::kCancelled, "cancelled");
   std::vector<internal::HullMesh> hulls;
   int clip_levels = 0;
   const size_t kOverSplit = static_cast<size_t>(2);
@@ -300,6 +316,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     cp.max_depth = lim.max_depth;
     cp.meter = meter.get();
     cp.index = &index;
+    cp.corners = exact_count && input.closed ? &corners : nullptr;
     // On an open surface the side is only known per voxel: for max_concavity the exact measure
     // splits only from the second attempt on, kept when it gets closer (on scans with filled
     // holes it multiplied hulls without getting closer); hull_count merges down to N anyway.
@@ -328,7 +345,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     ctx.BeginStage("Hull generation", 60, 75);
     hulls.assign(clip.parts.size(), internal::HullMesh());
     if (!internal::ParallelFor(&ctx, clip.parts.size(), [&](size_t i) {
-          hulls[i] = internal::BuildPartHull(clip.parts[i], index);
+          hulls[i] = internal::BuildPartHull(clip.parts[i], index, cp.corners);
         }))
       return Status::kCancelled;
     hulls.erase(std::remove_if(hulls.begin(), hulls.end(),
@@ -381,7 +398,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
 
     // Report.
     ctx.BeginStage("Error report", 90, 100);
-    if (params.compute_report || target) {
+    if (params.compute_report || target || refined) {
       internal::MetricsInput mi;
       mi.mesh = &gmesh;
       mi.grid = &grid;
@@ -521,6 +538,23 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     rep.hulls[i].vertex_count = static_cast<uint32_t>(hulls[i].vertices.size());
     rep.hulls[i].volume = out.volume;
     result.hulls.push_back(std::move(out));
+  }
+  if (exact_count && refined) {
+    // A finer grid's voxel solid can differ from the requested grid's at a narrow opening (the
+    // teapot's spout): the requested grid is run too and the closer of the two kept.
+    Parameters coarse = params;
+    coarse.compute_report = true;
+    Result other = DecomposeImpl(view, coarse, observer, false);
+    if (other.status != Status::kOk) return other;
+    const bool both_exact = other.hulls.size() == result.hulls.size();
+    if ((both_exact && other.report.concavity < reached) ||
+        (!both_exact && other.hulls.size() == params.hull_count)) {
+      ctx.Log("hull_count: kept the requested resolution's result (" +
+              std::to_string(other.report.concavity) + " against " + std::to_string(reached) + ")");
+      if (!params.compute_report) internal::ClearMeasures(&other.report);
+      other.report.seconds_total = total.Lap();
+      return other;
+    }
   }
   if (missed && refined) {
     // The refined grid's voxel solid can differ from the requested grid's (the fill decision at a

@@ -76,11 +76,22 @@ void ClipTriangleToBox(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& 
   for (int i = 0; i < n; ++i) out->push_back(poly[i]);
 }
 
-HullMesh BuildPartHull(const Part& part, const TriangleIndex& index) {
+HullMesh BuildPartHull(const Part& part, const TriangleIndex& index, const SolidCorners* corners) {
   std::vector<Vec3> pts;
   PartHullPoints(part, true, &pts);
   const Vec3 lo(part.bmin[0], part.bmin[1], part.bmin[2]);
   const Vec3 hi(part.bmax[0] + 1, part.bmax[1] + 1, part.bmax[2] + 1);
+  if (corners != nullptr) {
+    for (const Voxel& v : part.voxels) {
+      if (!v.surface) continue;
+      const uint8_t mask = corners->Mask(v.c[0], v.c[1], v.c[2]);
+      for (int k = 0; k < 8; ++k) {
+        if (!(mask & (1u << k))) continue;
+        const Vec3 c(v.c[0] + (k & 1), v.c[1] + ((k >> 1) & 1), v.c[2] + ((k >> 2) & 1));
+        if (((c.array() == lo.array()) || (c.array() == hi.array())).any()) pts.push_back(c);
+      }
+    }
+  }
   const GridMesh& mesh = index.mesh();
   thread_local std::vector<uint32_t> stamp;
   thread_local uint32_t mark = 0;

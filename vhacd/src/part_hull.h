@@ -9,6 +9,7 @@
 
 #include "convex_hull.h"
 #include "primitive_set.h"
+#include "solid_corners.h"
 #include "voxelizer.h"
 
 namespace vhacd {
@@ -43,8 +44,11 @@ void ClipTriangleToBox(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& 
                        std::vector<Vec3>* out);
 
 // The hull of a part (grid units). Falls back to the hull of the part's voxels when the clipped
-// surface is flat (e.g. a single sheet). Empty only when even that fails.
-HullMesh BuildPartHull(const Part& part, const TriangleIndex& index);
+// surface is flat (e.g. a single sheet). Empty only when even that fails. With `corners`, the
+// inside corners of the part's surface voxels on the faces of its box are added (see
+// solid_corners.h: without them a thin wall's hull stops short of the cut).
+HullMesh BuildPartHull(const Part& part, const TriangleIndex& index,
+                       const SolidCorners* corners = nullptr);
 
 template <typename Fn>
 void TriangleIndex::ForEachInBox(const Vec3& lo, const Vec3& hi, std::vector<uint32_t>* stamp,

@@ -33,6 +33,8 @@ class StickOutMeter {
   double MeasureMerged(const HullMesh& merged, const HullMesh& a, double stick_a, const HullMesh& b,
                        double stick_b, double limit = 1e30) const;
 
+  const TriangleLocator& locator() const { return locator_; }
+
  private:
   // Distance from p to the surface when p is outside the solid, else 0; any value <= best when
   // it cannot exceed best.

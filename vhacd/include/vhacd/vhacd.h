@@ -118,8 +118,11 @@ struct Parameters {
   double max_concavity = 0.0;
   // Exact hull count: when > 0, the result has exactly this many hulls whenever the voxel set can
   // be cut into that many parts (parts are cut further when the clipping gives fewer, the pairs
-  // whose merged hull sticks out least from the exact surface are merged when it gives more). Takes
-  // precedence over max_convex_hulls and max_concavity. [0, 100000]
+  // whose merged hull sticks out least from the exact surface are merged when it gives more). The
+  // grid gets at least 6250 voxels per hull (up to 1,000,000; `resolution` when larger), and when
+  // that refines it, the requested resolution is run too and the closer result kept (so from 17
+  // hulls on a call costs two decompositions). Takes precedence over max_convex_hulls and
+  // max_concavity. [0, 100000]
   uint32_t hull_count = 0;
   // Fill rule for open meshes: a cavity that a ball of this diameter (fraction of the diagonal)
   // can reach from outside stays empty (open containers: pots, cups, lidless boxes); smaller
