@@ -30,6 +30,10 @@ struct MeshCodecSettings {
   o3dgc::RangeMode position_range = o3dgc::RangeMode::kUniform;
   int normal_bits = 10;
   int uv_bits = 12;
+  // How the UV quantization square is sized. kUniform: one range for u and v, as Draco and glTF
+  // quantize them (see MakeCodecInput); EncodeMesh and EncodeWithinError also try kPerAxis where
+  // it gives another stream (u and v extents differ) and keep the smaller: its cells are no larger.
+  o3dgc::RangeMode uv_range = o3dgc::RangeMode::kUniform;
   int color_bits = 10;
   int weight_bits = 10;
   int tangent_bits = 10;
@@ -47,6 +51,10 @@ struct CodecInput {
 };
 Status MakeCodecInput(const Mesh& mesh, const std::vector<uint32_t>& groups,
                       const MeshCodecSettings& settings, CodecInput* in);
+
+// True when some UV set of `mesh` has u and v extents that differ, so that kUniform and kPerAxis
+// UV ranges give different streams.
+bool UvExtentsDiffer(const Mesh& mesh);
 
 // An encoder status as a Status naming the mesh.
 Status EncoderStatus(o3dgc::Status status, const std::string& mesh_name);
