@@ -6,6 +6,8 @@
 #include <limits>
 #include <unordered_map>
 
+#include "pipeline/codec_weld.h"
+
 namespace hullpack {
 namespace {
 
@@ -22,8 +24,11 @@ o3dgc::FloatAttributeView FloatView(const std::vector<float>& values, uint32_t d
 
 }  // namespace
 
-Status MakeCodecInput(const Mesh& mesh, const std::vector<uint32_t>& groups,
+Status MakeCodecInput(const Mesh& input, const std::vector<uint32_t>& groups,
                       const MeshCodecSettings& s, CodecInput* in) {
+  in->welded.reset();
+  if (!s.keep_order) in->welded = WeldNormalsStoredAlike(input, s.normal_bits);
+  const Mesh& mesh = in->welded ? *in->welded : input;
   EncodedMesh& out = in->attributes;
   out.gltf_attributes.clear();
   in->view = o3dgc::MeshView();

@@ -9,6 +9,7 @@
 #define HULLPACK_TOOLS_PIPELINE_MESH_CODEC_H_
 
 #include <array>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -48,6 +49,9 @@ struct CodecInput {
   o3dgc::EncodeParams params;
   EncodedMesh attributes;       // gltf_attributes only
   std::vector<int32_t> joints;  // the joints widened for the codec (the view points here)
+  // Without keep_order: the mesh with the vertices the codec stores alike welded
+  // (WeldNormalsStoredAlike), when any are; the view points here then.
+  std::optional<Mesh> welded;
 };
 Status MakeCodecInput(const Mesh& mesh, const std::vector<uint32_t>& groups,
                       const MeshCodecSettings& settings, CodecInput* in);
