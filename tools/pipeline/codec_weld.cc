@@ -1,8 +1,8 @@
 #include "pipeline/codec_weld.h"
 
+#include <algorithm>
 #include <cstring>
-#include <string>
-#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "o3dgc/o3dgc.h"
@@ -10,10 +10,35 @@
 namespace hullpack {
 namespace {
 
+// The bytes of vertex `v` in `values` (`per_vertex` values each), or none when empty.
 template <typename T>
-void AppendBytes(const std::vector<T>& values, size_t per_vertex, size_t v, std::string* key) {
-  if (values.empty()) return;
-  key->append(reinterpret_cast<const char*>(&values[v * per_vertex]), per_vertex * sizeof(T));
+std::pair<const char*, size_t> BytesOf(const std::vector<T>& values, size_t per_vertex, size_t v) {
+  if (values.empty()) return {nullptr, 0};
+  return {reinterpret_cast<const char*>(&values[v * per_vertex]), per_vertex * sizeof(T)};
+}
+
+// Every attribute of vertex `v` but its normal, as byte ranges.
+std::vector<std::pair<const char*, size_t>> AttributesOf(const Mesh& m, size_t v) {
+  std::vector<std::pair<const char*, size_t>> out = {BytesOf(m.positions, 3, v),
+                                                     BytesOf(m.tangents, 4, v)};
+  for (const std::vector<float>& uv : m.uv_sets) out.push_back(BytesOf(uv, 2, v));
+  out.push_back(BytesOf(m.colors, 4, v));
+  out.push_back(BytesOf(m.joints, 4, v));
+  out.push_back(BytesOf(m.weights, 4, v));
+  return out;
+}
+
+uint64_t Mix(uint64_t h, const char* data, size_t size) {
+  for (size_t i = 0; i < size; ++i) h = (h ^ uint8_t(data[i])) * 0x100000001b3ull;
+  return h;
+}
+
+bool SameAttributes(const Mesh& m, size_t a, size_t b) {
+  const auto x = AttributesOf(m, a), y = AttributesOf(m, b);
+  for (size_t i = 0; i < x.size(); ++i) {
+    if (x[i].second && std::memcmp(x[i].first, y[i].first, x[i].second) != 0) return false;
+  }
+  return true;
 }
 
 template <typename T>
@@ -32,24 +57,35 @@ void Compact(std::vector<T>& values, size_t per_vertex, const std::vector<uint32
 std::optional<Mesh> WeldNormalsStoredAlike(const Mesh& mesh, int normal_bits) {
   const size_t n = mesh.vertex_count();
   if (mesh.normals.size() != 3 * n || normal_bits < 1 || normal_bits > 16) return std::nullopt;
-  std::unordered_map<std::string, uint32_t> first;
-  first.reserve(n);
+  // Vertices sorted by a hash of their normal key and other attributes; within a run of equal
+  // hashes each takes the first (smallest) vertex that is equal in full.
+  std::vector<uint64_t> normal_key(n);
+  std::vector<std::pair<uint64_t, uint32_t>> order(n);
+  for (size_t v = 0; v < n; ++v) {
+    normal_key[v] = o3dgc::OctahedralNormalKey(&mesh.normals[3 * v], normal_bits);
+    uint64_t h = Mix(0xcbf29ce484222325ull, reinterpret_cast<const char*>(&normal_key[v]), 8);
+    for (const auto& bytes : AttributesOf(mesh, v)) h = Mix(h, bytes.first, bytes.second);
+    order[v] = {h, uint32_t(v)};
+  }
+  std::sort(order.begin(), order.end());
   std::vector<uint32_t> rep(n);
   bool any = false;
-  std::string key;
-  for (size_t v = 0; v < n; ++v) {
-    key.clear();
-    const uint64_t normal = o3dgc::OctahedralNormalKey(&mesh.normals[3 * v], normal_bits);
-    key.append(reinterpret_cast<const char*>(&normal), sizeof(normal));
-    AppendBytes(mesh.positions, 3, v, &key);
-    AppendBytes(mesh.tangents, 4, v, &key);
-    for (const std::vector<float>& uv : mesh.uv_sets) AppendBytes(uv, 2, v, &key);
-    AppendBytes(mesh.colors, 4, v, &key);
-    AppendBytes(mesh.joints, 4, v, &key);
-    AppendBytes(mesh.weights, 4, v, &key);
-    const auto it = first.emplace(key, uint32_t(v)).first;
-    rep[v] = it->second;
-    any |= rep[v] != v;
+  for (size_t i = 0; i < n;) {
+    size_t j = i;
+    while (j < n && order[j].first == order[i].first) ++j;
+    for (size_t a = i; a < j; ++a) {
+      const uint32_t v = order[a].second;
+      rep[v] = v;
+      for (size_t b = i; b < a; ++b) {
+        const uint32_t u = order[b].second;
+        if (rep[u] == u && normal_key[u] == normal_key[v] && SameAttributes(mesh, u, v)) {
+          rep[v] = u;
+          break;
+        }
+      }
+      any |= rep[v] != v;
+    }
+    i = j;
   }
   if (!any) return std::nullopt;
   std::vector<uint32_t> kept, index_of(n);
