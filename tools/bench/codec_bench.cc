@@ -1,12 +1,13 @@
-// codec_bench: the project's SC3DMC coder and Draco side by side on every mesh of a folder (every
-// .obj, and every .glb without an .obj of the same name; skins kept), in one run, at the same
+// codec_bench: the project's SC3DMC coder and Draco side by side on every mesh of a folder (one
+// file per name: .obj first, then .glb, then the other formats the scene reader takes; skins
+// kept), in one run, at the same
 // quantization (default 14-bit positions, 10-bit normals, 12-bit UVs; Draco at -cl
 // 7 and -cl 10): bytes, bits per vertex, encode and decode time (median of repeats), maximum
 // position error; and the ASCII stream's bytes once gzip'd, against the binary stream's. Prints a
 // table and writes CSV.
 //
 //   codec_bench FOLDER [--repeats 5] [--csv out.csv] [--qp 14] [--qn 10] [--qt 12] [--only a,b]
-//               [--clock wall|cpu] [--ours-only] [--fast-decode]   (see --help)
+//               [--clock wall|cpu] [--ours-only] [--fast-decode] [--parts]   (see --help)
 //
 // The repeats are interleaved (one encode and one decode of each codec per round, the codecs'
 // order rotating from round to round, so that none always runs after the same one), so that a load
@@ -45,6 +46,7 @@ struct Settings {
   bool cpu_clock = false;
   bool ours_only = false;
   bool fast_decode = false;
+  bool parts = false;
   std::string csv;
   std::vector<std::string> only;  // mesh names (file names without extension); empty: all
 };
@@ -74,7 +76,21 @@ struct Row {
   size_t ascii_gzip_bytes = 0;  // ours, the 7-bit ASCII stream gzip'd as a server sends it
   double encode_ms[3] = {0, 0, 0}, decode_ms[3] = {0, 0, 0}, error[3] = {0, 0, 0};
   double encode_ratio7 = 0, decode_ratio7 = 0;  // ours / Draco -cl 7, medians of per-round ratios
+  o3dgc::StreamInfo info;                       // ours: the bytes of each part of the stream
 };
+
+// "header 36, connectivity 567, ...": where the bytes of our stream go (--parts).
+std::string PartBytes(const o3dgc::StreamInfo& i) {
+  std::string out = "header " + std::to_string(i.header) + ", connectivity " +
+                    std::to_string(i.connectivity) + ", positions " + std::to_string(i.positions);
+  if (i.normals) out += ", normals " + std::to_string(i.normals);
+  for (size_t k = 0; k < i.float_attributes.size(); ++k)
+    out += ", float " + std::to_string(k) + " " + std::to_string(i.float_attributes[k]);
+  for (size_t k = 0; k < i.int_attributes.size(); ++k)
+    out += ", int " + std::to_string(k) + " " + std::to_string(i.int_attributes[k]);
+  if (i.groups) out += ", groups " + std::to_string(i.groups);
+  return out;
+}
 
 // Draco at one level: the mesh converted once (not timed), then encoded and decoded per round.
 struct DracoRun {
@@ -139,6 +155,7 @@ bool RunAll(const Mesh& mesh, const Settings& s, Row& row) {
     }
   }
   row.bytes[0] = encoded->stream.size();
+  row.info = encoded->info;
   hullpack::MeshCodecSettings ascii = cs;
   ascii.stream_type = o3dgc::StreamType::kAscii;
   hullpack::Result<hullpack::EncodedMesh> ascii_stream = hullpack::EncodeMesh(mesh, {}, ascii);
@@ -173,8 +190,9 @@ int main(int argc, char** argv) {
   std::vector<std::string> folders;
   hullpack::CliArgs cli(
       "codec_bench", "FOLDER [options]",
-      "The o3dgc coder and Draco (-cl 7 and -cl 10) side by side on every .obj of FOLDER (and\n"
-      "every .glb without an .obj of its name; joints and weights kept), at the same\n"
+      "The o3dgc coder and Draco (-cl 7 and -cl 10) side by side on every mesh file of FOLDER\n"
+      "(one per name: .obj, else .glb, else .gltf .dae .stl .ply .off .fbx .wrl; joints and\n"
+      "weights kept), at the same\n"
       "quantization: bytes, encode and decode time (median of interleaved repeats), largest\n"
       "position error, gzip'd ASCII stream bytes. Prints a table; --csv writes it.");
   cli.VersionDetail(std::string("o3dgc stream format ") + o3dgc::FormatVersionString());
@@ -201,30 +219,37 @@ int main(int argc, char** argv) {
             });
   cli.Flag("--ours-only", &s.ours_only, "skip Draco (profiling runs, size checks)");
   cli.Flag("--fast-decode", &s.fast_decode, "encode ours with EncodeParams::fast_decode");
+  cli.Flag("--parts", &s.parts, "also print the bytes of each part of our stream");
   if (std::optional<int> exit_code = cli.Parse(argc, argv)) return *exit_code;
   const std::string& folder = folders[0];
+  // One file per name, the first of kFormats: the corpus holds some meshes both as .obj and .glb
+  // (the .obj is the benchmarked one); other formats (robot parts as .dae and .stl) are read as
+  // every program reads them.
+  static const std::vector<std::string> kFormats = {"obj", "glb", "gltf", "dae", "stl",
+                                                    "ply", "off", "fbx",  "wrl"};
+  auto stem = [](const std::string& f) { return f.substr(0, f.rfind('.')); };
   std::vector<std::string> files;
-  if (!hullpack::ListFiles(folder, {"obj", "glb"}, &files)) {
-    std::fprintf(stderr, "codec_bench: %s: cannot open folder\n", folder.c_str());
-    return 1;
-  }
-  // A .glb counts only where no .obj has its name: the corpus holds some meshes in both forms
-  // (the .obj is the benchmarked one); the generated set's skinned character exists as .glb only.
   {
-    auto stem = [](const std::string& f) { return f.substr(0, f.size() - 4); };
-    std::vector<std::string> kept;
-    for (const std::string& f : files) {
-      const bool glb = f.size() > 4 && f.compare(f.size() - 4, 4, ".glb") == 0;
-      if (glb && std::find(files.begin(), files.end(), stem(f) + ".obj") != files.end()) continue;
-      kept.push_back(f);
+    std::vector<std::string> listed;
+    if (!hullpack::ListFiles(folder, kFormats, &listed)) {
+      std::fprintf(stderr, "codec_bench: %s: cannot open folder\n", folder.c_str());
+      return 1;
     }
-    files = kept;
+    for (const std::string& f : listed) {
+      const size_t rank = std::find(kFormats.begin(), kFormats.end(), hullpack::LowerExtension(f)) -
+                          kFormats.begin();
+      const bool shadowed = std::any_of(listed.begin(), listed.end(), [&](const std::string& g) {
+        return g != f && stem(g) == stem(f) &&
+               size_t(std::find(kFormats.begin(), kFormats.end(), hullpack::LowerExtension(g)) -
+                      kFormats.begin()) < rank;
+      });
+      if (!shadowed) files.push_back(f);
+    }
   }
   if (!s.only.empty()) {
     std::vector<std::string> kept;
     for (const std::string& f : files) {
-      if (std::find(s.only.begin(), s.only.end(), f.substr(0, f.size() - 4)) != s.only.end())
-        kept.push_back(f);
+      if (std::find(s.only.begin(), s.only.end(), stem(f)) != s.only.end()) kept.push_back(f);
     }
     files = kept;
   }
@@ -242,7 +267,7 @@ int main(int argc, char** argv) {
     }
     const Mesh mesh = hullpack::MergeGeometry(scene.value(), true);
     Row row;
-    row.name = file.substr(0, file.size() - 4);
+    row.name = stem(file);
     row.triangles = mesh.triangle_count();
     row.vertices = mesh.vertex_count();
     if (!RunAll(mesh, s, row)) {
@@ -258,6 +283,7 @@ int main(int argc, char** argv) {
         row.encode_ms[1], row.encode_ms[2], row.decode_ms[0], row.decode_ms[1], row.decode_ms[2],
         row.encode_ratio7, row.decode_ratio7, row.error[0], row.error[2], row.ascii_gzip_bytes,
         double(row.ascii_gzip_bytes) / row.bytes[0]);
+    if (s.parts) std::printf("  %s\n", PartBytes(row.info).c_str());
     rows.push_back(row);
   }
   double log7 = 0, log10 = 0, worst_ascii = 0;

@@ -25,6 +25,7 @@
 #include "o3dgc/o3dgc.h"
 #include "packed/packed_glb_reader.h"
 #include "pipeline/check_and_repair.h"
+#include "pipeline/codec_weld.h"
 #include "pipeline/mesh_codec.h"
 #include "pipeline/pack.h"
 
@@ -97,7 +98,8 @@ int main(int argc, char** argv) {
     if (!hullpack::CheckAndRepair(pruned, options.repair).ok()) continue;  // PackScene succeeded
     hullpack::LeaveOutUnused(pruned, options.prune);
     // unpack(pack(x)) against x: the GLB read back as any user reads it; same triangle and vertex
-    // counts (connectivity kept), skin attributes present, worst position error.
+    // counts (connectivity kept; vertices whose normals the codec stores alike welded, as the
+    // encoder welds them), skin attributes present, worst position error.
     hullpack::GltfDocument inflated;
     hullpack::Result<hullpack::Scene> unpacked =
         hullpack::ReadPackedGltf(packed->glb.data(), packed->glb.size(), file, "", &inflated);
@@ -106,8 +108,13 @@ int main(int argc, char** argv) {
     for (size_t m = 0; kept && m < pruned.meshes.size(); ++m) {
       const hullpack::Mesh& a = pruned.meshes[m];
       const hullpack::Mesh& b = unpacked->meshes[m];
-      kept = a.triangle_count() == b.triangle_count() && a.vertex_count() == b.vertex_count() &&
-             a.joints.size() == b.joints.size() && a.weights.size() == b.weights.size();
+      const std::optional<hullpack::Mesh> welded =
+          options.keep_order ? std::nullopt
+                             : hullpack::WeldNormalsStoredAlike(a, options.normal_bits);
+      const hullpack::Mesh& expect = welded ? *welded : a;
+      kept = expect.triangle_count() == b.triangle_count() &&
+             expect.vertex_count() == b.vertex_count() && expect.joints.size() == b.joints.size() &&
+             expect.weights.size() == b.weights.size();
       const double diagonal = hullpack::BoundingBoxDiagonal(a);
       if (diagonal > 0)
         round_trip = std::max(round_trip, hullpack::MaxVertexDistance(a, b) / diagonal);

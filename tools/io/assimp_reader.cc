@@ -89,6 +89,9 @@ class AssimpConverter {
   }
 
   void ConvertImagesAndMaterials() {
+    // A lone material named AI_DEFAULT_MATERIAL_NAME is assimp's stand-in for a file without
+    // materials (STL, PLY): no triangle is given it (ConvertMesh), so it is not one of the scene's.
+    if (ai_.mNumMaterials == 1 && !HasNamedMaterial()) return;
     for (unsigned i = 0; i < ai_.mNumMaterials; ++i) {
       const aiMaterial& am = *ai_.mMaterials[i];
       Material m;

@@ -63,9 +63,12 @@ double PositionGridError(const Mesh& mesh, o3dgc::RangeMode mode, int bits) {
 constexpr float kPrepared = 0.4f;
 constexpr float kGridStart = 0.6f;
 
-Result<BudgetedEncoding> EncodeWithinError(const Mesh& mesh, const std::vector<uint32_t>& groups,
-                                           const MeshCodecSettings& settings, double max_error,
-                                           int threads) {
+namespace {
+
+// EncodeWithinError at the UV range of `settings`.
+Result<BudgetedEncoding> EncodeOnGrids(const Mesh& mesh, const std::vector<uint32_t>& groups,
+                                       const MeshCodecSettings& settings, double max_error,
+                                       int threads) {
   // Every grid keeps a mesh of zero size (empty, or all positions equal) exactly, so such a mesh
   // meets even a zero budget (max_error x its diagonal of 0).
   const bool zero_size = PositionRange(mesh) == 0;
@@ -177,6 +180,32 @@ Result<BudgetedEncoding> EncodeWithinError(const Mesh& mesh, const std::vector<u
   out.max_error = chosen.error;
   out.streams_tried = static_cast<int>(candidates.size());
   return out;
+}
+
+}  // namespace
+
+Result<BudgetedEncoding> EncodeWithinError(const Mesh& mesh, const std::vector<uint32_t>& groups,
+                                           const MeshCodecSettings& settings, double max_error,
+                                           int threads) {
+  Result<BudgetedEncoding> out = EncodeOnGrids(mesh, groups, settings, max_error, threads);
+  if (!out.ok() || settings.uv_range != o3dgc::RangeMode::kUniform || !UvExtentsDiffer(mesh)) {
+    return out;
+  }
+  // As EncodeMesh: per-axis UV cells are no larger, and sometimes code smaller.
+  MeshCodecSettings per_axis = settings;
+  per_axis.uv_range = o3dgc::RangeMode::kPerAxis;
+  Result<BudgetedEncoding> other = EncodeOnGrids(mesh, groups, per_axis, max_error, threads);
+  if (!other.ok()) return other.status();
+  BudgetedEncoding& a = out.value();
+  BudgetedEncoding& b = other.value();
+  const int tried = a.streams_tried + b.streams_tried;
+  const double seconds_encode = a.seconds_encode + b.seconds_encode;
+  const double seconds_decode = a.seconds_decode + b.seconds_decode;
+  BudgetedEncoding& best = b.encoded.stream.size() < a.encoded.stream.size() ? b : a;
+  best.streams_tried = tried;
+  best.seconds_encode = seconds_encode;
+  best.seconds_decode = seconds_decode;
+  return std::move(best);
 }
 
 }  // namespace hullpack

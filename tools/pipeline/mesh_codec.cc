@@ -6,6 +6,8 @@
 #include <limits>
 #include <unordered_map>
 
+#include "pipeline/codec_weld.h"
+
 namespace hullpack {
 namespace {
 
@@ -22,8 +24,11 @@ o3dgc::FloatAttributeView FloatView(const std::vector<float>& values, uint32_t d
 
 }  // namespace
 
-Status MakeCodecInput(const Mesh& mesh, const std::vector<uint32_t>& groups,
+Status MakeCodecInput(const Mesh& input, const std::vector<uint32_t>& groups,
                       const MeshCodecSettings& s, CodecInput* in) {
+  in->welded.reset();
+  if (!s.keep_order) in->welded = WeldNormalsStoredAlike(input, s.normal_bits);
+  const Mesh& mesh = in->welded ? *in->welded : input;
   EncodedMesh& out = in->attributes;
   out.gltf_attributes.clear();
   in->view = o3dgc::MeshView();
@@ -41,8 +46,14 @@ Status MakeCodecInput(const Mesh& mesh, const std::vector<uint32_t>& groups,
     out.gltf_attributes.emplace_back("NORMAL", id++);
   }
   for (size_t k = 0; k < mesh.uv_sets.size(); ++k) {
-    view.float_attributes.push_back(
-        FloatView(mesh.uv_sets[k], 2, o3dgc::Semantic::kTexCoord, s.uv_bits));
+    // By default one range for u and v (square cells), as Draco and glTF quantize them: u and v
+    // are lengths in the same texture, so a texel needs the same step on both. One range per axis
+    // spent more bits on the shorter axis, and skewed the shape-based prediction, whose
+    // perpendicular in UV space is only one where the cells are square.
+    o3dgc::FloatAttributeView uv =
+        FloatView(mesh.uv_sets[k], 2, o3dgc::Semantic::kTexCoord, s.uv_bits);
+    uv.range = s.uv_range;
+    view.float_attributes.push_back(uv);
     out.gltf_attributes.emplace_back("TEXCOORD_" + std::to_string(k), id++);
   }
   if (!mesh.colors.empty()) {
@@ -95,6 +106,21 @@ Status MakeCodecInput(const Mesh& mesh, const std::vector<uint32_t>& groups,
   return Status::Ok();
 }
 
+bool UvExtentsDiffer(const Mesh& mesh) {
+  for (const std::vector<float>& uv : mesh.uv_sets) {
+    if (uv.size() < 2) continue;
+    float lo[2] = {uv[0], uv[1]}, hi[2] = {uv[0], uv[1]};
+    for (size_t i = 0; i + 1 < uv.size(); i += 2) {
+      for (int k = 0; k < 2; ++k) {
+        lo[k] = std::min(lo[k], uv[i + k]);
+        hi[k] = std::max(hi[k], uv[i + k]);
+      }
+    }
+    if (hi[0] - lo[0] != hi[1] - lo[1]) return true;
+  }
+  return false;
+}
+
 Status EncoderStatus(o3dgc::Status st, const std::string& mesh_name) {
   if (st == o3dgc::Status::kOk) return Status::Ok();
   if (st == o3dgc::Status::kCancelled) return Status(StatusCode::kCancelled, "cancelled");
@@ -102,14 +128,31 @@ Status EncoderStatus(o3dgc::Status st, const std::string& mesh_name) {
                 std::string("mesh '") + mesh_name + "': encoder: " + o3dgc::StatusName(st));
 }
 
-Result<EncodedMesh> EncodeMesh(const Mesh& mesh, const std::vector<uint32_t>& groups,
-                               const MeshCodecSettings& s) {
+namespace {
+
+Result<EncodedMesh> EncodeWithUvRange(const Mesh& mesh, const std::vector<uint32_t>& groups,
+                                      const MeshCodecSettings& s) {
   CodecInput in;
   Status status = MakeCodecInput(mesh, groups, s, &in);
   if (!status.ok()) return status;
   EncodedMesh out = std::move(in.attributes);
   status = EncoderStatus(o3dgc::Encode(in.view, in.params, &out.stream, &out.info), mesh.name);
   if (!status.ok()) return status;
+  return out;
+}
+
+}  // namespace
+
+Result<EncodedMesh> EncodeMesh(const Mesh& mesh, const std::vector<uint32_t>& groups,
+                               const MeshCodecSettings& s) {
+  Result<EncodedMesh> out = EncodeWithUvRange(mesh, groups, s);
+  if (!out.ok() || s.uv_range != o3dgc::RangeMode::kUniform || !UvExtentsDiffer(mesh)) return out;
+  // Per-axis cells are no larger than uniform ones, and on UVs that sit on a few values at the
+  // ends of their ranges (palette textures) its clamped predictions hit them exactly.
+  MeshCodecSettings per_axis = s;
+  per_axis.uv_range = o3dgc::RangeMode::kPerAxis;
+  Result<EncodedMesh> other = EncodeWithUvRange(mesh, groups, per_axis);
+  if (other.ok() && other->stream.size() < out->stream.size()) return other;
   return out;
 }
 

@@ -9,6 +9,7 @@
 #define HULLPACK_TOOLS_PIPELINE_MESH_CODEC_H_
 
 #include <array>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -30,6 +31,10 @@ struct MeshCodecSettings {
   o3dgc::RangeMode position_range = o3dgc::RangeMode::kUniform;
   int normal_bits = 10;
   int uv_bits = 12;
+  // How the UV quantization square is sized. kUniform: one range for u and v, as Draco and glTF
+  // quantize them (see MakeCodecInput); EncodeMesh and EncodeWithinError also try kPerAxis where
+  // it gives another stream (u and v extents differ) and keep the smaller: its cells are no larger.
+  o3dgc::RangeMode uv_range = o3dgc::RangeMode::kUniform;
   int color_bits = 10;
   int weight_bits = 10;
   int tangent_bits = 10;
@@ -44,9 +49,16 @@ struct CodecInput {
   o3dgc::EncodeParams params;
   EncodedMesh attributes;       // gltf_attributes only
   std::vector<int32_t> joints;  // the joints widened for the codec (the view points here)
+  // Without keep_order: the mesh with the vertices the codec stores alike welded
+  // (WeldNormalsStoredAlike), when any are; the view points here then.
+  std::optional<Mesh> welded;
 };
 Status MakeCodecInput(const Mesh& mesh, const std::vector<uint32_t>& groups,
                       const MeshCodecSettings& settings, CodecInput* in);
+
+// True when some UV set of `mesh` has u and v extents that differ, so that kUniform and kPerAxis
+// UV ranges give different streams.
+bool UvExtentsDiffer(const Mesh& mesh);
 
 // An encoder status as a Status naming the mesh.
 Status EncoderStatus(o3dgc::Status status, const std::string& mesh_name);

@@ -295,6 +295,12 @@ Status Decode(const uint8_t* data, size_t size, const DecodeOptions& options, De
 double PositionQuantizationError(const float* positions, size_t stride, size_t num_vertices,
                                  int bits, RangeMode range);
 
+// Normals that Encode stores alike with surface-normal prediction at `bits` (1..16) per
+// octahedral coordinate get the same key, and Decode returns the same normal for both, whatever
+// the mesh around them: a caller may weld vertices that differ only in such normals before
+// encoding without changing what decodes. 0 for bits outside 1..16.
+uint64_t OctahedralNormalKey(const float normal[3], int bits);
+
 // Parses only the header and section table of a stream (no checksum check, no decoding): format
 // version, flags, counts; for an original Open3DGC stream, its header (info->format says which).
 Status ReadStreamInfo(const uint8_t* data, size_t size, StreamInfo* info);

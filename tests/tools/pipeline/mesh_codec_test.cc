@@ -59,6 +59,83 @@ TEST(MeshCodec, RoundTripKeepsEveryAttributeWithinItsBits) {
   EXPECT_LE(MaxVertexDistance(in, dec.value()), std::sqrt(3.0) * step / 2 + 1e-6);
 }
 
+// The bytes of `mesh` with every UV set quantized on `range`, nothing else tried.
+size_t BytesWithUvRange(const Mesh& mesh, o3dgc::RangeMode range) {
+  MeshCodecSettings s;
+  s.uv_range = range;
+  CodecInput in;
+  EXPECT_TRUE(MakeCodecInput(mesh, {}, s, &in).ok());
+  std::vector<uint8_t> stream;
+  EXPECT_EQ(o3dgc::Encode(in.view, in.params, &stream), o3dgc::Status::kOk);
+  return stream.size();
+}
+
+// A torus whose UVs unroll it at its own scale: u along the ring (length 2 pi), v around the
+// tube (2 pi 0.3), so the u extent is over three times the v extent.
+Mesh UnrolledTorus(int rings = 48, int sides = 24) {
+  Mesh m = testing::TorusMesh(rings, sides);
+  const double pi = std::acos(-1.0);
+  m.uv_sets.resize(1);
+  for (int i = 0; i < rings; ++i) {
+    for (int j = 0; j < sides; ++j) {
+      m.uv_sets[0].insert(m.uv_sets[0].end(),
+                          {float(2 * pi * i / rings), float(2 * pi * 0.3 * j / sides)});
+    }
+  }
+  return m;
+}
+
+TEST(MeshCodec, UvCellsAreSquareByDefault) {
+  const Mesh in = UnrolledTorus();
+  ASSERT_TRUE(UvExtentsDiffer(in));
+  // Square cells keep the shape-based UV prediction's perpendicular one, and spend no extra bits
+  // on the shorter axis.
+  const size_t uniform = BytesWithUvRange(in, o3dgc::RangeMode::kUniform);
+  EXPECT_LT(uniform, BytesWithUvRange(in, o3dgc::RangeMode::kPerAxis) * 9 / 10);
+  Result<EncodedMesh> enc = EncodeMesh(in, {}, MeshCodecSettings());
+  ASSERT_TRUE(enc.ok()) << enc.status().ToString();
+  EXPECT_EQ(enc->stream.size(), uniform);
+  Result<Mesh> dec = DecodeMesh(enc->stream.data(), enc->stream.size(), nullptr, "t");
+  ASSERT_TRUE(dec.ok()) << dec.status().ToString();
+  float lo = in.uv_sets[0][0], hi = lo;
+  for (float x : in.uv_sets[0]) lo = std::min(lo, x), hi = std::max(hi, x);
+  ASSERT_EQ(dec->uv_sets.size(), 1u);
+  ASSERT_EQ(dec->vertex_count(), in.vertex_count());
+  // The decoded vertices come in another order: match them by position.
+  for (size_t i = 0; i < dec->vertex_count(); ++i) {
+    size_t best = 0;
+    double best_d = 1e30;
+    for (size_t j = 0; j < in.vertex_count(); ++j) {
+      double d = 0;
+      for (int k = 0; k < 3; ++k) {
+        const double e = dec->positions[3 * i + k] - in.positions[3 * j + k];
+        d += e * e;
+      }
+      if (d < best_d) best_d = d, best = j;
+    }
+    for (int k = 0; k < 2; ++k) {
+      EXPECT_LE(std::fabs(dec->uv_sets[0][2 * i + k] - in.uv_sets[0][2 * best + k]),
+                (hi - lo) / 4095 / 2 + 1e-5);
+    }
+  }
+}
+
+TEST(MeshCodec, PerAxisUvCellsAreKeptWhereSmaller) {
+  // Palette UVs: each quad of the torus takes one of two texels at the ends of the u and v
+  // ranges, whose extents differ.
+  Mesh in = testing::TorusMesh(24, 12);
+  in.uv_sets.resize(1);
+  for (size_t i = 0; i < in.vertex_count(); ++i) {
+    const bool a = (i / 12) % 3 == 0;
+    in.uv_sets[0].insert(in.uv_sets[0].end(), {a ? 0.125f : 0.75f, a ? 0.25f : 0.5f});
+  }
+  ASSERT_TRUE(UvExtentsDiffer(in));
+  Result<EncodedMesh> enc = EncodeMesh(in, {}, MeshCodecSettings());
+  ASSERT_TRUE(enc.ok()) << enc.status().ToString();
+  EXPECT_EQ(enc->stream.size(), std::min(BytesWithUvRange(in, o3dgc::RangeMode::kUniform),
+                                         BytesWithUvRange(in, o3dgc::RangeMode::kPerAxis)));
+}
+
 TEST(MeshCodec, GroupsRoundTripAndExtract) {
   Mesh in = FullTorus(8, 6);
   std::vector<uint32_t> groups(in.triangle_count());
