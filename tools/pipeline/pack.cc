@@ -39,6 +39,17 @@ Result<PackResult> PackLoaded(Scene scene, const PackOptions& options, PackObser
       CheckAndRepair(scene, options.repair, ThreadCount(options.threads));
   if (!repaired.ok()) return repaired.status();
   report.seconds_repair = Seconds(t);
+  if (!scene.meshes.empty() && scene.triangle_count() == 0) {
+    // A scene of nothing but collapsed meshes; one among others is left out by the next stage.
+    const std::string more =
+        scene.meshes.size() > 1
+            ? " (and in the " + std::to_string(scene.meshes.size() - 1) + " other meshes)"
+            : "";
+    return Status(StatusCode::kInvalidMesh, "mesh '" + scene.meshes[0].name +
+                                                "': no triangle with an area (none, or all "
+                                                "degenerate at float precision)" +
+                                                more + ": nothing to pack");
+  }
 
   t = Clock::now();
   if (observer) observer->OnProgress(0.01, "leave out the unused");
@@ -49,10 +60,6 @@ Result<PackResult> PackLoaded(Scene scene, const PackOptions& options, PackObser
   if (repairs.changed()) report.left_out.push_back(DescribeRepairs(repairs));
   for (const std::string& line : repaired->lines) report.left_out.push_back(line);
   report.seconds_prune = Seconds(t);
-  if (pruned.empty_meshes_removed > 0 && scene.triangle_count() == 0) {
-    return Status(StatusCode::kInvalidArgument,
-                  "nothing to pack: every triangle is degenerate (zero area at float precision)");
-  }
 
   t = Clock::now();
   Result<std::vector<PackedMesh>> packed =

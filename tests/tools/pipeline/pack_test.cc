@@ -360,8 +360,9 @@ TEST(Pack, MeshesWithOnlyDegenerateTrianglesAreLeftOut) {
   AddRootNodeForAllMeshes(only, "root");
   Result<PackResult> nothing = PackScene(only, FastOptions());
   ASSERT_FALSE(nothing.ok());
-  EXPECT_EQ(nothing.status().code(), StatusCode::kInvalidArgument);
-  EXPECT_NE(nothing.status().message().find("degenerate"), std::string::npos);
+  EXPECT_EQ(nothing.status().code(), StatusCode::kInvalidMesh);
+  EXPECT_NE(nothing.status().message().find("mesh 'collapsed': no triangle with an area"),
+            std::string::npos);
 }
 
 TEST(Pack, CancelStopsIt) {
