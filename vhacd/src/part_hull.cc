@@ -82,9 +82,10 @@ HullMesh BuildPartHull(const Part& part, const TriangleIndex& index) {
   const Vec3 lo(part.bmin[0], part.bmin[1], part.bmin[2]);
   const Vec3 hi(part.bmax[0] + 1, part.bmax[1] + 1, part.bmax[2] + 1);
   const GridMesh& mesh = index.mesh();
-  // Per triangle and per vertex, the pass that last saw it.
-  thread_local std::vector<uint32_t> stamp, vstamp;
-  thread_local uint32_t mark = 0;
+  // Per triangle and per vertex, the pass that last saw it: a byte each (these are a mesh's worth
+  // per thread), cleared when the marks wrap.
+  thread_local std::vector<uint8_t> stamp, vstamp;
+  thread_local uint8_t mark = 0;
   if (stamp.size() != mesh.triangles.size() || vstamp.size() != mesh.points.size()) {
     stamp.assign(mesh.triangles.size(), 0);
     vstamp.assign(mesh.points.size(), 0);
@@ -105,7 +106,7 @@ HullMesh BuildPartHull(const Part& part, const TriangleIndex& index) {
   // polygon. `emit` gets them in that order.
   std::vector<Vec3> clipped;
   auto visit = [&](auto emit) {
-    const uint32_t pass = next_mark();
+    const uint8_t pass = next_mark();
     index.ForEachInBox(lo, hi, &stamp, pass, [&](uint32_t t) {
       const auto& tr = mesh.triangles[t];
       if (inside(mesh.points[tr[0]]) && inside(mesh.points[tr[1]]) && inside(mesh.points[tr[2]])) {
