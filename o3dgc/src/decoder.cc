@@ -197,10 +197,6 @@ Status DecodePositions(DecodeState& st, DecodedMesh* m) {
     if (h.position.prediction == Prediction::kParallelogram) {
       wedges.BuildFromOppositeVertices(st.tris, st.nw, st.opposite_vertices, &st.vertex_triangles);
     }
-    // Only the positions' wedges read them: freed before the positions' working arrays are made,
-    // so that they do not add to the decoder's peak.
-    std::vector<uint32_t>().swap(st.opposite_vertices);
-    std::vector<uint32_t>().swap(st.vertex_triangles);
     const Status s = DecodeQuantized(&st.dec, &wedges, st.nw, 3, h.position.bits,
                                      h.position.prediction, st.order, &st.qpos);
     if (s != Status::kOk) return s;
