@@ -82,7 +82,7 @@ HullMesh BuildPartHull(const Part& part, const TriangleIndex& index) {
   const Vec3 lo(part.bmin[0], part.bmin[1], part.bmin[2]);
   const Vec3 hi(part.bmax[0] + 1, part.bmax[1] + 1, part.bmax[2] + 1);
   const GridMesh& mesh = index.mesh();
-  // Per triangle and per vertex, the pass that last saw it: a byte each (these are a mesh's worth
+  // Per triangle and per vertex, the part that last saw it: a byte each (these are a mesh's worth
   // per thread), cleared when the marks wrap.
   thread_local std::vector<uint8_t> stamp, vstamp;
   thread_local uint8_t mark = 0;
@@ -91,44 +91,28 @@ HullMesh BuildPartHull(const Part& part, const TriangleIndex& index) {
     vstamp.assign(mesh.points.size(), 0);
     mark = 0;
   }
-  auto next_mark = [&]() {
-    if (++mark == 0) {
-      std::fill(stamp.begin(), stamp.end(), 0);
-      std::fill(vstamp.begin(), vstamp.end(), 0);
-      mark = 1;
-    }
-    return mark;
-  };
+  if (++mark == 0) {
+    std::fill(stamp.begin(), stamp.end(), 0);
+    std::fill(vstamp.begin(), vstamp.end(), 0);
+    mark = 1;
+  }
   auto inside = [&](const Vec3& q) {
     return (q.array() >= lo.array()).all() && (q.array() <= hi.array()).all();
   };
   // Triangles inside the box contribute their vertices (each once), the others their clipped
-  // polygon. `emit` gets them in that order.
-  std::vector<Vec3> clipped;
-  auto visit = [&](auto emit) {
-    const uint8_t pass = next_mark();
-    index.ForEachInBox(lo, hi, &stamp, pass, [&](uint32_t t) {
-      const auto& tr = mesh.triangles[t];
-      if (inside(mesh.points[tr[0]]) && inside(mesh.points[tr[1]]) && inside(mesh.points[tr[2]])) {
-        for (uint32_t v : tr)
-          if (vstamp[v] != pass) {
-            vstamp[v] = pass;
-            emit(mesh.points[v]);
-          }
-        return;
-      }
-      clipped.clear();
-      ClipTriangleToBox(mesh.points[tr[0]], mesh.points[tr[1]], mesh.points[tr[2]], lo, hi,
-                        &clipped);
-      for (const Vec3& q : clipped) emit(q);
-    });
-  };
-  // Counted first and reserved: a large part holds most of the mesh's vertices, and grown by
-  // doubling the array held up to three times their size while a neighbour's hull was built.
-  size_t count = 0;
-  visit([&](const Vec3&) { ++count; });
-  pts.reserve(pts.size() + count);
-  visit([&](const Vec3& q) { pts.push_back(q); });
+  // polygon.
+  index.ForEachInBox(lo, hi, &stamp, mark, [&](uint32_t t) {
+    const auto& tr = mesh.triangles[t];
+    if (inside(mesh.points[tr[0]]) && inside(mesh.points[tr[1]]) && inside(mesh.points[tr[2]])) {
+      for (uint32_t v : tr)
+        if (vstamp[v] != mark) {
+          vstamp[v] = mark;
+          pts.push_back(mesh.points[v]);
+        }
+      return;
+    }
+    ClipTriangleToBox(mesh.points[tr[0]], mesh.points[tr[1]], mesh.points[tr[2]], lo, hi, &pts);
+  });
   HullMesh h;
   if (ComputeConvexHull(pts, -1.0, &h) == HullStatus::kOk && h.Volume() > 1e-3) return h;
   PartHullPoints(part, false, &pts);
