@@ -127,6 +127,45 @@ TEST(PartHullTest, InsideCornersOfSurfaceVoxelsReachTheCut) {
   }
 }
 
+TEST(PartHullTest, TheSameHullAfterManyPartsOnOneThread) {
+  // A part's hull does not depend on the parts built before it on the same thread, also once
+  // the per-thread marks of the triangles and vertices seen have wrapped (every few hundred
+  // parts).
+  const vhacd_test::Mesh box = vhacd_test::Box(1.3, 1.2, 1.1, 6.6, 4.9, 3.8);
+  GridMesh g;
+  for (size_t i = 0; i < box.point_count(); ++i)
+    g.points.emplace_back(box.points[3 * i], box.points[3 * i + 1], box.points[3 * i + 2]);
+  for (size_t t = 0; t < box.triangle_count(); ++t)
+    g.triangles.push_back({box.indices[3 * t], box.indices[3 * t + 1], box.indices[3 * t + 2]});
+  const int dims[3] = {8, 6, 5};
+  auto voxel = [](int x, int y, int z) {
+    Voxel v;
+    v.c[0] = static_cast<uint16_t>(x);
+    v.c[1] = static_cast<uint16_t>(y);
+    v.c[2] = static_cast<uint16_t>(z);
+    v.surface = true;
+    return v;
+  };
+  Part whole;  // every voxel: the whole mesh lies inside the part's box
+  for (int z = 0; z < dims[2]; ++z)
+    for (int y = 0; y < dims[1]; ++y)
+      for (int x = 0; x < dims[0]; ++x) whole.voxels.push_back(voxel(x, y, z));
+  whole.ComputeBounds();
+  Part corner;  // one voxel that no triangle reaches
+  corner.voxels.push_back(voxel(0, 0, 0));
+  corner.ComputeBounds();
+  const TriangleIndex index(g, dims, 4);
+  const HullMesh first = BuildPartHull(whole, index);
+  ASSERT_FALSE(first.empty());
+  EXPECT_NEAR(first.Volume(), (6.6 - 1.3) * (4.9 - 1.2) * (3.8 - 1.1), 1e-9);
+  for (int others = 0; others < 600; ++others) {
+    for (int k = 0; k < others; ++k) BuildPartHull(corner, index);
+    const HullMesh again = BuildPartHull(whole, index);
+    ASSERT_EQ(again.vertices, first.vertices) << "after " << others << " other parts";
+    ASSERT_EQ(again.triangles, first.triangles) << "after " << others << " other parts";
+  }
+}
+
 }  // namespace
 }  // namespace internal
 }  // namespace vhacd

@@ -93,24 +93,25 @@ HullMesh BuildPartHull(const Part& part, const TriangleIndex& index, const Solid
     }
   }
   const GridMesh& mesh = index.mesh();
-  thread_local std::vector<uint32_t> stamp;
-  thread_local uint32_t mark = 0;
-  if (stamp.size() != mesh.triangles.size()) {
+  // Per triangle and per vertex, the part that last saw it: a byte each (these are a mesh's worth
+  // per thread), cleared when the marks wrap.
+  thread_local std::vector<uint8_t> stamp, vstamp;
+  thread_local uint8_t mark = 0;
+  if (stamp.size() != mesh.triangles.size() || vstamp.size() != mesh.points.size()) {
     stamp.assign(mesh.triangles.size(), 0);
+    vstamp.assign(mesh.points.size(), 0);
     mark = 0;
   }
   if (++mark == 0) {
     std::fill(stamp.begin(), stamp.end(), 0);
+    std::fill(vstamp.begin(), vstamp.end(), 0);
     mark = 1;
   }
-  // Triangles inside the box contribute their vertices (each once), the others their clipped
-  // polygon.
-  thread_local std::vector<uint32_t> vstamp;
-  if (vstamp.size() != mesh.points.size()) vstamp.assign(mesh.points.size(), 0);
-  if (mark == 1) std::fill(vstamp.begin(), vstamp.end(), 0);
   auto inside = [&](const Vec3& q) {
     return (q.array() >= lo.array()).all() && (q.array() <= hi.array()).all();
   };
+  // Triangles inside the box contribute their vertices (each once), the others their clipped
+  // polygon.
   index.ForEachInBox(lo, hi, &stamp, mark, [&](uint32_t t) {
     const auto& tr = mesh.triangles[t];
     if (inside(mesh.points[tr[0]]) && inside(mesh.points[tr[1]]) && inside(mesh.points[tr[2]])) {

@@ -5,6 +5,7 @@
 #ifndef VHACD_SRC_PART_HULL_H_
 #define VHACD_SRC_PART_HULL_H_
 
+#include <cstdint>
 #include <vector>
 
 #include "convex_hull.h"
@@ -19,9 +20,10 @@ namespace internal {
 class TriangleIndex {
  public:
   TriangleIndex(const GridMesh& mesh, const int dims[3], int cell);
-  // Calls fn(t) once for every triangle whose bounding box meets [lo, hi].
+  // Calls fn(t) once for every triangle whose bounding box meets [lo, hi]: `stamp` (one per
+  // triangle) must hold no `mark` on entry; the triangles visited get it.
   template <typename Fn>
-  void ForEachInBox(const Vec3& lo, const Vec3& hi, std::vector<uint32_t>* stamp, uint32_t mark,
+  void ForEachInBox(const Vec3& lo, const Vec3& hi, std::vector<uint8_t>* stamp, uint8_t mark,
                     Fn fn) const;
 
   const GridMesh& mesh() const { return mesh_; }
@@ -51,8 +53,8 @@ HullMesh BuildPartHull(const Part& part, const TriangleIndex& index,
                        const SolidCorners* corners = nullptr);
 
 template <typename Fn>
-void TriangleIndex::ForEachInBox(const Vec3& lo, const Vec3& hi, std::vector<uint32_t>* stamp,
-                                 uint32_t mark, Fn fn) const {
+void TriangleIndex::ForEachInBox(const Vec3& lo, const Vec3& hi, std::vector<uint8_t>* stamp,
+                                 uint8_t mark, Fn fn) const {
   int clo[3], chi[3];
   for (int a = 0; a < 3; ++a) {
     clo[a] = std::max(0, std::min(dims_[a] - 1, static_cast<int>(lo[a]) / cell_));
