@@ -4,6 +4,7 @@
 
 #include <random>
 
+#include "test_grid_mesh.h"
 #include "test_meshes.h"
 
 namespace vhacd {
@@ -12,11 +13,7 @@ namespace {
 
 TEST(ErrorMetricsTest, TriangleLocatorMatchesBruteForce) {
   const vhacd_test::Mesh t = vhacd_test::Torus(10.0, 3.0, 32, 16);
-  GridMesh g;
-  for (size_t i = 0; i < t.point_count(); ++i)
-    g.points.emplace_back(t.points[3 * i] + 20, t.points[3 * i + 1] + 20, t.points[3 * i + 2] + 5);
-  for (size_t k = 0; k < t.triangle_count(); ++k)
-    g.triangles.push_back({t.indices[3 * k], t.indices[3 * k + 1], t.indices[3 * k + 2]});
+  const GridMesh g = vhacd_test::ToGridMesh(t, 1.0, Vec3(20, 20, 5));
   TriangleLocator loc(g, 4.0);
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(-10, 50);

@@ -5,6 +5,7 @@
 #include "context.h"
 #include "error_metrics.h"
 #include "solid_corners.h"
+#include "test_grid_mesh.h"
 #include "test_meshes.h"
 
 namespace vhacd {
@@ -37,11 +38,7 @@ TEST(PartHullTest, ClipTriangleToBox) {
 TEST(PartHullTest, HullOfAPartHugsTheSurfaceInsideItsBox) {
   // A box mesh [2.3, 7.6] x [2.2, 5.9] x [2.1, 4.8] in grid units; the part holds voxels x < 5.
   const vhacd_test::Mesh box = vhacd_test::Box(2.3, 2.2, 2.1, 7.6, 5.9, 4.8);
-  GridMesh g;
-  for (size_t i = 0; i < box.point_count(); ++i)
-    g.points.emplace_back(box.points[3 * i], box.points[3 * i + 1], box.points[3 * i + 2]);
-  for (size_t t = 0; t < box.triangle_count(); ++t)
-    g.triangles.push_back({box.indices[3 * t], box.indices[3 * t + 1], box.indices[3 * t + 2]});
+  const GridMesh g = vhacd_test::ToGridMesh(box);
   const int dims[3] = {10, 8, 7};
   Part part;
   for (int z = 2; z <= 4; ++z)
@@ -132,11 +129,7 @@ TEST(PartHullTest, TheSameHullAfterManyPartsOnOneThread) {
   // the per-thread marks of the triangles and vertices seen have wrapped (every few hundred
   // parts).
   const vhacd_test::Mesh box = vhacd_test::Box(1.3, 1.2, 1.1, 6.6, 4.9, 3.8);
-  GridMesh g;
-  for (size_t i = 0; i < box.point_count(); ++i)
-    g.points.emplace_back(box.points[3 * i], box.points[3 * i + 1], box.points[3 * i + 2]);
-  for (size_t t = 0; t < box.triangle_count(); ++t)
-    g.triangles.push_back({box.indices[3 * t], box.indices[3 * t + 1], box.indices[3 * t + 2]});
+  const GridMesh g = vhacd_test::ToGridMesh(box);
   const int dims[3] = {8, 6, 5};
   auto voxel = [](int x, int y, int z) {
     Voxel v;

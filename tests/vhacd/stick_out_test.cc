@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "context.h"
+#include "test_grid_mesh.h"
 #include "test_hulls.h"
 #include "test_meshes.h"
 
@@ -10,17 +11,10 @@ namespace vhacd {
 namespace internal {
 namespace {
 
-GridMesh ToGrid(const vhacd_test::Mesh& m) {
-  GridMesh g;
-  for (size_t i = 0; i < m.point_count(); ++i)
-    g.points.emplace_back(m.points[3 * i], m.points[3 * i + 1], m.points[3 * i + 2]);
-  for (size_t k = 0; k < m.triangle_count(); ++k)
-    g.triangles.push_back({m.indices[3 * k], m.indices[3 * k + 1], m.indices[3 * k + 2]});
-  return g;
-}
+using vhacd_test::ToGridMesh;
 
 TEST(StickOutTest, MeasuresBelowAVoxelOnTheExactSurface) {
-  const GridMesh mesh = ToGrid(vhacd_test::Box(2.3, 2.3, 2.3, 12.7, 12.7, 12.7));
+  const GridMesh mesh = ToGridMesh(vhacd_test::Box(2.3, 2.3, 2.3, 12.7, 12.7, 12.7));
   const int dims[3] = {16, 16, 16};
   Context ctx(nullptr, 2);
   VoxelGrid grid;
@@ -41,7 +35,7 @@ TEST(StickOutTest, MeasuresBelowAVoxelOnTheExactSurface) {
 TEST(StickOutTest, OpenSurfacesTrustTheVoxelVote) {
   // An open box (no top): points just inside its walls are not counted as sticking out.
   vhacd_test::Mesh box = vhacd_test::Box(2.3, 2.3, 2.3, 12.7, 12.7, 12.7);
-  GridMesh mesh = ToGrid(box);
+  GridMesh mesh = ToGridMesh(box);
   const int dims[3] = {16, 16, 16};
   Context ctx(nullptr, 2);
   VoxelGrid grid;
@@ -56,7 +50,7 @@ TEST(StickOutTest, FillCapsAreMeasuredFromTheSolid) {
   // voxels above that cap is within a few voxels of the solid the decomposition works on, though
   // its corners are 8 voxels from the nearest wall: splits and merges must not chase the cap.
   const vhacd_test::Mesh box = vhacd_test::Box(2.3, 2.3, 2.3, 28.7, 28.7, 28.7);
-  GridMesh closed = ToGrid(box), mesh;
+  GridMesh closed = ToGridMesh(box), mesh;
   mesh.points = closed.points;
   for (const auto& t : closed.triangles)
     if (closed.points[t[0]].z() < 28.0 || closed.points[t[1]].z() < 28.0 ||

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "test_grid_mesh.h"
 #include "test_meshes.h"
 
 namespace vhacd {
@@ -100,11 +101,7 @@ TEST(TetrahedronSetTest, SurfaceCellsTrimABoxToItsVolume) {
   // A box whose faces lie inside voxels (grid units): the trimmed cells add up to its volume,
   // while whole surface voxels overestimate it.
   const vhacd_test::Mesh box = vhacd_test::Box(1.3, 1.3, 1.3, 8.6, 7.7, 6.4);
-  GridMesh mesh;
-  for (size_t i = 0; i < box.point_count(); ++i)
-    mesh.points.emplace_back(box.points[3 * i], box.points[3 * i + 1], box.points[3 * i + 2]);
-  for (size_t t = 0; t < box.triangle_count(); ++t)
-    mesh.triangles.push_back({box.indices[3 * t], box.indices[3 * t + 1], box.indices[3 * t + 2]});
+  const GridMesh mesh = vhacd_test::ToGridMesh(box);
   const int dims[3] = {10, 9, 8};
   Context one(nullptr, 1);
   VoxelGrid grid;

@@ -2,21 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include "test_grid_mesh.h"
 #include "test_meshes.h"
 
 namespace vhacd {
 namespace internal {
 namespace {
 
-GridMesh ToGrid(const vhacd_test::Mesh& m, double scale, const Vec3& offset) {
-  GridMesh g;
-  for (size_t i = 0; i < m.point_count(); ++i)
-    g.points.push_back(scale * Vec3(m.points[3 * i], m.points[3 * i + 1], m.points[3 * i + 2]) +
-                       offset);
-  for (size_t t = 0; t < m.triangle_count(); ++t)
-    g.triangles.push_back({m.indices[3 * t], m.indices[3 * t + 1], m.indices[3 * t + 2]});
-  return g;
-}
+using vhacd_test::ToGridMesh;
 
 TEST(VoxelizerTest, TriangleBoxOverlap) {
   const Vec3 c(0.5, 0.5, 0.5);
@@ -50,7 +43,7 @@ TEST(VoxelizerTest, ChooseGridGivesAboutTheResolution) {
 TEST(VoxelizerTest, ClosedBoxIsFilled) {
   // A box covering voxels [2, 12) x [2, 10) x [2, 8) with faces at voxel boundaries.
   const vhacd_test::Mesh box = vhacd_test::Box(2, 2, 2, 12, 10, 8);
-  const GridMesh g = ToGrid(box, 1.0, Vec3::Zero());
+  const GridMesh g = ToGridMesh(box, 1.0, Vec3::Zero());
   const int dims[3] = {15, 13, 11};
   Context ctx(nullptr, 2);
   VoxelGrid grid;
@@ -71,7 +64,7 @@ TEST(VoxelizerTest, ClosedBoxIsFilled) {
 
 TEST(VoxelizerTest, SphereWithHolesIsSolidButThinSheetIsNot) {
   const vhacd_test::Mesh s = vhacd_test::Sphere(10.0, 48, 24, true);
-  const GridMesh g = ToGrid(s, 1.0, Vec3(12.3, 12.3, 12.3));
+  const GridMesh g = ToGridMesh(s, 1.0, Vec3(12.3, 12.3, 12.3));
   const int dims[3] = {25, 25, 25};
   Context ctx(nullptr, 1);
   VoxelGrid grid;
