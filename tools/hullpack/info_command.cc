@@ -1,7 +1,9 @@
 #include "hullpack/info_command.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <iterator>
 #include <optional>
 
 #include "common/file_util.h"
@@ -53,6 +55,32 @@ void LeaveOutPointHulls(const std::vector<CollisionHull>& hulls, Scene& scene) {
   scene.dropped = std::move(notes);
 }
 
+// The scene reader lists the physics extensions among those it ignored; once their colliders are
+// read as collision hulls, they are not.
+void ForgetReadCollisionExtensions(Scene& scene) {
+  const std::string prefix = "ignored extensions: ";
+  std::vector<std::string> notes;
+  for (const std::string& line : scene.dropped) {
+    if (line.compare(0, prefix.size(), prefix) != 0) {
+      notes.push_back(line);
+      continue;
+    }
+    std::string kept;
+    size_t from = prefix.size();
+    while (from <= line.size()) {
+      size_t to = line.find(", ", from);
+      if (to == std::string::npos) to = line.size();
+      const std::string ext = line.substr(from, to - from);
+      const bool read = std::find(std::begin(kCollisionExtensions), std::end(kCollisionExtensions),
+                                  ext) != std::end(kCollisionExtensions);
+      if (!read && !ext.empty()) kept += (kept.empty() ? "" : ", ") + ext;
+      from = to + 2;
+    }
+    if (!kept.empty()) notes.push_back(prefix + kept);
+  }
+  scene.dropped = std::move(notes);
+}
+
 }  // namespace
 
 int RunInfoCommand(const std::vector<std::string>& args) {
@@ -97,6 +125,7 @@ int RunInfoCommand(const std::vector<std::string>& args) {
     hulls = std::move(found.value());
   }
   LeaveOutPointHulls(hulls, scene.value());
+  if (!hulls.empty()) ForgetReadCollisionExtensions(scene.value());
   const SceneSummary summary = Summarize(scene.value());
   size_t hull_points = 0;
   for (const CollisionHull& h : hulls) hull_points += h.hull.vertex_count();

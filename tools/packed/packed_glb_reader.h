@@ -38,6 +38,10 @@ struct CollisionHull {
   Mesh hull;  // positions (body-node space, rounded to float); triangles when the file has them
 };
 
+// The extensions whose colliders ReadCollisionHulls reads.
+inline constexpr const char* kCollisionExtensions[] = {"OMI_physics_shape", "OMI_physics_body",
+                                                       "KHR_physics_rigid_bodies"};
+
 // Every OMI_physics_body / KHR_physics_rigid_bodies collider of an inflated document `doc` (as
 // ReadPackedGltf returns it) whose shape is a convex mesh, in node order. Covers the hulls of every
 // release: compressed streams (inflated to float triangles) and quantized points (no triangles:

@@ -40,6 +40,13 @@ check no-args 64 "usage" -- "$bin" info
 "$bin" pack "$src/samples/torus.obj" -o "$tmp/torus.glb" --quiet
 check packed-hulls 0 "collision hulls [1-9][0-9]* (convex colliders)" -- "$bin" info "$tmp/torus.glb"
 check packed-hulls-json 0 '"collision_hulls": [1-9]' -- "$bin" info --json "$tmp/torus.glb"
+# The physics extensions it reads the hulls from are not listed as ignored.
+"$bin" info "$tmp/torus.glb" >"$tmp/info.txt" 2>&1
+if grep -q "OMI_physics" "$tmp/info.txt"; then
+  echo "FAIL packed-hulls-extensions: $(grep OMI_physics "$tmp/info.txt")"; failures=$((failures + 1))
+else
+  passes=$((passes + 1))
+fi
 check pre-1.0-streams-refused 1 "HULLPACK_mesh_compression: stream: bad_version" -- \
   "$bin" info "$src/tests/tools/packed/vectors/cup_hulls_in_stream_omi.glb"
 check missing 1 "$tmp/missing.obj: No such file" -- "$bin" info "$tmp/missing.obj"
