@@ -13,6 +13,7 @@
 #include "clipping.h"
 #include "context.h"
 #include "convex_hull.h"
+#include "convex_input.h"
 #include "distance_field.h"
 #include "error_metrics.h"
 #include "hull_simplify.h"
@@ -135,6 +136,35 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   if (!internal::NormalizeToUnitBox(input.points, &center, &scale, &pn))
     return Fail(Status::kInvalidMesh, "the mesh has a degenerate or overflowing bounding box");
   std::vector<Vec3>().swap(input.points);  // only the normalized copy is read from here on
+  if (input.closed && params.hull_count <= 1) {
+    // Tolerance in the unit box: far above the hull's rounding, far below any dent that matters.
+    constexpr double kOnHull = 1e-9;
+    internal::HullMesh hull;
+    if (internal::ConvexInputHull(pn, input.triangles, params.max_vertices_per_hull, kOnHull,
+                                  &hull)) {
+      ConvexHull out;
+      if (!internal::ToOutputHull(
+              hull, [&](const Vec3& p) -> Vec3 { return center + scale * p; }, scale* scale* scale,
+              &out))
+        return Fail(Status::kInternalError, "a hull has a non-finite coordinate");
+      rep.parts_before_merge = 1;
+      rep.attempts = 1;
+      HullReport h;
+      h.vertex_count = static_cast<uint32_t>(hull.vertices.size());
+      h.volume = out.volume;
+      if (params.compute_report) {
+        h.distance = 0.0;
+        rep.volume_iou = rep.solid_coverage = 1.0;
+        rep.hausdorff_mesh_to_hulls = rep.hausdorff_hulls_to_mesh = rep.concavity = 0.0;
+      }
+      rep.hulls.push_back(h);
+      result.hulls.push_back(std::move(out));
+      rep.seconds_total = total.Lap();
+      ctx.Progress(100, "done");
+      ctx.Log("the input is convex: its hull is the decomposition");
+      return result;
+    }
+  }
   Eigen::Matrix3d rot = Eigen::Matrix3d::Identity();
   if (params.pca) {
     Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
