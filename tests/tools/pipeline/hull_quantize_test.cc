@@ -50,6 +50,42 @@ TEST(HullQuantize, EveryVertexWithinTheBudgetOnSmallLocalIntegers) {
   EXPECT_GT(QuantizeHulls(hulls, 0.0001)->position_bits, 8);
 }
 
+// The z extent of a decoded hull.
+double Thickness(const Mesh& hull) {
+  float lo = hull.positions[2], hi = hull.positions[2];
+  for (size_t i = 2; i < hull.positions.size(); i += 3) {
+    lo = std::min(lo, hull.positions[i]);
+    hi = std::max(hi, hull.positions[i]);
+  }
+  return double(hi) - double(lo);
+}
+
+TEST(HullQuantize, AThinHullKeepsItsThicknessOnAFinerStep) {
+  // A sheet far thinner than the budget's step, beside a thick block: the sheet would round to a
+  // flat hull, which physics engines reject.
+  const std::vector<Mesh> hulls = {Box(0, 1, 0.001f), Box(1, 2, 1)};
+  const double budget = 0.004;
+  Result<QuantizedHulls> q = QuantizeHulls(hulls, budget);
+  ASSERT_TRUE(q.ok()) << q.status().ToString();
+  EXPECT_LE(q->max_error, budget);
+  EXPECT_NEAR(Thickness(q->decoded[0]), 0.001, 0.0003);
+  EXPECT_LT(q->grids[0].scale, 0.001 / 3);
+  // The block keeps the coarse step the budget allows.
+  EXPECT_GT(q->grids[1].scale, 0.001);
+  EXPECT_NEAR(Thickness(q->decoded[1]), 1.0, budget);
+}
+
+TEST(HullQuantize, AVeryLongThinHullStaysWithinSixteenBits) {
+  // 1000 long and 0.01 thick: a quarter of its thickness would need more than 16 bits, so the
+  // step is the finest that fits, and the sheet still keeps some thickness.
+  Mesh sheet;
+  test_shapes::AppendTo(test_shapes::Box(0, 0, 0, 1000, 1, 0.01f), &sheet);
+  Result<QuantizedHulls> q = QuantizeHulls({sheet}, 1.0);
+  ASSERT_TRUE(q.ok()) << q.status().ToString();
+  EXPECT_LE(q->position_bits, 16);
+  EXPECT_GT(Thickness(q->decoded[0]), 0.0);
+}
+
 TEST(HullQuantize, BadInputIsAnError) {
   EXPECT_FALSE(QuantizeHulls({}, 0.01).ok());
   EXPECT_FALSE(QuantizeHulls({Box(0, 1, 1)}, 0).ok());
