@@ -30,21 +30,9 @@ void LeaveOutPointHulls(const std::vector<CollisionHull>& hulls, Scene& scene) {
     }
   }
   if (dropped == 0) return;
-  std::vector<int> remap(scene.meshes.size(), -1);
-  std::vector<Mesh> kept;
-  for (size_t m = 0; m < scene.meshes.size(); ++m) {
-    if (drop[m]) continue;
-    remap[m] = static_cast<int>(kept.size());
-    kept.push_back(std::move(scene.meshes[m]));
-  }
-  scene.meshes = std::move(kept);
-  for (Node& node : scene.nodes) {
-    std::vector<int> meshes;
-    for (int m : node.meshes)
-      if (m >= 0 && static_cast<size_t>(m) < remap.size() && remap[m] >= 0)
-        meshes.push_back(remap[m]);
-    node.meshes = std::move(meshes);
-  }
+  std::vector<bool> keep(drop.size());
+  for (size_t m = 0; m < drop.size(); ++m) keep[m] = !drop[m];
+  KeepMeshes(scene, keep);
   std::vector<std::string> notes;
   for (const std::string& line : scene.dropped) {
     bool about_hull = line == "dropped " + std::to_string(dropped) + " point/line primitives";

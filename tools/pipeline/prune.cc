@@ -95,28 +95,6 @@ void RemoveUnusedSkinData(const Scene& scene, size_t mesh_index, Mesh& mesh, Pru
   ++report.skin_data_removed;
 }
 
-// Keeps the meshes `keep` marks, renumbering the nodes' references; returns how many went.
-size_t KeepMeshes(Scene& scene, const std::vector<bool>& keep) {
-  std::vector<int> new_index(scene.meshes.size(), -1);
-  std::vector<Mesh> kept;
-  for (size_t i = 0; i < scene.meshes.size(); ++i) {
-    if (!keep[i]) continue;
-    new_index[i] = static_cast<int>(kept.size());
-    kept.push_back(std::move(scene.meshes[i]));
-  }
-  const size_t removed = scene.meshes.size() - kept.size();
-  scene.meshes = std::move(kept);
-  for (Node& node : scene.nodes) {
-    std::vector<int> meshes;
-    for (int m : node.meshes) {
-      if (m >= 0 && static_cast<size_t>(m) < new_index.size() && new_index[m] >= 0)
-        meshes.push_back(new_index[m]);
-    }
-    node.meshes = std::move(meshes);
-  }
-  return removed;
-}
-
 void RemoveUnreferencedMeshes(Scene& scene, PruneReport& report) {
   if (scene.nodes.empty()) return;
   std::vector<bool> shown(scene.meshes.size(), false);

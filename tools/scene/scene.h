@@ -115,6 +115,29 @@ inline void AddRootNodeForAllMeshes(Scene& scene, const std::string& name) {
   scene.nodes.push_back(std::move(root));
 }
 
+// Keeps the meshes `keep` marks (one flag per mesh) and renumbers the nodes' references to them,
+// dropping references to the others; returns how many meshes went.
+inline size_t KeepMeshes(Scene& scene, const std::vector<bool>& keep) {
+  std::vector<int> new_index(scene.meshes.size(), -1);
+  std::vector<Mesh> kept;
+  for (size_t i = 0; i < scene.meshes.size(); ++i) {
+    if (i >= keep.size() || !keep[i]) continue;
+    new_index[i] = static_cast<int>(kept.size());
+    kept.push_back(std::move(scene.meshes[i]));
+  }
+  const size_t removed = scene.meshes.size() - kept.size();
+  scene.meshes = std::move(kept);
+  for (Node& node : scene.nodes) {
+    std::vector<int> meshes;
+    for (int m : node.meshes) {
+      if (m >= 0 && static_cast<size_t>(m) < new_index.size() && new_index[m] >= 0)
+        meshes.push_back(new_index[m]);
+    }
+    node.meshes = std::move(meshes);
+  }
+  return removed;
+}
+
 }  // namespace hullpack
 
 #endif  // HULLPACK_TOOLS_SCENE_SCENE_H_
