@@ -4,9 +4,9 @@
 //
 // All hulls of a mesh lie on one grid whose step is the largest that keeps every vertex within the
 // hull budget (half a cell diagonal), except that a hull thinner than four steps gets a step of a
-// quarter of its thickness, so that no hull comes out flat. Each hull is stored as small unsigned integers relative to
-// its own lowest grid corner, so most hulls fit 8 bits per coordinate; its collider node's
-// translation (that corner) and uniform scale (the step) dequantize it.
+// quarter of its thickness, so that no hull comes out flat. Each hull is stored as small unsigned
+// integers relative to its own lowest grid corner, so most hulls fit 8 bits per coordinate; its
+// collider node's translation (that corner) and uniform scale (the step) dequantize it.
 #ifndef HULLPACK_TOOLS_PIPELINE_HULL_QUANTIZE_H_
 #define HULLPACK_TOOLS_PIPELINE_HULL_QUANTIZE_H_
 
