@@ -6,10 +6,11 @@
 #include <exception>
 #include <map>
 #include <new>
-#include <optional>
 #include <set>
 
 #include "gltf/buffer_compaction.h"
+#include "gltf/component_store.h"
+#include "gltf/draco_inflate.h"
 #include "gltf/glb_reader.h"
 #include "gltf/json_members.h"
 #include "o3dgc/o3dgc.h"
@@ -216,7 +217,7 @@ class Inflater {
           value = attribute->floats ? (*attribute->floats)[at] : (*attribute->ints)[at];
         }
         uint8_t* out = &bytes[(i * dims + c) * csize];
-        if (!Store(value, static_cast<int>(ctype), normalized, out)) {
+        if (!gltf::StoreComponent(value, static_cast<int>(ctype), normalized, out)) {
           return Error("accessors[" + std::to_string(accessor_index) + "]: value " +
                        std::to_string(value) + " does not fit its component type");
         }
@@ -228,58 +229,6 @@ class Inflater {
     acc["byteOffset"] = 0;
     filled_.insert(accessor_index);
     return Status::Ok();
-  }
-
-  static bool Store(double value, int ctype, bool normalized, uint8_t* out) {
-    if (!std::isfinite(value)) return false;
-    auto integer = [&](double lo, double hi, double scale) -> std::optional<int64_t> {
-      const double v = normalized ? std::round(value * scale) : value;
-      if (v < lo || v > hi || (!normalized && v != std::floor(v))) return std::nullopt;
-      return static_cast<int64_t>(v);
-    };
-    switch (ctype) {
-      case gltf::kFloat: {
-        const float f = static_cast<float>(value);
-        std::memcpy(out, &f, 4);
-        return true;
-      }
-      case gltf::kUnsignedInt: {
-        auto v = integer(0, 4294967295.0, 4294967295.0);
-        if (!v) return false;
-        const uint32_t u = static_cast<uint32_t>(*v);
-        std::memcpy(out, &u, 4);
-        return true;
-      }
-      case gltf::kUnsignedShort: {
-        auto v = integer(0, 65535, 65535);
-        if (!v) return false;
-        const uint16_t u = static_cast<uint16_t>(*v);
-        std::memcpy(out, &u, 2);
-        return true;
-      }
-      case gltf::kUnsignedByte: {
-        auto v = integer(0, 255, 255);
-        if (!v) return false;
-        *out = static_cast<uint8_t>(*v);
-        return true;
-      }
-      case gltf::kShort: {
-        auto v = integer(-32768, 32767, 32767);
-        if (!v) return false;
-        const int16_t s = static_cast<int16_t>(*v);
-        std::memcpy(out, &s, 2);
-        return true;
-      }
-      case gltf::kByte: {
-        auto v = integer(-128, 127, 127);
-        if (!v) return false;
-        const int8_t s = static_cast<int8_t>(*v);
-        std::memcpy(out, &s, 1);
-        return true;
-      }
-      default:
-        return false;
-    }
   }
 
   Status InflatePrimitive(nlohmann::json& prim) {
@@ -366,6 +315,8 @@ Result<Scene> ReadPackedGltf(const uint8_t* data, size_t size, const std::string
   Result<GltfDocument> doc = DecodeGlbDocument(data, size, name);
   if (!doc.ok()) return doc.status();
   Status s = InflatePackedDocument(doc.value(), name);
+  if (!s.ok()) return s;
+  s = InflateDracoPrimitives(doc.value(), name);
   if (!s.ok()) return s;
   GltfReadOptions options;
   options.base_dir = base_dir;
