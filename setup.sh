@@ -26,6 +26,7 @@ PACKAGES=(
   libeigen3-dev
   libgmock-dev
   libgtest-dev
+  libmeshoptimizer-dev
   libsdformat-dev
   liburdfdom-tools
   make

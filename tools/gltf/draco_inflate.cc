@@ -12,8 +12,8 @@
 
 #include "gltf/buffer_compaction.h"
 #include "gltf/component_store.h"
+#include "gltf/embedded_buffers.h"
 #include "gltf/glb_reader.h"
-#include "gltf/glb_reader_decoder.h"
 #include "gltf/json_members.h"
 
 namespace hullpack {
@@ -23,7 +23,7 @@ class DracoInflater {
  public:
   // Decoded arrays are bounded like any reader allocation: 64 bytes per file byte plus 1 MiB.
   DracoInflater(GltfDocument& doc, const std::string& name)
-      : doc_(doc), json_(doc.json()), name_(name) {
+      : doc_(doc), json_(doc.json()), name_(name), buffers_(doc) {
     const uint64_t input = doc.source_size() != 0 ? doc.source_size() : doc.binary().size();
     budget_ = input * GltfReadOptions().max_expansion + (1u << 20);
   }
@@ -68,31 +68,6 @@ class DracoInflater {
     return json_.contains(key) && json_[key].is_array() ? json_[key].size() : 0;
   }
 
-  // The bytes of buffer `index`: the GLB binary chunk or a data: URI.
-  Result<const std::vector<uint8_t>*> Buffer(int64_t index) {
-    const nlohmann::json& b = json_["buffers"][static_cast<size_t>(index)];
-    if (!b.is_object()) return Error("buffers[" + std::to_string(index) + "] is not an object");
-    if (!b.contains("uri")) {
-      if (index != 0 || !doc_.has_binary_chunk())
-        return Error("stream buffer has no uri and is not the GLB binary chunk");
-      return &doc_.binary();
-    }
-    std::string uri;
-    if (!gltf::GetStringMember(b, "uri", &uri)) return Error("buffer uri is not a string");
-    if (!glb_reader_internal::IsDataUri(uri)) {
-      return Status(StatusCode::kUnsupported,
-                    name_ + ": " + where_ + ": " + kDracoExtension +
-                        " streams in external buffer files are not read; convert the .gltf to "
-                        ".glb first");
-    }
-    auto cached = data_uris_.find(index);
-    if (cached != data_uris_.end()) return &cached->second;
-    glb_reader_internal::DataUri parsed;
-    std::string error;
-    if (!glb_reader_internal::ParseDataUri(uri, &parsed, &error)) return Error(error);
-    return &data_uris_.emplace(index, std::move(parsed.bytes)).first->second;
-  }
-
   Result<const draco::Mesh*> Stream(int64_t view) {
     auto it = streams_.find(view);
     if (it != streams_.end()) return static_cast<const draco::Mesh*>(it->second.get());
@@ -105,13 +80,11 @@ class DracoInflater {
       return Error(
           "stream bufferView has a byteOffset or byteLength that is not a non-negative integer");
     }
-    Result<const std::vector<uint8_t>*> bytes = Buffer(buffer);
+    Result<ByteRange> bytes =
+        buffers_.Range(buffer, offset, length, name_ + ": " + where_ + ": " + kDracoExtension);
     if (!bytes.ok()) return bytes.status();
-    const std::vector<uint8_t>& data = *bytes.value();
-    if (offset > data.size() || length > data.size() - offset)
-      return Error("stream bufferView lies outside its buffer");
     draco::DecoderBuffer input;
-    input.Init(reinterpret_cast<const char*>(data.data() + offset), static_cast<size_t>(length));
+    input.Init(reinterpret_cast<const char*>(bytes->data), bytes->size);
     draco::Decoder decoder;
     auto decoded = decoder.DecodeMeshFromBuffer(&input);
     if (!decoded.ok()) return Error("stream: " + decoded.status().error_msg_string());
@@ -271,7 +244,7 @@ class DracoInflater {
         json_[list] = std::move(kept);
       }
     }
-    if (streams_.empty() || !data_uris_.empty()) return Status::Ok();
+    if (streams_.empty() || buffers_.used_data_uris()) return Status::Ok();
     // The streams' views are referenced by nothing now; dropping them also frees their bytes.
     Status s = CompactBufferViews(doc_);
     if (!s.ok()) return Status(s.code(), name_ + ": " + s.message());
@@ -283,7 +256,7 @@ class DracoInflater {
   const std::string& name_;
   std::string where_;
   std::map<int64_t, std::unique_ptr<draco::Mesh>> streams_;
-  std::map<int64_t, std::vector<uint8_t>> data_uris_;
+  EmbeddedBuffers buffers_;
   std::set<int64_t> filled_;
   uint64_t budget_ = 0;  // bytes the remaining accessors may still take
 };

@@ -88,6 +88,25 @@ struct BufferData {
   size_t size = 0;  // the declared byteLength (checked against the data)
 };
 
+// A texture's KHR_texture_transform: uv' = offset + rotate(scale * uv), as glTF viewers and
+// engines apply it. The reader bakes it into the UV set (a packed file keeps no material
+// extension), so the texture lands where the source file puts it.
+struct UvTransform {
+  double offset[2] = {0, 0};
+  double rotation = 0;
+  double scale[2] = {1, 1};
+  bool conflicting = false;  // textures of one material sample this set with different transforms
+
+  bool identity() const {
+    return offset[0] == 0 && offset[1] == 0 && rotation == 0 && scale[0] == 1 && scale[1] == 1;
+  }
+  bool same(const UvTransform& o) const {
+    return offset[0] == o.offset[0] && offset[1] == o.offset[1] && rotation == o.rotation &&
+           scale[0] == o.scale[0] && scale[1] == o.scale[1];
+  }
+  void Apply(float* uv) const;
+};
+
 class Decoder {
  public:
   Decoder(const GltfDocument& doc, const std::string& name, const GltfReadOptions& options)
@@ -166,6 +185,10 @@ class Decoder {
   size_t non_triangle_primitives_ = 0;
   std::set<std::string> dropped_attributes_;
   int default_material_ = -1;
+  // Per material: the transform of each UV set its textures sample (DecodeMaterials), and the one
+  // being read.
+  std::vector<std::map<int, UvTransform>> material_uv_transforms_;
+  std::map<int, UvTransform> current_uv_transforms_;
   std::map<std::string, const json*> top_level_;  // checked top-level arrays (nullptr: absent)
 };
 

@@ -1,4 +1,6 @@
 // Images and materials (metallic-roughness factors and the five texture slots).
+#include <cmath>
+
 #include "gltf/glb_reader_decoder.h"
 
 #include <cstring>
@@ -90,9 +92,40 @@ Status Decoder::DecodeTextureRef(const json& material, const char* key, const st
   if (static_cast<size_t>(source) >= TopCount("images")) {
     return Error(xw, "source image " + std::to_string(source) + " does not exist");
   }
+  auto transform_ext = it->find("extensions");
+  if (transform_ext != it->end() && transform_ext->is_object() &&
+      transform_ext->contains("KHR_texture_transform")) {
+    const json& tt = (*transform_ext)["KHR_texture_transform"];
+    const std::string ttw = tw + ".extensions.KHR_texture_transform";
+    if (!tt.is_object()) return Error(ttw, "is not an object");
+    UvTransform transform;
+    HP_RETURN_IF_ERROR(GetNumbers(tt, "offset", ttw, 2, transform.offset));
+    HP_RETURN_IF_ERROR(GetNumber(tt, "rotation", ttw, &transform.rotation));
+    HP_RETURN_IF_ERROR(GetNumbers(tt, "scale", ttw, 2, transform.scale));
+    HP_RETURN_IF_ERROR(GetUint(tt, "texCoord", ttw, tex_coord, &tex_coord));
+    if (tex_coord > 255)
+      return Error(ttw, "texCoord " + std::to_string(tex_coord) + " is out of range");
+    for (double v : {transform.offset[0], transform.offset[1], transform.rotation,
+                     transform.scale[0], transform.scale[1]}) {
+      if (!std::isfinite(v)) return Error(ttw, "holds a number that is not finite");
+    }
+    auto [known, added] = current_uv_transforms_.emplace(static_cast<int>(tex_coord), transform);
+    if (!added && !known->second.same(transform)) known->second.conflicting = true;
+  } else {
+    auto [known, added] =
+        current_uv_transforms_.emplace(static_cast<int>(tex_coord), UvTransform());
+    if (!added && !known->second.identity()) known->second.conflicting = true;
+  }
   out->image = static_cast<int>(source);
   out->uv_set = static_cast<int>(tex_coord);
   return Status::Ok();
+}
+
+void UvTransform::Apply(float* uv) const {
+  const double u = scale[0] * double(uv[0]), v = scale[1] * double(uv[1]);
+  const double c = std::cos(rotation), s = std::sin(rotation);
+  uv[0] = static_cast<float>(offset[0] + c * u + s * v);
+  uv[1] = static_cast<float>(offset[1] + c * v - s * u);
 }
 
 Status Decoder::DecodeMaterials(Scene* scene) {
@@ -104,6 +137,7 @@ Status Decoder::DecodeMaterials(Scene* scene) {
     const json& j = (*materials)[i];
     const std::string mw = Item("materials", i);
     Material m;
+    current_uv_transforms_.clear();
     HP_RETURN_IF_ERROR(GetString(j, "name", mw, &m.name));
     auto pbr = j.find("pbrMetallicRoughness");
     if (pbr != j.end()) {
@@ -134,6 +168,13 @@ Status Decoder::DecodeMaterials(Scene* scene) {
     HP_RETURN_IF_ERROR(DecodeTextureRef(j, "occlusionTexture", mw, false, &m.occlusion_texture));
     HP_RETURN_IF_ERROR(DecodeTextureRef(j, "emissiveTexture", mw, false, &m.emissive_texture));
     scene->materials.push_back(std::move(m));
+    for (const auto& [set, transform] : current_uv_transforms_) {
+      if (transform.conflicting) {
+        Drop(mw + ": textures sampling TEXCOORD_" + std::to_string(set) +
+             " with different KHR_texture_transforms (kept untransformed)");
+      }
+    }
+    material_uv_transforms_.push_back(current_uv_transforms_);
   }
   if (non_opaque_materials > 0) {
     Drop("dropped alphaMode MASK/BLEND of " + std::to_string(non_opaque_materials) + " materials");

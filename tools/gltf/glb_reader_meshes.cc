@@ -43,6 +43,8 @@ Status Decoder::DecodeMesh(int64_t mesh_index, Scene* scene, Mesh* out) {
   if (primitives == nullptr) return Error(mw, "has no primitives");
 
   std::map<std::string, std::pair<size_t, size_t>> vertex_blocks;  // attribute set -> (base, count)
+  // attribute set -> the material transforms baked into its UVs
+  std::map<std::string, const std::map<int, UvTransform>*> block_transforms;
   std::vector<int> triangle_material;
   bool has_normals = false, has_tangents = false, has_colors = false, has_skin = false;
   size_t uv_count = 0;
@@ -86,13 +88,41 @@ Status Decoder::DecodeMesh(int64_t mesh_index, Scene* scene, Mesh* out) {
     if (used.count("POSITION") == 0) return Error(pw, "has no POSITION attribute");
     std::string key;
     for (const auto& kv : used) key += kv.first + "=" + std::to_string(kv.second) + ";";
+    int64_t material = -1;
+    HP_RETURN_IF_ERROR(GetIndex(prim, "material", pw, &material));
+    if (material >= 0 && static_cast<size_t>(material) >= material_count) {
+      return Error(pw, "material " + std::to_string(material) + " does not exist");
+    }
+    // The material's texture transforms, baked into the UVs its primitive's vertices carry.
+    static const std::map<int, UvTransform> kNoTransforms;
+    const std::map<int, UvTransform>& transforms =
+        material >= 0 && static_cast<size_t>(material) < material_uv_transforms_.size()
+            ? material_uv_transforms_[static_cast<size_t>(material)]
+            : kNoTransforms;
+    // The transform baked into UV set `set` under `of` (none when identity or conflicting).
+    auto baked_for = [](const std::map<int, UvTransform>& of, size_t set) -> const UvTransform* {
+      auto t = of.find(static_cast<int>(set));
+      return t == of.end() || t->second.conflicting || t->second.identity() ? nullptr : &t->second;
+    };
+    auto transform_of = [&](size_t set) { return baked_for(transforms, set); };
 
     size_t base = 0, count = 0;
     auto block = vertex_blocks.find(key);
     if (block != vertex_blocks.end()) {
       base = block->second.first;
       count = block->second.second;
+      const std::map<int, UvTransform>& baked = *block_transforms[key];
+      for (size_t u = 0; u < uv_count; ++u) {
+        const UvTransform* first = baked_for(baked, u);
+        const UvTransform* now = transform_of(u);
+        if (first == now || (first && now && first->same(*now))) continue;
+        Drop(pw +
+             ": shares its vertices with a primitive of another KHR_texture_transform (the "
+             "first primitive's is baked into TEXCOORD_" +
+             std::to_string(u) + ")");
+      }
     } else {
+      block_transforms[key] = &transforms;
       int comps = 0;
       std::vector<float> positions;
       HP_RETURN_IF_ERROR(ReadFloats(used["POSITION"], pw + ".POSITION", {3}, &positions, &comps));
@@ -128,6 +158,9 @@ Status Decoder::DecodeMesh(int64_t mesh_index, Scene* scene, Mesh* out) {
         const std::string sem = "TEXCOORD_" + std::to_string(u);
         if (used.count(sem) == 0) break;
         HP_RETURN_IF_ERROR(read_attr(sem, {2}, &values, &comps));
+        if (const UvTransform* t = transform_of(u)) {
+          for (size_t v = 0; v + 1 < values.size(); v += 2) t->Apply(&values[v]);
+        }
         if (out->uv_sets.size() <= u) out->uv_sets.resize(u + 1);
         PadTo(out->uv_sets[u], base, 2, 0.0f);
         out->uv_sets[u].insert(out->uv_sets[u].end(), values.begin(), values.end());
@@ -230,11 +263,6 @@ Status Decoder::DecodeMesh(int64_t mesh_index, Scene* scene, Mesh* out) {
       out->indices.push_back(b + v0);
       out->indices.push_back(b + v1);
       out->indices.push_back(b + v2);
-    }
-    int64_t material = -1;
-    HP_RETURN_IF_ERROR(GetIndex(prim, "material", pw, &material));
-    if (material >= 0 && static_cast<size_t>(material) >= material_count) {
-      return Error(pw, "material " + std::to_string(material) + " does not exist");
     }
     triangle_material.insert(triangle_material.end(), triangles, static_cast<int>(material));
   }

@@ -13,6 +13,7 @@
 #include "gltf/draco_inflate.h"
 #include "gltf/glb_reader.h"
 #include "gltf/json_members.h"
+#include "gltf/meshopt_inflate.h"
 #include "o3dgc/o3dgc.h"
 #include "packed/packed_glb_format.h"
 
@@ -315,6 +316,8 @@ Result<Scene> ReadPackedGltf(const uint8_t* data, size_t size, const std::string
   Result<GltfDocument> doc = DecodeGlbDocument(data, size, name);
   if (!doc.ok()) return doc.status();
   Status s = InflatePackedDocument(doc.value(), name);
+  if (!s.ok()) return s;
+  s = InflateMeshoptBufferViews(doc.value(), name);
   if (!s.ok()) return s;
   s = InflateDracoPrimitives(doc.value(), name);
   if (!s.ok()) return s;

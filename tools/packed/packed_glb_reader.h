@@ -23,7 +23,8 @@ namespace hullpack {
 Status InflatePackedDocument(GltfDocument& doc, const std::string& name);
 
 // Parses a packed (or plain) GLB or .gltf, inflates it (HULLPACK_mesh_compression, then
-// KHR_draco_mesh_compression: gltf/draco_inflate.h), and converts it into the scene model.
+// EXT_meshopt_compression and KHR_draco_mesh_compression: gltf/meshopt_inflate.h,
+// gltf/draco_inflate.h), and converts it into the scene model.
 // `inflated` (may be null) receives the plain document. `base_dir` resolves external buffers
 // (empty: external buffers are rejected).
 Result<Scene> ReadPackedGltf(const uint8_t* data, size_t size, const std::string& name,

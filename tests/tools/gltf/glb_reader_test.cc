@@ -46,6 +46,83 @@ bool Contains(const std::vector<std::string>& lines, const std::string& needle) 
   return false;
 }
 
+// A triangle with UVs (0,0) (1,0) (0,1) whose two primitives use `materials` 0 and 1 in turn.
+json TransformedUvDocument(const json& materials, bool share_vertices, std::vector<uint8_t>* bin) {
+  bin->clear();
+  Put<float>(*bin, {0, 0, 0, 1, 0, 0, 0, 1, 0});  // 0: POSITION
+  Put<float>(*bin, {0, 0, 1, 0, 0, 1});           // 36: TEXCOORD_0
+  json prim0 = {{"attributes", {{"POSITION", 0}, {"TEXCOORD_0", 1}}}, {"material", 0}};
+  json prim1 = prim0;
+  prim1["material"] = 1;
+  if (!share_vertices) prim1["attributes"]["TEXCOORD_0"] = 2;  // same data, its own accessor
+  return {
+      {"asset", {{"version", "2.0"}}},
+      {"extensionsUsed", {"KHR_texture_transform"}},
+      {"buffers", {{{"byteLength", bin->size()}}}},
+      {"bufferViews",
+       {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 36}},
+        {{"buffer", 0}, {"byteOffset", 36}, {"byteLength", 24}}}},
+      {"accessors",
+       {{{"bufferView", 0}, {"componentType", gltf::kFloat}, {"count", 3}, {"type", "VEC3"}},
+        {{"bufferView", 1}, {"componentType", gltf::kFloat}, {"count", 3}, {"type", "VEC2"}},
+        {{"bufferView", 1}, {"componentType", gltf::kFloat}, {"count", 3}, {"type", "VEC2"}}}},
+      {"images", {{{"uri", "a.png"}}}},
+      {"textures", {{{"source", 0}}}},
+      {"materials", materials},
+      {"meshes", {{{"primitives", {prim0, prim1}}}}},
+      {"nodes", {{{"mesh", 0}}}},
+  };
+}
+
+json TextureWith(const json& transform) {
+  json info = {{"index", 0}};
+  if (!transform.is_null()) info["extensions"] = {{"KHR_texture_transform", transform}};
+  return info;
+}
+
+TEST(GlbReaderTest, TextureTransformsAreBakedIntoTheUvs) {
+  // Material 0: offset (0.5, 0.25), scale (0.5, 2); material 1: a quarter turn. The second
+  // primitive has its own UV accessor, so each gets its own transform.
+  const json offset_scale = {{"offset", {0.5, 0.25}}, {"scale", {0.5, 2}}};
+  const json quarter_turn = {{"rotation", M_PI / 2}};
+  const json materials = {
+      {{"pbrMetallicRoughness", {{"baseColorTexture", TextureWith(offset_scale)}}}},
+      {{"emissiveTexture", TextureWith(quarter_turn)}}};
+  std::vector<uint8_t> bin;
+  Result<Scene> s = Decode(TransformedUvDocument(materials, false, &bin), bin);
+  ASSERT_TRUE(s.ok()) << s.status().ToString();
+  const std::vector<float>& uv = s->meshes[0].uv_sets.at(0);
+  ASSERT_EQ(uv.size(), 12u);
+  // uv' = offset + rotate(scale * uv): (0,0) -> (0.5,0.25), (1,0) -> (1,0.25), (0,1) -> (0.5,2.25).
+  const float first[6] = {0.5f, 0.25f, 1.0f, 0.25f, 0.5f, 2.25f};
+  for (int i = 0; i < 6; ++i) EXPECT_NEAR(uv[i], first[i], 1e-6) << i;
+  // A quarter turn as viewers apply it: u' = v, v' = -u.
+  const float second[6] = {0, 0, 0, -1, 1, 0};
+  for (int i = 0; i < 6; ++i) EXPECT_NEAR(uv[6 + i], second[i], 1e-6) << i;
+  EXPECT_FALSE(Contains(s->dropped, "KHR_texture_transform"));  // understood, not ignored
+}
+
+TEST(GlbReaderTest, TextureTransformsThatCannotBeBakedAreReported) {
+  const json shift = {{"offset", {0.5, 0}}};
+  // One material whose two textures sample TEXCOORD_0 with different transforms.
+  json conflicting = {{{"pbrMetallicRoughness", {{"baseColorTexture", TextureWith(shift)}}},
+                       {"normalTexture", TextureWith(nullptr)}},
+                      json::object()};
+  std::vector<uint8_t> bin;
+  Result<Scene> s = Decode(TransformedUvDocument(conflicting, false, &bin), bin);
+  ASSERT_TRUE(s.ok()) << s.status().ToString();
+  EXPECT_TRUE(Contains(s->dropped, "different KHR_texture_transforms"))
+      << ::testing::PrintToString(s->dropped);
+  EXPECT_NEAR(s->meshes[0].uv_sets[0][2], 1.0f, 1e-6);  // kept as stored
+  // Two primitives sharing vertices, only one transformed: the first one's bake stays.
+  json split = {{{"pbrMetallicRoughness", {{"baseColorTexture", TextureWith(shift)}}}},
+                {{"pbrMetallicRoughness", {{"baseColorTexture", TextureWith(nullptr)}}}}};
+  s = Decode(TransformedUvDocument(split, true, &bin), bin);
+  ASSERT_TRUE(s.ok()) << s.status().ToString();
+  EXPECT_TRUE(Contains(s->dropped, "shares its vertices")) << ::testing::PrintToString(s->dropped);
+  EXPECT_NEAR(s->meshes[0].uv_sets[0][0], 0.5f, 1e-6);
+}
+
 TEST(GlbReaderTest, NormalizedAndQuantizedAttributes) {
   std::vector<uint8_t> bin;
   Put<int16_t>(bin, {0, 0, 0, 100, 0, 0, 0, -200, 0, 0});  // 0: POSITION SHORT (+pad)
@@ -261,7 +338,8 @@ TEST(GlbReaderTest, ReportsWhatItDrops) {
   EXPECT_TRUE(Contains(d, "1 cameras"));
   EXPECT_TRUE(Contains(d, "1 node cameras"));
   EXPECT_TRUE(Contains(d, "KHR_lights_punctual node lights"));
-  EXPECT_TRUE(Contains(d, "ignored extensions: KHR_lights_punctual, KHR_texture_transform"));
+  EXPECT_TRUE(Contains(d, "ignored extensions: KHR_lights_punctual"));
+  EXPECT_FALSE(Contains(d, "KHR_texture_transform"));  // baked into the UVs, not ignored
   EXPECT_TRUE(Contains(d, "morph targets of 1 primitives"));
   EXPECT_TRUE(Contains(d, "1 point/line primitives"));
   EXPECT_TRUE(Contains(d, "COLOR_1"));

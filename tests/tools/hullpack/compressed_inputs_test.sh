@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# Assets as Draco and gltfpack publish them (samples/compressed/, made from samples the project
+# holds) read like their sources: same triangles, bounds and UV ranges, and they pack.
+# usage: compressed_inputs_test.sh HULLPACK_BINARY SOURCE_DIR
+set -u
+bin=$1
+src=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+failures=0
+
+fail() { echo "FAIL $*"; failures=$((failures + 1)); }
+
+# The line of `hullpack info` that starts with $2 (after indentation).
+info_line() { "$bin" info "$1" | sed -n "s/^ *$2/&/p" | head -1; }
+
+# min/max of each column of the OBJ lines that start with $2 ("v" or "vt"), rounded to 3 decimals.
+ranges() {
+  awk -v tag="$2" '$1 == tag { for (i = 2; i <= NF; ++i) { if (!(i in lo) || $i < lo[i]) lo[i] = $i;
+                                                          if (!(i in hi) || $i > hi[i]) hi[i] = $i } }
+    END { for (i = 2; i in lo; ++i) printf "%.3f %.3f ", lo[i], hi[i]; print "" }' "$1"
+}
+
+# Draco (glTF-Transform, edgebreaker) of the torus sample: the torus's triangles and bounds.
+draco=$src/samples/compressed/torus_draco.glb
+want=$(info_line "$src/samples/torus.obj" "meshes 1, triangles")
+got=$(info_line "$draco" "meshes 1, triangles")
+[ "${want%%, vertices*}" = "${got%%, vertices*}" ] || fail "draco triangles: '$got' against '$want'"
+"$bin" unpack "$draco" -o "$tmp/draco.obj" >/dev/null || fail "draco unpack"
+# Draco quantized the positions at 14 bits: equal to 3 decimals on a torus of size ~2.
+[ "$(ranges "$tmp/draco.obj" v)" = "$(ranges "$src/samples/torus.obj" v)" ] ||
+  fail "draco bounds: $(ranges "$tmp/draco.obj" v) against $(ranges "$src/samples/torus.obj" v)"
+"$bin" pack "$draco" -o "$tmp/draco_packed.glb" --quiet >/dev/null || fail "draco pack"
+
+# gltfpack -cc of the Kenney coin: meshopt-compressed, quantized, and its UVs dequantized by a
+# KHR_texture_transform that the reader bakes in, so they span what the original's do.
+meshopt=$src/samples/compressed/kenney_block_coin_gltfpack.glb
+original=$src/samples/assets/kenney_block_coin.glb
+want=$(info_line "$original" "meshes 1, triangles")
+got=$(info_line "$meshopt" "meshes 1, triangles")
+[ "${want%%, vertices*}" = "${got%%, vertices*}" ] || fail "meshopt triangles: '$got' against '$want'"
+if "$bin" info "$meshopt" | grep -q "KHR_texture_transform"; then
+  fail "meshopt: KHR_texture_transform reported as not kept"
+fi
+"$bin" unpack "$meshopt" -o "$tmp/meshopt.obj" >/dev/null || fail "meshopt unpack"
+"$bin" pack "$original" -o "$tmp/original_packed.glb" --quiet >/dev/null || fail "original pack"
+"$bin" unpack "$tmp/original_packed.glb" -o "$tmp/original.obj" >/dev/null || fail "original unpack"
+[ "$(ranges "$tmp/meshopt.obj" vt)" = "$(ranges "$tmp/original.obj" vt)" ] ||
+  fail "meshopt UV ranges: $(ranges "$tmp/meshopt.obj" vt) against $(ranges "$tmp/original.obj" vt)"
+"$bin" pack "$meshopt" -o "$tmp/meshopt_packed.glb" --quiet >/dev/null || fail "meshopt pack"
+
+if [ "$failures" -ne 0 ]; then
+  echo "$failures checks failed"
+  exit 1
+fi
+echo "compressed inputs: all checks passed"
