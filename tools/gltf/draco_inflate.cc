@@ -42,8 +42,15 @@ class DracoInflater {
             !prims[p]["extensions"].contains(kDracoExtension))
           continue;
         where_ = "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) + "]";
-        Status s = InflatePrimitive(prims[p]);
-        if (!s.ok()) return s;
+        uint64_t mode = gltf::kModeTriangles;
+        if (!gltf::GetUintMember(prims[p], "mode", gltf::kModeTriangles, &mode))
+          return Error("mode is not a non-negative integer");
+        // Points and lines are not kept (the reader drops them); strips and fans decode as lists.
+        if (mode >= gltf::kModeTriangles) {
+          Status s = InflatePrimitive(prims[p]);
+          if (!s.ok()) return s;
+          prims[p]["mode"] = gltf::kModeTriangles;
+        }
         prims[p]["extensions"].erase(kDracoExtension);
         if (prims[p]["extensions"].empty()) prims[p].erase("extensions");
       }
@@ -200,8 +207,6 @@ class DracoInflater {
   Status InflatePrimitive(nlohmann::json& prim) {
     const nlohmann::json& ext = prim["extensions"][kDracoExtension];
     if (!ext.is_object()) return Error("not an object");
-    if (prim.contains("mode") && !(prim["mode"].is_number_integer() && prim["mode"] == 4))
-      return Error("only TRIANGLES primitives can be Draco-compressed");
     const int64_t view = Index(ext, "bufferView", ArraySize("bufferViews"));
     if (view < 0) return Error("bufferView missing or out of range");
     Result<const draco::Mesh*> stream = Stream(view);
