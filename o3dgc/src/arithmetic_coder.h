@@ -47,6 +47,15 @@
 #define O3DGC_PREFETCH(p) ((void)(p))
 #endif
 
+// Decoder code that runs once per stream or only for rare stream features (keep_order, groups) is
+// compiled for size in the WebAssembly decoder, whose download is bounded, as the sources of other
+// stream kinds are (web/CMakeLists.txt); native builds and the hot paths are unaffected.
+#if defined(__wasm__) && defined(__clang__)
+#define O3DGC_WASM_MINSIZE __attribute__((minsize, noinline))
+#else
+#define O3DGC_WASM_MINSIZE
+#endif
+
 namespace o3dgc {
 
 struct BitModel {

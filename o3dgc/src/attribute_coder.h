@@ -110,6 +110,11 @@ class ContextModels {
   size_t component_stride() const { return size_t(kinds_) * kMagContexts * kIntraContexts; }
   BitModel side;
   ResidualEscape escape;  // shared by all contexts (ResidualModel only)
+  // Modelled low bits (format 1.2; ResidualModel only): kTreeModels per component, or empty.
+  std::vector<BitModel> tree;
+  BitModel* tree_of(int component) {
+    return tree.empty() ? nullptr : tree.data() + size_t(component) * kTreeModels;
+  }
 
  private:
   int kinds_;
@@ -150,20 +155,34 @@ struct NormalGeometry {
   const uint32_t* position_of;  // attribute vertex -> position vertex
 };
 
+// Modelled low bits (format 1.2) for a section of quantized values: kNoFlag in streams without
+// the header's flag (formats 1.0, 1.1: no section bit); with the flag, every section that codes
+// predicted values adaptively (fewer than kRawLowBitsMesh values) starts with a bit, 1 for
+// kModelled (trees, see kTreeMaxK) and 0 for kPlain, except multi-parallelogram sections of 1, 2
+// or 4 components other than texture coordinates (generic attributes, colours): each decoding
+// loop that can read trees adds to the WebAssembly decoder's download, and grid-built models need
+// them for positions and texture coordinates.
+enum class LowBits : uint8_t { kNoFlag, kPlain, kModelled };
+inline bool HasLowBitsChoice(Prediction mode, uint32_t n, int dim, bool texcoord) {
+  return mode != Prediction::kNone && !RawLowBits(n) &&
+         (mode != Prediction::kParallelogram || dim == 3 || texcoord);
+}
+
 // `wedges` (needed for kParallelogram) gives the predictions and, with `order`, the coding order;
 // other modes code the vertices in id order. `geometry` (optional, 3 doubles per vertex): with
 // dim == 2 and kParallelogram, texture coordinates are predicted from the shape (PredictTexCoord)
 // instead of parallelograms.
 void EncodeQuantized(ArithmeticEncoder* enc, const WedgeTable* wedges,
                      const std::vector<int32_t>& q, int dim, int bits, Prediction mode,
-                     CodingOrder::Kind order, const std::vector<double>* geometry = nullptr);
+                     CodingOrder::Kind order, const std::vector<double>* geometry = nullptr,
+                     LowBits low_bits = LowBits::kNoFlag);
 // Estimated bits of 3-component parallelogram-predicted values coded in `order` (nothing coded):
 // the encoder's choice between the two orders (EncodeParams::auto_fast_decode).
 double EstimatePositionBits(const WedgeTable& wedges, const std::vector<int32_t>& q, int bits,
                             CodingOrder::Kind order);
 Status DecodeQuantized(ArithmeticDecoder* dec, const WedgeTable* wedges, uint32_t n, int dim,
                        int bits, Prediction mode, CodingOrder::Kind order, std::vector<int32_t>* q,
-                       const std::vector<double>* geometry = nullptr);
+                       const std::vector<double>* geometry = nullptr, bool low_bits_flag = false);
 
 // Positions of attribute vertices as doubles (quantized value * step), for PredictTexCoord.
 std::vector<double> AttributeGeometry(const NormalGeometry& geo, uint32_t n);

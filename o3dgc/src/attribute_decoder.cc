@@ -24,6 +24,8 @@ Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges,
   Status status = Status::kOk;
   CodingOrder order(wedges, kind);
   std::unique_ptr<SelectionModels> selection(select ? new SelectionModels : nullptr);
+  BitModel* trees[kDim];
+  for (int k = 0; k < kDim; ++k) trees[k] = kRawLow || kDim != 3 ? nullptr : models.tree_of(k);
   // A truncated stream reads as zeros (bounded work: one pass over the vertices), found by the
   // check after the loop.
   for (uint32_t c; (c = order.Next()) != kNoVertex;) {
@@ -75,7 +77,7 @@ Status DecodeParallelogram(ArithmeticDecoder* dec_in, const WedgeTable& wedges,
         // same value as IntraContext(r[k]) (the bit length of |r[k]|, capped), one step earlier
         // on the chain from one decision to the next.
         int symbol;
-        r[k] = DecodeResidual<kRawLow>(dec, m, models.escape, &symbol);
+        r[k] = DecodeResidual<kRawLow>(dec, m, models.escape, &symbol, trees[k]);
         static_assert(kIntraContexts <= kDirectClasses + 1, "the class names the intra context");
         intra = coarse ? 0 : (symbol < kIntraContexts ? symbol : kIntraContexts - 1);
       }
@@ -123,7 +125,8 @@ Status DecodeParallelogramFor(bool raw, ArithmeticDecoder* dec, const WedgeTable
 
 Status DecodeQuantized(ArithmeticDecoder* dec_in, const WedgeTable* wedges, uint32_t n, int dim,
                        int bits, Prediction mode, CodingOrder::Kind order_kind,
-                       std::vector<int32_t>* out, const std::vector<double>* geometry) {
+                       std::vector<int32_t>* out, const std::vector<double>* geometry,
+                       bool low_bits_flag) {
   ScopedDecoder dec(dec_in);
   std::vector<int32_t>& q = *out;
   q.assign(size_t(n) * dim, 0);
@@ -136,6 +139,10 @@ Status DecodeQuantized(ArithmeticDecoder* dec_in, const WedgeTable* wedges, uint
     return dec->failed() ? Status::kTruncated : Status::kOk;
   }
   std::unique_ptr<ResidualModels> models(new ResidualModels(dim, kResidualKinds));
+  const double* geo = (geometry && dim == 2) ? geometry->data() : nullptr;
+  if (low_bits_flag && HasLowBitsChoice(mode, n, dim, geo != nullptr) && dec->DecodeBits(1)) {
+    models->tree.assign(size_t(dim) * kTreeModels, BitModel());
+  }
   std::vector<uint32_t> mags(n, 0);
   const int coarse = n < kTinyMesh ? 2 : (n < kSmallMesh ? 1 : 0);
   const bool raw = RawLowBits(n);
@@ -147,7 +154,7 @@ Status DecodeQuantized(ArithmeticDecoder* dec_in, const WedgeTable* wedges, uint
       ResidualModel& m = models->at(coarse == 2 ? 0 : k, pc.kind, mctx,
                                     (k && !coarse) ? IntraContext(r[k - 1]) : 0);
       r[k] = raw ? DecodeResidual<true>(*dec, m, models->escape)
-                 : DecodeResidual<false>(*dec, m, models->escape);
+                 : DecodeResidual<false>(*dec, m, models->escape, nullptr, models->tree_of(k));
       const int64_t v = pred[k] + r[k];
       if (v < 0 || v > maxq) return false;
       q[size_t(c) * dim + k] = int32_t(v);
@@ -167,7 +174,6 @@ Status DecodeQuantized(ArithmeticDecoder* dec_in, const WedgeTable* wedges, uint
     }
     return dec->failed() ? Status::kTruncated : Status::kOk;
   }
-  const double* geo = (geometry && dim == 2) ? geometry->data() : nullptr;
   if (!geo) {
     switch (dim) {
       case 1:

@@ -201,7 +201,8 @@ void EncodeParallelogram(ArithmeticEncoder* enc, const WedgeTable& wedges, Codin
     const int shift = kRawLow && !own ? shifts.shift[v.kind][v.mctx] : 0;
     int intra = 0;
     for (int k = 0; k < kDim; ++k) {
-      EncodeResidual<kRawLow>(*enc, row[stride * k + intra], models.escape, v.r[k], shift);
+      EncodeResidual<kRawLow>(*enc, row[stride * k + intra], models.escape, v.r[k], shift,
+                              kRawLow || kDim != 3 ? nullptr : models.tree_of(k));
       intra = coarse ? 0 : IntraContext(v.r[k]);
     }
   }
@@ -241,13 +242,19 @@ double EstimatePositionBits(const WedgeTable& wedges, const std::vector<int32_t>
 
 void EncodeQuantized(ArithmeticEncoder* enc, const WedgeTable* wedges,
                      const std::vector<int32_t>& q, int dim, int bits, Prediction mode,
-                     CodingOrder::Kind order_kind, const std::vector<double>* geometry) {
+                     CodingOrder::Kind order_kind, const std::vector<double>* geometry,
+                     LowBits low_bits) {
   const uint32_t n = uint32_t(q.size() / size_t(dim));
   if (mode == Prediction::kNone) {
     for (int32_t v : q) enc->EncodeBits(uint32_t(v), bits);
     return;
   }
   std::unique_ptr<ResidualModels> models(new ResidualModels(dim, kResidualKinds));
+  const double* geo = (geometry && dim == 2) ? geometry->data() : nullptr;
+  if (low_bits != LowBits::kNoFlag && HasLowBitsChoice(mode, n, dim, geo != nullptr)) {
+    enc->EncodeBits(low_bits == LowBits::kModelled ? 1 : 0, 1);
+    if (low_bits == LowBits::kModelled) models->tree.assign(size_t(dim) * kTreeModels, BitModel());
+  }
   std::vector<uint32_t> mags(n, 0);
   const int64_t maxq = (int64_t(1) << bits) - 1;
   const int coarse = n < kTinyMesh ? 2 : (n < kSmallMesh ? 1 : 0);
@@ -262,7 +269,7 @@ void EncodeQuantized(ArithmeticEncoder* enc, const WedgeTable* wedges,
       if (raw) {
         EncodeResidual<true>(*enc, m, models->escape, r[k]);
       } else {
-        EncodeResidual<false>(*enc, m, models->escape, r[k]);
+        EncodeResidual<false>(*enc, m, models->escape, r[k], 0, models->tree_of(k));
       }
     }
     mags[c] = SaturatingMagnitude(r, dim);
@@ -278,7 +285,6 @@ void EncodeQuantized(ArithmeticEncoder* enc, const WedgeTable* wedges,
     }
     return;
   }
-  const double* geo = (geometry && dim == 2) ? geometry->data() : nullptr;
   if (!geo) {
     switch (dim) {
       case 1:

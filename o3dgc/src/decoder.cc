@@ -49,8 +49,8 @@ struct DecodeState {
 
 // The stream header, the checksum, the counts and descriptors, checked against the limits and
 // against what the payload can hold before anything is allocated.
-Status DecodeHeaders(const uint8_t* data, size_t size, const DecodeOptions& options,
-                     DecodeState& st) {
+O3DGC_WASM_MINSIZE Status DecodeHeaders(const uint8_t* data, size_t size,
+                                        const DecodeOptions& options, DecodeState& st) {
   Status s = ParseHeader(data, size, &st.sh);
   if (s != Status::kOk) return s;
   if (options.verify_checksum && StreamCrc(data, size) != st.sh.crc) {
@@ -62,6 +62,7 @@ Status DecodeHeaders(const uint8_t* data, size_t size, const DecodeOptions& opti
   st.si.version_minor = sh.minor;
   st.si.keep_order = sh.keep_order;
   st.si.fast_decode = sh.fast_decode;
+  st.si.low_bits = sh.low_bits;
   st.order = CodingOrder::ForStream(sh.fast_decode);
   PayloadHeader& h = st.h;
   if ((s = DecodePayloadHeader(&st.dec, &h)) != Status::kOk) return s;
@@ -155,7 +156,7 @@ Status DecodeSeams(DecodeState& st) {
   return Status::kOk;
 }
 
-Status DecodeExactOrder(DecodeState& st) {
+O3DGC_WASM_MINSIZE Status DecodeExactOrder(DecodeState& st) {
   ArithmeticDecoder& dec = st.dec;
   const uint32_t nv = st.nv;
   const size_t nt = st.nt;
@@ -197,8 +198,9 @@ Status DecodePositions(DecodeState& st, DecodedMesh* m) {
     if (h.position.prediction == Prediction::kParallelogram) {
       wedges.BuildFromOppositeVertices(st.tris, st.nw, st.opposite_vertices, &st.vertex_triangles);
     }
-    const Status s = DecodeQuantized(&st.dec, &wedges, st.nw, 3, h.position.bits,
-                                     h.position.prediction, st.order, &st.qpos);
+    const Status s =
+        DecodeQuantized(&st.dec, &wedges, st.nw, 3, h.position.bits, h.position.prediction,
+                        st.order, &st.qpos, nullptr, st.sh.low_bits);
     if (s != Status::kOk) return s;
   }
   m->positions.resize(size_t(st.nv) * 3);
@@ -310,7 +312,7 @@ Status DecodeAttributes(DecodeState& st, DecodedMesh* m) {
     }
     const Status r =
         DecodeQuantized(&dec, &mesh->wedges, mesh->n, int(d.dimension), d.bits, d.prediction,
-                        st.order, &q, texcoord ? &mesh->geometry : nullptr);
+                        st.order, &q, texcoord ? &mesh->geometry : nullptr, st.sh.low_bits);
     if (r != Status::kOk) return r;
     values->resize(q.size());
     d.quant.DequantizeAll(q.data(), nullptr, mesh->n, values->data());
@@ -360,7 +362,7 @@ Status DecodeAttributes(DecodeState& st, DecodedMesh* m) {
   return Status::kOk;
 }
 
-Status DecodeGroups(DecodeState& st, DecodedMesh* m) {
+O3DGC_WASM_MINSIZE Status DecodeGroups(DecodeState& st, DecodedMesh* m) {
   ArithmeticDecoder& dec = st.dec;
   if (!st.h.has_groups) return Status::kOk;
   m->triangle_groups.resize(st.nt);
@@ -379,7 +381,7 @@ Status DecodeGroups(DecodeState& st, DecodedMesh* m) {
 
 // New vertex i is input vertex vertex_perm[i]; decoded triangle j is input triangle
 // triangle_perm[j] starting at corner rotation[j].
-void ApplyExactOrder(const DecodeState& st, DecodedMesh* mesh) {
+O3DGC_WASM_MINSIZE void ApplyExactOrder(const DecodeState& st, DecodedMesh* mesh) {
   const uint32_t nv = st.nv;
   const size_t nt = st.nt;
   const std::vector<uint32_t>& vertex_perm = st.vertex_perm;
@@ -477,7 +479,7 @@ Status Decode(const uint8_t* data, size_t size, const DecodeOptions& options, De
   return DecodeBinary(data, size, options, out, info);
 }
 
-Status ReadStreamInfo(const uint8_t* data, size_t size, StreamInfo* info) {
+O3DGC_WASM_MINSIZE Status ReadStreamInfo(const uint8_t* data, size_t size, StreamInfo* info) {
   if (!info || (!data && size > 0)) return Status::kInvalidArgument;
   if (IsLegacyStream(data, size)) return ReadLegacyStreamInfo(data, size, info);
   std::vector<uint8_t> binary;
@@ -501,6 +503,7 @@ Status ReadStreamInfo(const uint8_t* data, size_t size, StreamInfo* info) {
   info->version_minor = sh.minor;
   info->keep_order = sh.keep_order;
   info->fast_decode = sh.fast_decode;
+  info->low_bits = sh.low_bits;
   info->num_vertices = size_t(h.num_vertices);
   info->num_triangles = size_t(h.num_triangles);
   info->total = size;

@@ -122,7 +122,27 @@ struct GridState {
   CodingOrder::Kind order;
   std::unique_ptr<SideModels> sm{new SideModels};
   std::vector<int32_t> qpos;  // quantized positions per position vertex
+  bool low_bits = false;      // format 1.2's modelled low bits (decided by the positions)
 };
+
+// Bytes of one section of quantized values coded alone (the choice of LowBits).
+size_t SectionBytes(const WedgeTable* wedges, const std::vector<int32_t>& q, int dim, int bits,
+                    Prediction mode, CodingOrder::Kind order, const std::vector<double>* geometry,
+                    LowBits low_bits) {
+  std::vector<uint8_t> scratch;
+  ArithmeticEncoder e(&scratch);
+  EncodeQuantized(&e, wedges, q, dim, bits, mode, order, geometry, low_bits);
+  e.Finish();
+  return scratch.size();
+}
+
+// Modelled low bits pay on meshes built on a design grid, whose residuals recur; elsewhere the
+// trees learn slower than the plain models. They cost decoding time (a decision per low bit, the
+// trees' set-up), so the stream takes them (format 1.2) only when the positions, coded alone, get
+// smaller by kLowBitsMinGain bytes (which covers the section bits of the other attributes) and by
+// 1 / kLowBitsMinShare of their bytes; the other sections then choose on their own.
+constexpr size_t kLowBitsMinGain = 2;
+constexpr size_t kLowBitsMinShare = 32;
 
 // Frees a working array whose last stage is done: the encoder's peak memory is the sum of the
 // arrays alive at once.
@@ -502,7 +522,16 @@ void EncodePositions(GridState& st) {
     }
   }
   if (!coded) {
-    EncodeQuantized(&enc, &wedges, qpos, 3, h.position.bits, h.position.prediction, order);
+    if (HasLowBitsChoice(h.position.prediction, nw, 3, false)) {
+      const size_t plain = SectionBytes(&wedges, qpos, 3, h.position.bits, h.position.prediction,
+                                        order, nullptr, LowBits::kNoFlag);
+      const size_t modelled = SectionBytes(&wedges, qpos, 3, h.position.bits, h.position.prediction,
+                                           order, nullptr, LowBits::kModelled);
+      st.low_bits =
+          modelled + kLowBitsMinGain <= plain && (plain - modelled) * kLowBitsMinShare >= plain;
+    }
+    EncodeQuantized(&enc, &wedges, qpos, 3, h.position.bits, h.position.prediction, order, nullptr,
+                    st.low_bits ? LowBits::kModelled : LowBits::kNoFlag);
   }
 }
 
@@ -625,8 +654,19 @@ void EncodeAttributes(GridState& st) {
       mesh.wedges.Build(*mesh.tris, mesh.n, conn.opposite, true);
       mesh.wedges_built = true;
     }
-    EncodeQuantized(&enc, &mesh.wedges, q, int(d.dimension), d.bits, d.prediction, order,
-                    texcoord ? &mesh.geometry : nullptr);
+    const std::vector<double>* geometry = texcoord ? &mesh.geometry : nullptr;
+    LowBits low_bits = st.low_bits ? LowBits::kPlain : LowBits::kNoFlag;
+    if (st.low_bits && HasLowBitsChoice(d.prediction, mesh.n, int(d.dimension), geometry)) {
+      const size_t plain = SectionBytes(&mesh.wedges, q, int(d.dimension), d.bits, d.prediction,
+                                        order, geometry, LowBits::kPlain);
+      const size_t modelled = SectionBytes(&mesh.wedges, q, int(d.dimension), d.bits, d.prediction,
+                                           order, geometry, LowBits::kModelled);
+      if (modelled < plain && (plain - modelled) * kLowBitsMinShare >= plain) {
+        low_bits = LowBits::kModelled;
+      }
+    }
+    EncodeQuantized(&enc, &mesh.wedges, q, int(d.dimension), d.bits, d.prediction, order, geometry,
+                    low_bits);
   };
   size_t mark = enc.BytesSoFar();
   if (h.has_normals) {
@@ -735,7 +775,7 @@ Status EncodeGrid(const Prepared& pre, Prepared* release, int position_bits,
   AddTailBytes(h, st.payload.size() > mark ? st.payload.size() - mark : 0, &si);
   const EncodeParams& params = pre.params;
   out->clear();
-  WriteHeader(params.keep_order, st.fast_decode, st.payload.size(), out);
+  WriteHeader(params.keep_order, st.fast_decode, st.low_bits, st.payload.size(), out);
   const size_t byte_header = out->size();
   out->insert(out->end(), st.payload.begin(), st.payload.end());
   Release(st.payload);
@@ -743,9 +783,10 @@ Status EncodeGrid(const Prepared& pre, Prepared* release, int position_bits,
   si.header += byte_header;
   si.stream_type = params.stream_type;
   si.version_major = kFormatMajor;
-  si.version_minor = kFormatMinor;
+  si.version_minor = WrittenMinor(st.low_bits);
   si.keep_order = params.keep_order;
   si.fast_decode = st.fast_decode;
+  si.low_bits = st.low_bits;
   si.num_vertices = pre.nv;
   si.num_triangles = pre.nt;
   if (params.stream_type == StreamType::kAscii) *out = PackAscii(*out);

@@ -175,6 +175,15 @@ struct ResidualEscape {
   BitModel more[kMaxEGPrefix - kHighClasses + 1];
 };
 
+// Modelled low bits (format 1.2, adaptive coding only): the k bits below the leading one of a
+// residual of class 1 + k <= kTreeMaxK + 1 are coded one by one, each with the bit model of its
+// place in a binary tree over the magnitudes of that class (model (1 << k) - 1 + p, where p is the
+// magnitude's bits read so far, leading one included), instead of one adaptive bit and k - 1 raw
+// ones. On meshes built on a design grid the same few residual values recur in every class, and
+// the tree learns them; raw bits cannot. One tree per component (kTreeModels models each).
+constexpr int kTreeMaxK = 12;
+constexpr size_t kTreeModels = (size_t(2) << kTreeMaxK) - 1;
+
 // The low `count` bits of v (count <= 64) to the raw stream, most significant first.
 inline void EncodeRawWide(ArithmeticEncoder& e, uint64_t v, int count) {
   while (count > 0) {
@@ -194,10 +203,11 @@ O3DGC_INLINE uint64_t DecodeRawWide(ArithmeticDecoder& d, uint64_t v, int count)
   return v;
 }
 
-// `shift` in 0..kMaxClassShift.
+// `shift` in 0..kMaxClassShift; `tree` (adaptive coding only): the component's tree of modelled
+// low bits, or null.
 template <bool kRawLow>
 O3DGC_INLINE void EncodeResidual(ArithmeticEncoder& e, ResidualModel& m, ResidualEscape& x,
-                                 int64_t r, int shift = 0) {
+                                 int64_t r, int shift = 0, BitModel* tree = nullptr) {
   const uint64_t v = uint64_t(r < 0 ? -r : r);
   const int k = r == 0 ? -1 : FloorLog2(v);
   const int cls = k + 1;
@@ -231,6 +241,16 @@ O3DGC_INLINE void EncodeResidual(ArithmeticEncoder& e, ResidualModel& m, Residua
   }
   e.Encode(r < 0, m.sign);
   if (k == 0) return;
+  if (tree && k <= kTreeMaxK) {
+    BitModel* const level = tree + (size_t(1) << k) - 1;
+    uint32_t p = 1;
+    for (int j = k - 1; j >= 0; --j) {
+      const int bit = int((v >> j) & 1);
+      e.Encode(bit, level[p]);
+      p = 2 * p + uint32_t(bit);
+    }
+    return;
+  }
   e.Encode(int((v >> (k - 1)) & 1), m.mantissa[k < kDirectClasses ? k : kDirectClasses]);
   EncodeRawWide(e, v, k - 1);
 }
@@ -246,9 +266,20 @@ O3DGC_INLINE int DecodeHighClass(ArithmeticDecoder& d, ResidualEscape& x, int h,
   return k;
 }
 
-// The sign and the k bits below the leading one of a residual of class 1 + k.
+// The magnitude of class 1 + k (1 <= k <= kTreeMaxK) from its tree of modelled low bits; out of
+// line: used on small meshes only, where it costs no time that matters, and the loops stay small.
+O3DGC_INLINE uint64_t DecodeTreeBits(ArithmeticDecoder& d, BitModel* tree, int k) {
+  BitModel* const level = tree + (size_t(1) << k) - 1;
+  uint32_t p = 1;
+  for (int j = 0; j < k; ++j) p = 2 * p + uint32_t(d.Decode(level[p]));
+  return p;
+}
+
+// The sign and the k bits below the leading one of a residual of class 1 + k (`tree`: see
+// EncodeResidual).
 template <bool kRawLow>
-O3DGC_INLINE int64_t DecodeSignAndLowBits(ArithmeticDecoder& d, ResidualModel& m, int k) {
+O3DGC_INLINE int64_t DecodeSignAndLowBits(ArithmeticDecoder& d, ResidualModel& m, int k,
+                                          BitModel* tree = nullptr) {
   int neg;
   uint64_t v = 1;
   if (kRawLow) {
@@ -262,7 +293,9 @@ O3DGC_INLINE int64_t DecodeSignAndLowBits(ArithmeticDecoder& d, ResidualModel& m
     }
   } else {
     neg = d.Decode(m.sign);
-    if (k > 0) {
+    if (tree && k > 0 && k <= kTreeMaxK) {
+      v = DecodeTreeBits(d, tree, k);
+    } else if (k > 0) {
       v = 2 | uint64_t(d.Decode(m.mantissa[k < kDirectClasses ? k : kDirectClasses]));
       v = DecodeRawWide(d, v, k - 1);
     }
@@ -276,7 +309,7 @@ O3DGC_INLINE int64_t DecodeSignAndLowBits(ArithmeticDecoder& d, ResidualModel& m
 // before the sign and the low bits are read.
 template <bool kRawLow>
 O3DGC_INLINE int64_t DecodeResidual(ArithmeticDecoder& d, ResidualModel& m, ResidualEscape& x,
-                                    int* first_symbol = nullptr) {
+                                    int* first_symbol = nullptr, BitModel* tree = nullptr) {
   const int symbol = d.Decode(m.magnitude);
   if (first_symbol) *first_symbol = symbol;
   if (symbol == 0) return 0;
@@ -284,7 +317,7 @@ O3DGC_INLINE int64_t DecodeResidual(ArithmeticDecoder& d, ResidualModel& m, Resi
   if (O3DGC_UNLIKELY(symbol == kEscapeSymbol)) {
     k = DecodeHighClass(d, x, d.Decode(m.high), kDirectClasses);
   }
-  return DecodeSignAndLowBits<kRawLow>(d, m, k);
+  return DecodeSignAndLowBits<kRawLow>(d, m, k, tree);
 }
 
 // Inverse of EncodeResidual with any shift (0..kMaxClassShift). A separate function: the loops

@@ -4,7 +4,8 @@
 //   bytes 0..3   magic "O3DG"
 //   byte  4      format major version (kFormatMajor)
 //   byte  5      format minor version (kFormatMinor)
-//   byte  6      flags (bit 0: keep_order; bit 1: fast_decode; other bits must be 0 in 1.0)
+//   byte  6      flags (bit 0: keep_order; bit 1: fast_decode; bit 2, from format 1.2 on:
+//                modelled low bits; other bits must be 0)
 //   bytes 7..10  CRC32 (IEEE, little endian) of every other byte of the stream (bytes 0..6, then
 //                every byte after this field)
 //   varint      payload length in bytes (LEB128, at most 5 bytes)
@@ -31,6 +32,7 @@ struct StreamHeader {
   uint32_t minor = kFormatMinor;
   bool keep_order = false;
   bool fast_decode = false;  // parallelogram-predicted values coded in vertex id order
+  bool low_bits = false;     // 1.2: sections of adaptively coded values say if they model low bits
   size_t payload_offset = 0;
   size_t payload_size = 0;
   uint32_t crc = 0;
@@ -42,9 +44,15 @@ uint32_t Crc32(const uint8_t* data, size_t size, uint32_t crc = 0);
 // byte but the CRC field, so that the version and flags are covered too.
 uint32_t StreamCrc(const uint8_t* data, size_t size);
 
+// The first format minor version with modelled low bits (the flag `low_bits`).
+constexpr uint32_t kLowBitsMinor = 2;
+
 // Appends the header for a payload of `payload_size` bytes; the CRC field is left zero and filled
-// by FinalizeCrc once the payload is appended.
-void WriteHeader(bool keep_order, bool fast_decode, size_t payload_size, std::vector<uint8_t>* out);
+// by FinalizeCrc once the payload is appended. The minor version written is the lowest that has
+// the stream's features: kLowBitsMinor with `low_bits`, else 1 (older decoders read the stream).
+void WriteHeader(bool keep_order, bool fast_decode, bool low_bits, size_t payload_size,
+                 std::vector<uint8_t>* out);
+inline uint32_t WrittenMinor(bool low_bits) { return low_bits ? kLowBitsMinor : 1; }
 void FinalizeCrc(std::vector<uint8_t>* stream);
 
 // Parses and checks the header of a binary stream of `size` bytes; the payload must end exactly at

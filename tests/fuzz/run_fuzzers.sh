@@ -44,6 +44,14 @@ awk 'function r() { s = (s * 1103515245 + 12345) % 2147483648; return 0.008 * (s
 # The rough grid and the tetrahedron again, coded in vertex id order (test_o3dgc -fast).
 "$enc" -c -i "$gen/rough_grid.obj" -st binary -qc 14 -fast >/dev/null && mv "$gen/rough_grid.s3d" "$gen/o3dgc_decoder_fuzzer/rough_grid_fast.s3d"
 "$enc" -c -i "$gen/tetra.obj" -st binary -qc 10 -fast >/dev/null && mv "$gen/tetra.s3d" "$gen/o3dgc_decoder_fuzzer/tetra_fast.s3d"
+# Boxes on a design grid: the encoder writes format 1.2 with modelled low bits (entropy.h).
+awk 'BEGIN { n = 0
+  for (j = 0; j < 4; ++j) for (i = 0; i < 5; ++i) { h = 0.7 * (2 + (i + 2 * j) % 5)
+    for (c = 0; c < 8; ++c) printf "v %.4f %.4f %.4f\n", 0.7 * (3 * i + 2 * (c % 2)), 0.7 * (3 * j + 2 * (int(c / 2) % 2)), (c >= 4) ? h : 0
+    split("1 3 2 2 3 4 5 6 7 6 8 7 1 2 5 2 6 5 3 7 4 4 7 8 1 5 3 3 5 7 2 4 6 4 8 6", f, " ")
+    for (t = 0; t < 12; ++t) printf "f %d %d %d\n", n + f[3 * t + 1], n + f[3 * t + 2], n + f[3 * t + 3]
+    n += 8 } }' >"$gen/grid_blocks.obj"
+"$enc" -c -i "$gen/grid_blocks.obj" -st binary -qc 14 >/dev/null && mv "$gen/grid_blocks.s3d" "$gen/o3dgc_decoder_fuzzer/grid_blocks.s3d"
 # Packed GLBs stay small (a few KB): the fuzzer's speed is set by the JSON text it scans.
 rm -f "$gen/packed_glb_fuzzer/"*.glb
 pack -o "$gen/packed_glb_fuzzer/hulls.glb" --max-hulls 2

@@ -1,6 +1,8 @@
-// Attribute coding: the class shifts of large meshes, chosen from the residuals and sent with them.
+// Attribute coding: the class shifts of large meshes, chosen from the residuals and sent with them;
+// format 1.2's modelled low bits.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <map>
 #include <random>
@@ -114,6 +116,73 @@ TEST(ClassShifts, LargeMeshWithLargeResidualsRoundTripsThroughShifts) {
               Status::kOk);
     EXPECT_EQ(decoded, q) << "noise " << noise;
   }
+}
+
+// Positions of a grid-built model (GridBlocks) quantized so that the grid step is 937 steps: the
+// residuals are a few multiples of it, whose low bits recur.
+std::vector<int32_t> GridQuantized(const o3dgc_test::TestMesh& t) {
+  std::vector<int32_t> q(t.positions.size());
+  for (size_t i = 0; i < q.size(); ++i) q[i] = int32_t(std::lround(t.positions[i] / 0.7 * 937)) + 5;
+  return q;
+}
+
+size_t CodedBytes(const WedgeTable& wedges, const std::vector<int32_t>& q, LowBits low_bits) {
+  std::vector<uint8_t> buf;
+  ArithmeticEncoder enc(&buf);
+  EncodeQuantized(&enc, &wedges, q, 3, 16, Prediction::kParallelogram, CodingOrder::kGreedy,
+                  nullptr, low_bits);
+  enc.Finish();
+  return buf.size();
+}
+
+TEST(ModelledLowBits, RoundTripEachChoiceAndSmallerOnAGrid) {
+  const o3dgc_test::TestMesh t = o3dgc_test::GridBlocks(6, 5);
+  const uint32_t n = uint32_t(t.nv());
+  WedgeTable wedges;
+  wedges.Build(t.indices, n, o3dgc_test::OppositeCorners(t.indices), true);
+  const std::vector<int32_t> q = GridQuantized(t);
+  for (const LowBits low : {LowBits::kNoFlag, LowBits::kPlain, LowBits::kModelled}) {
+    std::vector<uint8_t> buf;
+    ArithmeticEncoder enc(&buf);
+    EncodeQuantized(&enc, &wedges, q, 3, 16, Prediction::kParallelogram, CodingOrder::kGreedy,
+                    nullptr, low);
+    enc.Finish();
+    ArithmeticDecoder dec(buf.data(), buf.size());
+    std::vector<int32_t> decoded;
+    ASSERT_EQ(DecodeQuantized(&dec, &wedges, n, 3, 16, Prediction::kParallelogram,
+                              CodingOrder::kGreedy, &decoded, nullptr, low != LowBits::kNoFlag),
+              Status::kOk);
+    EXPECT_EQ(decoded, q) << int(low);
+  }
+  EXPECT_LT(CodedBytes(wedges, q, LowBits::kModelled), CodedBytes(wedges, q, LowBits::kPlain));
+}
+
+TEST(ModelledLowBits, DifferentialValuesRoundTrip) {
+  // Residuals of every class, the large ones past kTreeMaxK (coded as without trees).
+  std::mt19937 rng(3);
+  const uint32_t n = 700;
+  std::vector<int32_t> q(size_t(n) * 2);
+  for (size_t i = 0; i < q.size(); ++i) q[i] = int32_t(rng() >> (rng() % 32 + 2)) & 0x3FFFFFF;
+  std::vector<uint8_t> buf;
+  ArithmeticEncoder enc(&buf);
+  EncodeQuantized(&enc, nullptr, q, 2, 26, Prediction::kDifferential, CodingOrder::kGreedy, nullptr,
+                  LowBits::kModelled);
+  enc.Finish();
+  ArithmeticDecoder dec(buf.data(), buf.size());
+  std::vector<int32_t> decoded;
+  ASSERT_EQ(DecodeQuantized(&dec, nullptr, n, 2, 26, Prediction::kDifferential,
+                            CodingOrder::kGreedy, &decoded, nullptr, true),
+            Status::kOk);
+  EXPECT_EQ(decoded, q);
+}
+
+TEST(ModelledLowBits, OnlyWhereTheFormatOffersIt) {
+  EXPECT_TRUE(HasLowBitsChoice(Prediction::kParallelogram, 100, 3, false));
+  EXPECT_TRUE(HasLowBitsChoice(Prediction::kParallelogram, 100, 2, true));
+  EXPECT_TRUE(HasLowBitsChoice(Prediction::kDifferential, 100, 4, false));
+  EXPECT_FALSE(HasLowBitsChoice(Prediction::kParallelogram, 100, 2, false));
+  EXPECT_FALSE(HasLowBitsChoice(Prediction::kNone, 100, 3, false));
+  EXPECT_FALSE(HasLowBitsChoice(Prediction::kParallelogram, kRawLowBitsMesh, 3, false));
 }
 
 }  // namespace

@@ -2,11 +2,13 @@
 //  - every committed stream of every released version decodes to exactly its committed mesh
 //    (NAME.s3d -> NAME.txt), so that a later decoder still reads every stream from 1.0 on;
 //  - the encoder's output for the fixed inputs below is byte for byte the committed stream of the
-//    current version: a change of the encoder's output without a new version fails here.
+//    version it writes (the lowest version with the stream's features: a stream without the
+//    features of 1.2 is a 1.1 stream): a change of the encoder's output without a new version
+//    fails here.
 // The inputs are built with exact arithmetic only (no sin/cos), so they are the same bits on every
 // platform. To write the vectors of a new version (after raising kFormatMinor):
 //   O3DGC_WRITE_CONFORMANCE=1 build/tests/o3dgc/o3dgc_tests --gtest_filter='Conformance.*'
-// and add the new folder to conformance/VERSIONS.
+// and add the new folder to conformance/VERSIONS. Each stream goes to the folder of its version.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -238,6 +240,11 @@ std::vector<Vector> Vectors() {
          return t;
        },
        [](EncodeParams* p) { p->auto_fast_decode = false; }},
+      // From 1.2: a model built on a design grid, whose positions and texture coordinates take
+      // modelled low bits, and the same as ASCII.
+      {"grid_blocks", [] { return o3dgc_test::GridBlocks(5, 4); }, none},
+      {"grid_blocks_ascii", [] { return o3dgc_test::GridBlocks(4, 3); },
+       [](EncodeParams* p) { p->stream_type = StreamType::kAscii; }},
   };
 }
 
@@ -265,7 +272,6 @@ std::vector<std::string> Versions() {
 bool Writing() { return std::getenv("O3DGC_WRITE_CONFORMANCE") != nullptr; }
 
 TEST(Conformance, EncoderOutputIsFrozenForTheCurrentVersion) {
-  const std::string dir = Dir() + CurrentVersion() + "/";
   for (const Vector& v : Vectors()) {
     SCOPED_TRACE(v.name);
     const TestMesh t = v.mesh();
@@ -274,6 +280,12 @@ TEST(Conformance, EncoderOutputIsFrozenForTheCurrentVersion) {
     std::vector<uint8_t> stream;
     ASSERT_EQ(Encode(ViewOf(t, v), p, &stream), Status::kOk);
     const std::string bytes(stream.begin(), stream.end());
+    StreamInfo written;
+    ASSERT_EQ(ReadStreamInfo(stream.data(), stream.size(), &written), Status::kOk);
+    ASSERT_EQ(written.version_major, kFormatMajor);
+    ASSERT_LE(written.version_minor, kFormatMinor);
+    const std::string dir = Dir() + std::to_string(written.version_major) + "." +
+                            std::to_string(written.version_minor) + "/";
     if (Writing()) {
       WriteFile(dir + v.name + ".s3d", bytes);
       DecodedMesh m;
@@ -322,7 +334,7 @@ TEST(Conformance, EveryVectorOfEveryVersionDecodesToItsMesh) {
 // mesh, never to the committed one silently (the CRC covers the payload).
 TEST(Conformance, FlippedBitsAreDetected) {
   std::string stream;
-  ASSERT_TRUE(ReadFile(Dir() + CurrentVersion() + "/positions.s3d", &stream));
+  ASSERT_TRUE(ReadFile(Dir() + CurrentVersion() + "/grid_blocks.s3d", &stream));
   for (size_t i = 0; i < stream.size(); ++i) {
     std::vector<uint8_t> c(stream.begin(), stream.end());
     c[i] ^= uint8_t(1u << (i % 8));

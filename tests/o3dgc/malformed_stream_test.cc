@@ -169,7 +169,7 @@ TEST(Malformed, RandomGarbageAfterHeader) {
     for (size_t i = 0; i < n; ++i) c.push_back(uint8_t(rng()));
     // Fix the payload length so the header parses.
     std::vector<uint8_t> out;
-    WriteHeader(false, false, n, &out);
+    WriteHeader(false, false, false, n, &out);
     out.insert(out.end(), c.begin() + 11, c.end());
     FinalizeCrc(&out);
     DecodedMesh m;
@@ -199,7 +199,7 @@ TEST(Malformed, HugeVertexCountRejectedQuickly) {
     enc.Finish();
   }
   std::vector<uint8_t> s;
-  WriteHeader(false, false, payload.size(), &s);
+  WriteHeader(false, false, false, payload.size(), &s);
   s.insert(s.end(), payload.begin(), payload.end());
   FinalizeCrc(&s);
   const auto t0 = std::chrono::steady_clock::now();
@@ -211,6 +211,23 @@ TEST(Malformed, HugeVertexCountRejectedQuickly) {
   EXPECT_EQ(st, Status::kLimitExceeded) << StatusName(st);
   EXPECT_EQ(Decode(s.data(), s.size(), DecodeOptions(), &m), Status::kLimitExceeded);
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 0.5);
+}
+
+// Format 1.2's modelled low bits (a grid-built model takes them): flips and cuts of the payload.
+TEST(Malformed, ModelledLowBitsFlipsAndCuts) {
+  const o3dgc_test::TestMesh t = o3dgc_test::GridBlocks(6, 5);
+  std::vector<uint8_t> s;
+  StreamInfo info;
+  ASSERT_EQ(Encode(t.View(), EncodeParams(), &s, &info), Status::kOk);
+  ASSERT_TRUE(info.low_bits);
+  std::mt19937 rng(12);
+  ExpectFlipsAndCutsHandled(s, rng, 3000);
+  for (size_t n = 0; n < s.size(); ++n) {
+    DecodedMesh m;
+    DecodeOptions o;
+    o.verify_checksum = false;
+    EXPECT_NE(Decode(s.data(), n, o, &m), Status::kOk) << n;
+  }
 }
 
 TEST(Malformed, HeaderChecks) {
@@ -230,6 +247,13 @@ TEST(Malformed, HeaderChecks) {
   EXPECT_EQ(Decode(c.data(), c.size(), DecodeOptions(), &m), Status::kBadVersion);
   for (const uint8_t flag : {4, 8, 128}) {  // bits 0 (keep_order) and 1 (fast_decode) are defined
     c = s;
+    c[5] = 1;
+    c[6] |= flag;
+    EXPECT_EQ(Decode(c.data(), c.size(), DecodeOptions(), &m), Status::kCorrupt) << int(flag);
+  }
+  for (const uint8_t flag : {8, 16, 128}) {  // 1.2 adds bit 2 (modelled low bits)
+    c = s;
+    c[5] = uint8_t(kLowBitsMinor);
     c[6] |= flag;
     EXPECT_EQ(Decode(c.data(), c.size(), DecodeOptions(), &m), Status::kCorrupt) << int(flag);
   }

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "o3dgc/o3dgc.h"
@@ -172,6 +173,32 @@ TEST(RoundTrip, DefaultModeKeepsTriangleSet) {
   }
 }
 
+// Format 1.2's modelled low bits: taken by a grid-built model (version 1.2, flag reported by
+// ReadStreamInfo), left out where they do not pay (a smooth sphere stays a 1.1 stream).
+TEST(RoundTrip, ModelledLowBitsOnlyWhereTheyPay) {
+  for (const bool grid : {true, false}) {
+    TestMesh t = grid ? o3dgc_test::GridBlocks(6, 5) : o3dgc_test::Sphere(24, 16);
+    // A scan-like sphere: positions off any grid (a symmetric sphere's residuals recur).
+    std::mt19937 rng(9);
+    if (!grid) {
+      for (float& x : t.positions) x += float(rng() % 1000) * 1e-5f;
+    }
+    EncodeParams p;
+    std::vector<uint8_t> s;
+    StreamInfo info;
+    ASSERT_EQ(Encode(t.View(), p, &s, &info), Status::kOk);
+    EXPECT_EQ(info.low_bits, grid);
+    EXPECT_EQ(info.version_minor, grid ? 2u : 1u);
+    StreamInfo read;
+    ASSERT_EQ(ReadStreamInfo(s.data(), s.size(), &read), Status::kOk);
+    EXPECT_EQ(read.low_bits, grid);
+    EXPECT_EQ(read.version_minor, info.version_minor);
+    const DecodedMesh m = DecodeOk(s);
+    EXPECT_EQ(m.num_triangles(), t.nt());
+    CheckTriangleSet(t, m, p.position_bits);
+  }
+}
+
 TestMesh SeamedGrid(bool hard);  // below
 
 // A GridEncoder's stream for a grid is Encode's with that grid, byte for byte, and its part sizes
@@ -257,17 +284,17 @@ TEST(RoundTrip, FastDecodeGivesTheSameMeshFromAnotherStream) {
         std::vector<uint8_t> slow, fast, automatic;
         StreamInfo si;
         ASSERT_EQ(Encode(v, p, &slow), Status::kOk);
-        EXPECT_EQ(slow[6], keep ? 1 : 0);
+        EXPECT_EQ(slow[6] & 3, keep ? 1 : 0);  // bit 2: modelled low bits (1.2)
         // The automatic choice writes one of the two streams, and says which in its flags.
         p.auto_fast_decode = true;
         StreamInfo ai;
         ASSERT_EQ(Encode(v, p, &automatic, &ai), Status::kOk);
-        EXPECT_EQ(automatic[6] == (keep ? 3 : 2), ai.fast_decode);
+        EXPECT_EQ((automatic[6] & 3) == (keep ? 3 : 2), ai.fast_decode);
         p.auto_fast_decode = false;
         p.fast_decode = true;
         ASSERT_EQ(Encode(v, p, &fast, &si), Status::kOk);
         EXPECT_TRUE(si.fast_decode);
-        EXPECT_EQ(fast[6], keep ? 3 : 2);  // the flags byte
+        EXPECT_EQ(fast[6] & 3, keep ? 3 : 2);  // the flags byte
         if (t.nv() > 100) {
           EXPECT_NE(slow, fast);
         }
@@ -471,9 +498,11 @@ TEST(RoundTrip, DeterministicAndStreamInfoAddsUp) {
   EXPECT_EQ(read.num_vertices, t.nv());
   EXPECT_EQ(read.num_triangles, t.nt());
   EXPECT_EQ(read.version_major, kFormatMajor);
-  EXPECT_EQ(read.version_minor, kFormatMinor);
+  // The lowest version with the stream's features (1.1, or 1.2 with modelled low bits).
+  EXPECT_EQ(read.version_minor, info.version_minor);
+  EXPECT_EQ(info.version_minor, info.low_bits ? 2u : 1u);
   EXPECT_EQ(info.version_major, 1u);
-  EXPECT_STREQ(FormatVersionString(), "1.1");
+  EXPECT_STREQ(FormatVersionString(), "1.2");
 }
 
 TEST(RoundTrip, RejectsInvalidInput) {

@@ -59,6 +59,36 @@ struct TestMesh {
   }
 };
 
+// A model built on a design grid, like a low-poly game building: nx x ny closed boxes (8
+// vertices, 12 triangles each) whose corners lie on a grid of 0.7 units with heights from a
+// short list, and texture coordinates on a grid of 1/8. Its residuals recur (format 1.2's
+// modelled low bits).
+inline TestMesh GridBlocks(int nx, int ny) {
+  TestMesh t;
+  const int heights[5] = {2, 3, 5, 3, 7};
+  for (int j = 0; j < ny; ++j) {
+    for (int i = 0; i < nx; ++i) {
+      const uint32_t base = uint32_t(t.nv());
+      const float x0 = 0.7f * float(3 * i), x1 = 0.7f * float(3 * i + 2);
+      const float y0 = 0.7f * float(3 * j), y1 = 0.7f * float(3 * j + 2);
+      const float z1 = 0.7f * float(heights[(i + 2 * j) % 5]);
+      for (int c = 0; c < 8; ++c) {
+        t.positions.insert(t.positions.end(),
+                           {c & 1 ? x1 : x0, c & 2 ? y1 : y0, c & 4 ? z1 : 0.0f});
+        t.uvs.insert(t.uvs.end(), {float(((c & 1) + (c >> 2)) % 4) / 8,
+                                   float(((c >> 1) & 1) * 3 + (i + j) % 3) / 8});
+      }
+      const uint32_t faces[12][3] = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6},
+                                     {0, 1, 4}, {1, 5, 4}, {2, 6, 3}, {3, 6, 7},
+                                     {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+      for (const auto& f : faces) {
+        t.indices.insert(t.indices.end(), {base + f[0], base + f[1], base + f[2]});
+      }
+    }
+  }
+  return t;
+}
+
 // (n+1) x (m+1) vertex grid in the unit square (test_shapes::Grid), z = small bump; uv = xy.
 inline TestMesh Grid(int n, int m) {
   const test_shapes::Shape grid = test_shapes::Grid(n, m);

@@ -58,7 +58,8 @@ Status CheckOutputPath(const std::string& output, const std::vector<std::string>
 }
 
 std::string FormatVersionText() {
-  return std::string("writes o3dgc stream format ") + o3dgc::FormatVersionString() +
+  return std::string("writes o3dgc stream format ") + std::to_string(o3dgc::kFormatMajor) +
+         ".1, or " + o3dgc::FormatVersionString() + " where modelled low bits pay," +
          " in glTF 2.0 binary (GLB version 2); reads o3dgc stream formats " +
          std::to_string(o3dgc::kFormatMajor) + ".0 to " + o3dgc::FormatVersionString() +
          " and original Open3DGC (2013) streams";

@@ -289,9 +289,11 @@ int main(int argc, char** argv) {
       "NAME.s3d, or decompresses a stream (this project's or the original Open3DGC tool's) to\n"
       "NAME_dec.obj, both next to INPUT, where NAME is INPUT without its extension. The\n"
       "single-dash spellings are the original tool's.");
-  cli.VersionDetail(std::string("writes o3dgc stream format ") + o3dgc::FormatVersionString() +
-                    "; reads formats " + std::to_string(o3dgc::kFormatMajor) + ".0 to " +
-                    o3dgc::FormatVersionString() + " and original Open3DGC (2013) streams");
+  cli.VersionDetail(std::string("writes o3dgc stream format ") +
+                    std::to_string(o3dgc::kFormatMajor) + ".1, or " + o3dgc::FormatVersionString() +
+                    " where modelled low bits pay; reads formats " +
+                    std::to_string(o3dgc::kFormatMajor) + ".0 to " + o3dgc::FormatVersionString() +
+                    " and original Open3DGC (2013) streams");
   cli.Flag("-c, --compress", &compress, "compress INPUT to NAME.s3d");
   cli.Flag("-d, --decompress", &decompress, "decompress the stream INPUT to NAME_dec.obj");
   cli.String("-i, --input", "INPUT", &input, "the file to read (or give it as the operand)");

@@ -28,7 +28,9 @@
 //    arithmetic-coded payload. The ASCII form ("O3DA") is the same stream repacked 7 bits per
 //    byte. The format is specified in docs/o3dgc-stream-format.md.
 //
-// Format versions: Encode writes version kFormatMajor.kFormatMinor. Decode reads every stream of
+// Format versions: Encode writes the lowest version that has the stream's features (1.2 when it
+// models residuals' low bits, which pays on models built on a design grid; else 1.1, which older
+// decoders read), at most kFormatMajor.kFormatMinor. Decode reads every stream of
 // major version 1 up to its own minor version (a later feature is a new minor version or a new
 // flag, never a change of what an existing version means); a stream of another major version, or
 // of a later minor version than the decoder's, is kBadVersion.
@@ -52,11 +54,12 @@
 
 namespace o3dgc {
 
-// Stream format version written by Encode (see "Format versions" above).
+// The newest stream format version, which Encode writes when a stream needs it (see "Format
+// versions" above) and Decode reads.
 constexpr uint32_t kFormatMajor = 1;
-constexpr uint32_t kFormatMinor = 1;
+constexpr uint32_t kFormatMinor = 2;
 
-// "1.0": the stream format version this library writes, for --version output.
+// "1.2": the newest stream format version this library writes and reads, for --version output.
 const char* FormatVersionString();
 
 enum class Status : uint8_t {
@@ -224,7 +227,8 @@ struct StreamInfo {
   uint32_t version_minor = 0;
   bool keep_order = false;
   bool fast_decode =
-      false;  // values in vertex id order (EncodeParams::fast_decode, auto_fast_decode)
+      false;              // values in vertex id order (EncodeParams::fast_decode, auto_fast_decode)
+  bool low_bits = false;  // format 1.2: modelled low bits (grid-built meshes; chosen by Encode)
   size_t num_vertices = 0;
   size_t num_triangles = 0;
   size_t total = 0;
