@@ -124,20 +124,28 @@ TEST(OrientedCutsTest, ClipPolygonKeepsTheSideBelowEachPlane) {
 }
 
 // A rotated L: two convex arms whose joint no axis-aligned plane can follow. With two hulls, cuts
-// along the part's own axes separate the arms; voxel slices left a hull over the inner corner.
+// along the part's own axes (Parameters::oriented_cuts) separate the arms; voxel slices leave a
+// hull over the inner corner.
 TEST(OrientedCutsTest, RotatedLInTwoHullsIsCloseWithOrientedCuts) {
   for (const auto& shape : hullpack::shapes::RotatedShapes()) {
     if (shape.name != "rot_l_30_45" && shape.name != "rot_l_45_30") continue;
     const auto& m = shape.mesh;
+    const vhacd::MeshView view = vhacd::MeshView::FromDouble(m.points.data(), m.point_count(),
+                                                             m.indices.data(), m.triangle_count());
     vhacd::Parameters p;
     p.num_threads = 2;
     p.hull_count = 2;
-    const vhacd::Result r =
-        vhacd::Decompose(vhacd::MeshView::FromDouble(m.points.data(), m.point_count(),
-                                                     m.indices.data(), m.triangle_count()),
-                         p);
+    const vhacd::Result slices = vhacd::Decompose(view, p);
+    p.oriented_cuts = true;
+    const vhacd::Result r = vhacd::Decompose(view, p);
     ASSERT_EQ(r.hulls.size(), 2u) << shape.name;
     EXPECT_LT(r.report.concavity, 0.015) << shape.name;
+    EXPECT_LT(r.report.concavity, 0.5 * slices.report.concavity) << shape.name;
+    // Independent of the thread count.
+    p.num_threads = 1;
+    const vhacd::Result one = vhacd::Decompose(view, p);
+    ASSERT_EQ(one.hulls.size(), r.hulls.size());
+    for (size_t h = 0; h < r.hulls.size(); ++h) EXPECT_EQ(one.hulls[h].points, r.hulls[h].points);
   }
 }
 

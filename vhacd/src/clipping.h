@@ -31,7 +31,7 @@ struct ClipParams {
   double max_stick = 0.0;
   // Also try planes along each part's own axes (oriented_cuts.h), kept where they give closer
   // hulls on the exact surface (needs meter and index).
-  bool oriented_cuts = true;
+  bool oriented_cuts = false;
 };
 
 struct ClipOutput {
