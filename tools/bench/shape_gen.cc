@@ -229,6 +229,55 @@ std::vector<NamedShape> BenchmarkShapes() {
   return out;
 }
 
+ShapeMesh StarPrism(const std::vector<double>& xy, double cx, double cy, double z0, double z1) {
+  ShapeMesh m;
+  const uint32_t n = static_cast<uint32_t>(xy.size() / 2);
+  for (uint32_t i = 0; i < n; ++i) m.AddPoint(xy[2 * i], xy[2 * i + 1], z0);
+  for (uint32_t i = 0; i < n; ++i) m.AddPoint(xy[2 * i], xy[2 * i + 1], z1);
+  const uint32_t bottom = m.AddPoint(cx, cy, z0), top = m.AddPoint(cx, cy, z1);
+  for (uint32_t i = 0; i < n; ++i) {
+    const uint32_t j = (i + 1) % n;
+    m.AddTriangle(bottom, j, i);
+    m.AddTriangle(top, n + i, n + j);
+    m.AddQuad(i, j, n + j, n + i);
+  }
+  return m;
+}
+
+ShapeMesh Rotated(ShapeMesh mesh, double ax, double az) {
+  const double kDeg = 3.14159265358979323846 / 180.0;
+  const double cx = std::cos(ax * kDeg), sx = std::sin(ax * kDeg);
+  const double cz = std::cos(az * kDeg), sz = std::sin(az * kDeg);
+  for (size_t i = 0; i < mesh.points.size(); i += 3) {
+    const double x = mesh.points[i], y = mesh.points[i + 1], z = mesh.points[i + 2];
+    const double y1 = cx * y - sx * z, z1 = sx * y + cx * z;
+    mesh.points[i] = cz * x - sz * y1;
+    mesh.points[i + 1] = sz * x + cz * y1;
+    mesh.points[i + 2] = z1;
+  }
+  return mesh;
+}
+
+std::vector<NamedShape> RotatedShapes() {
+  // Arms 1 thick; the L's arms 3 long, the T's bar 4 wide, the cross 3 x 3.
+  const std::vector<double> l = {0, 0, 3, 0, 3, 1, 1, 1, 1, 3, 0, 3};
+  const std::vector<double> t = {-0.5, 0, 0.5, 0, 0.5, 2, 2, 2, 2, 3, -2, 3, -2, 2, -0.5, 2};
+  const std::vector<double> cross = {-0.5, -1.5, 0.5,  -1.5, 0.5,  -0.5, 1.5,  -0.5,
+                                     1.5,  0.5,  0.5,  0.5,  0.5,  1.5,  -0.5, 1.5,
+                                     -0.5, 0.5,  -1.5, 0.5,  -1.5, -0.5, -0.5, -0.5};
+  const double c60 = 0.5, s60 = std::sqrt(0.75);
+  // Two arms 3 long and 1 thick from the origin, along x and at 60 degrees from it.
+  const std::vector<double> v = {
+      0, 0, 3, 0, 3, 1, c60 / s60, 1, 3 * c60, 3 * s60, 3 * c60 - s60, 3 * s60 + c60, -s60, c60};
+  std::vector<NamedShape> out;
+  out.push_back({"rot_l_30_45", Rotated(StarPrism(l, 0.5, 0.5, 0, 1), 30, 45)});
+  out.push_back({"rot_l_45_30", Rotated(StarPrism(l, 0.5, 0.5, 0, 1), 45, 30)});
+  out.push_back({"rot_t_30_45", Rotated(StarPrism(t, 0, 2.5, 0, 1), 30, 45)});
+  out.push_back({"rot_cross_45_30", Rotated(StarPrism(cross, 0, 0, 0, 1), 45, 30)});
+  out.push_back({"v_60", StarPrism(v, 0.1, 0.5, 0, 1)});
+  return out;
+}
+
 bool WriteObj(const std::string& path, const ShapeMesh& mesh) {
   const std::string tmp = path + ".tmp";
   FILE* f = std::fopen(tmp.c_str(), "w");

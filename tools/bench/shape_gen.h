@@ -49,12 +49,22 @@ ShapeMesh BearingBlock();
 // Machinery: a base with two shafts carrying gears (touching and overlapping closed components).
 ShapeMesh GearTrain();
 
+// A closed prism along z from z0 to z1 over a polygon (xy, counter-clockwise) that is star-shaped
+// about (cx, cy): an L, a T, a cross.
+ShapeMesh StarPrism(const std::vector<double>& xy, double cx, double cy, double z0, double z1);
+// The mesh rotated by ax degrees about x, then by az degrees about z.
+ShapeMesh Rotated(ShapeMesh mesh, double ax, double az);
+
 struct NamedShape {
   std::string name;
   ShapeMesh mesh;
 };
 // The benchmark set written by vhacd_meshgen.
 std::vector<NamedShape> BenchmarkShapes();
+
+// Shapes whose natural cuts are not along the grid axes: L, T and cross profiles rotated about
+// two axes, and a V of two arms at 60 degrees (vhacd_meshgen --rotated).
+std::vector<NamedShape> RotatedShapes();
 
 // Plain OBJ (v and f lines). False when the file cannot be written.
 bool WriteObj(const std::string& path, const ShapeMesh& mesh);

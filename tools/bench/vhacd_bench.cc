@@ -148,13 +148,14 @@ bool WriteObjParts(const std::string& path, const std::vector<Soup>& parts) {
 // The hullpack side, run as a child process: vhacd_bench --run-ours IN OUT PRESET MODE THREADS.
 
 int RunOurs(int argc, char** argv) {
-  if (argc != 9) return hullpack::kExitUsage;
+  if (argc != 10) return hullpack::kExitUsage;
   const std::string in = argv[2], out = argv[3], preset = argv[4];
   vhacd::Parameters p = preset == "high" ? vhacd::Parameters::High() : vhacd::Parameters::Default();
   p.mode = std::atoi(argv[5]) == 1 ? vhacd::Mode::kTetrahedron : vhacd::Mode::kVoxel;
   p.num_threads = static_cast<uint32_t>(std::atoi(argv[6]));
   if (std::atof(argv[7]) >= 0) p.max_concavity = std::atof(argv[7]);  // < 0: the preset's
   p.hull_count = static_cast<uint32_t>(std::atoi(argv[8]));
+  p.oriented_cuts = std::atoi(argv[9]) != 0;
   std::vector<Soup> parts;
   std::string why;
   if (!ReadObjParts(in, false, &parts, &why) || parts.size() != 1) {
@@ -524,6 +525,7 @@ int main(int argc, char** argv) {
   std::vector<std::pair<std::string, std::string>> named_refs;  // --reference NAME=TEMPLATE
   bool reuse = false;
   int repeats = 1, mode = 0, threads = 0;
+  bool oriented_cuts = false;
   double timeout = 600.0;
   std::vector<std::string> only, operands;
   MetricsOptions mo;
@@ -576,6 +578,8 @@ int main(int argc, char** argv) {
   cli.Double("--gap", "X", 0, 1, &mo.gap,
              "hull points nearer than X (fraction of the diagonal) to another hull are inside");
   cli.Int("--threads", "N", 0, 256, &threads, "decomposition threads (0: every core)");
+  cli.Flag("--oriented-cuts", &oriented_cuts,
+           "hullpack configurations cut along the parts' own axes too (Parameters::oriented_cuts)");
   cli.Value("--reference", "NAME=TEMPLATE",
             "a named reference (repeatable): TEMPLATE as for --reference-cmd; its\n"
             "configuration is NAME, and match=NAME runs hullpack at its hull counts",
@@ -751,7 +755,7 @@ int main(int argc, char** argv) {
         } else if (!c.reference) {
           st = RunProcess({self, "--run-ours", input, out, c.preset, std::to_string(c.mode),
                            std::to_string(threads), std::to_string(c.max_concavity),
-                           std::to_string(hull_count)},
+                           std::to_string(hull_count), oriented_cuts ? "1" : "0"},
                           "", dir, timeout);
         } else if (!c.command.empty()) {
           std::string cmd = Substitute(c.command, "{in}", ShellQuote(input));

@@ -4,6 +4,7 @@
 #include <limits>
 #include <string>
 
+#include "oriented_cuts.h"
 #include "part_hull.h"
 #include "stick_out.h"
 #include "thread_pool.h"
@@ -12,10 +13,23 @@ namespace vhacd {
 namespace internal {
 
 namespace {
+// An oriented plane whose voxel cost is at most this multiple of the best axis-aligned one is
+// compared with it on the exact surface: the voxel cost charges an oriented cut for its staircase,
+// which the part hulls (clipped to the plane) do not have.
+constexpr double kOrientedContest = 1.5;
+// ... and taken when its halves stick out less than this share of the axis-aligned halves: a plane
+// that only shaves a sliver off a part (a ring, whose halves stick out as far as the whole) wins
+// by a hair at every level, and the part was never divided.
+constexpr double kOrientedGain = 0.75;
+
+// A plane to try: slice c on `axis`, or (dir >= 0) the oriented plane of the part's direction
+// dir at offset d (its lines are those of the direction's axis).
 struct Task {
   uint32_t part;
   int axis;
   int c;
+  int dir = -1;
+  double d = 0.0;
 };
 
 // Concavity and depth (when a distance field is set and measure_depth) of every part.
@@ -66,6 +80,29 @@ bool MeasureStick(const std::vector<Part>& parts, const std::vector<uint32_t>& w
   });
 }
 
+// The halves of `p` on either side of the plane of `t` (`dir`: its direction when oriented).
+void SplitPart(const Part& p, const Task& t, const CutDirection* dir, Part* left, Part* right) {
+  const int a = t.axis, c = t.c;
+  auto is_left = [&](const uint16_t xyz[3]) {
+    return dir != nullptr ? OrientedLeft(*dir, t.d, xyz) : xyz[a] < c;
+  };
+  Part* half[2] = {left, right};
+  for (const Voxel& v : p.voxels) half[is_left(v.c) ? 0 : 1]->voxels.push_back(v);
+  for (int side = 0; side < 2; ++side) {
+    half[side]->ComputeBounds();
+    half[side]->tetra = p.tetra;
+    half[side]->cuts = p.cuts;
+    // The left half lies where n.x <= d, the right one where n.x >= d.
+    if (dir != nullptr)
+      half[side]->cuts.push_back(side == 0 ? CutPlane{dir->n, t.d} : CutPlane{-dir->n, -t.d});
+  }
+  if (p.tetra) {
+    for (const SurfaceCell& cell : p.cells) half[is_left(cell.c) ? 0 : 1]->cells.push_back(cell);
+    left->ComputeCellVolume();
+    right->ComputeCellVolume();
+  }
+}
+
 // Cuts every part current[split[k]] by its best plane into next[2k] and next[2k + 1] (a part
 // without a usable plane moves whole into next[2k]). Moves the parts' primitives out of current.
 bool CutParts(std::vector<Part>* current_io, const std::vector<uint32_t>& split,
@@ -77,13 +114,16 @@ bool CutParts(std::vector<Part>* current_io, const std::vector<uint32_t>& split,
   std::vector<AxisLines> lines(m * 3);
   std::vector<TetraAxis> tetra(m * 3);  // mode 1 only
   std::vector<RevolutionHint> hints(m);
-  if (!ParallelFor(ctx, m * 4, [&](size_t i) {
+  std::vector<std::vector<CutDirection>> dirs(m);
+  if (!ParallelFor(ctx, m * 5, [&](size_t i) {
         if (i < m * 3) {
           const Part& p = cur[split[i / 3]];
           lines[i] = BuildAxisLines(p, static_cast<int>(i % 3));
           if (p.tetra) tetra[i] = BuildTetraAxis(p, static_cast<int>(i % 3));
-        } else {
+        } else if (i < m * 4) {
           hints[i - m * 3] = ComputeRevolutionHint(cur[split[i - m * 3]]);
+        } else if (params.oriented_cuts && params.meter != nullptr && params.index != nullptr) {
+          dirs[i - m * 4] = OrientedCutDirections(cur[split[i - m * 4]]);
         }
       }))
     return false;
@@ -94,38 +134,61 @@ bool CutParts(std::vector<Part>* current_io, const std::vector<uint32_t>& split,
     for (int axis = 0; axis < 3; ++axis)
       for (int c : CandidatePlanes(cur[split[k]], axis, params.plane_downsampling))
         tasks.push_back({static_cast<uint32_t>(k), axis, c});
+  for (size_t k = 0; k < m; ++k)
+    for (size_t di = 0; di < dirs[k].size(); ++di)
+      for (double d : OrientedCandidateOffsets(dirs[k][di], params.plane_downsampling))
+        tasks.push_back({static_cast<uint32_t>(k), dirs[k][di].axis, 0, static_cast<int>(di), d});
   std::vector<double> cost(tasks.size());
   auto run = [&](int hull_ds) {
     return ParallelFor(ctx, tasks.size(), [&](size_t t) {
       const Task& tk = tasks[t];
       const uint32_t pi = split[tk.part];
       const size_t li = tk.part * 3 + tk.axis;
-      cost[t] = CutCost(cur[pi], lines[li], tk.c, hull_ds, weights, hints[tk.part], conc[pi],
-                        cur[pi].tetra ? &tetra[li] : nullptr);
+      const TetraAxis* ta = cur[pi].tetra ? &tetra[li] : nullptr;
+      cost[t] = tk.dir < 0 ? CutCost(cur[pi], lines[li], tk.c, hull_ds, weights, hints[tk.part],
+                                     conc[pi], ta)
+                           : OrientedCutCost(cur[pi], lines[li], dirs[tk.part][tk.dir], tk.d,
+                                             hull_ds, weights, hints[tk.part], conc[pi], ta);
     });
   };
   if (!run(params.convexhull_downsampling)) return false;
-  std::vector<Task> best(m, Task{0, -1, 0});
-  std::vector<double> best_cost(m, std::numeric_limits<double>::infinity());
+  // The best axis-aligned (kind 0) and oriented (kind 1) plane of part k: best[2k + kind].
+  std::vector<Task> best(2 * m, Task{0, -1, 0});
+  std::vector<double> best_cost(2 * m, std::numeric_limits<double>::infinity());
   auto keep_best = [&]() {  // ties keep the earlier task: deterministic
-    for (size_t t = 0; t < tasks.size(); ++t)
-      if (cost[t] < best_cost[tasks[t].part]) {
-        best_cost[tasks[t].part] = cost[t];
-        best[tasks[t].part] = tasks[t];
+    for (size_t t = 0; t < tasks.size(); ++t) {
+      const size_t b = 2 * tasks[t].part + (tasks[t].dir >= 0);
+      if (cost[t] < best_cost[b]) {
+        best_cost[b] = cost[t];
+        best[b] = tasks[t];
       }
+    }
   };
   keep_best();
   const std::vector<double> coarse_cost = best_cost;  // the downsampled estimates
-  // Exact search around the best plane of each part in `parts`.
-  auto refine = [&](const std::vector<uint32_t>& parts) {
+  // Exact search around the best plane of each kind in `kinds` (bit 1: axis-aligned, bit 2:
+  // oriented) of each part in `parts`.
+  auto refine = [&](const std::vector<uint32_t>& parts, int kinds) {
     tasks.clear();
     for (uint32_t k : parts) {
-      if (best[k].axis < 0) continue;
       const Part& p = cur[split[k]];
-      const int a = best[k].axis;
-      const int lo = std::max(p.bmin[a] + 1, best[k].c - params.plane_downsampling + 1);
-      const int hi = std::min(p.bmax[a], best[k].c + params.plane_downsampling - 1);
-      for (int c = lo; c <= hi; ++c) tasks.push_back({k, a, c});
+      for (int kind = 0; kind < 2; ++kind) {
+        const Task& bt = best[2 * k + kind];
+        if (!(kinds & (1 << kind)) || bt.axis < 0) continue;
+        const int a = bt.axis;
+        if (bt.dir >= 0) {
+          // Every unit step around the coarse offset, inside the part.
+          const CutDirection& dir = dirs[k][bt.dir];
+          for (int j = 1 - params.plane_downsampling; j < params.plane_downsampling; ++j) {
+            const double d = bt.d + j;
+            if (d > dir.lo && d <= dir.hi) tasks.push_back({k, a, 0, bt.dir, d});
+          }
+          continue;
+        }
+        const int lo = std::max(p.bmin[a] + 1, bt.c - params.plane_downsampling + 1);
+        const int hi = std::min(p.bmax[a], bt.c + params.plane_downsampling - 1);
+        for (int c = lo; c <= hi; ++c) tasks.push_back({k, a, c});
+      }
     }
     cost.assign(tasks.size(), 0.0);
     if (!run(1)) return false;
@@ -136,7 +199,7 @@ bool CutParts(std::vector<Part>* current_io, const std::vector<uint32_t>& split,
     std::vector<uint32_t> all(m);
     for (size_t k = 0; k < m; ++k) all[k] = static_cast<uint32_t>(k);
     std::fill(best_cost.begin(), best_cost.end(), std::numeric_limits<double>::infinity());
-    if (!refine(all)) return false;
+    if (!refine(all, 3)) return false;
   }
   // The downsampled hulls skip all but every convexhull_downsampling-th row of voxel lines, so a
   // feature thinner than that (a one-voxel sheet floating over a slab) can be invisible to the
@@ -148,8 +211,8 @@ bool CutParts(std::vector<Part>* current_io, const std::vector<uint32_t>& split,
   if (params.convexhull_downsampling > 1) {
     std::vector<uint32_t> blind;
     for (size_t k = 0; k < m; ++k)
-      if (best[k].axis >= 0 && best_cost[k] >= conc[split[k]] &&
-          coarse_cost[k] < 0.5 * best_cost[k])
+      if (best[2 * k].axis >= 0 && best_cost[2 * k] >= conc[split[k]] &&
+          coarse_cost[2 * k] < 0.5 * best_cost[2 * k])
         blind.push_back(static_cast<uint32_t>(k));
     if (!blind.empty()) {
       tasks.clear();
@@ -160,32 +223,70 @@ bool CutParts(std::vector<Part>* current_io, const std::vector<uint32_t>& split,
       cost.assign(tasks.size(), 0.0);
       if (!run(1)) return false;
       keep_best();
-      if (params.plane_downsampling > 1 && !refine(blind)) return false;
+      if (params.plane_downsampling > 1 && !refine(blind, 1)) return false;
+    }
+  }
+  // The axis-aligned plane, unless the oriented one gives clearly closer hulls: both are tried on
+  // the exact surface (how far the halves' hulls stick out of it, the larger of the two), when
+  // the oriented plane's voxel cost is close enough to be worth it.
+  std::vector<Task> chosen(m);
+  std::vector<uint32_t> contest;
+  for (size_t k = 0; k < m; ++k) {
+    const bool axis = best[2 * k].axis >= 0, oriented = best[2 * k + 1].axis >= 0;
+    chosen[k] = best[2 * k + (axis || !oriented ? 0 : 1)];
+    if (axis && oriented && best_cost[2 * k + 1] < kOrientedContest * best_cost[2 * k])
+      contest.push_back(static_cast<uint32_t>(k));
+  }
+  // trial[4i + 2 kind + side]: the halves of part contest[i].
+  std::vector<Part> trial(contest.size() * 4);
+  std::vector<double> trial_stick(trial.size(), 0.0);
+  if (!contest.empty()) {
+    if (!ParallelFor(ctx, contest.size() * 2, [&](size_t j) {
+          const uint32_t k = contest[j / 2];
+          const Task& t = best[2 * k + j % 2];
+          SplitPart(cur[split[k]], t, t.dir >= 0 ? &dirs[k][t.dir] : nullptr, &trial[2 * j],
+                    &trial[2 * j + 1]);
+        }))
+      return false;
+    // The axis-aligned halves exactly, then the oriented ones only as far as needed to know
+    // whether they stick out less.
+    for (int kind = 0; kind < 2; ++kind)
+      if (!ParallelFor(ctx, contest.size() * 2, [&](size_t j) {
+            const size_t i = j / 2, t = 4 * i + 2 * kind + j % 2;
+            const double limit =
+                kind == 0 ? 1e30
+                          : kOrientedGain * std::max(trial_stick[4 * i], trial_stick[4 * i + 1]);
+            const HullMesh h = BuildPartHull(trial[t], *params.index, params.corners);
+            trial_stick[t] = h.empty() ? 0.0 : params.meter->Measure(h, limit);
+          }))
+        return false;
+    for (size_t i = 0; i < contest.size(); ++i) {
+      const double axis_stick = std::max(trial_stick[4 * i], trial_stick[4 * i + 1]);
+      const double oriented_stick = std::max(trial_stick[4 * i + 2], trial_stick[4 * i + 3]);
+      if (oriented_stick < kOrientedGain * axis_stick)
+        chosen[contest[i]] = best[2 * contest[i] + 1];
     }
   }
   // Split.
+  std::vector<int> contested(m, -1);
+  for (size_t i = 0; i < contest.size(); ++i) contested[contest[i]] = static_cast<int>(i);
   next.assign(m * 2, Part());
   if (!ParallelFor(ctx, m, [&](size_t k) {
         Part& p = cur[split[k]];
-        const int a = best[k].axis, c = best[k].c;
-        if (a < 0) {
+        const Task& t = chosen[k];
+        if (t.axis < 0) {
           next[2 * k] = std::move(p);
           return;
         }
-        for (const Voxel& v : p.voxels)
-          (v.c[a] < c ? next[2 * k] : next[2 * k + 1]).voxels.push_back(v);
+        if (contested[k] >= 0) {
+          const size_t j = 4 * static_cast<size_t>(contested[k]) + 2 * (t.dir >= 0);
+          next[2 * k] = std::move(trial[j]);
+          next[2 * k + 1] = std::move(trial[j + 1]);
+        } else {
+          SplitPart(p, t, t.dir >= 0 ? &dirs[k][t.dir] : nullptr, &next[2 * k], &next[2 * k + 1]);
+        }
         std::vector<Voxel>().swap(p.voxels);
-        for (int side = 0; side < 2; ++side) {
-          next[2 * k + side].ComputeBounds();
-          next[2 * k + side].tetra = p.tetra;
-        }
-        if (p.tetra) {
-          for (const SurfaceCell& cell : p.cells)
-            (cell.c[a] < c ? next[2 * k] : next[2 * k + 1]).cells.push_back(cell);
-          std::vector<SurfaceCell>().swap(p.cells);
-          next[2 * k].ComputeCellVolume();
-          next[2 * k + 1].ComputeCellVolume();
-        }
+        std::vector<SurfaceCell>().swap(p.cells);
       }))
     return false;
   return true;

@@ -29,6 +29,9 @@ struct ClipParams {
   const class TriangleIndex* index = nullptr;
   const class SolidCorners* corners = nullptr;  // passed to BuildPartHull
   double max_stick = 0.0;
+  // Also try planes along each part's own axes (oriented_cuts.h), kept where they give closer
+  // hulls on the exact surface (needs meter and index).
+  bool oriented_cuts = false;
 };
 
 struct ClipOutput {

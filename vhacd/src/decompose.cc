@@ -347,6 +347,9 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     cp.meter = meter.get();
     cp.index = &index;
     cp.corners = exact_count && input.closed ? &corners : nullptr;
+    // Oriented cuts are compared on the exact surface, whose side is known only on a closed one
+    // (on open shells they made the hulls farther).
+    cp.oriented_cuts = params.oriented_cuts && input.closed;
     // On an open surface the side is only known per voxel: for max_concavity the exact measure
     // splits only from the second attempt on, kept when it gets closer (on scans with filled
     // holes it multiplied hulls without getting closer); hull_count merges down to N anyway.

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "oriented_cuts.h"
+
 namespace vhacd {
 namespace internal {
 
@@ -76,6 +78,14 @@ void ClipTriangleToBox(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& 
   for (int i = 0; i < n; ++i) out->push_back(poly[i]);
 }
 
+namespace {
+bool CutsContain(const std::vector<CutPlane>& cuts, const Vec3& p) {
+  for (const CutPlane& cut : cuts)
+    if (cut.n.dot(p) > cut.d) return false;
+  return true;
+}
+}  // namespace
+
 HullMesh BuildPartHull(const Part& part, const TriangleIndex& index, const SolidCorners* corners) {
   std::vector<Vec3> pts;
   PartHullPoints(part, true, &pts);
@@ -88,7 +98,18 @@ HullMesh BuildPartHull(const Part& part, const TriangleIndex& index, const Solid
       for (int k = 0; k < 8; ++k) {
         if (!(mask & (1u << k))) continue;
         const Vec3 c(v.c[0] + (k & 1), v.c[1] + ((k >> 1) & 1), v.c[2] + ((k >> 2) & 1));
-        if (((c.array() == lo.array()) || (c.array() == hi.array())).any()) pts.push_back(c);
+        if (((c.array() == lo.array()) || (c.array() == hi.array())).any()) {
+          pts.push_back(c);
+          continue;
+        }
+        // The same at an oriented cut: the corners within a voxel of its plane, on this side.
+        for (const CutPlane& cut : part.cuts) {
+          const double s = cut.n.dot(c) - cut.d;
+          if (s <= 0 && s > -1 && CutsContain(part.cuts, c)) {
+            pts.push_back(c);
+            break;
+          }
+        }
       }
     }
   }
@@ -112,8 +133,16 @@ HullMesh BuildPartHull(const Part& part, const TriangleIndex& index, const Solid
   };
   // Triangles inside the box contribute their vertices (each once), the others their clipped
   // polygon.
+  std::vector<Vec3> poly;
+  const size_t before_surface = pts.size();
   index.ForEachInBox(lo, hi, &stamp, mark, [&](uint32_t t) {
     const auto& tr = mesh.triangles[t];
+    if (!part.cuts.empty()) {
+      poly.clear();
+      ClipTriangleToBox(mesh.points[tr[0]], mesh.points[tr[1]], mesh.points[tr[2]], lo, hi, &poly);
+      if (!poly.empty()) ClipPolygonToCuts(poly, part.cuts, &pts);
+      return;
+    }
     if (inside(mesh.points[tr[0]]) && inside(mesh.points[tr[1]]) && inside(mesh.points[tr[2]])) {
       for (uint32_t v : tr)
         if (vstamp[v] != mark) {
@@ -126,8 +155,14 @@ HullMesh BuildPartHull(const Part& part, const TriangleIndex& index, const Solid
   });
   HullMesh h;
   if (ComputeConvexHull(pts, -1.0, &h) == HullStatus::kOk && h.Volume() > 1e-3) return h;
+  // A sliver along an oriented cut can hold surface voxels whose surface lies across the plane:
+  // its voxels' hull would stick out of the solid by up to a voxel, and the surface is held by the
+  // part across the cut. It gets no hull.
+  if (!part.cuts.empty() && pts.size() == before_surface) return HullMesh();
   PartHullPoints(part, false, &pts);
-  if (ComputeConvexHull(pts, 0.0, &h) != HullStatus::kOk) h = HullMesh();
+  if (ComputeConvexHull(pts, 0.0, &h) != HullStatus::kOk) return HullMesh();
+  // A flat piece of surface (a sheet) gets the slab of its voxels, within its cuts.
+  if (!part.cuts.empty()) h = ClipHullToCuts(h, part.cuts);
   return h;
 }
 

@@ -1,7 +1,8 @@
-// The convex hull of one part: the input surface clipped to the part's box, plus the corners of
-// the part's interior voxels. Every cut is an axis-aligned plane between voxel slices, so a part is
-// exactly the voxel set inside its bounding box and the surface inside that box is the surface the
-// part holds: the hull hugs the input instead of the voxels.
+// The convex hull of one part: the input surface clipped to the part's box and to its oriented cuts
+// (Part::cuts), plus the corners of the part's interior voxels. An axis-aligned cut is a plane
+// between voxel slices, so without oriented cuts a part is exactly the voxel set inside its
+// bounding box; an oriented cut keeps the voxels whose centres are on its side, and its plane
+// bounds the surface the part holds: the hull hugs the input instead of the voxels.
 #ifndef VHACD_SRC_PART_HULL_H_
 #define VHACD_SRC_PART_HULL_H_
 

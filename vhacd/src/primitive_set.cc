@@ -177,32 +177,46 @@ void TetraSideHullPoints(const Part& part, const TetraAxis& ta, int c, bool left
     *volume = left ? ta.prefix_volume[split] : ta.prefix_volume[slices] - ta.prefix_volume[split];
 }
 
-void SideHullPoints(const AxisLines& L, int c, bool left, int downsample, std::vector<Vec3>* out,
-                    double* volume) {
+namespace {
+// SideHullPoints with the plane of line l at split(l).
+template <typename SplitOfLine>
+void SideHullPointsImpl(const AxisLines& L, SplitOfLine split_of_line, bool left, int downsample,
+                        std::vector<Vec3>* out, double* volume, double* exact_count) {
   out->clear();
-  double count = 0.0;
+  double count = 0.0, all = 0.0;
   const int ds = std::max(1, downsample);
   CornerSet corners(L.axis, L.umin, L.umax, L.vmin, L.vmax, ds, L.line_count(), out);
   for (size_t l = 0; l < L.line_count(); ++l) {
-    if (ds > 1 && (L.lu[l] % ds != 0 || L.lv[l] % ds != 0)) continue;
+    const bool sampled = ds == 1 || (L.lu[l] % ds == 0 && L.lv[l] % ds == 0);
+    if (!sampled && exact_count == nullptr) continue;
     const uint16_t* b = L.coords.data() + L.start[l];
     const uint16_t* e = L.coords.data() + L.start[l + 1];
-    const uint16_t* split = std::lower_bound(b, e, static_cast<uint16_t>(std::clamp(c, 0, 65535)));
-    int lo, hi;
-    if (left) {
-      if (split == b) continue;
-      lo = *b;
-      hi = *(split - 1);
-    } else {
-      if (split == e) continue;
-      lo = *split;
-      hi = *(e - 1);
-    }
+    const int c = std::clamp(split_of_line(l), 0, 65535);
+    const uint16_t* split = std::lower_bound(b, e, static_cast<uint16_t>(c));
+    const double side = left ? static_cast<double>(split - b) : static_cast<double>(e - split);
+    all += side;
+    if (!sampled || side == 0) continue;
+    const int lo = left ? *b : *split;
+    const int hi = left ? *(split - 1) : *(e - 1);
     corners.Add(L.lu[l], L.lv[l], lo, hi + 1);
-    count += left ? static_cast<double>(split - b) : static_cast<double>(e - split);
+    count += side;
   }
   corners.Emit();
   if (volume != nullptr) *volume = count * ds * ds;
+  if (exact_count != nullptr) *exact_count = all;
+}
+}  // namespace
+
+void SideHullPoints(const AxisLines& L, int c, bool left, int downsample, std::vector<Vec3>* out,
+                    double* volume) {
+  SideHullPointsImpl(
+      L, [c](size_t) { return c; }, left, downsample, out, volume, nullptr);
+}
+
+void SideHullPointsPerLine(const AxisLines& L, const std::vector<int>& line_split, bool left,
+                           int downsample, std::vector<Vec3>* out, double* volume, double* count) {
+  SideHullPointsImpl(
+      L, [&line_split](size_t l) { return line_split[l]; }, left, downsample, out, volume, count);
 }
 
 void PartHullPoints(const Part& part, bool interior_only, std::vector<Vec3>* out) {

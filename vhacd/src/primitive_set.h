@@ -21,6 +21,12 @@ struct Voxel {
   uint8_t pad = 0;
 };
 
+// A half-space n.x <= d (grid units, n unit length) an oriented cut left a part in.
+struct CutPlane {
+  Vec3 n = Vec3::UnitX();
+  double d = 0.0;
+};
+
 struct Part {
   std::vector<Voxel> voxels;
   int bmin[3] = {0, 0, 0}, bmax[3] = {0, 0, 0};  // inclusive voxel bounds
@@ -29,6 +35,9 @@ struct Part {
   bool tetra = false;
   std::vector<SurfaceCell> cells;
   double cell_volume = 0.0;  // sum of the cells' volumes
+  // The oriented cuts that bound the part besides its box (oriented_cuts.h): its surface is the
+  // input clipped to the box and to these half-spaces.
+  std::vector<CutPlane> cuts;
 
   double volume() const {
     const double n = static_cast<double>(voxels.size());
@@ -59,6 +68,13 @@ AxisLines BuildAxisLines(const Part& part, int axis);
 // difference is a consistent concavity estimate. d = 1 is exact.
 void SideHullPoints(const AxisLines& lines, int c, bool left, int downsample,
                     std::vector<Vec3>* out, double* volume = nullptr);
+
+// The same with a plane per line: line l keeps the voxels below line_split[l] (left) or at/above
+// it (right). *count (when non-null) is the exact number of voxels on that side, every line
+// counted even when downsampled.
+void SideHullPointsPerLine(const AxisLines& lines, const std::vector<int>& line_split, bool left,
+                           int downsample, std::vector<Vec3>* out, double* volume,
+                           double* count = nullptr);
 
 // Exact hull of a part's voxels (of only its non-surface voxels when interior_only).
 void PartHullPoints(const Part& part, bool interior_only, std::vector<Vec3>* out);
