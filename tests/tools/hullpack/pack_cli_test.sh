@@ -105,6 +105,56 @@ run 64 hacd-resolution -- "$bin" pack "$sample" -o "$tmp/x.glb" --method hacd --
 run 64 hacd-quality -- "$bin" batch "$sample" -o "$tmp/xb" --method hacd --quality high
 run 64 bad-option -- "$bin" pack "$sample" -o "$tmp/x.glb" --max-error -1
 
+# --oriented-cuts: an L prism turned 30 and 45 degrees about two axes splits along its own axes, so
+# its two hulls are far closer than with cuts along the grid's axes alone.
+cat >"$tmp/rot_l.obj" <<'OBJ'
+v 0.000000 0.000000 0.000000
+v 2.121320 2.121320 0.000000
+v 1.508948 2.733693 0.500000
+v 0.094734 1.319479 0.500000
+v -1.130011 2.544224 1.500000
+v -1.837117 1.837117 1.500000
+v 0.353553 -0.353553 0.866025
+v 2.474874 1.767767 0.866025
+v 1.862501 2.380139 1.366025
+v 0.448288 0.965926 1.366025
+v -0.776457 2.190671 2.366025
+v -1.483564 1.483564 2.366025
+v 0.047367 0.659740 0.250000
+v 0.400921 0.306186 1.116025
+f 13 2 1
+f 14 7 8
+f 1 2 8
+f 1 8 7
+f 13 3 2
+f 14 8 9
+f 2 3 9
+f 2 9 8
+f 13 4 3
+f 14 9 10
+f 3 4 10
+f 3 10 9
+f 13 5 4
+f 14 10 11
+f 4 5 11
+f 4 11 10
+f 13 6 5
+f 14 11 12
+f 5 6 12
+f 5 12 11
+f 13 1 6
+f 14 12 7
+f 6 1 7
+f 6 7 12
+OBJ
+concavity() { grep -o '"concavity": *[0-9.e-]*' "$1" | head -1 | grep -o '[0-9.e-]*$'; }
+run 0 grid-cuts -- "$bin" pack "$tmp/rot_l.obj" -o "$tmp/rot_grid.glb" --hulls 2 --report "$tmp/rot_grid.json" --quiet
+run 0 oriented-cuts -- "$bin" pack "$tmp/rot_l.obj" -o "$tmp/rot_oriented.glb" --hulls 2 --oriented-cuts \
+  --report "$tmp/rot_oriented.json" --quiet
+awk -v g="$(concavity "$tmp/rot_grid.json")" -v o="$(concavity "$tmp/rot_oriented.json")" \
+  'BEGIN { exit !(o > 0 && o < g / 2) }' && pass ||
+  fail "oriented cuts: concavity $(concavity "$tmp/rot_oriented.json") against $(concavity "$tmp/rot_grid.json") without"
+
 # The Khronos validator on the packed and unpacked files (skipped without node + gltf-validator).
 if [ -n "$node" ] && [ -f "$src/node_modules/gltf-validator/package.json" ]; then
   run 0 pack-khr -- "$bin" pack "$sample" -o "$tmp/khr.glb" --physics khr --fallback --quiet
