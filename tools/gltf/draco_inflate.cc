@@ -29,32 +29,19 @@ class DracoInflater {
   }
 
   Status Run() {
-    if (!json_.contains("meshes") || !json_["meshes"].is_array()) return Finish();
-    nlohmann::json& meshes = json_["meshes"];
-    for (size_t m = 0; m < meshes.size(); ++m) {
-      if (!meshes[m].is_object() || !meshes[m].contains("primitives") ||
-          !meshes[m]["primitives"].is_array())
-        continue;
-      nlohmann::json& prims = meshes[m]["primitives"];
-      for (size_t p = 0; p < prims.size(); ++p) {
-        if (!prims[p].is_object() || !prims[p].contains("extensions") ||
-            !prims[p]["extensions"].is_object() ||
-            !prims[p]["extensions"].contains(kDracoExtension))
-          continue;
-        where_ = "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) + "]";
-        uint64_t mode = gltf::kModeTriangles;
-        if (!gltf::GetUintMember(prims[p], "mode", gltf::kModeTriangles, &mode))
-          return Error("mode is not a non-negative integer");
-        // Points and lines are not kept (the reader drops them); strips and fans decode as lists.
-        if (mode >= gltf::kModeTriangles) {
-          Status s = InflatePrimitive(prims[p]);
-          if (!s.ok()) return s;
-          prims[p]["mode"] = gltf::kModeTriangles;
-        }
-        prims[p]["extensions"].erase(kDracoExtension);
-        if (prims[p]["extensions"].empty()) prims[p].erase("extensions");
-      }
-    }
+    Status s = gltf::ForEachPrimitiveWith(
+        json_, kDracoExtension, [this](nlohmann::json& prim, const std::string& where) {
+          where_ = where;
+          uint64_t mode = gltf::kModeTriangles;
+          if (!gltf::GetUintMember(prim, "mode", gltf::kModeTriangles, &mode))
+            return Error("mode is not a non-negative integer");
+          // Points and lines are not kept (the reader drops them); strips and fans decode as lists.
+          if (mode < gltf::kModeTriangles) return Status::Ok();
+          Status inflated = InflatePrimitive(prim);
+          if (inflated.ok()) prim["mode"] = gltf::kModeTriangles;
+          return inflated;
+        });
+    if (!s.ok()) return s;
     return Finish();
   }
 
@@ -64,16 +51,10 @@ class DracoInflater {
                   name_ + ": " + where_ + ": " + kDracoExtension + ": " + what);
   }
 
-  // An integer member in [0, limit), or -1.
   static int64_t Index(const nlohmann::json& obj, const char* key, size_t limit) {
-    if (!obj.is_object() || !obj.contains(key) || !obj[key].is_number_integer()) return -1;
-    const int64_t v = obj[key].get<int64_t>();
-    return v >= 0 && static_cast<uint64_t>(v) < limit ? v : -1;
+    return gltf::IndexMember(obj, key, limit);
   }
-
-  size_t ArraySize(const char* key) const {
-    return json_.contains(key) && json_[key].is_array() ? json_[key].size() : 0;
-  }
+  size_t ArraySize(const char* key) const { return gltf::ArraySize(json_, key); }
 
   Result<const draco::Mesh*> Stream(int64_t view) {
     auto it = streams_.find(view);
@@ -237,18 +218,7 @@ class DracoInflater {
   }
 
   Status Finish() {
-    for (const char* list : {"extensionsUsed", "extensionsRequired"}) {
-      if (!json_.contains(list) || !json_[list].is_array()) continue;
-      nlohmann::json kept = nlohmann::json::array();
-      for (const auto& e : json_[list]) {
-        if (!(e.is_string() && e.get<std::string>() == kDracoExtension)) kept.push_back(e);
-      }
-      if (kept.empty()) {
-        json_.erase(list);
-      } else {
-        json_[list] = std::move(kept);
-      }
-    }
+    doc_.DropExtension(kDracoExtension);
     if (streams_.empty() || buffers_.used_data_uris()) return Status::Ok();
     // The streams' views are referenced by nothing now; dropping them also frees their bytes.
     Status s = CompactBufferViews(doc_);

@@ -187,6 +187,21 @@ void GltfDocument::UseExtension(const std::string& name, bool required) {
   if (required) add_once("extensionsRequired");
 }
 
+void GltfDocument::DropExtension(const std::string& name) {
+  for (const char* list : {"extensionsUsed", "extensionsRequired"}) {
+    if (!json_.contains(list) || !json_[list].is_array()) continue;
+    nlohmann::json kept = nlohmann::json::array();
+    for (const auto& e : json_[list]) {
+      if (!(e.is_string() && e.get<std::string>() == name)) kept.push_back(e);
+    }
+    if (kept.empty()) {
+      json_.erase(list);
+    } else {
+      json_[list] = std::move(kept);
+    }
+  }
+}
+
 Result<std::vector<uint8_t>> GltfDocument::Serialize() const {
   nlohmann::json j = json_;
   if (!binary_.empty()) {

@@ -105,6 +105,9 @@ class GltfDocument {
 
   // Lists `name` in extensionsUsed (once) and, when `required`, in extensionsRequired.
   void UseExtension(const std::string& name, bool required);
+  // Removes `name` from extensionsUsed and extensionsRequired (a list left empty goes too): what a
+  // reader does once it has decoded an extension's data into plain glTF.
+  void DropExtension(const std::string& name);
 
   // The GLB file: header, JSON chunk (space-padded), BIN chunk (zero-padded; omitted when the
   // binary chunk is empty). Sets buffers[0].byteLength. Fails when the file would exceed 4 GiB.

@@ -160,18 +160,7 @@ class MeshoptInflater {
   }
 
   Status Finish() {
-    for (const char* list : {"extensionsUsed", "extensionsRequired"}) {
-      if (!json_.contains(list) || !json_[list].is_array()) continue;
-      nlohmann::json kept = nlohmann::json::array();
-      for (const auto& e : json_[list]) {
-        if (!(e.is_string() && e.get<std::string>() == kMeshoptExtension)) kept.push_back(e);
-      }
-      if (kept.empty()) {
-        json_.erase(list);
-      } else {
-        json_[list] = std::move(kept);
-      }
-    }
+    doc_.DropExtension(kMeshoptExtension);
     if (inflated_ == 0) return Status::Ok();
     where_ = "buffers";
     Status s = DropUnreferencedBuffers();

@@ -25,14 +25,7 @@ int DominantAxis(const Vec3& n) {
 std::vector<CutDirection> OrientedCutDirections(const Part& part) {
   std::vector<CutDirection> out;
   if (part.voxels.size() < 2) return out;
-  Vec3 mean = Vec3::Zero();
-  for (const Voxel& v : part.voxels) mean += Vec3(v.c[0], v.c[1], v.c[2]);
-  mean /= static_cast<double>(part.voxels.size());
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  for (const Voxel& v : part.voxels) {
-    const Vec3 d = Vec3(v.c[0], v.c[1], v.c[2]) - mean;
-    cov += d * d.transpose();
-  }
+  const Eigen::Matrix3d cov = VoxelCovariance(part);
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
   if (es.info() != Eigen::Success) return out;
   const Eigen::Matrix3d e = es.eigenvectors();

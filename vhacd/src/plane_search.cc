@@ -10,15 +10,7 @@ namespace internal {
 RevolutionHint ComputeRevolutionHint(const Part& part) {
   RevolutionHint hint;
   if (part.voxels.size() < 2) return hint;
-  Vec3 mean = Vec3::Zero();
-  for (const Voxel& v : part.voxels) mean += Vec3(v.c[0], v.c[1], v.c[2]);
-  mean /= static_cast<double>(part.voxels.size());
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  for (const Voxel& v : part.voxels) {
-    const Vec3 d = Vec3(v.c[0], v.c[1], v.c[2]) - mean;
-    cov += d * d.transpose();
-  }
-  cov /= static_cast<double>(part.voxels.size());
+  const Eigen::Matrix3d cov = VoxelCovariance(part);
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
   if (es.info() != Eigen::Success) return hint;
   const Vec3 ev = es.eigenvalues();  // ascending

@@ -259,5 +259,18 @@ double ExactHullVolume(const std::vector<Vec3>& points) {
   return h.Volume();
 }
 
+Eigen::Matrix3d VoxelCovariance(const Part& part) {
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  if (part.voxels.size() < 2) return cov;
+  Vec3 mean = Vec3::Zero();
+  for (const Voxel& v : part.voxels) mean += Vec3(v.c[0], v.c[1], v.c[2]);
+  mean /= static_cast<double>(part.voxels.size());
+  for (const Voxel& v : part.voxels) {
+    const Vec3 d = Vec3(v.c[0], v.c[1], v.c[2]) - mean;
+    cov += d * d.transpose();
+  }
+  return cov / static_cast<double>(part.voxels.size());
+}
+
 }  // namespace internal
 }  // namespace vhacd

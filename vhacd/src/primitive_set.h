@@ -47,6 +47,10 @@ struct Part {
   void ComputeCellVolume();
 };
 
+// The covariance of a part's voxel centres (grid units; zero for fewer than 2 voxels), whose
+// eigenvectors are the part's principal axes.
+Eigen::Matrix3d VoxelCovariance(const Part& part);
+
 // The voxels of one part sorted into lines parallel to `axis`.
 struct AxisLines {
   int axis = 0;
