@@ -5,29 +5,10 @@
 #include <cstring>
 #include <utility>
 #include "gltf/node_forest.h"
+#include "scene/transform.h"
 
 namespace hullpack {
 namespace glb_reader_internal {
-
-namespace {
-
-Matrix4 ComposeTrs(const double t[3], const double q[4], const double s[3]) {
-  const double x = q[0], y = q[1], z = q[2], w = q[3];
-  const double r[9] = {1 - 2 * (y * y + z * z), 2 * (x * y + z * w),     2 * (x * z - y * w),
-                       2 * (x * y - z * w),     1 - 2 * (x * x + z * z), 2 * (y * z + x * w),
-                       2 * (x * z + y * w),     2 * (y * z - x * w),     1 - 2 * (x * x + y * y)};
-  // r is column-major: column c = r[3c..3c+2].
-  Matrix4 m = kIdentity;
-  for (int c = 0; c < 3; ++c) {
-    for (int row = 0; row < 3; ++row) m[static_cast<size_t>(4 * c + row)] = r[3 * c + row] * s[c];
-  }
-  m[12] = t[0];
-  m[13] = t[1];
-  m[14] = t[2];
-  return m;
-}
-
-}  // namespace
 
 Status Decoder::DecodeNodes(Scene* scene) {
   const json* nodes = nullptr;
@@ -66,11 +47,12 @@ Status Decoder::DecodeNodes(Scene* scene) {
       HP_RETURN_IF_ERROR(GetNumbers(j, "matrix", nw, 16, m));
       std::copy(m, m + 16, node.local_transform.begin());
     } else if (j.contains("translation") || j.contains("rotation") || j.contains("scale")) {
-      double t[3] = {0, 0, 0}, q[4] = {0, 0, 0, 1}, s[3] = {1, 1, 1};
-      HP_RETURN_IF_ERROR(GetNumbers(j, "translation", nw, 3, t));
-      HP_RETURN_IF_ERROR(GetNumbers(j, "rotation", nw, 4, q));
-      HP_RETURN_IF_ERROR(GetNumbers(j, "scale", nw, 3, s));
-      node.local_transform = ComposeTrs(t, q, s);
+      Trs trs;
+      HP_RETURN_IF_ERROR(GetNumbers(j, "translation", nw, 3, trs.translation.data()));
+      HP_RETURN_IF_ERROR(GetNumbers(j, "rotation", nw, 4, trs.rotation.data()));
+      HP_RETURN_IF_ERROR(GetNumbers(j, "scale", nw, 3, trs.scale.data()));
+      node.local_transform = TrsMatrix(trs);
+      node.trs = trs;
     }
     int64_t mesh = -1, skin = -1;
     HP_RETURN_IF_ERROR(GetIndex(j, "mesh", nw, &mesh));

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,12 +24,33 @@ struct Image {
   std::vector<uint8_t> bytes;
 };
 
+// How a texture is filtered and wrapped, in glTF's codes (9728 NEAREST, 9729 LINEAR, the four
+// mipmap filters; 33071 CLAMP_TO_EDGE, 33648 MIRRORED_REPEAT, 10497 REPEAT). A filter of 0 is not
+// given: the viewer chooses. Pixel-art textures need NEAREST, atlases often CLAMP_TO_EDGE.
+struct Sampler {
+  int mag_filter = 0;
+  int min_filter = 0;
+  int wrap_s = 10497;
+  int wrap_t = 10497;
+
+  bool is_default() const { return *this == Sampler(); }
+  bool operator==(const Sampler& o) const {
+    return mag_filter == o.mag_filter && min_filter == o.min_filter && wrap_s == o.wrap_s &&
+           wrap_t == o.wrap_t;
+  }
+  bool operator!=(const Sampler& o) const { return !(*this == o); }
+};
+
 // A reference from a material slot to an image, read through one UV set.
 struct TextureRef {
   int image = -1;  // index into Scene::images; -1 = no texture in this slot
   int uv_set = 0;  // which Mesh::uv_sets entry the texture is sampled with
+  Sampler sampler;
   bool used() const { return image >= 0; }
 };
+
+// glTF's alpha modes: MASK cuts away texels below alpha_cutoff (foliage, fences), BLEND mixes.
+enum class AlphaMode { kOpaque, kMask, kBlend };
 
 struct Material {
   std::string name;
@@ -37,6 +59,12 @@ struct Material {
   float roughness = 1.0f;
   std::array<float, 3> emissive = {0, 0, 0};
   bool double_sided = false;
+  AlphaMode alpha_mode = AlphaMode::kOpaque;
+  float alpha_cutoff = 0.5f;        // used by kMask
+  bool unlit = false;               // KHR_materials_unlit: shaded by base colour alone
+  float emissive_strength = 1.0f;   // KHR_materials_emissive_strength
+  float normal_scale = 1.0f;        // normalTexture.scale
+  float occlusion_strength = 1.0f;  // occlusionTexture.strength
   TextureRef base_color_texture;
   TextureRef metallic_roughness_texture;
   TextureRef normal_texture;
@@ -71,13 +99,52 @@ struct Skin {
   int skeleton = -1;                         // root node, or -1
 };
 
+// A local transform as translation, rotation (unit quaternion x, y, z, w) and scale, applied
+// scale first. glTF animates these three separately, so an animated node keeps them apart.
+struct Trs {
+  std::array<double, 3> translation = {0, 0, 0};
+  std::array<double, 4> rotation = {0, 0, 0, 1};
+  std::array<double, 3> scale = {1, 1, 1};
+};
+
 struct Node {
   std::string name;
   int parent = -1;  // -1 for a root
   std::vector<int> children;
   Matrix4 local_transform = kIdentity;
+  // The same transform as the file gave it, when it gave TRS (local_transform is then its matrix).
+  std::optional<Trs> trs;
   std::vector<int> meshes;  // indices into Scene::meshes
   int skin = -1;            // index into Scene::skins, or -1
+};
+
+enum class AnimationPath { kTranslation, kRotation, kScale };
+enum class Interpolation { kLinear, kStep, kCubicSpline };
+
+// Values per key of a path: 3 for translation and scale, 4 for rotation (a quaternion).
+inline size_t AnimationPathWidth(AnimationPath path) {
+  return path == AnimationPath::kRotation ? 4 : 3;
+}
+
+// Key frames of one animated property. values holds AnimationPathWidth values per key, or three
+// times as many with kCubicSpline (in-tangent, value, out-tangent per key, as glTF stores them).
+struct AnimationSampler {
+  std::vector<float> times;  // seconds, ascending
+  std::vector<float> values;
+  Interpolation interpolation = Interpolation::kLinear;
+};
+
+struct AnimationChannel {
+  int sampler = 0;  // index into Animation::samplers
+  int node = 0;     // index into Scene::nodes
+  AnimationPath path = AnimationPath::kTranslation;
+};
+
+// A clip: channels that drive node properties from key frames, played together.
+struct Animation {
+  std::string name;
+  std::vector<AnimationSampler> samplers;
+  std::vector<AnimationChannel> channels;
 };
 
 struct Scene {
@@ -86,6 +153,7 @@ struct Scene {
   std::vector<Image> images;
   std::vector<Skin> skins;
   std::vector<Node> nodes;  // nodes[0..] in any order; roots have parent -1
+  std::vector<Animation> animations;
   // What a reader could not keep, one human-readable line each ("dropped 2 animations: ...").
   std::vector<std::string> dropped;
   // Vertex records the file held (OBJ `v` lines, OFF/PLY vertices, ...) before unification; 0 =
