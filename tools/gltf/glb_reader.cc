@@ -32,7 +32,9 @@ Result<Scene> Decoder::Run() {
     }
   }
   HP_RETURN_IF_ERROR(DecodeSkins(&scene));
+  HP_RETURN_IF_ERROR(DecodeAnimations(&scene));
   HP_RETURN_IF_ERROR(DecodeNodes(&scene));
+  GiveAnimatedNodesTrs(&scene);
 
   // Skinned meshes: every joint index must name one of the skin's joints.
   for (size_t i = 0; i < scene.nodes.size(); ++i) {
@@ -51,8 +53,6 @@ Result<Scene> Decoder::Run() {
     }
   }
 
-  if (TopCount("animations") > 0)
-    Drop("dropped " + std::to_string(TopCount("animations")) + " animations");
   if (TopCount("cameras") > 0) Drop("dropped " + std::to_string(TopCount("cameras")) + " cameras");
   if (TopCount("scenes") > 1) {
     Drop("dropped " + std::to_string(TopCount("scenes") - 1) +

@@ -168,10 +168,20 @@ class Decoder {
   Status DecodeImages(Scene* scene);
   Status DecodeTextureRef(const json& material, const char* key, const std::string& where,
                           bool inside_pbr, TextureRef* out);
+  Status DecodeSampler(const json& texture, const std::string& where, Sampler* out);
+  // normalTexture.scale or occlusionTexture.strength, when the slot has one.
+  Status DecodeTextureStrength(const json& material, const char* slot, const char* key,
+                               const std::string& where, float* out);
   Status DecodeMaterials(Scene* scene);
   Status DecodeMesh(int64_t index, Scene* scene, Mesh* out);
   Status DecodeSkins(Scene* scene);
   Status DecodeNodes(Scene* scene);
+  Status DecodeAnimations(Scene* scene);
+  // Nodes that animations drive but that the file gave as a matrix (invalid glTF, but seen) get
+  // the TRS of their matrix; channels of a node without one (shear) are dropped.
+  void GiveAnimatedNodesTrs(Scene* scene);
+  Status DecodeAnimationSampler(const json& j, const std::string& where, AnimationPath path,
+                                AnimationSampler* out);
   void Drop(const std::string& what) { dropped_.push_back(what); }
 
   const GltfDocument& doc_;

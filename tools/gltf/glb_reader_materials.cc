@@ -1,8 +1,10 @@
-// Images and materials (metallic-roughness factors and the five texture slots).
+// Images and materials (metallic-roughness factors, the five texture slots with their samplers,
+// alpha modes, KHR_materials_unlit and KHR_materials_emissive_strength).
 #include <cmath>
 
 #include "gltf/glb_reader_decoder.h"
 
+#include <algorithm>
 #include <cstring>
 #include <utility>
 
@@ -92,6 +94,7 @@ Status Decoder::DecodeTextureRef(const json& material, const char* key, const st
   if (static_cast<size_t>(source) >= TopCount("images")) {
     return Error(xw, "source image " + std::to_string(source) + " does not exist");
   }
+  HP_RETURN_IF_ERROR(DecodeSampler(t, xw, &out->sampler));
   auto transform_ext = it->find("extensions");
   if (transform_ext != it->end() && transform_ext->is_object() &&
       transform_ext->contains("KHR_texture_transform")) {
@@ -121,6 +124,33 @@ Status Decoder::DecodeTextureRef(const json& material, const char* key, const st
   return Status::Ok();
 }
 
+Status Decoder::DecodeSampler(const json& texture, const std::string& where, Sampler* out) {
+  int64_t index = -1;
+  HP_RETURN_IF_ERROR(GetIndex(texture, "sampler", where, &index));
+  if (index < 0) return Status::Ok();
+  const json* samplers = nullptr;
+  HP_RETURN_IF_ERROR(TopLevel("samplers", &samplers));
+  if (samplers == nullptr || static_cast<size_t>(index) >= samplers->size())
+    return Error(where, "sampler " + std::to_string(index) + " does not exist");
+  const json& j = (*samplers)[static_cast<size_t>(index)];
+  const std::string sw = Item("samplers", static_cast<uint64_t>(index));
+  uint64_t mag = 0, min = 0, wrap_s = 10497, wrap_t = 10497;
+  HP_RETURN_IF_ERROR(GetUint(j, "magFilter", sw, 0, &mag));
+  HP_RETURN_IF_ERROR(GetUint(j, "minFilter", sw, 0, &min));
+  HP_RETURN_IF_ERROR(GetUint(j, "wrapS", sw, 10497, &wrap_s));
+  HP_RETURN_IF_ERROR(GetUint(j, "wrapT", sw, 10497, &wrap_t));
+  // Codes glTF does not define are left to the viewer (filters) or to REPEAT (wraps), as a
+  // viewer given them would do.
+  auto known = [](uint64_t v, std::initializer_list<uint64_t> codes) {
+    return std::find(codes.begin(), codes.end(), v) != codes.end();
+  };
+  out->mag_filter = known(mag, {9728, 9729}) ? static_cast<int>(mag) : 0;
+  out->min_filter = known(min, {9728, 9729, 9984, 9985, 9986, 9987}) ? static_cast<int>(min) : 0;
+  out->wrap_s = known(wrap_s, {33071, 33648, 10497}) ? static_cast<int>(wrap_s) : 10497;
+  out->wrap_t = known(wrap_t, {33071, 33648, 10497}) ? static_cast<int>(wrap_t) : 10497;
+  return Status::Ok();
+}
+
 void UvTransform::Apply(float* uv) const {
   const double u = scale[0] * double(uv[0]), v = scale[1] * double(uv[1]);
   const double c = std::cos(rotation), s = std::sin(rotation);
@@ -128,11 +158,20 @@ void UvTransform::Apply(float* uv) const {
   uv[1] = static_cast<float>(offset[1] + c * v - s * u);
 }
 
+Status Decoder::DecodeTextureStrength(const json& material, const char* slot, const char* key,
+                                      const std::string& where, float* out) {
+  auto it = material.find(slot);
+  if (it == material.end() || !it->is_object()) return Status::Ok();
+  double value = *out;
+  HP_RETURN_IF_ERROR(GetNumber(*it, key, where + "." + slot, &value));
+  *out = static_cast<float>(value);
+  return Status::Ok();
+}
+
 Status Decoder::DecodeMaterials(Scene* scene) {
   const json* materials = nullptr;
   HP_RETURN_IF_ERROR(TopLevel("materials", &materials));
   if (materials == nullptr) return Status::Ok();
-  size_t non_opaque_materials = 0;
   for (size_t i = 0; i < materials->size(); ++i) {
     const json& j = (*materials)[i];
     const std::string mw = Item("materials", i);
@@ -163,10 +202,36 @@ Status Decoder::DecodeMaterials(Scene* scene) {
     HP_RETURN_IF_ERROR(GetBool(j, "doubleSided", mw, &m.double_sided));
     std::string alpha_mode;
     HP_RETURN_IF_ERROR(GetString(j, "alphaMode", mw, &alpha_mode));
-    if (!alpha_mode.empty() && alpha_mode != "OPAQUE") ++non_opaque_materials;
+    if (alpha_mode == "MASK") {
+      m.alpha_mode = AlphaMode::kMask;
+    } else if (alpha_mode == "BLEND") {
+      m.alpha_mode = AlphaMode::kBlend;
+    } else if (!alpha_mode.empty() && alpha_mode != "OPAQUE") {
+      return Error(mw, "alphaMode '" + alpha_mode + "' is not OPAQUE, MASK or BLEND");
+    }
+    double cutoff = 0.5;
+    HP_RETURN_IF_ERROR(GetNumber(j, "alphaCutoff", mw, &cutoff));
+    if (cutoff < 0) return Error(mw, "alphaCutoff is negative");
+    m.alpha_cutoff = static_cast<float>(cutoff);
     HP_RETURN_IF_ERROR(DecodeTextureRef(j, "normalTexture", mw, false, &m.normal_texture));
     HP_RETURN_IF_ERROR(DecodeTextureRef(j, "occlusionTexture", mw, false, &m.occlusion_texture));
     HP_RETURN_IF_ERROR(DecodeTextureRef(j, "emissiveTexture", mw, false, &m.emissive_texture));
+    HP_RETURN_IF_ERROR(DecodeTextureStrength(j, "normalTexture", "scale", mw, &m.normal_scale));
+    HP_RETURN_IF_ERROR(
+        DecodeTextureStrength(j, "occlusionTexture", "strength", mw, &m.occlusion_strength));
+    auto ext = j.find("extensions");
+    if (ext != j.end() && ext->is_object()) {
+      m.unlit = ext->contains("KHR_materials_unlit");
+      auto strength = ext->find("KHR_materials_emissive_strength");
+      if (strength != ext->end()) {
+        const std::string ew = mw + ".extensions.KHR_materials_emissive_strength";
+        if (!strength->is_object()) return Error(ew, "is not an object");
+        double value = 1;
+        HP_RETURN_IF_ERROR(GetNumber(*strength, "emissiveStrength", ew, &value));
+        if (value < 0) return Error(ew, "emissiveStrength is negative");
+        m.emissive_strength = static_cast<float>(value);
+      }
+    }
     scene->materials.push_back(std::move(m));
     for (const auto& [set, transform] : current_uv_transforms_) {
       if (transform.conflicting) {
@@ -176,11 +241,6 @@ Status Decoder::DecodeMaterials(Scene* scene) {
     }
     material_uv_transforms_.push_back(current_uv_transforms_);
   }
-  if (non_opaque_materials > 0) {
-    Drop("dropped alphaMode MASK/BLEND of " + std::to_string(non_opaque_materials) + " materials");
-  }
-  if (TopCount("samplers") > 0)
-    Drop("dropped " + std::to_string(TopCount("samplers")) + " texture samplers");
   return Status::Ok();
 }
 

@@ -94,6 +94,9 @@ Status Decoder::DecodeNodes(Scene* scene) {
     for (int jn : s.joints) referenced[static_cast<size_t>(jn)] = true;
     if (s.skeleton >= 0) referenced[static_cast<size_t>(s.skeleton)] = true;
   }
+  for (const Animation& a : scene->animations) {
+    for (const AnimationChannel& c : a.channels) referenced[static_cast<size_t>(c.node)] = true;
+  }
   std::vector<int> remap(n, -1);
   std::vector<bool> remove(n, false);
   for (size_t i = 0; i < n; ++i) {
@@ -127,6 +130,9 @@ Status Decoder::DecodeNodes(Scene* scene) {
   for (Skin& s : scene->skins) {
     for (int& jn : s.joints) jn = remap[static_cast<size_t>(jn)];
     if (s.skeleton >= 0) s.skeleton = remap[static_cast<size_t>(s.skeleton)];
+  }
+  for (Animation& a : scene->animations) {
+    for (AnimationChannel& c : a.channels) c.node = remap[static_cast<size_t>(c.node)];
   }
   scene->nodes = std::move(kept);
   return Status::Ok();

@@ -5,9 +5,11 @@
 #include <cstring>
 #include <limits>
 #include <map>
+#include <optional>
 #include <utility>
 
 #include "gltf/node_forest.h"
+#include "scene/transform.h"
 
 namespace hullpack {
 namespace {
@@ -91,18 +93,153 @@ int AddFloatAttribute(GltfDocument* doc, const std::vector<float>& values, int w
   return doc->AddAccessor(desc);
 }
 
-json TextureInfo(const TextureRef& ref, std::map<int, int>* texture_of_image, GltfDocument* doc) {
-  auto it = texture_of_image->find(ref.image);
-  int texture;
-  if (it == texture_of_image->end()) {
-    texture = doc->Append("textures", json{{"source", ref.image}});
-    texture_of_image->emplace(ref.image, texture);
-  } else {
-    texture = it->second;
+// One glTF texture per image and sampler, one glTF sampler per distinct non-default sampler (a
+// texture without one gets glTF's default: repeat, filters left to the viewer).
+class TextureTable {
+ public:
+  explicit TextureTable(GltfDocument* doc) : doc_(doc) {}
+
+  json Info(const TextureRef& ref) {
+    const Key key = {ref.image, ref.sampler.mag_filter, ref.sampler.min_filter, ref.sampler.wrap_s,
+                     ref.sampler.wrap_t};
+    auto it = textures_.find(key);
+    int texture;
+    if (it != textures_.end()) {
+      texture = it->second;
+    } else {
+      json j = {{"source", ref.image}};
+      if (!ref.sampler.is_default()) j["sampler"] = SamplerIndex(ref.sampler);
+      texture = doc_->Append("textures", std::move(j));
+      textures_.emplace(key, texture);
+    }
+    json info = {{"index", texture}};
+    if (ref.uv_set != 0) info["texCoord"] = ref.uv_set;
+    return info;
   }
-  json info = {{"index", texture}};
-  if (ref.uv_set != 0) info["texCoord"] = ref.uv_set;
-  return info;
+
+ private:
+  using Key = std::array<int, 5>;
+
+  int SamplerIndex(const Sampler& s) {
+    const Key key = {0, s.mag_filter, s.min_filter, s.wrap_s, s.wrap_t};
+    auto it = samplers_.find(key);
+    if (it != samplers_.end()) return it->second;
+    json j = json::object();
+    if (s.mag_filter != 0) j["magFilter"] = s.mag_filter;
+    if (s.min_filter != 0) j["minFilter"] = s.min_filter;
+    if (s.wrap_s != 10497) j["wrapS"] = s.wrap_s;
+    if (s.wrap_t != 10497) j["wrapT"] = s.wrap_t;
+    const int index = doc_->Append("samplers", std::move(j));
+    samplers_.emplace(key, index);
+    return index;
+  }
+
+  GltfDocument* doc_;
+  std::map<Key, int> textures_;
+  std::map<Key, int> samplers_;
+};
+
+const char* AlphaModeName(AlphaMode mode) {
+  switch (mode) {
+    case AlphaMode::kMask:
+      return "MASK";
+    case AlphaMode::kBlend:
+      return "BLEND";
+    case AlphaMode::kOpaque:
+      break;
+  }
+  return "OPAQUE";
+}
+
+const char* PathName(AnimationPath path) {
+  switch (path) {
+    case AnimationPath::kRotation:
+      return "rotation";
+    case AnimationPath::kScale:
+      return "scale";
+    case AnimationPath::kTranslation:
+      break;
+  }
+  return "translation";
+}
+
+const char* InterpolationName(Interpolation interpolation) {
+  switch (interpolation) {
+    case Interpolation::kStep:
+      return "STEP";
+    case Interpolation::kCubicSpline:
+      return "CUBICSPLINE";
+    case Interpolation::kLinear:
+      break;
+  }
+  return "LINEAR";
+}
+
+// The node's transform as glTF JSON members: TRS when the scene kept it or an animation drives the
+// node (glTF animates TRS only), else a matrix; nothing for the identity.
+void WriteTransform(const Node& n, bool animated, json* j) {
+  std::optional<Trs> trs = n.trs;
+  Trs decomposed;
+  if (!trs && animated && DecomposeMatrix(n.local_transform, &decomposed)) trs = decomposed;
+  if (trs) {
+    if (trs->translation != Trs().translation) (*j)["translation"] = trs->translation;
+    if (trs->rotation != Trs().rotation) (*j)["rotation"] = trs->rotation;
+    if (trs->scale != Trs().scale) (*j)["scale"] = trs->scale;
+  } else if (n.local_transform != kIdentity) {
+    (*j)["matrix"] = n.local_transform;
+  }
+}
+
+// Animations as glTF: per sampler an input accessor of key times (with min/max, as glTF requires;
+// samplers with the same times share one) and an output accessor of values.
+void WriteAnimations(const Scene& scene, const std::vector<int>& gltf_node, GltfDocument* doc) {
+  std::map<std::vector<float>, int> time_accessors;
+  for (const Animation& a : scene.animations) {
+    if (a.channels.empty()) continue;
+    std::vector<int> sampler_index(a.samplers.size(), -1);
+    json samplers = json::array();
+    json channels = json::array();
+    for (const AnimationChannel& c : a.channels) {
+      const size_t si = static_cast<size_t>(c.sampler);
+      if (sampler_index[si] < 0) {
+        const AnimationSampler& s = a.samplers[si];
+        auto known = time_accessors.find(s.times);
+        int input;
+        if (known != time_accessors.end()) {
+          input = known->second;
+        } else {
+          AccessorDesc times;
+          times.buffer_view = doc->AddBufferView(s.times.data(), s.times.size() * sizeof(float), 4);
+          times.component_type = gltf::kFloat;
+          times.count = s.times.size();
+          times.type = "SCALAR";
+          times.min = {s.times.front()};
+          times.max = {s.times.back()};
+          input = doc->AddAccessor(times);
+          time_accessors.emplace(s.times, input);
+        }
+        AccessorDesc values;
+        values.buffer_view =
+            doc->AddBufferView(s.values.data(), s.values.size() * sizeof(float), 4);
+        values.component_type = gltf::kFloat;
+        const size_t width = AnimationPathWidth(c.path);
+        values.count = s.values.size() / width;
+        values.type = width == 4 ? "VEC4" : "VEC3";
+        json sj = {{"input", input}, {"output", doc->AddAccessor(values)}};
+        if (s.interpolation != Interpolation::kLinear)
+          sj["interpolation"] = InterpolationName(s.interpolation);
+        sampler_index[si] = static_cast<int>(samplers.size());
+        samplers.push_back(std::move(sj));
+      }
+      channels.push_back(
+          {{"sampler", sampler_index[si]},
+           {"target",
+            {{"node", gltf_node[static_cast<size_t>(c.node)]}, {"path", PathName(c.path)}}}});
+    }
+    json j = {{"samplers", std::move(samplers)}, {"channels", std::move(channels)}};
+    if (!a.name.empty()) j["name"] = a.name;
+    doc->Append("animations", std::move(j));
+  }
 }
 
 // Makes an image reference a valid URI without changing one that already is: backslashes become
@@ -143,7 +280,56 @@ size_t UvSetsNeeded(const Scene& scene, const Mesh& m) {
   return needed;
 }
 
+Status CheckSampler(const AnimationSampler& s, size_t width, const std::string& label) {
+  if (s.times.empty()) return ArgError(label + " has no key frames");
+  for (size_t k = 0; k < s.times.size(); ++k) {
+    if (!std::isfinite(s.times[k]) || s.times[k] < 0 || (k > 0 && !(s.times[k] > s.times[k - 1])))
+      return ArgError(label + " key time " + std::to_string(k) +
+                      " is not finite, negative or not ascending");
+  }
+  const size_t per_key = (s.interpolation == Interpolation::kCubicSpline ? 3 : 1) * width;
+  if (s.values.size() != s.times.size() * per_key) {
+    return ArgError(label + " has " + std::to_string(s.values.size()) + " values for " +
+                    std::to_string(s.times.size()) + " keys of " + std::to_string(per_key));
+  }
+  if (!AllFinite(s.values)) return ArgError(label + " holds a NaN or infinite value");
+  return Status::Ok();
+}
+
 }  // namespace
+
+Status ValidateAnimation(const Scene& scene, size_t index) {
+  const Animation& a = scene.animations[index];
+  const std::string label = "animation " + std::to_string(index);
+  std::vector<size_t> width(a.samplers.size(), 0);
+  std::map<std::pair<int, int>, size_t> targets;
+  for (size_t c = 0; c < a.channels.size(); ++c) {
+    const AnimationChannel& ch = a.channels[c];
+    const std::string cl = label + " channel " + std::to_string(c);
+    if (ch.sampler < 0 || static_cast<size_t>(ch.sampler) >= a.samplers.size())
+      return ArgError(cl + " uses sampler " + std::to_string(ch.sampler));
+    if (ch.node < 0 || static_cast<size_t>(ch.node) >= scene.nodes.size())
+      return ArgError(cl + " targets node " + std::to_string(ch.node));
+    if (!targets.emplace(std::make_pair(ch.node, static_cast<int>(ch.path)), c).second)
+      return ArgError(cl + " repeats the node and path of another channel");
+    size_t& w = width[static_cast<size_t>(ch.sampler)];
+    if (w != 0 && w != AnimationPathWidth(ch.path))
+      return ArgError(cl + " uses a sampler for values of another width");
+    w = AnimationPathWidth(ch.path);
+    const Node& node = scene.nodes[static_cast<size_t>(ch.node)];
+    Trs trs;
+    if (!node.trs && !DecomposeMatrix(node.local_transform, &trs)) {
+      return ArgError(cl + " animates node " + std::to_string(ch.node) +
+                      ", whose matrix has no translation-rotation-scale form");
+    }
+  }
+  for (size_t s = 0; s < a.samplers.size(); ++s) {
+    if (width[s] == 0) continue;  // unused: not written
+    Status st = CheckSampler(a.samplers[s], width[s], label + " sampler " + std::to_string(s));
+    if (!st.ok()) return st;
+  }
+  return Status::Ok();
+}
 
 std::string SniffImageMime(const std::vector<uint8_t>& b) {
   static const uint8_t kPng[8] = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A};
@@ -216,8 +402,14 @@ Status ValidateSceneForGltf(const Scene& scene) {
   for (size_t i = 0; i < scene.materials.size(); ++i) {
     const Material& mat = scene.materials[i];
     if (!AllFiniteArray(mat.base_color) || !AllFiniteArray(mat.emissive) ||
-        !std::isfinite(mat.metallic) || !std::isfinite(mat.roughness)) {
+        !std::isfinite(mat.metallic) || !std::isfinite(mat.roughness) ||
+        !std::isfinite(mat.normal_scale) || !std::isfinite(mat.occlusion_strength)) {
       return ArgError("material " + std::to_string(i) + " has a NaN or infinite factor");
+    }
+    if (!(mat.alpha_cutoff >= 0) || !std::isfinite(mat.alpha_cutoff) ||
+        !(mat.emissive_strength >= 0) || !std::isfinite(mat.emissive_strength)) {
+      return ArgError("material " + std::to_string(i) +
+                      " has a negative or non-finite alpha cutoff or emissive strength");
     }
     Status s = CheckTextureRef(scene, i, mat.base_color_texture, "base colour texture");
     if (s.ok())
@@ -323,6 +515,10 @@ Status ValidateSceneForGltf(const Scene& scene) {
   const int on_cycle = gltf_internal::FirstNodeOnCycle(scene.nodes);
   if (on_cycle >= 0)
     return ArgError("the node hierarchy has a cycle through node " + std::to_string(on_cycle));
+  for (size_t i = 0; i < scene.animations.size(); ++i) {
+    Status s = ValidateAnimation(scene, i);
+    if (!s.ok()) return s;
+  }
   return Status::Ok();
 }
 
@@ -351,8 +547,8 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
     doc->Append("images", std::move(j));
   }
 
-  // Materials (textures are created on first use, one per image).
-  std::map<int, int> texture_of_image;
+  // Materials (textures are created on first use, one per image and sampler).
+  TextureTable textures(doc);
   for (const Material& mat : scene.materials) {
     json j = json::object();
     if (!mat.name.empty()) j["name"] = mat.name;
@@ -360,22 +556,36 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
                 {"metallicFactor", mat.metallic},
                 {"roughnessFactor", mat.roughness}};
     if (mat.base_color_texture.used()) {
-      pbr["baseColorTexture"] = TextureInfo(mat.base_color_texture, &texture_of_image, doc);
+      pbr["baseColorTexture"] = textures.Info(mat.base_color_texture);
     }
     if (mat.metallic_roughness_texture.used()) {
-      pbr["metallicRoughnessTexture"] =
-          TextureInfo(mat.metallic_roughness_texture, &texture_of_image, doc);
+      pbr["metallicRoughnessTexture"] = textures.Info(mat.metallic_roughness_texture);
     }
     j["pbrMetallicRoughness"] = std::move(pbr);
-    if (mat.normal_texture.used())
-      j["normalTexture"] = TextureInfo(mat.normal_texture, &texture_of_image, doc);
-    if (mat.occlusion_texture.used()) {
-      j["occlusionTexture"] = TextureInfo(mat.occlusion_texture, &texture_of_image, doc);
+    if (mat.normal_texture.used()) {
+      j["normalTexture"] = textures.Info(mat.normal_texture);
+      if (mat.normal_scale != 1.0f) j["normalTexture"]["scale"] = mat.normal_scale;
     }
-    if (mat.emissive_texture.used())
-      j["emissiveTexture"] = TextureInfo(mat.emissive_texture, &texture_of_image, doc);
+    if (mat.occlusion_texture.used()) {
+      j["occlusionTexture"] = textures.Info(mat.occlusion_texture);
+      if (mat.occlusion_strength != 1.0f)
+        j["occlusionTexture"]["strength"] = mat.occlusion_strength;
+    }
+    if (mat.emissive_texture.used()) j["emissiveTexture"] = textures.Info(mat.emissive_texture);
     if (mat.emissive != std::array<float, 3>{0, 0, 0}) j["emissiveFactor"] = mat.emissive;
     if (mat.double_sided) j["doubleSided"] = true;
+    if (mat.alpha_mode != AlphaMode::kOpaque) j["alphaMode"] = AlphaModeName(mat.alpha_mode);
+    if (mat.alpha_mode == AlphaMode::kMask && mat.alpha_cutoff != 0.5f)
+      j["alphaCutoff"] = mat.alpha_cutoff;
+    if (mat.unlit) {
+      j["extensions"]["KHR_materials_unlit"] = json::object();
+      doc->UseExtension("KHR_materials_unlit", false);
+    }
+    if (mat.emissive_strength != 1.0f) {
+      j["extensions"]["KHR_materials_emissive_strength"] = {
+          {"emissiveStrength", mat.emissive_strength}};
+      doc->UseExtension("KHR_materials_emissive_strength", false);
+    }
     doc->Append("materials", std::move(j));
   }
 
@@ -513,6 +723,10 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
       nodes.push_back(std::move(n));
     }
   }
+  std::vector<bool> animated(nodes.size(), false);
+  for (const Animation& a : scene.animations) {
+    for (const AnimationChannel& c : a.channels) animated[static_cast<size_t>(c.node)] = true;
+  }
   json node_array = json::array();
   json extra_nodes = json::array();
   std::vector<int> roots;
@@ -536,7 +750,7 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
       }
     }
     if (!children.empty()) j["children"] = children;
-    if (n.local_transform != kIdentity) j["matrix"] = n.local_transform;
+    WriteTransform(n, animated[i], &j);
     node_array.push_back(std::move(j));
     out.nodes.push_back(static_cast<int>(i));
     if (n.parent < 0) roots.push_back(static_cast<int>(i));
@@ -548,6 +762,7 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
   if (!roots.empty()) scene_json["nodes"] = roots;
   root["scenes"] = json::array({std::move(scene_json)});
   root["scene"] = 0;
+  WriteAnimations(scene, out.nodes, doc);
   return Status::Ok();
 }
 

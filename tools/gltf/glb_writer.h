@@ -14,6 +14,10 @@
 // samples a UV set the mesh lacks, zero-filled TEXCOORD accessors (no bufferView) keep the file
 // valid and extras.hullpack.uv_sets tells the reader to drop them.
 //
+// Materials keep alpha mode and cutoff, KHR_materials_unlit and KHR_materials_emissive_strength;
+// one texture per image and sampler. Nodes are written as TRS when the scene kept TRS or an
+// animation drives them, else as a matrix. Animations share the key-time accessors of equal times.
+//
 // Nodes keep their scene indices; a node with several meshes gets one extra child node per extra
 // mesh (appended after the scene's nodes, marked extras.hullpack.mesh_of_parent so the reader folds
 // them back). A scene without nodes gets one root node per mesh.
@@ -64,6 +68,11 @@ struct GltfSceneLayout {
 // that is a forest. kInvalidMesh / kInvalidArgument otherwise, naming the mesh, material, skin or
 // node.
 Status ValidateSceneForGltf(const Scene& scene);
+
+// The part of ValidateSceneForGltf for scene.animations[index]: channels name existing samplers and
+// nodes, at most one channel per node and path, key times finite and ascending, as many finite
+// values as the keys need, and animated nodes expressible as TRS.
+Status ValidateAnimation(const Scene& scene, size_t index);
 
 // Writes `scene` into `doc` (which should be fresh). `layout` may be null.
 Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, GltfDocument* doc,

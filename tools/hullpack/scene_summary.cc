@@ -123,6 +123,7 @@ nlohmann::json SummaryToJson(const Scene& scene, const SceneSummary& s) {
                       {"images", scene.images.size()},
                       {"skins", scene.skins.size()},
                       {"nodes", scene.nodes.size()},
+                      {"animations", scene.animations.size()},
                       {"has_normals", s.normals},
                       {"has_tangents", s.tangents},
                       {"uv_sets", s.max_uv_sets},
@@ -154,7 +155,8 @@ std::string SummaryToText(const Scene& scene, const SceneSummary& s) {
   if (s.vertices != s.file_vertices)
     o << " in the file (" << s.vertices << " after attribute unification)";
   o << "\n  materials " << scene.materials.size() << ", images " << scene.images.size()
-    << ", skins " << scene.skins.size() << ", nodes " << scene.nodes.size() << "\n";
+    << ", skins " << scene.skins.size() << ", nodes " << scene.nodes.size() << ", animations "
+    << scene.animations.size() << "\n";
   o << "  attributes: " << Attributes(s.normals, s.max_uv_sets, s.colors, s.tangents, s.skin)
     << "\n";
   const double dx = double(t.bbox_max[0]) - t.bbox_min[0],

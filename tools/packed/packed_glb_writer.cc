@@ -189,6 +189,7 @@ Result<std::vector<uint8_t>> WritePackedGlb(const Scene& decoded, const PackedSt
     render.images = decoded.images;
     render.skins = decoded.skins;
     render.nodes = decoded.nodes;
+    render.animations = decoded.animations;
     render.meshes.assign(decoded.meshes.begin(), decoded.meshes.begin() + render_meshes);
     built = BuildGltfDocument(render, GlbWriteOptions(), &doc, &layout);
   }

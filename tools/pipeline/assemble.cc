@@ -10,6 +10,7 @@ Result<std::vector<uint8_t>> AssemblePackedGlb(Scene scene, std::vector<PackedMe
   decoded.images = std::move(scene.images);
   decoded.skins = std::move(scene.skins);
   decoded.nodes = std::move(scene.nodes);
+  decoded.animations = std::move(scene.animations);
   PackedStreams streams;
   for (size_t i = 0; i < n; ++i) {
     MeshSource source;

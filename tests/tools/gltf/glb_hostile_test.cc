@@ -1,5 +1,6 @@
 // The reader against hostile bytes: every failure must be an error Status, never a crash or hang.
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <random>
 
@@ -288,8 +289,8 @@ TEST(GlbHostileTest, IndexAndReferenceBounds) {
   ExpectError(DecodeGltfDocument(GltfDocument(j, bin, true, glb.size()), "mutated.glb"),
               StatusCode::kParseError, "index 0 is 4 but the primitive has 4 vertices");
 
-  ExpectError(DecodeMutated([](json& js) { js["meshes"][0]["primitives"][0]["material"] = 2; }),
-              StatusCode::kParseError, "material 2 does not exist");
+  ExpectError(DecodeMutated([](json& js) { js["meshes"][0]["primitives"][0]["material"] = 3; }),
+              StatusCode::kParseError, "material 3 does not exist");
   ExpectError(DecodeMutated([](json& js) { js["nodes"][0]["mesh"] = 3; }), StatusCode::kParseError,
               "mesh 3 does not exist");
   ExpectError(DecodeMutated([](json& js) { js["nodes"][0]["children"].push_back(0); }),
@@ -467,6 +468,85 @@ TEST(GlbHostileTest, JsonShapeErrors) {
         << text << " -> " << s.status().ToString();
     EXPECT_EQ(s.status().message().rfind("shape.gltf: ", 0), 0u) << s.status().message();
   }
+}
+
+TEST(GlbHostileTest, MalformedAnimationsAreErrors) {
+  ExpectError(
+      DecodeMutated([](json& j) { j["animations"][0]["channels"][0]["target"]["node"] = 99; }),
+      StatusCode::kParseError, "node 99 does not exist");
+  ExpectError(DecodeMutated([](json& j) { j["animations"][0]["channels"][0]["sampler"] = 7; }),
+              StatusCode::kParseError, "sampler 7 does not exist");
+  ExpectError(
+      DecodeMutated([](json& j) { j["animations"][0]["samplers"][0]["interpolation"] = "SMOOTH"; }),
+      StatusCode::kParseError, "interpolation 'SMOOTH'");
+  ExpectError(DecodeMutated(
+                  [](json& j) { j["animations"][0]["channels"][0]["target"]["path"] = "colour"; }),
+              StatusCode::kParseError, "path 'colour'");
+  // Key times that go back, and outputs for fewer keys than the times.
+  ExpectError(DecodeMutated([](json& j) {
+                const int input = j["animations"][0]["samplers"][0]["input"];
+                j["accessors"][input]["byteOffset"] = 4;
+                j["accessors"][input]["count"] = 2;
+              }),
+              StatusCode::kParseError, "values for 2 key times");
+  ExpectError(DecodeMutated([](json& j) {
+                // The rotation's output read as key times: 0, 0, ... is not ascending.
+                j["animations"][0]["samplers"][0]["input"] =
+                    j["animations"][0]["samplers"][0]["output"];
+              }),
+              StatusCode::kParseError, "");
+}
+
+TEST(GlbHostileTest, AnimationChannelsItCannotKeepAreDroppedWithANote) {
+  Result<Scene> s = DecodeMutated([](json& j) {
+    json& channels = j["animations"][0]["channels"];
+    channels.push_back(channels[1]);  // the same node and path again
+    channels[0]["target"]["path"] = "weights";
+  });
+  ASSERT_TRUE(s.ok()) << s.status().ToString();
+  ASSERT_EQ(s->animations.size(), 1u);
+  EXPECT_EQ(s->animations[0].channels.size(), 2u);
+  // The weights channel's sampler is not read, so only two samplers are left.
+  EXPECT_EQ(s->animations[0].samplers.size(), 2u);
+  std::string notes;
+  for (const std::string& d : s->dropped) notes += d + "\n";
+  EXPECT_NE(notes.find("morph-target weights"), std::string::npos) << notes;
+  EXPECT_NE(notes.find("repeat a node and path"), std::string::npos) << notes;
+}
+
+TEST(GlbHostileTest, AnAnimatedMatrixNodeGetsItsTrsOrLosesItsChannels) {
+  // glTF forbids animating a node given as a matrix; files that do it anyway still play.
+  Result<Scene> rotated = DecodeMutated(
+      [](json& j) { j["nodes"][1]["matrix"] = {0, 1, 0, 0, -1, 0, 0, 0, 0, 0, 1, 0, 3, 0, 0, 1}; });
+  ASSERT_TRUE(rotated.ok()) << rotated.status().ToString();
+  ASSERT_TRUE(rotated->nodes[1].trs.has_value());
+  EXPECT_FLOAT_EQ(static_cast<float>(rotated->nodes[1].trs->translation[0]), 3.0f);
+  EXPECT_NEAR(rotated->nodes[1].trs->rotation[2], std::sqrt(0.5), 1e-12);
+  EXPECT_EQ(rotated->animations[0].channels.size(), 3u);
+  Result<Scene> sheared = DecodeMutated([](json& j) {
+    j["nodes"][1]["matrix"] = {1, 0, 0, 0, 0.5, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  });
+  ASSERT_TRUE(sheared.ok()) << sheared.status().ToString();
+  EXPECT_FALSE(sheared->nodes[1].trs.has_value());
+  EXPECT_EQ(sheared->animations[0].channels.size(), 2u);
+}
+
+TEST(GlbHostileTest, MalformedMaterialFieldsAreErrors) {
+  ExpectError(DecodeMutated([](json& j) { j["materials"][0]["alphaMode"] = "CUTOUT"; }),
+              StatusCode::kParseError, "alphaMode 'CUTOUT'");
+  ExpectError(DecodeMutated([](json& j) { j["materials"][0]["alphaCutoff"] = -1; }),
+              StatusCode::kParseError, "alphaCutoff is negative");
+  ExpectError(DecodeMutated([](json& j) { j["textures"][0]["sampler"] = 5; }),
+              StatusCode::kParseError, "sampler 5 does not exist");
+  // Codes glTF does not define fall back to what a viewer would do.
+  Result<Scene> s = DecodeMutated([](json& j) {
+    j["samplers"][0]["magFilter"] = 1234;
+    j["samplers"][0]["wrapS"] = 1;
+  });
+  ASSERT_TRUE(s.ok()) << s.status().ToString();
+  EXPECT_EQ(s->materials[0].base_color_texture.sampler.mag_filter, 0);
+  EXPECT_EQ(s->materials[0].base_color_texture.sampler.wrap_s, 10497);
+  EXPECT_EQ(s->materials[0].base_color_texture.sampler.min_filter, 9728);
 }
 
 }  // namespace

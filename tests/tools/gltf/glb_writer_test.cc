@@ -1,6 +1,7 @@
 #include "gltf/glb_writer.h"
 
 #include <cstring>
+#include <functional>
 
 #include <gtest/gtest.h>
 
@@ -95,6 +96,96 @@ TEST(GlbWriterTest, RichSceneJsonLayout) {
     EXPECT_EQ(v.value("byteOffset", 0u) % 4, 0u);
     EXPECT_LE(v.value("byteOffset", 0u) + v["byteLength"].get<size_t>(), buffer_length);
   }
+}
+
+TEST(GlbWriterTest, MaterialsKeepAlphaSamplersAndExtensions) {
+  const Scene scene = testing_gltf::MakeRichScene();
+  Result<std::vector<uint8_t>> glb = EncodeGlb(scene);
+  ASSERT_TRUE(glb.ok());
+  const GltfDocument doc = Parse(glb.value());
+  const json& j = doc.json();
+  const json& m = j["materials"];
+  EXPECT_EQ(m[0]["alphaMode"], "MASK");
+  EXPECT_EQ(m[0]["alphaCutoff"], 0.25);
+  EXPECT_EQ(m[0]["normalTexture"]["scale"], 0.5);
+  EXPECT_EQ(m[1]["alphaMode"], "BLEND");
+  EXPECT_FALSE(m[1].contains("alphaCutoff"));
+  EXPECT_EQ(m[1]["occlusionTexture"]["strength"], 0.75);
+  EXPECT_EQ(m[1]["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"], 4.0);
+  EXPECT_TRUE(m[2]["extensions"].contains("KHR_materials_unlit"));
+  EXPECT_FALSE(m[2].contains("alphaMode"));
+  EXPECT_EQ(j["extensionsUsed"], json({"KHR_materials_emissive_strength", "KHR_materials_unlit"}));
+  EXPECT_FALSE(j.contains("extensionsRequired"));
+  // Image 0 is sampled nearest and clamped by one slot and with the defaults by three others: two
+  // textures for it, one sampler; image 1 has one texture.
+  ASSERT_EQ(j["samplers"].size(), 1u);
+  EXPECT_EQ(j["samplers"][0],
+            json({{"magFilter", 9728}, {"minFilter", 9728}, {"wrapS", 33071}, {"wrapT", 33648}}));
+  ASSERT_EQ(j["textures"].size(), 3u);
+  const int base = m[0]["pbrMetallicRoughness"]["baseColorTexture"]["index"];
+  EXPECT_EQ(j["textures"][base]["sampler"], 0);
+  EXPECT_EQ(m[0]["normalTexture"]["index"],
+            m[2]["pbrMetallicRoughness"]["baseColorTexture"]["index"]);
+}
+
+TEST(GlbWriterTest, AnimationsDriveTrsNodesAndShareKeyTimes) {
+  Scene scene = testing_gltf::MakeRichScene();
+  // A node given as a matrix that an animation drives is written as TRS, as glTF requires.
+  scene.animations[0].channels.push_back({0, 4, AnimationPath::kRotation});
+  Result<std::vector<uint8_t>> glb = EncodeGlb(scene);
+  ASSERT_TRUE(glb.ok()) << glb.status().ToString();
+  const GltfDocument doc = Parse(glb.value());
+  const json& j = doc.json();
+  EXPECT_EQ(j["nodes"][2]["translation"], json({0, 1.5, 0}));
+  EXPECT_EQ(j["nodes"][2]["rotation"], json({0, 0, 0.6, 0.8}));
+  EXPECT_FALSE(j["nodes"][2].contains("matrix"));
+  EXPECT_FALSE(j["nodes"][4].contains("matrix"));
+  EXPECT_EQ(j["nodes"][4]["scale"], json({2, 2, 2}));
+  EXPECT_TRUE(j["nodes"][0].contains("matrix"));  // not animated: kept as the scene has it
+  ASSERT_EQ(j["animations"].size(), 1u);
+  const json& a = j["animations"][0];
+  EXPECT_EQ(a["name"], "wave");
+  ASSERT_EQ(a["samplers"].size(), 3u);
+  EXPECT_EQ(a["samplers"][0]["input"], a["samplers"][1]["input"]);
+  EXPECT_NE(a["samplers"][0]["input"], a["samplers"][2]["input"]);
+  EXPECT_FALSE(a["samplers"][0].contains("interpolation"));
+  EXPECT_EQ(a["samplers"][1]["interpolation"], "STEP");
+  EXPECT_EQ(a["samplers"][2]["interpolation"], "CUBICSPLINE");
+  const json& times = j["accessors"][a["samplers"][0]["input"].get<int>()];
+  EXPECT_EQ(times["min"], json({0.0}));
+  EXPECT_EQ(times["max"], json({1.0}));
+  EXPECT_EQ(j["accessors"][a["samplers"][2]["output"].get<int>()]["count"], 6);
+  ASSERT_EQ(a["channels"].size(), 4u);
+  EXPECT_EQ(a["channels"][3]["target"], json({{"node", 4}, {"path", "rotation"}}));
+  Result<Scene> back = DecodeGlb(glb->data(), glb->size(), "animated.glb");
+  ASSERT_TRUE(back.ok()) << back.status().ToString();
+  for (size_t k = 0; k < 16; ++k)
+    EXPECT_NEAR(back->nodes[4].local_transform[k], scene.nodes[4].local_transform[k], 1e-12) << k;
+}
+
+TEST(GlbWriterTest, RejectsInvalidAnimations) {
+  const Scene good = testing_gltf::MakeRichScene();
+  auto rejected = [&](const std::function<void(Scene&)>& edit, const std::string& needle) {
+    Scene s = good;
+    edit(s);
+    Result<std::vector<uint8_t>> glb = EncodeGlb(s);
+    ASSERT_FALSE(glb.ok()) << needle;
+    EXPECT_NE(glb.status().message().find(needle), std::string::npos) << glb.status().ToString();
+  };
+  rejected([](Scene& s) { s.animations[0].channels[0].node = 9; }, "targets node 9");
+  rejected([](Scene& s) { s.animations[0].channels[0].sampler = 5; }, "uses sampler 5");
+  rejected([](Scene& s) { s.animations[0].samplers[0].times[1] = 0.0f; }, "not ascending");
+  rejected([](Scene& s) { s.animations[0].samplers[0].values.pop_back(); }, "values for 3 keys");
+  rejected([](Scene& s) { s.animations[0].channels.push_back(s.animations[0].channels[0]); },
+           "repeats the node and path");
+  rejected([](Scene& s) { s.animations[0].channels[1].sampler = 0; }, "another width");
+  rejected(
+      [](Scene& s) {
+        s.nodes[0].local_transform[4] = 0.5;  // shear
+        s.animations[0].channels.push_back({1, 0, AnimationPath::kTranslation});
+      },
+      "no translation-rotation-scale form");
+  rejected([](Scene& s) { s.materials[0].alpha_cutoff = -1; }, "alpha cutoff");
 }
 
 TEST(GlbWriterTest, LargeMeshUsesUnsignedIntIndices) {
@@ -296,7 +387,9 @@ TEST(GlbWriterTest, PackerCanExtendTheDocument) {
   Result<std::vector<uint8_t>> glb = doc.Serialize();
   ASSERT_TRUE(glb.ok());
   const GltfDocument parsed = Parse(glb.value());
-  EXPECT_EQ(parsed.json()["extensionsUsed"], json({"EXT_hullpack_test", "EXT_hullpack_body"}));
+  EXPECT_EQ(parsed.json()["extensionsUsed"],
+            json({"KHR_materials_emissive_strength", "KHR_materials_unlit", "EXT_hullpack_test",
+                  "EXT_hullpack_body"}));
   EXPECT_EQ(parsed.json()["extensionsRequired"], json({"EXT_hullpack_test"}));
   const json& v = parsed.json()["bufferViews"][view];
   EXPECT_EQ(v["byteOffset"].get<size_t>() % 8, 0u);

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "common/test_shapes.h"
+#include "scene/transform.h"
 
 namespace hullpack {
 namespace testing_gltf {
@@ -60,8 +61,12 @@ Scene MakeRichScene() {
   m0.base_color = {0.8f, 0.25f, 0.125f, 1.0f};
   m0.metallic = 0.0f;
   m0.roughness = 0.5f;
-  m0.base_color_texture = {0, 0};
-  m0.normal_texture = {0, 1};
+  m0.base_color_texture = {0, 0, {}};
+  m0.base_color_texture.sampler = {9728, 9728, 33071, 33648};  // pixel art: nearest, clamped
+  m0.normal_texture = {0, 1, {}};
+  m0.normal_scale = 0.5f;
+  m0.alpha_mode = AlphaMode::kMask;
+  m0.alpha_cutoff = 0.25f;
   s.materials.push_back(m0);
   Material m1;
   m1.name = "metal";
@@ -69,10 +74,18 @@ Scene MakeRichScene() {
   m1.roughness = 0.25f;
   m1.emissive = {0.5f, 0.25f, 0.0f};
   m1.double_sided = true;
-  m1.metallic_roughness_texture = {1, 0};
-  m1.occlusion_texture = {1, 1};
-  m1.emissive_texture = {0, 0};
+  m1.metallic_roughness_texture = {1, 0, {}};
+  m1.occlusion_texture = {1, 1, {}};
+  m1.emissive_texture = {0, 0, {}};
+  m1.occlusion_strength = 0.75f;
+  m1.alpha_mode = AlphaMode::kBlend;
+  m1.emissive_strength = 4.0f;
   s.materials.push_back(m1);
+  Material m2;
+  m2.name = "glow";
+  m2.unlit = true;
+  m2.base_color_texture = {0, 0, {}};  // the same image as m0's, another sampler
+  s.materials.push_back(m2);
 
   Mesh skinned = MakeGrid(4, 3, 2, 0.0f);
   skinned.name = "skinned grid";
@@ -99,7 +112,7 @@ Scene MakeRichScene() {
   plain.name = "tetra";
   plain.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
   plain.indices = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
-  plain.material_ids = {1, 1, 1, 1};
+  plain.material_ids = {1, 1, 2, 2};
   s.meshes.push_back(plain);
 
   // Nodes: 0 root -> 1 joint0 -> 2 joint1; 3 skinned (a root, as glTF wants skinned meshes);
@@ -113,7 +126,11 @@ Scene MakeRichScene() {
   s.nodes[1].children = {2};
   s.nodes[2].name = "joint1";
   s.nodes[2].parent = 1;
-  s.nodes[2].local_transform = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 1.5, 0, 1};
+  s.nodes[2].trs = Trs();
+  s.nodes[2].trs->translation = {0, 1.5, 0};
+  s.nodes[2].trs->rotation = {0, 0, 0.6, 0.8};
+  s.nodes[2].local_transform = TrsMatrix(*s.nodes[2].trs);
+  s.nodes[1].trs = Trs();
   s.nodes[3].name = "skinned";
   s.nodes[3].meshes = {0};
   s.nodes[3].skin = 0;
@@ -131,6 +148,29 @@ Scene MakeRichScene() {
   skin.inverse_bind_matrices.assign(ibm0, ibm0 + 16);
   skin.inverse_bind_matrices.insert(skin.inverse_bind_matrices.end(), ibm1, ibm1 + 16);
   s.skins.push_back(skin);
+
+  // One clip driving both joints: each interpolation, and two samplers sharing their key times.
+  Animation wave;
+  wave.name = "wave";
+  AnimationSampler turn;
+  turn.times = {0.0f, 0.5f, 1.0f};
+  turn.values = {0, 0, 0, 1, 0, 0, 0.6f, 0.8f, 0, 0, 0, 1};
+  wave.samplers.push_back(turn);
+  AnimationSampler hop;
+  hop.interpolation = Interpolation::kStep;
+  hop.times = {0.0f, 0.5f, 1.0f};
+  hop.values = {0, 1.5f, 0, 0, 2, 0, 0, 1.5f, 0};
+  wave.samplers.push_back(hop);
+  AnimationSampler swell;
+  swell.interpolation = Interpolation::kCubicSpline;
+  swell.times = {0.25f, 0.75f};
+  swell.values = {0,     0,     0,     1,    1,    1,    0.5f, 0.5f, 0.5f,
+                  -0.5f, -0.5f, -0.5f, 1.5f, 1.5f, 1.5f, 0,    0,    0};
+  wave.samplers.push_back(swell);
+  wave.channels = {{0, 1, AnimationPath::kRotation},
+                   {1, 2, AnimationPath::kTranslation},
+                   {2, 2, AnimationPath::kScale}};
+  s.animations.push_back(wave);
   return s;
 }
 
@@ -193,7 +233,14 @@ void ExpectScenesEqual(const Scene& e, const Scene& a) {
     for (int k = 0; k < 5; ++k) {
       EXPECT_EQ(et[k]->image, at[k]->image) << w << " slot " << k;
       EXPECT_EQ(et[k]->uv_set, at[k]->uv_set) << w << " slot " << k;
+      EXPECT_TRUE(et[k]->sampler == at[k]->sampler) << w << " slot " << k;
     }
+    EXPECT_EQ(em.alpha_mode, am.alpha_mode) << w;
+    EXPECT_EQ(em.alpha_cutoff, am.alpha_cutoff) << w;
+    EXPECT_EQ(em.unlit, am.unlit) << w;
+    EXPECT_EQ(em.emissive_strength, am.emissive_strength) << w;
+    EXPECT_EQ(em.normal_scale, am.normal_scale) << w;
+    EXPECT_EQ(em.occlusion_strength, am.occlusion_strength) << w;
   }
   ASSERT_EQ(e.images.size(), a.images.size());
   for (size_t i = 0; i < e.images.size(); ++i) {
@@ -218,6 +265,31 @@ void ExpectScenesEqual(const Scene& e, const Scene& a) {
     EXPECT_EQ(e.nodes[i].local_transform, a.nodes[i].local_transform) << w;
     EXPECT_EQ(e.nodes[i].meshes, a.nodes[i].meshes) << w;
     EXPECT_EQ(e.nodes[i].skin, a.nodes[i].skin) << w;
+    ASSERT_EQ(e.nodes[i].trs.has_value(), a.nodes[i].trs.has_value()) << w;
+    if (e.nodes[i].trs) {
+      EXPECT_EQ(e.nodes[i].trs->translation, a.nodes[i].trs->translation) << w;
+      EXPECT_EQ(e.nodes[i].trs->rotation, a.nodes[i].trs->rotation) << w;
+      EXPECT_EQ(e.nodes[i].trs->scale, a.nodes[i].trs->scale) << w;
+    }
+  }
+  ASSERT_EQ(e.animations.size(), a.animations.size());
+  for (size_t i = 0; i < e.animations.size(); ++i) {
+    const Animation& ea = e.animations[i];
+    const Animation& aa = a.animations[i];
+    const std::string w = "animation " + std::to_string(i);
+    EXPECT_EQ(ea.name, aa.name) << w;
+    ASSERT_EQ(ea.samplers.size(), aa.samplers.size()) << w;
+    for (size_t k = 0; k < ea.samplers.size(); ++k) {
+      ExpectBitEqual(ea.samplers[k].times, aa.samplers[k].times, w + " times");
+      ExpectBitEqual(ea.samplers[k].values, aa.samplers[k].values, w + " values");
+      EXPECT_EQ(ea.samplers[k].interpolation, aa.samplers[k].interpolation) << w;
+    }
+    ASSERT_EQ(ea.channels.size(), aa.channels.size()) << w;
+    for (size_t k = 0; k < ea.channels.size(); ++k) {
+      EXPECT_EQ(ea.channels[k].sampler, aa.channels[k].sampler) << w;
+      EXPECT_EQ(ea.channels[k].node, aa.channels[k].node) << w;
+      EXPECT_EQ(ea.channels[k].path, aa.channels[k].path) << w;
+    }
   }
 }
 

@@ -38,8 +38,8 @@ TEST(Prune, UntexturedMeshLosesUvsAndTangentsAndFoldsConstantColour) {
 TEST(Prune, TexturedMeshKeepsTheUvSetsItsTexturesSample) {
   Scene s = OneQuadScene();
   s.images.resize(2);
-  s.materials[0].base_color_texture = {0, 0};
-  s.materials[0].normal_texture = {1, 1};
+  s.materials[0].base_color_texture = {0, 0, {}};
+  s.materials[0].normal_texture = {1, 1, {}};
   s.meshes[0].colors[0] = 0.25f;  // not constant any more
   const PruneReport r = LeaveOutUnused(s);
   EXPECT_EQ(s.meshes[0].uv_sets.size(), 2u);
@@ -52,7 +52,7 @@ TEST(Prune, TexturedMeshKeepsTheUvSetsItsTexturesSample) {
 TEST(Prune, TrailingUnusedUvSetGoes) {
   Scene s = OneQuadScene();
   s.images.resize(1);
-  s.materials[0].base_color_texture = {0, 0};
+  s.materials[0].base_color_texture = {0, 0, {}};
   LeaveOutUnused(s);
   EXPECT_EQ(s.meshes[0].uv_sets.size(), 1u);
 }
@@ -63,7 +63,7 @@ TEST(Prune, UnreferencedMeshesMaterialsAndImagesGoAndIndicesAreRemapped) {
   s.nodes[0].meshes = {1};
   s.materials.resize(3);
   s.materials[2].name = "used";
-  s.materials[2].base_color_texture = {1, 0};
+  s.materials[2].base_color_texture = {1, 0, {}};
   s.images.resize(2);
   s.images[1].name = "kept";
   s.meshes[1].material_ids = {2, 2};
