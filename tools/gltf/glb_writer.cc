@@ -190,57 +190,129 @@ void WriteTransform(const Node& n, bool animated, json* j) {
   }
 }
 
-// Animations as glTF: per sampler an input accessor of key times (with min/max, as glTF requires;
-// samplers with the same times share one) and an output accessor of values.
-void WriteAnimations(const Scene& scene, const std::vector<int>& gltf_node, GltfDocument* doc) {
-  std::map<std::vector<float>, int> time_accessors;
-  for (const Animation& a : scene.animations) {
-    if (a.channels.empty()) continue;
-    std::vector<int> sampler_index(a.samplers.size(), -1);
-    json samplers = json::array();
-    json channels = json::array();
-    for (const AnimationChannel& c : a.channels) {
-      const size_t si = static_cast<size_t>(c.sampler);
-      if (sampler_index[si] < 0) {
-        const AnimationSampler& s = a.samplers[si];
-        auto known = time_accessors.find(s.times);
-        int input;
-        if (known != time_accessors.end()) {
-          input = known->second;
-        } else {
-          AccessorDesc times;
-          times.buffer_view = doc->AddBufferView(s.times.data(), s.times.size() * sizeof(float), 4);
-          times.component_type = gltf::kFloat;
-          times.count = s.times.size();
-          times.type = "SCALAR";
-          times.min = {s.times.front()};
-          times.max = {s.times.back()};
-          input = doc->AddAccessor(times);
-          time_accessors.emplace(s.times, input);
-        }
-        AccessorDesc values;
-        values.buffer_view =
-            doc->AddBufferView(s.values.data(), s.values.size() * sizeof(float), 4);
-        values.component_type = gltf::kFloat;
-        const size_t width = AnimationPathWidth(c.path);
-        values.count = s.values.size() / width;
-        values.type = width == 4 ? "VEC4" : "VEC3";
-        json sj = {{"input", input}, {"output", doc->AddAccessor(values)}};
-        if (s.interpolation != Interpolation::kLinear)
-          sj["interpolation"] = InterpolationName(s.interpolation);
-        sampler_index[si] = static_cast<int>(samplers.size());
-        samplers.push_back(std::move(sj));
-      }
-      channels.push_back(
-          {{"sampler", sampler_index[si]},
-           {"target",
-            {{"node", gltf_node[static_cast<size_t>(c.node)]}, {"path", PathName(c.path)}}}});
-    }
-    json j = {{"samplers", std::move(samplers)}, {"channels", std::move(channels)}};
-    if (!a.name.empty()) j["name"] = a.name;
-    doc->Append("animations", std::move(j));
+// Animations as glTF. The key data goes into three bufferViews (key times, float values, and
+// rotations as normalized shorts) with one accessor per array, instead of a view per accessor:
+// clips hold dozens of small tracks, whose JSON would otherwise outweigh their bytes. Samplers with
+// equal key times share one input accessor (its min/max, which glTF requires, included).
+class AnimationWriter {
+ public:
+  AnimationWriter(const Scene& scene, const GlbWriteOptions& options) : scene_(scene) {
+    quantize_rotations_ = options.quantize_rotations;
   }
-}
+
+  void Write(const std::vector<int>& gltf_node, GltfDocument* doc) {
+    struct PendingSampler {
+      int input, output;
+      Interpolation interpolation;
+    };
+    std::vector<std::vector<PendingSampler>> samplers(scene_.animations.size());
+    std::vector<std::vector<int>> sampler_index(scene_.animations.size());
+    for (size_t ai = 0; ai < scene_.animations.size(); ++ai) {
+      const Animation& a = scene_.animations[ai];
+      sampler_index[ai].assign(a.samplers.size(), -1);
+      for (const AnimationChannel& c : a.channels) {
+        const size_t si = static_cast<size_t>(c.sampler);
+        if (sampler_index[ai][si] >= 0) continue;
+        const AnimationSampler& s = a.samplers[si];
+        sampler_index[ai][si] = static_cast<int>(samplers[ai].size());
+        samplers[ai].push_back(
+            {TimesAccessor(s.times), ValuesAccessor(s, c.path), s.interpolation});
+      }
+    }
+    const int views[3] = {AddView(blobs_[0], doc), AddView(blobs_[1], doc),
+                          AddView(blobs_[2], doc)};
+    std::vector<int> accessor_index;
+    for (Pending& p : pending_) {
+      p.desc.buffer_view = views[p.blob];
+      accessor_index.push_back(doc->AddAccessor(p.desc));
+    }
+    for (size_t ai = 0; ai < scene_.animations.size(); ++ai) {
+      const Animation& a = scene_.animations[ai];
+      if (a.channels.empty()) continue;
+      json sampler_json = json::array();
+      for (const PendingSampler& p : samplers[ai]) {
+        json sj = {{"input", accessor_index[static_cast<size_t>(p.input)]},
+                   {"output", accessor_index[static_cast<size_t>(p.output)]}};
+        if (p.interpolation != Interpolation::kLinear)
+          sj["interpolation"] = InterpolationName(p.interpolation);
+        sampler_json.push_back(std::move(sj));
+      }
+      json channels = json::array();
+      for (const AnimationChannel& c : a.channels) {
+        channels.push_back(
+            {{"sampler", sampler_index[ai][static_cast<size_t>(c.sampler)]},
+             {"target",
+              {{"node", gltf_node[static_cast<size_t>(c.node)]}, {"path", PathName(c.path)}}}});
+      }
+      json j = {{"samplers", std::move(sampler_json)}, {"channels", std::move(channels)}};
+      if (!a.name.empty()) j["name"] = a.name;
+      doc->Append("animations", std::move(j));
+    }
+  }
+
+ private:
+  struct Pending {
+    int blob;  // 0 times, 1 float values, 2 normalized shorts
+    AccessorDesc desc;
+  };
+
+  static int AddView(const std::vector<uint8_t>& blob, GltfDocument* doc) {
+    return blob.empty() ? -1 : doc->AddBufferView(blob, 4);
+  }
+
+  int Add(int blob, const void* data, size_t size, AccessorDesc desc) {
+    std::vector<uint8_t>& b = blobs_[blob];
+    b.resize((b.size() + 7) / 8 * 8);  // each accessor aligned to its element size
+    desc.byte_offset = b.size();
+    const uint8_t* p = static_cast<const uint8_t*>(data);
+    b.insert(b.end(), p, p + size);
+    pending_.push_back({blob, std::move(desc)});
+    return static_cast<int>(pending_.size() - 1);
+  }
+
+  int TimesAccessor(const std::vector<float>& times) {
+    auto known = times_.find(times);
+    if (known != times_.end()) return known->second;
+    AccessorDesc desc;
+    desc.count = times.size();
+    desc.min = {times.front()};
+    desc.max = {times.back()};
+    const int index = Add(0, times.data(), times.size() * sizeof(float), desc);
+    times_.emplace(times, index);
+    return index;
+  }
+
+  int ValuesAccessor(const AnimationSampler& s, AnimationPath path) {
+    const size_t width = AnimationPathWidth(path);
+    AccessorDesc desc;
+    desc.count = s.values.size() / width;
+    desc.type = width == 4 ? "VEC4" : "VEC3";
+    // Cubic-spline tangents may exceed 1, which a normalized short cannot hold.
+    if (path == AnimationPath::kRotation && quantize_rotations_ &&
+        s.interpolation != Interpolation::kCubicSpline) {
+      std::vector<int16_t> q(s.values.size());
+      for (size_t k = 0; k < s.values.size(); k += 4) {
+        const double n = std::sqrt(
+            double(s.values[k]) * s.values[k] + double(s.values[k + 1]) * s.values[k + 1] +
+            double(s.values[k + 2]) * s.values[k + 2] + double(s.values[k + 3]) * s.values[k + 3]);
+        for (size_t c = 0; c < 4; ++c) {
+          const double v = n > 0 ? s.values[k + c] / n : (c == 3 ? 1.0 : 0.0);
+          q[k + c] = static_cast<int16_t>(std::lround(std::clamp(v, -1.0, 1.0) * 32767.0));
+        }
+      }
+      desc.component_type = gltf::kShort;
+      desc.normalized = true;
+      return Add(2, q.data(), q.size() * sizeof(int16_t), desc);
+    }
+    return Add(1, s.values.data(), s.values.size() * sizeof(float), desc);
+  }
+
+  const Scene& scene_;
+  bool quantize_rotations_ = false;
+  std::vector<uint8_t> blobs_[3];
+  std::vector<Pending> pending_;
+  std::map<std::vector<float>, int> times_;
+};
 
 // Makes an image reference a valid URI without changing one that already is: backslashes become
 // '/', and bytes that may never appear in a URI (controls, space, "<>\^`{|}, non-ASCII) are
@@ -762,7 +834,7 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
   if (!roots.empty()) scene_json["nodes"] = roots;
   root["scenes"] = json::array({std::move(scene_json)});
   root["scene"] = 0;
-  WriteAnimations(scene, out.nodes, doc);
+  AnimationWriter(scene, options).Write(out.nodes, doc);
   return Status::Ok();
 }
 

@@ -41,6 +41,9 @@ struct GlbWriteOptions {
   std::string generator = "hullpack";  // asset.generator
   // JOINTS_0 as UNSIGNED_BYTE when every joint index is below 256 (else UNSIGNED_SHORT).
   bool compact_joints = true;
+  // Rotation key frames (LINEAR and STEP) as normalized shorts, as glTF allows for rotations: half
+  // the bytes, within 1/32767 per quaternion component (about 0.004 degrees).
+  bool quantize_rotations = false;
 };
 
 // Where BuildGltfDocument put each scene object.

@@ -181,8 +181,10 @@ Result<std::vector<uint8_t>> WritePackedGlb(const Scene& decoded, const PackedSt
   GltfDocument doc;
   GltfSceneLayout layout;
   Status built;
+  GlbWriteOptions plain_options;
+  plain_options.quantize_rotations = true;
   if (render_meshes == decoded.meshes.size()) {
-    built = BuildGltfDocument(decoded, GlbWriteOptions(), &doc, &layout);
+    built = BuildGltfDocument(decoded, plain_options, &doc, &layout);
   } else {
     Scene render;
     render.materials = decoded.materials;
@@ -191,7 +193,7 @@ Result<std::vector<uint8_t>> WritePackedGlb(const Scene& decoded, const PackedSt
     render.nodes = decoded.nodes;
     render.animations = decoded.animations;
     render.meshes.assign(decoded.meshes.begin(), decoded.meshes.begin() + render_meshes);
-    built = BuildGltfDocument(render, GlbWriteOptions(), &doc, &layout);
+    built = BuildGltfDocument(render, plain_options, &doc, &layout);
   }
   if (!built.ok()) return built;
   std::vector<int> stream_views;

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "pipeline/check_and_repair.h"
+#include "pipeline/still_tracks.h"
 
 namespace hullpack {
 namespace {
@@ -180,6 +181,11 @@ PruneReport LeaveOutUnused(Scene& scene, const PruneOptions& options) {
   }
   if (options.unreferenced_materials) RemoveUnreferencedMaterials(scene, report);
   if (options.unreferenced_images) RemoveUnreferencedImages(scene, report);
+  if (options.still_animation_tracks) {
+    const StillTrackReport still = RemoveStillTracks(scene);
+    report.animation_tracks_removed = still.at_rest_removed;
+    report.animation_tracks_collapsed = still.held_collapsed;
+  }
 
   auto line = [&](size_t n, const char* what) {
     if (n) report.lines.push_back(std::to_string(n) + " " + what);
@@ -192,6 +198,8 @@ PruneReport LeaveOutUnused(Scene& scene, const PruneOptions& options) {
   line(report.meshes_removed, "meshes no node shows");
   line(report.materials_removed, "materials no triangle uses");
   line(report.images_removed, "images no material uses");
+  line(report.animation_tracks_removed, "animation tracks that hold their node at rest");
+  line(report.animation_tracks_collapsed, "animation tracks that hold one value (one key kept)");
   return report;
 }
 

@@ -21,6 +21,7 @@ struct PruneOptions {
   bool unreferenced_meshes = true;  // meshes no node shows (when the scene has nodes)
   bool unreferenced_materials = true;
   bool unreferenced_images = true;
+  bool still_animation_tracks = true;  // animation channels that do not move (still_tracks.h)
   // A mesh that lost a vertex attribute may now hold vertices equal in every attribute left: they
   // are welded again (RepairMesh with these options), as if the attribute had never been there.
   RepairOptions reweld;
@@ -35,8 +36,10 @@ struct PruneReport {
   size_t meshes_removed = 0;  // unreferenced
   size_t materials_removed = 0;
   size_t images_removed = 0;
-  RepairReport repairs;            // the welds after removals, summed over meshes
-  std::vector<std::string> lines;  // human-readable, one per kind of removal (not the welds)
+  size_t animation_tracks_removed = 0;    // held their node at rest
+  size_t animation_tracks_collapsed = 0;  // held another value: one key
+  RepairReport repairs;                   // the welds after removals, summed over meshes
+  std::vector<std::string> lines;         // human-readable, one per kind of removal (not the welds)
 };
 
 // Prunes `scene` in place. Precondition: every mesh passed ValidateMesh (CheckAndRepair).

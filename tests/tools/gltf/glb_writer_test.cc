@@ -2,6 +2,7 @@
 
 #include <cstring>
 #include <functional>
+#include <set>
 
 #include <gtest/gtest.h>
 
@@ -161,6 +162,33 @@ TEST(GlbWriterTest, AnimationsDriveTrsNodesAndShareKeyTimes) {
   ASSERT_TRUE(back.ok()) << back.status().ToString();
   for (size_t k = 0; k < 16; ++k)
     EXPECT_NEAR(back->nodes[4].local_transform[k], scene.nodes[4].local_transform[k], 1e-12) << k;
+}
+
+TEST(GlbWriterTest, RotationsQuantizedToNormalizedShortsOnRequest) {
+  const Scene scene = testing_gltf::MakeRichScene();
+  GlbWriteOptions options;
+  options.quantize_rotations = true;
+  Result<std::vector<uint8_t>> glb = EncodeGlb(scene, options);
+  ASSERT_TRUE(glb.ok()) << glb.status().ToString();
+  const GltfDocument doc = Parse(glb.value());
+  const json& j = doc.json();
+  const json& rotation = j["accessors"][j["animations"][0]["samplers"][0]["output"].get<int>()];
+  EXPECT_EQ(rotation["componentType"], gltf::kShort);
+  EXPECT_TRUE(rotation["normalized"].get<bool>());
+  // Key times, float values and shorts: three bufferViews for all of the clip's arrays.
+  std::set<int> views;
+  for (const json& s : j["animations"][0]["samplers"]) {
+    views.insert(j["accessors"][s["input"].get<int>()]["bufferView"].get<int>());
+    views.insert(j["accessors"][s["output"].get<int>()]["bufferView"].get<int>());
+  }
+  EXPECT_EQ(views.size(), 3u);
+  Result<Scene> back = DecodeGlb(glb->data(), glb->size(), "quantized.glb");
+  ASSERT_TRUE(back.ok()) << back.status().ToString();
+  const std::vector<float>& in = scene.animations[0].samplers[0].values;
+  const std::vector<float>& out = back->animations[0].samplers[0].values;
+  ASSERT_EQ(in.size(), out.size());
+  for (size_t k = 0; k < in.size(); ++k) EXPECT_NEAR(in[k], out[k], 0.5 / 32767) << k;
+  EXPECT_NE(in, out);  // 0.6 and 0.8 are not multiples of 1/32767
 }
 
 TEST(GlbWriterTest, RejectsInvalidAnimations) {
