@@ -187,6 +187,49 @@ TEST(Pack, RoundTripKeepsGeometryWithinTheBudgetMaterialsSkinAndHierarchy) {
   EXPECT_EQ(colliders, r.meshes[0].hull_count);
 }
 
+TEST(Pack, AnimationsAndMaterialLooksSurvivePacking) {
+  Scene in = TestScene();
+  in.materials[0].alpha_mode = AlphaMode::kMask;
+  in.materials[0].alpha_cutoff = 0.3f;
+  in.materials[0].base_color_texture.sampler.mag_filter = 9728;
+  // The wheel spins (a quarter turn a second) and the arm's bone holds still: the still track is
+  // left out, the clip keeps the spin.
+  in.nodes[1].trs = Trs();
+  Animation spin;
+  spin.name = "spin";
+  AnimationSampler turn;
+  turn.times = {0, 1, 2};
+  turn.values = {0, 0, 0, 1, 0, 0, 0.70710678f, 0.70710678f, 0, 0, 1, 0};
+  AnimationSampler still;
+  still.times = {0, 2};
+  still.values = {0, 0, 0, 1, 0, 0, 0, 1};
+  spin.samplers = {turn, still};
+  spin.channels = {{0, 1, AnimationPath::kRotation}, {1, 3, AnimationPath::kRotation}};
+  in.animations.push_back(spin);
+  Result<PackResult> packed = PackScene(in, FastOptions());
+  ASSERT_TRUE(packed.ok()) << packed.status().ToString();
+  GltfDocument doc;
+  Result<Scene> out = ReadPackedGltf(packed->glb.data(), packed->glb.size(), "p.glb", "", &doc);
+  ASSERT_TRUE(out.ok()) << out.status().ToString();
+  ASSERT_EQ(out->animations.size(), 1u);
+  const Animation& a = out->animations[0];
+  EXPECT_EQ(a.name, "spin");
+  ASSERT_EQ(a.channels.size(), 1u);
+  EXPECT_EQ(a.channels[0].node, 1);
+  EXPECT_EQ(a.channels[0].path, AnimationPath::kRotation);
+  const std::vector<float>& values = a.samplers[0].values;
+  ASSERT_EQ(values.size(), turn.values.size());
+  for (size_t k = 0; k < values.size(); ++k) EXPECT_NEAR(values[k], turn.values[k], 1e-4) << k;
+  EXPECT_EQ(a.samplers[0].times, turn.times);
+  ASSERT_TRUE(out->nodes[1].trs.has_value());
+  EXPECT_EQ(out->materials[0].alpha_mode, AlphaMode::kMask);
+  EXPECT_EQ(out->materials[0].alpha_cutoff, 0.3f);
+  EXPECT_EQ(out->materials[0].base_color_texture.sampler.mag_filter, 9728);
+  // The wheel's colliders are children of its node, so they turn with it.
+  EXPECT_GT(packed->report.meshes[0].hull_count, 1u);
+  EXPECT_FALSE(doc.json()["nodes"][1]["children"].empty());
+}
+
 TEST(Pack, WithoutFallbackTheExtensionIsRequiredAndAccessorsHoldNoData) {
   PackOptions options = FastOptions();
   options.collision.policy = HullPolicy::kNone;
