@@ -1,6 +1,7 @@
 #include "io/assimp_reader.h"
 
 #include <assimp/GltfMaterial.h>
+#include <assimp/anim.h>
 #include <assimp/config.h>
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
@@ -12,6 +13,8 @@
 #include <cmath>
 #include <map>
 #include <unordered_map>
+
+#include "scene/transform.h"
 
 namespace hullpack {
 namespace {
@@ -32,7 +35,7 @@ class AssimpConverter {
     for (unsigned i = 0; i < ai_.mNumMeshes; ++i) ConvertMesh(i);
     if (ai_.mRootNode) ConvertNode(*ai_.mRootNode, -1);
     ConvertSkins();
-    Note(ai_.mNumAnimations, "animations not kept");
+    ConvertAnimations();
     Note(ai_.mNumCameras, "cameras not kept");
     Note(ai_.mNumLights, "lights not kept");
     Note(point_line_meshes_, "point or line primitives not kept: meshes hold triangles only");
@@ -252,7 +255,10 @@ class AssimpConverter {
         if (mi < mesh_index_.size() && mesh_index_[mi] >= 0) node.meshes.push_back(mesh_index_[mi]);
       }
     }
+    // A repeated name keeps its first node in depth-first order, the one aiNode::FindNode (which
+    // assimp resolves bones and animation channels with) returns.
     node_of_name_.emplace(an.mName.C_Str(), index);
+    ++nodes_named_[an.mName.C_Str()];
     for (unsigned c = 0; c < an.mNumChildren; ++c) {
       const int child = ConvertNode(*an.mChildren[c], index);
       scene_.nodes[index].children.push_back(child);
@@ -288,12 +294,113 @@ class AssimpConverter {
     }
   }
 
+  // Each aiAnimation becomes one Animation: a sampler and channel per animated path of a node.
+  void ConvertAnimations() {
+    for (unsigned a = 0; a < ai_.mNumAnimations; ++a) {
+      const aiAnimation& aa = *ai_.mAnimations[a];
+      Animation anim;
+      anim.name = aa.mName.C_Str();
+      const std::string label = "animation '" + anim.name + "'";
+      // Keys are in ticks; assimp's own convention (its viewer and evaluators) takes an
+      // unspecified rate, 0, as 25 ticks per second.
+      const double ticks_per_second = aa.mTicksPerSecond != 0 ? aa.mTicksPerSecond : 25.0;
+      std::vector<std::string> unknown_nodes, sheared_nodes;
+      for (unsigned c = 0; c < aa.mNumChannels; ++c) {
+        const aiNodeAnim& channel = *aa.mChannels[c];
+        const std::string node_name = channel.mNodeName.C_Str();
+        auto it = node_of_name_.find(node_name);
+        if (it == node_of_name_.end()) {
+          unknown_nodes.push_back("'" + node_name + "'");
+          continue;
+        }
+        if (!GiveTrs(it->second)) {
+          sheared_nodes.push_back("'" + node_name + "'");
+          continue;
+        }
+        if (nodes_named_[node_name] > 1) {
+          scene_.dropped.push_back(label + ": " + std::to_string(nodes_named_[node_name]) +
+                                   " nodes are named '" + node_name +
+                                   "': its channel drives the first, as assimp does");
+        }
+        AddChannel(anim, it->second, AnimationPath::kTranslation, channel.mPositionKeys,
+                   channel.mNumPositionKeys, ticks_per_second);
+        AddChannel(anim, it->second, AnimationPath::kRotation, channel.mRotationKeys,
+                   channel.mNumRotationKeys, ticks_per_second);
+        AddChannel(anim, it->second, AnimationPath::kScale, channel.mScalingKeys,
+                   channel.mNumScalingKeys, ticks_per_second);
+      }
+      NoteNames(label + ": channels of nodes the scene does not have not kept", unknown_nodes);
+      NoteNames(
+          label + ": channels of nodes with sheared transforms (TRS cannot hold them) not kept",
+          sheared_nodes);
+      Note(aa.mNumMeshChannels, label + ": mesh (vertex) animation channels not kept");
+      Note(aa.mNumMorphMeshChannels, label + ": morph animation channels not kept");
+      if (anim.channels.empty()) {
+        scene_.dropped.push_back(label + " has no node channel left: not kept");
+        continue;
+      }
+      scene_.animations.push_back(std::move(anim));
+    }
+  }
+
+  void NoteNames(const std::string& what, const std::vector<std::string>& names) {
+    if (names.empty()) return;
+    std::string line = what + ":";
+    for (size_t i = 0; i < names.size(); ++i) line += (i ? ", " : " ") + names[i];
+    scene_.dropped.push_back(line);
+  }
+
+  // glTF animates translation, rotation and scale separately, so an animated node needs its rest
+  // transform as TRS. False when the matrix has shear (or no inverse), which TRS cannot express.
+  bool GiveTrs(int node_index) {
+    Node& node = scene_.nodes[node_index];
+    if (node.trs) return true;
+    Trs trs;
+    if (!DecomposeMatrix(node.local_transform, &trs)) return false;
+    node.trs = trs;
+    node.local_transform = TrsMatrix(trs);  // equal up to rounding; the model wants it exact
+    return true;
+  }
+
+  static void AppendValue(const aiVector3D& v, std::vector<float>& out) {
+    out.insert(out.end(), {v.x, v.y, v.z});
+  }
+  static void AppendValue(const aiQuaternion& q, std::vector<float>& out) {
+    // aiQuaternion is w, x, y, z; glTF's is x, y, z, w and must be unit length.
+    const float norm = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
+    const float scale = norm > 0 ? 1.0f / norm : 1.0f;
+    out.insert(out.end(), {q.x * scale, q.y * scale, q.z * scale, q.w * scale});
+  }
+
+  // One sampler (linear: assimp 5.2 keeps no interpolation per key) and its channel. glTF wants
+  // strictly ascending times: a key at or before the previous kept time is left out.
+  template <typename Key>
+  void AddChannel(Animation& anim, int node, AnimationPath path, const Key* keys, unsigned count,
+                  double ticks_per_second) {
+    if (count == 0 || !keys) return;
+    AnimationSampler sampler;
+    for (unsigned k = 0; k < count; ++k) {
+      const float seconds = static_cast<float>(keys[k].mTime / ticks_per_second);
+      if (!std::isfinite(seconds) || (!sampler.times.empty() && !(seconds > sampler.times.back())))
+        continue;
+      sampler.times.push_back(seconds);
+      AppendValue(keys[k].mValue, sampler.values);
+    }
+    AnimationChannel channel;
+    channel.sampler = static_cast<int>(anim.samplers.size());
+    channel.node = node;
+    channel.path = path;
+    anim.samplers.push_back(std::move(sampler));
+    anim.channels.push_back(channel);
+  }
+
   const aiScene& ai_;
   const std::string& name_;
   Scene scene_;
   std::vector<int> mesh_index_;
   std::map<std::string, int> image_of_path_;
   std::unordered_map<std::string, int> node_of_name_;
+  std::unordered_map<std::string, int> nodes_named_;  // how many nodes bear each name
   std::vector<std::pair<const aiMesh*, size_t>> skinned_;
   size_t point_line_meshes_ = 0, morph_targets_ = 0, extra_color_sets_ = 0, clipped_influences_ = 0;
 };
@@ -344,10 +451,14 @@ Result<Scene> Finish(const aiScene* ai, Assimp::Importer& importer, const std::s
     return Status(StatusCode::kParseError,
                   name + ": incomplete scene (truncated or unsupported content)");
   }
-  return AssimpConverter(*ai, name).Convert();
+  return ConvertAssimpScene(*ai, name);
 }
 
 }  // namespace
+
+Scene ConvertAssimpScene(const aiScene& ai, const std::string& name) {
+  return AssimpConverter(ai, name).Convert();
+}
 
 Result<Scene> ReadWithAssimp(const std::string& path, FileFormat format) {
   Assimp::Importer importer;
