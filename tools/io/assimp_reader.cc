@@ -88,7 +88,57 @@ class AssimpConverter {
       return ref;
     ref.image = ImageFor(path);
     ref.uv_set = static_cast<int>(uv_index);
+    int mode = 0;
+    if (m.Get(AI_MATKEY_MAPPINGMODE_U(type, 0), mode) == AI_SUCCESS)
+      ref.sampler.wrap_s = WrapCode(mode);
+    if (m.Get(AI_MATKEY_MAPPINGMODE_V(type, 0), mode) == AI_SUCCESS)
+      ref.sampler.wrap_t = WrapCode(mode);
+    // Only assimp's glTF importer sets filters; they are glTF's own codes already.
+    m.Get(AI_MATKEY_GLTF_MAPPINGFILTER_MAG(type, 0), ref.sampler.mag_filter);
+    m.Get(AI_MATKEY_GLTF_MAPPINGFILTER_MIN(type, 0), ref.sampler.min_filter);
     return ref;
+  }
+
+  static int WrapCode(int map_mode) {
+    switch (map_mode) {
+      case aiTextureMapMode_Clamp:
+      case aiTextureMapMode_Decal:  // glTF has no border colour: clamping comes closest
+        return 33071;
+      case aiTextureMapMode_Mirror:
+        return 33648;
+      default:
+        return 10497;
+    }
+  }
+
+  // glTF inputs carry their alpha mode; other formats say only how opaque a material is, and any
+  // transparency (a factor below one, an opacity map) needs blending to show.
+  void ConvertAlpha(const aiMaterial& am, Material& m) {
+    aiString gltf_mode;
+    if (am.Get(AI_MATKEY_GLTF_ALPHAMODE, gltf_mode) == AI_SUCCESS) {
+      const std::string mode = gltf_mode.C_Str();
+      if (mode == "MASK") m.alpha_mode = AlphaMode::kMask;
+      if (mode == "BLEND") m.alpha_mode = AlphaMode::kBlend;
+      am.Get(AI_MATKEY_GLTF_ALPHACUTOFF, m.alpha_cutoff);
+      return;
+    }
+    float opacity = 1.0f;
+    const bool translucent = am.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS && opacity < 1.0f;
+    const bool opacity_map = am.GetTextureCount(aiTextureType_OPACITY) > 0;
+    if (!translucent && !opacity_map) return;
+    m.alpha_mode = AlphaMode::kBlend;
+    if (translucent) m.base_color[3] = opacity;
+    // glTF reads alpha from the base colour texture only: an opacity map that is another image
+    // (not the base colour's own alpha) has no place.
+    if (opacity_map) {
+      aiString path;
+      if (am.GetTexture(aiTextureType_OPACITY, 0, &path) == AI_SUCCESS &&
+          (!m.base_color_texture.used() ||
+           scene_.images[m.base_color_texture.image].name != path.C_Str())) {
+        scene_.dropped.push_back("opacity map '" + std::string(path.C_Str()) + "' of material '" +
+                                 m.name + "' not kept: alpha comes from the base colour texture");
+      }
+    }
   }
 
   void ConvertImagesAndMaterials() {
@@ -105,9 +155,6 @@ class AssimpConverter {
           am.Get(AI_MATKEY_COLOR_DIFFUSE, color) == AI_SUCCESS) {
         m.base_color = {color.r, color.g, color.b, color.a};
       }
-      float opacity;
-      if (am.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS && opacity < 1.0f)
-        m.base_color[3] = opacity;
       am.Get(AI_MATKEY_METALLIC_FACTOR, m.metallic);
       am.Get(AI_MATKEY_ROUGHNESS_FACTOR, m.roughness);
       aiColor3D emissive;
@@ -121,6 +168,12 @@ class AssimpConverter {
       m.normal_texture = Texture(am, aiTextureType_NORMALS);
       m.occlusion_texture = Texture(am, aiTextureType_LIGHTMAP);
       m.emissive_texture = Texture(am, aiTextureType_EMISSIVE);
+      ConvertAlpha(am, m);
+      int shading = 0;
+      if (am.Get(AI_MATKEY_SHADING_MODEL, shading) == AI_SUCCESS)
+        m.unlit = shading == aiShadingMode_Unlit;  // aiShadingMode_NoShading is the same value
+      am.Get(AI_MATKEY_GLTF_TEXTURE_SCALE(aiTextureType_NORMALS, 0), m.normal_scale);
+      am.Get(AI_MATKEY_GLTF_TEXTURE_STRENGTH(aiTextureType_LIGHTMAP, 0), m.occlusion_strength);
       scene_.materials.push_back(std::move(m));
     }
   }

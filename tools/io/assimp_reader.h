@@ -1,10 +1,12 @@
 // The bridge to assimp for FBX, DAE, PLY and STL (and any other format assimp reads): converts
 // aiScene into the scene model, keeping node hierarchy and transforms, materials and their textures
-// (embedded bytes included), every UV set, the first colour set, tangents, skins (up to 4 joints
-// per vertex, renormalized) and node animations (each animated node's rest transform also as
-// Node::trs). What cannot be kept (mesh and morph animations, channels of unknown or sheared
-// nodes, morph targets, cameras, lights, points and lines, extra colour sets, influences past the
-// fourth) is listed in Scene::dropped.
+// (embedded bytes included, wrap modes as samplers; opacity below one or an opacity map as alpha
+// blending, glTF alpha modes where assimp's glTF importer gives them; unshaded as unlit), every UV
+// set, the first colour set, tangents, skins (up to 4 joints per vertex, renormalized) and node
+// animations (each animated node's rest transform also as Node::trs). What cannot be kept (mesh
+// and morph animations, channels of unknown or sheared nodes, morph targets, cameras, lights,
+// points and lines, extra colour sets, influences past the fourth, opacity maps other than the
+// base colour texture) is listed in Scene::dropped.
 #ifndef HULLPACK_TOOLS_IO_ASSIMP_READER_H_
 #define HULLPACK_TOOLS_IO_ASSIMP_READER_H_
 

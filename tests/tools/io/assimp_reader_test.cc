@@ -154,6 +154,19 @@ TEST(AssimpReader, ColladaNodeAnimationKeepsTimesValuesAndNodes) {
   EXPECT_FALSE(MentionsAll(s.value(), "animation")) << s->dropped[0];
 }
 
+TEST(AssimpReader, ColladaConstantShadingIsUnlitAndTransparencyBlends) {
+  TempDir dir;
+  const std::string path = dir.File("skeleton.dae");
+  WriteText(path, kSkeletonDae);
+  Result<Scene> s = ReadScene(path);
+  ASSERT_TRUE(s.ok()) << s.status().ToString();
+  ASSERT_EQ(s->materials.size(), 1u);
+  const Material& m = s->materials[0];
+  EXPECT_TRUE(m.unlit);
+  EXPECT_EQ(m.alpha_mode, AlphaMode::kBlend);
+  EXPECT_FLOAT_EQ(m.base_color[3], 0.25f);
+}
+
 // DirectX .x leaves the tick rate unset unless the file gives AnimTicksPerSecond; the second
 // position key repeats time 50.
 TEST(AssimpReader, UnsetTickRateMeans25PerSecondAndRepeatedTimesGo) {
@@ -246,6 +259,107 @@ TEST(AssimpReader, ChannelsMapToNodesOrAreReportedDropped) {
   EXPECT_TRUE(MentionsAll(s, "'spin'", "mesh (vertex) animation"));
   EXPECT_TRUE(MentionsAll(s, "'spin'", "morph animation"));
   EXPECT_TRUE(MentionsAll(s, "'lost' has no node channel left"));
+}
+
+// assimp's OBJ importer: `d` is the opacity, `map_d` an opacity map, `illum 0` unshaded and
+// `-clamp on` the clamp map mode. (Packing reads OBJ with the project's own parser; this checks the
+// assimp side of the same material statements.)
+TEST(AssimpReader, ObjOpacityMapsClampAndUnshadedMaterials) {
+  TempDir dir;
+  WriteText(dir.File("a.mtl"), R"(newmtl glass
+Kd 0.2 0.4 0.6
+d 0.5
+illum 2
+newmtl leaf
+map_Kd -clamp on leaf.png
+map_d leaf.png
+newmtl stencil
+map_Kd paint.png
+map_d mask.png
+newmtl flat
+Kd 1 0 0
+illum 0
+)");
+  const std::string path = dir.File("a.obj");
+  WriteText(path, R"(mtllib a.mtl
+v 0 0 0
+v 1 0 0
+v 0 1 0
+vt 0 0
+vt 1 0
+vt 0 1
+usemtl glass
+f 1/1 2/2 3/3
+usemtl leaf
+f 1/1 3/3 2/2
+usemtl stencil
+f 2/2 1/1 3/3
+usemtl flat
+f 2/2 3/3 1/1
+)");
+  Result<Scene> s = ReadWithAssimp(path, FileFormat::kObj);
+  ASSERT_TRUE(s.ok()) << s.status().ToString();
+  auto material = [&](const std::string& name) -> const Material& {
+    for (const Material& m : s->materials) {
+      if (m.name == name) return m;
+    }
+    ADD_FAILURE() << "no material " << name;
+    return s->materials.at(0);
+  };
+  const Material& glass = material("glass");
+  EXPECT_EQ(glass.alpha_mode, AlphaMode::kBlend);
+  EXPECT_FLOAT_EQ(glass.base_color[3], 0.5f);
+  EXPECT_FLOAT_EQ(glass.base_color[2], 0.6f);
+  EXPECT_FALSE(glass.unlit);
+  const Material& leaf = material("leaf");
+  EXPECT_EQ(leaf.alpha_mode, AlphaMode::kBlend);
+  EXPECT_FLOAT_EQ(leaf.base_color[3], 1.0f);
+  ASSERT_TRUE(leaf.base_color_texture.used());
+  EXPECT_EQ(leaf.base_color_texture.sampler.wrap_s, 33071);
+  EXPECT_EQ(leaf.base_color_texture.sampler.wrap_t, 33071);
+  EXPECT_EQ(material("stencil").alpha_mode, AlphaMode::kBlend);
+  EXPECT_EQ(material("stencil").base_color_texture.sampler.wrap_s, 10497);
+  EXPECT_TRUE(material("flat").unlit);
+  EXPECT_EQ(material("flat").alpha_mode, AlphaMode::kOpaque);
+  // The leaf's opacity map is its base colour image; the stencil's is another, which glTF cannot
+  // hold.
+  EXPECT_TRUE(MentionsAll(s.value(), "opacity map 'mask.png'", "'stencil'"));
+  EXPECT_FALSE(MentionsAll(s.value(), "'leaf'"));
+}
+
+// glTF read through assimp: the file's alpha mode wins over the opacity assimp derives from the
+// base colour (0.8 here), and the sampler's codes pass through.
+TEST(AssimpReader, GltfAlphaModeUnlitAndSamplerThroughAssimp) {
+  TempDir dir;
+  const std::string path = dir.File("fence.gltf");
+  WriteText(path, R"({"asset":{"version":"2.0"},"extensionsUsed":["KHR_materials_unlit"],
+ "scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],
+ "meshes":[{"primitives":[{"attributes":{"POSITION":0,"TEXCOORD_0":1},"material":0}]}],
+ "materials":[{"name":"fence","alphaMode":"MASK","alphaCutoff":0.3,
+   "pbrMetallicRoughness":{"baseColorFactor":[1,1,1,0.8],"baseColorTexture":{"index":0}},
+   "extensions":{"KHR_materials_unlit":{}}}],
+ "textures":[{"sampler":0,"source":0}],
+ "samplers":[{"magFilter":9728,"minFilter":9728,"wrapS":33648,"wrapT":33071}],
+ "images":[{"uri":"fence.png"}],
+ "buffers":[{"byteLength":60,"uri":"data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAAAAAAAAAAAAIA/AAAAAAAAAAAAAIA/"}],
+ "bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":36},
+   {"buffer":0,"byteOffset":36,"byteLength":24}],
+ "accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],
+   "max":[1,1,0]},{"bufferView":1,"componentType":5126,"count":3,"type":"VEC2"}]})");
+  Result<Scene> s = ReadWithAssimp(path, FileFormat::kGltf);
+  ASSERT_TRUE(s.ok()) << s.status().ToString();
+  ASSERT_FALSE(s->materials.empty());
+  const Material& m = s->materials[0];
+  EXPECT_EQ(m.name, "fence");
+  EXPECT_EQ(m.alpha_mode, AlphaMode::kMask);
+  EXPECT_FLOAT_EQ(m.alpha_cutoff, 0.3f);
+  EXPECT_FLOAT_EQ(m.base_color[3], 0.8f);
+  EXPECT_TRUE(m.unlit);
+  const Sampler& sampler = m.base_color_texture.sampler;
+  EXPECT_EQ(sampler.wrap_s, 33648);
+  EXPECT_EQ(sampler.wrap_t, 33071);
+  EXPECT_EQ(sampler.mag_filter, 9728);
+  EXPECT_EQ(sampler.min_filter, 9728);
 }
 
 }  // namespace
