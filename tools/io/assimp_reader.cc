@@ -366,6 +366,7 @@ class AssimpConverter {
           unknown_nodes.push_back("'" + node_name + "'");
           continue;
         }
+        FoldFbxHelpersInto(it->second);
         if (!GiveTrs(it->second)) {
           sheared_nodes.push_back("'" + node_name + "'");
           continue;
@@ -401,6 +402,42 @@ class AssimpConverter {
     std::string line = what + ":";
     for (size_t i = 0; i < names.size(); ++i) line += (i ? ", " : " ") + names[i];
     scene_.dropped.push_back(line);
+  }
+
+  // assimp 5.2's FBX importer splits a node with pre- or post-rotation into helper nodes above it
+  // ("X_$AssimpFbx$_Translation", "X_$AssimpFbx$_PreRotation", ...; X itself identity) yet keys
+  // X's channel with the whole local transform, helpers' part included: played as it is, that part
+  // counts twice. So the helpers' product moves into X and they become identity (same rest pose).
+  // Pivots and offsets are different: assimp keys those helpers themselves, and they stay.
+  void FoldFbxHelpersInto(int node_index) {
+    const std::string prefix = scene_.nodes[node_index].name + "_$AssimpFbx$_";
+    std::vector<int> helpers;
+    for (int p = scene_.nodes[node_index].parent;
+         p >= 0 && scene_.nodes[p].name.compare(0, prefix.size(), prefix) == 0;
+         p = scene_.nodes[p].parent) {
+      const std::string part = scene_.nodes[p].name.substr(prefix.size());
+      if (part != "Translation" && part != "PreRotation" && part != "Rotation" &&
+          part != "PostRotation" && part != "Scaling")
+        return;
+      helpers.push_back(p);
+    }
+    Matrix4 local = scene_.nodes[node_index].local_transform;
+    for (int h : helpers) {  // nearest first: each helper multiplies from the left
+      local = Multiply(scene_.nodes[h].local_transform, local);
+      scene_.nodes[h].local_transform = kIdentity;
+      scene_.nodes[h].trs.reset();
+    }
+    if (!helpers.empty()) scene_.nodes[node_index].local_transform = local;
+  }
+
+  static Matrix4 Multiply(const Matrix4& a, const Matrix4& b) {
+    Matrix4 out{};
+    for (int c = 0; c < 4; ++c) {
+      for (int r = 0; r < 4; ++r) {
+        for (int k = 0; k < 4; ++k) out[c * 4 + r] += a[k * 4 + r] * b[c * 4 + k];
+      }
+    }
+    return out;
   }
 
   // glTF animates translation, rotation and scale separately, so an animated node needs its rest

@@ -261,6 +261,109 @@ TEST(AssimpReader, ChannelsMapToNodesOrAreReportedDropped) {
   EXPECT_TRUE(MentionsAll(s, "'lost' has no node channel left"));
 }
 
+// A triangle on FBX model `arm` with a pre-rotation (Maya's joint orient) of 90 degrees about x,
+// turning 0, 90, 180 degrees about z at 0, 0.5 and 1 s (30 frames per second).
+const char kPreRotatedFbx[] = R"(; FBX 7.4.0 project file
+FBXHeaderExtension:  {
+	FBXHeaderVersion: 1003
+	FBXVersion: 7400
+}
+GlobalSettings:  {
+	Version: 1000
+	Properties70:  {
+		P: "TimeMode", "enum", "", "",6
+	}
+}
+Objects:  {
+	Geometry: 600, "Geometry::tri", "Mesh" {
+		Vertices: *9 {
+			a: 0,0,0,1,0,0,0,1,0
+		}
+		PolygonVertexIndex: *3 {
+			a: 0,1,-3
+		}
+	}
+	Model: 100, "Model::arm", "Mesh" {
+		Version: 232
+		Properties70:  {
+			P: "PreRotation", "Vector3D", "Vector", "",90,0,0
+			P: "Lcl Translation", "Lcl Translation", "", "A",0,2,0
+		}
+	}
+	AnimationStack: 200, "AnimStack::wave", "" {
+	}
+	AnimationLayer: 300, "AnimLayer::base", "" {
+	}
+	AnimationCurveNode: 400, "AnimCurveNode::R", "" {
+		Properties70:  {
+			P: "d|X", "Number", "", "A",0
+			P: "d|Y", "Number", "", "A",0
+			P: "d|Z", "Number", "", "A",0
+		}
+	}
+	AnimationCurve: 500, "AnimCurve::", "" {
+		Default: 0
+		KeyVer: 4009
+		KeyTime: *3 {
+			a: 0,23093079000,46186158000
+		}
+		KeyValueFloat: *3 {
+			a: 0,90,180
+		}
+		KeyAttrFlags: *1 {
+			a: 8456
+		}
+		KeyAttrDataFloat: *4 {
+			a: 0,0,0,0
+		}
+		KeyAttrRefCount: *1 {
+			a: 3
+		}
+	}
+}
+Connections:  {
+	C: "OO",100,0
+	C: "OO",600,100
+	C: "OO",300,200
+	C: "OO",400,300
+	C: "OP",400,100, "Lcl Rotation"
+	C: "OP",500,400, "d|Z"
+}
+)";
+
+TEST(AssimpReader, FbxPreRotationCountsOnceInTheAnimatedNode) {
+  TempDir dir;
+  const std::string path = dir.File("arm.fbx");
+  WriteText(path, kPreRotatedFbx);
+  Result<Scene> s = ReadScene(path);
+  ASSERT_TRUE(s.ok()) << s.status().ToString();
+  const int arm = NodeNamed(s.value(), "arm");
+  const int pre = NodeNamed(s.value(), "arm_$AssimpFbx$_PreRotation");
+  ASSERT_GE(arm, 0);
+  ASSERT_GE(pre, 0);  // assimp's helper node: kept, but identity now
+  ASSERT_EQ(s->animations.size(), 1u);
+  const Animation& a = s->animations[0];
+  EXPECT_EQ(a.name, "wave");
+  const AnimationSampler* move = SamplerFor(a, arm, AnimationPath::kTranslation);
+  const AnimationSampler* turn = SamplerFor(a, arm, AnimationPath::kRotation);
+  ASSERT_TRUE(move && turn);
+  ExpectNear(turn->times, {0, 0.5f, 1});
+  // The first key holds the rest pose: translation (0 2 0), the pre-rotation and no turn yet.
+  const float h = std::sqrt(0.5f);
+  ExpectNear({move->values[0], move->values[1], move->values[2]}, {0, 2, 0});
+  ExpectNear({turn->values[0], turn->values[1], turn->values[2], turn->values[3]}, {h, 0, 0, h});
+  // Played from the first key, the node lands where its rest pose puts it: its rest transform is
+  // that key, and the helpers above it no longer add translation and pre-rotation a second time.
+  ASSERT_TRUE(s->nodes[arm].trs.has_value());
+  const Trs& rest = *s->nodes[arm].trs;
+  ExpectNear({float(rest.translation[0]), float(rest.translation[1]), float(rest.translation[2]),
+              float(rest.rotation[0]), float(rest.rotation[1]), float(rest.rotation[2]),
+              float(rest.rotation[3])},
+             {0, 2, 0, h, 0, 0, h});
+  for (int p = s->nodes[arm].parent; p >= 0; p = s->nodes[p].parent)
+    EXPECT_EQ(s->nodes[p].local_transform, kIdentity) << s->nodes[p].name;
+}
+
 // assimp's OBJ importer: `d` is the opacity, `map_d` an opacity map, `illum 0` unshaded and
 // `-clamp on` the clamp map mode. (Packing reads OBJ with the project's own parser; this checks the
 // assimp side of the same material statements.)
