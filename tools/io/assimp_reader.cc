@@ -11,6 +11,7 @@
 #include <array>
 #include <assimp/Importer.hpp>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <unordered_map>
 
@@ -393,8 +394,26 @@ class AssimpConverter {
         scene_.dropped.push_back(label + " has no node channel left: not kept");
         continue;
       }
+      StartAtZero(anim, label);
       scene_.animations.push_back(std::move(anim));
     }
+  }
+
+  // glTF times cannot be negative (FBX clips may start before frame 0): such a clip is shifted to
+  // start at 0, which keeps its timing relative to itself.
+  void StartAtZero(Animation& anim, const std::string& label) {
+    float first = 0;
+    for (const AnimationSampler& s : anim.samplers) {
+      if (!s.times.empty()) first = std::min(first, s.times.front());
+    }
+    if (first >= 0) return;
+    for (AnimationSampler& s : anim.samplers) {
+      for (float& t : s.times) t -= first;
+    }
+    char seconds[32];
+    std::snprintf(seconds, sizeof(seconds), "%g", first);
+    scene_.dropped.push_back(label + " started at " + seconds +
+                             " s: shifted to start at 0 (glTF times cannot be negative)");
   }
 
   void NoteNames(const std::string& what, const std::vector<std::string>& names) {

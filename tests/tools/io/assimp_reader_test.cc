@@ -200,8 +200,9 @@ AnimationSet Walk {
   EXPECT_DOUBLE_EQ(s->nodes[arm].trs->translation[1], 2.0);
 }
 
-// What files rarely hold, built by hand: a quaternion to reorder, a name two nodes share, a sheared
-// node, a channel of no node, mesh and morph channels, and a clip left with nothing.
+// What files rarely hold, built by hand: a quaternion to reorder, a key before time 0, a name two
+// nodes share, a sheared node, a channel of no node, mesh and morph channels, and a clip left with
+// nothing.
 TEST(AssimpReader, ChannelsMapToNodesOrAreReportedDropped) {
   aiScene ai;
   ai.mRootNode = new aiNode("root");
@@ -215,7 +216,7 @@ TEST(AssimpReader, ChannelsMapToNodesOrAreReportedDropped) {
     c->mNumRotationKeys = 2;
     c->mRotationKeys = new aiQuatKey[2];
     const float h = std::sqrt(0.5f);
-    c->mRotationKeys[0] = aiQuatKey(0, aiQuaternion(1, 0, 0, 0));  // w, x, y, z
+    c->mRotationKeys[0] = aiQuatKey(-5, aiQuaternion(1, 0, 0, 0));  // w, x, y, z
     c->mRotationKeys[1] = aiQuatKey(10, aiQuaternion(h, h, 0, 0));
     return c;
   };
@@ -246,7 +247,8 @@ TEST(AssimpReader, ChannelsMapToNodesOrAreReportedDropped) {
   EXPECT_EQ(a.channels[0].node, 1);
   EXPECT_EQ(a.channels[0].path, AnimationPath::kRotation);
   const AnimationSampler& turn = a.samplers[a.channels[0].sampler];
-  ExpectNear(turn.times, {0, 1});
+  // -0.5 s and 1 s: glTF times cannot be negative, so the clip starts at 0.
+  ExpectNear(turn.times, {0, 1.5f});
   const float h = std::sqrt(0.5f);
   ExpectNear(turn.values, {0, 0, 0, 1, h, 0, 0, h});
   EXPECT_TRUE(s.nodes[1].trs.has_value());
@@ -259,6 +261,7 @@ TEST(AssimpReader, ChannelsMapToNodesOrAreReportedDropped) {
   EXPECT_TRUE(MentionsAll(s, "'spin'", "mesh (vertex) animation"));
   EXPECT_TRUE(MentionsAll(s, "'spin'", "morph animation"));
   EXPECT_TRUE(MentionsAll(s, "'lost' has no node channel left"));
+  EXPECT_TRUE(MentionsAll(s, "'spin' started at -0.5 s: shifted to start at 0"));
 }
 
 // A triangle on FBX model `arm` with a pre-rotation (Maya's joint orient) of 90 degrees about x,
