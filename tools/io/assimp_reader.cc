@@ -495,6 +495,7 @@ class AssimpConverter {
       sampler.times.push_back(seconds);
       AppendValue(keys[k].mValue, sampler.values);
     }
+    if (sampler.times.empty()) return;
     AnimationChannel channel;
     channel.sampler = static_cast<int>(anim.samplers.size());
     channel.node = node;

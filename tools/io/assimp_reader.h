@@ -3,10 +3,11 @@
 // (embedded bytes included, wrap modes as samplers; opacity below one or an opacity map as alpha
 // blending, glTF alpha modes where assimp's glTF importer gives them; unshaded as unlit), every UV
 // set, the first colour set, tangents, skins (up to 4 joints per vertex, renormalized) and node
-// animations (each animated node's rest transform also as Node::trs). What cannot be kept (mesh
-// and morph animations, channels of unknown or sheared nodes, morph targets, cameras, lights,
-// points and lines, extra colour sets, influences past the fourth, opacity maps other than the
-// base colour texture) is listed in Scene::dropped.
+// animations (linear keys in seconds; each animated node's rest transform also as Node::trs; a clip
+// starting before 0 s shifted to 0). What cannot be kept (mesh and morph animations, channels of
+// unknown or sheared nodes, morph targets, cameras, lights, points and lines, extra colour sets,
+// influences past the fourth, opacity maps other than the base colour texture) is listed, with
+// every shift, in Scene::dropped.
 #ifndef HULLPACK_TOOLS_IO_ASSIMP_READER_H_
 #define HULLPACK_TOOLS_IO_ASSIMP_READER_H_
 
