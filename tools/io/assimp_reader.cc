@@ -1,6 +1,7 @@
 #include "io/assimp_reader.h"
 
 #include <assimp/GltfMaterial.h>
+#include <assimp/anim.h>
 #include <assimp/config.h>
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
@@ -10,8 +11,11 @@
 #include <array>
 #include <assimp/Importer.hpp>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <unordered_map>
+
+#include "scene/transform.h"
 
 namespace hullpack {
 namespace {
@@ -32,7 +36,7 @@ class AssimpConverter {
     for (unsigned i = 0; i < ai_.mNumMeshes; ++i) ConvertMesh(i);
     if (ai_.mRootNode) ConvertNode(*ai_.mRootNode, -1);
     ConvertSkins();
-    Note(ai_.mNumAnimations, "animations not kept");
+    ConvertAnimations();
     Note(ai_.mNumCameras, "cameras not kept");
     Note(ai_.mNumLights, "lights not kept");
     Note(point_line_meshes_, "point or line primitives not kept: meshes hold triangles only");
@@ -85,7 +89,57 @@ class AssimpConverter {
       return ref;
     ref.image = ImageFor(path);
     ref.uv_set = static_cast<int>(uv_index);
+    int mode = 0;
+    if (m.Get(AI_MATKEY_MAPPINGMODE_U(type, 0), mode) == AI_SUCCESS)
+      ref.sampler.wrap_s = WrapCode(mode);
+    if (m.Get(AI_MATKEY_MAPPINGMODE_V(type, 0), mode) == AI_SUCCESS)
+      ref.sampler.wrap_t = WrapCode(mode);
+    // Only assimp's glTF importer sets filters; they are glTF's own codes already.
+    m.Get(AI_MATKEY_GLTF_MAPPINGFILTER_MAG(type, 0), ref.sampler.mag_filter);
+    m.Get(AI_MATKEY_GLTF_MAPPINGFILTER_MIN(type, 0), ref.sampler.min_filter);
     return ref;
+  }
+
+  static int WrapCode(int map_mode) {
+    switch (map_mode) {
+      case aiTextureMapMode_Clamp:
+      case aiTextureMapMode_Decal:  // glTF has no border colour: clamping comes closest
+        return 33071;
+      case aiTextureMapMode_Mirror:
+        return 33648;
+      default:
+        return 10497;
+    }
+  }
+
+  // glTF inputs carry their alpha mode; other formats say only how opaque a material is, and any
+  // transparency (a factor below one, an opacity map) needs blending to show.
+  void ConvertAlpha(const aiMaterial& am, Material& m) {
+    aiString gltf_mode;
+    if (am.Get(AI_MATKEY_GLTF_ALPHAMODE, gltf_mode) == AI_SUCCESS) {
+      const std::string mode = gltf_mode.C_Str();
+      if (mode == "MASK") m.alpha_mode = AlphaMode::kMask;
+      if (mode == "BLEND") m.alpha_mode = AlphaMode::kBlend;
+      am.Get(AI_MATKEY_GLTF_ALPHACUTOFF, m.alpha_cutoff);
+      return;
+    }
+    float opacity = 1.0f;
+    const bool translucent = am.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS && opacity < 1.0f;
+    const bool opacity_map = am.GetTextureCount(aiTextureType_OPACITY) > 0;
+    if (!translucent && !opacity_map) return;
+    m.alpha_mode = AlphaMode::kBlend;
+    if (translucent) m.base_color[3] = opacity;
+    // glTF reads alpha from the base colour texture only: an opacity map that is another image
+    // (not the base colour's own alpha) has no place.
+    if (opacity_map) {
+      aiString path;
+      if (am.GetTexture(aiTextureType_OPACITY, 0, &path) == AI_SUCCESS &&
+          (!m.base_color_texture.used() ||
+           scene_.images[m.base_color_texture.image].name != path.C_Str())) {
+        scene_.dropped.push_back("opacity map '" + std::string(path.C_Str()) + "' of material '" +
+                                 m.name + "' not kept: alpha comes from the base colour texture");
+      }
+    }
   }
 
   void ConvertImagesAndMaterials() {
@@ -102,9 +156,6 @@ class AssimpConverter {
           am.Get(AI_MATKEY_COLOR_DIFFUSE, color) == AI_SUCCESS) {
         m.base_color = {color.r, color.g, color.b, color.a};
       }
-      float opacity;
-      if (am.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS && opacity < 1.0f)
-        m.base_color[3] = opacity;
       am.Get(AI_MATKEY_METALLIC_FACTOR, m.metallic);
       am.Get(AI_MATKEY_ROUGHNESS_FACTOR, m.roughness);
       aiColor3D emissive;
@@ -118,6 +169,12 @@ class AssimpConverter {
       m.normal_texture = Texture(am, aiTextureType_NORMALS);
       m.occlusion_texture = Texture(am, aiTextureType_LIGHTMAP);
       m.emissive_texture = Texture(am, aiTextureType_EMISSIVE);
+      ConvertAlpha(am, m);
+      int shading = 0;
+      if (am.Get(AI_MATKEY_SHADING_MODEL, shading) == AI_SUCCESS)
+        m.unlit = shading == aiShadingMode_Unlit;  // aiShadingMode_NoShading is the same value
+      am.Get(AI_MATKEY_GLTF_TEXTURE_SCALE(aiTextureType_NORMALS, 0), m.normal_scale);
+      am.Get(AI_MATKEY_GLTF_TEXTURE_STRENGTH(aiTextureType_LIGHTMAP, 0), m.occlusion_strength);
       scene_.materials.push_back(std::move(m));
     }
   }
@@ -252,7 +309,10 @@ class AssimpConverter {
         if (mi < mesh_index_.size() && mesh_index_[mi] >= 0) node.meshes.push_back(mesh_index_[mi]);
       }
     }
+    // A repeated name keeps its first node in depth-first order, the one aiNode::FindNode (which
+    // assimp resolves bones and animation channels with) returns.
     node_of_name_.emplace(an.mName.C_Str(), index);
+    ++nodes_named_[an.mName.C_Str()];
     for (unsigned c = 0; c < an.mNumChildren; ++c) {
       const int child = ConvertNode(*an.mChildren[c], index);
       scene_.nodes[index].children.push_back(child);
@@ -288,12 +348,169 @@ class AssimpConverter {
     }
   }
 
+  // Each aiAnimation becomes one Animation: a sampler and channel per animated path of a node.
+  void ConvertAnimations() {
+    for (unsigned a = 0; a < ai_.mNumAnimations; ++a) {
+      const aiAnimation& aa = *ai_.mAnimations[a];
+      Animation anim;
+      anim.name = aa.mName.C_Str();
+      const std::string label = "animation '" + anim.name + "'";
+      // Keys are in ticks; assimp's own convention (its viewer and evaluators) takes an
+      // unspecified rate, 0, as 25 ticks per second.
+      const double ticks_per_second = aa.mTicksPerSecond != 0 ? aa.mTicksPerSecond : 25.0;
+      std::vector<std::string> unknown_nodes, sheared_nodes;
+      for (unsigned c = 0; c < aa.mNumChannels; ++c) {
+        const aiNodeAnim& channel = *aa.mChannels[c];
+        const std::string node_name = channel.mNodeName.C_Str();
+        auto it = node_of_name_.find(node_name);
+        if (it == node_of_name_.end()) {
+          unknown_nodes.push_back("'" + node_name + "'");
+          continue;
+        }
+        FoldFbxHelpersInto(it->second);
+        if (!GiveTrs(it->second)) {
+          sheared_nodes.push_back("'" + node_name + "'");
+          continue;
+        }
+        if (nodes_named_[node_name] > 1) {
+          scene_.dropped.push_back(label + ": " + std::to_string(nodes_named_[node_name]) +
+                                   " nodes are named '" + node_name +
+                                   "': its channel drives the first, as assimp does");
+        }
+        AddChannel(anim, it->second, AnimationPath::kTranslation, channel.mPositionKeys,
+                   channel.mNumPositionKeys, ticks_per_second);
+        AddChannel(anim, it->second, AnimationPath::kRotation, channel.mRotationKeys,
+                   channel.mNumRotationKeys, ticks_per_second);
+        AddChannel(anim, it->second, AnimationPath::kScale, channel.mScalingKeys,
+                   channel.mNumScalingKeys, ticks_per_second);
+      }
+      NoteNames(label + ": channels of nodes the scene does not have not kept", unknown_nodes);
+      NoteNames(
+          label + ": channels of nodes with sheared transforms (TRS cannot hold them) not kept",
+          sheared_nodes);
+      Note(aa.mNumMeshChannels, label + ": mesh (vertex) animation channels not kept");
+      Note(aa.mNumMorphMeshChannels, label + ": morph animation channels not kept");
+      if (anim.channels.empty()) {
+        scene_.dropped.push_back(label + " has no node channel left: not kept");
+        continue;
+      }
+      StartAtZero(anim, label);
+      scene_.animations.push_back(std::move(anim));
+    }
+  }
+
+  // glTF times cannot be negative (FBX clips may start before frame 0): such a clip is shifted to
+  // start at 0, which keeps its timing relative to itself.
+  void StartAtZero(Animation& anim, const std::string& label) {
+    float first = 0;
+    for (const AnimationSampler& s : anim.samplers) {
+      if (!s.times.empty()) first = std::min(first, s.times.front());
+    }
+    if (first >= 0) return;
+    for (AnimationSampler& s : anim.samplers) {
+      for (float& t : s.times) t -= first;
+    }
+    char seconds[32];
+    std::snprintf(seconds, sizeof(seconds), "%g", first);
+    scene_.dropped.push_back(label + " started at " + seconds +
+                             " s: shifted to start at 0 (glTF times cannot be negative)");
+  }
+
+  void NoteNames(const std::string& what, const std::vector<std::string>& names) {
+    if (names.empty()) return;
+    std::string line = what + ":";
+    for (size_t i = 0; i < names.size(); ++i) line += (i ? ", " : " ") + names[i];
+    scene_.dropped.push_back(line);
+  }
+
+  // assimp 5.2's FBX importer splits a node with pre- or post-rotation into helper nodes above it
+  // ("X_$AssimpFbx$_Translation", "X_$AssimpFbx$_PreRotation", ...; X itself identity) yet keys
+  // X's channel with the whole local transform, helpers' part included: played as it is, that part
+  // counts twice. So the helpers' product moves into X and they become identity (same rest pose).
+  // Pivots and offsets are different: assimp keys those helpers themselves, and they stay.
+  void FoldFbxHelpersInto(int node_index) {
+    const std::string prefix = scene_.nodes[node_index].name + "_$AssimpFbx$_";
+    std::vector<int> helpers;
+    for (int p = scene_.nodes[node_index].parent;
+         p >= 0 && scene_.nodes[p].name.compare(0, prefix.size(), prefix) == 0;
+         p = scene_.nodes[p].parent) {
+      const std::string part = scene_.nodes[p].name.substr(prefix.size());
+      if (part != "Translation" && part != "PreRotation" && part != "Rotation" &&
+          part != "PostRotation" && part != "Scaling")
+        return;
+      helpers.push_back(p);
+    }
+    Matrix4 local = scene_.nodes[node_index].local_transform;
+    for (int h : helpers) {  // nearest first: each helper multiplies from the left
+      local = Multiply(scene_.nodes[h].local_transform, local);
+      scene_.nodes[h].local_transform = kIdentity;
+      scene_.nodes[h].trs.reset();
+    }
+    if (!helpers.empty()) scene_.nodes[node_index].local_transform = local;
+  }
+
+  static Matrix4 Multiply(const Matrix4& a, const Matrix4& b) {
+    Matrix4 out{};
+    for (int c = 0; c < 4; ++c) {
+      for (int r = 0; r < 4; ++r) {
+        for (int k = 0; k < 4; ++k) out[c * 4 + r] += a[k * 4 + r] * b[c * 4 + k];
+      }
+    }
+    return out;
+  }
+
+  // glTF animates translation, rotation and scale separately, so an animated node needs its rest
+  // transform as TRS. False when the matrix has shear (or no inverse), which TRS cannot express.
+  bool GiveTrs(int node_index) {
+    Node& node = scene_.nodes[node_index];
+    if (node.trs) return true;
+    Trs trs;
+    if (!DecomposeMatrix(node.local_transform, &trs)) return false;
+    node.trs = trs;
+    node.local_transform = TrsMatrix(trs);  // equal up to rounding; the model wants it exact
+    return true;
+  }
+
+  static void AppendValue(const aiVector3D& v, std::vector<float>& out) {
+    out.insert(out.end(), {v.x, v.y, v.z});
+  }
+  static void AppendValue(const aiQuaternion& q, std::vector<float>& out) {
+    // aiQuaternion is w, x, y, z; glTF's is x, y, z, w and must be unit length.
+    const float norm = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
+    const float scale = norm > 0 ? 1.0f / norm : 1.0f;
+    out.insert(out.end(), {q.x * scale, q.y * scale, q.z * scale, q.w * scale});
+  }
+
+  // One sampler (linear: assimp 5.2 keeps no interpolation per key) and its channel. glTF wants
+  // strictly ascending times: a key at or before the previous kept time is left out.
+  template <typename Key>
+  void AddChannel(Animation& anim, int node, AnimationPath path, const Key* keys, unsigned count,
+                  double ticks_per_second) {
+    if (count == 0 || !keys) return;
+    AnimationSampler sampler;
+    for (unsigned k = 0; k < count; ++k) {
+      const float seconds = static_cast<float>(keys[k].mTime / ticks_per_second);
+      if (!std::isfinite(seconds) || (!sampler.times.empty() && !(seconds > sampler.times.back())))
+        continue;
+      sampler.times.push_back(seconds);
+      AppendValue(keys[k].mValue, sampler.values);
+    }
+    if (sampler.times.empty()) return;
+    AnimationChannel channel;
+    channel.sampler = static_cast<int>(anim.samplers.size());
+    channel.node = node;
+    channel.path = path;
+    anim.samplers.push_back(std::move(sampler));
+    anim.channels.push_back(channel);
+  }
+
   const aiScene& ai_;
   const std::string& name_;
   Scene scene_;
   std::vector<int> mesh_index_;
   std::map<std::string, int> image_of_path_;
   std::unordered_map<std::string, int> node_of_name_;
+  std::unordered_map<std::string, int> nodes_named_;  // how many nodes bear each name
   std::vector<std::pair<const aiMesh*, size_t>> skinned_;
   size_t point_line_meshes_ = 0, morph_targets_ = 0, extra_color_sets_ = 0, clipped_influences_ = 0;
 };
@@ -344,10 +561,14 @@ Result<Scene> Finish(const aiScene* ai, Assimp::Importer& importer, const std::s
     return Status(StatusCode::kParseError,
                   name + ": incomplete scene (truncated or unsupported content)");
   }
-  return AssimpConverter(*ai, name).Convert();
+  return ConvertAssimpScene(*ai, name);
 }
 
 }  // namespace
+
+Scene ConvertAssimpScene(const aiScene& ai, const std::string& name) {
+  return AssimpConverter(ai, name).Convert();
+}
 
 Result<Scene> ReadWithAssimp(const std::string& path, FileFormat format) {
   Assimp::Importer importer;
