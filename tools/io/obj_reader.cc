@@ -538,6 +538,14 @@ class ObjParser {
     return static_cast<int>(images_.size() - 1);
   }
 
+  // A partly transparent material blends. An opacity of 0 is taken as opaque: exporters that write
+  // `Tr` with the meaning of `d` write 0 for opaque, and a material nobody can see is never meant.
+  static void SetOpacity(Material& m, double opacity) {
+    const bool partial = opacity > 0 && opacity < 1;
+    m.base_color[3] = partial ? static_cast<float>(opacity) : 1.0f;
+    m.alpha_mode = partial ? AlphaMode::kBlend : AlphaMode::kOpaque;
+  }
+
   // MTL is parsed leniently: what it cannot understand it skips (materials are optional data).
   void ParseMtl(const std::string& text) {
     TextScanner s(text.data(), text.data() + text.size());
@@ -564,9 +572,9 @@ class ObjParser {
       } else if (current && key == "Ke" && numbers(3)) {
         for (int i = 0; i < 3; ++i) current->emissive[i] = static_cast<float>(v[i]);
       } else if (current && key == "d" && numbers(1)) {
-        current->base_color[3] = static_cast<float>(v[0]);
+        SetOpacity(*current, v[0]);
       } else if (current && key == "Tr" && numbers(1)) {
-        current->base_color[3] = static_cast<float>(1.0 - v[0]);
+        SetOpacity(*current, 1.0 - v[0]);
       } else if (current &&
                  (key == "map_Kd" || key == "map_Bump" || key == "bump" || key == "norm")) {
         // The file name is the last word; options such as `-bm 1` come before it.

@@ -74,8 +74,29 @@ TEST(ObjReader, MaterialLibraryIsReadThroughTheCallback) {
   ASSERT_EQ(s->materials.size(), 1u);
   EXPECT_FLOAT_EQ(s->materials[0].base_color[1], 0.25f);
   EXPECT_FLOAT_EQ(s->materials[0].base_color[3], 0.5f);
+  EXPECT_EQ(s->materials[0].alpha_mode, AlphaMode::kBlend);
   ASSERT_TRUE(s->materials[0].base_color_texture.used());
   EXPECT_EQ(s->images[0].uri, "tex/skin.png");
+}
+
+TEST(ObjReader, OpacityBlendsOnlyWhenPartial) {
+  auto material = [](const std::string& mtl) {
+    ObjParseOptions options;
+    options.load_material_library = [mtl](const std::string&) -> Result<std::string> {
+      return mtl;
+    };
+    const std::string text = "mtllib a.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n";
+    Result<Scene> s = ParseObj(text.data(), text.size(), "t.obj", options);
+    EXPECT_TRUE(s.ok());
+    return s.ok() && !s->materials.empty() ? s->materials[0] : Material();
+  };
+  EXPECT_EQ(material("newmtl m\nTr 0.25\n").alpha_mode, AlphaMode::kBlend);
+  EXPECT_FLOAT_EQ(material("newmtl m\nTr 0.25\n").base_color[3], 0.75f);
+  EXPECT_EQ(material("newmtl m\nd 1\n").alpha_mode, AlphaMode::kOpaque);
+  // `Tr` written with the meaning of `d`: 1 means opaque to such exporters, read as 0 opacity.
+  const Material misread = material("newmtl m\nTr 1\n");
+  EXPECT_EQ(misread.alpha_mode, AlphaMode::kOpaque);
+  EXPECT_FLOAT_EQ(misread.base_color[3], 1.0f);
 }
 
 TEST(ObjReader, ErrorsNameTheLineAndTheProblem) {
