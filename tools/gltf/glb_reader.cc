@@ -33,6 +33,8 @@ Result<Scene> Decoder::Run() {
   }
   HP_RETURN_IF_ERROR(DecodeSkins(&scene));
   HP_RETURN_IF_ERROR(DecodeAnimations(&scene));
+  HP_RETURN_IF_ERROR(DecodeCameras(&scene));
+  HP_RETURN_IF_ERROR(DecodeLights(&scene));
   HP_RETURN_IF_ERROR(DecodeNodes(&scene));
   GiveAnimatedNodesTrs(&scene);
 
@@ -53,7 +55,6 @@ Result<Scene> Decoder::Run() {
     }
   }
 
-  if (TopCount("cameras") > 0) Drop("dropped " + std::to_string(TopCount("cameras")) + " cameras");
   if (TopCount("scenes") > 1) {
     Drop("dropped " + std::to_string(TopCount("scenes") - 1) +
          " extra scenes (all nodes are kept)");

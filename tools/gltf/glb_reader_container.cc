@@ -184,9 +184,9 @@ Status Decoder::TopLevel(const char* key, const json** out) {
 }
 
 Status Decoder::CheckExtensions() {
-  static const std::set<std::string> kUnderstood = {"KHR_mesh_quantization",
-                                                    "KHR_texture_transform", "KHR_materials_unlit",
-                                                    "KHR_materials_emissive_strength"};
+  static const std::set<std::string> kUnderstood = {
+      "KHR_mesh_quantization", "KHR_texture_transform", "KHR_materials_unlit",
+      "KHR_materials_emissive_strength", "KHR_lights_punctual"};
   const json* required = nullptr;
   HP_RETURN_IF_ERROR(GetArray(root_, "extensionsRequired", "glTF", &required));
   if (required != nullptr) {

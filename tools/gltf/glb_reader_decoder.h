@@ -175,6 +175,8 @@ class Decoder {
   Status DecodeMaterials(Scene* scene);
   Status DecodeMesh(int64_t index, Scene* scene, Mesh* out);
   Status DecodeSkins(Scene* scene);
+  Status DecodeCameras(Scene* scene);
+  Status DecodeLights(Scene* scene);
   Status DecodeNodes(Scene* scene);
   Status DecodeAnimations(Scene* scene);
   // Nodes that animations drive but that the file gave as a matrix (invalid glTF, but seen) get

@@ -17,7 +17,6 @@ Status Decoder::DecodeNodes(Scene* scene) {
   const size_t n = nodes->size();
   scene->nodes.resize(n);
   std::vector<bool> mesh_of_parent(n, false);
-  size_t cameras = 0, lights = 0;
   for (size_t i = 0; i < n; ++i) {
     const json& j = (*nodes)[i];
     const std::string nw = Item("nodes", i);
@@ -67,9 +66,26 @@ Status Decoder::DecodeNodes(Scene* scene) {
         return Error(nw, "skin " + std::to_string(skin) + " does not exist");
       node.skin = static_cast<int>(skin);
     }
-    if (j.contains("camera")) ++cameras;
+    int64_t camera = -1;
+    HP_RETURN_IF_ERROR(GetIndex(j, "camera", nw, &camera));
+    if (camera >= 0) {
+      if (static_cast<size_t>(camera) >= scene->cameras.size())
+        return Error(nw, "camera " + std::to_string(camera) + " does not exist");
+      node.camera = static_cast<int>(camera);
+    }
     auto ext = j.find("extensions");
-    if (ext != j.end() && ext->is_object() && ext->contains("KHR_lights_punctual")) ++lights;
+    if (ext != j.end() && ext->is_object()) {
+      auto punctual = ext->find("KHR_lights_punctual");
+      if (punctual != ext->end()) {
+        if (!punctual->is_object()) return Error(nw, "KHR_lights_punctual is not an object");
+        int64_t light = -1;
+        HP_RETURN_IF_ERROR(
+            GetIndex(*punctual, "light", nw + ".extensions.KHR_lights_punctual", &light));
+        if (light < 0 || static_cast<size_t>(light) >= scene->lights.size())
+          return Error(nw, "light " + std::to_string(light) + " does not exist");
+        node.light = static_cast<int>(light);
+      }
+    }
     auto extras = j.find("extras");
     if (extras != j.end() && extras->is_object()) {
       auto hp = extras->find("hullpack");
@@ -85,8 +101,6 @@ Status Decoder::DecodeNodes(Scene* scene) {
     return Error(Item("nodes", static_cast<uint64_t>(on_cycle)),
                  "is part of a cycle in the node hierarchy");
   }
-  if (cameras > 0) Drop("dropped " + std::to_string(cameras) + " node cameras");
-  if (lights > 0) Drop("dropped " + std::to_string(lights) + " KHR_lights_punctual node lights");
 
   // Fold the writer's extra-mesh children back into their parents.
   std::vector<bool> referenced(n, false);
@@ -103,7 +117,7 @@ Status Decoder::DecodeNodes(Scene* scene) {
     const Node& node = scene->nodes[i];
     const bool fold = mesh_of_parent[i] && node.parent >= 0 && node.children.empty() &&
                       node.meshes.size() == 1 && !referenced[i] &&
-                      node.local_transform == kIdentity &&
+                      node.local_transform == kIdentity && node.camera < 0 && node.light < 0 &&
                       node.skin == scene->nodes[static_cast<size_t>(node.parent)].skin;
     remove[i] = fold;
   }

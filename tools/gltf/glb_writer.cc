@@ -352,6 +352,73 @@ size_t UvSetsNeeded(const Scene& scene, const Mesh& m) {
   return needed;
 }
 
+void WriteCamerasAndLights(const Scene& scene, GltfDocument* doc) {
+  for (const Camera& c : scene.cameras) {
+    json j = json::object();
+    if (!c.name.empty()) j["name"] = c.name;
+    if (c.perspective) {
+      json p = {{"yfov", c.yfov}, {"znear", c.znear}};
+      if (c.aspect_ratio > 0) p["aspectRatio"] = c.aspect_ratio;
+      if (c.zfar > 0) p["zfar"] = c.zfar;
+      j["type"] = "perspective";
+      j["perspective"] = std::move(p);
+    } else {
+      j["type"] = "orthographic";
+      j["orthographic"] = {
+          {"xmag", c.xmag}, {"ymag", c.ymag}, {"znear", c.znear}, {"zfar", c.zfar}};
+    }
+    doc->Append("cameras", std::move(j));
+  }
+  if (scene.lights.empty()) return;
+  json lights = json::array();
+  for (const Light& l : scene.lights) {
+    static const char* kType[] = {"directional", "point", "spot"};
+    json j = {{"type", kType[static_cast<int>(l.type)]}};
+    if (!l.name.empty()) j["name"] = l.name;
+    if (l.color != std::array<float, 3>{1, 1, 1}) j["color"] = l.color;
+    if (l.intensity != 1) j["intensity"] = l.intensity;
+    if (l.range > 0 && l.type != LightType::kDirectional) j["range"] = l.range;
+    if (l.type == LightType::kSpot) {
+      j["spot"] = {{"innerConeAngle", l.inner_cone_angle}, {"outerConeAngle", l.outer_cone_angle}};
+    }
+    lights.push_back(std::move(j));
+  }
+  doc->json()["extensions"]["KHR_lights_punctual"]["lights"] = std::move(lights);
+  doc->UseExtension("KHR_lights_punctual", false);
+}
+
+Status CheckCamerasAndLights(const Scene& scene) {
+  for (size_t i = 0; i < scene.cameras.size(); ++i) {
+    const Camera& c = scene.cameras[i];
+    const bool valid =
+        c.perspective
+            ? c.yfov > 0 && c.znear > 0 && c.aspect_ratio >= 0 && (c.zfar == 0 || c.zfar > c.znear)
+            : c.xmag != 0 && c.ymag != 0 && c.znear >= 0 && c.zfar > c.znear;
+    if (!valid || !std::isfinite(c.yfov + c.aspect_ratio + c.xmag + c.ymag + c.znear + c.zfar))
+      return ArgError("camera " + std::to_string(i) +
+                      " has invalid or non-finite projection values");
+  }
+  for (size_t i = 0; i < scene.lights.size(); ++i) {
+    const Light& l = scene.lights[i];
+    if (!AllFiniteArray(l.color) || !std::isfinite(l.intensity) || !std::isfinite(l.range) ||
+        l.intensity < 0 || l.range < 0 ||
+        (l.type == LightType::kSpot &&
+         !(l.inner_cone_angle >= 0 && l.inner_cone_angle < l.outer_cone_angle &&
+           l.outer_cone_angle <= 1.5707964f))) {
+      return ArgError("light " + std::to_string(i) + " has invalid or non-finite values");
+    }
+  }
+  for (size_t i = 0; i < scene.nodes.size(); ++i) {
+    const Node& n = scene.nodes[i];
+    if (n.camera < -1 || n.camera >= static_cast<int>(scene.cameras.size()))
+      return ArgError("node " + std::to_string(i) + " references camera " +
+                      std::to_string(n.camera));
+    if (n.light < -1 || n.light >= static_cast<int>(scene.lights.size()))
+      return ArgError("node " + std::to_string(i) + " references light " + std::to_string(n.light));
+  }
+  return Status::Ok();
+}
+
 Status CheckSampler(const AnimationSampler& s, size_t width, const std::string& label) {
   if (s.times.empty()) return ArgError(label + " has no key frames");
   for (size_t k = 0; k < s.times.size(); ++k) {
@@ -591,7 +658,7 @@ Status ValidateSceneForGltf(const Scene& scene) {
     Status s = ValidateAnimation(scene, i);
     if (!s.ok()) return s;
   }
-  return Status::Ok();
+  return CheckCamerasAndLights(scene);
 }
 
 Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, GltfDocument* doc,
@@ -823,6 +890,8 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
     }
     if (!children.empty()) j["children"] = children;
     WriteTransform(n, animated[i], &j);
+    if (n.camera >= 0) j["camera"] = n.camera;
+    if (n.light >= 0) j["extensions"]["KHR_lights_punctual"] = {{"light", n.light}};
     node_array.push_back(std::move(j));
     out.nodes.push_back(static_cast<int>(i));
     if (n.parent < 0) roots.push_back(static_cast<int>(i));
@@ -835,6 +904,7 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
   root["scenes"] = json::array({std::move(scene_json)});
   root["scene"] = 0;
   AnimationWriter(scene, options).Write(out.nodes, doc);
+  WriteCamerasAndLights(scene, doc);
   return Status::Ok();
 }
 

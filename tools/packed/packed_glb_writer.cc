@@ -192,6 +192,8 @@ Result<std::vector<uint8_t>> WritePackedGlb(const Scene& decoded, const PackedSt
     render.skins = decoded.skins;
     render.nodes = decoded.nodes;
     render.animations = decoded.animations;
+    render.cameras = decoded.cameras;
+    render.lights = decoded.lights;
     render.meshes.assign(decoded.meshes.begin(), decoded.meshes.begin() + render_meshes);
     built = BuildGltfDocument(render, plain_options, &doc, &layout);
   }

@@ -5,12 +5,10 @@ namespace hullpack {
 Result<std::vector<uint8_t>> AssemblePackedGlb(Scene scene, std::vector<PackedMesh> packed,
                                                const PackedGlbOptions& options) {
   const size_t n = packed.size();
-  Scene decoded;
-  decoded.materials = std::move(scene.materials);
-  decoded.images = std::move(scene.images);
-  decoded.skins = std::move(scene.skins);
-  decoded.nodes = std::move(scene.nodes);
-  decoded.animations = std::move(scene.animations);
+  // Everything but the meshes goes to the file as the scene has it; the meshes are the decoded
+  // ones.
+  Scene decoded = std::move(scene);
+  decoded.meshes.clear();
   PackedStreams streams;
   for (size_t i = 0; i < n; ++i) {
     MeshSource source;

@@ -107,6 +107,31 @@ struct Trs {
   std::array<double, 3> scale = {1, 1, 1};
 };
 
+// A glTF camera. Perspective: yfov (radians), znear, and aspect_ratio and zfar when given (0 = not
+// given: the viewport's aspect, an infinite far plane). Orthographic: xmag, ymag, znear, zfar.
+struct Camera {
+  std::string name;
+  bool perspective = true;
+  double yfov = 0.8;
+  double aspect_ratio = 0;
+  double xmag = 1;
+  double ymag = 1;
+  double znear = 0.01;
+  double zfar = 0;
+};
+
+// A KHR_lights_punctual light, shining down its node's -z axis (directional and spot).
+enum class LightType { kDirectional, kPoint, kSpot };
+struct Light {
+  std::string name;
+  LightType type = LightType::kPoint;
+  std::array<float, 3> color = {1, 1, 1};
+  float intensity = 1;                  // candela (point, spot) or lux (directional)
+  float range = 0;                      // 0 = not given: no cut-off
+  float inner_cone_angle = 0;           // spot only, radians
+  float outer_cone_angle = 0.7853982f;  // spot only, pi / 4 by default
+};
+
 struct Node {
   std::string name;
   int parent = -1;  // -1 for a root
@@ -116,6 +141,8 @@ struct Node {
   std::optional<Trs> trs;
   std::vector<int> meshes;  // indices into Scene::meshes
   int skin = -1;            // index into Scene::skins, or -1
+  int camera = -1;          // index into Scene::cameras, or -1
+  int light = -1;           // index into Scene::lights, or -1
 };
 
 enum class AnimationPath { kTranslation, kRotation, kScale };
@@ -154,6 +181,8 @@ struct Scene {
   std::vector<Skin> skins;
   std::vector<Node> nodes;  // nodes[0..] in any order; roots have parent -1
   std::vector<Animation> animations;
+  std::vector<Camera> cameras;
+  std::vector<Light> lights;
   // What a reader could not keep, one human-readable line each ("dropped 2 animations: ...").
   std::vector<std::string> dropped;
   // Vertex records the file held (OBJ `v` lines, OFF/PLY vertices, ...) before unification; 0 =

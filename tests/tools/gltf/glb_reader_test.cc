@@ -316,6 +316,54 @@ TEST(GlbReaderTest, StridesStripsFansAndMixedPrimitives) {
   for (int i = 0; i < 16; ++i) EXPECT_NEAR(t[static_cast<size_t>(i)], expected_m[i], 1e-12) << i;
 }
 
+TEST(GlbReaderTest, CamerasAndLightsArePlacedByTheirNodes) {
+  std::vector<uint8_t> bin;
+  json j = InterleavedQuad(&bin);
+  j["cameras"] =
+      json::array({{{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.1}}}},
+                   {{"type", "orthographic"},
+                    {"name", "plan"},
+                    {"orthographic", {{"xmag", 2}, {"ymag", 1}, {"znear", 0}, {"zfar", 50}}}}});
+  j["extensionsUsed"] = {"KHR_lights_punctual"};
+  j["extensions"]["KHR_lights_punctual"]["lights"] =
+      json::array({{{"type", "spot"}, {"color", {1, 0.5, 0}}, {"spot", {{"outerConeAngle", 0.5}}}},
+                   {{"type", "directional"}, {"intensity", 3}}});
+  j["nodes"][0]["camera"] = 1;
+  j["nodes"][0]["extensions"]["KHR_lights_punctual"] = {{"light", 0}};
+  Result<Scene> s = Decode(j, bin);
+  ASSERT_TRUE(s.ok()) << s.status().ToString();
+  EXPECT_TRUE(s->dropped.empty());
+  ASSERT_EQ(s->cameras.size(), 2u);
+  EXPECT_TRUE(s->cameras[0].perspective);
+  EXPECT_EQ(s->cameras[0].yfov, 0.5);
+  EXPECT_EQ(s->cameras[0].zfar, 0);  // infinite
+  EXPECT_FALSE(s->cameras[1].perspective);
+  EXPECT_EQ(s->cameras[1].name, "plan");
+  EXPECT_EQ(s->cameras[1].zfar, 50);
+  ASSERT_EQ(s->lights.size(), 2u);
+  EXPECT_EQ(s->lights[0].type, LightType::kSpot);
+  EXPECT_EQ(s->lights[0].outer_cone_angle, 0.5f);
+  EXPECT_EQ(s->lights[0].color[1], 0.5f);
+  EXPECT_EQ(s->lights[1].intensity, 3.0f);
+  EXPECT_EQ(s->nodes[0].camera, 1);
+  EXPECT_EQ(s->nodes[0].light, 0);
+  // Invalid values and references are errors naming the object.
+  json bad = j;
+  bad["cameras"][0]["perspective"]["znear"] = 0;
+  EXPECT_FALSE(Decode(bad, bin).ok());
+  bad = j;
+  bad["extensions"]["KHR_lights_punctual"]["lights"][0]["spot"]["innerConeAngle"] = 0.6;
+  EXPECT_FALSE(Decode(bad, bin).ok());
+  bad = j;
+  bad["nodes"][0]["extensions"]["KHR_lights_punctual"]["light"] = 2;
+  Result<Scene> missing = Decode(bad, bin);
+  ASSERT_FALSE(missing.ok());
+  EXPECT_NE(missing.status().message().find("light 2 does not exist"), std::string::npos);
+  bad = j;
+  bad["nodes"][0]["camera"] = 5;
+  EXPECT_FALSE(Decode(bad, bin).ok());
+}
+
 TEST(GlbReaderTest, ReportsWhatItDrops) {
   std::vector<uint8_t> bin;
   json j = InterleavedQuad(&bin);
@@ -323,11 +371,8 @@ TEST(GlbReaderTest, ReportsWhatItDrops) {
   j["animations"] = json::array(
       {{{"samplers", {{{"input", 0}, {"output", 0}}}},
         {"channels", {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "weights"}}}}}}}});
-  j["cameras"] = json::array({{{"type", "perspective"}}});
   j["scenes"] = json::array({{{"nodes", {0}}}, json::object()});
-  j["extensionsUsed"] = {"KHR_lights_punctual", "KHR_texture_transform"};
-  j["nodes"][0]["camera"] = 0;
-  j["nodes"][0]["extensions"]["KHR_lights_punctual"] = {{"light", 0}};
+  j["extensionsUsed"] = {"KHR_materials_variants", "KHR_texture_transform"};
   j["meshes"][0]["primitives"][0]["targets"] = json::array({{{"POSITION", 0}}});
   j["meshes"][0]["primitives"][0]["attributes"]["COLOR_1"] = 0;
   j["meshes"][0]["primitives"][0]["attributes"]["_TEMPERATURE"] = 0;
@@ -337,10 +382,7 @@ TEST(GlbReaderTest, ReportsWhatItDrops) {
   const auto& d = s->dropped;
   EXPECT_TRUE(Contains(d, "1 animation channels of morph-target weights"));
   EXPECT_TRUE(Contains(d, "1 animations left without a channel"));
-  EXPECT_TRUE(Contains(d, "1 cameras"));
-  EXPECT_TRUE(Contains(d, "1 node cameras"));
-  EXPECT_TRUE(Contains(d, "KHR_lights_punctual node lights"));
-  EXPECT_TRUE(Contains(d, "ignored extensions: KHR_lights_punctual"));
+  EXPECT_TRUE(Contains(d, "ignored extensions: KHR_materials_variants"));
   EXPECT_FALSE(Contains(d, "KHR_texture_transform"));  // baked into the UVs, not ignored
   EXPECT_TRUE(Contains(d, "morph targets of 1 primitives"));
   EXPECT_TRUE(Contains(d, "1 point/line primitives"));

@@ -115,7 +115,8 @@ TEST(GlbWriterTest, MaterialsKeepAlphaSamplersAndExtensions) {
   EXPECT_EQ(m[1]["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"], 4.0);
   EXPECT_TRUE(m[2]["extensions"].contains("KHR_materials_unlit"));
   EXPECT_FALSE(m[2].contains("alphaMode"));
-  EXPECT_EQ(j["extensionsUsed"], json({"KHR_materials_emissive_strength", "KHR_materials_unlit"}));
+  EXPECT_EQ(j["extensionsUsed"], json({"KHR_materials_emissive_strength", "KHR_materials_unlit",
+                                       "KHR_lights_punctual"}));
   EXPECT_FALSE(j.contains("extensionsRequired"));
   // Image 0 is sampled nearest and clamped by one slot and with the defaults by three others: two
   // textures for it, one sampler; image 1 has one texture.
@@ -214,6 +215,10 @@ TEST(GlbWriterTest, RejectsInvalidAnimations) {
       },
       "no translation-rotation-scale form");
   rejected([](Scene& s) { s.materials[0].alpha_cutoff = -1; }, "alpha cutoff");
+  rejected([](Scene& s) { s.cameras[0].znear = 0; }, "camera 0 has invalid");
+  rejected([](Scene& s) { s.lights[0].inner_cone_angle = 1; }, "light 0 has invalid");
+  rejected([](Scene& s) { s.nodes[1].light = 3; }, "references light 3");
+  rejected([](Scene& s) { s.nodes[1].camera = 2; }, "references camera 2");
 }
 
 TEST(GlbWriterTest, LargeMeshUsesUnsignedIntIndices) {
@@ -416,8 +421,8 @@ TEST(GlbWriterTest, PackerCanExtendTheDocument) {
   ASSERT_TRUE(glb.ok());
   const GltfDocument parsed = Parse(glb.value());
   EXPECT_EQ(parsed.json()["extensionsUsed"],
-            json({"KHR_materials_emissive_strength", "KHR_materials_unlit", "EXT_hullpack_test",
-                  "EXT_hullpack_body"}));
+            json({"KHR_materials_emissive_strength", "KHR_materials_unlit", "KHR_lights_punctual",
+                  "EXT_hullpack_test", "EXT_hullpack_body"}));
   EXPECT_EQ(parsed.json()["extensionsRequired"], json({"EXT_hullpack_test"}));
   const json& v = parsed.json()["bufferViews"][view];
   EXPECT_EQ(v["byteOffset"].get<size_t>() % 8, 0u);

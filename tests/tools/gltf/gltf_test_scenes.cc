@@ -171,6 +171,23 @@ Scene MakeRichScene() {
                    {1, 2, AnimationPath::kTranslation},
                    {2, 2, AnimationPath::kScale}};
   s.animations.push_back(wave);
+
+  Camera lens;
+  lens.name = "lens";
+  lens.yfov = 0.75;
+  lens.aspect_ratio = 1.5;
+  lens.zfar = 100;
+  s.cameras.push_back(lens);
+  Light lamp;
+  lamp.type = LightType::kSpot;
+  lamp.color = {1, 0.75f, 0.5f};
+  lamp.intensity = 20;
+  lamp.range = 8;
+  lamp.inner_cone_angle = 0.25f;
+  lamp.outer_cone_angle = 0.5f;
+  s.lights.push_back(lamp);
+  s.nodes[0].camera = 0;
+  s.nodes[2].light = 0;
   return s;
 }
 
@@ -271,6 +288,32 @@ void ExpectScenesEqual(const Scene& e, const Scene& a) {
       EXPECT_EQ(e.nodes[i].trs->rotation, a.nodes[i].trs->rotation) << w;
       EXPECT_EQ(e.nodes[i].trs->scale, a.nodes[i].trs->scale) << w;
     }
+  }
+  for (size_t i = 0; i < e.nodes.size(); ++i) {
+    EXPECT_EQ(e.nodes[i].camera, a.nodes[i].camera) << i;
+    EXPECT_EQ(e.nodes[i].light, a.nodes[i].light) << i;
+  }
+  ASSERT_EQ(e.cameras.size(), a.cameras.size());
+  for (size_t i = 0; i < e.cameras.size(); ++i) {
+    const Camera& ec = e.cameras[i];
+    const Camera& ac = a.cameras[i];
+    EXPECT_EQ(ec.name, ac.name);
+    EXPECT_EQ(ec.perspective, ac.perspective);
+    EXPECT_EQ(ec.yfov, ac.yfov);
+    EXPECT_EQ(ec.aspect_ratio, ac.aspect_ratio);
+    EXPECT_EQ(ec.znear, ac.znear);
+    EXPECT_EQ(ec.zfar, ac.zfar);
+  }
+  ASSERT_EQ(e.lights.size(), a.lights.size());
+  for (size_t i = 0; i < e.lights.size(); ++i) {
+    const Light& el = e.lights[i];
+    const Light& al = a.lights[i];
+    EXPECT_EQ(el.type, al.type);
+    EXPECT_EQ(el.color, al.color);
+    EXPECT_EQ(el.intensity, al.intensity);
+    EXPECT_EQ(el.range, al.range);
+    EXPECT_EQ(el.inner_cone_angle, al.inner_cone_angle);
+    EXPECT_EQ(el.outer_cone_angle, al.outer_cone_angle);
   }
   ASSERT_EQ(e.animations.size(), a.animations.size());
   for (size_t i = 0; i < e.animations.size(); ++i) {
