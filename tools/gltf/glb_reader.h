@@ -12,16 +12,16 @@
 // KHR_texture_transform is baked into the UV set a material's textures sample, noted in
 // Scene::dropped where it cannot be), images (bufferView, data: URI or external URI kept as a
 // string), skins, the node hierarchy (matrix or TRS, TRS kept as given), animations of node
-// translation, rotation and scale (glb_reader_animations.cc), and the writer's extras.hullpack
-// markers. One glTF mesh becomes one scene Mesh
-// (Scene::meshes[i] is meshes[i]): primitives are concatenated (primitives sharing the same
-// attribute accessors share vertices) and the primitive material becomes the triangles' material
-// id; primitives without a material get an added "default" material when others in the mesh have
-// one. A primitive's missing attributes are filled with defaults (normal/tangent/UV 0, colour 1,
-// joints/weights 0) when other primitives of the mesh have them. Nodes keep their glTF indices,
-// except that the writer's extra-mesh child nodes (which it appends last) are folded back into
-// their parents' Node::meshes. Dropped, with a line in Scene::dropped: morph targets and the
-// animation channels of their weights, cameras, lights, points/lines primitives, extra attribute
+// translation, rotation and scale (glb_reader_animations.cc), cameras and KHR_lights_punctual
+// lights (glb_reader_cameras.cc), and the writer's extras.hullpack markers. One glTF mesh becomes
+// one scene Mesh (Scene::meshes[i] is meshes[i]): primitives are concatenated (primitives sharing
+// the same attribute accessors share vertices) and the primitive material becomes the triangles'
+// material id; primitives without a material get an added "default" material when others in the
+// mesh have one. A primitive's missing attributes are filled with defaults (normal/tangent/UV 0,
+// colour 1, joints/weights 0) when other primitives of the mesh have them. Nodes keep their glTF
+// indices, except that the writer's extra-mesh child nodes (which it appends last) are folded back
+// into their parents' Node::meshes. Dropped, with a line in Scene::dropped: morph targets and the
+// animation channels of their weights, points/lines primitives, extra attribute
 // sets (COLOR_1, JOINTS_1, custom), extra scenes and the extensions it does not interpret; meshes
 // left without triangles are noted too. Sparse accessors and required extensions it cannot read
 // are kUnsupported.
