@@ -1,6 +1,6 @@
 // libFuzzer target: the GLB reader with the packed-file decoder (what `hullpack unpack` and every
 // GLB input go through) and the collision-hull reader (`hullpack info`). Any bytes give a Status or
-// a consistent scene and hulls.
+// a consistent scene and hulls (indices, animation targets, camera and light references in range).
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -26,6 +26,19 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     for (uint32_t index : mesh.indices) {
       if (index >= mesh.vertex_count()) std::abort();
     }
+  }
+  // What the writer and engines index with must be in range.
+  const hullpack::Scene& sc = scene.value();
+  for (const hullpack::Animation& a : sc.animations) {
+    for (const hullpack::AnimationChannel& c : a.channels) {
+      if (c.sampler < 0 || static_cast<size_t>(c.sampler) >= a.samplers.size()) std::abort();
+      if (c.node < 0 || static_cast<size_t>(c.node) >= sc.nodes.size()) std::abort();
+      if (!sc.nodes[static_cast<size_t>(c.node)].trs) std::abort();
+    }
+  }
+  for (const hullpack::Node& n : sc.nodes) {
+    if (n.camera >= static_cast<int>(sc.cameras.size())) std::abort();
+    if (n.light >= static_cast<int>(sc.lights.size())) std::abort();
   }
   return 0;
 }
