@@ -34,8 +34,11 @@ sun.position.set(3, 5, 4);
 scene.add(sun);
 
 let rendered = 0;
+let mixer = null;  // plays the file's first animation clip, when it has one
+const clock = new THREE.Clock();
 function frame() {
   controls.update();
+  if (mixer) mixer.update(clock.getDelta());
   renderer.render(scene, camera);
   rendered += 1;
   requestAnimationFrame(frame);
@@ -92,6 +95,11 @@ async function load() {
     info.decodeMs = gltf.userData.hullpackStats.decodeMs;
     info.streams = gltf.userData.hullpackStats.streams;
     root = gltf.scene;
+    info.clips = gltf.animations.map((clip) => clip.name);
+    if (gltf.animations.length > 0) {
+      mixer = new THREE.AnimationMixer(root);
+      mixer.clipAction(gltf.animations[0]).play();
+    }
     // Render meshes only (the hull meshes the plugin added are counted separately).
     let vertices = 0;
     let triangles = 0;
@@ -119,7 +127,7 @@ async function load() {
     const t1 = performance.now();
     const mesh = await decoder.decode(bytes);
     info.decodeMs = performance.now() - t1;
-    Object.assign(info, { vertices: mesh.numVertices, triangles: mesh.numTriangles, ...bounds(mesh.positions), hulls: [] });
+    Object.assign(info, { vertices: mesh.numVertices, triangles: mesh.numTriangles, ...bounds(mesh.positions), hulls: [], clips: [] });
     root = new THREE.Mesh(geometryFromMesh(mesh), material);
   }
   document.getElementById('wire').onchange = (e) => {
@@ -135,6 +143,7 @@ async function load() {
     `triangles ${info.triangles.toLocaleString()}`,
     `decode    ${info.decodeMs.toFixed(2)} ms${useWorker ? ' (worker)' : ''}`,
     `hulls     ${info.hulls.length}`,
+    `clips     ${info.clips.length}${info.clips.length ? ` (playing '${info.clips[0]}')` : ''}`,
   ].join('\n');
   requestAnimationFrame(frame);
   // Resolve once a few frames have been drawn.

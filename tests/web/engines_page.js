@@ -119,5 +119,31 @@ async function babylonEarlierHulls(glbUrl) {
   return { points: hulls.map((h) => Array.from(h.points)), withoutDecoder };
 }
 
-window.engineTests = { threeRapier, babylonHavok, babylonEarlierHulls };
+// An animated packed file (the Kenney character): the clips three.js and Babylon see, and whether
+// playing in three.js a clip that rotates a node for 0.3 s turns that node.
+async function animatedClips(glbUrl) {
+  const decoder = await createDecoder({ wasmUrl: WASM });
+  const loader = new GLTFLoader();
+  loader.register((parser) => new HullpackMeshCompressionPlugin(parser, decoder));
+  const gltf = await loader.loadAsync(glbUrl);
+  const isTurn = (t) => t.name.endsWith('.quaternion');
+  const clip = gltf.animations.find((a) => a.tracks.some(isTurn));
+  const track = clip.tracks.find(isTurn);
+  const node = gltf.scene.getObjectByName(track.name.slice(0, -'.quaternion'.length));
+  const before = node.quaternion.clone();
+  const mixer = new THREE.AnimationMixer(gltf.scene);
+  mixer.clipAction(clip).play();
+  mixer.update(0.3);
+  const turned = node.quaternion.angleTo(before);
+  const scene = new Scene(new NullEngine());
+  registerHullpackExtension(decoder);
+  const container = await LoadAssetContainerAsync(glbUrl, scene);
+  return {
+    threeClips: gltf.animations.map((a) => a.name),
+    turned,
+    babylonClips: container.animationGroups.map((g) => g.name),
+  };
+}
+
+window.engineTests = { threeRapier, babylonHavok, babylonEarlierHulls, animatedClips };
 window.engineTestsReady = true;

@@ -96,6 +96,11 @@ try {
     `Babylon readCollisionHulls, earlier form (${earlier.points.length} hull streams): the C++ reader's points${earlierDiff ? `: ${earlierDiff}` : ''}`);
   check(/pass a decoder/.test(earlier.withoutDecoder),
     `Babylon readCollisionHulls, earlier form without a decoder: a clear error (${earlier.withoutDecoder})`);
+  // The animated character: its four clips reach both engines, and three.js plays them.
+  const clips = await page.evaluate((glb) => window.engineTests.animatedClips(glb), '/__work/character.glb');
+  check(clips.threeClips.length === 4, `three.js sees the character's 4 clips (${clips.threeClips.join(', ')})`);
+  check(clips.babylonClips.length === 4, `Babylon sees the character's 4 clips (${clips.babylonClips.join(', ')})`);
+  check(clips.turned > 1e-3, `three.js plays a clip: a node it rotates turns by ${clips.turned.toFixed(4)} rad in 0.3 s`);
   check(outside.length === 0, `nothing fetched from outside the local server${outside.length ? `: ${outside.join(' ')}` : ''}`);
   check(errors.length === 0, `no page errors${errors.length ? `: ${errors.join(' | ')}` : ''}`);
 } catch (e) {
