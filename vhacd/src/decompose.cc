@@ -19,6 +19,7 @@
 #include "hull_simplify.h"
 #include "input_mesh.h"
 #include "merge.h"
+#include "oriented_cuts.h"
 #include "part_hull.h"
 #include "primitive_set.h"
 #include "solid_corners.h"
@@ -116,8 +117,11 @@ Result Fail(Status s, std::string message) {
   return r;
 }
 
+// run()'s answer when a run with oriented cuts kept none (outside Status's public values).
+constexpr Status kUnoriented = static_cast<Status>(-1);
+
 // kAuto keeps the oriented result only when the report says it is better: for hull_count exactly N
-// hulls, then closer; for max_concavity reaching D, then fewer hulls, then closer.
+// hulls, then closer; for max_concavity reaching D, then fewer hulls and no farther, else closer.
 bool OrientedIsBetter(const Report& oriented, size_t oriented_hulls, const Report& slices,
                       size_t slice_hulls, const Parameters& params) {
   if (params.hull_count > 0) {
@@ -126,8 +130,11 @@ bool OrientedIsBetter(const Report& oriented, size_t oriented_hulls, const Repor
     return oriented.concavity < slices.concavity;
   }
   if (oriented.target_reached != slices.target_reached) return oriented.target_reached;
-  if (oriented.target_reached && oriented_hulls != slice_hulls) return oriented_hulls < slice_hulls;
-  return oriented.concavity < slices.concavity;
+  if (!oriented.target_reached) return oriented.concavity < slices.concavity;
+  // Both reach D: no more hulls and no farther, better in one of the two (fewer hulls at a
+  // farther result moved the corpus median up).
+  return oriented_hulls <= slice_hulls && oriented.concavity <= slices.concavity &&
+         (oriented_hulls < slice_hulls || oriented.concavity < slices.concavity);
 }
 
 // The run at the requested resolution that a refined grid is compared with. Under kAuto it cuts
@@ -362,6 +369,10 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   bool oriented = can_orient && params.oriented_cuts == OrientedCuts::kAlways;
   std::vector<internal::HullMesh> hulls;
   int clip_levels = 0;
+  // A run with oriented cuts whose clipping kept none made the slices' parts: it stops there and
+  // the slices' result of the same attempt is used (kUnoriented), which saves its merge and report.
+  bool reuse_slices = false;
+  std::vector<std::pair<Report, std::vector<internal::HullMesh>>> slice_attempts;
   const size_t kOverSplit = static_cast<size_t>(2);
   auto run = [&](const Limits& lim, Report* rep_out) -> Status {
     Report& r = *rep_out;
@@ -402,6 +413,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
         return Status::kCancelled;
     }
     clip_levels = clip.levels;
+    if (oriented && reuse_slices && !internal::HasOrientedCut(clip.parts)) return kUnoriented;
     r.parts_before_merge = static_cast<uint32_t>(clip.parts.size());
     r.seconds_clip = clock.Lap();
 
@@ -488,7 +500,10 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
                              ? Limits{1.0, params.gamma, std::max(1.0, kExactSplit * max_depth),
                                       kExactSplit * params.max_distance * diag_grid}
                              : Limits{params.concavity, params.gamma, max_depth, 0.0};
-      if (run(lim, &res) != Status::kOk) return Status::kCancelled;
+      reuse_slices = compare_orientations;
+      const Status st = run(lim, &res);
+      if (st == kUnoriented) return st;
+      if (st != Status::kOk) return Status::kCancelled;
       if (exact_count && hulls.size() != params.hull_count) {
         res.target_reached = false;
         res.target_note = "the voxel set could be cut into only " + std::to_string(hulls.size()) +
@@ -520,8 +535,16 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
       bool have = false;
       for (int attempt = 0; attempt < kAttempts; ++attempt) {
         Report r = res;
-        if (run(Limits{1.0, 1.0, limit, stick, split_open}, &r) != Status::kOk)
+        reuse_slices = static_cast<size_t>(attempt) < slice_attempts.size();
+        const Status st = run(Limits{1.0, 1.0, limit, stick, split_open}, &r);
+        if (st == kUnoriented) {
+          r = slice_attempts[attempt].first;
+          hulls = slice_attempts[attempt].second;
+        } else if (st != Status::kOk) {
           return Status::kCancelled;
+        } else if (compare_orientations && !oriented) {
+          slice_attempts.emplace_back(r, hulls);
+        }
         ctx.Log("max_concavity attempt " + std::to_string(attempt + 1) + ": split limit " +
                 std::to_string(limit) + " voxels, " + std::to_string(hulls.size()) +
                 " hulls, concavity " + std::to_string(r.concavity));
@@ -597,9 +620,10 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     std::vector<internal::HullMesh> slice_hulls = std::move(hulls);
     oriented = true;
     Report oriented_rep = rep;
-    if (decompose(&oriented_rep) != Status::kOk) return Fail(Status::kCancelled, "cancelled");
-    const bool keep =
-        OrientedIsBetter(oriented_rep, hulls.size(), slice_rep, slice_hulls.size(), params);
+    const Status st = decompose(&oriented_rep);
+    if (st != Status::kOk && st != kUnoriented) return Fail(Status::kCancelled, "cancelled");
+    const bool keep = st == Status::kOk && OrientedIsBetter(oriented_rep, hulls.size(), slice_rep,
+                                                            slice_hulls.size(), params);
     ctx.Log(std::string("oriented cuts: ") + std::to_string(hulls.size()) + " hulls, concavity " +
             std::to_string(oriented_rep.concavity) + " against slices " +
             std::to_string(slice_hulls.size()) + ", " + std::to_string(slice_rep.concavity) +
