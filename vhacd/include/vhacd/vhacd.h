@@ -134,9 +134,10 @@ struct Parameters {
   // With hull_count or max_concavity on a closed input: parts may also be cut along their own axes
   // (principal axes and their bisectors), where that makes the halves' hulls clearly closer to the
   // exact surface. kAuto decomposes with and without them on the same voxels and keeps the result
-  // closer by the report (max_concavity: the one reaching D with fewer hulls, else the closer), so
-  // it is never farther than kOff; much closer on rotated or slanted parts (a rotated L in 2
-  // hulls), at up to about twice the CPU. kAlways uses them alone. Other settings ignore it.
+  // closer by the report (max_concavity: the one reaching D, both doing so the oriented one only
+  // when closer with no more hulls), so it is never farther than kOff; much closer on rotated or
+  // slanted parts (a rotated L in 2 hulls), at about twice the CPU on a closed mesh (up to 3x on
+  // small ones). kAlways uses them alone (greedily, cut by cut). Other settings ignore it.
   OrientedCuts oriented_cuts = OrientedCuts::kAuto;
   // Fill rule for open meshes: a cavity that a ball of this diameter (fraction of the diagonal)
   // can reach from outside stays empty (open containers: pots, cups, lidless boxes); smaller
