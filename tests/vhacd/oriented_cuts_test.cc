@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "shape_gen.h"
@@ -123,29 +124,86 @@ TEST(OrientedCutsTest, ClipPolygonKeepsTheSideBelowEachPlane) {
   EXPECT_TRUE(out.empty());
 }
 
+vhacd::MeshView ViewOf(const hullpack::shapes::NamedShape& shape) {
+  const auto& m = shape.mesh;
+  return vhacd::MeshView::FromDouble(m.points.data(), m.point_count(), m.indices.data(),
+                                     m.triangle_count());
+}
+
+bool IsRotatedL(const hullpack::shapes::NamedShape& shape) {
+  return shape.name == "rot_l_30_45" || shape.name == "rot_l_45_30";
+}
+
 // A rotated L: two convex arms whose joint no axis-aligned plane can follow. With two hulls, cuts
-// along the part's own axes (Parameters::oriented_cuts) separate the arms; voxel slices leave a
-// hull over the inner corner.
+// along the part's own axes separate the arms; voxel slices leave a hull over the inner corner.
 TEST(OrientedCutsTest, RotatedLInTwoHullsIsCloseWithOrientedCuts) {
   for (const auto& shape : hullpack::shapes::RotatedShapes()) {
-    if (shape.name != "rot_l_30_45" && shape.name != "rot_l_45_30") continue;
-    const auto& m = shape.mesh;
-    const vhacd::MeshView view = vhacd::MeshView::FromDouble(m.points.data(), m.point_count(),
-                                                             m.indices.data(), m.triangle_count());
+    if (!IsRotatedL(shape)) continue;
     vhacd::Parameters p;
     p.num_threads = 2;
     p.hull_count = 2;
-    const vhacd::Result slices = vhacd::Decompose(view, p);
-    p.oriented_cuts = true;
-    const vhacd::Result r = vhacd::Decompose(view, p);
+    p.oriented_cuts = vhacd::OrientedCuts::kOff;
+    const vhacd::Result slices = vhacd::Decompose(ViewOf(shape), p);
+    p.oriented_cuts = vhacd::OrientedCuts::kAlways;
+    const vhacd::Result r = vhacd::Decompose(ViewOf(shape), p);
     ASSERT_EQ(r.hulls.size(), 2u) << shape.name;
     EXPECT_LT(r.report.concavity, 0.015) << shape.name;
     EXPECT_LT(r.report.concavity, 0.5 * slices.report.concavity) << shape.name;
     // Independent of the thread count.
     p.num_threads = 1;
-    const vhacd::Result one = vhacd::Decompose(view, p);
+    const vhacd::Result one = vhacd::Decompose(ViewOf(shape), p);
     ASSERT_EQ(one.hulls.size(), r.hulls.size());
     for (size_t h = 0; h < r.hulls.size(); ++h) EXPECT_EQ(one.hulls[h].points, r.hulls[h].points);
+  }
+}
+
+// Without any flag (OrientedCuts::kAuto) --hulls tries both ways and keeps the closer: the rotated
+// L comes out as close as with oriented cuts forced on, and identically for any thread count.
+TEST(OrientedCutsTest, RotatedLInTwoHullsIsCloseByDefault) {
+  for (const auto& shape : hullpack::shapes::RotatedShapes()) {
+    if (!IsRotatedL(shape)) continue;
+    vhacd::Parameters p;
+    p.num_threads = 2;
+    p.hull_count = 2;
+    const vhacd::Result automatic = vhacd::Decompose(ViewOf(shape), p);
+    p.oriented_cuts = vhacd::OrientedCuts::kOff;
+    const vhacd::Result slices = vhacd::Decompose(ViewOf(shape), p);
+    ASSERT_EQ(automatic.hulls.size(), 2u) << shape.name;
+    EXPECT_LT(automatic.report.concavity, 0.015) << shape.name;
+    EXPECT_LT(automatic.report.concavity, 0.5 * slices.report.concavity) << shape.name;
+    p.oriented_cuts = vhacd::OrientedCuts::kAuto;
+    for (uint32_t threads : {1u, 3u}) {
+      p.num_threads = threads;
+      const vhacd::Result other = vhacd::Decompose(ViewOf(shape), p);
+      ASSERT_EQ(other.hulls.size(), automatic.hulls.size()) << threads;
+      for (size_t h = 0; h < other.hulls.size(); ++h)
+        EXPECT_EQ(other.hulls[h].points, automatic.hulls[h].points) << threads;
+    }
+  }
+}
+
+// The automatic choice is never farther than voxel slices alone, and under max_concavity, when the
+// slices reach D, it reaches D too with no more hulls.
+TEST(OrientedCutsTest, AutomaticChoiceIsNeverWorseThanSlices) {
+  for (const auto& shape : hullpack::shapes::RotatedShapes()) {
+    for (const bool count : {true, false}) {
+      vhacd::Parameters p;
+      p.num_threads = 2;
+      if (count)
+        p.hull_count = 4;
+      else
+        p.max_concavity = 0.02;
+      const vhacd::Result automatic = vhacd::Decompose(ViewOf(shape), p);
+      p.oriented_cuts = vhacd::OrientedCuts::kOff;
+      const vhacd::Result slices = vhacd::Decompose(ViewOf(shape), p);
+      const std::string what = shape.name + (count ? " --hulls 4" : " --max-concavity 0.02");
+      ASSERT_EQ(automatic.status, vhacd::Status::kOk) << what;
+      if (!count && slices.report.target_reached) {
+        EXPECT_TRUE(automatic.report.target_reached) << what;
+        EXPECT_LE(automatic.hulls.size(), slices.hulls.size()) << what;
+      }
+      EXPECT_LE(automatic.report.concavity, slices.report.concavity) << what;
+    }
   }
 }
 

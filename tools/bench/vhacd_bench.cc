@@ -155,7 +155,7 @@ int RunOurs(int argc, char** argv) {
   p.num_threads = static_cast<uint32_t>(std::atoi(argv[6]));
   if (std::atof(argv[7]) >= 0) p.max_concavity = std::atof(argv[7]);  // < 0: the preset's
   p.hull_count = static_cast<uint32_t>(std::atoi(argv[8]));
-  p.oriented_cuts = std::atoi(argv[9]) != 0;
+  p.oriented_cuts = static_cast<vhacd::OrientedCuts>(std::atoi(argv[9]));
   std::vector<Soup> parts;
   std::string why;
   if (!ReadObjParts(in, false, &parts, &why) || parts.size() != 1) {
@@ -525,7 +525,7 @@ int main(int argc, char** argv) {
   std::vector<std::pair<std::string, std::string>> named_refs;  // --reference NAME=TEMPLATE
   bool reuse = false;
   int repeats = 1, mode = 0, threads = 0;
-  bool oriented_cuts = false;
+  vhacd::OrientedCuts oriented_cuts = vhacd::OrientedCuts::kAuto;
   double timeout = 600.0;
   std::vector<std::string> only, operands;
   MetricsOptions mo;
@@ -578,8 +578,12 @@ int main(int argc, char** argv) {
   cli.Double("--gap", "X", 0, 1, &mo.gap,
              "hull points nearer than X (fraction of the diagonal) to another hull are inside");
   cli.Int("--threads", "N", 0, 256, &threads, "decomposition threads (0: every core)");
-  cli.Flag("--oriented-cuts", &oriented_cuts,
-           "hullpack configurations cut along the parts' own axes too (Parameters::oriented_cuts)");
+  cli.Action("--oriented-cuts",
+             "hullpack configurations always cut along the parts' own axes too\n"
+             "(Parameters::oriented_cuts kAlways; by default kAuto)",
+             [&oriented_cuts] { oriented_cuts = vhacd::OrientedCuts::kAlways; });
+  cli.Action("--no-oriented-cuts", "hullpack configurations cut by voxel slices only (kOff)",
+             [&oriented_cuts] { oriented_cuts = vhacd::OrientedCuts::kOff; });
   cli.Value("--reference", "NAME=TEMPLATE",
             "a named reference (repeatable): TEMPLATE as for --reference-cmd; its\n"
             "configuration is NAME, and match=NAME runs hullpack at its hull counts",
@@ -753,10 +757,11 @@ int main(int argc, char** argv) {
           st.peak_mb = reused_mb;
           if (c.command.empty() && !ref_bin.empty()) produced = dir + "/decomp.obj";
         } else if (!c.reference) {
-          st = RunProcess({self, "--run-ours", input, out, c.preset, std::to_string(c.mode),
-                           std::to_string(threads), std::to_string(c.max_concavity),
-                           std::to_string(hull_count), oriented_cuts ? "1" : "0"},
-                          "", dir, timeout);
+          st = RunProcess(
+              {self, "--run-ours", input, out, c.preset, std::to_string(c.mode),
+               std::to_string(threads), std::to_string(c.max_concavity), std::to_string(hull_count),
+               std::to_string(static_cast<int>(oriented_cuts))},
+              "", dir, timeout);
         } else if (!c.command.empty()) {
           std::string cmd = Substitute(c.command, "{in}", ShellQuote(input));
           cmd = Substitute(cmd, "{out}", ShellQuote(out));

@@ -361,9 +361,12 @@ void AddPackOptions(CliArgs& cli, PackOptions* options) {
   cli.Double("--max-concavity", "D", 0, 1, &p.max_concavity,
              "hulls within D x the mesh's diagonal of its surface, as few as that allows\n"
              "(0.08; 0: V-HACD 2.0's volume criteria)");
-  cli.Flag("--oriented-cuts", &p.oriented_cuts,
-           "V-HACD on a closed mesh: also cut along the parts' own axes (slanted parts\n"
-           "come out closer; more CPU; see vhacd/README.md)");
+  cli.Action("--oriented-cuts",
+             "V-HACD on a closed mesh: always also cut along the parts' own axes (by\n"
+             "default both ways are tried and the closer kept; see vhacd/README.md)",
+             [&p] { p.oriented_cuts = vhacd::OrientedCuts::kAlways; });
+  cli.Action("--no-oriented-cuts", "V-HACD: voxel slices only (by default both ways are tried)",
+             [&p] { p.oriented_cuts = vhacd::OrientedCuts::kOff; });
 }
 
 std::string ApplyMethodOptions(const CliArgs& cli, PackOptions* options) {

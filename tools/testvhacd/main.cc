@@ -127,8 +127,12 @@ std::optional<int> ParseCommandLine(const std::vector<std::string>& args, Comman
              "every hull within D x the diagonal of the surface (the reported concavity), as few "
              "hulls as that allows");
   cli.Int("--hulls", "N", 0, kU32, &p.hull_count, "exactly N hulls (when the mesh can give N)");
-  cli.Flag("--oriented-cuts", &p.oriented_cuts,
-           "with --hulls or --max-concavity on a closed mesh: also cut along the parts' own axes");
+  cli.Action("--oriented-cuts",
+             "with --hulls or --max-concavity on a closed mesh: cut along the parts' own axes\n"
+             "too, always (by default both ways are tried and the closer result kept)",
+             [&p] { p.oriented_cuts = vhacd::OrientedCuts::kAlways; });
+  cli.Action("--no-oriented-cuts", "voxel slices only (no trial with oriented cuts)",
+             [&p] { p.oriented_cuts = vhacd::OrientedCuts::kOff; });
   cli.Double("--min-opening", "X", -1e300, 1e300, &p.min_opening,
              "fill rule: cavities behind openings wider than X of the diagonal stay empty");
   cli.Epilog(kPositionalForm);

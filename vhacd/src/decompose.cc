@@ -19,6 +19,7 @@
 #include "hull_simplify.h"
 #include "input_mesh.h"
 #include "merge.h"
+#include "oriented_cuts.h"
 #include "part_hull.h"
 #include "primitive_set.h"
 #include "solid_corners.h"
@@ -93,6 +94,9 @@ Status ValidateParameters(const Parameters& p, std::string* why) {
   if (!in01(p.max_concavity, 1.0)) return bad("max_concavity must be in [0, 1]");
   if (p.hull_count > 100000) return bad("hull_count must be in [0, 100000]");
   if (!in01(p.min_opening, 1.0)) return bad("min_opening must be in [0, 1]");
+  if (p.oriented_cuts != OrientedCuts::kOff && p.oriented_cuts != OrientedCuts::kAuto &&
+      p.oriented_cuts != OrientedCuts::kAlways)
+    return bad("oriented_cuts must be off, auto or always");
   if (p.num_threads > 256) return bad("num_threads must be in [0, 256]");
   if (why != nullptr) why->clear();
   return Status::kOk;
@@ -111,6 +115,36 @@ Result Fail(Status s, std::string message) {
   r.status = s;
   r.message = std::move(message);
   return r;
+}
+
+// run()'s answer when a run with oriented cuts kept none (outside Status's public values).
+constexpr Status kUnoriented = static_cast<Status>(-1);
+
+// kAuto keeps the oriented result only when the report says it is better: for hull_count exactly N
+// hulls, then closer; for max_concavity reaching D, then closer with no more hulls.
+bool OrientedIsBetter(const Report& oriented, size_t oriented_hulls, const Report& slices,
+                      size_t slice_hulls, const Parameters& params) {
+  if (params.hull_count > 0) {
+    const bool oriented_exact = oriented_hulls == params.hull_count;
+    if (oriented_exact != (slice_hulls == params.hull_count)) return oriented_exact;
+    return oriented.concavity < slices.concavity;
+  }
+  if (oriented.target_reached != slices.target_reached) return oriented.target_reached;
+  if (!oriented.target_reached) return oriented.concavity < slices.concavity;
+  // Both reach D: closer with no more hulls. Fewer hulls alone is not enough: at an equal or
+  // farther report an independent measure often found them farther (igea: 15 hulls at 0.0175
+  // against 16 at 0.0167, fox), which moved the corpus median up.
+  return oriented_hulls <= slice_hulls && oriented.concavity < slices.concavity;
+}
+
+// The run at the requested resolution that a refined grid is compared with. Under kAuto it cuts
+// by voxel slices only: the refined grid has compared both already, and this run is there for the
+// voxel solid (a narrow opening), which the cut planes do not change.
+Parameters CoarseComparison(const Parameters& params) {
+  Parameters coarse = params;
+  coarse.compute_report = true;
+  if (coarse.oriented_cuts == OrientedCuts::kAuto) coarse.oriented_cuts = OrientedCuts::kOff;
+  return coarse;
 }
 
 // refine_grid: max_concavity and hull_count may refine the grid (off for the comparison run at
@@ -328,8 +362,17 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   internal::SolidCorners corners;
   if (exact_count && input.closed && !corners.Build(gmesh, grid, meter->locator(), &ctx))
     return Fail(Status::kCancelled, "cancelled");
+  // Oriented cuts are compared on the exact surface, whose side is known only on a closed one (on
+  // open shells they made the hulls farther). kAuto runs with and without them on these voxels.
+  const bool can_orient = exact_measure && input.closed;
+  const bool compare_orientations = can_orient && params.oriented_cuts == OrientedCuts::kAuto;
+  bool oriented = can_orient && params.oriented_cuts == OrientedCuts::kAlways;
   std::vector<internal::HullMesh> hulls;
   int clip_levels = 0;
+  // A run with oriented cuts whose clipping kept none made the slices' parts: it stops there and
+  // the slices' result of the same attempt is used (kUnoriented), which saves its merge and report.
+  bool reuse_slices = false;
+  std::vector<std::pair<Report, std::vector<internal::HullMesh>>> slice_attempts;
   const size_t kOverSplit = static_cast<size_t>(2);
   auto run = [&](const Limits& lim, Report* rep_out) -> Status {
     Report& r = *rep_out;
@@ -347,17 +390,16 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     cp.meter = meter.get();
     cp.index = &index;
     cp.corners = exact_count && input.closed ? &corners : nullptr;
-    // Oriented cuts are compared on the exact surface, whose side is known only on a closed one
-    // (on open shells they made the hulls farther).
-    cp.oriented_cuts = params.oriented_cuts && input.closed;
+    cp.oriented_cuts = oriented;
     // On an open surface the side is only known per voxel: for max_concavity the exact measure
     // splits only from the second attempt on, kept when it gets closer (on scans with filled
     // holes it multiplied hulls without getting closer); hull_count merges down to N anyway.
     cp.max_stick = input.closed || exact_count || lim.split_open ? lim.max_stick : 0.0;
     internal::ClipOutput clip;
-    // Only max_concavity runs more than one attempt: the others hand the voxels over.
-    const bool ok = target ? internal::ClipRecursively(root, cp, &ctx, &clip)
-                           : internal::ClipRecursively(std::move(root), cp, &ctx, &clip);
+    // Only the last run on these voxels may take them.
+    const bool keep_root = target || (compare_orientations && !oriented);
+    const bool ok = keep_root ? internal::ClipRecursively(root, cp, &ctx, &clip)
+                              : internal::ClipRecursively(std::move(root), cp, &ctx, &clip);
     if (!ok) return Status::kCancelled;
     // hull_count: N more cuts of the parts sticking out farthest (at least kOverSplit x N parts),
     // N / kCutRounds per round so that a half still sticking out is cut again. The clip's own
@@ -371,6 +413,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
         return Status::kCancelled;
     }
     clip_levels = clip.levels;
+    if (oriented && reuse_slices && !internal::HasOrientedCut(clip.parts)) return kUnoriented;
     r.parts_before_merge = static_cast<uint32_t>(clip.parts.size());
     r.seconds_clip = clock.Lap();
 
@@ -431,7 +474,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
 
     // Report.
     ctx.BeginStage("Error report", 90, 100);
-    if (params.compute_report || target || refined) {
+    if (params.compute_report || target || refined || compare_orientations) {
       internal::MetricsInput mi;
       mi.mesh = &gmesh;
       mi.grid = &grid;
@@ -445,114 +488,157 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     return Status::kOk;
   };
 
-  if (!target) {
-    rep.attempts = 1;
-    // hull_count: parts split by how far their hull sticks out only (0.6 x the max_distance limit,
-    // at least a voxel), which the merge down to N then trades best.
-    constexpr double kExactSplit = 0.6;
-    const Limits lim = exact_count && max_depth > 0
-                           ? Limits{1.0, params.gamma, std::max(1.0, kExactSplit * max_depth),
-                                    kExactSplit * params.max_distance * diag_grid}
-                           : Limits{params.concavity, params.gamma, max_depth, 0.0};
-    if (run(lim, &rep) != Status::kOk) return Fail(Status::kCancelled, "cancelled");
-    if (exact_count && hulls.size() != params.hull_count) {
-      rep.target_reached = false;
-      rep.target_note = "the voxel set could be cut into only " + std::to_string(hulls.size()) +
-                        " parts (raise resolution for more)";
+  // One decomposition on these voxels (max_concavity: its attempts), into `hulls` and *res.
+  auto decompose = [&](Report* out) -> Status {
+    Report& res = *out;
+    if (!target) {
+      res.attempts = 1;
+      // hull_count: parts split by how far their hull sticks out only (0.6 x the max_distance
+      // limit, at least a voxel), which the merge down to N then trades best.
+      constexpr double kExactSplit = 0.6;
+      const Limits lim = exact_count && max_depth > 0
+                             ? Limits{1.0, params.gamma, std::max(1.0, kExactSplit * max_depth),
+                                      kExactSplit * params.max_distance * diag_grid}
+                             : Limits{params.concavity, params.gamma, max_depth, 0.0};
+      reuse_slices = compare_orientations;
+      const Status st = run(lim, &res);
+      if (st == kUnoriented) return st;
+      if (st != Status::kOk) return Status::kCancelled;
+      if (exact_count && hulls.size() != params.hull_count) {
+        res.target_reached = false;
+        res.target_note = "the voxel set could be cut into only " + std::to_string(hulls.size()) +
+                          " parts (raise resolution for more)";
+      }
+    } else {
+      // Each attempt splits with a tighter limit until the measured concavity reaches the target;
+      // the first that does is kept, else the closest.
+      const double d = params.max_concavity;
+      constexpr int kAttempts = 3;
+      constexpr double kTighten = 0.6;
+      // Below one voxel no outside voxel centre may lie in a hull at all: parts then split into
+      // slivers along every curved surface without getting closer to it.
+      constexpr double kMinLimit = 1.0;
+      // Cuts are voxel-aligned: a tighter exact limit only multiplies slivers.
+      constexpr double kMinStick = 0.5;
+      double limit = std::max(kMinLimit, d * diag_grid - 0.5);
+      // The exact measure samples the faces half a voxel apart and the report samples them its own
+      // way: split and merge a margin below D, or a mesh at D by one measure was just over by the
+      // other (spot, chair: 0.0200 and 0.0222 at D = 0.02 without it).
+      constexpr double kStickMargin = 0.85;
+      double stick = std::max(kMinStick, kStickMargin * d * diag_grid);
+      bool split_open = false;
+      // On an open surface the report's measure is the more lenient (it cannot tell sides inside
+      // surface voxels either): stop there only a margin below D.
+      const double stop = input.closed ? d : kStickMargin * d;
+      std::vector<internal::HullMesh> best_hulls;
+      Report best;
+      bool have = false;
+      for (int attempt = 0; attempt < kAttempts; ++attempt) {
+        Report r = res;
+        reuse_slices = static_cast<size_t>(attempt) < slice_attempts.size();
+        const Status st = run(Limits{1.0, 1.0, limit, stick, split_open}, &r);
+        if (st == kUnoriented) {
+          r = slice_attempts[attempt].first;
+          hulls = slice_attempts[attempt].second;
+        } else if (st != Status::kOk) {
+          return Status::kCancelled;
+        } else if (compare_orientations && !oriented) {
+          slice_attempts.emplace_back(r, hulls);
+        }
+        ctx.Log("max_concavity attempt " + std::to_string(attempt + 1) + ": split limit " +
+                std::to_string(limit) + " voxels, " + std::to_string(hulls.size()) +
+                " hulls, concavity " + std::to_string(r.concavity));
+        r.attempts = static_cast<uint32_t>(attempt + 1);
+        // A tighter attempt costs hulls: keep it only when it reaches D or is clearly closer.
+        if (!have || (r.concavity <= stop && best.concavity > stop) ||
+            r.concavity < kMinGain * best.concavity) {
+          best = r;
+          best_hulls = hulls;
+          have = true;
+        }
+        if (r.concavity <= stop) break;
+        // Every hull over D lies within the filled voxel solid (a hole the fill rule closed): its
+        // cover is farther than D from any surface whatever the split limits, and tighter attempts
+        // only cut the filled cavity into hundreds of parts.
+        bool over = false, only_in_solid = true;
+        for (size_t i = 0; i < r.hulls.size() && i < hulls.size() && only_in_solid; ++i)
+          if (r.hulls[i].distance > d) {
+            over = true;
+            only_in_solid = field.HullDepth(hulls[i]) <= 1.0;
+          }
+        if (over && only_in_solid) break;
+        if (!input.closed && !split_open) {  // the same limits, split by the exact measure too
+          split_open = true;
+          continue;
+        }
+        if (limit <= kMinLimit) break;
+        limit = std::max(kMinLimit, limit * kTighten);
+        stick = std::max(kMinStick, stick * kTighten);
+      }
+      hulls = std::move(best_hulls);
+      const uint32_t attempts = best.attempts;
+      res = best;
+      res.attempts = attempts;
+      res.target_reached = res.concavity <= d;
+      if (!res.target_reached) {
+        std::string over;
+        size_t n_over = 0;
+        for (size_t i = 0; i < res.hulls.size(); ++i)
+          if (res.hulls[i].distance > d) {
+            if (n_over++ < 8) over += (over.empty() ? "" : ", ") + std::to_string(i);
+          }
+        std::string cause;
+        if (res.hausdorff_mesh_to_hulls > d)
+          cause = "parts of the surface lie outside every hull by " +
+                  std::to_string(res.hausdorff_mesh_to_hulls) +
+                  " (features thinner than a voxel, or vertices dropped by max_vertices_per_hull)";
+        if (n_over > 0) {
+          if (!cause.empty()) cause += "; ";
+          size_t in_solid = 0;
+          for (size_t i = 0; i < res.hulls.size(); ++i)
+            if (res.hulls[i].distance > d && field.HullDepth(hulls[i]) <= 1.0) ++in_solid;
+          cause += std::to_string(n_over) + " hull(s) stick out by more than max_concavity (" +
+                   over + (n_over > 8 ? ", ..." : "") + "): " +
+                   (in_solid == n_over
+                        ? "they lie within the filled voxel solid, which is farther than "
+                          "max_concavity from the surface there (a hole or an open side closed by "
+                          "the fill rule, see min_opening)"
+                    : clip_levels >= static_cast<int>(params.depth)
+                        ? "the clipping depth limit was reached"
+                        : "a voxel-aligned cut could not separate them at this resolution");
+        }
+        res.target_note = "max_concavity " + std::to_string(d) + " not reached (" +
+                          std::to_string(res.concavity) + "): " + cause;
+      }
+    }
+    return Status::kOk;
+  };
+
+  Report slice_rep = rep;
+  if (decompose(&slice_rep) != Status::kOk) return Fail(Status::kCancelled, "cancelled");
+  if (compare_orientations) {
+    std::vector<internal::HullMesh> slice_hulls = std::move(hulls);
+    oriented = true;
+    Report oriented_rep = rep;
+    const Status st = decompose(&oriented_rep);
+    if (st != Status::kOk && st != kUnoriented) return Fail(Status::kCancelled, "cancelled");
+    const bool keep = st == Status::kOk && OrientedIsBetter(oriented_rep, hulls.size(), slice_rep,
+                                                            slice_hulls.size(), params);
+    if (st == kUnoriented)
+      ctx.Log("oriented cuts: none kept by the clipping, the slices' result stands");
+    else
+      ctx.Log("oriented cuts: " + std::to_string(hulls.size()) + " hulls, concavity " +
+              std::to_string(oriented_rep.concavity) + " against slices " +
+              std::to_string(slice_hulls.size()) + ", " + std::to_string(slice_rep.concavity) +
+              (keep ? ": kept" : ": slices kept"));
+    if (keep) {
+      rep = oriented_rep;
+    } else {
+      rep = slice_rep;
+      hulls = std::move(slice_hulls);
     }
   } else {
-    // Each attempt splits with a tighter limit until the measured concavity reaches the target;
-    // the first that does is kept, else the closest.
-    const double d = params.max_concavity;
-    constexpr int kAttempts = 3;
-    constexpr double kTighten = 0.6;
-    // Below one voxel no outside voxel centre may lie in a hull at all: parts then split into
-    // slivers along every curved surface without getting closer to it.
-    constexpr double kMinLimit = 1.0;
-    // Cuts are voxel-aligned: a tighter exact limit only multiplies slivers.
-    constexpr double kMinStick = 0.5;
-    double limit = std::max(kMinLimit, d * diag_grid - 0.5);
-    // The exact measure samples the faces half a voxel apart and the report samples them its own
-    // way: split and merge a margin below D, or a mesh at D by one measure was just over by the
-    // other (spot, chair: 0.0200 and 0.0222 at D = 0.02 without it).
-    constexpr double kStickMargin = 0.85;
-    double stick = std::max(kMinStick, kStickMargin * d * diag_grid);
-    bool split_open = false;
-    // On an open surface the report's measure is the more lenient (it cannot tell sides inside
-    // surface voxels either): stop there only a margin below D.
-    const double stop = input.closed ? d : kStickMargin * d;
-    std::vector<internal::HullMesh> best_hulls;
-    Report best;
-    bool have = false;
-    for (int attempt = 0; attempt < kAttempts; ++attempt) {
-      Report r = rep;
-      if (run(Limits{1.0, 1.0, limit, stick, split_open}, &r) != Status::kOk)
-        return Fail(Status::kCancelled, "cancelled");
-      ctx.Log("max_concavity attempt " + std::to_string(attempt + 1) + ": split limit " +
-              std::to_string(limit) + " voxels, " + std::to_string(hulls.size()) +
-              " hulls, concavity " + std::to_string(r.concavity));
-      r.attempts = static_cast<uint32_t>(attempt + 1);
-      // A tighter attempt costs hulls: keep it only when it reaches D or is clearly closer.
-      if (!have || (r.concavity <= stop && best.concavity > stop) ||
-          r.concavity < kMinGain * best.concavity) {
-        best = r;
-        best_hulls = hulls;
-        have = true;
-      }
-      if (r.concavity <= stop) break;
-      // Every hull over D lies within the filled voxel solid (a hole the fill rule closed): its
-      // cover is farther than D from any surface whatever the split limits, and tighter attempts
-      // only cut the filled cavity into hundreds of parts.
-      bool over = false, only_in_solid = true;
-      for (size_t i = 0; i < r.hulls.size() && i < hulls.size() && only_in_solid; ++i)
-        if (r.hulls[i].distance > d) {
-          over = true;
-          only_in_solid = field.HullDepth(hulls[i]) <= 1.0;
-        }
-      if (over && only_in_solid) break;
-      if (!input.closed && !split_open) {  // the same limits, split by the exact measure too
-        split_open = true;
-        continue;
-      }
-      if (limit <= kMinLimit) break;
-      limit = std::max(kMinLimit, limit * kTighten);
-      stick = std::max(kMinStick, stick * kTighten);
-    }
-    hulls = std::move(best_hulls);
-    const uint32_t attempts = best.attempts;
-    rep = best;
-    rep.attempts = attempts;
-    rep.target_reached = rep.concavity <= d;
-    if (!rep.target_reached) {
-      std::string over;
-      size_t n_over = 0;
-      for (size_t i = 0; i < rep.hulls.size(); ++i)
-        if (rep.hulls[i].distance > d) {
-          if (n_over++ < 8) over += (over.empty() ? "" : ", ") + std::to_string(i);
-        }
-      std::string cause;
-      if (rep.hausdorff_mesh_to_hulls > d)
-        cause = "parts of the surface lie outside every hull by " +
-                std::to_string(rep.hausdorff_mesh_to_hulls) +
-                " (features thinner than a voxel, or vertices dropped by max_vertices_per_hull)";
-      if (n_over > 0) {
-        if (!cause.empty()) cause += "; ";
-        size_t in_solid = 0;
-        for (size_t i = 0; i < rep.hulls.size(); ++i)
-          if (rep.hulls[i].distance > d && field.HullDepth(hulls[i]) <= 1.0) ++in_solid;
-        cause += std::to_string(n_over) + " hull(s) stick out by more than max_concavity (" + over +
-                 (n_over > 8 ? ", ..." : "") + "): " +
-                 (in_solid == n_over
-                      ? "they lie within the filled voxel solid, which is farther than "
-                        "max_concavity from the surface there (a hole or an open side closed by "
-                        "the fill rule, see min_opening)"
-                  : clip_levels >= static_cast<int>(params.depth)
-                      ? "the clipping depth limit was reached"
-                      : "a voxel-aligned cut could not separate them at this resolution");
-      }
-      rep.target_note = "max_concavity " + std::to_string(d) + " not reached (" +
-                        std::to_string(rep.concavity) + "): " + cause;
-    }
+    rep = slice_rep;
   }
   const bool missed = target && !rep.target_reached;
   const double reached = rep.concavity;
@@ -575,8 +661,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   if (exact_count && refined) {
     // A finer grid's voxel solid can differ from the requested grid's at a narrow opening (the
     // teapot's spout): the requested grid is run too and the closer of the two kept.
-    Parameters coarse = params;
-    coarse.compute_report = true;
+    Parameters coarse = CoarseComparison(params);
     Result other = DecomposeImpl(view, coarse, observer, false);
     if (other.status != Status::kOk) return other;
     const bool both_exact = other.hulls.size() == result.hulls.size();
@@ -596,8 +681,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     // requested resolution would have given (by the same rule as the attempts).
     ctx.Log("max_concavity missed on the refined grid (" + std::to_string(reached) +
             "): trying the requested resolution");
-    Parameters coarse = params;
-    coarse.compute_report = true;
+    Parameters coarse = CoarseComparison(params);
     Result other = DecomposeImpl(view, coarse, observer, false);
     if (other.status != Status::kOk) return other;
     if (other.report.target_reached || other.report.concavity < kMinGain * reached) {

@@ -173,5 +173,11 @@ HullMesh ClipHullToCuts(const HullMesh& hull, const std::vector<CutPlane>& cuts)
   return out;
 }
 
+bool HasOrientedCut(const std::vector<Part>& parts) {
+  for (const Part& part : parts)
+    if (!part.cuts.empty()) return true;
+  return false;
+}
+
 }  // namespace internal
 }  // namespace vhacd

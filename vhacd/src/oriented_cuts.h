@@ -29,6 +29,9 @@ struct CutDirection {
 // The part's oriented candidate directions (none for a part of fewer than two voxels).
 std::vector<CutDirection> OrientedCutDirections(const Part& part);
 
+// Whether any of the parts is bounded by an oriented cut (else they are the voxel slices' parts).
+bool HasOrientedCut(const std::vector<Part>& parts);
+
 // Offsets d of the planes to try along `dir`: every `step` from lo, both sides non-empty.
 std::vector<double> OrientedCandidateOffsets(const CutDirection& dir, double step);
 

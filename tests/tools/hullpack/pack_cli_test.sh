@@ -105,8 +105,9 @@ run 64 hacd-resolution -- "$bin" pack "$sample" -o "$tmp/x.glb" --method hacd --
 run 64 hacd-quality -- "$bin" batch "$sample" -o "$tmp/xb" --method hacd --quality high
 run 64 bad-option -- "$bin" pack "$sample" -o "$tmp/x.glb" --max-error -1
 
-# --oriented-cuts: an L prism turned 30 and 45 degrees about two axes splits along its own axes, so
-# its two hulls are far closer than with cuts along the grid's axes alone.
+# Oriented cuts: an L prism turned 30 and 45 degrees about two axes splits along its own axes, so
+# its two hulls are far closer than with cuts along the grid's axes alone (--no-oriented-cuts);
+# by default both ways are tried and the closer kept.
 cat >"$tmp/rot_l.obj" <<'OBJ'
 v 0.000000 0.000000 0.000000
 v 2.121320 2.121320 0.000000
@@ -148,12 +149,18 @@ f 6 1 7
 f 6 7 12
 OBJ
 concavity() { grep -o '"concavity": *[0-9.e-]*' "$1" | head -1 | grep -o '[0-9.e-]*$'; }
-run 0 grid-cuts -- "$bin" pack "$tmp/rot_l.obj" -o "$tmp/rot_grid.glb" --hulls 2 --report "$tmp/rot_grid.json" --quiet
+run 0 grid-cuts -- "$bin" pack "$tmp/rot_l.obj" -o "$tmp/rot_grid.glb" --hulls 2 --no-oriented-cuts \
+  --report "$tmp/rot_grid.json" --quiet
+run 0 auto-cuts -- "$bin" pack "$tmp/rot_l.obj" -o "$tmp/rot_auto.glb" --hulls 2 \
+  --report "$tmp/rot_auto.json" --quiet
 run 0 oriented-cuts -- "$bin" pack "$tmp/rot_l.obj" -o "$tmp/rot_oriented.glb" --hulls 2 --oriented-cuts \
   --report "$tmp/rot_oriented.json" --quiet
 awk -v g="$(concavity "$tmp/rot_grid.json")" -v o="$(concavity "$tmp/rot_oriented.json")" \
   'BEGIN { exit !(o > 0 && o < g / 2) }' && pass ||
   fail "oriented cuts: concavity $(concavity "$tmp/rot_oriented.json") against $(concavity "$tmp/rot_grid.json") without"
+awk -v g="$(concavity "$tmp/rot_grid.json")" -v a="$(concavity "$tmp/rot_auto.json")" \
+  'BEGIN { exit !(a > 0 && a < g / 2) }' && pass ||
+  fail "default cuts: concavity $(concavity "$tmp/rot_auto.json") against $(concavity "$tmp/rot_grid.json") without"
 
 # The Khronos validator on the packed and unpacked files (skipped without node + gltf-validator).
 if [ -n "$node" ] && [ -f "$src/node_modules/gltf-validator/package.json" ]; then
