@@ -186,15 +186,9 @@ Result<std::vector<uint8_t>> WritePackedGlb(const Scene& decoded, const PackedSt
   if (render_meshes == decoded.meshes.size()) {
     built = BuildGltfDocument(decoded, plain_options, &doc, &layout);
   } else {
-    Scene render;
-    render.materials = decoded.materials;
-    render.images = decoded.images;
-    render.skins = decoded.skins;
-    render.nodes = decoded.nodes;
-    render.animations = decoded.animations;
-    render.cameras = decoded.cameras;
-    render.lights = decoded.lights;
-    render.meshes.assign(decoded.meshes.begin(), decoded.meshes.begin() + render_meshes);
+    // The whole scene but its hull meshes, so no scene field can be left behind here.
+    Scene render = decoded;
+    render.meshes.resize(render_meshes);
     built = BuildGltfDocument(render, plain_options, &doc, &layout);
   }
   if (!built.ok()) return built;
