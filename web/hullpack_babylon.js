@@ -9,8 +9,9 @@
 //   const container = await LoadAssetContainerAsync('model.glb', scene);
 //   const hulls = await readCollisionHulls(await (await fetch('model.glb')).arrayBuffer(), decoder);
 //
-// HULLPACK_mesh_compression primitives get their vertex data from the decoded stream (each
-// bufferView decoded once, the primitive's group cut out); everything else is Babylon's own path.
+// HULLPACK_mesh_compression primitives get their vertex data and morph-target offsets from the
+// decoded stream (each bufferView decoded once, the primitive's group cut out); everything else is
+// Babylon's own path.
 // The collision hulls `hullpack pack` writes are plain glTF (quantized POINTS meshes referenced by
 // OMI_physics_shape or KHR_physics_rigid_bodies colliders), so readCollisionHulls needs no decoder
 // for them; files of the earlier release hold their hulls as HULLPACK_mesh_compression streams,
@@ -77,6 +78,18 @@ export class HullpackBabylonExtension {
         geometry.setVerticesData(kind, Float32Array.from(a.array), false, a.dimension);
       }
       geometry.setIndices(mesh.indices, mesh.numVertices);
+      // Morph targets: Babylon loads them after the vertex data, through the accessors' cached
+      // data, which is where the decoded offsets go.
+      (ext.targets || []).forEach((target, t) => {
+        for (const [name, id] of Object.entries(target || {})) {
+          const a = mesh.attributes[id];
+          const accessor = accessors[primitive.targets?.[t]?.[name]];
+          if (!a || !accessor || accessor.count !== mesh.numVertices || a.dimension !== 3) {
+            throw new Error(`${context}: ${EXTENSION_NAME}: targets[${t}] ${name} -> stream id ${id} does not match its accessor`);
+          }
+          accessor._data = Promise.resolve(Float32Array.from(a.array));
+        }
+      });
       return geometry;
     });
   }

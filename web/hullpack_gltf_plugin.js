@@ -118,13 +118,26 @@ export class HullpackMeshCompressionPlugin {
       if (!a) throw new Error(`${EXTENSION_NAME}: attribute ${name} -> stream id ${id} is not in the stream`);
       attributes[name] = a;
     }
-    return { mesh, attributes };
+    // Morph targets: per target, glTF attribute name (POSITION, NORMAL) -> decoded offsets.
+    const targets = (ext.targets || []).map((target, t) => {
+      const out = {};
+      for (const [name, id] of Object.entries(target || {})) {
+        const a = mesh.attributes[id];
+        if (!a) throw new Error(`${EXTENSION_NAME}: targets[${t}] ${name} -> stream id ${id} is not in the stream`);
+        out[name] = a;
+      }
+      return out;
+    });
+    if (targets.length && targets.length !== (primitiveDef.targets || []).length) {
+      throw new Error(`${EXTENSION_NAME}: targets must have one entry per morph target of the primitive`);
+    }
+    return { mesh, attributes, targets };
   }
 
   // A BufferGeometry for one primitive (like GLTFDracoMeshCompressionExtension.decodePrimitive).
   async decodePrimitive(primitiveDef) {
     const json = this.parser.json;
-    const { mesh, attributes } = await this.decodePrimitiveData(primitiveDef);
+    const { mesh, attributes, targets } = await this.decodePrimitiveData(primitiveDef);
     const geometry = new BufferGeometry();
     for (const [name, a] of Object.entries(attributes)) {
       const accessorDef = json.accessors?.[primitiveDef.attributes?.[name]];
@@ -133,6 +146,15 @@ export class HullpackMeshCompressionPlugin {
         new BufferAttribute(array, a.dimension, accessorDef?.normalized === true));
     }
     geometry.setIndex(new BufferAttribute(mesh.indices, 1));
+    targets.forEach((target, t) => {
+      for (const [name, a] of Object.entries(target)) {
+        const key = name === 'POSITION' ? 'position' : name === 'NORMAL' ? 'normal' : name.toLowerCase();
+        const accessorDef = json.accessors?.[primitiveDef.targets[t][name]];
+        const list = geometry.morphAttributes[key] || (geometry.morphAttributes[key] = []);
+        list[t] = new BufferAttribute(toAccessorArray(a.array, accessorDef, `targets[${t}] ${name}`), a.dimension);
+      }
+    });
+    if (targets.length) geometry.morphTargetsRelative = true;  // glTF targets are offsets
     return geometry;
   }
 
@@ -144,19 +166,22 @@ export class HullpackMeshCompressionPlugin {
       for (const prim of meshDef.primitives || []) {
         const ext = prim.extensions?.[EXTENSION_NAME];
         if (!ext) continue;
-        jobs.push(this.decodePrimitiveData(prim).then(({ mesh, attributes }) => {
-          for (const [name, a] of Object.entries(attributes)) {
-            const accessorIndex = prim.attributes?.[name];
+        jobs.push(this.decodePrimitiveData(prim).then(({ mesh, attributes, targets }) => {
+          const route = (accessorIndex, a, what) => {
             if (accessorIndex === undefined) {
-              throw new Error(`${EXTENSION_NAME}: attribute ${name} has no accessor in the primitive`);
+              throw new Error(`${EXTENSION_NAME}: ${what} has no accessor in the primitive`);
             }
-            if (this.accessors.has(accessorIndex)) continue;  // shared by the mesh's primitives
+            if (this.accessors.has(accessorIndex)) return;  // shared by the mesh's primitives
             const accessorDef = json.accessors?.[accessorIndex];
             const where = `accessors[${accessorIndex}]`;
             checkAccessor(accessorDef, mesh.numVertices, a.dimension, where);
             const array = toAccessorArray(a.array, accessorDef, where);
             this.accessors.set(accessorIndex, new BufferAttribute(array, a.dimension, accessorDef.normalized === true));
-          }
+          };
+          for (const [name, a] of Object.entries(attributes)) route(prim.attributes?.[name], a, `attribute ${name}`);
+          targets.forEach((target, t) => {
+            for (const [name, a] of Object.entries(target)) route(prim.targets[t]?.[name], a, `targets[${t}] ${name}`);
+          });
           if (prim.indices !== undefined) {
             if (this.accessors.has(prim.indices)) return;
             const accessorDef = json.accessors?.[prim.indices];

@@ -145,5 +145,48 @@ async function animatedClips(glbUrl) {
   };
 }
 
-window.engineTests = { threeRapier, babylonHavok, babylonEarlierHulls, animatedClips };
+// A packed file with morph targets (make_morph_glb.mjs: a unit sphere whose "inflate" target moves
+// every vertex 0.25 out): the largest offset each engine gets per target, the target names, and
+// the first weight three.js shows after playing the clip for 1 s (its keys: 0 at 0 s, 1 at 1 s).
+async function morphTargets(glbUrl) {
+  const decoder = await createDecoder({ wasmUrl: WASM });
+  const loader = new GLTFLoader();
+  loader.register((parser) => new HullpackMeshCompressionPlugin(parser, decoder));
+  const gltf = await loader.loadAsync(glbUrl);
+  let mesh = null;
+  gltf.scene.traverse((o) => { if (o.isMesh && o.morphTargetInfluences && !mesh) mesh = o; });
+  const largest = (array) => {
+    let m = 0;
+    for (let i = 0; i < array.length; i += 3) m = Math.max(m, Math.hypot(array[i], array[i + 1], array[i + 2]));
+    return m;
+  };
+  const threeOffsets = (mesh?.geometry.morphAttributes.position || []).map((a) => largest(a.array));
+  const mixer = new THREE.AnimationMixer(gltf.scene);
+  mixer.clipAction(gltf.animations[0]).play();
+  mixer.update(1.0);
+  const scene = new Scene(new NullEngine());
+  registerHullpackExtension(decoder);
+  const container = await LoadAssetContainerAsync(glbUrl, scene);
+  const manager = container.meshes.map((m) => m.morphTargetManager).find((m) => m);
+  const babylonOffsets = [];
+  const babylonNames = [];
+  for (let t = 0; manager && t < manager.numTargets; ++t) {
+    const target = manager.getTarget(t);
+    babylonNames.push(target.name);
+    // Babylon stores a target's positions (base + offset); the offset is their difference.
+    const base = container.meshes.find((m) => m.morphTargetManager === manager).getVerticesData(VertexBuffer.PositionKind);
+    const moved = target.getPositions();
+    babylonOffsets.push(largest(moved.map((v, i) => v - base[i])));
+  }
+  return {
+    threeNames: Object.keys(mesh?.morphTargetDictionary || {}),
+    threeOffsets,
+    threeWeightAt1s: mesh ? mesh.morphTargetInfluences[0] : -1,
+    babylonNames,
+    babylonOffsets,
+    babylonClips: container.animationGroups.map((g) => g.name),
+  };
+}
+
+window.engineTests = { threeRapier, babylonHavok, babylonEarlierHulls, animatedClips, morphTargets };
 window.engineTestsReady = true;

@@ -101,6 +101,16 @@ try {
   check(clips.threeClips.length === 4, `three.js sees the character's 4 clips (${clips.threeClips.join(', ')})`);
   check(clips.babylonClips.length === 4, `Babylon sees the character's 4 clips (${clips.babylonClips.join(', ')})`);
   check(clips.turned > 1e-3, `three.js plays a clip: a node it rotates turns by ${clips.turned.toFixed(4)} rad in 0.3 s`);
+  // Morph targets: both engines get the decoded offsets (inflate: 0.25 out, within the packing
+  // error), the names, and three.js plays the weights clip.
+  const morph = await page.evaluate((glb) => window.engineTests.morphTargets(glb), '/__work/morph.glb');
+  const near = (x, y) => Math.abs(x - y) < 0.01;
+  check(morph.threeNames.join() === 'inflate,squash' && near(morph.threeOffsets[0], 0.25),
+    `three.js sees the morph targets ${morph.threeNames.join(', ')}, inflate moving ${morph.threeOffsets[0]?.toFixed(4)} (0.25)`);
+  check(near(morph.threeWeightAt1s, 1), `three.js plays the weights clip: inflate ${morph.threeWeightAt1s.toFixed(4)} at 1 s (1)`);
+  check(morph.babylonNames.join() === 'inflate,squash' && near(morph.babylonOffsets[0], 0.25) &&
+        morph.babylonClips.join() === 'breathe',
+  `Babylon sees the morph targets ${morph.babylonNames.join(', ')}, inflate moving ${morph.babylonOffsets[0]?.toFixed(4)} (0.25), clips ${morph.babylonClips.join(', ')}`);
   check(outside.length === 0, `nothing fetched from outside the local server${outside.length ? `: ${outside.join(' ')}` : ''}`);
   check(errors.length === 0, `no page errors${errors.length ? `: ${errors.join(' | ')}` : ''}`);
 } catch (e) {

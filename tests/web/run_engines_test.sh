@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # ctest driver of the engine drop tests:
 #   run_engines_test.sh REPO BUILD_DIR HULLPACK WEB_BULLET_DROP WORK_DIR TEST_O3DGC WEB_DECODE_REF
-# Packs samples/torus.obj in both collider forms and the animated Kenney character, gets Bullet's resting height and the C++ reader's
+# Packs samples/torus.obj in both collider forms, the animated Kenney character and a generated
+# blob with morph targets (make_morph_glb.mjs), gets Bullet's resting height and the C++ reader's
 # hull points (web_bullet_drop) and the C++ decode of the KHR file (`hullpack unpack`), makes a
 # file with hulls in the earlier stream form (make_glb.mjs) and its C++ hull points, then runs
 # tests/web/engines_test.mjs. Exit 77 = skipped.
@@ -27,6 +28,8 @@ mkdir -p "$work/character/Textures"
 cp "$repo/samples/assets/kenney_character.glb" "$work/character/"
 base64 -d >"$work/character/Textures/colormap.png" <<<'iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAADUlEQVR42mP8z8BQDwAEhQGAhKmMIQAAAABJRU5ErkJggg=='
 "$hullpack" pack "$work/character/kenney_character.glb" -o "$work/character.glb" --quiet
+node "$repo/tests/web/make_morph_glb.mjs" --out "$work/morph.source.glb"
+"$hullpack" pack "$work/morph.source.glb" -o "$work/morph.glb" --quiet
 "$bullet" "$work/omi.glb" >"$work/omi.bullet.json"
 "$bullet" "$work/khr.glb" >"$work/khr.bullet.json"
 node "$repo/tests/web/make_glb.mjs" --encoder "$encoder" --ref "$decode_ref" --mesh "$repo/samples/torus.obj" \

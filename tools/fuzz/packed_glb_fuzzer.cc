@@ -1,6 +1,7 @@
 // libFuzzer target: the GLB reader with the packed-file decoder (what `hullpack unpack` and every
 // GLB input go through) and the collision-hull reader (`hullpack info`). Any bytes give a Status or
-// a consistent scene and hulls (indices, animation targets, camera and light references in range).
+// a consistent scene and hulls (indices, animation targets, morph targets, camera and light
+// references in range).
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -26,6 +27,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     for (uint32_t index : mesh.indices) {
       if (index >= mesh.vertex_count()) std::abort();
     }
+    for (const hullpack::MorphTarget& t : mesh.morph_targets) {
+      if (t.positions.size() != 3 * mesh.vertex_count()) std::abort();
+      if (!t.normals.empty() && t.normals.size() != 3 * mesh.vertex_count()) std::abort();
+    }
+    if (!mesh.morph_weights.empty() && mesh.morph_weights.size() != mesh.morph_targets.size())
+      std::abort();
   }
   // What the writer and engines index with must be in range.
   const hullpack::Scene& sc = scene.value();
@@ -33,7 +40,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     for (const hullpack::AnimationChannel& c : a.channels) {
       if (c.sampler < 0 || static_cast<size_t>(c.sampler) >= a.samplers.size()) std::abort();
       if (c.node < 0 || static_cast<size_t>(c.node) >= sc.nodes.size()) std::abort();
-      if (!sc.nodes[static_cast<size_t>(c.node)].trs) std::abort();
+      if (c.path != hullpack::AnimationPath::kWeights && !sc.nodes[static_cast<size_t>(c.node)].trs)
+        std::abort();
+      const hullpack::AnimationSampler& s = a.samplers[static_cast<size_t>(c.sampler)];
+      const size_t width = hullpack::ChannelWidth(sc, c);
+      const size_t per_key = s.interpolation == hullpack::Interpolation::kCubicSpline ? 3 : 1;
+      if (width == 0 || s.values.size() != s.times.size() * width * per_key) std::abort();
     }
   }
   for (const hullpack::Node& n : sc.nodes) {

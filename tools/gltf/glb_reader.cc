@@ -59,9 +59,6 @@ Result<Scene> Decoder::Run() {
     Drop("dropped " + std::to_string(TopCount("scenes") - 1) +
          " extra scenes (all nodes are kept)");
   }
-  if (morph_target_primitives_ > 0) {
-    Drop("dropped morph targets of " + std::to_string(morph_target_primitives_) + " primitives");
-  }
   if (non_triangle_primitives_ > 0) {
     Drop("dropped " + std::to_string(non_triangle_primitives_) + " point/line primitives");
   }

@@ -87,7 +87,8 @@ Status Decoder::GetBufferView(int64_t index, const std::string& where, const uin
   return Status::Ok();
 }
 
-Status Decoder::GetAccessor(int64_t index, const std::string& where, AccessorView* out) {
+Status Decoder::GetAccessor(int64_t index, const std::string& where, AccessorView* out,
+                            bool allow_sparse) {
   const json* accessors = nullptr;
   HP_RETURN_IF_ERROR(TopLevel("accessors", &accessors));
   if (index < 0 || accessors == nullptr || static_cast<size_t>(index) >= accessors->size()) {
@@ -95,7 +96,8 @@ Status Decoder::GetAccessor(int64_t index, const std::string& where, AccessorVie
   }
   const std::string aw = Item("accessors", static_cast<uint64_t>(index));
   const json& a = (*accessors)[static_cast<size_t>(index)];
-  if (a.contains("sparse")) return Unsupported(aw, "sparse accessors are not supported");
+  if (a.contains("sparse") && !allow_sparse)
+    return Unsupported(aw, "sparse accessors are not supported here");
   uint64_t component_type = 0, count = 0, offset = 0;
   if (a.find("componentType") == a.end()) return Error(aw, "has no componentType");
   if (a.find("count") == a.end()) return Error(aw, "has no count");
@@ -157,11 +159,71 @@ Status Decoder::GetAccessor(int64_t index, const std::string& where, AccessorVie
   return Status::Ok();
 }
 
+Status Decoder::ApplySparse(int64_t index, const AccessorView& a, std::vector<float>* out) {
+  const std::string aw = Item("accessors", static_cast<uint64_t>(index)) + ".sparse";
+  const json& sparse = (*root_.find("accessors"))[static_cast<size_t>(index)]["sparse"];
+  if (!sparse.is_object()) return Error(aw, "is not an object");
+  uint64_t count = 0;
+  HP_RETURN_IF_ERROR(GetUint(sparse, "count", aw, 0, &count));
+  if (count == 0 || count > a.count) {
+    return Error(aw, "count " + std::to_string(count) + " is not in 1.." + std::to_string(a.count));
+  }
+  auto indices = sparse.find("indices");
+  auto values = sparse.find("values");
+  if (indices == sparse.end() || !indices->is_object() || values == sparse.end() ||
+      !values->is_object()) {
+    return Error(aw, "needs indices and values objects");
+  }
+  // One tightly packed run of `count` elements of `element` bytes in a bufferView.
+  auto run = [&](const json& j, const std::string& w, size_t element, const uint8_t** data) {
+    int64_t view = -1;
+    uint64_t offset = 0;
+    HP_RETURN_IF_ERROR(GetIndex(j, "bufferView", w, &view));
+    HP_RETURN_IF_ERROR(GetUint(j, "byteOffset", w, 0, &offset));
+    const uint8_t* bytes = nullptr;
+    size_t size = 0, stride = 0;
+    HP_RETURN_IF_ERROR(GetBufferView(view, w, &bytes, &size, &stride));
+    uint64_t end = 0;
+    if (!MulAdd(count, element, offset, &end) || end > size)
+      return Error(w, "exceeds its bufferView (" + std::to_string(size) + " bytes)");
+    *data = bytes + offset;
+    return Status::Ok();
+  };
+  uint64_t index_type = 0;
+  HP_RETURN_IF_ERROR(GetUint(*indices, "componentType", aw + ".indices", 0, &index_type));
+  if (index_type != gltf::kUnsignedByte && index_type != gltf::kUnsignedShort &&
+      index_type != gltf::kUnsignedInt) {
+    return Error(aw + ".indices", "componentType must be an unsigned integer type");
+  }
+  const size_t index_size = gltf::ComponentSize(static_cast<int>(index_type));
+  const size_t csize = gltf::ComponentSize(a.component_type);
+  const size_t element = csize * static_cast<size_t>(a.components);
+  const uint8_t* index_data = nullptr;
+  const uint8_t* value_data = nullptr;
+  HP_RETURN_IF_ERROR(run(*indices, aw + ".indices", index_size, &index_data));
+  HP_RETURN_IF_ERROR(run(*values, aw + ".values", element, &value_data));
+  int64_t previous = -1;
+  for (size_t k = 0; k < count; ++k) {
+    const uint32_t i = ReadUnsigned(index_data + k * index_size, static_cast<int>(index_type));
+    if (i >= a.count || static_cast<int64_t>(i) <= previous) {
+      return Error(aw + ".indices", "index " + std::to_string(k) + " (" + std::to_string(i) +
+                                        ") is out of range or not increasing");
+    }
+    previous = i;
+    for (int c = 0; c < a.components; ++c) {
+      (*out)[i * static_cast<size_t>(a.components) + static_cast<size_t>(c)] = static_cast<float>(
+          ReadComponent(value_data + k * element + static_cast<size_t>(c) * csize, a.component_type,
+                        a.normalized));
+    }
+  }
+  return Status::Ok();
+}
+
 Status Decoder::ReadFloats(int64_t index, const std::string& where,
                            std::initializer_list<int> allowed_components, std::vector<float>* out,
                            int* components) {
   AccessorView a;
-  HP_RETURN_IF_ERROR(GetAccessor(index, where, &a));
+  HP_RETURN_IF_ERROR(GetAccessor(index, where, &a, /*allow_sparse=*/true));
   const std::string aw = where + " (" + Item("accessors", static_cast<uint64_t>(index)) + ")";
   if (std::find(allowed_components.begin(), allowed_components.end(), a.components) ==
       allowed_components.end()) {
@@ -180,6 +242,8 @@ Status Decoder::ReadFloats(int64_t index, const std::string& where,
       }
     }
   }
+  if ((*root_.find("accessors"))[static_cast<size_t>(index)].contains("sparse"))
+    HP_RETURN_IF_ERROR(ApplySparse(index, a, out));
   *components = a.components;
   return Status::Ok();
 }

@@ -1,7 +1,7 @@
 // Animations: samplers (key times and values) and the channels that drive node translation,
-// rotation and scale. Channels of morph-target weights go with the morph targets; channels
-// without a target node (KHR_animation_pointer) are dropped with a line in Scene::dropped. An
-// animated node keeps its transform as TRS, the only form glTF lets an animation drive.
+// rotation, scale and the morph-target weights of the node's mesh. Channels without a target node
+// (KHR_animation_pointer) are dropped with a line in Scene::dropped. A node whose transform is
+// animated keeps it as TRS, the only form glTF lets an animation drive.
 #include "gltf/glb_reader_decoder.h"
 
 #include "scene/transform.h"
@@ -22,6 +22,8 @@ bool ParsePath(const std::string& text, AnimationPath* out) {
     *out = AnimationPath::kRotation;
   } else if (text == "scale") {
     *out = AnimationPath::kScale;
+  } else if (text == "weights") {
+    *out = AnimationPath::kWeights;
   } else {
     return false;
   }
@@ -31,7 +33,7 @@ bool ParsePath(const std::string& text, AnimationPath* out) {
 }  // namespace
 
 Status Decoder::DecodeAnimationSampler(const json& j, const std::string& where, AnimationPath path,
-                                       AnimationSampler* out) {
+                                       size_t width, AnimationSampler* out) {
   std::string interpolation = "LINEAR";
   HP_RETURN_IF_ERROR(GetString(j, "interpolation", where, &interpolation));
   size_t values_per_key = 1;
@@ -59,9 +61,11 @@ Status Decoder::DecodeAnimationSampler(const json& j, const std::string& where, 
                    "key time " + std::to_string(k) + " is not finite, negative or not ascending");
     }
   }
-  const int width = static_cast<int>(AnimationPathWidth(path));
-  HP_RETURN_IF_ERROR(ReadFloats(output, where + ".output", {width}, &out->values, &components));
-  const size_t expected = out->times.size() * values_per_key * static_cast<size_t>(width);
+  // Weights are SCALAR, one per morph target and key; translation, rotation and scale VEC3/VEC4.
+  const int type_width = path == AnimationPath::kWeights ? 1 : static_cast<int>(width);
+  HP_RETURN_IF_ERROR(
+      ReadFloats(output, where + ".output", {type_width}, &out->values, &components));
+  const size_t expected = out->times.size() * values_per_key * width;
   if (out->values.size() != expected) {
     return Error(where + ".output", "holds " + std::to_string(out->values.size() / width) +
                                         " values for " + std::to_string(out->times.size()) +
@@ -71,6 +75,15 @@ Status Decoder::DecodeAnimationSampler(const json& j, const std::string& where, 
     if (!std::isfinite(v)) return Error(where + ".output", "holds a value that is not finite");
   }
   return Status::Ok();
+}
+
+size_t Decoder::MorphTargetsOfNode(const Scene& scene, size_t node) const {
+  const json& n = root_.at("nodes")[node];
+  if (!n.is_object()) return 0;
+  auto mesh = n.find("mesh");
+  if (mesh == n.end() || !mesh->is_number_unsigned()) return 0;
+  const uint64_t m = mesh->get<uint64_t>();
+  return m < scene.meshes.size() ? scene.meshes[static_cast<size_t>(m)].morph_targets.size() : 0;
 }
 
 Status Decoder::DecodeAnimations(Scene* scene) {
@@ -92,6 +105,7 @@ Status Decoder::DecodeAnimations(Scene* scene) {
     // A sampler is read with the path of the first channel that uses it; the samplers no kept
     // channel uses are left out.
     std::vector<int> kept_sampler(samplers->size(), -1);
+    std::vector<size_t> sampler_width(samplers->size(), 0);
     std::vector<AnimationPath> sampler_path(samplers->size());
     std::set<std::pair<int, int>> targets;  // (node, path): glTF allows each once per animation
     for (size_t c = 0; c < channels->size(); ++c) {
@@ -111,14 +125,17 @@ Status Decoder::DecodeAnimations(Scene* scene) {
       if (node >= 0 && static_cast<size_t>(node) >= node_count)
         return Error(cw + ".target", "node " + std::to_string(node) + " does not exist");
       AnimationPath path;
-      if (path_text == "weights") {
-        ++weight_channels;
-        continue;
-      }
       if (node < 0 || !ParsePath(path_text, &path)) {
         if (node >= 0 && path_text != "pointer")
           return Error(cw + ".target", "path '" + path_text + "' is not a node property");
         ++pointer_channels;
+        continue;
+      }
+      const size_t width = path == AnimationPath::kWeights
+                               ? MorphTargetsOfNode(*scene, static_cast<size_t>(node))
+                               : AnimationPathWidth(path);
+      if (width == 0) {
+        ++weight_channels;
         continue;
       }
       if (!targets.insert({static_cast<int>(node), static_cast<int>(path)}).second) {
@@ -126,17 +143,21 @@ Status Decoder::DecodeAnimations(Scene* scene) {
         continue;
       }
       const size_t s = static_cast<size_t>(sampler);
+      if (kept_sampler[s] >= 0 &&
+          (sampler_width[s] != width ||
+           (sampler_path[s] == AnimationPath::kWeights) != (path == AnimationPath::kWeights))) {
+        return Error(cw, "uses sampler " + std::to_string(s) + " for values of another width");
+      }
       if (kept_sampler[s] < 0) {
         AnimationSampler decoded;
         const json& sj = (*samplers)[s];
         const std::string sw = aw + ".samplers[" + std::to_string(s) + "]";
         if (!sj.is_object()) return Error(sw, "is not an object");
-        HP_RETURN_IF_ERROR(DecodeAnimationSampler(sj, sw, path, &decoded));
+        HP_RETURN_IF_ERROR(DecodeAnimationSampler(sj, sw, path, width, &decoded));
         kept_sampler[s] = static_cast<int>(animation.samplers.size());
         sampler_path[s] = path;
+        sampler_width[s] = width;
         animation.samplers.push_back(std::move(decoded));
-      } else if (AnimationPathWidth(sampler_path[s]) != AnimationPathWidth(path)) {
-        return Error(cw, "uses sampler " + std::to_string(s) + " for values of another width");
       }
       animation.channels.push_back({kept_sampler[s], static_cast<int>(node), path});
     }
@@ -148,7 +169,7 @@ Status Decoder::DecodeAnimations(Scene* scene) {
   }
   if (weight_channels > 0) {
     Drop("dropped " + std::to_string(weight_channels) +
-         " animation channels of morph-target weights");
+         " animation channels of morph-target weights of nodes without a mesh with morph targets");
   }
   if (pointer_channels > 0) {
     Drop("dropped " + std::to_string(pointer_channels) +
@@ -169,6 +190,10 @@ void Decoder::GiveAnimatedNodesTrs(Scene* scene) {
   for (Animation& a : scene->animations) {
     std::vector<AnimationChannel> kept;
     for (const AnimationChannel& c : a.channels) {
+      if (c.path == AnimationPath::kWeights) {
+        kept.push_back(c);
+        continue;
+      }
       Node& node = scene->nodes[static_cast<size_t>(c.node)];
       Trs trs;
       if (!node.trs && DecomposeMatrix(node.local_transform, &trs)) node.trs = trs;

@@ -157,9 +157,15 @@ class Decoder {
   Status GetBuffer(int64_t index, const std::string& where, const BufferData** out);
   Status GetBufferView(int64_t index, const std::string& where, const uint8_t** data, size_t* size,
                        size_t* stride);
-  Status GetAccessor(int64_t index, const std::string& where, AccessorView* out);
-  // An accessor as floats (normalized integers mapped per the spec); its component count must be
-  // one of `allowed_components`.
+  // A sparse accessor is an error unless `allow_sparse` (its base is then described by `out`; the
+  // caller applies the substitutions: ApplySparse).
+  Status GetAccessor(int64_t index, const std::string& where, AccessorView* out,
+                     bool allow_sparse = false);
+  // The `sparse` substitutions of accessor `index` (described by `a`) written into `out`
+  // (a.count x a.components floats): indices strictly increasing and below the count.
+  Status ApplySparse(int64_t index, const AccessorView& a, std::vector<float>* out);
+  // An accessor as floats (normalized integers mapped per the spec, sparse substitutions applied);
+  // its component count must be one of `allowed_components`.
   Status ReadFloats(int64_t index, const std::string& where,
                     std::initializer_list<int> allowed_components, std::vector<float>* out,
                     int* components);
@@ -174,16 +180,21 @@ class Decoder {
                                const std::string& where, float* out);
   Status DecodeMaterials(Scene* scene);
   Status DecodeMesh(int64_t index, Scene* scene, Mesh* out);
+  // Pads the mesh's morph targets to its vertex count; mesh.weights and extras.targetNames.
+  Status DecodeMorphTargetNamesAndWeights(const json& mesh, const std::string& where, Mesh* out);
   Status DecodeSkins(Scene* scene);
   Status DecodeCameras(Scene* scene);
   Status DecodeLights(Scene* scene);
   Status DecodeNodes(Scene* scene);
   Status DecodeAnimations(Scene* scene);
+  // The morph-target count of node `node`'s mesh (0 without one); node < the node count.
+  size_t MorphTargetsOfNode(const Scene& scene, size_t node) const;
   // Nodes that animations drive but that the file gave as a matrix (invalid glTF, but seen) get
   // the TRS of their matrix; channels of a node without one (shear) are dropped.
   void GiveAnimatedNodesTrs(Scene* scene);
+  // `width`: values per key (for weights, the morph-target count of the driven mesh).
   Status DecodeAnimationSampler(const json& j, const std::string& where, AnimationPath path,
-                                AnimationSampler* out);
+                                size_t width, AnimationSampler* out);
   void Drop(const std::string& what) { dropped_.push_back(what); }
 
   const GltfDocument& doc_;
@@ -193,7 +204,6 @@ class Decoder {
   uint64_t budget_ = 0;
   std::vector<std::unique_ptr<BufferData>> buffers_;
   std::vector<std::string> dropped_;
-  size_t morph_target_primitives_ = 0;
   size_t non_triangle_primitives_ = 0;
   std::set<std::string> dropped_attributes_;
   int default_material_ = -1;

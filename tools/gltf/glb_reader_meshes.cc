@@ -2,6 +2,7 @@
 #include "gltf/glb_reader_decoder.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <map>
@@ -19,6 +20,37 @@ void PadTo(std::vector<T>& v, size_t vertices, size_t width, T fill) {
 }
 
 }  // namespace
+
+Status Decoder::DecodeMorphTargetNamesAndWeights(const json& j, const std::string& mw, Mesh* out) {
+  const size_t vc = out->vertex_count();
+  bool any_normals = false;
+  for (const MorphTarget& t : out->morph_targets) any_normals |= !t.normals.empty();
+  for (MorphTarget& t : out->morph_targets) {
+    PadTo(t.positions, vc, 3, 0.0f);
+    if (any_normals) PadTo(t.normals, vc, 3, 0.0f);
+  }
+  auto weights = j.find("weights");
+  if (weights != j.end()) {
+    if (!weights->is_array() || weights->size() != out->morph_targets.size())
+      return Error(mw, "weights must be an array of one number per morph target");
+    for (const json& w : *weights) {
+      if (!w.is_number() || !std::isfinite(w.get<double>()))
+        return Error(mw, "weights holds a value that is not a finite number");
+      out->morph_weights.push_back(w.get<float>());
+    }
+  }
+  // targetNames is the convention of Blender's and three.js's exporters (not in the specification).
+  auto extras = j.find("extras");
+  if (extras != j.end() && extras->is_object()) {
+    auto names = extras->find("targetNames");
+    if (names != extras->end() && names->is_array() && names->size() == out->morph_targets.size()) {
+      for (size_t t = 0; t < names->size(); ++t) {
+        if ((*names)[t].is_string()) out->morph_targets[t].name = (*names)[t].get<std::string>();
+      }
+    }
+  }
+  return Status::Ok();
+}
 
 Status Decoder::DecodeMesh(int64_t mesh_index, Scene* scene, Mesh* out) {
   const json* meshes = nullptr;
@@ -48,6 +80,7 @@ Status Decoder::DecodeMesh(int64_t mesh_index, Scene* scene, Mesh* out) {
   std::vector<int> triangle_material;
   bool has_normals = false, has_tangents = false, has_colors = false, has_skin = false;
   size_t uv_count = 0;
+  int64_t target_count = -1;  // glTF: every primitive of a mesh has the same morph targets
   const size_t material_count = TopCount("materials");
 
   for (size_t p = 0; p < primitives->size(); ++p) {
@@ -57,7 +90,6 @@ Status Decoder::DecodeMesh(int64_t mesh_index, Scene* scene, Mesh* out) {
     uint64_t mode = gltf::kModeTriangles;
     HP_RETURN_IF_ERROR(GetUint(prim, "mode", pw, gltf::kModeTriangles, &mode));
     if (mode > gltf::kModeTriangleFan) return Error(pw, "unknown mode " + std::to_string(mode));
-    if (prim.contains("targets")) ++morph_target_primitives_;
     if (mode < gltf::kModeTriangles) {
       ++non_triangle_primitives_;
       continue;
@@ -86,8 +118,36 @@ Status Decoder::DecodeMesh(int64_t mesh_index, Scene* scene, Mesh* out) {
       }
     }
     if (used.count("POSITION") == 0) return Error(pw, "has no POSITION attribute");
+    // Morph targets: per target the accessors of its POSITION and NORMAL offsets (-1: none).
+    std::vector<std::pair<int64_t, int64_t>> targets;
+    const json* targets_json = nullptr;
+    HP_RETURN_IF_ERROR(GetArray(prim, "targets", pw, &targets_json));
+    if (targets_json != nullptr) {
+      for (size_t t = 0; t < targets_json->size(); ++t) {
+        const std::string tw = pw + ".targets[" + std::to_string(t) + "]";
+        const json& target = (*targets_json)[t];
+        if (!target.is_object()) return Error(tw, "is not an object");
+        int64_t position = -1, normal = -1;
+        HP_RETURN_IF_ERROR(GetIndex(target, "POSITION", tw, &position));
+        HP_RETURN_IF_ERROR(GetIndex(target, "NORMAL", tw, &normal));
+        for (const auto& kv : target.items()) {
+          if (kv.key() != "POSITION" && kv.key() != "NORMAL")
+            dropped_attributes_.insert("morph target " + kv.key());
+        }
+        targets.emplace_back(position, normal);
+      }
+    }
+    if (target_count >= 0 && targets.size() != static_cast<size_t>(target_count)) {
+      return Error(pw, "has " + std::to_string(targets.size()) +
+                           " morph targets, another primitive of the mesh " +
+                           std::to_string(target_count));
+    }
+    target_count = static_cast<int64_t>(targets.size());
+    out->morph_targets.resize(targets.size());
     std::string key;
     for (const auto& kv : used) key += kv.first + "=" + std::to_string(kv.second) + ";";
+    for (const auto& t : targets)
+      key += "T" + std::to_string(t.first) + "," + std::to_string(t.second) + ";";
     int64_t material = -1;
     HP_RETURN_IF_ERROR(GetIndex(prim, "material", pw, &material));
     if (material >= 0 && static_cast<size_t>(material) >= material_count) {
@@ -211,6 +271,23 @@ Status Decoder::DecodeMesh(int64_t mesh_index, Scene* scene, Mesh* out) {
       } else if (used.count("JOINTS_0") != 0 || used.count("WEIGHTS_0") != 0) {
         dropped_attributes_.insert("JOINTS_0/WEIGHTS_0 without its partner");
       }
+      for (size_t t = 0; t < targets.size(); ++t) {
+        const std::string tw = pw + ".targets[" + std::to_string(t) + "]";
+        MorphTarget& target = out->morph_targets[t];
+        auto read_offsets = [&](int64_t accessor, const char* sem, std::vector<float>* to) {
+          if (accessor < 0) return Status::Ok();
+          std::vector<float> offsets;
+          int c = 0;
+          HP_RETURN_IF_ERROR(ReadFloats(accessor, tw + "." + sem, {3}, &offsets, &c));
+          if (offsets.size() != count * 3)
+            return Error(tw, std::string(sem) + " count differs from the primitive's POSITION");
+          PadTo(*to, base, 3, 0.0f);
+          to->insert(to->end(), offsets.begin(), offsets.end());
+          return Status::Ok();
+        };
+        HP_RETURN_IF_ERROR(read_offsets(targets[t].first, "POSITION", &target.positions));
+        HP_RETURN_IF_ERROR(read_offsets(targets[t].second, "NORMAL", &target.normals));
+      }
       vertex_blocks.emplace(key, std::make_pair(base, count));
     }
 
@@ -277,6 +354,7 @@ Status Decoder::DecodeMesh(int64_t mesh_index, Scene* scene, Mesh* out) {
   }
   for (size_t u = 0; u < uv_count; ++u) PadTo(out->uv_sets[u], vc, 2, 0.0f);
   if (out->uv_sets.size() > uv_set_limit) out->uv_sets.resize(static_cast<size_t>(uv_set_limit));
+  HP_RETURN_IF_ERROR(DecodeMorphTargetNamesAndWeights(j, mw, out));
 
   if (out->indices.empty())
     Drop(mw + (out->name.empty() ? "" : " '" + out->name + "'") + " has no triangles");

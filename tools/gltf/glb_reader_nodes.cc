@@ -2,6 +2,7 @@
 #include "gltf/glb_reader_decoder.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <utility>
 #include "gltf/node_forest.h"
@@ -60,6 +61,16 @@ Status Decoder::DecodeNodes(Scene* scene) {
       if (static_cast<size_t>(mesh) >= scene->meshes.size())
         return Error(nw, "mesh " + std::to_string(mesh) + " does not exist");
       node.meshes.push_back(static_cast<int>(mesh));
+      // A node's own morph weights replace its mesh's defaults; the scene model keeps one set per
+      // mesh, which is exact while a mesh is instanced by nodes that agree.
+      auto weights = j.find("weights");
+      Mesh& m = scene->meshes[static_cast<size_t>(mesh)];
+      if (weights != j.end() && weights->is_array() && weights->size() == m.morph_targets.size() &&
+          std::all_of(weights->begin(), weights->end(), [](const json& w) {
+            return w.is_number() && std::isfinite(w.get<double>());
+          })) {
+        m.morph_weights = weights->get<std::vector<float>>();
+      }
     }
     if (skin >= 0) {
       if (static_cast<size_t>(skin) >= scene->skins.size())

@@ -157,6 +157,8 @@ const char* PathName(AnimationPath path) {
       return "rotation";
     case AnimationPath::kScale:
       return "scale";
+    case AnimationPath::kWeights:
+      return "weights";
     case AnimationPath::kTranslation:
       break;
   }
@@ -215,8 +217,9 @@ class AnimationWriter {
         if (sampler_index[ai][si] >= 0) continue;
         const AnimationSampler& s = a.samplers[si];
         sampler_index[ai][si] = static_cast<int>(samplers[ai].size());
-        samplers[ai].push_back(
-            {TimesAccessor(s.times), ValuesAccessor(s, c.path), s.interpolation});
+        samplers[ai].push_back({TimesAccessor(s.times),
+                                ValuesAccessor(s, c.path, ChannelWidth(scene_, c)),
+                                s.interpolation});
       }
     }
     const int views[3] = {AddView(blobs_[0], doc), AddView(blobs_[1], doc),
@@ -282,9 +285,13 @@ class AnimationWriter {
     return index;
   }
 
-  int ValuesAccessor(const AnimationSampler& s, AnimationPath path) {
-    const size_t width = AnimationPathWidth(path);
+  int ValuesAccessor(const AnimationSampler& s, AnimationPath path, size_t width) {
     AccessorDesc desc;
+    if (path == AnimationPath::kWeights) {  // one SCALAR per target and key
+      desc.count = s.values.size();
+      desc.type = "SCALAR";
+      return Add(1, s.values.data(), s.values.size() * sizeof(float), desc);
+    }
     desc.count = s.values.size() / width;
     desc.type = width == 4 ? "VEC4" : "VEC3";
     // Cubic-spline tangents may exceed 1, which a normalized short cannot hold.
@@ -440,7 +447,9 @@ Status CheckSampler(const AnimationSampler& s, size_t width, const std::string& 
 Status ValidateAnimation(const Scene& scene, size_t index) {
   const Animation& a = scene.animations[index];
   const std::string label = "animation " + std::to_string(index);
-  std::vector<size_t> width(a.samplers.size(), 0);
+  // Per sampler the values per key and whether they are weights (SCALAR accessors, where
+  // transforms are VEC3/VEC4: a sampler serves one kind); width 0 = unused.
+  std::vector<std::pair<size_t, bool>> width(a.samplers.size(), {0, false});
   std::map<std::pair<int, int>, size_t> targets;
   for (size_t c = 0; c < a.channels.size(); ++c) {
     const AnimationChannel& ch = a.channels[c];
@@ -451,20 +460,26 @@ Status ValidateAnimation(const Scene& scene, size_t index) {
       return ArgError(cl + " targets node " + std::to_string(ch.node));
     if (!targets.emplace(std::make_pair(ch.node, static_cast<int>(ch.path)), c).second)
       return ArgError(cl + " repeats the node and path of another channel");
-    size_t& w = width[static_cast<size_t>(ch.sampler)];
-    if (w != 0 && w != AnimationPathWidth(ch.path))
+    const bool weights = ch.path == AnimationPath::kWeights;
+    const std::pair<size_t, bool> kind = {ChannelWidth(scene, ch), weights};
+    if (kind.first == 0)
+      return ArgError(cl + " drives the morph weights of node " + std::to_string(ch.node) +
+                      ", whose first mesh has no morph targets");
+    std::pair<size_t, bool>& w = width[static_cast<size_t>(ch.sampler)];
+    if (w.first != 0 && w != kind)
       return ArgError(cl + " uses a sampler for values of another width");
-    w = AnimationPathWidth(ch.path);
+    w = kind;
     const Node& node = scene.nodes[static_cast<size_t>(ch.node)];
     Trs trs;
-    if (!node.trs && !DecomposeMatrix(node.local_transform, &trs)) {
+    if (!weights && !node.trs && !DecomposeMatrix(node.local_transform, &trs)) {
       return ArgError(cl + " animates node " + std::to_string(ch.node) +
                       ", whose matrix has no translation-rotation-scale form");
     }
   }
   for (size_t s = 0; s < a.samplers.size(); ++s) {
-    if (width[s] == 0) continue;  // unused: not written
-    Status st = CheckSampler(a.samplers[s], width[s], label + " sampler " + std::to_string(s));
+    if (width[s].first == 0) continue;  // unused: not written
+    Status st =
+        CheckSampler(a.samplers[s], width[s].first, label + " sampler " + std::to_string(s));
     if (!st.ok()) return st;
   }
   return Status::Ok();
@@ -517,6 +532,22 @@ Status ValidateSceneForGltf(const Scene& scene) {
     if (!s.ok()) return s;
     if (m.joints.empty() != m.weights.empty()) {
       return MeshError(mi, m, "joints and weights must both be present or both be absent");
+    }
+    for (size_t t = 0; t < m.morph_targets.size(); ++t) {
+      const MorphTarget& target = m.morph_targets[t];
+      const std::string name = "morph target " + std::to_string(t);
+      if (target.positions.size() != 3 * vc)
+        return MeshError(mi, m,
+                         name + " has " + std::to_string(target.positions.size()) +
+                             " position offsets, expected " + std::to_string(3 * vc));
+      if (target.normals.size() != (m.morph_targets[0].normals.empty() ? 0 : 3 * vc))
+        return MeshError(mi, m, name + ": every target or none must have normal offsets");
+      if (!AllFinite(target.positions) || !AllFinite(target.normals))
+        return MeshError(mi, m, name + " holds NaN or infinity");
+    }
+    if (!m.morph_weights.empty() &&
+        (m.morph_weights.size() != m.morph_targets.size() || !AllFinite(m.morph_weights))) {
+      return MeshError(mi, m, "morph weights must be one finite number per morph target");
     }
     bool finite = AllFinite(m.positions) && AllFinite(m.normals) && AllFinite(m.tangents) &&
                   AllFinite(m.colors) && AllFinite(m.weights);
@@ -776,6 +807,15 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
       attributes["WEIGHTS_0"] = AddFloatAttribute(doc, m.weights, 4, "VEC4", false);
     }
 
+    // Morph targets: accessors shared by the primitives, as the vertex attributes are.
+    json targets = json::array();
+    for (const MorphTarget& t : m.morph_targets) {
+      json target = {{"POSITION", AddFloatAttribute(doc, t.positions, 3, "VEC3", true)}};
+      if (!t.normals.empty())
+        target["NORMAL"] = AddFloatAttribute(doc, t.normals, 3, "VEC3", false);
+      targets.push_back(std::move(target));
+    }
+
     // Triangles grouped by material id, ascending; original order inside each group.
     std::vector<std::pair<int, std::vector<uint32_t>>> groups;  // material -> triangle indices
     if (m.material_ids.empty()) {
@@ -821,6 +861,7 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
       prim_layout.indices_accessor = doc->AddAccessor(desc);
       prim_layout.triangle_count = group.second.size();
       json prim = {{"attributes", attributes}, {"indices", prim_layout.indices_accessor}};
+      if (!targets.empty()) prim["targets"] = targets;
       if (group.first >= 0) prim["material"] = group.first;
       primitives.push_back(std::move(prim));
       ml.primitives.push_back(prim_layout);
@@ -828,6 +869,13 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
     }
     json mesh_json = {{"primitives", std::move(primitives)}};
     if (!m.name.empty()) mesh_json["name"] = m.name;
+    if (!m.morph_weights.empty()) mesh_json["weights"] = m.morph_weights;
+    if (std::any_of(m.morph_targets.begin(), m.morph_targets.end(),
+                    [](const MorphTarget& t) { return !t.name.empty(); })) {
+      json names = json::array();
+      for (const MorphTarget& t : m.morph_targets) names.push_back(t.name);
+      mesh_json["extras"]["targetNames"] = std::move(names);
+    }
     if (!m.collides) mesh_json["extras"]["hullpack"]["collides"] = false;
     if (needed_uv_sets > m.uv_sets.size())
       mesh_json["extras"]["hullpack"]["uv_sets"] = m.uv_sets.size();
@@ -864,7 +912,9 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
   }
   std::vector<bool> animated(nodes.size(), false);
   for (const Animation& a : scene.animations) {
-    for (const AnimationChannel& c : a.channels) animated[static_cast<size_t>(c.node)] = true;
+    for (const AnimationChannel& c : a.channels) {
+      if (c.path != AnimationPath::kWeights) animated[static_cast<size_t>(c.node)] = true;
+    }
   }
   json node_array = json::array();
   json extra_nodes = json::array();

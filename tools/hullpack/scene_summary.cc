@@ -43,7 +43,8 @@ void Accumulate(TopologyReport& total, const TopologyReport& t, bool first) {
   }
 }
 
-std::string Attributes(bool normals, size_t uv_sets, bool colors, bool tangents, bool skin) {
+std::string Attributes(bool normals, size_t uv_sets, bool colors, bool tangents, bool skin,
+                       size_t morph_targets) {
   std::string s = "positions";
   if (normals) s += ", normals";
   if (tangents) s += ", tangents";
@@ -51,6 +52,7 @@ std::string Attributes(bool normals, size_t uv_sets, bool colors, bool tangents,
   if (uv_sets > 1) s += ", uv x" + std::to_string(uv_sets);
   if (colors) s += ", colors";
   if (skin) s += ", joints/weights";
+  if (morph_targets > 0) s += ", morph targets x" + std::to_string(morph_targets);
   return s;
 }
 
@@ -106,6 +108,7 @@ SceneSummary Summarize(const Scene& scene) {
     s.colors |= !m.colors.empty();
     s.skin |= m.has_skin();
     s.max_uv_sets = std::max(s.max_uv_sets, m.uv_sets.size());
+    s.max_morph_targets = std::max(s.max_morph_targets, m.morph_targets.size());
     s.mesh_topology.push_back(AnalyzeTopology(m));
     Accumulate(s.total, s.mesh_topology.back(), i == 0);
   }
@@ -130,6 +133,7 @@ nlohmann::json SummaryToJson(const Scene& scene, const SceneSummary& s) {
                       {"has_uv", s.max_uv_sets > 0},
                       {"has_colors", s.colors},
                       {"has_skin", s.skin},
+                      {"morph_targets", s.max_morph_targets},
                       {"bbox", {{"min", t.bbox_min}, {"max", t.bbox_max}}},
                       {"topology", TopologyJson(t)},
                       {"dropped", scene.dropped}};
@@ -141,7 +145,7 @@ nlohmann::json SummaryToJson(const Scene& scene, const SceneSummary& s) {
          {"triangles", m.triangle_count()},
          {"vertices", m.vertex_count()},
          {"attributes", Attributes(!m.normals.empty(), m.uv_sets.size(), !m.colors.empty(),
-                                   !m.tangents.empty(), m.has_skin())},
+                                   !m.tangents.empty(), m.has_skin(), m.morph_targets.size())},
          {"topology", TopologyJson(s.mesh_topology[i])}});
   }
   j["mesh_list"] = meshes;
@@ -157,7 +161,8 @@ std::string SummaryToText(const Scene& scene, const SceneSummary& s) {
   o << "\n  materials " << scene.materials.size() << ", images " << scene.images.size()
     << ", skins " << scene.skins.size() << ", nodes " << scene.nodes.size() << ", animations "
     << scene.animations.size() << "\n";
-  o << "  attributes: " << Attributes(s.normals, s.max_uv_sets, s.colors, s.tangents, s.skin)
+  o << "  attributes: "
+    << Attributes(s.normals, s.max_uv_sets, s.colors, s.tangents, s.skin, s.max_morph_targets)
     << "\n";
   const double dx = double(t.bbox_max[0]) - t.bbox_min[0],
                dy = double(t.bbox_max[1]) - t.bbox_min[1],

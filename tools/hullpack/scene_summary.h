@@ -16,6 +16,7 @@ struct SceneSummary {
   size_t meshes = 0, triangles = 0, vertices = 0, file_vertices = 0;
   bool normals = false, tangents = false, colors = false, skin = false;
   size_t max_uv_sets = 0;
+  size_t max_morph_targets = 0;
   std::vector<TopologyReport> mesh_topology;  // one per mesh
   TopologyReport total;                       // sums; closed/genus/orientation over all meshes
 };

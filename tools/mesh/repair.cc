@@ -42,6 +42,10 @@ std::vector<uint32_t> FindIdenticalVertices(const Mesh& mesh, int threads) {
     AppendFloats(mesh.colors, 4, v, row);
     AppendFloats(mesh.weights, 4, v, row);
     for (size_t i = 0; i < 4 && !mesh.joints.empty(); ++i) row.push_back(mesh.joints[4 * v + i]);
+    for (const MorphTarget& t : mesh.morph_targets) {
+      AppendFloats(t.positions, 3, v, row);
+      AppendFloats(t.normals, 3, v, row);
+    }
     if (v == 0) {
       width = row.size();
       rows.reserve(width * n);
@@ -232,6 +236,10 @@ RepairReport RepairMesh(Mesh& mesh, const RepairOptions& options) {
   Compact(mesh.colors, 4, new_index, kept_vertices);
   Compact(mesh.joints, 4, new_index, kept_vertices);
   Compact(mesh.weights, 4, new_index, kept_vertices);
+  for (MorphTarget& t : mesh.morph_targets) {
+    Compact(t.positions, 3, new_index, kept_vertices);
+    Compact(t.normals, 3, new_index, kept_vertices);
+  }
   return report;
 }
 

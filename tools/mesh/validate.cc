@@ -69,6 +69,25 @@ Status ValidateMesh(const Mesh& mesh) {
     Status s = CheckSize(mesh.uv_sets[set], 2, n, "uv set " + std::to_string(set));
     if (!s.ok()) return fail(s);
   }
+  for (size_t t = 0; t < mesh.morph_targets.size(); ++t) {
+    const MorphTarget& target = mesh.morph_targets[t];
+    const std::string name = "morph target " + std::to_string(t);
+    Status s = target.positions.size() == 3 * n
+                   ? CheckSize(target.normals, 3, n, name + " normals")
+                   : Status(StatusCode::kInvalidMesh,
+                            name + " positions: " + std::to_string(target.positions.size()) +
+                                " values for " + std::to_string(n) + " vertices");
+    if (s.ok() && target.normals.empty() != mesh.morph_targets[0].normals.empty())
+      s = Status(StatusCode::kInvalidMesh, name + ": every target or none must have normals");
+    if (s.ok()) s = CheckFinite(target.positions, {"dx", "dy", "dz"}, name + " positions");
+    if (s.ok()) s = CheckFinite(target.normals, {"dx", "dy", "dz"}, name + " normals");
+    if (!s.ok()) return fail(s);
+  }
+  if (!mesh.morph_weights.empty() && mesh.morph_weights.size() != mesh.morph_targets.size()) {
+    return fail(Status(StatusCode::kInvalidMesh,
+                       "morph weights: " + std::to_string(mesh.morph_weights.size()) + " for " +
+                           std::to_string(mesh.morph_targets.size()) + " targets"));
+  }
   if (mesh.joints.empty() != mesh.weights.empty()) {
     return fail(Status(StatusCode::kInvalidMesh,
                        mesh.joints.empty() ? "weights without joints" : "joints without weights"));

@@ -22,6 +22,8 @@ struct EncodedMesh {
   std::vector<uint8_t> stream;
   // glTF attribute name -> stream attribute id, in stream order.
   std::vector<std::pair<std::string, int>> gltf_attributes;
+  // Per morph target, its glTF attribute names (POSITION, NORMAL) -> stream attribute ids.
+  std::vector<std::vector<std::pair<std::string, int>>> gltf_targets;
   o3dgc::StreamInfo info;
 };
 

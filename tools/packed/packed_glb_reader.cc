@@ -212,6 +212,36 @@ class Inflater {
     return Status::Ok();
   }
 
+  // The extension's `targets`: per morph target, glTF attribute name -> stream attribute id,
+  // filling the primitive's targets[t][name] accessors.
+  Status InflateTargets(nlohmann::json& prim, const nlohmann::json& ext,
+                        const DecodedStream& stream, const Selection& sel) {
+    if (!ext.contains("targets")) return Status::Ok();
+    const nlohmann::json& targets = ext["targets"];
+    if (!targets.is_array() || !prim.contains("targets") || !prim["targets"].is_array() ||
+        prim["targets"].size() != targets.size()) {
+      return Error("targets must be an array with one entry per morph target of the primitive");
+    }
+    const size_t accessors = ArraySize("accessors");
+    for (size_t t = 0; t < targets.size(); ++t) {
+      const std::string tw = "targets[" + std::to_string(t) + "]";
+      if (!targets[t].is_object() || !prim["targets"][t].is_object())
+        return Error(tw + " is not an object");
+      for (auto it = targets[t].begin(); it != targets[t].end(); ++it) {
+        const int64_t id = it.value().is_number_integer() ? it.value().get<int64_t>() : -1;
+        if (id < 0 || static_cast<size_t>(id) >= stream.attributes.size()) {
+          return Error(tw + " " + it.key() + " names stream attribute " + it.value().dump() +
+                       ", which the stream lacks");
+        }
+        const int64_t accessor = Index(prim["targets"][t], it.key().c_str(), accessors);
+        if (accessor < 0) return Error(tw + " " + it.key() + " has no accessor in the primitive");
+        Status s = Fill(accessor, sel, &stream.attributes[static_cast<size_t>(id)], false);
+        if (!s.ok()) return s;
+      }
+    }
+    return Status::Ok();
+  }
+
   Status InflatePrimitive(nlohmann::json& prim) {
     const nlohmann::json& ext = prim["extensions"][kMeshCompressionExtension];
     if (!ext.is_object()) return Error("not an object");
@@ -237,6 +267,8 @@ class Inflater {
       Status s = Fill(accessor, sel.value(), &stream.value()->attributes[id], false);
       if (!s.ok()) return s;
     }
+    Status targets = InflateTargets(prim, ext, *stream.value(), sel.value());
+    if (!targets.ok()) return targets;
     if (prim.contains("indices")) {
       const int64_t accessor = Index(prim, "indices", accessors);
       if (accessor < 0) return Error("indices accessor out of range");

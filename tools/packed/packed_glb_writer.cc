@@ -31,6 +31,20 @@ void CompressPrimitives(GltfDocument& doc, int gltf_mesh, const MeshSource& sour
       if (!fallback) StripData(json["accessors"][prim["attributes"][name].get<int>()]);
     }
     ext["attributes"] = std::move(attributes);
+    if (!stream.gltf_targets.empty() && prim.contains("targets") &&
+        prim["targets"].size() == stream.gltf_targets.size()) {
+      nlohmann::json targets = nlohmann::json::array();
+      for (size_t t = 0; t < stream.gltf_targets.size(); ++t) {
+        nlohmann::json target = nlohmann::json::object();
+        for (const auto& [name, id] : stream.gltf_targets[t]) {
+          if (!prim["targets"][t].contains(name)) continue;
+          target[name] = id;
+          if (!fallback) StripData(json["accessors"][prim["targets"][t][name].get<int>()]);
+        }
+        targets.push_back(std::move(target));
+      }
+      ext["targets"] = std::move(targets);
+    }
     if (source.grouped && p < layout.primitives.size() && layout.primitives[p].material >= 0) {
       ext["group"] = layout.primitives[p].material;
     }

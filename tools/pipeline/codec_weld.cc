@@ -25,6 +25,10 @@ std::vector<std::pair<const char*, size_t>> AttributesOf(const Mesh& m, size_t v
   out.push_back(BytesOf(m.colors, 4, v));
   out.push_back(BytesOf(m.joints, 4, v));
   out.push_back(BytesOf(m.weights, 4, v));
+  for (const MorphTarget& t : m.morph_targets) {
+    out.push_back(BytesOf(t.positions, 3, v));
+    out.push_back(BytesOf(t.normals, 3, v));
+  }
   return out;
 }
 
@@ -104,6 +108,10 @@ std::optional<Mesh> WeldNormalsStoredAlike(const Mesh& mesh, int normal_bits) {
   Compact(out.colors, 4, kept);
   Compact(out.joints, 4, kept);
   Compact(out.weights, 4, kept);
+  for (MorphTarget& t : out.morph_targets) {
+    Compact(t.positions, 3, kept);
+    Compact(t.normals, 3, kept);
+  }
   return out;
 }
 

@@ -146,6 +146,7 @@ Result<BudgetedEncoding> EncodeOnGrids(const Mesh& mesh, const std::vector<uint3
     };
     EncodedMesh encoded;
     encoded.gltf_attributes = in.attributes.gltf_attributes;
+    encoded.gltf_targets = in.attributes.gltf_targets;
     const Status s = EncoderStatus(grids.Encode(candidates[i].bits, candidates[i].mode,
                                                 &encoded.stream, &encoded.info, progress),
                                    mesh.name);
@@ -167,7 +168,7 @@ Result<BudgetedEncoding> EncodeOnGrids(const Mesh& mesh, const std::vector<uint3
   Candidate& chosen = candidates[best];
   t = Clock::now();
   Result<Mesh> decoded = DecodeMesh(chosen.encoded->stream.data(), chosen.encoded->stream.size(),
-                                    &out.groups, mesh.name);
+                                    &out.groups, mesh.name, nullptr, &chosen.encoded->gltf_targets);
   if (!decoded.ok()) {
     return Status(StatusCode::kInternal,
                   "mesh '" + mesh.name + "' does not decode: " + decoded.status().message());

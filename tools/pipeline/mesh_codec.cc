@@ -31,6 +31,7 @@ Status MakeCodecInput(const Mesh& input, const std::vector<uint32_t>& groups,
   const Mesh& mesh = in->welded ? *in->welded : input;
   EncodedMesh& out = in->attributes;
   out.gltf_attributes.clear();
+  out.gltf_targets.clear();
   in->view = o3dgc::MeshView();
   o3dgc::MeshView& view = in->view;
   view.positions = mesh.positions.data();
@@ -75,6 +76,33 @@ Status MakeCodecInput(const Mesh& input, const std::vector<uint32_t>& groups,
     view.float_attributes.push_back(
         FloatView(mesh.tangents, 4, o3dgc::Semantic::kGeneric, s.tangent_bits));
     out.gltf_attributes.emplace_back("TANGENT", id++);
+  }
+  if (!mesh.morph_targets.empty()) {
+    const double position_step =
+        PositionRange(mesh) / (std::ldexp(1.0, std::clamp(s.position_bits, 1, 30)) - 1.0);
+    const double error = s.morph_error > 0 ? s.morph_error : std::sqrt(3.0) / 2 * position_step;
+    for (const MorphTarget& t : mesh.morph_targets) {
+      // One range for the three offsets (cubic cells, as the positions have).
+      float lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+      for (size_t i = 0; i < t.positions.size(); ++i) {
+        lo[i % 3] = std::min(lo[i % 3], t.positions[i]);
+        hi[i % 3] = std::max(hi[i % 3], t.positions[i]);
+      }
+      const double range = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+      o3dgc::FloatAttributeView offsets =
+          FloatView(t.positions, 3, o3dgc::Semantic::kGeneric,
+                    range > 0 ? PositionBitsForMaxError(range, error) : 1);
+      offsets.range = o3dgc::RangeMode::kUniform;
+      view.float_attributes.push_back(offsets);
+      out.gltf_targets.push_back({{"POSITION", id++}});
+      if (!t.normals.empty()) {
+        o3dgc::FloatAttributeView normals =
+            FloatView(t.normals, 3, o3dgc::Semantic::kGeneric, s.normal_bits);
+        normals.range = o3dgc::RangeMode::kUniform;
+        view.float_attributes.push_back(normals);
+        out.gltf_targets.back().emplace_back("NORMAL", id++);
+      }
+    }
   }
   std::vector<int32_t>& joints = in->joints;
   joints.assign(mesh.joints.begin(), mesh.joints.end());
@@ -157,7 +185,8 @@ Result<EncodedMesh> EncodeMesh(const Mesh& mesh, const std::vector<uint32_t>& gr
 }
 
 Result<Mesh> DecodeMesh(const uint8_t* data, size_t size, std::vector<uint32_t>* groups,
-                        const std::string& name, o3dgc::StreamInfo* info) {
+                        const std::string& name, o3dgc::StreamInfo* info,
+                        const std::vector<std::vector<std::pair<std::string, int>>>* targets) {
   o3dgc::DecodedMesh d;
   o3dgc::StreamInfo local_info;
   if (!info) info = &local_info;
@@ -171,11 +200,31 @@ Result<Mesh> DecodeMesh(const uint8_t* data, size_t size, std::vector<uint32_t>*
   const bool obj_uvs = info->format == o3dgc::StreamFormat::kOpen3dgc2013;
   Mesh m;
   const size_t n = d.num_vertices();
+  // Morph-target offsets first: they are generic attributes, which only the caller can name.
+  const size_t first_float_id = d.normals.empty() ? 1 : 2;
+  std::vector<bool> is_target(d.float_attributes.size(), false);
+  for (size_t t = 0; targets && t < targets->size(); ++t) {
+    MorphTarget target;
+    for (const auto& [attribute, id] : (*targets)[t]) {
+      const size_t k = static_cast<size_t>(id) - first_float_id;
+      if (id < static_cast<int>(first_float_id) || k >= d.float_attributes.size() ||
+          d.float_attributes[k].dimension != 3 || d.float_attributes[k].values.size() != 3 * n) {
+        return Status(StatusCode::kParseError, name + ": morph target " + std::to_string(t) + " " +
+                                                   attribute +
+                                                   " is not a 3-component stream attribute");
+      }
+      is_target[k] = true;
+      (attribute == "NORMAL" ? target.normals : target.positions) =
+          std::move(d.float_attributes[k].values);
+    }
+    m.morph_targets.push_back(std::move(target));
+  }
   m.positions = std::move(d.positions);
   m.indices = std::move(d.indices);
   m.normals = std::move(d.normals);
-  for (o3dgc::DecodedFloatAttribute& a : d.float_attributes) {
-    if (a.values.size() != n * a.dimension) continue;
+  for (size_t k = 0; k < d.float_attributes.size(); ++k) {
+    o3dgc::DecodedFloatAttribute& a = d.float_attributes[k];
+    if (is_target[k] || a.values.size() != n * a.dimension) continue;
     if (a.semantic == o3dgc::Semantic::kTexCoord && a.dimension == 2) {
       if (obj_uvs) {
         for (size_t i = 1; i < a.values.size(); i += 2) a.values[i] = 1.0f - a.values[i];
@@ -231,6 +280,12 @@ Mesh ExtractGroup(const Mesh& mesh, const std::vector<uint32_t>& groups, uint32_
   gather(mesh.tangents, 4, out.tangents);
   gather(mesh.colors, 4, out.colors);
   gather(mesh.weights, 4, out.weights);
+  for (const MorphTarget& t : mesh.morph_targets) {
+    out.morph_targets.push_back({t.name, {}, {}});
+    gather(t.positions, 3, out.morph_targets.back().positions);
+    gather(t.normals, 3, out.morph_targets.back().normals);
+  }
+  out.morph_weights = mesh.morph_weights;
   for (const auto& uv : mesh.uv_sets) {
     out.uv_sets.emplace_back();
     gather(uv, 2, out.uv_sets.back());

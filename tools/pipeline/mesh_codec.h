@@ -2,9 +2,10 @@
 // under which semantic and id, how many bits each gets, and how a decoded stream becomes a mesh
 // again.
 //
-// Stream attribute ids (what HULLPACK_mesh_compression's `attributes` map points at, see
-// docs/packed-gltf.md): positions 0, normals next when present, then the float attributes
-// (UV sets, colours, weights, tangents) in that order, then the int attributes (joints).
+// Stream attribute ids (what HULLPACK_mesh_compression's `attributes` and `targets` maps point at,
+// see docs/packed-gltf.md): positions 0, normals next when present, then the float attributes
+// (UV sets, colours, weights, tangents, then per morph target its position and normal offsets) in
+// that order, then the int attributes (joints).
 #ifndef HULLPACK_TOOLS_PIPELINE_MESH_CODEC_H_
 #define HULLPACK_TOOLS_PIPELINE_MESH_CODEC_H_
 
@@ -38,6 +39,10 @@ struct MeshCodecSettings {
   int color_bits = 10;
   int weight_bits = 10;
   int tangent_bits = 10;
+  // The largest distance a decoded morph-target position offset may lie from the source's; 0: the
+  // half cell diagonal of a position grid of position_bits over the mesh's largest extent. Normal
+  // offsets get normal_bits.
+  double morph_error = 0;
   // Encoding progress (a fraction; false cancels: kCancelled); may be empty.
   o3dgc::ProgressFn progress;
 };
@@ -73,8 +78,12 @@ Result<EncodedMesh> EncodeMesh(const Mesh& mesh, const std::vector<uint32_t>& gr
 // the original Open3DGC tool (StreamFormat::kOpen3dgc2013) carry OBJ-convention texture
 // coordinates: their v is flipped into the scene model's (glTF) convention. Safe on untrusted
 // bytes; `name` prefixes error messages. `info` (may be null) gets the part sizes.
-Result<Mesh> DecodeMesh(const uint8_t* data, size_t size, std::vector<uint32_t>* groups,
-                        const std::string& name, o3dgc::StreamInfo* info = nullptr);
+// `targets` (may be null): which stream attributes hold each morph target's offsets
+// (EncodedMesh::gltf_targets); a stream alone does not say.
+Result<Mesh> DecodeMesh(
+    const uint8_t* data, size_t size, std::vector<uint32_t>* groups, const std::string& name,
+    o3dgc::StreamInfo* info = nullptr,
+    const std::vector<std::vector<std::pair<std::string, int>>>* targets = nullptr);
 
 // The triangles whose group is `group`, with the vertices they use renumbered in increasing order
 // of their index in `mesh` (the HULLPACK_mesh_compression `group` rule).

@@ -30,6 +30,7 @@ size_t PlainGeometryBytes(const Mesh& m) {
   if (!m.colors.empty()) per_vertex += 16;
   if (!m.weights.empty()) per_vertex += 16;
   if (!m.joints.empty()) per_vertex += 8;
+  for (const MorphTarget& t : m.morph_targets) per_vertex += 12 + (t.normals.empty() ? 0 : 12);
   const size_t index_size = m.vertex_count() < 65536 ? 2 : 4;
   return m.vertex_count() * per_vertex + m.indices.size() * index_size;
 }
@@ -59,9 +60,11 @@ double AvailableMemory() {
 // Candidate grids encoded at once for `mesh`: up to `threads`, as many as half the available
 // memory holds encoders for (at least one). Only the run's speed and peak depend on it.
 int CandidateThreads(const Mesh& mesh, int threads) {
-  const size_t attributes = (mesh.normals.empty() ? 0 : 1) + mesh.uv_sets.size() +
-                            (mesh.colors.empty() ? 0 : 1) + (mesh.weights.empty() ? 0 : 2) +
-                            (mesh.tangents.empty() ? 0 : 1);
+  const size_t attributes =
+      (mesh.normals.empty() ? 0 : 1) + mesh.uv_sets.size() + (mesh.colors.empty() ? 0 : 1) +
+      (mesh.weights.empty() ? 0 : 2) + (mesh.tangents.empty() ? 0 : 1) +
+      mesh.morph_targets.size() *
+          (mesh.morph_targets.empty() || mesh.morph_targets[0].normals.empty() ? 1 : 2);
   const double per_encoder =
       static_cast<double>(mesh.triangle_count()) *
       (kEncoderBytesPerTriangle + kEncoderBytesPerAttribute * static_cast<double>(attributes));
@@ -142,6 +145,7 @@ Status EncodeRenderMesh(const Mesh& mesh, const PackOptions& options, int thread
   s.progress = progress;
   Result<BudgetedEncoding> encoded = Status(StatusCode::kInternal, "");
   if (options.position_bits <= 0) {
+    s.morph_error = options.max_error * BoundingBoxDiagonal(mesh);
     encoded = EncodeWithinError(mesh, mesh.material_ids, s,
                                 options.max_error * BoundingBoxDiagonal(mesh), threads);
   } else {
@@ -152,8 +156,8 @@ Status EncodeRenderMesh(const Mesh& mesh, const PackOptions& options, int thread
     if (!stream.ok()) return stream.status();
     e.seconds_encode = Seconds(t);
     t = Clock::now();
-    Result<Mesh> decoded =
-        DecodeMesh(stream->stream.data(), stream->stream.size(), &e.groups, mesh.name);
+    Result<Mesh> decoded = DecodeMesh(stream->stream.data(), stream->stream.size(), &e.groups,
+                                      mesh.name, nullptr, &stream->gltf_targets);
     if (!decoded.ok())
       return Status(StatusCode::kInternal,
                     "mesh '" + mesh.name + "' does not decode: " + decoded.status().message());
@@ -180,6 +184,9 @@ Status EncodeRenderMesh(const Mesh& mesh, const PackOptions& options, int thread
   out.decoded = std::move(encoded->decoded);
   out.decoded.name = mesh.name;
   out.decoded.collides = mesh.collides;
+  out.decoded.morph_weights = mesh.morph_weights;
+  for (size_t t = 0; t < out.decoded.morph_targets.size() && t < mesh.morph_targets.size(); ++t)
+    out.decoded.morph_targets[t].name = mesh.morph_targets[t].name;
   out.grouped = !mesh.material_ids.empty();
   out.decoded.material_ids = out.grouped ? std::move(encoded->groups) : std::vector<uint32_t>();
   out.stream = std::move(encoded->encoded);

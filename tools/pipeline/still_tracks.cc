@@ -22,9 +22,17 @@ bool Holds(const AnimationSampler& s, size_t width) {
 }
 
 // The node's own value of `path`, the pose it has where no animation drives it.
-std::vector<double> RestValue(const Node& node, AnimationPath path) {
+std::vector<double> RestValue(const Scene& scene, const AnimationChannel& ch) {
+  const Node& node = scene.nodes[static_cast<size_t>(ch.node)];
   const Trs trs = node.trs ? *node.trs : Trs();
-  switch (path) {
+  switch (ch.path) {
+    case AnimationPath::kWeights: {
+      const Mesh& mesh = scene.meshes[static_cast<size_t>(node.meshes[0])];
+      std::vector<double> weights(mesh.morph_targets.size(), 0.0);
+      for (size_t t = 0; t < weights.size() && t < mesh.morph_weights.size(); ++t)
+        weights[t] = mesh.morph_weights[t];
+      return weights;
+    }
     case AnimationPath::kRotation:
       return {trs.rotation.begin(), trs.rotation.end()};
     case AnimationPath::kScale:
@@ -35,8 +43,9 @@ std::vector<double> RestValue(const Node& node, AnimationPath path) {
   return {trs.translation.begin(), trs.translation.end()};
 }
 
-bool AtRest(const AnimationSampler& s, const Node& node, AnimationPath path) {
-  const std::vector<double> rest = RestValue(node, path);
+bool AtRest(const AnimationSampler& s, const Scene& scene, const AnimationChannel& ch) {
+  const AnimationPath path = ch.path;
+  const std::vector<double> rest = RestValue(scene, ch);
   // q and -q are the same rotation.
   double dot = 0;
   for (size_t c = 0; c < rest.size(); ++c) dot += s.values[c] * rest[c];
@@ -57,10 +66,10 @@ StillTrackReport RemoveStillTracks(Scene& scene) {
     for (size_t c = 0; c < a.channels.size(); ++c) {
       const AnimationChannel& ch = a.channels[c];
       const AnimationSampler& s = a.samplers[static_cast<size_t>(ch.sampler)];
-      const size_t width = AnimationPathWidth(ch.path);
-      const bool holds = Holds(s, width);
+      const size_t width = ChannelWidth(scene, ch);
+      const bool holds = width > 0 && Holds(s, width);
       const bool last_chance = kept.empty() && c + 1 == a.channels.size();
-      if (holds && !last_chance && AtRest(s, scene.nodes[static_cast<size_t>(ch.node)], ch.path)) {
+      if (holds && !last_chance && AtRest(s, scene, ch)) {
         ++report.at_rest_removed;
         continue;
       }

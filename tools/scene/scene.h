@@ -72,6 +72,15 @@ struct Material {
   TextureRef emissive_texture;
 };
 
+// A morph target (blend shape): per-vertex offsets that a weight scales and adds to the mesh's
+// positions and normals (glTF's primitive `targets`). positions holds 3 per vertex; normals is
+// empty or 3 per vertex. Facial expressions and corrective shapes are morph targets.
+struct MorphTarget {
+  std::string name;  // glTF keeps it in mesh.extras.targetNames; may be empty
+  std::vector<float> positions;
+  std::vector<float> normals;
+};
+
 // An indexed triangle mesh. Every per-vertex array is either empty or holds exactly
 // vertex_count() entries of its width; material_ids is empty or one per triangle.
 struct Mesh {
@@ -85,7 +94,10 @@ struct Mesh {
   std::vector<uint16_t> joints;        // 4 per vertex (indices into the skin's joints), or empty
   std::vector<float> weights;          // 4 per vertex, or empty
   std::vector<uint32_t> material_ids;  // 1 per triangle (index into Scene::materials), or empty
-  bool collides = true;                // false when the source marks it as non-colliding
+  // Every target holds positions; either every target holds normals or none does.
+  std::vector<MorphTarget> morph_targets;
+  std::vector<float> morph_weights;  // the default weight of each target, or empty (all 0)
+  bool collides = true;              // false when the source marks it as non-colliding
 
   size_t vertex_count() const { return positions.size() / 3; }
   size_t triangle_count() const { return indices.size() / 3; }
@@ -145,16 +157,19 @@ struct Node {
   int light = -1;           // index into Scene::lights, or -1
 };
 
-enum class AnimationPath { kTranslation, kRotation, kScale };
+// kWeights drives the morph-target weights of the node's (first) mesh.
+enum class AnimationPath { kTranslation, kRotation, kScale, kWeights };
 enum class Interpolation { kLinear, kStep, kCubicSpline };
 
-// Values per key of a path: 3 for translation and scale, 4 for rotation (a quaternion).
+// Values per key of a node transform path: 3 for translation and scale, 4 for rotation (a
+// quaternion). kWeights has one per morph target of the driven mesh: see ChannelWidth.
 inline size_t AnimationPathWidth(AnimationPath path) {
   return path == AnimationPath::kRotation ? 4 : 3;
 }
 
-// Key frames of one animated property. values holds AnimationPathWidth values per key, or three
-// times as many with kCubicSpline (in-tangent, value, out-tangent per key, as glTF stores them).
+// Key frames of one animated property. values holds the channel's width of values per key, or
+// three times as many with kCubicSpline (in-tangent, value, out-tangent per key, as glTF stores
+// them).
 struct AnimationSampler {
   std::vector<float> times;  // seconds, ascending
   std::vector<float> values;
@@ -200,6 +215,18 @@ struct Scene {
     return n;
   }
 };
+
+// Values per key of channel `c`: AnimationPathWidth, or for kWeights the morph-target count of the
+// node's first mesh (0 when the node or mesh does not exist or has no targets).
+inline size_t ChannelWidth(const Scene& scene, const AnimationChannel& c) {
+  if (c.path != AnimationPath::kWeights) return AnimationPathWidth(c.path);
+  if (c.node < 0 || static_cast<size_t>(c.node) >= scene.nodes.size()) return 0;
+  const Node& n = scene.nodes[static_cast<size_t>(c.node)];
+  if (n.meshes.empty() || n.meshes[0] < 0 ||
+      static_cast<size_t>(n.meshes[0]) >= scene.meshes.size())
+    return 0;
+  return scene.meshes[static_cast<size_t>(n.meshes[0])].morph_targets.size();
+}
 
 // A scene with one root node that holds every mesh; what formats without a hierarchy produce.
 // `name` may be the file's path: only its last component is kept, so the folders of the machine

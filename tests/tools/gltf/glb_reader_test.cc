@@ -367,13 +367,12 @@ TEST(GlbReaderTest, CamerasAndLightsArePlacedByTheirNodes) {
 TEST(GlbReaderTest, ReportsWhatItDrops) {
   std::vector<uint8_t> bin;
   json j = InterleavedQuad(&bin);
-  // An animation of morph-target weights only: it goes with the morph targets.
+  // An animation of the morph-target weights of a mesh without morph targets.
   j["animations"] = json::array(
       {{{"samplers", {{{"input", 0}, {"output", 0}}}},
         {"channels", {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "weights"}}}}}}}});
   j["scenes"] = json::array({{{"nodes", {0}}}, json::object()});
   j["extensionsUsed"] = {"KHR_materials_variants", "KHR_texture_transform"};
-  j["meshes"][0]["primitives"][0]["targets"] = json::array({{{"POSITION", 0}}});
   j["meshes"][0]["primitives"][0]["attributes"]["COLOR_1"] = 0;
   j["meshes"][0]["primitives"][0]["attributes"]["_TEMPERATURE"] = 0;
   j["meshes"][0]["primitives"].push_back({{"attributes", {{"POSITION", 0}}}, {"mode", 1}});
@@ -384,7 +383,6 @@ TEST(GlbReaderTest, ReportsWhatItDrops) {
   EXPECT_TRUE(Contains(d, "1 animations left without a channel"));
   EXPECT_TRUE(Contains(d, "ignored extensions: KHR_materials_variants"));
   EXPECT_FALSE(Contains(d, "KHR_texture_transform"));  // baked into the UVs, not ignored
-  EXPECT_TRUE(Contains(d, "morph targets of 1 primitives"));
   EXPECT_TRUE(Contains(d, "1 point/line primitives"));
   EXPECT_TRUE(Contains(d, "COLOR_1"));
   EXPECT_TRUE(Contains(d, "_TEMPERATURE"));
@@ -392,17 +390,92 @@ TEST(GlbReaderTest, ReportsWhatItDrops) {
   EXPECT_EQ(s->meshes[0].triangle_count(), 5u);
 }
 
+// A quad whose three primitives share one morph target, given as a sparse accessor (offsets of
+// vertices 1 and 3 only), with a name, default weights and a node's own weights.
+json MorphQuad(std::vector<uint8_t>* bin, std::vector<uint8_t> sparse_indices = {1, 3}) {
+  json j = InterleavedQuad(bin);
+  const size_t at = bin->size();
+  sparse_indices.resize(4, 0);
+  bin->insert(bin->end(), sparse_indices.begin(), sparse_indices.end());
+  Put<float>(*bin, {0, 0, 1, 0, 0, 2});
+  j["buffers"][0]["byteLength"] = bin->size();
+  j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", at}, {"byteLength", 4}});
+  j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", at + 4}, {"byteLength", 24}});
+  j["accessors"].push_back(
+      {{"componentType", gltf::kFloat},
+       {"count", 4},
+       {"type", "VEC3"},
+       {"sparse",
+        {{"count", 2},
+         {"indices", {{"bufferView", 2}, {"componentType", gltf::kUnsignedByte}}},
+         {"values", {{"bufferView", 3}}}}}});
+  for (json& prim : j["meshes"][0]["primitives"]) prim["targets"] = {{{"POSITION", 5}}};
+  j["meshes"][0]["weights"] = {0.5};
+  j["meshes"][0]["extras"]["targetNames"] = {"lift"};
+  j["nodes"][0]["weights"] = {0.75};
+  return j;
+}
+
+TEST(GlbReaderTest, MorphTargetsSparseNamedAndWeighted) {
+  std::vector<uint8_t> bin;
+  Result<Scene> s = Decode(MorphQuad(&bin), bin);
+  ASSERT_TRUE(s.ok()) << s.status().ToString();
+  const Mesh& m = s->meshes[0];
+  ASSERT_EQ(m.morph_targets.size(), 1u);
+  EXPECT_EQ(m.morph_targets[0].name, "lift");
+  EXPECT_EQ(m.morph_weights, std::vector<float>({0.75f}));  // the node's weights win
+  EXPECT_TRUE(m.morph_targets[0].normals.empty());
+  // Two vertex blocks (the last primitive has no normals), each with its copy of the offsets.
+  ASSERT_EQ(m.vertex_count(), 8u);
+  ASSERT_EQ(m.morph_targets[0].positions.size(), 24u);
+  for (size_t v = 0; v < 8; ++v) {
+    const float dz = v % 4 == 1 ? 1.0f : v % 4 == 3 ? 2.0f : 0.0f;
+    EXPECT_EQ(m.morph_targets[0].positions[3 * v + 2], dz) << v;
+    EXPECT_EQ(m.morph_targets[0].positions[3 * v], 0.0f) << v;
+  }
+}
+
+TEST(GlbReaderTest, MalformedMorphTargetsAreErrors) {
+  std::vector<uint8_t> bin;
+  json j = MorphQuad(&bin);
+  j["meshes"][0]["primitives"][2].erase("targets");
+  Result<Scene> s = Decode(j, bin);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.status().message().find("has 0 morph targets"), std::string::npos);
+  bin.clear();
+  j = MorphQuad(&bin, {3, 1});
+  s = Decode(j, bin);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.status().message().find("not increasing"), std::string::npos);
+  bin.clear();
+  j = MorphQuad(&bin, {1, 4});
+  EXPECT_FALSE(Decode(j, bin).ok());  // beyond the accessor's count
+  bin.clear();
+  j = MorphQuad(&bin);
+  j["meshes"][0]["weights"] = {0.5, 0.5};
+  s = Decode(j, bin);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.status().message().find("one number per morph target"), std::string::npos);
+  bin.clear();
+  j = MorphQuad(&bin);
+  j["accessors"][5]["sparse"]["values"]["byteOffset"] = 8;  // runs past its bufferView
+  EXPECT_FALSE(Decode(j, bin).ok());
+}
+
 TEST(GlbReaderTest, UnsupportedInputsSayWhy) {
   std::vector<uint8_t> bin;
   const json base = InterleavedQuad(&bin);
   {
+    // Sparse float attributes are read; sparse indices are not.
     json j = base;
-    j["accessors"][0]["sparse"] = {{"count", 1}};
+    const int indices = j["meshes"][0]["primitives"][0]["indices"];
+    j["accessors"][indices]["sparse"] = {{"count", 1}};
     Result<Scene> s = Decode(j, bin);
     ASSERT_FALSE(s.ok());
     EXPECT_EQ(s.status().code(), StatusCode::kUnsupported);
     EXPECT_NE(s.status().message().find("sparse"), std::string::npos);
-    EXPECT_EQ(s.status().message().rfind("test.glb: accessors[0]", 0), 0u) << s.status().message();
+    EXPECT_EQ(s.status().message().rfind("test.glb: accessors[" + std::to_string(indices), 0), 0u)
+        << s.status().message();
   }
   {
     json j = base;

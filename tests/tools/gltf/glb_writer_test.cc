@@ -86,7 +86,15 @@ TEST(GlbWriterTest, RichSceneJsonLayout) {
     EXPECT_FALSE(a.contains("bufferView")) << uv;
     EXPECT_EQ(a["count"], 4) << uv;
   }
-  EXPECT_FALSE(j["meshes"][0].contains("extras"));
+  // Mesh 0's two morph targets: accessors shared by both primitives, names and default weights.
+  EXPECT_EQ(j["meshes"][0]["extras"], json({{"targetNames", {"bulge", ""}}}));
+  EXPECT_EQ(j["meshes"][0]["weights"], json({0.25, 0.0}));
+  const json& targets = j["meshes"][0]["primitives"][0]["targets"];
+  ASSERT_EQ(targets.size(), 2u);
+  EXPECT_EQ(j["meshes"][0]["primitives"][1]["targets"], targets);
+  const json& bulge = j["accessors"][targets[0]["POSITION"].get<int>()];
+  EXPECT_EQ(bulge["max"], json({0.0, 0.0, 0.5}));  // glTF wants bounds on target positions
+  EXPECT_TRUE(targets[1].contains("NORMAL"));
   EXPECT_EQ(j["skins"][0]["joints"], json({1, 2}));
   EXPECT_EQ(j["accessors"][j["skins"][0]["inverseBindMatrices"].get<int>()]["type"], "MAT4");
   // Every bufferView starts 4-aligned and fits the buffer.
@@ -147,7 +155,12 @@ TEST(GlbWriterTest, AnimationsDriveTrsNodesAndShareKeyTimes) {
   ASSERT_EQ(j["animations"].size(), 1u);
   const json& a = j["animations"][0];
   EXPECT_EQ(a["name"], "wave");
-  ASSERT_EQ(a["samplers"].size(), 3u);
+  ASSERT_EQ(a["samplers"].size(), 4u);
+  // Morph weights: one SCALAR per target and key, on a node whose transform keeps its form.
+  const json& weights = j["accessors"][a["samplers"][3]["output"].get<int>()];
+  EXPECT_EQ(weights["type"], "SCALAR");
+  EXPECT_EQ(weights["count"], 6);
+  EXPECT_EQ(a["channels"][3]["target"]["path"], "weights");
   EXPECT_EQ(a["samplers"][0]["input"], a["samplers"][1]["input"]);
   EXPECT_NE(a["samplers"][0]["input"], a["samplers"][2]["input"]);
   EXPECT_FALSE(a["samplers"][0].contains("interpolation"));
@@ -157,8 +170,8 @@ TEST(GlbWriterTest, AnimationsDriveTrsNodesAndShareKeyTimes) {
   EXPECT_EQ(times["min"], json({0.0}));
   EXPECT_EQ(times["max"], json({1.0}));
   EXPECT_EQ(j["accessors"][a["samplers"][2]["output"].get<int>()]["count"], 6);
-  ASSERT_EQ(a["channels"].size(), 4u);
-  EXPECT_EQ(a["channels"][3]["target"], json({{"node", 4}, {"path", "rotation"}}));
+  ASSERT_EQ(a["channels"].size(), 5u);
+  EXPECT_EQ(a["channels"][4]["target"], json({{"node", 4}, {"path", "rotation"}}));
   Result<Scene> back = DecodeGlb(glb->data(), glb->size(), "animated.glb");
   ASSERT_TRUE(back.ok()) << back.status().ToString();
   for (size_t k = 0; k < 16; ++k)

@@ -96,6 +96,18 @@ Scene MakeRichScene() {
     skinned.joints.insert(skinned.joints.end(), {0, static_cast<uint16_t>(w > 0.0f ? 1 : 0), 0, 0});
     skinned.weights.insert(skinned.weights.end(), {1.0f - w, w, 0.0f, 0.0f});
   }
+  // Two blend shapes: a bulge of the middle vertices (with normal offsets) and a shear.
+  MorphTarget bulge, shear;
+  bulge.name = "bulge";
+  for (size_t v = 0; v < vc; ++v) {
+    const bool middle = v % 5 == 2 || v % 5 == 3;
+    bulge.positions.insert(bulge.positions.end(), {0, 0, middle ? 0.5f : 0.0f});
+    bulge.normals.insert(bulge.normals.end(), {middle ? 0.25f : 0.0f, 0, 0});
+    shear.positions.insert(shear.positions.end(), {skinned.positions[3 * v + 1] * 0.125f, 0, 0});
+    shear.normals.insert(shear.normals.end(), {0, 0, 0});
+  }
+  skinned.morph_targets = {bulge, shear};
+  skinned.morph_weights = {0.25f, 0.0f};
   // Non-decreasing material ids: the first 10 triangles metal-free, the rest metal.
   for (size_t t = 0; t < skinned.triangle_count(); ++t)
     skinned.material_ids.push_back(t < 10 ? 0 : 1);
@@ -167,9 +179,14 @@ Scene MakeRichScene() {
   swell.values = {0,     0,     0,     1,    1,    1,    0.5f, 0.5f, 0.5f,
                   -0.5f, -0.5f, -0.5f, 1.5f, 1.5f, 1.5f, 0,    0,    0};
   wave.samplers.push_back(swell);
+  AnimationSampler blend;  // the skinned mesh's two morph weights per key
+  blend.times = {0.0f, 0.5f, 1.0f};
+  blend.values = {0, 0, 1, 0.5f, 0, 1};
+  wave.samplers.push_back(blend);
   wave.channels = {{0, 1, AnimationPath::kRotation},
                    {1, 2, AnimationPath::kTranslation},
-                   {2, 2, AnimationPath::kScale}};
+                   {2, 2, AnimationPath::kScale},
+                   {3, 3, AnimationPath::kWeights}};
   s.animations.push_back(wave);
 
   Camera lens;
@@ -231,6 +248,15 @@ void ExpectScenesEqual(const Scene& e, const Scene& a) {
     ExpectBitEqual(em.joints, am.joints, w + "joints");
     ExpectBitEqual(em.weights, am.weights, w + "weights");
     ExpectBitEqual(em.material_ids, am.material_ids, w + "material_ids");
+    ASSERT_EQ(em.morph_targets.size(), am.morph_targets.size()) << w;
+    for (size_t t = 0; t < em.morph_targets.size(); ++t) {
+      EXPECT_EQ(em.morph_targets[t].name, am.morph_targets[t].name) << w << "target " << t;
+      ExpectBitEqual(em.morph_targets[t].positions, am.morph_targets[t].positions,
+                     w + "target positions");
+      ExpectBitEqual(em.morph_targets[t].normals, am.morph_targets[t].normals,
+                     w + "target normals");
+    }
+    ExpectBitEqual(em.morph_weights, am.morph_weights, w + "morph weights");
   }
   ASSERT_EQ(e.materials.size(), a.materials.size());
   for (size_t i = 0; i < e.materials.size(); ++i) {

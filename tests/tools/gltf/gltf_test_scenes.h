@@ -17,10 +17,10 @@ const std::vector<uint8_t>& TinyPng();
 // sets and RGBA colours; 2*nx*ny triangles.
 Mesh MakeGrid(int nx, int ny, int uv_sets, float z);
 
-// Everything the writer supports at once: 3 meshes (skinned + two materials with non-decreasing
-// material ids, 2 UV sets, colours; a non-colliding mesh; a plain one), 2 materials with textures,
-// an embedded PNG and an external image, a skin with inverse bind matrices, and a node hierarchy
-// with transforms and a node holding two meshes.
+// Everything the writer supports at once: 3 meshes (skinned with two morph targets + two materials
+// with non-decreasing material ids, 2 UV sets, colours; a non-colliding mesh; a plain one), 2
+// materials with textures, an embedded PNG and an external image, a skin with inverse bind
+// matrices, and a node hierarchy with transforms and a node holding two meshes.
 Scene MakeRichScene();
 
 // One mesh with more than 65535 vertices.

@@ -84,6 +84,31 @@ TEST(RepairTest, WeldComparesEveryAttributeAndCompactsThemAll) {
   EXPECT_EQ(mesh.weights.size(), 4u * 5);
 }
 
+TEST(RepairTest, WeldComparesMorphTargetOffsetsAndCompactsThem) {
+  Mesh mesh;
+  // Vertex 3 duplicates 0 in everything; vertex 4 duplicates 1 but moves otherwise when morphed.
+  const int same[] = {0, 1, 2, 0, 1};
+  MorphTarget t;
+  for (int v = 0; v < 5; ++v) {
+    AddVertex(mesh, float(same[v]), float(same[v] * same[v]), 0);
+    t.positions.insert(t.positions.end(), {0, 0, v == 4 ? 2.0f : float(same[v])});
+    t.normals.insert(t.normals.end(), {0, 0, 0});
+  }
+  mesh.morph_targets = {t};
+  mesh.morph_weights = {0.5f};
+  AddTriangle(mesh, 0, 1, 2);
+  AddTriangle(mesh, 3, 2, 4);
+  ASSERT_TRUE(ValidateMesh(mesh).ok());
+  const RepairReport r = RepairMesh(mesh);
+  EXPECT_EQ(r.welded_vertices, 1u);
+  ASSERT_TRUE(ValidateMesh(mesh).ok());
+  ASSERT_EQ(mesh.vertex_count(), 4u);
+  EXPECT_EQ(mesh.indices, (std::vector<uint32_t>{0, 1, 2, 0, 2, 3}));
+  ASSERT_EQ(mesh.morph_targets[0].positions.size(), 12u);
+  EXPECT_EQ(mesh.morph_targets[0].positions[3 * 3 + 2], 2.0f);  // the former vertex 4
+  EXPECT_EQ(mesh.morph_targets[0].normals.size(), 12u);
+}
+
 TEST(RepairTest, WeldingCanMakeTrianglesDegenerate) {
   Mesh mesh = UnitCube();
   const uint32_t copy_of_0 = AddVertex(mesh, 0, 0, 0);

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <limits>
 #include <string>
 
@@ -94,6 +96,26 @@ TEST(ValidateTest, RejectsPositionCountNotMultipleOfThree) {
   Mesh mesh = UnitCube();
   mesh.positions.push_back(1);
   ExpectInvalid(ValidateMesh(mesh), {"positions", "25", "multiple of 3"});
+}
+
+TEST(ValidateTest, RejectsMalformedMorphTargets) {
+  Mesh base = CubeWithAllAttributes();
+  MorphTarget t;
+  t.positions.assign(24, 0.0f);
+  base.morph_targets = {t, t};
+  ASSERT_TRUE(ValidateMesh(base).ok());
+  Mesh short_target = base;
+  short_target.morph_targets[1].positions.resize(21);
+  ExpectInvalid(ValidateMesh(short_target), {"morph target 1 positions", "21 values"});
+  Mesh one_with_normals = base;
+  one_with_normals.morph_targets[1].normals.assign(24, 0.0f);
+  ExpectInvalid(ValidateMesh(one_with_normals), {"every target or none"});
+  Mesh nan = base;
+  nan.morph_targets[0].positions[5] = std::nanf("");
+  ExpectInvalid(ValidateMesh(nan), {"morph target 0 positions"});
+  Mesh weights = base;
+  weights.morph_weights = {1};
+  ExpectInvalid(ValidateMesh(weights), {"morph weights", "1 for 2 targets"});
 }
 
 TEST(ValidateTest, RejectsAttributeSizeMismatch) {

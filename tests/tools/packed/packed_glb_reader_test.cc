@@ -7,6 +7,8 @@
 
 #include <dirent.h>
 
+#include <algorithm>
+
 #include <fstream>
 #include <functional>
 #include <iterator>
@@ -121,6 +123,48 @@ TEST(PackedGlbReader, StreamViewAndExtensionMembersOfTheWrongTypeAreParseErrors)
                 }
               }),
       "compactVertices = \"true\"");
+}
+
+TEST(PackedGlbReader, MorphTargetsComeFromTheStreamAndHostileMapsAreParseErrors) {
+  Mesh torus = testing::TorusMesh(12, 8);
+  MorphTarget swell;
+  swell.name = "swell";
+  for (float p : torus.positions) swell.positions.push_back(0.5f * p);
+  torus.morph_targets = {swell};
+  const std::vector<uint8_t> glb = testing::PackWithoutHulls(torus);
+  Result<Scene> scene = ReadPackedGltf(glb.data(), glb.size(), "morph.glb", "", nullptr);
+  ASSERT_TRUE(scene.ok()) << scene.status().ToString();
+  ASSERT_EQ(scene->meshes[0].morph_targets.size(), 1u);
+  EXPECT_EQ(scene->meshes[0].morph_targets[0].name, "swell");
+  float largest = 0, source_largest = 0;
+  for (float d : scene->meshes[0].morph_targets[0].positions) largest = std::max(largest, d);
+  for (float d : swell.positions) source_largest = std::max(source_largest, d);
+  EXPECT_GT(source_largest, 0.5f);
+  EXPECT_NEAR(largest, source_largest, 0.01f);
+
+  auto edit_targets =
+      [&](const std::function<void(nlohmann::json & ext, nlohmann::json & prim)>& f) {
+        return Rewrite(glb, [&](nlohmann::json& json) {
+          nlohmann::json& prim = json["meshes"][0]["primitives"][0];
+          f(prim["extensions"][kMeshCompressionExtension], prim);
+        });
+      };
+  ExpectParseErrorNamingFile(edit_targets([](nlohmann::json& ext, nlohmann::json&) {
+                               ext["targets"][0]["POSITION"] = 99;
+                             }),
+                             "a target naming a stream attribute the stream lacks");
+  ExpectParseErrorNamingFile(edit_targets([](nlohmann::json& ext, nlohmann::json&) {
+                               ext["targets"].push_back(ext["targets"][0]);
+                             }),
+                             "more extension targets than the primitive has");
+  ExpectParseErrorNamingFile(
+      edit_targets([](nlohmann::json& ext, nlohmann::json&) { ext["targets"] = "all"; }),
+      "targets that are not an array");
+  ExpectParseErrorNamingFile(edit_targets([](nlohmann::json& ext, nlohmann::json& prim) {
+                               prim["targets"][0]["POSITION"] = 999;
+                               (void)ext;
+                             }),
+                             "a target accessor that does not exist");
 }
 
 // Every file the fuzzers once crashed on must now give a Status (or a scene), in this build too.

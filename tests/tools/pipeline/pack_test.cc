@@ -13,6 +13,7 @@
 #include "gltf/glb_reader.h"
 #include "mesh/topology.h"
 #include "packed/packed_glb_reader.h"
+#include "pipeline/mesh_codec.h"
 
 namespace hullpack {
 namespace {
@@ -228,6 +229,67 @@ TEST(Pack, AnimationsAndMaterialLooksSurvivePacking) {
   // The wheel's colliders are children of its node, so they turn with it.
   EXPECT_GT(packed->report.meshes[0].hull_count, 1u);
   EXPECT_FALSE(doc.json()["nodes"][1]["children"].empty());
+}
+
+TEST(Pack, MorphTargetsAndTheirClipsSurvivePackingWithinTheBudget) {
+  Scene in = TestScene();
+  Mesh& wheel = in.meshes[0];
+  MorphTarget puff, twist;
+  puff.name = "puff";
+  for (size_t v = 0; v < wheel.vertex_count(); ++v) {
+    const float* p = &wheel.positions[3 * v];
+    puff.positions.insert(puff.positions.end(), {0.1f * p[0], 0.1f * p[1], 0.1f * p[2]});
+    puff.normals.insert(puff.normals.end(), {0, 0, v % 3 == 0 ? 0.2f : 0.0f});
+    twist.positions.insert(twist.positions.end(), {0.3f * p[2], 0, 0});
+    twist.normals.insert(twist.normals.end(), {0, 0, 0});
+  }
+  wheel.morph_targets = {puff, twist};
+  wheel.morph_weights = {0.5f, 0.0f};
+  in.nodes[1].trs = Trs();
+  Animation breathe;
+  breathe.name = "breathe";
+  AnimationSampler weights;
+  weights.times = {0, 1, 2};
+  weights.values = {0, 0, 1, 0.25f, 0, 1};
+  breathe.samplers = {weights};
+  breathe.channels = {{0, 1, AnimationPath::kWeights}};
+  in.animations.push_back(breathe);
+  PackOptions options = FastOptions();
+  options.collision.policy = HullPolicy::kNone;
+  Result<PackResult> packed = PackScene(in, options);
+  ASSERT_TRUE(packed.ok()) << packed.status().ToString();
+  Result<Scene> out = ReadPackedGltf(packed->glb.data(), packed->glb.size(), "p.glb", "", nullptr);
+  ASSERT_TRUE(out.ok()) << out.status().ToString();
+  const Mesh& m = out->meshes[0];
+  ASSERT_EQ(m.morph_targets.size(), 2u);
+  EXPECT_EQ(m.morph_targets[0].name, "puff");
+  EXPECT_EQ(m.morph_weights, wheel.morph_weights);
+  ASSERT_EQ(m.morph_targets[1].normals.size(), 3 * m.vertex_count());
+  // Each decoded vertex's offsets lie within the position budget of its source vertex's.
+  const double budget = options.max_error * BoundingBoxDiagonal(wheel);
+  double worst = 0, worst_normal = 0;
+  for (size_t v = 0; v < m.vertex_count(); ++v) {
+    const size_t src = Nearest(wheel, &m.positions[3 * v]);
+    for (size_t t = 0; t < 2; ++t) {
+      double d = 0, n = 0;
+      for (size_t k = 0; k < 3; ++k) {
+        d += std::pow(
+            m.morph_targets[t].positions[3 * v + k] - wheel.morph_targets[t].positions[3 * src + k],
+            2);
+        n = std::max<double>(n, std::fabs(m.morph_targets[t].normals[3 * v + k] -
+                                          wheel.morph_targets[t].normals[3 * src + k]));
+      }
+      worst = std::max(worst, std::sqrt(d));
+      worst_normal = std::max(worst_normal, n);
+    }
+  }
+  EXPECT_GT(worst, 0.0);
+  EXPECT_LE(worst, budget * (1 + 1e-6));
+  EXPECT_LE(worst_normal, 0.2 / 1023 * 0.5 + 1e-6);  // half a step of 10 bits over 0.2
+  ASSERT_EQ(out->animations.size(), 1u);
+  ASSERT_EQ(out->animations[0].channels.size(), 1u);
+  EXPECT_EQ(out->animations[0].channels[0].path, AnimationPath::kWeights);
+  EXPECT_EQ(out->animations[0].samplers[0].values, weights.values);
 }
 
 TEST(Pack, WithoutFallbackTheExtensionIsRequiredAndAccessorsHoldNoData) {

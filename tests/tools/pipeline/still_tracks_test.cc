@@ -75,6 +75,26 @@ TEST(StillTracks, AClipAtRestKeepsOneChannelAndCubicSplinesAreLeftAlone) {
   EXPECT_EQ(s.animations[1].samplers[0].values.size(), 18u);
 }
 
+TEST(StillTracks, MorphWeightsAtTheMeshDefaultsGoOthersStay) {
+  Scene s = TwoNodes();
+  Mesh m;
+  m.morph_targets.resize(2);
+  m.morph_weights = {0.5f, 0.0f};
+  s.meshes.push_back(m);
+  s.nodes[0].meshes = {0};
+  s.nodes[1].meshes = {0};
+  Animation a;
+  a.samplers.push_back(Keys({0, 1}, {0.5f, 0, 0.5f, 0}));  // node 0 at its mesh's defaults
+  a.samplers.push_back(Keys({0, 1}, {0, 0, 1, 0}));        // node 1 blends
+  a.channels = {{0, 0, AnimationPath::kWeights}, {1, 1, AnimationPath::kWeights}};
+  s.animations.push_back(a);
+  const StillTrackReport r = RemoveStillTracks(s);
+  EXPECT_EQ(r.at_rest_removed, 1u);
+  ASSERT_EQ(s.animations[0].channels.size(), 1u);
+  EXPECT_EQ(s.animations[0].channels[0].node, 1);
+  EXPECT_EQ(s.animations[0].samplers[0].values, (std::vector<float>{0, 0, 1, 0}));
+}
+
 TEST(StillTracks, LeaveOutUnusedReportsThem) {
   Scene s = TwoNodes();
   Animation a;
