@@ -40,7 +40,7 @@ class AssimpConverter {
     Note(ai_.mNumCameras, "cameras not kept");
     Note(ai_.mNumLights, "lights not kept");
     Note(point_line_meshes_, "point or line primitives not kept: meshes hold triangles only");
-    Note(morph_targets_, "morph targets not kept");
+    Note(morph_targets_, "morph targets not kept (vertex blending, or not one offset per vertex)");
     Note(extra_color_sets_, "extra vertex colour sets not kept (the first is)");
     Note(clipped_influences_,
          "vertices with more than 4 joint influences: the 4 largest kept, renormalized");
@@ -235,7 +235,7 @@ class AssimpConverter {
     }
     for (unsigned k = 1; k < AI_MAX_NUMBER_OF_COLOR_SETS; ++k)
       extra_color_sets_ += am.HasVertexColors(k);
-    morph_targets_ += am.mNumAnimMeshes;
+    ConvertMorphTargets(am, m);
     m.indices.reserve(static_cast<size_t>(am.mNumFaces) * 3);
     for (unsigned f = 0; f < am.mNumFaces; ++f) {
       const aiFace& face = am.mFaces[f];
@@ -249,6 +249,52 @@ class AssimpConverter {
     if (am.HasBones()) ConvertBones(am, m);
     mesh_index_[index] = static_cast<int>(scene_.meshes.size());
     scene_.meshes.push_back(std::move(m));
+  }
+
+  // assimp's anim meshes hold the target's positions and normals; the scene model (as glTF) holds
+  // their offsets from the mesh's. Relative and normalized morphing both come out as
+  // base + sum w * (target - base); vertex blending has no such form and is dropped.
+  void ConvertMorphTargets(const aiMesh& am, Mesh& m) {
+    std::vector<int>& index = target_index_[scene_.meshes.size()];
+    const size_t n = am.mNumVertices;
+    bool any_normals = false, any_weight = false;
+    for (unsigned k = 0; k < am.mNumAnimMeshes; ++k) {
+      const aiAnimMesh* a = am.mAnimMeshes[k];
+      if (!a || !a->mVertices || a->mNumVertices != n ||
+          am.mMethod == aiMorphingMethod_VERTEX_BLEND) {
+        ++morph_targets_;
+        index.push_back(-1);
+        continue;
+      }
+      MorphTarget t;
+      t.name = a->mName.C_Str();
+      t.positions.resize(n * 3);
+      for (size_t i = 0; i < n; ++i) {
+        const aiVector3D d = a->mVertices[i] - am.mVertices[i];
+        t.positions[i * 3] = d.x;
+        t.positions[i * 3 + 1] = d.y;
+        t.positions[i * 3 + 2] = d.z;
+      }
+      if (a->mNormals && am.mNormals) {
+        any_normals = true;
+        t.normals.resize(n * 3);
+        for (size_t i = 0; i < n; ++i) {
+          const aiVector3D d = a->mNormals[i] - am.mNormals[i];
+          t.normals[i * 3] = d.x;
+          t.normals[i * 3 + 1] = d.y;
+          t.normals[i * 3 + 2] = d.z;
+        }
+      }
+      index.push_back(static_cast<int>(m.morph_targets.size()));
+      m.morph_targets.push_back(std::move(t));
+      m.morph_weights.push_back(std::isfinite(a->mWeight) ? a->mWeight : 0.0f);
+      any_weight |= m.morph_weights.back() != 0;
+    }
+    // Every target or none has normal offsets: the others get zeros.
+    for (MorphTarget& t : m.morph_targets) {
+      if (any_normals && t.normals.empty()) t.normals.assign(n * 3, 0.0f);
+    }
+    if (!any_weight) m.morph_weights.clear();
   }
 
   bool HasNamedMaterial() const {
@@ -389,7 +435,14 @@ class AssimpConverter {
           label + ": channels of nodes with sheared transforms (TRS cannot hold them) not kept",
           sheared_nodes);
       Note(aa.mNumMeshChannels, label + ": mesh (vertex) animation channels not kept");
-      Note(aa.mNumMorphMeshChannels, label + ": morph animation channels not kept");
+      size_t lost_morph_channels = 0;
+      for (unsigned c = 0; c < aa.mNumMorphMeshChannels; ++c) {
+        if (!aa.mMorphMeshChannels[c] ||
+            !AddMorphChannel(anim, *aa.mMorphMeshChannels[c], ticks_per_second))
+          ++lost_morph_channels;
+      }
+      Note(lost_morph_channels,
+           label + ": morph animation channels of no node or mesh with morph targets not kept");
       if (anim.channels.empty()) {
         scene_.dropped.push_back(label + " has no node channel left: not kept");
         continue;
@@ -504,10 +557,65 @@ class AssimpConverter {
     anim.channels.push_back(channel);
   }
 
+  // The node a morph channel drives: the node of that name, else the first node whose first mesh
+  // has that name; -1 when neither's first mesh has morph targets.
+  int MorphChannelNode(const std::string& name) const {
+    auto has_targets = [&](int node) {
+      const Node& n = scene_.nodes[static_cast<size_t>(node)];
+      return !n.meshes.empty() &&
+             !scene_.meshes[static_cast<size_t>(n.meshes[0])].morph_targets.empty();
+    };
+    auto it = node_of_name_.find(name);
+    if (it != node_of_name_.end() && has_targets(it->second)) return it->second;
+    for (size_t i = 0; i < scene_.nodes.size(); ++i) {
+      const Node& n = scene_.nodes[i];
+      if (has_targets(static_cast<int>(i)) &&
+          scene_.meshes[static_cast<size_t>(n.meshes[0])].name == name)
+        return static_cast<int>(i);
+    }
+    return -1;
+  }
+
+  // A morph channel's keys (target indices and weights) as a weights track of all the mesh's
+  // targets, the ones a key does not name at 0.
+  bool AddMorphChannel(Animation& anim, const aiMeshMorphAnim& channel, double ticks_per_second) {
+    const int node = MorphChannelNode(channel.mName.C_Str());
+    if (node < 0 || channel.mNumKeys == 0 || !channel.mKeys) return false;
+    for (const AnimationChannel& c : anim.channels) {
+      if (c.node == node && c.path == AnimationPath::kWeights) return false;  // glTF: one per node
+    }
+    const int mesh = scene_.nodes[static_cast<size_t>(node)].meshes[0];
+    const std::vector<int>& index = target_index_[static_cast<size_t>(mesh)];
+    const size_t width = scene_.meshes[static_cast<size_t>(mesh)].morph_targets.size();
+    AnimationSampler sampler;
+    for (unsigned k = 0; k < channel.mNumKeys; ++k) {
+      const aiMeshMorphKey& key = channel.mKeys[k];
+      const float seconds = static_cast<float>(key.mTime / ticks_per_second);
+      if (!std::isfinite(seconds) || (!sampler.times.empty() && !(seconds > sampler.times.back())))
+        continue;
+      sampler.times.push_back(seconds);
+      sampler.values.resize(sampler.values.size() + width, 0.0f);
+      float* weights = &sampler.values[sampler.values.size() - width];
+      for (unsigned v = 0; key.mValues && key.mWeights && v < key.mNumValuesAndWeights; ++v) {
+        const unsigned target = key.mValues[v];
+        const float w = static_cast<float>(key.mWeights[v]);
+        if (target < index.size() && index[target] >= 0 && std::isfinite(w))
+          weights[index[target]] = w;
+      }
+    }
+    if (sampler.times.empty()) return false;
+    anim.channels.push_back(
+        {static_cast<int>(anim.samplers.size()), node, AnimationPath::kWeights});
+    anim.samplers.push_back(std::move(sampler));
+    return true;
+  }
+
   const aiScene& ai_;
   const std::string& name_;
   Scene scene_;
   std::vector<int> mesh_index_;
+  // Per scene mesh: its aiMesh's anim mesh index -> morph target index (-1: dropped).
+  std::map<size_t, std::vector<int>> target_index_;
   std::map<std::string, int> image_of_path_;
   std::unordered_map<std::string, int> node_of_name_;
   std::unordered_map<std::string, int> nodes_named_;  // how many nodes bear each name

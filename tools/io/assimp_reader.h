@@ -2,12 +2,14 @@
 // aiScene into the scene model, keeping node hierarchy and transforms, materials and their textures
 // (embedded bytes included, wrap modes as samplers; opacity below one or an opacity map as alpha
 // blending, glTF alpha modes where assimp's glTF importer gives them; unshaded as unlit), every UV
-// set, the first colour set, tangents, skins (up to 4 joints per vertex, renormalized) and node
-// animations (linear keys in seconds; each animated node's rest transform also as Node::trs; a clip
-// starting before 0 s shifted to 0). What cannot be kept (mesh and morph animations, channels of
-// unknown or sheared nodes, morph targets, cameras, lights, points and lines, extra colour sets,
-// influences past the fourth, opacity maps other than the base colour texture) is listed, with
-// every shift, in Scene::dropped.
+// set, the first colour set, tangents, skins (up to 4 joints per vertex, renormalized), morph
+// targets (anim meshes as offsets, with names and default weights) and node and morph animations
+// (linear keys in seconds; each animated node's rest transform also as Node::trs; a morph channel
+// drives the node of its name, else the node whose first mesh has it; a clip starting before 0 s
+// shifted to 0). What cannot be kept (mesh (vertex) animations, channels of unknown or sheared
+// nodes, vertex-blend morphing, cameras, lights, points and lines, extra colour sets, influences
+// past the fourth, opacity maps other than the base colour texture) is listed, with every shift,
+// in Scene::dropped.
 #ifndef HULLPACK_TOOLS_IO_ASSIMP_READER_H_
 #define HULLPACK_TOOLS_IO_ASSIMP_READER_H_
 

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <string>
 
+#include "gltf/glb_writer.h"
 #include "io/scene_io.h"
 #include "io_test_util.h"
 #include "scene/transform.h"
@@ -262,6 +263,80 @@ TEST(AssimpReader, ChannelsMapToNodesOrAreReportedDropped) {
   EXPECT_TRUE(MentionsAll(s, "'spin'", "morph animation"));
   EXPECT_TRUE(MentionsAll(s, "'lost' has no node channel left"));
   EXPECT_TRUE(MentionsAll(s, "'spin' started at -0.5 s: shifted to start at 0"));
+}
+
+// A triangle with two blend shapes (anim meshes hold target positions; one also normals, one a
+// default weight) and a clip whose morph channel names the mesh, not the node.
+TEST(AssimpReader, AnimMeshesBecomeMorphTargetsAndMorphChannelsWeightTracks) {
+  aiScene ai;
+  ai.mNumMeshes = 1;
+  ai.mMeshes = new aiMesh*[1];
+  aiMesh* mesh = ai.mMeshes[0] = new aiMesh;
+  mesh->mName = "face";
+  mesh->mPrimitiveTypes = aiPrimitiveType_TRIANGLE;
+  mesh->mNumVertices = 3;
+  mesh->mVertices = new aiVector3D[3]{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  mesh->mNormals = new aiVector3D[3]{{0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
+  mesh->mNumFaces = 1;
+  mesh->mFaces = new aiFace[1];
+  mesh->mFaces[0].mNumIndices = 3;
+  mesh->mFaces[0].mIndices = new unsigned[3]{0, 1, 2};
+  mesh->mMethod = aiMorphingMethod_MORPH_NORMALIZED;
+  mesh->mNumAnimMeshes = 2;
+  mesh->mAnimMeshes = new aiAnimMesh*[2];
+  aiAnimMesh* smile = mesh->mAnimMeshes[0] = new aiAnimMesh;
+  smile->mName = "smile";
+  smile->mNumVertices = 3;
+  smile->mVertices = new aiVector3D[3]{{0, 0, 0}, {1, 0.5f, 0}, {0, 1, 0}};
+  aiAnimMesh* blink = mesh->mAnimMeshes[1] = new aiAnimMesh;
+  blink->mName = "blink";
+  blink->mNumVertices = 3;
+  blink->mWeight = 0.25f;
+  blink->mVertices = new aiVector3D[3]{{0, 0, 2}, {1, 0, 0}, {0, 1, 0}};
+  blink->mNormals = new aiVector3D[3]{{0, 1, 0}, {0, 0, 1}, {0, 0, 1}};
+  ai.mRootNode = new aiNode("head");
+  ai.mRootNode->mNumMeshes = 1;
+  ai.mRootNode->mMeshes = new unsigned[1]{0};
+  ai.mNumAnimations = 1;
+  ai.mAnimations = new aiAnimation*[1];
+  aiAnimation* talk = ai.mAnimations[0] = new aiAnimation;
+  talk->mName = "talk";
+  talk->mTicksPerSecond = 10;
+  talk->mNumMorphMeshChannels = 2;
+  talk->mMorphMeshChannels = new aiMeshMorphAnim* [2] { new aiMeshMorphAnim, new aiMeshMorphAnim };
+  aiMeshMorphAnim* channel = talk->mMorphMeshChannels[0];
+  channel->mName = "face";
+  channel->mNumKeys = 2;
+  channel->mKeys = new aiMeshMorphKey[2];
+  channel->mKeys[0].mTime = 0;
+  channel->mKeys[0].mNumValuesAndWeights = 1;
+  channel->mKeys[0].mValues = new unsigned[1]{1};
+  channel->mKeys[0].mWeights = new double[1]{0.5};
+  channel->mKeys[1].mTime = 5;
+  channel->mKeys[1].mNumValuesAndWeights = 2;
+  channel->mKeys[1].mValues = new unsigned[2]{0, 1};
+  channel->mKeys[1].mWeights = new double[2]{1, 0};
+  talk->mMorphMeshChannels[1]->mName = "nobody";  // no node or mesh of that name: dropped
+
+  const Scene s = ConvertAssimpScene(ai, "by hand");
+  ASSERT_EQ(s.meshes.size(), 1u);
+  const Mesh& m = s.meshes[0];
+  ASSERT_EQ(m.morph_targets.size(), 2u);
+  EXPECT_EQ(m.morph_targets[0].name, "smile");
+  ExpectNear(m.morph_targets[0].positions, {0, 0, 0, 0, 0.5f, 0, 0, 0, 0});
+  ExpectNear(m.morph_targets[0].normals, std::vector<float>(9, 0.0f));  // zeros: blink has some
+  ExpectNear(m.morph_targets[1].positions, {0, 0, 2, 0, 0, 0, 0, 0, 0});
+  ExpectNear(m.morph_targets[1].normals, {0, 1, -1, 0, 0, 0, 0, 0, 0});
+  EXPECT_EQ(m.morph_weights, (std::vector<float>{0, 0.25f}));
+  ASSERT_EQ(s.animations.size(), 1u);
+  const Animation& a = s.animations[0];
+  ASSERT_EQ(a.channels.size(), 1u);
+  EXPECT_EQ(a.channels[0].path, AnimationPath::kWeights);
+  EXPECT_EQ(a.channels[0].node, 0);
+  ExpectNear(a.samplers[0].times, {0, 0.5f});
+  ExpectNear(a.samplers[0].values, {0, 0.5f, 1, 0});
+  EXPECT_TRUE(MentionsAll(s, "'talk': morph animation channels of no node or mesh"));
+  EXPECT_TRUE(ValidateSceneForGltf(s).ok()) << ValidateSceneForGltf(s).ToString();
 }
 
 // A triangle on FBX model `arm` with a pre-rotation (Maya's joint orient) of 90 degrees about x,
