@@ -15,6 +15,7 @@ import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
+import { glbBytes } from './glb_container.mjs';
 
 function args() {
   const a = {};
@@ -138,23 +139,12 @@ function main() {
       bufferViews,
       buffers: [{ byteLength: bin.length }],
     };
-    let jsonBuf = Buffer.from(JSON.stringify(doc));
-    jsonBuf = Buffer.concat([jsonBuf, Buffer.alloc(((jsonBuf.length + 3) & ~3) - jsonBuf.length, 0x20)]);
-    const header = Buffer.alloc(12);
-    header.writeUInt32LE(0x46546c67, 0);
-    header.writeUInt32LE(2, 4);
-    header.writeUInt32LE(12 + 8 + jsonBuf.length + 8 + bin.length, 8);
-    const chunkHeader = (len, type) => {
-      const b = Buffer.alloc(8);
-      b.writeUInt32LE(len, 0);
-      b.writeUInt32LE(type, 4);
-      return b;
-    };
     fs.mkdirSync(path.dirname(path.resolve(a.out)), { recursive: true });
-    fs.writeFileSync(a.out, Buffer.concat([header, chunkHeader(jsonBuf.length, 0x4e4f534a), jsonBuf, chunkHeader(bin.length, 0x004e4942), bin]));
+    const glb = glbBytes(doc, bin);
+    fs.writeFileSync(a.out, glb);
     fs.copyFileSync(render.path, a.out.replace(/\.glb$/, '') + '.s3d');
     fs.writeFileSync(`${a.out}.ref.json`, JSON.stringify({ render: r, hulls: hulls.ref.groups }, null, 1));
-    console.log(`make_glb: wrote ${a.out} (${12 + 16 + jsonBuf.length + bin.length} bytes; ${r.vertices} vertices, ${r.triangles} triangles, ${hulls.ref.groups.length} hulls)`);
+    console.log(`make_glb: wrote ${a.out} (${glb.length} bytes; ${r.vertices} vertices, ${r.triangles} triangles, ${hulls.ref.groups.length} hulls)`);
   } finally {
     fs.rmSync(work, { recursive: true, force: true });
   }

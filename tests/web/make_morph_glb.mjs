@@ -6,6 +6,7 @@
 //
 //   node tests/web/make_morph_glb.mjs --out WORK/morph.glb
 import fs from 'node:fs';
+import { glbBytes } from './glb_container.mjs';
 
 const a = {};
 for (let i = 2; i + 1 < process.argv.length; i += 2) a[process.argv[i].replace(/^--/, '')] = process.argv[i + 1];
@@ -103,17 +104,4 @@ const json = {
   bufferViews,
   accessors,
 };
-let text = Buffer.from(JSON.stringify(json));
-text = Buffer.concat([text, Buffer.alloc((4 - (text.length % 4)) % 4, 0x20)]);
-const bin = Buffer.concat(chunks);
-const header = Buffer.alloc(12);
-header.writeUInt32LE(0x46546c67, 0);
-header.writeUInt32LE(2, 4);
-header.writeUInt32LE(12 + 8 + text.length + 8 + bin.length, 8);
-const chunk = (type, data) => {
-  const h = Buffer.alloc(8);
-  h.writeUInt32LE(data.length, 0);
-  h.writeUInt32LE(type, 4);
-  return Buffer.concat([h, data]);
-};
-fs.writeFileSync(a.out, Buffer.concat([header, chunk(0x4e4f534a, text), chunk(0x004e4942, bin)]));
+fs.writeFileSync(a.out, glbBytes(json, Buffer.concat(chunks)));

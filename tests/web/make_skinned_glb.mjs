@@ -8,6 +8,7 @@
 //   node tests/web/make_skinned_glb.mjs --out WORK/skinned.glb
 import fs from 'node:fs';
 import path from 'node:path';
+import { glbBytes } from './glb_container.mjs';
 
 const a = {};
 for (let i = 2; i + 1 < process.argv.length; i += 2) a[process.argv[i].replace(/^--/, '')] = process.argv[i + 1];
@@ -149,18 +150,6 @@ const doc = {
   buffers: [{ byteLength: offset }],
 };
 const bin = Buffer.concat(parts);
-let json = Buffer.from(JSON.stringify(doc));
-json = Buffer.concat([json, Buffer.alloc(((json.length + 3) & ~3) - json.length, 0x20)]);
-const header = Buffer.alloc(12);
-header.writeUInt32LE(0x46546c67, 0);
-header.writeUInt32LE(2, 4);
-header.writeUInt32LE(12 + 8 + json.length + 8 + bin.length, 8);
-const chunk = (len, type) => {
-  const b = Buffer.alloc(8);
-  b.writeUInt32LE(len, 0);
-  b.writeUInt32LE(type, 4);
-  return b;
-};
 fs.mkdirSync(path.dirname(path.resolve(a.out)), { recursive: true });
-fs.writeFileSync(a.out, Buffer.concat([header, chunk(json.length, 0x4e4f534a), json, chunk(bin.length, 0x004e4942), bin]));
+fs.writeFileSync(a.out, glbBytes(doc, bin));
 console.log(`make_skinned_glb: wrote ${a.out} (${nv} vertices, ${(lower.length + upper.length) / 3} triangles, ${JOINTS} joints)`);

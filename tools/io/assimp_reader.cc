@@ -251,6 +251,18 @@ class AssimpConverter {
     scene_.meshes.push_back(std::move(m));
   }
 
+  // to - from, 3 floats per vector.
+  static std::vector<float> Offsets(const aiVector3D* to, const aiVector3D* from, size_t n) {
+    std::vector<float> out(n * 3);
+    for (size_t i = 0; i < n; ++i) {
+      const aiVector3D d = to[i] - from[i];
+      out[i * 3] = d.x;
+      out[i * 3 + 1] = d.y;
+      out[i * 3 + 2] = d.z;
+    }
+    return out;
+  }
+
   // assimp's anim meshes hold the target's positions and normals; the scene model (as glTF) holds
   // their offsets from the mesh's. Relative and normalized morphing both come out as
   // base + sum w * (target - base); vertex blending has no such form and is dropped.
@@ -268,22 +280,10 @@ class AssimpConverter {
       }
       MorphTarget t;
       t.name = a->mName.C_Str();
-      t.positions.resize(n * 3);
-      for (size_t i = 0; i < n; ++i) {
-        const aiVector3D d = a->mVertices[i] - am.mVertices[i];
-        t.positions[i * 3] = d.x;
-        t.positions[i * 3 + 1] = d.y;
-        t.positions[i * 3 + 2] = d.z;
-      }
+      t.positions = Offsets(a->mVertices, am.mVertices, n);
       if (a->mNormals && am.mNormals) {
         any_normals = true;
-        t.normals.resize(n * 3);
-        for (size_t i = 0; i < n; ++i) {
-          const aiVector3D d = a->mNormals[i] - am.mNormals[i];
-          t.normals[i * 3] = d.x;
-          t.normals[i * 3 + 1] = d.y;
-          t.normals[i * 3 + 2] = d.z;
-        }
+        t.normals = Offsets(a->mNormals, am.mNormals, n);
       }
       index.push_back(static_cast<int>(m.morph_targets.size()));
       m.morph_targets.push_back(std::move(t));
