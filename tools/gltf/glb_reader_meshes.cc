@@ -25,6 +25,11 @@ Status Decoder::DecodeMorphTargetNamesAndWeights(const json& j, const std::strin
   const size_t vc = out->vertex_count();
   bool any_normals = false;
   for (const MorphTarget& t : out->morph_targets) any_normals |= !t.normals.empty();
+  if (any_normals && out->normals.empty()) {  // offsets of normals the mesh does not have
+    Drop(mw + ": morph-target NORMAL offsets of a mesh without normals");
+    any_normals = false;
+    for (MorphTarget& t : out->morph_targets) t.normals.clear();
+  }
   for (MorphTarget& t : out->morph_targets) {
     PadTo(t.positions, vc, 3, 0.0f);
     if (any_normals) PadTo(t.normals, vc, 3, 0.0f);

@@ -542,6 +542,8 @@ Status ValidateSceneForGltf(const Scene& scene) {
                              " position offsets, expected " + std::to_string(3 * vc));
       if (target.normals.size() != (m.morph_targets[0].normals.empty() ? 0 : 3 * vc))
         return MeshError(mi, m, name + ": every target or none must have normal offsets");
+      if (!target.normals.empty() && m.normals.empty())
+        return MeshError(mi, m, name + " has normal offsets but the mesh has no normals");
       if (!AllFinite(target.positions) || !AllFinite(target.normals))
         return MeshError(mi, m, name + " holds NaN or infinity");
     }

@@ -79,6 +79,8 @@ Status ValidateMesh(const Mesh& mesh) {
                                 " values for " + std::to_string(n) + " vertices");
     if (s.ok() && target.normals.empty() != mesh.morph_targets[0].normals.empty())
       s = Status(StatusCode::kInvalidMesh, name + ": every target or none must have normals");
+    if (s.ok() && !target.normals.empty() && mesh.normals.empty())
+      s = Status(StatusCode::kInvalidMesh, name + " has normal offsets but the mesh no normals");
     if (s.ok()) s = CheckFinite(target.positions, {"dx", "dy", "dz"}, name + " positions");
     if (s.ok()) s = CheckFinite(target.normals, {"dx", "dy", "dz"}, name + " normals");
     if (!s.ok()) return fail(s);

@@ -460,6 +460,17 @@ TEST(GlbReaderTest, MalformedMorphTargetsAreErrors) {
   j = MorphQuad(&bin);
   j["accessors"][5]["sparse"]["values"]["byteOffset"] = 8;  // runs past its bufferView
   EXPECT_FALSE(Decode(j, bin).ok());
+  // NORMAL offsets where the primitives have no normals: dropped with a note (glTF wants a base).
+  bin.clear();
+  j = MorphQuad(&bin);
+  for (json& prim : j["meshes"][0]["primitives"]) {
+    prim["attributes"].erase("NORMAL");
+    prim["targets"][0]["NORMAL"] = 5;
+  }
+  s = Decode(j, bin);
+  ASSERT_TRUE(s.ok()) << s.status().ToString();
+  EXPECT_TRUE(s->meshes[0].morph_targets[0].normals.empty());
+  EXPECT_TRUE(Contains(s->dropped, "NORMAL offsets of a mesh without normals"));
 }
 
 TEST(GlbReaderTest, UnsupportedInputsSayWhy) {

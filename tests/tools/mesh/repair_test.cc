@@ -91,6 +91,7 @@ TEST(RepairTest, WeldComparesMorphTargetOffsetsAndCompactsThem) {
   MorphTarget t;
   for (int v = 0; v < 5; ++v) {
     AddVertex(mesh, float(same[v]), float(same[v] * same[v]), 0);
+    mesh.normals.insert(mesh.normals.end(), {0, 0, 1});
     t.positions.insert(t.positions.end(), {0, 0, v == 4 ? 2.0f : float(same[v])});
     t.normals.insert(t.normals.end(), {0, 0, 0});
   }
