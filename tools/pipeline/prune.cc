@@ -169,6 +169,7 @@ PruneReport LeaveOutUnused(Scene& scene, const PruneOptions& options) {
   PruneReport report;
   if (options.empty_meshes) RemoveEmptyMeshes(scene, report);
   if (options.unreferenced_meshes) RemoveUnreferencedMeshes(scene, report);
+  report.weight_tracks_removed = RemoveWeightTracksWithoutTargets(scene);
   for (size_t i = 0; i < scene.meshes.size(); ++i) {
     Mesh& mesh = scene.meshes[i];
     const size_t attributes_before = VertexAttributeCount(mesh);
@@ -196,6 +197,7 @@ PruneReport LeaveOutUnused(Scene& scene, const PruneOptions& options) {
   line(report.skin_data_removed, "joint/weight sets of meshes no skinned node shows");
   line(report.empty_meshes_removed, "meshes with no triangle left (every triangle degenerate)");
   line(report.meshes_removed, "meshes no node shows");
+  line(report.weight_tracks_removed, "morph weight tracks of meshes left out");
   line(report.materials_removed, "materials no triangle uses");
   line(report.images_removed, "images no material uses");
   line(report.animation_tracks_removed, "animation tracks that hold their node at rest");

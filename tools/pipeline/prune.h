@@ -38,6 +38,7 @@ struct PruneReport {
   size_t images_removed = 0;
   size_t animation_tracks_removed = 0;    // held their node at rest
   size_t animation_tracks_collapsed = 0;  // held another value: one key
+  size_t weight_tracks_removed = 0;       // morph weights of meshes left out
   RepairReport repairs;                   // the welds after removals, summed over meshes
   std::vector<std::string> lines;         // human-readable, one per kind of removal (not the welds)
 };

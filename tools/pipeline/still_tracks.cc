@@ -56,6 +56,21 @@ bool AtRest(const AnimationSampler& s, const Scene& scene, const AnimationChanne
   return true;
 }
 
+// Makes `kept` the animation's channels; samplers keep their order, those no channel uses go.
+void KeepChannels(Animation& a, std::vector<AnimationChannel> kept) {
+  std::vector<int> new_index(a.samplers.size(), -1);
+  for (const AnimationChannel& ch : kept) new_index[static_cast<size_t>(ch.sampler)] = 0;
+  std::vector<AnimationSampler> samplers;
+  for (size_t s = 0; s < a.samplers.size(); ++s) {
+    if (new_index[s] < 0) continue;
+    new_index[s] = static_cast<int>(samplers.size());
+    samplers.push_back(std::move(a.samplers[s]));
+  }
+  for (AnimationChannel& ch : kept) ch.sampler = new_index[static_cast<size_t>(ch.sampler)];
+  a.samplers = std::move(samplers);
+  a.channels = std::move(kept);
+}
+
 }  // namespace
 
 StillTrackReport RemoveStillTracks(Scene& scene) {
@@ -76,27 +91,38 @@ StillTrackReport RemoveStillTracks(Scene& scene) {
       if (holds && s.times.size() > 1) collapse[static_cast<size_t>(ch.sampler)] = true;
       kept.push_back(ch);
     }
-    // Samplers in their old order, those no kept channel uses left out.
-    std::vector<int> new_index(a.samplers.size(), -1);
-    for (const AnimationChannel& ch : kept) new_index[static_cast<size_t>(ch.sampler)] = 0;
-    std::vector<AnimationSampler> samplers;
     for (size_t s = 0; s < a.samplers.size(); ++s) {
-      if (new_index[s] < 0) continue;
-      new_index[s] = static_cast<int>(samplers.size());
-      AnimationSampler sampler = std::move(a.samplers[s]);
-      if (collapse[s]) {
-        const size_t width = sampler.values.size() / sampler.times.size();
-        sampler.times.resize(1);
-        sampler.values.resize(width);
-        ++report.held_collapsed;
-      }
-      samplers.push_back(std::move(sampler));
+      if (!collapse[s]) continue;
+      AnimationSampler& sampler = a.samplers[s];
+      const size_t width = sampler.values.size() / sampler.times.size();
+      sampler.times.resize(1);
+      sampler.values.resize(width);
+      ++report.held_collapsed;
     }
-    for (AnimationChannel& ch : kept) ch.sampler = new_index[static_cast<size_t>(ch.sampler)];
-    a.samplers = std::move(samplers);
-    a.channels = std::move(kept);
+    KeepChannels(a, std::move(kept));
   }
   return report;
+}
+
+size_t RemoveWeightTracksWithoutTargets(Scene& scene) {
+  size_t removed = 0;
+  for (Animation& a : scene.animations) {
+    std::vector<AnimationChannel> kept;
+    for (const AnimationChannel& ch : a.channels) {
+      if (ch.path == AnimationPath::kWeights) {
+        const AnimationSampler& s = a.samplers[static_cast<size_t>(ch.sampler)];
+        const size_t per_key = s.interpolation == Interpolation::kCubicSpline ? 3 : 1;
+        const size_t width = ChannelWidth(scene, ch);
+        if (width == 0 || s.values.size() != s.times.size() * per_key * width) {
+          ++removed;
+          continue;
+        }
+      }
+      kept.push_back(ch);
+    }
+    if (kept.size() != a.channels.size()) KeepChannels(a, std::move(kept));
+  }
+  return removed;
 }
 
 }  // namespace hullpack

@@ -20,6 +20,11 @@ struct StillTrackReport {
 // equal within a relative 1e-6 (the float precision exporters write them with).
 StillTrackReport RemoveStillTracks(Scene& scene);
 
+// Removes the morph-weight channels that no longer fit their node: its first mesh (left out, or
+// never with morph targets) has no targets, or another count than the keys hold. Returns how
+// many went. The writer refuses such channels, so the leave-out stage always runs this.
+size_t RemoveWeightTracksWithoutTargets(Scene& scene);
+
 }  // namespace hullpack
 
 #endif  // HULLPACK_TOOLS_PIPELINE_STILL_TRACKS_H_

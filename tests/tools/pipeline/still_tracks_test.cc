@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "pipeline/prune.h"
 
 namespace hullpack {
@@ -15,6 +17,12 @@ AnimationSampler Keys(std::vector<float> times, std::vector<float> values) {
 }
 
 // Two nodes: 0 at the origin without TRS, 1 with a translation and a half turn about z.
+// One triangle, positions only.
+void AddTriangleMesh(Mesh& m) {
+  m.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  m.indices = {0, 1, 2};
+}
+
 Scene TwoNodes() {
   Scene s;
   s.nodes.resize(2);
@@ -93,6 +101,33 @@ TEST(StillTracks, MorphWeightsAtTheMeshDefaultsGoOthersStay) {
   ASSERT_EQ(s.animations[0].channels.size(), 1u);
   EXPECT_EQ(s.animations[0].channels[0].node, 1);
   EXPECT_EQ(s.animations[0].samplers[0].values, (std::vector<float>{0, 0, 1, 0}));
+}
+
+TEST(StillTracks, WeightTracksWithoutTheirTargetsGoWhateverTheOptions) {
+  Scene s = TwoNodes();
+  Mesh m;
+  AddTriangleMesh(m);
+  m.morph_targets.resize(2, MorphTarget{"", std::vector<float>(9, 0.5f), {}});
+  s.meshes.push_back(m);
+  Mesh flat = m;  // the repairs removed every (degenerate) triangle: the mesh is left out
+  flat.indices.clear();
+  s.meshes.push_back(flat);
+  s.nodes[0].meshes = {0};
+  s.nodes[1].meshes = {1};
+  Animation a;
+  a.samplers.push_back(Keys({0, 1}, {0, 0, 1, 0}));
+  a.samplers.push_back(Keys({0, 1}, {0, 0, 1, 0}));
+  a.channels = {{0, 0, AnimationPath::kWeights}, {1, 1, AnimationPath::kWeights}};
+  s.animations.push_back(a);
+  PruneOptions options;
+  options.still_animation_tracks = false;
+  const PruneReport r = LeaveOutUnused(s, options);
+  EXPECT_EQ(r.weight_tracks_removed, 1u);
+  ASSERT_EQ(s.animations[0].channels.size(), 1u);
+  EXPECT_EQ(s.animations[0].channels[0].node, 0);
+  EXPECT_EQ(s.animations[0].samplers.size(), 1u);
+  EXPECT_NE(std::find(r.lines.begin(), r.lines.end(), "1 morph weight tracks of meshes left out"),
+            r.lines.end());
 }
 
 TEST(StillTracks, LeaveOutUnusedReportsThem) {
