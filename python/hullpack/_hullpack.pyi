@@ -101,6 +101,8 @@ def pack(
     keep_order: bool = False,
     fast_decode: bool = False,
     fallback: bool = False,
+    quantized_hulls: bool = False,
+    plain_animations: bool = False,
     hulls: Union[str, int] = "auto",
     physics: str = "omi",
     method: str = "vhacd",

@@ -139,11 +139,11 @@ void ApplyDecomposition(vhacd::Parameters* p, const std::string& quality,
 py::dict Pack(const std::string& input, const std::string& output, double max_error,
               double hull_error, std::optional<int> position_bits, int normal_bits, int uv_bits,
               bool ascii, bool keep_order, bool fast_decode, bool fallback, bool quantized_hulls,
-              py::handle hulls, const std::string& physics, const std::string& method,
-              const std::string& quality, std::optional<uint32_t> resolution,
-              std::optional<uint32_t> max_hulls, std::optional<uint32_t> max_vertices,
-              std::optional<double> concavity, std::optional<double> max_concavity, bool force,
-              py::object progress) {
+              bool plain_animations, py::handle hulls, const std::string& physics,
+              const std::string& method, const std::string& quality,
+              std::optional<uint32_t> resolution, std::optional<uint32_t> max_hulls,
+              std::optional<uint32_t> max_vertices, std::optional<double> concavity,
+              std::optional<double> max_concavity, bool force, py::object progress) {
   PackOptions o;
   if (!(max_error > 0 && max_error <= 0.5)) throw py::value_error("max_error must be in (0, 0.5]");
   if (!(hull_error > 0 && hull_error <= 0.5))
@@ -160,6 +160,7 @@ py::dict Pack(const std::string& input, const std::string& output, double max_er
   o.fast_decode = fast_decode;
   o.glb.fallback = fallback;
   o.glb.quantized_hulls = quantized_hulls;
+  o.glb.compress_animations = !plain_animations;
   // As `hullpack pack --hulls all|none|auto|N`: a count asks for exactly N hulls per mesh (with
   // the automatic choice of meshes).
   const uint32_t hull_count = ApplyHulls(hulls, &o.collision.policy);
@@ -365,8 +366,9 @@ position_bits : int, optional
     Explicit position bits (1 to 30) instead of max_error.
 normal_bits, uv_bits : int
     Bits for normals (10) and texture coordinates (12).
-ascii, keep_order, fast_decode, fallback, quantized_hulls : bool
-    As the command's --ascii, --keep-order, --fast-decode, --fallback, --quantized-hulls.
+ascii, keep_order, fast_decode, fallback, quantized_hulls, plain_animations : bool
+    As the command's --ascii, --keep-order, --fast-decode, --fallback, --quantized-hulls,
+    --plain-animations.
 hulls : str or int
     As --hulls: which meshes get hulls, "auto" (default), "all" or "none"; or a count N
     (1 to 100000, an int or its digits): exactly N hulls per mesh (on the meshes "auto"
@@ -411,12 +413,12 @@ OSError
         py::arg("hull_error") = 0.002, py::arg("position_bits") = py::none(),
         py::arg("normal_bits") = 10, py::arg("uv_bits") = 12, py::arg("ascii") = false,
         py::arg("keep_order") = false, py::arg("fast_decode") = false, py::arg("fallback") = false,
-        py::arg("quantized_hulls") = false, py::arg("hulls") = "auto", py::arg("physics") = "omi",
-        py::arg("method") = "vhacd", py::arg("quality") = "default",
-        py::arg("resolution") = py::none(), py::arg("max_hulls") = py::none(),
-        py::arg("max_vertices") = py::none(), py::arg("concavity") = py::none(),
-        py::arg("max_concavity") = py::none(), py::arg("force") = false,
-        py::arg("progress") = py::none());
+        py::arg("quantized_hulls") = false, py::arg("plain_animations") = false,
+        py::arg("hulls") = "auto", py::arg("physics") = "omi", py::arg("method") = "vhacd",
+        py::arg("quality") = "default", py::arg("resolution") = py::none(),
+        py::arg("max_hulls") = py::none(), py::arg("max_vertices") = py::none(),
+        py::arg("concavity") = py::none(), py::arg("max_concavity") = py::none(),
+        py::arg("force") = false, py::arg("progress") = py::none());
   m.def("unpack", &Unpack, R"(Decode a packed GLB back to plain glTF (.glb) or a mesh file.
 
 Parameters

@@ -6,6 +6,7 @@
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
+import { MeshoptDecoder } from 'three/addons/libs/meshopt_decoder.module.js';
 import { createDecoder, createWorkerDecoder, bounds } from '../../web/hullpack_decoder.js';
 import { HullpackMeshCompressionPlugin, setHullsVisible } from '../../web/hullpack_gltf_plugin.js';
 
@@ -89,6 +90,7 @@ async function load() {
     info.fileBytes = bytes.length;
     const loader = new GLTFLoader();
     loader.register((parser) => new HullpackMeshCompressionPlugin(parser, decoder));
+    loader.setMeshoptDecoder(MeshoptDecoder);  // animation key frames (EXT_meshopt_compression)
     const t1 = performance.now();
     const gltf = await loader.parseAsync(bytes.buffer, new URL(glbUrl, location.href).href);
     info.loadMs = performance.now() - t1;

@@ -246,6 +246,28 @@ class Files(unittest.TestCase):
         self.assertIn("KHR_mesh_quantization", required(quantized))
         self.assertLess(os.path.getsize(quantized), os.path.getsize(floats))
 
+    def test_pack_plain_animations(self):
+        # Key frames are stored with EXT_meshopt_compression unless plain_animations is set.
+        import json
+        import struct
+
+        def required(path):
+            with open(path, "rb") as f:
+                data = f.read()
+            length = struct.unpack("<I", data[12:16])[0]
+            return json.loads(data[20:20 + length]).get("extensionsRequired", [])
+
+        character = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
+                                 "samples", "assets", "kenney_character.glb")
+        compressed = os.path.join(self.dir.name, "c.glb")
+        plain = os.path.join(self.dir.name, "p.glb")
+        hullpack.pack(character, compressed, hulls="none")
+        hullpack.pack(character, plain, hulls="none", plain_animations=True)
+        self.assertIn("EXT_meshopt_compression", required(compressed))
+        self.assertNotIn("EXT_meshopt_compression", required(plain))
+        self.assertLess(os.path.getsize(compressed), os.path.getsize(plain))
+        self.assertEqual(hullpack.info(compressed)["animations"], 4)
+
     def test_pack_with_hacd(self):
         hacd = os.path.join(self.dir.name, "hacd.glb")
         vhacd = os.path.join(self.dir.name, "vhacd.glb")

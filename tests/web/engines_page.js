@@ -8,6 +8,7 @@
 // babylonEarlierHulls reads the hulls of a file of the earlier release (hull streams).
 import * as THREE from 'three';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
+import { MeshoptDecoder } from 'three/addons/libs/meshopt_decoder.module.js';
 import RAPIER from '@dimforge/rapier3d-compat';
 import HavokPhysics from '@babylonjs/havok';
 import { NullEngine } from '@babylonjs/core/Engines/nullEngine.js';
@@ -26,6 +27,7 @@ import { PhysicsMotionType } from '@babylonjs/core/Physics/v2/IPhysicsEnginePlug
 import '@babylonjs/core/Physics/joinedPhysicsEngineComponent.js';
 import '@babylonjs/loaders/glTF/index.js';
 import { LoadAssetContainerAsync } from '@babylonjs/core/Loading/sceneLoader.js';
+import { MeshoptCompression } from '@babylonjs/core/Meshes/Compression/meshoptCompression.js';
 import { createDecoder } from '/web/hullpack_decoder.js';
 import { HullpackMeshCompressionPlugin } from '/web/hullpack_gltf_plugin.js';
 import {
@@ -35,11 +37,23 @@ import {
 const STEPS = 4 * 240;
 const WASM = '/samples/web/dist/hullpack_decoder_wasm.wasm';
 
-async function threeRapier(glbUrl) {
-  const decoder = await createDecoder({ wasmUrl: WASM });
+// Packed files store animation key frames with EXT_meshopt_compression. three.js takes the decoder
+// it ships; Babylon loads a script that defines the global MeshoptDecoder (by default from its
+// CDN), here the same decoder already in place and an empty script, so nothing comes from the
+// network.
+globalThis.MeshoptDecoder = MeshoptDecoder;
+MeshoptCompression.Configuration.decoder.url = 'data:text/javascript,';
+
+function threeLoader(decoder) {
   const loader = new GLTFLoader();
   loader.register((parser) => new HullpackMeshCompressionPlugin(parser, decoder));
-  const gltf = await loader.loadAsync(glbUrl);
+  loader.setMeshoptDecoder(MeshoptDecoder);
+  return loader;
+}
+
+async function threeRapier(glbUrl) {
+  const decoder = await createDecoder({ wasmUrl: WASM });
+  const gltf = await threeLoader(decoder).loadAsync(glbUrl);
   let vertices = 0;
   gltf.scene.traverse((o) => { if (o.isMesh && !o.parent?.userData.hullpackHull) vertices += o.geometry.attributes.position.count; });
   const hulls = gltf.userData.hullpackHulls;
@@ -123,9 +137,7 @@ async function babylonEarlierHulls(glbUrl) {
 // playing in three.js a clip that rotates a node for 0.3 s turns that node.
 async function animatedClips(glbUrl) {
   const decoder = await createDecoder({ wasmUrl: WASM });
-  const loader = new GLTFLoader();
-  loader.register((parser) => new HullpackMeshCompressionPlugin(parser, decoder));
-  const gltf = await loader.loadAsync(glbUrl);
+  const gltf = await threeLoader(decoder).loadAsync(glbUrl);
   const isTurn = (t) => t.name.endsWith('.quaternion');
   const clip = gltf.animations.find((a) => a.tracks.some(isTurn));
   const track = clip.tracks.find(isTurn);
@@ -150,9 +162,7 @@ async function animatedClips(glbUrl) {
 // the first weight three.js shows after playing the clip for 1 s (its keys: 0 at 0 s, 1 at 1 s).
 async function morphTargets(glbUrl) {
   const decoder = await createDecoder({ wasmUrl: WASM });
-  const loader = new GLTFLoader();
-  loader.register((parser) => new HullpackMeshCompressionPlugin(parser, decoder));
-  const gltf = await loader.loadAsync(glbUrl);
+  const gltf = await threeLoader(decoder).loadAsync(glbUrl);
   let mesh = null;
   gltf.scene.traverse((o) => { if (o.isMesh && o.morphTargetInfluences && !mesh) mesh = o; });
   const largest = (array) => {

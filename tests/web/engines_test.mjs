@@ -96,7 +96,14 @@ try {
     `Babylon readCollisionHulls, earlier form (${earlier.points.length} hull streams): the C++ reader's points${earlierDiff ? `: ${earlierDiff}` : ''}`);
   check(/pass a decoder/.test(earlier.withoutDecoder),
     `Babylon readCollisionHulls, earlier form without a decoder: a clear error (${earlier.withoutDecoder})`);
-  // The animated character: its four clips reach both engines, and three.js plays them.
+  // The animated character: its four clips reach both engines, and three.js plays them. Its key
+  // frames are stored with EXT_meshopt_compression, which both engines decode.
+  const characterJson = (() => {
+    const glb = fs.readFileSync(path.join(work, 'character.glb'));
+    return JSON.parse(glb.subarray(20, 20 + glb.readUInt32LE(12)).toString('utf8'));
+  })();
+  check((characterJson.extensionsRequired || []).includes('EXT_meshopt_compression'),
+    `the packed character's key frames are compressed (extensionsRequired: ${characterJson.extensionsRequired})`);
   const clips = await page.evaluate((glb) => window.engineTests.animatedClips(glb), '/__work/character.glb');
   check(clips.threeClips.length === 4, `three.js sees the character's 4 clips (${clips.threeClips.join(', ')})`);
   check(clips.babylonClips.length === 4, `Babylon sees the character's 4 clips (${clips.babylonClips.join(', ')})`);

@@ -4,6 +4,7 @@
 #include <functional>
 
 #include "gltf/json_members.h"
+#include "gltf/meshopt_inflate.h"
 
 namespace hullpack {
 namespace {
@@ -23,6 +24,15 @@ void ForEachBufferViewRef(nlohmann::json& node, const std::function<void(nlohman
   }
 }
 
+// The extension object of a view compressed with EXT_meshopt_compression (its bytes in the binary
+// chunk are the extension's; the view itself lies on a fallback buffer), else null.
+const nlohmann::json* CompressedBytes(const nlohmann::json& view) {
+  if (!view.is_object() || !view.contains("extensions") || !view["extensions"].is_object())
+    return nullptr;
+  const auto ext = view["extensions"].find(kMeshoptExtension);
+  return ext != view["extensions"].end() ? &*ext : nullptr;
+}
+
 }  // namespace
 
 Status CompactBufferViews(GltfDocument& doc) {
@@ -32,16 +42,17 @@ Status CompactBufferViews(GltfDocument& doc) {
   const std::vector<uint8_t>& bin = doc.binary();
   std::vector<uint64_t> offsets(views.size()), lengths(views.size());
   for (size_t i = 0; i < views.size(); ++i) {
-    const nlohmann::json& v = views[i];
+    const nlohmann::json* bytes = CompressedBytes(views[i]);
+    if (bytes == nullptr) bytes = &views[i];
     uint64_t buffer = 1;
-    if (!v.is_object() || !gltf::GetUintMember(v, "buffer", 1, &buffer) || buffer != 0) {
+    if (!bytes->is_object() || !gltf::GetUintMember(*bytes, "buffer", 1, &buffer) || buffer != 0) {
       return Status(StatusCode::kUnsupported,
                     "bufferViews[" + std::to_string(i) + "] is not on the GLB binary chunk");
     }
     uint64_t& offset = offsets[i];
     uint64_t& length = lengths[i];
-    if (!gltf::GetUintMember(v, "byteOffset", 0, &offset) ||
-        !gltf::GetUintMember(v, "byteLength", 0, &length)) {
+    if (!gltf::GetUintMember(*bytes, "byteOffset", 0, &offset) ||
+        !gltf::GetUintMember(*bytes, "byteLength", 0, &length)) {
       return Status(StatusCode::kParseError,
                     "bufferViews[" + std::to_string(i) +
                         "] has a byteOffset or byteLength that is not a non-negative integer");
@@ -66,7 +77,11 @@ Status CompactBufferViews(GltfDocument& doc) {
     size_t alignment = 4;
     while (alignment < 16 && offset % (alignment * 2) == 0) alignment *= 2;
     packed.resize((packed.size() + alignment - 1) / alignment * alignment, 0);
-    v["byteOffset"] = packed.size();
+    if (CompressedBytes(v) != nullptr) {
+      v["extensions"][kMeshoptExtension]["byteOffset"] = packed.size();
+    } else {
+      v["byteOffset"] = packed.size();
+    }
     packed.insert(packed.end(), bin.begin() + static_cast<ptrdiff_t>(offset),
                   bin.begin() + static_cast<ptrdiff_t>(offset + length));
     new_index[i] = static_cast<int64_t>(kept.size());

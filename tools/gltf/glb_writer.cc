@@ -8,6 +8,7 @@
 #include <optional>
 #include <utility>
 
+#include "gltf/meshopt_deflate.h"
 #include "gltf/node_forest.h"
 #include "scene/transform.h"
 
@@ -198,9 +199,10 @@ void WriteTransform(const Node& n, bool animated, json* j) {
 // equal key times share one input accessor (its min/max, which glTF requires, included).
 class AnimationWriter {
  public:
-  AnimationWriter(const Scene& scene, const GlbWriteOptions& options) : scene_(scene) {
-    quantize_rotations_ = options.quantize_rotations;
-  }
+  AnimationWriter(const Scene& scene, const GlbWriteOptions& options)
+      : scene_(scene),
+        quantize_rotations_(options.quantize_rotations),
+        compress_(options.compress_animations) {}
 
   void Write(const std::vector<int>& gltf_node, GltfDocument* doc) {
     struct PendingSampler {
@@ -222,11 +224,12 @@ class AnimationWriter {
                                 s.interpolation});
       }
     }
-    const int views[3] = {AddView(blobs_[0], doc), AddView(blobs_[1], doc),
-                          AddView(blobs_[2], doc)};
+    int views[kKinds];
+    Compress();
+    for (int k = 0; k < kKinds; ++k) views[k] = AddView(static_cast<Kind>(k), doc);
     std::vector<int> accessor_index;
     for (Pending& p : pending_) {
-      p.desc.buffer_view = views[p.blob];
+      p.desc.buffer_view = views[p.kind];
       accessor_index.push_back(doc->AddAccessor(p.desc));
     }
     for (size_t ai = 0; ai < scene_.animations.size(); ++ai) {
@@ -254,22 +257,85 @@ class AnimationWriter {
   }
 
  private:
+  // The key-frame data goes to one bufferView per kind of element, so that each view has one
+  // element size (what EXT_meshopt_compression's codec needs) and an accessor is a run of elements.
+  enum Kind { kTimes, kScalars, kVec3, kVec4, kRotations, kKinds };
+  // Floats per element, as the scene holds them.
+  static constexpr size_t kFloatsPer[kKinds] = {1, 1, 3, 4, 4};
+  // Bytes per element in the file: rotations are normalized shorts.
+  static constexpr size_t kStride[kKinds] = {4, 4, 12, 16, 8};
+
   struct Pending {
-    int blob;  // 0 times, 1 float values, 2 normalized shorts
+    Kind kind;
     AccessorDesc desc;
   };
 
-  static int AddView(const std::vector<uint8_t>& blob, GltfDocument* doc) {
-    return blob.empty() ? -1 : doc->AddBufferView(blob, 4);
+  // The elements of `kind` as a plain file stores them.
+  std::vector<uint8_t> PlainBytes(Kind kind) const {
+    const std::vector<float>& v = values_[kind];
+    std::vector<uint8_t> bytes(v.size() / kFloatsPer[kind] * kStride[kind]);
+    if (kind != kRotations) {
+      std::memcpy(bytes.data(), v.data(), bytes.size());
+      return bytes;
+    }
+    std::vector<int16_t> q(v.size());
+    for (size_t k = 0; k < v.size(); k += 4) {
+      const double n = std::sqrt(double(v[k]) * v[k] + double(v[k + 1]) * v[k + 1] +
+                                 double(v[k + 2]) * v[k + 2] + double(v[k + 3]) * v[k + 3]);
+      for (size_t c = 0; c < 4; ++c) {
+        const double x = n > 0 ? v[k + c] / n : (c == 3 ? 1.0 : 0.0);
+        q[k + c] = static_cast<int16_t>(std::lround(std::clamp(x, -1.0, 1.0) * 32767.0));
+      }
+    }
+    std::memcpy(bytes.data(), q.data(), bytes.size());
+    return bytes;
   }
 
-  int Add(int blob, const void* data, size_t size, AccessorDesc desc) {
-    std::vector<uint8_t>& b = blobs_[blob];
-    b.resize((b.size() + 7) / 8 * 8);  // each accessor aligned to its element size
-    desc.byte_offset = b.size();
-    const uint8_t* p = static_cast<const uint8_t*>(data);
-    b.insert(b.end(), p, p + size);
-    pending_.push_back({blob, std::move(desc)});
+  // With compress_animations, the kinds whose elements are smaller compressed with meshoptimizer
+  // (key times exactly; rotations through the quaternion filter, other values the exponential one)
+  // get their encoded bytes in encoded_, when the file as a whole gets smaller.
+  void Compress() {
+    if (!compress_) return;
+    size_t saved = 0;
+    for (int k = 0; k < kKinds; ++k) {
+      const Kind kind = static_cast<Kind>(k);
+      const std::vector<float>& v = values_[kind];
+      if (v.empty()) continue;
+      const size_t count = v.size() / kFloatsPer[kind];
+      filter_[kind] = kind == kTimes       ? MeshoptFilter::kNone
+                      : kind == kRotations ? MeshoptFilter::kQuaternion
+                                           : MeshoptFilter::kExponential;
+      const std::vector<uint8_t> stored =
+          filter_[kind] == MeshoptFilter::kNone
+              ? PlainBytes(kind)
+              : ApplyMeshoptFilter(filter_[kind], v.data(), count, kStride[kind]);
+      encoded_[kind] = EncodeMeshoptAttributes(stored, kStride[kind]);
+      const size_t plain = count * kStride[kind];
+      if (encoded_[kind].size() + kMeshoptViewJsonBytes < plain) {
+        saved += plain - encoded_[kind].size() - kMeshoptViewJsonBytes;
+      } else {
+        encoded_[kind].clear();
+      }
+    }
+    if (saved <= kMeshoptFileJsonBytes) {
+      for (auto& e : encoded_) e.clear();
+    }
+  }
+
+  int AddView(Kind kind, GltfDocument* doc) const {
+    if (values_[kind].empty()) return -1;
+    if (!encoded_[kind].empty()) {
+      return AddMeshoptBufferView(*doc, encoded_[kind], values_[kind].size() / kFloatsPer[kind],
+                                  kStride[kind], filter_[kind]);
+    }
+    return doc->AddBufferView(PlainBytes(kind), 4);
+  }
+
+  int Add(Kind kind, const std::vector<float>& values, AccessorDesc desc) {
+    std::vector<float>& v = values_[kind];
+    desc.byte_offset = v.size() / kFloatsPer[kind] * kStride[kind];
+    v.insert(v.end(), values.begin(), values.end());
+    pending_.push_back({kind, std::move(desc)});
     return static_cast<int>(pending_.size() - 1);
   }
 
@@ -280,7 +346,7 @@ class AnimationWriter {
     desc.count = times.size();
     desc.min = {times.front()};
     desc.max = {times.back()};
-    const int index = Add(0, times.data(), times.size() * sizeof(float), desc);
+    const int index = Add(kTimes, times, desc);
     times_.emplace(times, index);
     return index;
   }
@@ -290,33 +356,26 @@ class AnimationWriter {
     if (path == AnimationPath::kWeights) {  // one SCALAR per target and key
       desc.count = s.values.size();
       desc.type = "SCALAR";
-      return Add(1, s.values.data(), s.values.size() * sizeof(float), desc);
+      return Add(kScalars, s.values, desc);
     }
     desc.count = s.values.size() / width;
     desc.type = width == 4 ? "VEC4" : "VEC3";
     // Cubic-spline tangents may exceed 1, which a normalized short cannot hold.
     if (path == AnimationPath::kRotation && quantize_rotations_ &&
         s.interpolation != Interpolation::kCubicSpline) {
-      std::vector<int16_t> q(s.values.size());
-      for (size_t k = 0; k < s.values.size(); k += 4) {
-        const double n = std::sqrt(
-            double(s.values[k]) * s.values[k] + double(s.values[k + 1]) * s.values[k + 1] +
-            double(s.values[k + 2]) * s.values[k + 2] + double(s.values[k + 3]) * s.values[k + 3]);
-        for (size_t c = 0; c < 4; ++c) {
-          const double v = n > 0 ? s.values[k + c] / n : (c == 3 ? 1.0 : 0.0);
-          q[k + c] = static_cast<int16_t>(std::lround(std::clamp(v, -1.0, 1.0) * 32767.0));
-        }
-      }
       desc.component_type = gltf::kShort;
       desc.normalized = true;
-      return Add(2, q.data(), q.size() * sizeof(int16_t), desc);
+      return Add(kRotations, s.values, desc);
     }
-    return Add(1, s.values.data(), s.values.size() * sizeof(float), desc);
+    return Add(width == 4 ? kVec4 : kVec3, s.values, desc);
   }
 
   const Scene& scene_;
-  bool quantize_rotations_ = false;
-  std::vector<uint8_t> blobs_[3];
+  const bool quantize_rotations_;
+  const bool compress_;
+  std::vector<float> values_[kKinds];
+  std::vector<uint8_t> encoded_[kKinds];  // compressed elements, or empty for plain ones
+  MeshoptFilter filter_[kKinds] = {};
   std::vector<Pending> pending_;
   std::map<std::vector<float>, int> times_;
 };

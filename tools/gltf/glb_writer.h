@@ -44,6 +44,11 @@ struct GlbWriteOptions {
   // Rotation key frames (LINEAR and STEP) as normalized shorts, as glTF allows for rotations: half
   // the bytes, within 1/32767 per quaternion component (about 0.004 degrees).
   bool quantize_rotations = false;
+  // Key frames stored with EXT_meshopt_compression (required then): times exactly, rotations
+  // through its quaternion filter (as precise as quantize_rotations), translations, scales and
+  // weights through its exponential filter (16-bit mantissas: within 2^-15 of each key's largest
+  // component). See meshopt_deflate.h.
+  bool compress_animations = false;
 };
 
 // Where BuildGltfDocument put each scene object.

@@ -296,6 +296,10 @@ void AddPackOptions(CliArgs& cli, PackOptions* options) {
   cli.Flag("--quantized-hulls", &o.glb.quantized_hulls,
            "hull points as bytes/shorts with KHR_mesh_quantization, which the file then\n"
            "requires (smaller; default: floats, no extension needed because of hulls)");
+  cli.Action("--plain-animations",
+             "animation key frames as plain accessors (default: EXT_meshopt_compression,\n"
+             "which the file then requires; fallback files are always plain)",
+             [&o]() { o.glb.compress_animations = false; });
   cli.Value("--hulls", "all|none|auto|N",
             "which meshes get collision hulls (auto); a number N: exactly N hulls per mesh",
             [&o](const std::string& v) {

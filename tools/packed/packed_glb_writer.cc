@@ -197,6 +197,7 @@ Result<std::vector<uint8_t>> WritePackedGlb(const Scene& decoded, const PackedSt
   Status built;
   GlbWriteOptions plain_options;
   plain_options.quantize_rotations = true;
+  plain_options.compress_animations = options.compress_animations && !options.fallback;
   if (render_meshes == decoded.meshes.size()) {
     built = BuildGltfDocument(decoded, plain_options, &doc, &layout);
   } else {

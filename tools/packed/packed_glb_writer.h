@@ -40,6 +40,9 @@ struct PackedGlbOptions {
   // FLOATs holding the same grid integers (no extension needed because of hulls): smaller, for
   // readers that have the extension (docs/packed-gltf.md). Ignored in fallback files.
   bool quantized_hulls = false;
+  // Animation key frames with EXT_meshopt_compression (GlbWriteOptions::compress_animations).
+  // Ignored in fallback files.
+  bool compress_animations = true;
   PhysicsForm physics = PhysicsForm::kOmi;
 };
 

@@ -1,13 +1,17 @@
 #include "gltf/glb_writer.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <functional>
+#include <map>
 #include <set>
 
 #include <gtest/gtest.h>
 
 #include "gltf/glb_reader.h"
 #include "gltf/gltf_document.h"
+#include "gltf/meshopt_inflate.h"
 #include "gltf_test_scenes.h"
 
 namespace hullpack {
@@ -189,13 +193,15 @@ TEST(GlbWriterTest, RotationsQuantizedToNormalizedShortsOnRequest) {
   const json& rotation = j["accessors"][j["animations"][0]["samplers"][0]["output"].get<int>()];
   EXPECT_EQ(rotation["componentType"], gltf::kShort);
   EXPECT_TRUE(rotation["normalized"].get<bool>());
-  // Key times, float values and shorts: three bufferViews for all of the clip's arrays.
+  // One bufferView per kind of element for all of the clip's arrays: times, scalars (the
+  // weights), VEC3 (translation and cubic-spline scale) and rotations.
   std::set<int> views;
   for (const json& s : j["animations"][0]["samplers"]) {
     views.insert(j["accessors"][s["input"].get<int>()]["bufferView"].get<int>());
     views.insert(j["accessors"][s["output"].get<int>()]["bufferView"].get<int>());
   }
-  EXPECT_EQ(views.size(), 3u);
+  EXPECT_EQ(views.size(), 4u);
+  for (const json& e : j["extensionsUsed"]) EXPECT_NE(e, "EXT_meshopt_compression");
   Result<Scene> back = DecodeGlb(glb->data(), glb->size(), "quantized.glb");
   ASSERT_TRUE(back.ok()) << back.status().ToString();
   const std::vector<float>& in = scene.animations[0].samplers[0].values;
@@ -203,6 +209,105 @@ TEST(GlbWriterTest, RotationsQuantizedToNormalizedShortsOnRequest) {
   ASSERT_EQ(in.size(), out.size());
   for (size_t k = 0; k < in.size(); ++k) EXPECT_NEAR(in[k], out[k], 0.5 / 32767) << k;
   EXPECT_NE(in, out);  // 0.6 and 0.8 are not multiples of 1/32767
+}
+
+// The rich scene's clip with 240 keys per track (a smooth turn, hop, swell and blend), so that
+// compressing it pays; key times that no filter could keep exactly (they must come back bit for
+// bit), and the cubic spline's tangents.
+Scene LongClipScene() {
+  Scene scene = testing_gltf::MakeRichScene();
+  Animation& a = scene.animations[0];
+  for (size_t si = 0; si < a.samplers.size(); ++si) {
+    AnimationSampler& s = a.samplers[si];
+    const size_t width = ChannelWidth(scene, a.channels[si]);
+    const size_t per_key = (s.interpolation == Interpolation::kCubicSpline ? 3 : 1) * width;
+    s.times.clear();
+    s.values.clear();
+    for (int k = 0; k < 240; ++k) {
+      s.times.push_back(float(k) / 30.0f + 0.013f * float(si));
+      const double x = 0.02 * k;
+      for (size_t v = 0; v < per_key; ++v) {
+        if (a.channels[si].path == AnimationPath::kRotation) {
+          const float q[4] = {float(0.3 * std::sin(x)), 0.0f, float(std::sin(x) * 0.9),
+                              float(std::cos(x))};
+          const double n = std::sqrt(q[0] * q[0] + q[2] * q[2] + q[3] * q[3]);
+          s.values.push_back(float(q[v % 4] / n));
+        } else {
+          s.values.push_back(float((1 + v) * std::sin(x + 0.1 * double(v)) + 2.0));
+        }
+      }
+    }
+  }
+  return scene;
+}
+
+TEST(GlbWriterTest, CompressedAnimationsDecodeWithinTheirFilters) {
+  GlbWriteOptions options;
+  options.quantize_rotations = true;
+  options.compress_animations = true;
+  {  // A clip of a few keys is smaller plain: nothing is compressed, nothing required.
+    Result<std::vector<uint8_t>> small = EncodeGlb(testing_gltf::MakeRichScene(), options);
+    ASSERT_TRUE(small.ok()) << small.status().ToString();
+    for (const json& e : Parse(small.value()).json()["extensionsUsed"])
+      EXPECT_NE(e, "EXT_meshopt_compression");
+  }
+  const Scene scene = LongClipScene();
+  Result<std::vector<uint8_t>> glb = EncodeGlb(scene, options);
+  ASSERT_TRUE(glb.ok()) << glb.status().ToString();
+  const GltfDocument doc = Parse(glb.value());
+  const json& j = doc.json();
+  EXPECT_EQ(j["extensionsRequired"], json({"EXT_meshopt_compression"}));
+  ASSERT_EQ(j["buffers"].size(), 2u);
+  EXPECT_TRUE(j["buffers"][1]["extensions"]["EXT_meshopt_compression"]["fallback"].get<bool>());
+  // Every view of the clip is compressed, each with the filter of its kind of element.
+  std::map<std::string, int> filters;
+  for (const json& s : j["animations"][0]["samplers"]) {
+    for (const char* end : {"input", "output"}) {
+      const json& view =
+          j["bufferViews"][j["accessors"][s[end].get<int>()]["bufferView"].get<int>()];
+      ASSERT_EQ(view["buffer"], 1);
+      const json& ext = view["extensions"]["EXT_meshopt_compression"];
+      EXPECT_EQ(ext["mode"], "ATTRIBUTES");
+      EXPECT_LT(ext["byteLength"].get<size_t>(), view["byteLength"].get<size_t>() + 64);
+      ++filters[ext.value("filter", std::string("NONE"))];
+    }
+  }
+  EXPECT_GT(filters["NONE"], 0);
+  EXPECT_GT(filters["QUATERNION"], 0);
+  EXPECT_GT(filters["EXPONENTIAL"], 0);
+  GltfDocument inflated = Parse(glb.value());
+  const Status s = InflateMeshoptBufferViews(inflated, "compressed.glb");
+  ASSERT_TRUE(s.ok()) << s.ToString();
+  Result<Scene> back = DecodeGltfDocument(inflated, "compressed.glb");
+  ASSERT_TRUE(back.ok()) << back.status().ToString();
+  ASSERT_EQ(back->animations.size(), 1u);
+  const Animation& in = scene.animations[0];
+  const Animation& out = back->animations[0];
+  ASSERT_EQ(in.samplers.size(), out.samplers.size());
+  for (size_t k = 0; k < in.samplers.size(); ++k) {
+    const AnimationSampler& a = in.samplers[k];
+    const AnimationSampler& b = out.samplers[k];
+    EXPECT_EQ(a.times, b.times) << k;
+    ASSERT_EQ(a.values.size(), b.values.size()) << k;
+    const size_t width = ChannelWidth(scene, in.channels[k]);
+    const size_t element = width == 0 || in.channels[k].path == AnimationPath::kWeights ? 1 : width;
+    for (size_t e = 0; e < a.values.size(); e += element) {
+      double largest = 0;
+      for (size_t c = 0; c < element; ++c)
+        largest = std::max(largest, std::fabs(double(a.values[e + c])));
+      // Quaternions within 1/32767 per component, up to their sign (the filter makes the
+      // largest component positive: the same rotation, and glTF interpolates along the shorter
+      // arc); the exponential filter within 2^-15 of the element's largest component.
+      const bool quaternion = in.channels[k].path == AnimationPath::kRotation &&
+                              a.interpolation != Interpolation::kCubicSpline;
+      double dot = 0;
+      for (size_t c = 0; c < element; ++c) dot += double(a.values[e + c]) * b.values[e + c];
+      const double sign = quaternion && dot < 0 ? -1 : 1;
+      const double bound = quaternion ? 1.0 / 32767 : largest * std::ldexp(1.0, -15);
+      for (size_t c = 0; c < element; ++c)
+        EXPECT_NEAR(a.values[e + c], sign * b.values[e + c], bound) << k << " " << e + c;
+    }
+  }
 }
 
 TEST(GlbWriterTest, RejectsInvalidAnimations) {
