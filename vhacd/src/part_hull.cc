@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "oriented_cuts.h"
 
@@ -23,6 +24,12 @@ TriangleIndex::TriangleIndex(const GridMesh& mesh, const int dims[3], int cell)
       range[a + 3] = std::clamp(static_cast<int>(std::floor(hi[a])) / cell, 0, dims_[a] - 1);
     }
   };
+  mesh_lo_ = Vec3::Constant(std::numeric_limits<double>::infinity());
+  mesh_hi_ = -mesh_lo_;
+  for (const Vec3& p : mesh.points) {
+    mesh_lo_ = mesh_lo_.cwiseMin(p);
+    mesh_hi_ = mesh_hi_.cwiseMax(p);
+  }
   start_.assign(ncell + 1, 0);
   int range[6];
   for (size_t t = 0; t < nt; ++t) {
@@ -132,7 +139,9 @@ HullMesh BuildPartHull(const Part& part, const TriangleIndex& index, const Solid
     return (q.array() >= lo.array()).all() && (q.array() <= hi.array()).all();
   };
   // Triangles inside the box contribute their vertices (each once), the others their clipped
-  // polygon.
+  // polygon. A part that holds the whole mesh (the root, on a large mesh the largest array of the
+  // decomposition) gets room for every vertex at once rather than by doubling.
+  if (part.cuts.empty() && index.HoldsMesh(lo, hi)) pts.reserve(pts.size() + mesh.points.size());
   std::vector<Vec3> poly;
   const size_t before_surface = pts.size();
   index.ForEachInBox(lo, hi, &stamp, mark, [&](uint32_t t) {

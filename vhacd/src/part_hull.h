@@ -28,6 +28,10 @@ class TriangleIndex {
                     Fn fn) const;
 
   const GridMesh& mesh() const { return mesh_; }
+  // Whether the box [lo, hi] holds every point of the mesh.
+  bool HoldsMesh(const Vec3& lo, const Vec3& hi) const {
+    return (lo.array() <= mesh_lo_.array()).all() && (hi.array() >= mesh_hi_.array()).all();
+  }
 
  private:
   const GridMesh& mesh_;
@@ -40,6 +44,7 @@ class TriangleIndex {
     *hi = mesh_.points[tr[0]].cwiseMax(mesh_.points[tr[1]]).cwiseMax(mesh_.points[tr[2]]);
   }
   std::vector<uint32_t> start_, ids_;
+  Vec3 mesh_lo_, mesh_hi_;  // the mesh's bounding box
 };
 
 // Appends the vertices of the polygon (triangle abc) intersected with the box [lo, hi].
