@@ -160,7 +160,10 @@ std::string SummaryToText(const Scene& scene, const SceneSummary& s) {
     o << " in the file (" << s.vertices << " after attribute unification)";
   o << "\n  materials " << scene.materials.size() << ", images " << scene.images.size()
     << ", skins " << scene.skins.size() << ", nodes " << scene.nodes.size() << ", animations "
-    << scene.animations.size() << "\n";
+    << scene.animations.size();
+  if (!scene.cameras.empty()) o << ", cameras " << scene.cameras.size();
+  if (!scene.lights.empty()) o << ", lights " << scene.lights.size();
+  o << "\n";
   o << "  attributes: "
     << Attributes(s.normals, s.max_uv_sets, s.colors, s.tangents, s.skin, s.max_morph_targets)
     << "\n";

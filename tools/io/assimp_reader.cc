@@ -15,6 +15,7 @@
 #include <map>
 #include <unordered_map>
 
+#include "io/assimp_cameras_lights.h"
 #include "scene/transform.h"
 
 namespace hullpack {
@@ -37,8 +38,9 @@ class AssimpConverter {
     if (ai_.mRootNode) ConvertNode(*ai_.mRootNode, -1);
     ConvertSkins();
     ConvertAnimations();
-    Note(ai_.mNumCameras, "cameras not kept");
-    Note(ai_.mNumLights, "lights not kept");
+    const CamerasAndLightsLost lost = ConvertCamerasAndLights(ai_, node_of_name_, &scene_);
+    Note(lost.cameras, "cameras of no node not kept");
+    Note(lost.lights, "lights of no node, ambient, area or undefined lights not kept");
     Note(point_line_meshes_, "point or line primitives not kept: meshes hold triangles only");
     Note(morph_targets_, "morph targets not kept (vertex blending, or not one offset per vertex)");
     Note(extra_color_sets_, "extra vertex colour sets not kept (the first is)");

@@ -6,10 +6,11 @@
 // targets (anim meshes as offsets, with names and default weights) and node and morph animations
 // (linear keys in seconds; each animated node's rest transform also as Node::trs; a morph channel
 // drives the node of its name, else the node whose first mesh has it; a clip starting before 0 s
-// shifted to 0). What cannot be kept (mesh (vertex) animations, channels of unknown or sheared
-// nodes, vertex-blend morphing, cameras, lights, points and lines, extra colour sets, influences
-// past the fourth, opacity maps other than the base colour texture) is listed, with every shift,
-// in Scene::dropped.
+// shifted to 0), cameras and point, spot and directional lights (assimp_cameras_lights.h). What
+// cannot be kept (mesh (vertex) animations, channels of unknown or sheared nodes, vertex-blend
+// morphing, ambient and area lights, points and lines, extra colour sets, influences past the
+// fourth, opacity maps other than the base colour texture) is listed, with every shift, in
+// Scene::dropped.
 #ifndef HULLPACK_TOOLS_IO_ASSIMP_READER_H_
 #define HULLPACK_TOOLS_IO_ASSIMP_READER_H_
 

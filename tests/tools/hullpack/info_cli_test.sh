@@ -69,5 +69,42 @@ check out-of-range 1 "refers to vertex 7" -- "$bin" info "$tmp/index.off"
 mkdir "$tmp/folder.obj"
 check dir 1 "$tmp/folder.obj: is a directory" -- "$bin" info "$tmp/folder.obj"
 
+# A COLLADA scene (read through assimp) with a camera and a spot light: both kept, the camera's
+# 49.13-degree horizontal view at 16:9 as glTF's vertical 0.5034 rad.
+cat >"$tmp/lit.dae" <<'DAE'
+<?xml version="1.0" encoding="utf-8"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+  <asset><unit name="meter" meter="1"/><up_axis>Y_UP</up_axis></asset>
+  <library_cameras><camera id="cam-camera" name="cam"><optics><technique_common><perspective>
+    <xfov>49.13434</xfov><aspect_ratio>1.777778</aspect_ratio><znear>0.1</znear><zfar>100</zfar>
+  </perspective></technique_common></optics></camera></library_cameras>
+  <library_lights><light id="spot-light" name="spot"><technique_common><spot>
+    <color>2 2 1</color><falloff_angle>60</falloff_angle>
+  </spot></technique_common></light></library_lights>
+  <library_geometries><geometry id="tri-mesh" name="tri"><mesh>
+    <source id="tri-pos"><float_array id="tri-pos-array" count="9">0 0 0 1 0 0 0 1 0</float_array>
+      <technique_common><accessor source="#tri-pos-array" count="3" stride="3">
+        <param name="X" type="float"/><param name="Y" type="float"/><param name="Z" type="float"/>
+      </accessor></technique_common></source>
+    <vertices id="tri-vtx"><input semantic="POSITION" source="#tri-pos"/></vertices>
+    <triangles count="1"><input semantic="VERTEX" source="#tri-vtx" offset="0"/><p>0 1 2</p></triangles>
+  </mesh></geometry></library_geometries>
+  <library_visual_scenes><visual_scene id="scene" name="scene">
+    <node id="tri" name="tri"><instance_geometry url="#tri-mesh"/></node>
+    <node id="cam" name="cam"><translate>0 0 5</translate><instance_camera url="#cam-camera"/></node>
+    <node id="spot" name="spot"><translate>0 3 0</translate><instance_light url="#spot-light"/></node>
+  </visual_scene></library_visual_scenes>
+  <scene><instance_visual_scene url="#scene"/></scene>
+</COLLADA>
+DAE
+check collada-camera-light 0 "cameras 1, lights 1" -- "$bin" info "$tmp/lit.dae"
+"$bin" pack "$tmp/lit.dae" -o "$tmp/lit.glb" --hulls none --quiet >/dev/null 2>&1
+if grep -a -q '"yfov":0.5033' "$tmp/lit.glb" && grep -a -q '"type":"spot"' "$tmp/lit.glb"; then
+  passes=$((passes + 1))
+else
+  echo "FAIL collada-camera-light: the packed file lacks the camera or the spot light"
+  failures=$((failures + 1))
+fi
+
 echo "$passes passed, $failures failed"
 [ "$failures" -eq 0 ]
