@@ -119,8 +119,23 @@ Status Decoder::DecodeNodes(Scene* scene) {
     for (int jn : s.joints) referenced[static_cast<size_t>(jn)] = true;
     if (s.skeleton >= 0) referenced[static_cast<size_t>(s.skeleton)] = true;
   }
+  // A weights channel of an extra-mesh child that repeats its parent's (same clip, same sampler:
+  // what the writer adds so that every mesh of the node morphs) goes with the child.
+  auto mirrors_parent = [&](const Animation& a, const AnimationChannel& c) {
+    const Node& node = scene->nodes[static_cast<size_t>(c.node)];
+    if (c.path != AnimationPath::kWeights || !mesh_of_parent[static_cast<size_t>(c.node)] ||
+        node.parent < 0)
+      return false;
+    for (const AnimationChannel& p : a.channels) {
+      if (p.node == node.parent && p.path == AnimationPath::kWeights && p.sampler == c.sampler)
+        return true;
+    }
+    return false;
+  };
   for (const Animation& a : scene->animations) {
-    for (const AnimationChannel& c : a.channels) referenced[static_cast<size_t>(c.node)] = true;
+    for (const AnimationChannel& c : a.channels) {
+      if (!mirrors_parent(a, c)) referenced[static_cast<size_t>(c.node)] = true;
+    }
   }
   std::vector<int> remap(n, -1);
   std::vector<bool> remove(n, false);
@@ -157,7 +172,13 @@ Status Decoder::DecodeNodes(Scene* scene) {
     if (s.skeleton >= 0) s.skeleton = remap[static_cast<size_t>(s.skeleton)];
   }
   for (Animation& a : scene->animations) {
-    for (AnimationChannel& c : a.channels) c.node = remap[static_cast<size_t>(c.node)];
+    std::vector<AnimationChannel> channels;
+    for (AnimationChannel& c : a.channels) {
+      if (remap[static_cast<size_t>(c.node)] < 0) continue;  // a folded child's mirror
+      c.node = remap[static_cast<size_t>(c.node)];
+      channels.push_back(c);
+    }
+    a.channels = std::move(channels);
   }
   scene->nodes = std::move(kept);
   return Status::Ok();

@@ -204,7 +204,13 @@ class AnimationWriter {
         quantize_rotations_(options.quantize_rotations),
         compress_(options.compress_animations) {}
 
-  void Write(const std::vector<int>& gltf_node, GltfDocument* doc) {
+  // `gltf_node`: the glTF node of each scene node. `extra_mesh_nodes`: per scene node, the glTF
+  // nodes of its meshes after the first (with the scene mesh each shows): a weights channel
+  // drives each of them whose mesh has as many targets as the node's first, as it does in the
+  // scene.
+  void Write(const std::vector<int>& gltf_node,
+             const std::vector<std::vector<std::pair<int, int>>>& extra_mesh_nodes,
+             GltfDocument* doc) {
     struct PendingSampler {
       int input, output;
       Interpolation interpolation;
@@ -245,10 +251,18 @@ class AnimationWriter {
       }
       json channels = json::array();
       for (const AnimationChannel& c : a.channels) {
+        const int sampler = sampler_index[ai][static_cast<size_t>(c.sampler)];
         channels.push_back(
-            {{"sampler", sampler_index[ai][static_cast<size_t>(c.sampler)]},
+            {{"sampler", sampler},
              {"target",
               {{"node", gltf_node[static_cast<size_t>(c.node)]}, {"path", PathName(c.path)}}}});
+        if (c.path != AnimationPath::kWeights) continue;
+        const size_t width = ChannelWidth(scene_, c);
+        for (const auto& [node, mesh] : extra_mesh_nodes[static_cast<size_t>(c.node)]) {
+          if (scene_.meshes[static_cast<size_t>(mesh)].morph_targets.size() != width) continue;
+          channels.push_back(
+              {{"sampler", sampler}, {"target", {{"node", node}, {"path", PathName(c.path)}}}});
+        }
       }
       json j = {{"samplers", std::move(sampler_json)}, {"channels", std::move(channels)}};
       if (!a.name.empty()) j["name"] = a.name;
@@ -979,6 +993,7 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
   }
   json node_array = json::array();
   json extra_nodes = json::array();
+  std::vector<std::vector<std::pair<int, int>>> extra_mesh_nodes(nodes.size());
   std::vector<int> roots;
   for (size_t i = 0; i < nodes.size(); ++i) {
     const Node& n = nodes[i];
@@ -997,6 +1012,7 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
         extra_nodes.push_back(std::move(extra));
         children.push_back(index);
         out.mesh_nodes[static_cast<size_t>(n.meshes[k])].push_back(index);
+        extra_mesh_nodes[i].push_back({index, n.meshes[k]});
       }
     }
     if (!children.empty()) j["children"] = children;
@@ -1014,7 +1030,7 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
   if (!roots.empty()) scene_json["nodes"] = roots;
   root["scenes"] = json::array({std::move(scene_json)});
   root["scene"] = 0;
-  AnimationWriter(scene, options).Write(out.nodes, doc);
+  AnimationWriter(scene, options).Write(out.nodes, extra_mesh_nodes, doc);
   WriteCamerasAndLights(scene, doc);
   return Status::Ok();
 }

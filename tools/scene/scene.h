@@ -157,7 +157,8 @@ struct Node {
   int light = -1;           // index into Scene::lights, or -1
 };
 
-// kWeights drives the morph-target weights of the node's (first) mesh.
+// kWeights drives the morph-target weights of the node's first mesh, and of each of its other
+// meshes that has as many targets (assimp splits a mesh by material into several).
 enum class AnimationPath { kTranslation, kRotation, kScale, kWeights };
 enum class Interpolation { kLinear, kStep, kCubicSpline };
 

@@ -310,6 +310,35 @@ TEST(GlbWriterTest, CompressedAnimationsDecodeWithinTheirFilters) {
   }
 }
 
+TEST(GlbWriterTest, WeightsChannelsDriveEveryMeshOfTheirNode) {
+  // Node 3 shows a second mesh with as many morph targets (assimp splits a mesh by material):
+  // the clip's weights drive both, in the file and after reading it back.
+  Scene scene = testing_gltf::MakeRichScene();
+  Node& node = scene.nodes[3];
+  ASSERT_EQ(node.meshes.size(), 1u);
+  Mesh second = scene.meshes[static_cast<size_t>(node.meshes[0])];
+  second.name = "second";
+  ASSERT_EQ(second.morph_targets.size(), 2u);
+  node.meshes.push_back(static_cast<int>(scene.meshes.size()));
+  scene.meshes.push_back(second);
+  Result<std::vector<uint8_t>> glb = EncodeGlb(scene);
+  ASSERT_TRUE(glb.ok()) << glb.status().ToString();
+  const GltfDocument doc = Parse(glb.value());
+  const json& j = doc.json();
+  std::vector<json> weights;
+  for (const json& c : j["animations"][0]["channels"]) {
+    if (c["target"]["path"] == "weights") weights.push_back(c);
+  }
+  ASSERT_EQ(weights.size(), 2u);
+  EXPECT_EQ(weights[0]["target"]["node"], 3);
+  EXPECT_EQ(weights[0]["sampler"], weights[1]["sampler"]);
+  const json& child = j["nodes"][weights[1]["target"]["node"].get<int>()];
+  EXPECT_EQ(child["mesh"], scene.meshes.size() - 1);
+  Result<Scene> back = DecodeGlb(glb->data(), glb->size(), "two_meshes.glb");
+  ASSERT_TRUE(back.ok()) << back.status().ToString();
+  ExpectScenesEqual(scene, back.value());
+}
+
 TEST(GlbWriterTest, RejectsInvalidAnimations) {
   const Scene good = testing_gltf::MakeRichScene();
   auto rejected = [&](const std::function<void(Scene&)>& edit, const std::string& needle) {
