@@ -90,6 +90,8 @@ py::dict PackReportDict(const PackReport& r) {
   d["left_out"] = r.left_out;
   d["not_kept"] = r.not_kept;
   d["output_bytes"] = r.output_bytes;
+  d["key_frame_bytes_before"] = r.key_frame_bytes_before;
+  d["key_frame_bytes_after"] = r.key_frame_bytes_after;
   return d;
 }
 
@@ -401,7 +403,8 @@ Returns
 dict
     Per mesh ("meshes"): triangles, vertices, bytes before/after, bits per vertex, position
     error, hull count/vertices/bytes, hull concavity and IoU; "left_out", "not_kept",
-    "output_bytes".
+    "output_bytes", "key_frame_bytes_before" and "key_frame_bytes_after" (animation key
+    frames as plain accessors and as written).
 
 Raises
 ------

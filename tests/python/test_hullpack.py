@@ -261,8 +261,11 @@ class Files(unittest.TestCase):
                                  "samples", "assets", "kenney_character.glb")
         compressed = os.path.join(self.dir.name, "c.glb")
         plain = os.path.join(self.dir.name, "p.glb")
-        hullpack.pack(character, compressed, hulls="none")
-        hullpack.pack(character, plain, hulls="none", plain_animations=True)
+        report = hullpack.pack(character, compressed, hulls="none")
+        plain_report = hullpack.pack(character, plain, hulls="none", plain_animations=True)
+        self.assertLess(report["key_frame_bytes_after"], report["key_frame_bytes_before"])
+        self.assertEqual(plain_report["key_frame_bytes_after"],
+                         plain_report["key_frame_bytes_before"])
         self.assertIn("EXT_meshopt_compression", required(compressed))
         self.assertNotIn("EXT_meshopt_compression", required(plain))
         self.assertLess(os.path.getsize(compressed), os.path.getsize(plain))

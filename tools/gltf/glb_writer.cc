@@ -210,7 +210,7 @@ class AnimationWriter {
   // scene.
   void Write(const std::vector<int>& gltf_node,
              const std::vector<std::vector<std::pair<int, int>>>& extra_mesh_nodes,
-             GltfDocument* doc) {
+             GltfDocument* doc, GltfSceneLayout* layout) {
     struct PendingSampler {
       int input, output;
       Interpolation interpolation;
@@ -232,7 +232,13 @@ class AnimationWriter {
     }
     int views[kKinds];
     Compress();
-    for (int k = 0; k < kKinds; ++k) views[k] = AddView(static_cast<Kind>(k), doc);
+    for (int k = 0; k < kKinds; ++k) {
+      const Kind kind = static_cast<Kind>(k);
+      views[k] = AddView(kind, doc);
+      const size_t plain = values_[kind].size() / kFloatsPer[kind] * kStride[kind];
+      layout->key_frame_bytes += plain;
+      layout->key_frame_stored_bytes += encoded_[kind].empty() ? plain : encoded_[kind].size();
+    }
     std::vector<int> accessor_index;
     for (Pending& p : pending_) {
       p.desc.buffer_view = views[p.kind];
@@ -1030,7 +1036,7 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
   if (!roots.empty()) scene_json["nodes"] = roots;
   root["scenes"] = json::array({std::move(scene_json)});
   root["scene"] = 0;
-  AnimationWriter(scene, options).Write(out.nodes, extra_mesh_nodes, doc);
+  AnimationWriter(scene, options).Write(out.nodes, extra_mesh_nodes, doc, &out);
   WriteCamerasAndLights(scene, doc);
   return Status::Ok();
 }

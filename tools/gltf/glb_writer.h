@@ -68,6 +68,9 @@ struct GltfSceneLayout {
   std::vector<MeshLayout> meshes;  // one per Scene::meshes entry
   std::vector<int> nodes;          // scene node -> glTF node (identity when the scene has nodes)
   std::vector<std::vector<int>> mesh_nodes;  // scene mesh -> glTF nodes that reference it
+  // Animation key frames: their bytes as plain accessors, and as written (compressed or not).
+  size_t key_frame_bytes = 0;
+  size_t key_frame_stored_bytes = 0;
 };
 
 // Checks what the writer relies on: every mesh has vertices and triangles (glTF has no empty

@@ -77,6 +77,8 @@ nlohmann::json ReportJson(const PackReport& r) {
           {"left_out", r.left_out},
           {"not_kept", r.not_kept},
           {"output_bytes", r.output_bytes},
+          {"key_frame_bytes_before", r.key_frame_bytes_before},
+          {"key_frame_bytes_after", r.key_frame_bytes_after},
           {"images_embedded", r.images_embedded},
           {"images_kept_as_references", r.images_kept_outside},
           {"seconds",
@@ -254,6 +256,10 @@ int ReportJobs(const PackCommandLine& cmd, const std::vector<Job>& work) {
     std::printf("%s -> %s: %zu bytes (geometry %zu -> %zu bytes), %zu meshes, %zu hulls\n",
                 job.input.c_str(), job.output.c_str(), job.report["output_bytes"].get<size_t>(),
                 before, after, job.report["meshes"].size(), hulls);
+    if (const size_t keys = job.report["key_frame_bytes_before"].get<size_t>()) {
+      std::printf("  animation key frames %zu -> %zu bytes\n", keys,
+                  job.report["key_frame_bytes_after"].get<size_t>());
+    }
     for (const auto& line : job.report["left_out"])
       std::printf("  left out: %s\n", line.get<std::string>().c_str());
     if (job.report["images_embedded"].get<size_t>()) {

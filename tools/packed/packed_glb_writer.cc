@@ -180,7 +180,8 @@ void AddColliders(GltfDocument& doc, const PackedStreams& streams, const GltfSce
 }  // namespace
 
 Result<std::vector<uint8_t>> WritePackedGlb(const Scene& decoded, const PackedStreams& streams,
-                                            const PackedGlbOptions& options) {
+                                            const PackedGlbOptions& options,
+                                            PackedGlbStats* stats) {
   if (streams.sources.size() != decoded.meshes.size()) {
     return Status(StatusCode::kInternal, "packed GLB: one stream source per mesh expected");
   }
@@ -207,6 +208,10 @@ Result<std::vector<uint8_t>> WritePackedGlb(const Scene& decoded, const PackedSt
     built = BuildGltfDocument(render, plain_options, &doc, &layout);
   }
   if (!built.ok()) return built;
+  if (stats != nullptr) {
+    stats->key_frame_bytes = layout.key_frame_bytes;
+    stats->key_frame_stored_bytes = layout.key_frame_stored_bytes;
+  }
   std::vector<int> stream_views;
   for (const EncodedMesh& s : streams.streams)
     stream_views.push_back(doc.AddBufferView(s.stream, 4));

@@ -46,10 +46,19 @@ struct PackedGlbOptions {
   PhysicsForm physics = PhysicsForm::kOmi;
 };
 
+// What WritePackedGlb stored besides the streams: the animation key frames' bytes as plain
+// accessors and as written.
+struct PackedGlbStats {
+  size_t key_frame_bytes = 0;
+  size_t key_frame_stored_bytes = 0;
+};
+
 // `decoded` holds the render meshes as their streams decode (vertex and triangle order, values,
-// material ids = stream groups) followed by the hull meshes; no node shows a hull mesh.
+// material ids = stream groups) followed by the hull meshes; no node shows a hull mesh. `stats`
+// may be null.
 Result<std::vector<uint8_t>> WritePackedGlb(const Scene& decoded, const PackedStreams& streams,
-                                            const PackedGlbOptions& options);
+                                            const PackedGlbOptions& options,
+                                            PackedGlbStats* stats = nullptr);
 
 }  // namespace hullpack
 

@@ -3,7 +3,8 @@
 namespace hullpack {
 
 Result<std::vector<uint8_t>> AssemblePackedGlb(Scene scene, std::vector<PackedMesh> packed,
-                                               const PackedGlbOptions& options) {
+                                               const PackedGlbOptions& options,
+                                               PackedGlbStats* stats) {
   const size_t n = packed.size();
   // Everything but the meshes goes to the file as the scene has it; the meshes are the decoded
   // ones.
@@ -31,7 +32,7 @@ Result<std::vector<uint8_t>> AssemblePackedGlb(Scene scene, std::vector<PackedMe
     }
   }
   streams.hulls_of.resize(decoded.meshes.size());
-  return WritePackedGlb(decoded, streams, options);
+  return WritePackedGlb(decoded, streams, options, stats);
 }
 
 }  // namespace hullpack

@@ -15,9 +15,10 @@
 namespace hullpack {
 
 // `scene` gives everything but the meshes (consumed); `packed` holds one entry per scene mesh
-// (consumed).
+// (consumed). `stats` (may be null): see WritePackedGlb.
 Result<std::vector<uint8_t>> AssemblePackedGlb(Scene scene, std::vector<PackedMesh> packed,
-                                               const PackedGlbOptions& options);
+                                               const PackedGlbOptions& options,
+                                               PackedGlbStats* stats = nullptr);
 
 }  // namespace hullpack
 

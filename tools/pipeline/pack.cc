@@ -71,9 +71,12 @@ Result<PackResult> PackLoaded(Scene scene, const PackOptions& options, PackObser
   t = Clock::now();
   if (observer) observer->OnProgress(kMeshesTo, "write");
   scene.meshes.clear();
+  PackedGlbStats stats;
   Result<std::vector<uint8_t>> glb =
-      AssemblePackedGlb(std::move(scene), std::move(packed.value()), options.glb);
+      AssemblePackedGlb(std::move(scene), std::move(packed.value()), options.glb, &stats);
   if (!glb.ok()) return glb.status();
+  report.key_frame_bytes_before = stats.key_frame_bytes;
+  report.key_frame_bytes_after = stats.key_frame_stored_bytes;
   result.glb = std::move(glb.value());
   report.output_bytes = result.glb.size();
   report.seconds_assemble = Seconds(t);

@@ -74,6 +74,8 @@ struct PackReport {
   std::vector<std::string> images_kept_outside;  // ... and those that could not be (PackInput)
   std::vector<std::string> image_uris;           // every image URI the file referenced (PackInput)
   size_t output_bytes = 0;
+  // Animation key frames as plain accessors, and as written (EXT_meshopt_compression or plain).
+  size_t key_frame_bytes_before = 0, key_frame_bytes_after = 0;
   // Wall seconds of each stage, in pipeline order; they add up to seconds_total. load is
   // PackInput's (0 from PackScene), write the caller's who writes the file; assemble is the packed
   // GLB's making.

@@ -19,6 +19,8 @@ character=$src/samples/assets/kenney_character.glb
 
 "$bin" pack "$character" -o "$tmp/packed.glb" >"$tmp/report.txt" 2>&1 || fail "pack: $(cat "$tmp/report.txt")"
 [ "$(animations "$tmp/packed.glb")" = 4 ] || fail "the packed file has $(animations "$tmp/packed.glb") clips"
+grep -q "animation key frames [0-9]* -> [0-9]* bytes" "$tmp/report.txt" ||
+  fail "the report does not give the key frames' sizes: $(cat "$tmp/report.txt")"
 grep -q "animation tracks that hold their node at rest" "$tmp/report.txt" ||
   fail "the report does not say which tracks were left out: $(cat "$tmp/report.txt")"
 "$bin" info "$tmp/packed.glb" | grep -q "not kept:.*animation" &&

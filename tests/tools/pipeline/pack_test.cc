@@ -222,6 +222,9 @@ TEST(Pack, AnimationsAndMaterialLooksSurvivePacking) {
   ASSERT_EQ(values.size(), turn.values.size());
   for (size_t k = 0; k < values.size(); ++k) EXPECT_NEAR(values[k], turn.values[k], 1e-4) << k;
   EXPECT_EQ(a.samplers[0].times, turn.times);
+  // Three key times and three short quaternions: too few to gain from compression, so plain.
+  EXPECT_EQ(packed->report.key_frame_bytes_before, 3 * 4 + 3 * 8u);
+  EXPECT_EQ(packed->report.key_frame_bytes_after, packed->report.key_frame_bytes_before);
   ASSERT_TRUE(out->nodes[1].trs.has_value());
   EXPECT_EQ(out->materials[0].alpha_mode, AlphaMode::kMask);
   EXPECT_EQ(out->materials[0].alpha_cutoff, 0.3f);
