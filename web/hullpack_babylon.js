@@ -130,6 +130,11 @@ export function readAccessor(json, bin, index) {
   const Type = COMPONENTS[a?.componentType];
   const width = WIDTH[a?.type];
   if (!a || !view || !Type || !width) throw new Error(`accessors[${index}]: unreadable (no data or a compressed primitive)`);
+  // Views on another buffer than the binary chunk (EXT_meshopt_compression's fallback buffer:
+  // compressed key frames) are not in `bin`.
+  if ((view.buffer || 0) !== 0 || view.extensions?.EXT_meshopt_compression) {
+    throw new Error(`accessors[${index}]: its bufferView is not plain data of the binary chunk`);
+  }
   const size = Type.BYTES_PER_ELEMENT;
   const stride = view.byteStride || width * size;
   const start = (view.byteOffset || 0) + (a.byteOffset || 0);

@@ -4,7 +4,9 @@ the build tree's python/ folder, or by hand:
 """
 
 import gc
+import json
 import os
+import struct
 import tempfile
 import threading
 import time
@@ -15,6 +17,14 @@ import numpy as np
 
 import hullpack
 import meshes
+
+
+def required_extensions(path):
+    """The extensionsRequired of a GLB file."""
+    with open(path, "rb") as f:
+        data = f.read()
+    length = struct.unpack("<I", data[12:16])[0]
+    return json.loads(data[20:20 + length]).get("extensionsRequired", [])
 
 
 def rss_bytes():
@@ -229,34 +239,16 @@ class Files(unittest.TestCase):
     def test_pack_quantized_hulls(self):
         # Default hulls are floats (nothing required because of them); quantized_hulls stores the
         # same grid integers as bytes/shorts and requires KHR_mesh_quantization.
-        import json
-        import struct
-
-        def required(path):
-            with open(path, "rb") as f:
-                data = f.read()
-            length = struct.unpack("<I", data[12:16])[0]
-            return json.loads(data[20:20 + length]).get("extensionsRequired", [])
-
         floats = os.path.join(self.dir.name, "f.glb")
         quantized = os.path.join(self.dir.name, "q.glb")
         hullpack.pack(self.obj, floats, resolution=20000)
         hullpack.pack(self.obj, quantized, resolution=20000, quantized_hulls=True)
-        self.assertNotIn("KHR_mesh_quantization", required(floats))
-        self.assertIn("KHR_mesh_quantization", required(quantized))
+        self.assertNotIn("KHR_mesh_quantization", required_extensions(floats))
+        self.assertIn("KHR_mesh_quantization", required_extensions(quantized))
         self.assertLess(os.path.getsize(quantized), os.path.getsize(floats))
 
     def test_pack_plain_animations(self):
         # Key frames are stored with EXT_meshopt_compression unless plain_animations is set.
-        import json
-        import struct
-
-        def required(path):
-            with open(path, "rb") as f:
-                data = f.read()
-            length = struct.unpack("<I", data[12:16])[0]
-            return json.loads(data[20:20 + length]).get("extensionsRequired", [])
-
         character = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
                                  "samples", "assets", "kenney_character.glb")
         compressed = os.path.join(self.dir.name, "c.glb")
@@ -266,8 +258,8 @@ class Files(unittest.TestCase):
         self.assertLess(report["key_frame_bytes_after"], report["key_frame_bytes_before"])
         self.assertEqual(plain_report["key_frame_bytes_after"],
                          plain_report["key_frame_bytes_before"])
-        self.assertIn("EXT_meshopt_compression", required(compressed))
-        self.assertNotIn("EXT_meshopt_compression", required(plain))
+        self.assertIn("EXT_meshopt_compression", required_extensions(compressed))
+        self.assertNotIn("EXT_meshopt_compression", required_extensions(plain))
         self.assertLess(os.path.getsize(compressed), os.path.getsize(plain))
         self.assertEqual(hullpack.info(compressed)["animations"], 4)
 
