@@ -3,6 +3,7 @@
 #include <meshoptimizer.h>
 
 #include <cmath>
+#include <mutex>
 
 #include "gltf/meshopt_inflate.h"
 
@@ -39,8 +40,10 @@ void UndoMeshoptFilter(MeshoptFilter filter, std::vector<uint8_t>* elements, siz
 std::vector<uint8_t> EncodeMeshoptAttributes(const std::vector<uint8_t>& elements, size_t stride) {
   const size_t count = elements.size() / stride;
   std::vector<uint8_t> encoded(meshopt_encodeVertexBufferBound(count, stride));
-  // Version 0 of the codec: the one the extension specifies and every decoder reads.
-  meshopt_encodeVertexVersion(0);
+  // Version 0 of the codec: the one the extension specifies and every decoder reads. The setting
+  // is the library's global state: set once, so that packs on several threads do not race on it.
+  static std::once_flag version;
+  std::call_once(version, [] { meshopt_encodeVertexVersion(0); });
   encoded.resize(
       meshopt_encodeVertexBuffer(encoded.data(), encoded.size(), elements.data(), count, stride));
   return encoded;
