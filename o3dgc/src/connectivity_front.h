@@ -80,16 +80,19 @@ class Front {
   static constexpr int kMaxScan = 64;
 
   // Capacities for a mesh of this size. A triangle opens at most 3 gates, but a manifold mesh
-  // opens about one per edge: 1.5 per triangle, plus half a boundary edge. Gates start a little
-  // above that (at 32 bytes each, the worst case doubled the coder's largest array) and grow by
-  // half when a mesh needs more. Callers never code more than `triangles` triangles (the
-  // neighbour tables are sized for them; vertices and gates still grow if needed). Without
-  // `keep_edges` only the opposite vertices are recorded (TakeOpposite is then empty).
-  // With `compact` (the encoder, which calls MakeRoom between steps) the gates start at a quarter
-  // of that.
+  // opens about one per edge, and by Euler's formula edges = vertices + triangles - (2 per
+  // component, less per hole or handle): 1.5 per triangle when closed, up to 3 for a triangle
+  // soup. Gates start a little above that, never above the worst case (at 32 bytes each, the
+  // worst case doubled the coder's largest array), and grow by half when a mesh needs more (a
+  // copy that cost boundary-heavy CAD parts a few percent of their decode). Callers never code
+  // more than `triangles` triangles (the neighbour tables are sized for them; vertices and gates
+  // still grow if needed). Without `keep_edges` only the opposite vertices are recorded
+  // (TakeOpposite is then empty). With `compact` (the encoder, which calls MakeRoom between
+  // steps) the gates start at a quarter of a closed mesh's.
   void Reserve(size_t vertices, size_t triangles, bool keep_edges = true, bool compact = false) {
     GrowVertices(vertices < 16 ? 16 : vertices);
-    GrowGates(compact ? triangles / 4 + 64 : 3 * triangles / 2 + triangles / 16 + 64);
+    const size_t edges = std::min(3 * triangles, vertices + triangles + triangles / 16);
+    GrowGates(compact ? triangles / 4 + 64 : std::max(edges, 3 * triangles / 2) + 64);
     keep_edges_ = keep_edges;
     if (keep_edges_) opp_.assign(3 * triangles, kNoEdge);
     oppv_.assign(3 * triangles, kNoEdge);
