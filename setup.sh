@@ -46,7 +46,8 @@ PACKAGES=(
   zlib1g-dev
 )
 
-log() { printf 'setup: %s\n' "$*" >&2; }
+# Each line carries the seconds since the start, so a CI log shows what each stage took.
+log() { printf 'setup [%ds]: %s\n' "$SECONDS" "$*" >&2; }
 
 install_missing_packages() {
   local missing=()
@@ -128,6 +129,7 @@ sanitized_tests() {
   [ "${HULLPACK_SANITIZE_TESTS:-1}" = 0 ] && return 0
   log "building the sanitized tests ($JOBS jobs)"
   cmake --build "$SANITIZE_DIR" -j "$JOBS"
+  log "running the sanitized tests ($JOBS jobs)"
   ASAN_OPTIONS=detect_leaks=1:check_initialization_order=1:strict_string_checks=1 \
     LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0" \
     UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
@@ -151,6 +153,7 @@ case "${1:-}" in
     install_node_packages
     configure_and_build
     build_web
+    log "running the tests ($JOBS jobs)"
     ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS"
     if [ "${HULLPACK_SANITIZE_TESTS:-1}" != 0 ] || [ "${HULLPACK_FUZZ_SECONDS:-60}" != 0 ]; then
       configure_sanitized
@@ -159,8 +162,10 @@ case "${1:-}" in
     # A short libFuzzer run of every decoder and parser from the same tree: HULLPACK_FUZZ_SECONDS
     # per target (0 skips it).
     if [ "${HULLPACK_FUZZ_SECONDS:-60}" != 0 ]; then
+      log "fuzzing every decoder and parser for ${HULLPACK_FUZZ_SECONDS:-60} s each"
       HULLPACK_FUZZ_BUILD_DIR=$SANITIZE_DIR tests/fuzz/run_fuzzers.sh "${HULLPACK_FUZZ_SECONDS:-60}"
     fi
+    log "all tests passed"
     ;;
   -h | --help)
     sed -n '2,5p' "$0" | sed 's/^# \{0,1\}//'
