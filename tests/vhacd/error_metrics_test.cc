@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "test_grid_mesh.h"
@@ -24,6 +25,45 @@ TEST(ErrorMetricsTest, TriangleLocatorMatchesBruteForce) {
       brute = std::min(brute,
                        PointTriangleDistance(p, g.points[tr[0]], g.points[tr[1]], g.points[tr[2]]));
     EXPECT_NEAR(loc.Distance(p), brute, 1e-9);
+  }
+}
+
+// Triangles whose boxes span many cells are bucketed only where they may reach: a tilted disc
+// fanned from its centre into slivers, and one large triangle beside it, give the distances of a
+// brute-force search, near the surface and away from it.
+TEST(ErrorMetricsTest, TriangleLocatorMatchesBruteForceOnSliversAndLargeTriangles) {
+  GridMesh g;
+  const Vec3 centre(30, 30, 20), axis_u = Vec3(1, 0.2, 0.4).normalized();
+  const Vec3 axis_v = axis_u.cross(Vec3(0.1, 1, -0.3)).normalized();
+  g.points.push_back(centre);
+  const int n = 400;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * 3.14159265358979 * i / n;
+    g.points.push_back(centre + 25 * (std::cos(a) * axis_u + std::sin(a) * axis_v));
+  }
+  for (int i = 0; i < n; ++i)
+    g.triangles.push_back({0, uint32_t(1 + i), uint32_t(1 + (i + 1) % n)});
+  g.points.push_back(Vec3(0, 0, 0));
+  g.points.push_back(Vec3(60, 5, 45));
+  g.points.push_back(Vec3(10, 55, 50));
+  g.triangles.push_back({uint32_t(n + 1), uint32_t(n + 2), uint32_t(n + 3)});
+  TriangleLocator loc(g, 2.0);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-5, 65), near(-0.5, 0.5);
+  std::uniform_int_distribution<uint32_t> pick(0, uint32_t(g.points.size() - 1));
+  for (int i = 0; i < 600; ++i) {
+    const Vec3 p = i % 2 ? Vec3(u(rng), u(rng), u(rng))
+                         : Vec3(g.points[pick(rng)] + Vec3(near(rng), near(rng), near(rng)));
+    double brute = 1e300;
+    for (const auto& tr : g.triangles)
+      brute = std::min(brute,
+                       PointTriangleDistance(p, g.points[tr[0]], g.points[tr[1]], g.points[tr[2]]));
+    uint32_t nearest = 0;
+    ASSERT_NEAR(loc.Distance(p, &nearest), brute, 1e-9) << "point " << i;
+    ASSERT_LT(nearest, g.triangles.size());
+    const auto& t = g.triangles[nearest];
+    EXPECT_NEAR(PointTriangleDistance(p, g.points[t[0]], g.points[t[1]], g.points[t[2]]), brute,
+                1e-9);
   }
 }
 

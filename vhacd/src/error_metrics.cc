@@ -9,6 +9,30 @@
 namespace vhacd {
 namespace internal {
 
+namespace {
+
+// Whether triangle (a, b, c) may reach the sphere of radius r around `center`: false only when it
+// provably does not, because its plane passes farther, or because every point of it lies within
+// its height over its longest edge of that edge, and the edge passes farther than that.
+bool MayReachSphere(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& center, double r) {
+  const Vec3 ab = b - a, bc = c - b, ca = a - c;
+  const Vec3 n = ab.cross(-ca);
+  const double area2 = n.norm();  // twice the area
+  const double slack = r * (1.0 + 1e-9) + 1e-12;
+  if (area2 > 0 && std::abs(n.dot(center - a)) > slack * area2) return false;
+  const Vec3* p = &a;
+  Vec3 e = ab;
+  if (bc.squaredNorm() > e.squaredNorm()) p = &b, e = bc;
+  if (ca.squaredNorm() > e.squaredNorm()) p = &c, e = ca;
+  const double len2 = e.squaredNorm();
+  if (!(len2 > 0)) return (center - a).norm() <= slack;
+  const double height = area2 / std::sqrt(len2);
+  const double t = std::clamp((center - *p).dot(e) / len2, 0.0, 1.0);
+  return (center - *p - t * e).norm() - height <= slack;
+}
+
+}  // namespace
+
 TriangleLocator::TriangleLocator(const GridMesh& mesh, double cell_size)
     : mesh_(mesh), cell_(cell_size) {
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
@@ -44,9 +68,20 @@ TriangleLocator::TriangleLocator(const GridMesh& mesh, double cell_size)
     for (uint32_t ti = 0; ti < mesh.triangles.size(); ++ti) {
       int clo[3], chi[3];
       range(mesh.triangles[ti], clo, chi);
+      // A triangle whose box spans more than 2 x 2 x 2 cells (a long sliver, as in the fan of a
+      // finely tessellated disc) goes only into the cells it may reach: by its box alone, every
+      // cell near the fan's centre held most of the fan, and each query there measured them all.
+      const bool large = (chi[0] - clo[0] + 1) * (chi[1] - clo[1] + 1) * (chi[2] - clo[2] + 1) > 8;
+      const auto& t = mesh.triangles[ti];
       for (int z = clo[2]; z <= chi[2]; ++z)
         for (int y = clo[1]; y <= chi[1]; ++y)
           for (int x = clo[0]; x <= chi[0]; ++x) {
+            if (large) {
+              const Vec3 centre = origin_ + cell_ * Vec3(x + 0.5, y + 0.5, z + 0.5);
+              if (!MayReachSphere(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], centre,
+                                  0.5 * std::sqrt(3.0) * cell_))
+                continue;
+            }
             const size_t c = (static_cast<size_t>(z) * dims_[1] + y) * dims_[0] + x;
             if (pass == 0)
               ++start_[c + 1];
