@@ -9,29 +9,32 @@
 namespace vhacd {
 namespace internal {
 
-namespace {
-
-// Whether triangle (a, b, c) may reach the sphere of radius r around `center`: false only when it
-// provably does not, because its plane passes farther, or because every point of it lies within
-// its height over its longest edge of that edge, and the edge passes farther than that.
-bool MayReachSphere(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& center, double r) {
+// The Sliver of triangle (a, b, c): every point of the triangle lies in its plane, and within
+// its height over its longest edge of that edge.
+TriangleLocator::Sliver TriangleLocator::Sliver::Of(const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 ab = b - a, bc = c - b, ca = a - c;
   const Vec3 n = ab.cross(-ca);
   const double area2 = n.norm();  // twice the area
-  const double slack = r * (1.0 + 1e-9) + 1e-12;
-  if (area2 > 0 && std::abs(n.dot(center - a)) > slack * area2) return false;
-  const Vec3* p = &a;
-  Vec3 e = ab;
-  if (bc.squaredNorm() > e.squaredNorm()) p = &b, e = bc;
-  if (ca.squaredNorm() > e.squaredNorm()) p = &c, e = ca;
-  const double len2 = e.squaredNorm();
-  if (!(len2 > 0)) return (center - a).norm() <= slack;
-  const double height = area2 / std::sqrt(len2);
-  const double t = std::clamp((center - *p).dot(e) / len2, 0.0, 1.0);
-  return (center - *p - t * e).norm() - height <= slack;
+  Sliver s;
+  s.normal = area2 > 0 ? Vec3(n / area2) : Vec3::Zero();
+  s.offset = s.normal.dot(a);
+  s.start = a;
+  s.edge = ab;
+  if (bc.squaredNorm() > s.edge.squaredNorm()) s.start = b, s.edge = bc;
+  if (ca.squaredNorm() > s.edge.squaredNorm()) s.start = c, s.edge = ca;
+  const double len2 = s.edge.squaredNorm();
+  s.inv_length2 = len2 > 0 ? 1.0 / len2 : 0.0;
+  s.height = len2 > 0 ? area2 / std::sqrt(len2) : 0.0;
+  return s;
 }
 
-}  // namespace
+double TriangleLocator::Sliver::Bound(const Vec3& q) const {
+  const double plane = std::abs(normal.dot(q) - offset);
+  const double t = std::clamp((q - start).dot(edge) * inv_length2, 0.0, 1.0);
+  const double to_edge = (q - start - t * edge).norm() - height;
+  // Rounding may make either a hair too large: the margin keeps it a lower bound.
+  return std::max(plane, to_edge) * (1.0 - 1e-9) - 1e-12;
+}
 
 TriangleLocator::TriangleLocator(const GridMesh& mesh, double cell_size)
     : mesh_(mesh), cell_(cell_size) {
@@ -73,14 +76,17 @@ TriangleLocator::TriangleLocator(const GridMesh& mesh, double cell_size)
       // cell near the fan's centre held most of the fan, and each query there measured them all.
       const bool large = (chi[0] - clo[0] + 1) * (chi[1] - clo[1] + 1) * (chi[2] - clo[2] + 1) > 8;
       const auto& t = mesh.triangles[ti];
+      if (large && pass == 0) {
+        if (sliver_of_.empty()) sliver_of_.assign(mesh.triangles.size(), kNone);
+        sliver_of_[ti] = static_cast<uint32_t>(slivers_.size());
+        slivers_.push_back(Sliver::Of(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]));
+      }
       for (int z = clo[2]; z <= chi[2]; ++z)
         for (int y = clo[1]; y <= chi[1]; ++y)
           for (int x = clo[0]; x <= chi[0]; ++x) {
             if (large) {
               const Vec3 centre = origin_ + cell_ * Vec3(x + 0.5, y + 0.5, z + 0.5);
-              if (!MayReachSphere(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], centre,
-                                  0.5 * std::sqrt(3.0) * cell_))
-                continue;
+              if (slivers_[sliver_of_[ti]].Bound(centre) > 0.5 * std::sqrt(3.0) * cell_) continue;
             }
             const size_t c = (static_cast<size_t>(z) * dims_[1] + y) * dims_[0] + x;
             if (pass == 0)
@@ -126,6 +132,10 @@ double TriangleLocator::Distance(const Vec3& p, uint32_t* nearest) const {
             // per triangle of a large mesh). Skipping it would give the same result, slower.
             const Vec3 tlo = a.cwiseMin(b).cwiseMin(e), thi = a.cwiseMax(b).cwiseMax(e);
             if ((tlo - p).cwiseMax(p - thi).cwiseMax(0.0).squaredNorm() >= best * best) continue;
+            // A long triangle's box is a loose bound (a sliver across the cell); a closer one.
+            if (!sliver_of_.empty() && sliver_of_[ti] != kNone &&
+                slivers_[sliver_of_[ti]].Bound(p) >= best)
+              continue;
             const double d = PointTriangleDistance(p, a, b, e);
             if (d < best) {
               best = d;

@@ -23,11 +23,23 @@ class TriangleLocator {
   double Distance(const Vec3& p, uint32_t* nearest) const;
 
  private:
+  // For a triangle whose box spans more than 2 x 2 x 2 cells (a sliver, most often), whose box is
+  // a loose bound: its plane, and its longest edge with the triangle's height over it.
+  struct Sliver {
+    Vec3 start, edge, normal;  // normal: unit, or zero for a degenerate triangle
+    double inv_length2, height, offset;
+    static Sliver Of(const Vec3& a, const Vec3& b, const Vec3& c);
+    // A lower bound of the distance from q to the triangle, tight for a sliver.
+    double Bound(const Vec3& q) const;
+  };
   const GridMesh& mesh_;
   double cell_;
   Vec3 origin_;
   int dims_[3];
   std::vector<uint32_t> start_, ids_;
+  std::vector<Sliver> slivers_;
+  std::vector<uint32_t> sliver_of_;  // per triangle, its index in slivers_ or kNone (empty if none)
+  static constexpr uint32_t kNone = 0xFFFFFFFFu;
 };
 
 struct MetricsInput {
