@@ -132,7 +132,8 @@ double TriangleLocator::Distance(const Vec3& p, uint32_t* nearest) const {
             // per triangle of a large mesh). Skipping it would give the same result, slower.
             const Vec3 tlo = a.cwiseMin(b).cwiseMin(e), thi = a.cwiseMax(b).cwiseMax(e);
             if ((tlo - p).cwiseMax(p - thi).cwiseMax(0.0).squaredNorm() >= best * best) continue;
-            // A long triangle's box is a loose bound (a sliver across the cell); a closer one.
+            // A long triangle's box is a loose bound (a sliver crossing the cell passes it); its
+            // Sliver bound is a tight one.
             if (!sliver_of_.empty() && sliver_of_[ti] != kNone &&
                 slivers_[sliver_of_[ti]].Bound(p) >= best)
               continue;
