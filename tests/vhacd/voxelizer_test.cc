@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <random>
+
 #include "test_grid_mesh.h"
 #include "test_meshes.h"
 
@@ -22,6 +25,71 @@ TEST(VoxelizerTest, TriangleBoxOverlap) {
   // Beyond the box corner edge: only the triangle plane separates them.
   EXPECT_FALSE(TriangleBoxOverlap(c, 0.5, Vec3(2.1, 0, 0), Vec3(0, 2.1, 0), Vec3(0, 2.1, 1)));
   EXPECT_TRUE(TriangleBoxOverlap(c, 0.5, Vec3(1.9, 0, 0), Vec3(0, 1.9, 0), Vec3(0, 1.9, 1)));
+}
+
+// The range test never rejects a range holding a voxel the voxel test accepts, and does reject
+// ranges well away from the triangle.
+TEST(VoxelizerTest, TriangleMayMeetVoxelsIsConservative) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> coord(0.0, 24.0), unit(0.0, 1.0);
+  std::uniform_int_distribution<int> start(0, 20), size(0, 6);
+  int rejected = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    Vec3 a(coord(rng), coord(rng), coord(rng)), b(coord(rng), coord(rng), coord(rng));
+    // Every third a sliver: its third corner close to its first edge.
+    Vec3 c = trial % 3 == 0 ? a + unit(rng) * (b - a) + Vec3::Constant(0.05 * unit(rng))
+                            : Vec3(coord(rng), coord(rng), coord(rng));
+    if (trial % 7 == 0) c = Vec3(std::floor(c[0]), std::floor(c[1]), b[2]);  // on voxel faces
+    int lo[3], hi[3];
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = start(rng);
+      hi[k] = lo[k] + size(rng);
+    }
+    bool any = false;
+    for (int z = lo[2]; z <= hi[2] && !any; ++z)
+      for (int y = lo[1]; y <= hi[1] && !any; ++y)
+        for (int x = lo[0]; x <= hi[0] && !any; ++x)
+          any = TriangleBoxOverlap(Vec3(x + 0.5, y + 0.5, z + 0.5), 0.5 + 1e-9, a, b, c);
+    const bool may = TriangleMayMeetVoxels(lo, hi, a, b, c);
+    if (any) EXPECT_TRUE(may) << "trial " << trial;
+    rejected += !may;
+  }
+  EXPECT_GT(rejected, 500);
+}
+
+// A fan of long slivers (an STL exporter's round face): the surface voxels are exactly those the
+// voxel test accepts over each triangle's whole box.
+TEST(VoxelizerTest, FanOfSliversMarksTheSameVoxelsAsAFullWalk) {
+  GridMesh fan;
+  const int n = 300;
+  const Vec3 centre(40.3, 40.7, 3.2);
+  fan.points.push_back(centre);
+  for (int i = 0; i < n; ++i) {
+    const double t = 2 * M_PI * i / n;
+    fan.points.push_back(centre + Vec3(37 * std::cos(t), 37 * std::sin(t), 1.3 * std::sin(3 * t)));
+  }
+  for (int i = 0; i < n; ++i)
+    fan.triangles.push_back(
+        {0, static_cast<uint32_t>(i + 1), static_cast<uint32_t>((i + 1) % n + 1)});
+  const int dims[3] = {82, 82, 8};
+  Context ctx(nullptr, 2);
+  VoxelGrid grid;
+  ASSERT_TRUE(Voxelize(fan, dims, &ctx, &grid));
+  std::vector<uint8_t> expected(grid.size(), 0);
+  for (const auto& t : fan.triangles) {
+    const Vec3 &a = fan.points[t[0]], &b = fan.points[t[1]], &c = fan.points[t[2]];
+    for (int z = 0; z < dims[2]; ++z)
+      for (int y = 0; y < dims[1]; ++y)
+        for (int x = 0; x < dims[0]; ++x)
+          if (TriangleBoxOverlap(Vec3(x + 0.5, y + 0.5, z + 0.5), 0.5 + 1e-9, a, b, c))
+            expected[grid.Index(x, y, z)] = 1;
+  }
+  size_t surface = 0;
+  for (size_t i = 0; i < grid.size(); ++i) {
+    EXPECT_EQ(grid.cell[i] == kCellSurface, expected[i] == 1) << i;
+    surface += expected[i];
+  }
+  EXPECT_GT(surface, 4000u);
 }
 
 TEST(VoxelizerTest, ChooseGridGivesAboutTheResolution) {

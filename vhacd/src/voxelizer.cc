@@ -68,6 +68,35 @@ bool TriangleBoxOverlap(const Vec3& center, double half, const Vec3& a, const Ve
   return std::fabs(d) <= r;
 }
 
+bool TriangleMayMeetVoxels(const int lo[3], const int hi[3], const Vec3& a, const Vec3& b,
+                           const Vec3& c) {
+  // The range's box, widened far beyond the rounding of the tests on its voxels (coordinates are
+  // voxel indices): TriangleBoxOverlap's own arithmetic, with a half-extent per axis.
+  constexpr double kMargin = 1e-6;
+  Vec3 center, half;
+  for (int k = 0; k < 3; ++k) {
+    center[k] = 0.5 * (double(lo[k]) + double(hi[k]) + 1.0);
+    half[k] = 0.5 * (double(hi[k]) - double(lo[k]) + 1.0) + kMargin;
+  }
+  const Vec3 v0 = a - center, v1 = b - center, v2 = c - center;
+  for (int k = 0; k < 3; ++k) {
+    const double mn = std::min({v0[k], v1[k], v2[k]}), mx = std::max({v0[k], v1[k], v2[k]});
+    if (mn > half[k] || mx < -half[k]) return false;
+  }
+  const Vec3 e[3] = {v1 - v0, v2 - v1, v0 - v2};
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) {
+      Vec3 axis = Vec3::Zero();
+      axis[k] = 1.0;
+      axis = axis.cross(e[i]);
+      const double p0 = axis.dot(v0), p1 = axis.dot(v1), p2 = axis.dot(v2);
+      const double r = half.dot(axis.cwiseAbs());
+      if (std::min({p0, p1, p2}) > r || std::max({p0, p1, p2}) < -r) return false;
+    }
+  const Vec3 n = e[0].cross(e[1]);
+  return std::fabs(n.dot(v0)) <= half.dot(n.cwiseAbs());
+}
+
 namespace {
 
 struct Crossing {
@@ -290,14 +319,39 @@ bool Voxelize(const GridMesh& mesh, const int dims[3], Context* ctx, VoxelGrid* 
         lo[axis] = base + slo;
         hi[axis] = std::min(hi[axis], base + shi);
       }
-      for (int z = lo[2]; z <= hi[2]; ++z)
-        for (int y = lo[1]; y <= hi[1]; ++y)
-          for (int x = lo[0]; x <= hi[0]; ++x) {
-            const size_t idx = grid->Index(x, y, z);
-            if (marks[idx].load(std::memory_order_relaxed)) continue;
-            if (TriangleBoxOverlap(Vec3(x + 0.5, y + 0.5, z + 0.5), half, a, b, d))
-              marks[idx].store(1, std::memory_order_relaxed);
-          }
+      // A box of more than kLeafVoxels is halved along its longest side, and a half the triangle
+      // cannot meet is skipped whole: a sliver's box is mostly empty. Every voxel of the halves
+      // kept gets the same test as before, so the marks do not change.
+      constexpr int64_t kLeafVoxels = 64;
+      struct Range {
+        int lo[3], hi[3];
+      };
+      Range stack[96];  // depth-first: one entry per halving level, plus one
+      int top = 0;
+      stack[top++] = Range{{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
+      while (top > 0) {
+        const Range r = stack[--top];
+        const int64_t n[3] = {r.hi[0] - r.lo[0] + 1, r.hi[1] - r.lo[1] + 1, r.hi[2] - r.lo[2] + 1};
+        if (n[0] * n[1] * n[2] > kLeafVoxels) {
+          if (!TriangleMayMeetVoxels(r.lo, r.hi, a, b, d)) continue;
+          const int axis = n[0] >= n[1] && n[0] >= n[2] ? 0 : (n[1] >= n[2] ? 1 : 2);
+          const int mid = r.lo[axis] + static_cast<int>(n[axis] / 2) - 1;
+          Range low = r, high = r;
+          low.hi[axis] = mid;
+          high.lo[axis] = mid + 1;
+          stack[top++] = high;
+          stack[top++] = low;
+          continue;
+        }
+        for (int z = r.lo[2]; z <= r.hi[2]; ++z)
+          for (int y = r.lo[1]; y <= r.hi[1]; ++y)
+            for (int x = r.lo[0]; x <= r.hi[0]; ++x) {
+              const size_t idx = grid->Index(x, y, z);
+              if (marks[idx].load(std::memory_order_relaxed)) continue;
+              if (TriangleBoxOverlap(Vec3(x + 0.5, y + 0.5, z + 0.5), half, a, b, d))
+                marks[idx].store(1, std::memory_order_relaxed);
+            }
+      }
     };
     bool ok = ParallelFor(ctx, nchunks, [&](size_t c) {
       const size_t end = std::min(ntri, (c + 1) * kChunk);

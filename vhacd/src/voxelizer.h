@@ -50,6 +50,12 @@ struct VoxelGrid {
 bool TriangleBoxOverlap(const Vec3& center, double half, const Vec3& a, const Vec3& b,
                         const Vec3& c);
 
+// Conservative test for the voxels lo..hi (inclusive index ranges): false only when no voxel of the
+// range can pass TriangleBoxOverlap (with a half of 0.5 plus rounding) for the triangle. Lets the
+// voxelizer skip the empty parts of a long triangle's box, which are most of it.
+bool TriangleMayMeetVoxels(const int lo[3], const int hi[3], const Vec3& a, const Vec3& b,
+                           const Vec3& c);
+
 // Marks surface voxels and fills the interior. Returns false when cancelled. *fill_seconds (when
 // non-null) receives the time spent on the interior fill. `opening` (a fraction of the grid's
 // diagonal, 0 = off): voxels that a ball of that diameter reaches from outside the grid through
