@@ -2,7 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
 #include <map>
 #include <random>
@@ -70,36 +69,9 @@ TEST(ConvexHullTest, RandomPointsOnAndInSphere) {
   EXPECT_NEAR(h.Volume(), 4.0 / 3.0 * M_PI, 0.05);
 }
 
-// Points given by index into a larger array give the same hull, vertex for vertex and face for
-// face, as the same points copied in that order. 20,000 points on a sphere make hulls of some
-// 40,000 faces: several of the hull's blocks of faces.
-TEST(ConvexHullTest, IndexedPointsGiveTheHullOfTheCopiedPoints) {
-  std::mt19937 rng(11);
-  std::normal_distribution<double> g;
-  std::vector<Vec3> base;
-  for (int i = 0; i < 30000; ++i) {
-    Vec3 p(g(rng), g(rng), g(rng));
-    base.push_back(i % 3 == 0 ? 0.7 * p.normalized() : p.normalized());
-  }
-  std::vector<uint32_t> ids;
-  for (uint32_t i = 0; i < base.size(); ++i)
-    if (i % 3 != 0) ids.push_back(i);
-  std::shuffle(ids.begin(), ids.end(), rng);
-  const std::vector<Vec3> own = {Vec3(0, 0, 1.5), Vec3(0.1, 0.2, 0.3), Vec3(-1.2, 0, 0)};
-  std::vector<Vec3> copied = own;
-  for (uint32_t i : ids) copied.push_back(base[i]);
-  HullMesh expected, indexed;
-  ASSERT_EQ(ComputeConvexHull(copied, -1.0, &expected), HullStatus::kOk);
-  ASSERT_EQ(ComputeConvexHull(IndexedPoints{&own, &base, &ids}, -1.0, &indexed), HullStatus::kOk);
-  ExpectValid(indexed, 1e-9);
-  EXPECT_GT(indexed.triangles.size(), 20000u);
-  EXPECT_EQ(indexed.vertices, expected.vertices);
-  EXPECT_EQ(indexed.triangles, expected.triangles);
-}
-
 TEST(ConvexHullTest, DegenerateInputs) {
   HullMesh h;
-  EXPECT_EQ(ComputeConvexHull(std::vector<Vec3>{}, -1.0, &h), HullStatus::kTooFewPoints);
+  EXPECT_EQ(ComputeConvexHull({}, -1.0, &h), HullStatus::kTooFewPoints);
   EXPECT_EQ(ComputeConvexHull({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}, -1.0, &h),
             HullStatus::kTooFewPoints);
   std::vector<Vec3> same(10, Vec3(1, 2, 3));

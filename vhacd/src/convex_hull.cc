@@ -24,42 +24,14 @@ struct Face {
 
 enum class Attempt { kOk, kRetry };
 
-// Faces in creation order, in blocks that never move. A vector's growth held the old and the new
-// array at once, three times the faces, on the hull of a whole large mesh.
-class FaceStore {
- public:
-  size_t size() const { return size_; }
-  Face& operator[](size_t i) { return blocks_[i >> kShift][i & kMask]; }
-  const Face& operator[](size_t i) const { return blocks_[i >> kShift][i & kMask]; }
-  void clear() {
-    blocks_.clear();
-    size_ = 0;
-  }
-  void push_back(Face&& f) {
-    if (blocks_.empty() || blocks_.back().size() == kBlock) {
-      blocks_.emplace_back();
-      // Most hulls are small: the first block grows as needed, the others are made whole.
-      blocks_.back().reserve(blocks_.size() == 1 ? 64 : kBlock);
-    }
-    blocks_.back().push_back(std::move(f));
-    ++size_;
-  }
-
- private:
-  static constexpr int kShift = 12;
-  static constexpr size_t kBlock = size_t(1) << kShift, kMask = kBlock - 1;
-  std::vector<std::vector<Face>> blocks_;
-  size_t size_ = 0;
-};
-
-template <typename Points>
 class QuickHull {
  public:
-  QuickHull(const Points& pts, double eps) : p_(pts), eps_(eps) {}
+  QuickHull(const std::vector<Vec3>& pts, double eps) : p_(pts), eps_(eps) {}
 
   // Returns kRetry on a topological inconsistency (tolerant mode only).
   Attempt Run(const uint32_t init[4], HullMesh* out) {
     faces_.clear();
+    faces_.reserve(64);
     const uint32_t a = init[0], b = init[1], c = init[2], d = init[3];
     AddFace(a, b, c);
     AddFace(a, d, b);
@@ -151,8 +123,7 @@ class QuickHull {
     out->vertices.clear();
     out->triangles.clear();
     std::vector<uint32_t> remap(p_.size(), UINT32_MAX);
-    for (size_t fi = 0; fi < faces_.size(); ++fi) {
-      const Face& f = faces_[fi];
+    for (const Face& f : faces_) {
       if (!f.alive) continue;
       std::array<uint32_t, 3> t;
       for (int i = 0; i < 3; ++i) {
@@ -165,10 +136,10 @@ class QuickHull {
       out->triangles.push_back(t);
     }
     // Every face must have live neighbours (closed surface).
-    for (size_t fi = 0; fi < faces_.size(); ++fi)
-      if (faces_[fi].alive)
+    for (const Face& f : faces_)
+      if (f.alive)
         for (int e = 0; e < 3; ++e)
-          if (faces_[fi].nb[e] < 0 || !faces_[faces_[fi].nb[e]].alive) return Attempt::kRetry;
+          if (f.nb[e] < 0 || !faces_[f.nb[e]].alive) return Attempt::kRetry;
     return Attempt::kOk;
   }
 
@@ -218,26 +189,9 @@ class QuickHull {
     if (best_f != end) faces_[best_f].outside.push_back(q);
   }
 
-  const Points& p_;
+  const std::vector<Vec3>& p_;
   double eps_;
-  FaceStore faces_;
-};
-
-// The points of an IndexedPoints set, read as one array.
-class IndexedPointsView {
- public:
-  explicit IndexedPointsView(const IndexedPoints& p)
-      : own_(*p.own), base_(*p.base), ids_(*p.ids), own_size_(p.own->size()) {}
-  size_t size() const { return own_size_ + ids_.size(); }
-  const Vec3& operator[](size_t i) const {
-    return i < own_size_ ? own_[i] : base_[ids_[i - own_size_]];
-  }
-
- private:
-  const std::vector<Vec3>& own_;
-  const std::vector<Vec3>& base_;
-  const std::vector<uint32_t>& ids_;
-  size_t own_size_;
+  std::vector<Face> faces_;
 };
 
 }  // namespace
@@ -260,22 +214,18 @@ const char* HullStatusName(HullStatus status) {
   return "unknown";
 }
 
-namespace {
-
-template <typename Points>
-HullStatus ComputeHull(const Points& points, double tolerance, HullMesh* out) {
+HullStatus ComputeConvexHull(const std::vector<Vec3>& points, double tolerance, HullMesh* out) {
   out->vertices.clear();
   out->triangles.clear();
   const size_t n = points.size();
-  for (size_t i = 0; i < n; ++i)
-    if (!points[i].allFinite()) return HullStatus::kNonFinite;
+  for (const Vec3& p : points)
+    if (!p.allFinite()) return HullStatus::kNonFinite;
   if (n < 4) return HullStatus::kTooFewPoints;
   if (n >= std::numeric_limits<uint32_t>::max()) return HullStatus::kFailed;
 
   Vec3 maxabs = Vec3::Zero();
   Vec3 lo = points[0], hi = points[0];
-  for (size_t i = 0; i < n; ++i) {
-    const Vec3& p = points[i];
+  for (const Vec3& p : points) {
     maxabs = maxabs.cwiseMax(p.cwiseAbs());
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
@@ -330,7 +280,7 @@ HullStatus ComputeHull(const Points& points, double tolerance, HullMesh* out) {
     uint32_t init[4] = {i0, i1, i2, i3};
     if (signed_best > 0) std::swap(init[1], init[2]);  // make (i0,i1,i2) face away from i3
 
-    QuickHull<Points> qh(points, eps);
+    QuickHull qh(points, eps);
     if (qh.Run(init, out) == Attempt::kOk) return HullStatus::kOk;
     if (tolerance == 0.0)
       eps = 1e-12 * (maxabs.sum() + (hi - lo).norm());
@@ -340,16 +290,6 @@ HullStatus ComputeHull(const Points& points, double tolerance, HullMesh* out) {
   out->vertices.clear();
   out->triangles.clear();
   return HullStatus::kFailed;
-}
-
-}  // namespace
-
-HullStatus ComputeConvexHull(const std::vector<Vec3>& points, double tolerance, HullMesh* out) {
-  return ComputeHull(points, tolerance, out);
-}
-
-HullStatus ComputeConvexHull(const IndexedPoints& points, double tolerance, HullMesh* out) {
-  return ComputeHull(IndexedPointsView(points), tolerance, out);
 }
 
 double HullMesh::Volume() const {

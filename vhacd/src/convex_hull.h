@@ -46,16 +46,6 @@ const char* HullStatusName(HullStatus status);
 
 HullStatus ComputeConvexHull(const std::vector<Vec3>& points, double tolerance, HullMesh* out);
 
-// The points `own`, then base[i] for each i of `ids`, in that order: the same hull as of those
-// points copied into one array, without the copy (a part that holds a whole mesh refers to its
-// vertices).
-struct IndexedPoints {
-  const std::vector<Vec3>* own;
-  const std::vector<Vec3>* base;
-  const std::vector<uint32_t>* ids;
-};
-HullStatus ComputeConvexHull(const IndexedPoints& points, double tolerance, HullMesh* out);
-
 // Half-space form of a hull: n.x <= d for every face (n unit length).
 struct HullPlanes {
   std::vector<Vec3> normals;

@@ -91,21 +91,6 @@ bool CutsContain(const std::vector<CutPlane>& cuts, const Vec3& p) {
     if (cut.n.dot(p) > cut.d) return false;
   return true;
 }
-
-// BuildPartHull's fallback when the hull of the part's surface points `pts` (the first
-// `before_surface` of them its corners) is flat or fails.
-HullMesh HullOfVoxelsIfFlat(const Part& part, size_t before_surface, std::vector<Vec3>* pts) {
-  // A sliver along an oriented cut can hold surface voxels whose surface lies across the plane:
-  // its voxels' hull would stick out of the solid by up to a voxel, and the surface is held by the
-  // part across the cut. It gets no hull.
-  if (!part.cuts.empty() && pts->size() == before_surface) return HullMesh();
-  PartHullPoints(part, false, pts);
-  HullMesh h;
-  if (ComputeConvexHull(*pts, 0.0, &h) != HullStatus::kOk) return HullMesh();
-  // A flat piece of surface (a sheet) gets the slab of its voxels, within its cuts.
-  if (!part.cuts.empty()) h = ClipHullToCuts(h, part.cuts);
-  return h;
-}
 }  // namespace
 
 HullMesh BuildPartHull(const Part& part, const TriangleIndex& index, const SolidCorners* corners) {
@@ -154,26 +139,11 @@ HullMesh BuildPartHull(const Part& part, const TriangleIndex& index, const Solid
     return (q.array() >= lo.array()).all() && (q.array() <= hi.array()).all();
   };
   // Triangles inside the box contribute their vertices (each once), the others their clipped
-  // polygon. A part that holds the whole mesh (the root: on a large mesh its points were the
-  // largest array of the decomposition) has every triangle inside and refers to its vertices.
-  const size_t before_surface = pts.size();
-  if (part.cuts.empty() && index.HoldsMesh(lo, hi)) {
-    std::vector<uint32_t> ids;
-    ids.reserve(mesh.points.size());
-    index.ForEachInBox(lo, hi, &stamp, mark, [&](uint32_t t) {
-      for (uint32_t v : mesh.triangles[t])
-        if (vstamp[v] != mark) {
-          vstamp[v] = mark;
-          ids.push_back(v);
-        }
-    });
-    HullMesh h;
-    if (ComputeConvexHull(IndexedPoints{&pts, &mesh.points, &ids}, -1.0, &h) == HullStatus::kOk &&
-        h.Volume() > 1e-3)
-      return h;
-    return HullOfVoxelsIfFlat(part, before_surface, &pts);  // replaces pts by the voxels' points
-  }
+  // polygon. A part that holds the whole mesh (the root, on a large mesh the largest array of the
+  // decomposition) gets room for every vertex at once rather than by doubling.
+  if (part.cuts.empty() && index.HoldsMesh(lo, hi)) pts.reserve(pts.size() + mesh.points.size());
   std::vector<Vec3> poly;
+  const size_t before_surface = pts.size();
   index.ForEachInBox(lo, hi, &stamp, mark, [&](uint32_t t) {
     const auto& tr = mesh.triangles[t];
     if (!part.cuts.empty()) {
@@ -194,7 +164,15 @@ HullMesh BuildPartHull(const Part& part, const TriangleIndex& index, const Solid
   });
   HullMesh h;
   if (ComputeConvexHull(pts, -1.0, &h) == HullStatus::kOk && h.Volume() > 1e-3) return h;
-  return HullOfVoxelsIfFlat(part, before_surface, &pts);
+  // A sliver along an oriented cut can hold surface voxels whose surface lies across the plane:
+  // its voxels' hull would stick out of the solid by up to a voxel, and the surface is held by the
+  // part across the cut. It gets no hull.
+  if (!part.cuts.empty() && pts.size() == before_surface) return HullMesh();
+  PartHullPoints(part, false, &pts);
+  if (ComputeConvexHull(pts, 0.0, &h) != HullStatus::kOk) return HullMesh();
+  // A flat piece of surface (a sheet) gets the slab of its voxels, within its cuts.
+  if (!part.cuts.empty()) h = ClipHullToCuts(h, part.cuts);
+  return h;
 }
 
 }  // namespace internal
