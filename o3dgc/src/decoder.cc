@@ -45,7 +45,6 @@ struct DecodeState {
   std::vector<uint8_t> rotation;
   // Quantized positions per position vertex.
   std::vector<int32_t> qpos;
-  bool low_memory = false;  // DecodeOptions::low_memory
 };
 
 // The stream header, the checksum, the counts and descriptors, checked against the limits and
@@ -198,10 +197,6 @@ Status DecodePositions(DecodeState& st, DecodedMesh* m) {
     WedgeTable wedges;
     if (h.position.prediction == Prediction::kParallelogram) {
       wedges.BuildFromOppositeVertices(st.tris, st.nw, st.opposite_vertices, &st.vertex_triangles);
-    }
-    if (st.low_memory) {  // read by nothing after the wedge table
-      std::vector<uint32_t>().swap(st.opposite_vertices);
-      std::vector<uint32_t>().swap(st.vertex_triangles);
     }
     const Status s =
         DecodeQuantized(&st.dec, &wedges, st.nw, 3, h.position.bits, h.position.prediction,
@@ -430,7 +425,6 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
                     DecodedMesh* out, StreamInfo* info) {
   auto progress = [&](float f) { return !options.progress || options.progress(f); };
   DecodeState st;
-  st.low_memory = options.low_memory;
   Status s = DecodeHeaders(data, size, options, st);
   if (s != Status::kOk) return s;
   ArithmeticDecoder& dec = st.dec;

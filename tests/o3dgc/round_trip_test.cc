@@ -173,39 +173,6 @@ TEST(RoundTrip, DefaultModeKeepsTriangleSet) {
   }
 }
 
-TestMesh SeamedGrid(bool hard);  // below
-
-// DecodeOptions::low_memory frees working arrays early and changes nothing in the mesh: with seams
-// and attributes, groups, keep_order and fast_decode streams.
-TEST(RoundTrip, LowMemoryDecodesTheSameMesh) {
-  std::vector<TestMesh> meshes = AllMeshes();
-  meshes.push_back(SeamedGrid(true));
-  meshes.push_back(o3dgc_test::PocketPlate(3, 2));
-  for (const TestMesh& t : meshes) {
-    for (int mode = 0; mode < 3; ++mode) {
-      EncodeParams p;
-      p.keep_order = mode == 1;
-      p.fast_decode = mode == 2;
-      const auto s = EncodeOk(t, p);
-      DecodeOptions lean;
-      lean.low_memory = true;
-      DecodedMesh a, b;
-      ASSERT_EQ(Decode(s.data(), s.size(), DecodeOptions(), &a), Status::kOk);
-      ASSERT_EQ(Decode(s.data(), s.size(), lean, &b), Status::kOk);
-      EXPECT_EQ(a.positions, b.positions);
-      EXPECT_EQ(a.indices, b.indices);
-      EXPECT_EQ(a.normals, b.normals);
-      EXPECT_EQ(a.triangle_groups, b.triangle_groups);
-      ASSERT_EQ(a.float_attributes.size(), b.float_attributes.size());
-      for (size_t k = 0; k < a.float_attributes.size(); ++k)
-        EXPECT_EQ(a.float_attributes[k].values, b.float_attributes[k].values);
-      ASSERT_EQ(a.int_attributes.size(), b.int_attributes.size());
-      for (size_t k = 0; k < a.int_attributes.size(); ++k)
-        EXPECT_EQ(a.int_attributes[k].values, b.int_attributes[k].values);
-    }
-  }
-}
-
 // Format 1.2's modelled low bits: taken by a grid-built model (version 1.2, flag reported by
 // ReadStreamInfo), left out where they do not pay (a smooth sphere stays a 1.1 stream).
 TEST(RoundTrip, ModelledLowBitsOnlyWhereTheyPay) {
@@ -231,6 +198,8 @@ TEST(RoundTrip, ModelledLowBitsOnlyWhereTheyPay) {
     CheckTriangleSet(t, m, p.position_bits);
   }
 }
+
+TestMesh SeamedGrid(bool hard);  // below
 
 // A GridEncoder's stream for a grid is Encode's with that grid, byte for byte, and its part sizes
 // too: every grid of every mode, grids encoded in any order from one Prepare, with seams, normals,

@@ -5,8 +5,8 @@
 namespace hullpack {
 
 o3dgc::Status DecodePackedStream(const uint8_t* data, size_t size, o3dgc::DecodedMesh* mesh,
-                                 o3dgc::StreamInfo* info, const o3dgc::DecodeOptions& options) {
-  const o3dgc::Status st = o3dgc::Decode(data, size, options, mesh, info);
+                                 o3dgc::StreamInfo* info) {
+  const o3dgc::Status st = o3dgc::Decode(data, size, o3dgc::DecodeOptions(), mesh, info);
   if (st != o3dgc::Status::kOk) return st;
   for (o3dgc::DecodedFloatAttribute& a : mesh->float_attributes) {
     if (a.semantic == o3dgc::Semantic::kWeight && a.dimension == 4)

@@ -43,8 +43,7 @@ std::vector<float> DequantizeHull(const HullGrid& grid);
 // attribute of semantic weight with 4 components is normalized per vertex (NormalizeSkinWeights),
 // so that WEIGHTS_0 sums to 1 as glTF wants. Safe on untrusted bytes.
 o3dgc::Status DecodePackedStream(const uint8_t* data, size_t size, o3dgc::DecodedMesh* mesh,
-                                 o3dgc::StreamInfo* info = nullptr,
-                                 const o3dgc::DecodeOptions& options = o3dgc::DecodeOptions());
+                                 o3dgc::StreamInfo* info = nullptr);
 
 }  // namespace hullpack
 

@@ -167,9 +167,8 @@ Result<BudgetedEncoding> EncodeOnGrids(const Mesh& mesh, const std::vector<uint3
   }
   Candidate& chosen = candidates[best];
   t = Clock::now();
-  Result<Mesh> decoded =
-      DecodeMesh(chosen.encoded->stream.data(), chosen.encoded->stream.size(), &out.groups,
-                 mesh.name, nullptr, &chosen.encoded->gltf_targets, LowMemoryDecodeOptions());
+  Result<Mesh> decoded = DecodeMesh(chosen.encoded->stream.data(), chosen.encoded->stream.size(),
+                                    &out.groups, mesh.name, nullptr, &chosen.encoded->gltf_targets);
   if (!decoded.ok()) {
     return Status(StatusCode::kInternal,
                   "mesh '" + mesh.name + "' does not decode: " + decoded.status().message());

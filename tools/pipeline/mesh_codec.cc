@@ -186,12 +186,11 @@ Result<EncodedMesh> EncodeMesh(const Mesh& mesh, const std::vector<uint32_t>& gr
 
 Result<Mesh> DecodeMesh(const uint8_t* data, size_t size, std::vector<uint32_t>* groups,
                         const std::string& name, o3dgc::StreamInfo* info,
-                        const std::vector<std::vector<std::pair<std::string, int>>>* targets,
-                        const o3dgc::DecodeOptions& options) {
+                        const std::vector<std::vector<std::pair<std::string, int>>>* targets) {
   o3dgc::DecodedMesh d;
   o3dgc::StreamInfo local_info;
   if (!info) info = &local_info;
-  const o3dgc::Status st = DecodePackedStream(data, size, &d, info, options);
+  const o3dgc::Status st = DecodePackedStream(data, size, &d, info);
   if (st != o3dgc::Status::kOk) {
     return Status(StatusCode::kParseError,
                   name + ": compressed mesh stream: " + o3dgc::StatusName(st));
@@ -253,12 +252,6 @@ Result<Mesh> DecodeMesh(const uint8_t* data, size_t size, std::vector<uint32_t>*
   }
   if (groups) *groups = std::move(d.triangle_groups);
   return m;
-}
-
-o3dgc::DecodeOptions LowMemoryDecodeOptions() {
-  o3dgc::DecodeOptions options;
-  options.low_memory = true;
-  return options;
 }
 
 Mesh ExtractGroup(const Mesh& mesh, const std::vector<uint32_t>& groups, uint32_t group) {

@@ -79,17 +79,11 @@ Result<EncodedMesh> EncodeMesh(const Mesh& mesh, const std::vector<uint32_t>& gr
 // coordinates: their v is flipped into the scene model's (glTF) convention. Safe on untrusted
 // bytes; `name` prefixes error messages. `info` (may be null) gets the part sizes.
 // `targets` (may be null): which stream attributes hold each morph target's offsets
-// (EncodedMesh::gltf_targets); a stream alone does not say. `options`: the decoder's (limits,
-// low_memory).
+// (EncodedMesh::gltf_targets); a stream alone does not say.
 Result<Mesh> DecodeMesh(
     const uint8_t* data, size_t size, std::vector<uint32_t>* groups, const std::string& name,
     o3dgc::StreamInfo* info = nullptr,
-    const std::vector<std::vector<std::pair<std::string, int>>>* targets = nullptr,
-    const o3dgc::DecodeOptions& options = o3dgc::DecodeOptions());
-
-// Options for the decode that checks a stream just encoded: it runs beside the decomposition,
-// where the peak memory matters more than its speed.
-o3dgc::DecodeOptions LowMemoryDecodeOptions();
+    const std::vector<std::vector<std::pair<std::string, int>>>* targets = nullptr);
 
 // The triangles whose group is `group`, with the vertices they use renumbered in increasing order
 // of their index in `mesh` (the HULLPACK_mesh_compression `group` rule).

@@ -156,9 +156,8 @@ Status EncodeRenderMesh(const Mesh& mesh, const PackOptions& options, int thread
     if (!stream.ok()) return stream.status();
     e.seconds_encode = Seconds(t);
     t = Clock::now();
-    Result<Mesh> decoded =
-        DecodeMesh(stream->stream.data(), stream->stream.size(), &e.groups, mesh.name, nullptr,
-                   &stream->gltf_targets, LowMemoryDecodeOptions());
+    Result<Mesh> decoded = DecodeMesh(stream->stream.data(), stream->stream.size(), &e.groups,
+                                      mesh.name, nullptr, &stream->gltf_targets);
     if (!decoded.ok())
       return Status(StatusCode::kInternal,
                     "mesh '" + mesh.name + "' does not decode: " + decoded.status().message());

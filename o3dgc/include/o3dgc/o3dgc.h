@@ -186,11 +186,6 @@ struct DecodeOptions {
   size_t max_vertices = size_t(1) << 28;
   size_t max_triangles = size_t(1) << 28;
   ProgressFn progress;  // optional
-  // Frees the connectivity's working arrays (the vertex across each edge, 12 bytes per triangle)
-  // as soon as the positions' predictors are built, instead of at the end: a lower peak for a
-  // caller that decodes beside other work, at the cost of slower decoding (the arrays made after
-  // then take fresh memory from the system). The decoded mesh is the same.
-  bool low_memory = false;
 };
 
 struct DecodedFloatAttribute {
