@@ -69,6 +69,43 @@ bool HullContains(const HullMesh& h, const Vec3& p, double tol) {
   return true;
 }
 
+// PartHulls gives BuildPartHull's hull for every part: the whole set's (built once), a half's,
+// and that of a part holding every voxel but bounded by a cut, which is not the whole set's.
+TEST(PartHullTest, PartHullsGivesEachPartItsOwnHull) {
+  const vhacd_test::Mesh box = vhacd_test::Box(2.3, 2.2, 2.1, 7.6, 5.9, 4.8);
+  const GridMesh g = vhacd_test::ToGridMesh(box);
+  const int dims[3] = {10, 8, 7};
+  Part whole, half;
+  for (int z = 2; z <= 4; ++z)
+    for (int y = 2; y <= 5; ++y)
+      for (int x = 2; x <= 7; ++x) {
+        Voxel v;
+        v.c[0] = static_cast<uint16_t>(x);
+        v.c[1] = static_cast<uint16_t>(y);
+        v.c[2] = static_cast<uint16_t>(z);
+        v.surface = (x == 2 || x == 7 || y == 2 || y == 5 || z == 2 || z == 4);
+        whole.voxels.push_back(v);
+        if (x <= 4) half.voxels.push_back(v);
+      }
+  whole.ComputeBounds();
+  half.ComputeBounds();
+  Part cut = whole;
+  cut.cuts.push_back(CutPlane{Vec3(1, 0, 0), 5.5});  // x <= 5.5
+  const TriangleIndex index(g, dims, 4);
+  PartHulls hulls(whole, index, nullptr);
+  for (int round = 0; round < 2; ++round) {
+    for (const Part* p : {&whole, &half, &cut}) {
+      const HullMesh expected = BuildPartHull(*p, index);
+      const HullMesh got = hulls.Of(*p);
+      ASSERT_FALSE(got.empty());
+      EXPECT_EQ(got.vertices, expected.vertices);
+      EXPECT_EQ(got.triangles, expected.triangles);
+    }
+  }
+  EXPECT_NEAR(hulls.Of(whole).Volume(), (7.6 - 2.3) * (5.9 - 2.2) * (4.8 - 2.1), 1e-9);
+  EXPECT_LT(hulls.Of(cut).Volume(), hulls.Of(whole).Volume() - 1.0);
+}
+
 TEST(PartHullTest, InsideCornersOfSurfaceVoxelsReachTheCut) {
   // An L-shaped prism (grid units): a floor x in [0.25, 6.25], y in [0.25, 4.75] and a wall x in
   // [4.75, 6.25] up to y = 10.25, z in [0.5, 9.5]. The part is cut at x = 5, y = 6, z = 3 and z =

@@ -67,6 +67,11 @@ bool MeasureParts(const std::vector<Part>& current, const ClipParams& params, bo
   return true;
 }
 
+HullMesh HullOf(const Part& part, const ClipParams& params) {
+  return params.part_hulls != nullptr ? params.part_hulls->Of(part)
+                                      : BuildPartHull(part, *params.index, params.corners);
+}
+
 // stick[i] for every i in `which`: how far part i's hull sticks out of the exact surface (any
 // value above `limit` once known to exceed it).
 bool MeasureStick(const std::vector<Part>& parts, const std::vector<uint32_t>& which,
@@ -75,7 +80,7 @@ bool MeasureStick(const std::vector<Part>& parts, const std::vector<uint32_t>& w
   stick->resize(parts.size(), 0.0);
   if (params.meter == nullptr || params.index == nullptr) return true;
   return ParallelFor(ctx, which.size(), [&](size_t k) {
-    const HullMesh h = BuildPartHull(parts[which[k]], *params.index, params.corners);
+    const HullMesh h = HullOf(parts[which[k]], params);
     (*stick)[which[k]] = h.empty() ? 0.0 : params.meter->Measure(h, limit);
   });
 }
@@ -256,7 +261,7 @@ bool CutParts(std::vector<Part>* current_io, const std::vector<uint32_t>& split,
             const double limit =
                 kind == 0 ? 1e30
                           : kOrientedGain * std::max(trial_stick[4 * i], trial_stick[4 * i + 1]);
-            const HullMesh h = BuildPartHull(trial[t], *params.index, params.corners);
+            const HullMesh h = HullOf(trial[t], params);
             trial_stick[t] = h.empty() ? 0.0 : params.meter->Measure(h, limit);
           }))
         return false;

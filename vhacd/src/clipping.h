@@ -28,6 +28,9 @@ struct ClipParams {
   const class StickOutMeter* meter = nullptr;
   const class TriangleIndex* index = nullptr;
   const class SolidCorners* corners = nullptr;  // passed to BuildPartHull
+  // When set, the part hulls are taken from it (built on `index` with `corners`), which builds the
+  // whole set's hull once.
+  class PartHulls* part_hulls = nullptr;
   double max_stick = 0.0;
   // Also try planes along each part's own axes (oriented_cuts.h), kept where they give closer
   // hulls on the exact surface (needs meter and index).

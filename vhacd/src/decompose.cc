@@ -367,6 +367,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   const bool can_orient = exact_measure && input.closed;
   const bool compare_orientations = can_orient && params.oriented_cuts == OrientedCuts::kAuto;
   bool oriented = can_orient && params.oriented_cuts == OrientedCuts::kAlways;
+  internal::PartHulls part_hulls(root, index, exact_count && input.closed ? &corners : nullptr);
   std::vector<internal::HullMesh> hulls;
   int clip_levels = 0;
   // A run with oriented cuts whose clipping kept none made the slices' parts: it stops there and
@@ -390,6 +391,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     cp.meter = meter.get();
     cp.index = &index;
     cp.corners = exact_count && input.closed ? &corners : nullptr;
+    cp.part_hulls = &part_hulls;
     cp.oriented_cuts = oriented;
     // On an open surface the side is only known per voxel: for max_concavity the exact measure
     // splits only from the second attempt on, kept when it gets closer (on scans with filled
@@ -420,9 +422,8 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     // One hull per part.
     ctx.BeginStage("Hull generation", 60, 75);
     hulls.assign(clip.parts.size(), internal::HullMesh());
-    if (!internal::ParallelFor(&ctx, clip.parts.size(), [&](size_t i) {
-          hulls[i] = internal::BuildPartHull(clip.parts[i], index, cp.corners);
-        }))
+    if (!internal::ParallelFor(&ctx, clip.parts.size(),
+                               [&](size_t i) { hulls[i] = part_hulls.Of(clip.parts[i]); }))
       return Status::kCancelled;
     hulls.erase(std::remove_if(hulls.begin(), hulls.end(),
                                [](const internal::HullMesh& h) { return h.empty(); }),

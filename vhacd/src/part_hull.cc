@@ -175,5 +175,18 @@ HullMesh BuildPartHull(const Part& part, const TriangleIndex& index, const Solid
   return h;
 }
 
+HullMesh PartHulls::Of(const Part& part) {
+  // Parts are subsets of the whole set: one without cuts holding all its voxels is the whole set
+  // (same voxels, in the same order, so the same points for the hull).
+  if (!part.cuts.empty() || part.voxels.size() != whole_voxels_)
+    return BuildPartHull(part, index_, corners_);
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (!built_) {
+    whole_hull_ = BuildPartHull(part, index_, corners_);
+    built_ = true;
+  }
+  return whole_hull_;
+}
+
 }  // namespace internal
 }  // namespace vhacd

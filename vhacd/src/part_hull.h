@@ -7,6 +7,7 @@
 #define VHACD_SRC_PART_HULL_H_
 
 #include <cstdint>
+#include <mutex>
 #include <vector>
 
 #include "convex_hull.h"
@@ -57,6 +58,24 @@ void ClipTriangleToBox(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& 
 // solid_corners.h: without them a thin wall's hull stops short of the cut).
 HullMesh BuildPartHull(const Part& part, const TriangleIndex& index,
                        const SolidCorners* corners = nullptr);
+
+// BuildPartHull for the parts of one decomposition, with the hull of its whole voxel set built
+// once: the first clipping level of every attempt and orientation, and a part left whole, all
+// ask for that hull, and on a large closed mesh it is the costliest one. Thread-safe.
+class PartHulls {
+ public:
+  PartHulls(const Part& whole, const TriangleIndex& index, const SolidCorners* corners)
+      : whole_voxels_(whole.voxels.size()), index_(index), corners_(corners) {}
+  HullMesh Of(const Part& part);
+
+ private:
+  size_t whole_voxels_;
+  const TriangleIndex& index_;
+  const SolidCorners* corners_;
+  std::mutex mutex_;
+  bool built_ = false;
+  HullMesh whole_hull_;
+};
 
 template <typename Fn>
 void TriangleIndex::ForEachInBox(const Vec3& lo, const Vec3& hi, std::vector<uint8_t>* stamp,
