@@ -12,6 +12,15 @@ namespace vhacd {
 namespace internal {
 namespace {
 
+Voxel VoxelAt(int x, int y, int z, bool surface) {
+  Voxel v;
+  v.c[0] = static_cast<uint16_t>(x);
+  v.c[1] = static_cast<uint16_t>(y);
+  v.c[2] = static_cast<uint16_t>(z);
+  v.surface = surface;
+  return v;
+}
+
 TEST(PartHullTest, ClipTriangleToBox) {
   std::vector<Vec3> out;
   // Fully inside: unchanged.
@@ -43,14 +52,8 @@ TEST(PartHullTest, HullOfAPartHugsTheSurfaceInsideItsBox) {
   Part part;
   for (int z = 2; z <= 4; ++z)
     for (int y = 2; y <= 5; ++y)
-      for (int x = 2; x <= 4; ++x) {
-        Voxel v;
-        v.c[0] = static_cast<uint16_t>(x);
-        v.c[1] = static_cast<uint16_t>(y);
-        v.c[2] = static_cast<uint16_t>(z);
-        v.surface = (x == 2 || y == 2 || y == 5 || z == 2 || z == 4);
-        part.voxels.push_back(v);
-      }
+      for (int x = 2; x <= 4; ++x)
+        part.voxels.push_back(VoxelAt(x, y, z, x == 2 || y == 2 || y == 5 || z == 2 || z == 4));
   part.ComputeBounds();
   const TriangleIndex index(g, dims, 4);
   const HullMesh h = BuildPartHull(part, index);
@@ -79,11 +82,7 @@ TEST(PartHullTest, PartHullsGivesEachPartItsOwnHull) {
   for (int z = 2; z <= 4; ++z)
     for (int y = 2; y <= 5; ++y)
       for (int x = 2; x <= 7; ++x) {
-        Voxel v;
-        v.c[0] = static_cast<uint16_t>(x);
-        v.c[1] = static_cast<uint16_t>(y);
-        v.c[2] = static_cast<uint16_t>(z);
-        v.surface = (x == 2 || x == 7 || y == 2 || y == 5 || z == 2 || z == 4);
+        const Voxel v = VoxelAt(x, y, z, x == 2 || x == 7 || y == 2 || y == 5 || z == 2 || z == 4);
         whole.voxels.push_back(v);
         if (x <= 4) half.voxels.push_back(v);
       }
@@ -136,13 +135,7 @@ TEST(PartHullTest, InsideCornersOfSurfaceVoxelsReachTheCut) {
     for (int y = 0; y <= 5; ++y)
       for (int x = 0; x <= 4; ++x) {
         const uint8_t c = grid.cell[grid.Index(x, y, z)];
-        if (c == kCellOutside) continue;
-        Voxel v;
-        v.c[0] = static_cast<uint16_t>(x);
-        v.c[1] = static_cast<uint16_t>(y);
-        v.c[2] = static_cast<uint16_t>(z);
-        v.surface = c == kCellSurface;
-        part.voxels.push_back(v);
+        if (c != kCellOutside) part.voxels.push_back(VoxelAt(x, y, z, c == kCellSurface));
       }
   part.ComputeBounds();
   const TriangleIndex index(g, dims, 4);
@@ -168,14 +161,7 @@ TEST(PartHullTest, TheSameHullAfterManyPartsOnOneThread) {
   const vhacd_test::Mesh box = vhacd_test::Box(1.3, 1.2, 1.1, 6.6, 4.9, 3.8);
   const GridMesh g = vhacd_test::ToGridMesh(box);
   const int dims[3] = {8, 6, 5};
-  auto voxel = [](int x, int y, int z) {
-    Voxel v;
-    v.c[0] = static_cast<uint16_t>(x);
-    v.c[1] = static_cast<uint16_t>(y);
-    v.c[2] = static_cast<uint16_t>(z);
-    v.surface = true;
-    return v;
-  };
+  auto voxel = [](int x, int y, int z) { return VoxelAt(x, y, z, true); };
   Part whole;  // every voxel: the whole mesh lies inside the part's box
   for (int z = 0; z < dims[2]; ++z)
     for (int y = 0; y < dims[1]; ++y)

@@ -42,13 +42,19 @@ GridPlacement ChooseGrid(const Vec3& bmin, const Vec3& bmax, uint32_t resolution
   return g;
 }
 
-bool TriangleBoxOverlap(const Vec3& center, double half, const Vec3& a, const Vec3& b,
-                        const Vec3& c) {
+namespace {
+
+// The separating-axis test of triangle abc against the axis-aligned box centre +/- half (per
+// axis); radius(axis) is the box's projection radius on any axis. A template so that the voxel
+// test keeps its own arithmetic (one half for all axes) exactly.
+template <typename Radius>
+bool SeparatingAxisOverlap(const Vec3& center, const Vec3& half, Radius radius, const Vec3& a,
+                           const Vec3& b, const Vec3& c) {
   const Vec3 v0 = a - center, v1 = b - center, v2 = c - center;
   // Box face normals.
   for (int k = 0; k < 3; ++k) {
     const double mn = std::min({v0[k], v1[k], v2[k]}), mx = std::max({v0[k], v1[k], v2[k]});
-    if (mn > half || mx < -half) return false;
+    if (mn > half[k] || mx < -half[k]) return false;
   }
   const Vec3 e[3] = {v1 - v0, v2 - v1, v0 - v2};
   // Edge x box-axis cross products.
@@ -58,43 +64,36 @@ bool TriangleBoxOverlap(const Vec3& center, double half, const Vec3& a, const Ve
       axis[k] = 1.0;
       axis = axis.cross(e[i]);
       const double p0 = axis.dot(v0), p1 = axis.dot(v1), p2 = axis.dot(v2);
-      const double r = half * (std::fabs(axis[0]) + std::fabs(axis[1]) + std::fabs(axis[2]));
+      const double r = radius(axis);
       if (std::min({p0, p1, p2}) > r || std::max({p0, p1, p2}) < -r) return false;
     }
   // Triangle plane.
   const Vec3 n = e[0].cross(e[1]);
-  const double d = n.dot(v0);
-  const double r = half * (std::fabs(n[0]) + std::fabs(n[1]) + std::fabs(n[2]));
-  return std::fabs(d) <= r;
+  return std::fabs(n.dot(v0)) <= radius(n);
+}
+
+}  // namespace
+
+bool TriangleBoxOverlap(const Vec3& center, double half, const Vec3& a, const Vec3& b,
+                        const Vec3& c) {
+  const auto radius = [half](const Vec3& axis) {
+    return half * (std::fabs(axis[0]) + std::fabs(axis[1]) + std::fabs(axis[2]));
+  };
+  return SeparatingAxisOverlap(center, Vec3::Constant(half), radius, a, b, c);
 }
 
 bool TriangleMayMeetVoxels(const int lo[3], const int hi[3], const Vec3& a, const Vec3& b,
                            const Vec3& c) {
   // The range's box, widened far beyond the rounding of the tests on its voxels (coordinates are
-  // voxel indices): TriangleBoxOverlap's own arithmetic, with a half-extent per axis.
+  // voxel indices).
   constexpr double kMargin = 1e-6;
   Vec3 center, half;
   for (int k = 0; k < 3; ++k) {
     center[k] = 0.5 * (double(lo[k]) + double(hi[k]) + 1.0);
     half[k] = 0.5 * (double(hi[k]) - double(lo[k]) + 1.0) + kMargin;
   }
-  const Vec3 v0 = a - center, v1 = b - center, v2 = c - center;
-  for (int k = 0; k < 3; ++k) {
-    const double mn = std::min({v0[k], v1[k], v2[k]}), mx = std::max({v0[k], v1[k], v2[k]});
-    if (mn > half[k] || mx < -half[k]) return false;
-  }
-  const Vec3 e[3] = {v1 - v0, v2 - v1, v0 - v2};
-  for (int i = 0; i < 3; ++i)
-    for (int k = 0; k < 3; ++k) {
-      Vec3 axis = Vec3::Zero();
-      axis[k] = 1.0;
-      axis = axis.cross(e[i]);
-      const double p0 = axis.dot(v0), p1 = axis.dot(v1), p2 = axis.dot(v2);
-      const double r = half.dot(axis.cwiseAbs());
-      if (std::min({p0, p1, p2}) > r || std::max({p0, p1, p2}) < -r) return false;
-    }
-  const Vec3 n = e[0].cross(e[1]);
-  return std::fabs(n.dot(v0)) <= half.dot(n.cwiseAbs());
+  const auto radius = [&half](const Vec3& axis) { return half.dot(axis.cwiseAbs()); };
+  return SeparatingAxisOverlap(center, half, radius, a, b, c);
 }
 
 namespace {
