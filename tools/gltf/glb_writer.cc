@@ -73,12 +73,15 @@ std::vector<uint8_t> Bytes(const void* data, size_t size) {
   return std::vector<uint8_t>(p, p + size);
 }
 
-// Adds a tightly packed vertex-attribute bufferView + accessor for `values` (`width` per vertex).
+// Adds a tightly packed vertex-attribute bufferView + accessor for `values` (`width` per vertex);
+// without `write_data`, the accessor alone.
 int AddFloatAttribute(GltfDocument* doc, const std::vector<float>& values, int width,
-                      const char* type, bool with_bounds) {
+                      const char* type, bool with_bounds, bool write_data) {
   AccessorDesc desc;
-  desc.buffer_view =
-      doc->AddBufferView(values.data(), values.size() * sizeof(float), 4, gltf::kArrayBuffer);
+  if (write_data) {
+    desc.buffer_view =
+        doc->AddBufferView(values.data(), values.size() * sizeof(float), 4, gltf::kArrayBuffer);
+  }
   desc.component_type = gltf::kFloat;
   desc.count = values.size() / static_cast<size_t>(width);
   desc.type = type;
@@ -846,16 +849,17 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
     const Mesh& m = scene.meshes[mi];
     GltfSceneLayout::MeshLayout& ml = out.meshes[mi];
     const size_t vc = m.vertex_count();
+    const bool write_data = mi >= options.data_elsewhere.size() || !options.data_elsewhere[mi];
     json attributes = json::object();
-    ml.position_accessor = AddFloatAttribute(doc, m.positions, 3, "VEC3", true);
+    ml.position_accessor = AddFloatAttribute(doc, m.positions, 3, "VEC3", true, write_data);
     attributes["POSITION"] = ml.position_accessor;
     if (!m.normals.empty())
-      attributes["NORMAL"] = AddFloatAttribute(doc, m.normals, 3, "VEC3", false);
+      attributes["NORMAL"] = AddFloatAttribute(doc, m.normals, 3, "VEC3", false, write_data);
     if (!m.tangents.empty())
-      attributes["TANGENT"] = AddFloatAttribute(doc, m.tangents, 4, "VEC4", false);
+      attributes["TANGENT"] = AddFloatAttribute(doc, m.tangents, 4, "VEC4", false, write_data);
     for (size_t u = 0; u < m.uv_sets.size(); ++u) {
       attributes["TEXCOORD_" + std::to_string(u)] =
-          AddFloatAttribute(doc, m.uv_sets[u], 2, "VEC2", false);
+          AddFloatAttribute(doc, m.uv_sets[u], 2, "VEC2", false, write_data);
     }
     // A material texture read through a UV set the mesh lacks makes the primitive invalid glTF, so
     // the missing sets are added as zero-filled accessors (no bufferView, no bytes) and the reader
@@ -868,32 +872,32 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
       attributes["TEXCOORD_" + std::to_string(u)] = doc->AddAccessor(zeros);
     }
     if (!m.colors.empty())
-      attributes["COLOR_0"] = AddFloatAttribute(doc, m.colors, 4, "VEC4", false);
+      attributes["COLOR_0"] = AddFloatAttribute(doc, m.colors, 4, "VEC4", false, write_data);
     if (!m.joints.empty()) {
       const bool bytes =
           options.compact_joints && *std::max_element(m.joints.begin(), m.joints.end()) < 256;
       AccessorDesc desc;
-      if (bytes) {
+      desc.component_type = bytes ? gltf::kUnsignedByte : gltf::kUnsignedShort;
+      if (write_data && bytes) {
         std::vector<uint8_t> packed(m.joints.begin(), m.joints.end());
         desc.buffer_view = doc->AddBufferView(packed, 4, gltf::kArrayBuffer);
-        desc.component_type = gltf::kUnsignedByte;
-      } else {
+      } else if (write_data) {
         desc.buffer_view = doc->AddBufferView(m.joints.data(), m.joints.size() * sizeof(uint16_t),
                                               4, gltf::kArrayBuffer);
-        desc.component_type = gltf::kUnsignedShort;
       }
       desc.count = vc;
       desc.type = "VEC4";
       attributes["JOINTS_0"] = doc->AddAccessor(desc);
-      attributes["WEIGHTS_0"] = AddFloatAttribute(doc, m.weights, 4, "VEC4", false);
+      attributes["WEIGHTS_0"] = AddFloatAttribute(doc, m.weights, 4, "VEC4", false, write_data);
     }
 
     // Morph targets: accessors shared by the primitives, as the vertex attributes are.
     json targets = json::array();
     for (const MorphTarget& t : m.morph_targets) {
-      json target = {{"POSITION", AddFloatAttribute(doc, t.positions, 3, "VEC3", true)}};
+      json target = {
+          {"POSITION", AddFloatAttribute(doc, t.positions, 3, "VEC3", true, write_data)}};
       if (!t.normals.empty())
-        target["NORMAL"] = AddFloatAttribute(doc, t.normals, 3, "VEC3", false);
+        target["NORMAL"] = AddFloatAttribute(doc, t.normals, 3, "VEC3", false, write_data);
       targets.push_back(std::move(target));
     }
 
@@ -918,14 +922,14 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
     for (const auto& group : groups) {
       std::vector<uint8_t> index_bytes;
       const size_t n = group.second.size() * 3;
-      if (short_indices) {
+      if (write_data && short_indices) {
         std::vector<uint16_t> idx(n);
         for (size_t k = 0; k < group.second.size(); ++k) {
           for (size_t c = 0; c < 3; ++c)
             idx[3 * k + c] = static_cast<uint16_t>(m.indices[3 * group.second[k] + c]);
         }
         index_bytes = Bytes(idx.data(), idx.size() * sizeof(uint16_t));
-      } else {
+      } else if (write_data) {
         std::vector<uint32_t> idx(n);
         for (size_t k = 0; k < group.second.size(); ++k) {
           for (size_t c = 0; c < 3; ++c) idx[3 * k + c] = m.indices[3 * group.second[k] + c];
@@ -933,7 +937,8 @@ Status BuildGltfDocument(const Scene& scene, const GlbWriteOptions& options, Glt
         index_bytes = Bytes(idx.data(), idx.size() * sizeof(uint32_t));
       }
       AccessorDesc desc;
-      desc.buffer_view = doc->AddBufferView(index_bytes, 4, gltf::kElementArrayBuffer);
+      if (write_data)
+        desc.buffer_view = doc->AddBufferView(index_bytes, 4, gltf::kElementArrayBuffer);
       desc.component_type = short_indices ? gltf::kUnsignedShort : gltf::kUnsignedInt;
       desc.count = n;
       desc.type = "SCALAR";

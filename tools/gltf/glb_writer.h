@@ -49,6 +49,10 @@ struct GlbWriteOptions {
   // weights through its exponential filter (16-bit mantissas: within 2^-15 of each key's largest
   // component). See meshopt_deflate.h.
   bool compress_animations = false;
+  // Per scene mesh (missing entries: false), whether an extension supplies its vertex data and
+  // indices: their accessors keep their count, type and POSITION bounds but get no bufferView,
+  // and none of their bytes are written (a packed file's streams).
+  std::vector<bool> data_elsewhere;
 };
 
 // Where BuildGltfDocument put each scene object.

@@ -1,10 +1,12 @@
 #include "packed/packed_glb_writer.h"
 
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
 #include "gltf/buffer_compaction.h"
 #include "gltf/glb_writer.h"
-
-#include <algorithm>
-#include <cstring>
 
 namespace hullpack {
 namespace {
@@ -52,6 +54,43 @@ void CompressPrimitives(GltfDocument& doc, int gltf_mesh, const MeshSource& sour
       StripData(json["accessors"][prim["indices"].get<int>()]);
     prim["extensions"][kMeshCompressionExtension] = std::move(ext);
   }
+}
+
+// A mesh whose plain data was not written (GlbWriteOptions::data_elsewhere) must find every
+// attribute in its stream, except the zero-filled texture coordinate sets a material needs.
+Status CheckStreamHoldsData(const GltfDocument& doc, int gltf_mesh, const Mesh& mesh) {
+  const nlohmann::json& json = doc.json();
+  for (const nlohmann::json& prim : json["meshes"][gltf_mesh]["primitives"]) {
+    const nlohmann::json& ext = prim["extensions"][kMeshCompressionExtension];
+    auto held = [&](const nlohmann::json& accessor, const nlohmann::json& in_stream,
+                    const std::string& name) {
+      if (in_stream.contains(name) || json["accessors"][accessor.get<int>()].contains("bufferView"))
+        return true;
+      const std::string uv = "TEXCOORD_";
+      if (name.compare(0, uv.size(), uv) != 0) return false;
+      char* end = nullptr;
+      const unsigned long set = std::strtoul(name.c_str() + uv.size(), &end, 10);
+      return end != name.c_str() + uv.size() && *end == '\0' && set >= mesh.uv_sets.size();
+    };
+    for (const auto& [name, accessor] : prim["attributes"].items()) {
+      if (!held(accessor, ext["attributes"], name))
+        return Status(StatusCode::kInternal,
+                      "mesh '" + mesh.name + "': attribute " + name + " is not in its stream");
+    }
+    if (!prim.contains("targets")) continue;
+    for (size_t t = 0; t < prim["targets"].size(); ++t) {
+      const nlohmann::json none = nlohmann::json::object();
+      const nlohmann::json& in_stream =
+          ext.contains("targets") && t < ext["targets"].size() ? ext["targets"][t] : none;
+      for (const auto& [name, accessor] : prim["targets"][t].items()) {
+        if (!held(accessor, in_stream, name))
+          return Status(StatusCode::kInternal, "mesh '" + mesh.name + "': morph target " +
+                                                   std::to_string(t) + " " + name +
+                                                   " is not in its stream");
+      }
+    }
+  }
+  return Status::Ok();
 }
 
 // A hull is a mesh of one POINTS primitive whose only attribute is its quantized POSITION: a
@@ -179,7 +218,7 @@ void AddColliders(GltfDocument& doc, const PackedStreams& streams, const GltfSce
 
 }  // namespace
 
-Result<std::vector<uint8_t>> WritePackedGlb(const Scene& decoded, const PackedStreams& streams,
+Result<std::vector<uint8_t>> WritePackedGlb(Scene decoded, const PackedStreams& streams,
                                             const PackedGlbOptions& options,
                                             PackedGlbStats* stats) {
   if (streams.sources.size() != decoded.meshes.size()) {
@@ -195,18 +234,19 @@ Result<std::vector<uint8_t>> WritePackedGlb(const Scene& decoded, const PackedSt
   }
   GltfDocument doc;
   GltfSceneLayout layout;
-  Status built;
   GlbWriteOptions plain_options;
   plain_options.quantize_rotations = true;
   plain_options.compress_animations = options.compress_animations && !options.fallback;
-  if (render_meshes == decoded.meshes.size()) {
-    built = BuildGltfDocument(decoded, plain_options, &doc, &layout);
-  } else {
-    // The whole scene but its hull meshes, so no scene field can be left behind here.
-    Scene render = decoded;
-    render.meshes.resize(render_meshes);
-    built = BuildGltfDocument(render, plain_options, &doc, &layout);
+  // Without fallback, what a stream holds is not written as plain data only to be dropped.
+  plain_options.data_elsewhere.assign(render_meshes, false);
+  for (size_t m = 0; m < render_meshes && !options.fallback; ++m) {
+    const int s = streams.sources[m].stream;
+    plain_options.data_elsewhere[m] = s >= 0 && static_cast<size_t>(s) < streams.streams.size();
   }
+  // The whole scene but its hull meshes (only their grids are written, from `streams`).
+  const size_t all_meshes = decoded.meshes.size();
+  decoded.meshes.resize(render_meshes);
+  const Status built = BuildGltfDocument(decoded, plain_options, &doc, &layout);
   if (!built.ok()) return built;
   if (stats != nullptr) {
     stats->key_frame_bytes = layout.key_frame_bytes;
@@ -221,13 +261,17 @@ Result<std::vector<uint8_t>> WritePackedGlb(const Scene& decoded, const PackedSt
     if (source.stream < 0 || static_cast<size_t>(source.stream) >= streams.streams.size()) continue;
     CompressPrimitives(doc, layout.meshes[m].gltf_mesh, source, streams.streams[source.stream],
                        stream_views[source.stream], layout.meshes[m], options.fallback);
+    if (plain_options.data_elsewhere[m]) {
+      const Status held = CheckStreamHoldsData(doc, layout.meshes[m].gltf_mesh, decoded.meshes[m]);
+      if (!held.ok()) return held;
+    }
     any = true;
   }
   if (any) doc.UseExtension(kMeshCompressionExtension, !options.fallback);
   // Fallback files are for readers without extensions: their hulls must not require one.
   HullAccessors hulls(options.fallback || !options.quantized_hulls);
-  std::vector<int> hull_meshes(decoded.meshes.size(), -1);
-  for (size_t m = render_meshes; m < decoded.meshes.size(); ++m)
+  std::vector<int> hull_meshes(all_meshes, -1);
+  for (size_t m = render_meshes; m < all_meshes; ++m)
     hull_meshes[m] = hulls.Add(doc, streams.sources[m].hull_grid);
   hulls.Finish(doc);
   AddColliders(doc, streams, layout, hull_meshes, options.physics);

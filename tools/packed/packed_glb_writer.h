@@ -54,9 +54,9 @@ struct PackedGlbStats {
 };
 
 // `decoded` holds the render meshes as their streams decode (vertex and triangle order, values,
-// material ids = stream groups) followed by the hull meshes; no node shows a hull mesh. `stats`
-// may be null.
-Result<std::vector<uint8_t>> WritePackedGlb(const Scene& decoded, const PackedStreams& streams,
+// material ids = stream groups) followed by the hull meshes; no node shows a hull mesh. Taken by
+// value: a caller that moves it in spares a copy of every mesh. `stats` may be null.
+Result<std::vector<uint8_t>> WritePackedGlb(Scene decoded, const PackedStreams& streams,
                                             const PackedGlbOptions& options,
                                             PackedGlbStats* stats = nullptr);
 

@@ -32,7 +32,7 @@ Result<std::vector<uint8_t>> AssemblePackedGlb(Scene scene, std::vector<PackedMe
     }
   }
   streams.hulls_of.resize(decoded.meshes.size());
-  return WritePackedGlb(decoded, streams, options, stats);
+  return WritePackedGlb(std::move(decoded), streams, options, stats);
 }
 
 }  // namespace hullpack
