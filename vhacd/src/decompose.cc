@@ -367,7 +367,8 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   const bool can_orient = exact_measure && input.closed;
   const bool compare_orientations = can_orient && params.oriented_cuts == OrientedCuts::kAuto;
   bool oriented = can_orient && params.oriented_cuts == OrientedCuts::kAlways;
-  internal::PartHulls part_hulls(root, index, exact_count && input.closed ? &corners : nullptr);
+  const internal::SolidCorners* hull_corners = exact_count && input.closed ? &corners : nullptr;
+  internal::PartHulls part_hulls(root, index, hull_corners);
   std::vector<internal::HullMesh> hulls;
   int clip_levels = 0;
   // A run with oriented cuts whose clipping kept none made the slices' parts: it stops there and
@@ -390,7 +391,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     cp.max_depth = lim.max_depth;
     cp.meter = meter.get();
     cp.index = &index;
-    cp.corners = exact_count && input.closed ? &corners : nullptr;
+    cp.corners = hull_corners;
     cp.part_hulls = &part_hulls;
     cp.oriented_cuts = oriented;
     // On an open surface the side is only known per voxel: for max_concavity the exact measure
