@@ -67,6 +67,49 @@ TEST(ErrorMetricsTest, TriangleLocatorMatchesBruteForceOnSliversAndLargeTriangle
   }
 }
 
+// DistanceUnlessWithin gives the exact distance and a nearest triangle whenever that distance is
+// above `enough`, and otherwise a triangle within `enough` and its own distance: on a fan of
+// slivers, where the search would otherwise measure most of the fan near its centre.
+TEST(ErrorMetricsTest, DistanceUnlessWithinIsExactAboveItsThreshold) {
+  GridMesh g;
+  const Vec3 centre(20, 20, 10);
+  g.points.push_back(centre);
+  const int n = 2000;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * 3.14159265358979 * i / n;
+    g.points.push_back(centre + Vec3(15 * std::cos(a), 15 * std::sin(a), 0));
+  }
+  for (int i = 0; i < n; ++i)
+    g.triangles.push_back({0, uint32_t(1 + i), uint32_t(1 + (i + 1) % n)});
+  TriangleLocator loc(g, 2.0);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-3, 3), height(-1.5, 1.5), enough(0, 1.5);
+  int exact = 0, stopped = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const Vec3 p = centre + Vec3(5 * u(rng), 5 * u(rng), height(rng));
+    const double e = enough(rng);
+    uint32_t nearest = 0, found = 0;
+    const double d = loc.Distance(p, &nearest);
+    const double within = loc.DistanceUnlessWithin(p, e, &found);
+    ASSERT_LT(found, g.triangles.size());
+    const auto& t = g.triangles[found];
+    const double of_found =
+        PointTriangleDistance(p, g.points[t[0]], g.points[t[1]], g.points[t[2]]);
+    EXPECT_EQ(within, of_found) << "point " << i;
+    if (d > e) {
+      ++exact;
+      EXPECT_EQ(within, d) << "point " << i;
+      EXPECT_EQ(found, nearest) << "point " << i;
+    } else {
+      ++stopped;
+      EXPECT_LE(within, e) << "point " << i;
+      EXPECT_GE(within, d) << "point " << i;
+    }
+  }
+  EXPECT_GT(exact, 100);
+  EXPECT_GT(stopped, 100);
+}
+
 }  // namespace
 }  // namespace internal
 }  // namespace vhacd

@@ -104,6 +104,11 @@ double TriangleLocator::Distance(const Vec3& p) const {
 }
 
 double TriangleLocator::Distance(const Vec3& p, uint32_t* nearest) const {
+  return DistanceUnlessWithin(p, -1.0, nearest);
+}
+
+double TriangleLocator::DistanceUnlessWithin(const Vec3& p, double enough,
+                                             uint32_t* nearest) const {
   *nearest = static_cast<uint32_t>(mesh_.triangles.size());
   int c0[3];
   for (int a = 0; a < 3; ++a)
@@ -141,6 +146,7 @@ double TriangleLocator::Distance(const Vec3& p, uint32_t* nearest) const {
             if (d < best) {
               best = d;
               *nearest = ids_[k];
+              if (best <= enough) return best;
             }
           }
         }

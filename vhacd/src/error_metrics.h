@@ -21,6 +21,10 @@ class TriangleLocator {
   double Distance(const Vec3& p) const;
   // Also gives the index of a nearest triangle (mesh.triangles.size() when there is none).
   double Distance(const Vec3& p, uint32_t* nearest) const;
+  // As Distance, but stops at the first triangle found within `enough` of p, and gives that one
+  // and its distance (then <= enough, not always the least). For a largest distance over many
+  // points: a point that cannot raise the largest so far needs no exact value.
+  double DistanceUnlessWithin(const Vec3& p, double enough, uint32_t* nearest) const;
 
  private:
   // For a triangle whose box spans more than 2 x 2 x 2 cells (a sliver, most often), whose box is

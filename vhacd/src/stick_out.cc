@@ -30,6 +30,9 @@ StickOutMeter::StickOutMeter(const GridMesh& mesh, const VoxelGrid& grid, bool c
     : mesh_(mesh), grid_(grid), closed_(closed), field_(field), locator_(mesh, kLocatorCell) {}
 
 double StickOutMeter::OutsideDistance(const Vec3& p, double best) const {
+  // Only a distance above best matters: the search may stop at any triangle within best.
+  uint32_t tri = 0;
+  auto distance = [&]() { return locator_.DistanceUnlessWithin(p, best, &tri); };
   int c[3];
   bool in_grid = true;
   for (int a = 0; a < 3; ++a) {
@@ -48,15 +51,13 @@ double StickOutMeter::OutsideDistance(const Vec3& p, double best) const {
       // the nearest solid voxel is a fill cap (an opening the fill rule closed), not the
       // surface. Measure from the solid the decomposition works on there.
       const double to_solid = std::max(0.0, field_->Interpolate(p) - 0.5);
-      const double d = locator_.Distance(p);
+      const double d = distance();
       return d > to_solid + kCapMargin ? to_solid : d;
     }
     if (cell == kCellSurface) {
       // An open surface has no side: trust the voxel centre's parity vote for the whole voxel.
-      if (!closed_)
-        return grid_.CenterInside(grid_.Index(c[0], c[1], c[2])) ? 0.0 : locator_.Distance(p);
-      uint32_t tri = 0;
-      const double d = locator_.Distance(p, &tri);
+      if (!closed_) return grid_.CenterInside(grid_.Index(c[0], c[1], c[2])) ? 0.0 : distance();
+      const double d = distance();
       if (tri >= mesh_.triangles.size()) return d;
       // A closed surface: the side of the nearest triangle's plane (exact away from its edges;
       // near an edge only points within that distance of the surface are misjudged).
@@ -66,7 +67,7 @@ double StickOutMeter::OutsideDistance(const Vec3& p, double best) const {
       return n.dot(p - a) > 0 ? d : 0.0;
     }
   }
-  return locator_.Distance(p);
+  return distance();
 }
 
 double StickOutMeter::SampleFaces(const HullMesh& hull, const std::vector<char>* skip, double best,
