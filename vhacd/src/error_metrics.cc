@@ -36,6 +36,41 @@ double TriangleLocator::Sliver::Bound(const Vec3& q) const {
   return std::max(plane, to_edge) * (1.0 - 1e-9) - 1e-12;
 }
 
+template <typename Fn>
+void TriangleLocator::ForCellsNear(const Sliver& s, const int lo[3], const int hi[3], double reach,
+                                   Fn fn) const {
+  int extent[3];
+  for (int a = 0; a < 3; ++a) extent[a] = hi[a] - lo[a] + 1;
+  if (extent[0] * extent[1] * extent[2] > 8) {
+    // A sliver crosses its box from corner to corner: halve the box, and skip a half whose cell
+    // centres are all farther than `reach` (Bound is 1-Lipschitz, so at most the half's
+    // half-diagonal less than at its centre; the margin covers rounding, so that the cells kept
+    // are exactly those a walk over every cell keeps).
+    Vec3 centre, half;
+    for (int a = 0; a < 3; ++a) {
+      centre[a] = origin_[a] + cell_ * (0.5 * (lo[a] + hi[a]) + 0.5);
+      half[a] = 0.5 * cell_ * (hi[a] - lo[a]);
+    }
+    if (s.Bound(centre) - half.norm() > reach + 1e-6 * (1.0 + reach)) return;
+    const int axis = extent[0] >= extent[1] && extent[0] >= extent[2] ? 0
+                     : extent[1] >= extent[2]                         ? 1
+                                                                      : 2;
+    const int mid = lo[axis] + (extent[axis] - 1) / 2;
+    int lo2[3] = {lo[0], lo[1], lo[2]}, hi1[3] = {hi[0], hi[1], hi[2]};
+    hi1[axis] = mid;
+    lo2[axis] = mid + 1;
+    ForCellsNear(s, lo, hi1, reach, fn);
+    ForCellsNear(s, lo2, hi, reach, fn);
+    return;
+  }
+  for (int z = lo[2]; z <= hi[2]; ++z)
+    for (int y = lo[1]; y <= hi[1]; ++y)
+      for (int x = lo[0]; x <= hi[0]; ++x) {
+        const Vec3 centre = origin_ + cell_ * Vec3(x + 0.5, y + 0.5, z + 0.5);
+        if (s.Bound(centre) <= reach) fn(x, y, z);
+      }
+}
+
 TriangleLocator::TriangleLocator(const GridMesh& mesh, double cell_size)
     : mesh_(mesh), cell_(cell_size) {
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
@@ -81,19 +116,20 @@ TriangleLocator::TriangleLocator(const GridMesh& mesh, double cell_size)
         sliver_of_[ti] = static_cast<uint32_t>(slivers_.size());
         slivers_.push_back(Sliver::Of(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]));
       }
+      auto add = [&](int x, int y, int z) {
+        const size_t c = (static_cast<size_t>(z) * dims_[1] + y) * dims_[0] + x;
+        if (pass == 0)
+          ++start_[c + 1];
+        else
+          ids_[fill[c]++] = ti;
+      };
+      if (large) {
+        ForCellsNear(slivers_[sliver_of_[ti]], clo, chi, 0.5 * std::sqrt(3.0) * cell_, add);
+        continue;
+      }
       for (int z = clo[2]; z <= chi[2]; ++z)
         for (int y = clo[1]; y <= chi[1]; ++y)
-          for (int x = clo[0]; x <= chi[0]; ++x) {
-            if (large) {
-              const Vec3 centre = origin_ + cell_ * Vec3(x + 0.5, y + 0.5, z + 0.5);
-              if (slivers_[sliver_of_[ti]].Bound(centre) > 0.5 * std::sqrt(3.0) * cell_) continue;
-            }
-            const size_t c = (static_cast<size_t>(z) * dims_[1] + y) * dims_[0] + x;
-            if (pass == 0)
-              ++start_[c + 1];
-            else
-              ids_[fill[c]++] = ti;
-          }
+          for (int x = clo[0]; x <= chi[0]; ++x) add(x, y, z);
     }
   }
 }

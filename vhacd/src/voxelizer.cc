@@ -130,33 +130,77 @@ void CollectCrossings(const GridMesh& mesh, const int dims[3], int axis, size_t 
     const int iu1 = std::min(dims[u] - 1, static_cast<int>(std::floor(umax - 0.5)));
     const int iv0 = std::max(0, static_cast<int>(std::ceil(vmin - 0.5)));
     const int iv1 = std::min(dims[v] - 1, static_cast<int>(std::floor(vmax - 0.5)));
-    for (int iv = iv0; iv <= iv1; ++iv)
-      for (int iu = iu0; iu <= iu1; ++iu) {
-        const double qu = iu + 0.5, qv = iv + 0.5;
-        double w[3];
-        bool inside = true;
-        for (int e = 0; e < 3 && inside; ++e) {
-          const int i = e, j = (e + 1) % 3;
-          // Canonical evaluation: same operands, same order, for both triangles of an edge.
-          double val;
-          if (id[i] < id[j])
-            val = Orient2((*P[i])[u], (*P[i])[v], (*P[j])[u], (*P[j])[v], qu, qv);
-          else
-            val = -Orient2((*P[j])[u], (*P[j])[v], (*P[i])[u], (*P[i])[v], qu, qv);
-          if (val < 0) {
-            inside = false;
-          } else if (val == 0) {
-            const double du = (*P[j])[u] - (*P[i])[u], dv = (*P[j])[v] - (*P[i])[v];
-            if (!(dv > 0 || (dv == 0 && du > 0))) inside = false;  // edge does not own the point
-          }
-          w[(e + 2) % 3] = val;  // weight of the vertex opposite edge e
-        }
-        if (!inside) continue;
-        const double s = w[0] + w[1] + w[2];
-        if (!(s > 0)) continue;
-        const double ta = (w[0] * (*P[0])[axis] + w[1] * (*P[1])[axis] + w[2] * (*P[2])[axis]) / s;
-        out->push_back({static_cast<uint32_t>(static_cast<size_t>(iv) * dims[u] + iu), ta});
+    // A range of more than kLeafLines lines is halved along its longer side, and a half whose
+    // line centres all lie outside one edge, by far more than rounding, is skipped whole: a
+    // sliver's range is mostly empty. Every line of the halves kept gets the test below, so the
+    // crossings do not change.
+    constexpr int kLeafLines = 16;
+    constexpr double kMargin = 1e-6;  // grid units
+    auto outside_an_edge = [&](int ua, int ub, int va, int vb) {
+      for (int e = 0; e < 3; ++e) {
+        const Vec3& pi = *P[e];
+        const Vec3& pj = *P[(e + 1) % 3];
+        const double du = pj[u] - pi[u], dv = pj[v] - pi[v];
+        // The largest value of Orient2(pi, pj, q) over the range's line centres q.
+        const double qu = (dv > 0 ? ua : ub) + 0.5, qv = (du > 0 ? vb : va) + 0.5;
+        if (du * (qv - pi[v]) - dv * (qu - pi[u]) < -kMargin * std::sqrt(du * du + dv * dv))
+          return true;
       }
+      return false;
+    };
+    struct LineRange {
+      int u0, u1, v0, v1;
+    };
+    LineRange ranges[64];  // depth-first: one entry per halving level, plus one
+    int top = 0;
+    ranges[top++] = LineRange{iu0, iu1, iv0, iv1};
+    while (top > 0) {
+      const LineRange r = ranges[--top];
+      const int nu = r.u1 - r.u0 + 1, nv = r.v1 - r.v0 + 1;
+      if (nu <= 0 || nv <= 0) continue;
+      if (nu * nv > kLeafLines) {
+        if (outside_an_edge(r.u0, r.u1, r.v0, r.v1)) continue;
+        LineRange low = r, high = r;
+        if (nu >= nv) {
+          low.u1 = r.u0 + nu / 2 - 1;
+          high.u0 = low.u1 + 1;
+        } else {
+          low.v1 = r.v0 + nv / 2 - 1;
+          high.v0 = low.v1 + 1;
+        }
+        ranges[top++] = high;
+        ranges[top++] = low;
+        continue;
+      }
+      for (int iv = r.v0; iv <= r.v1; ++iv)
+        for (int iu = r.u0; iu <= r.u1; ++iu) {
+          const double qu = iu + 0.5, qv = iv + 0.5;
+          double w[3];
+          bool inside = true;
+          for (int e = 0; e < 3 && inside; ++e) {
+            const int i = e, j = (e + 1) % 3;
+            // Canonical evaluation: same operands, same order, for both triangles of an edge.
+            double val;
+            if (id[i] < id[j])
+              val = Orient2((*P[i])[u], (*P[i])[v], (*P[j])[u], (*P[j])[v], qu, qv);
+            else
+              val = -Orient2((*P[j])[u], (*P[j])[v], (*P[i])[u], (*P[i])[v], qu, qv);
+            if (val < 0) {
+              inside = false;
+            } else if (val == 0) {
+              const double du = (*P[j])[u] - (*P[i])[u], dv = (*P[j])[v] - (*P[i])[v];
+              if (!(dv > 0 || (dv == 0 && du > 0))) inside = false;  // edge does not own the point
+            }
+            w[(e + 2) % 3] = val;  // weight of the vertex opposite edge e
+          }
+          if (!inside) continue;
+          const double s = w[0] + w[1] + w[2];
+          if (!(s > 0)) continue;
+          const double ta =
+              (w[0] * (*P[0])[axis] + w[1] * (*P[1])[axis] + w[2] * (*P[2])[axis]) / s;
+          out->push_back({static_cast<uint32_t>(static_cast<size_t>(iv) * dims[u] + iu), ta});
+        }
+    }
   }
 }
 
