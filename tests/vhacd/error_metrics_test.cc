@@ -110,6 +110,45 @@ TEST(ErrorMetricsTest, DistanceUnlessWithinIsExactAboveItsThreshold) {
   EXPECT_GT(stopped, 100);
 }
 
+// The report measures with the locator it is given (the stick-out measure's, of another cell
+// size) exactly as with the one it builds.
+TEST(ErrorMetricsTest, ReportIsTheSameWithAGivenLocator) {
+  const vhacd_test::Mesh t = vhacd_test::Torus(10.0, 3.0, 32, 16);
+  const GridMesh g = vhacd_test::ToGridMesh(t, 1.0, Vec3(15, 15, 5));
+  const int dims[3] = {30, 30, 10};
+  Context ctx(nullptr, 2);
+  VoxelGrid grid;
+  ASSERT_TRUE(Voxelize(g, dims, &ctx, &grid));
+  // Two hulls: the halves of the torus on either side of x = 15.
+  std::vector<HullMesh> hulls(2);
+  for (int side = 0; side < 2; ++side) {
+    std::vector<Vec3> pts;
+    for (const Vec3& p : g.points)
+      if ((p[0] < 15) == (side == 0)) pts.push_back(p);
+    ASSERT_EQ(ComputeConvexHull(pts, -1.0, &hulls[side]), HullStatus::kOk);
+  }
+  MetricsInput in;
+  in.mesh = &g;
+  in.grid = &grid;
+  in.hulls = &hulls;
+  in.diagonal = 30;
+  in.volume0 = 500;
+  in.closed = true;
+  Report own, given;
+  ASSERT_TRUE(ComputeErrorReport(in, &ctx, &own));
+  const TriangleLocator locator(g, 2.0);
+  in.locator = &locator;
+  ASSERT_TRUE(ComputeErrorReport(in, &ctx, &given));
+  EXPECT_GT(own.hausdorff_hulls_to_mesh, 0.0);
+  EXPECT_EQ(given.hausdorff_hulls_to_mesh, own.hausdorff_hulls_to_mesh);
+  EXPECT_EQ(given.hausdorff_mesh_to_hulls, own.hausdorff_mesh_to_hulls);
+  EXPECT_EQ(given.concavity, own.concavity);
+  EXPECT_EQ(given.volume_iou, own.volume_iou);
+  ASSERT_EQ(given.hulls.size(), own.hulls.size());
+  for (size_t h = 0; h < own.hulls.size(); ++h)
+    EXPECT_EQ(given.hulls[h].distance, own.hulls[h].distance);
+}
+
 }  // namespace
 }  // namespace internal
 }  // namespace vhacd

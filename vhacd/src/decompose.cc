@@ -485,6 +485,9 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
       mi.diagonal = diag_grid;
       mi.volume0 = clip.volume0;
       mi.closed = input.closed;
+      // The stick-out measure's locator serves the report too: one build per decomposition
+      // instead of one per run, and one mesh-sized index less at once.
+      if (meter) mi.locator = &meter->locator();
       if (!internal::ComputeErrorReport(mi, &ctx, &r)) return Status::kCancelled;
     }
     r.seconds_report = clock.Lap();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include "thread_pool.h"
 
@@ -341,21 +342,29 @@ bool ComputeErrorReport(const MetricsInput& in, Context* ctx, Report* report) {
       SampleTriangle(h.vertices[t[0]], h.vertices[t[1]], h.vertices[t[2]], spacing, &tmp);
     for (const Vec3& p : tmp) hs.emplace_back(hi, p);
   }
-  // Buckets of a few triangles each: about 3 mean triangle sizes, at most 4 voxels.
-  double mesh_area = 0.0;
-  for (const auto& t : in.mesh->triangles)
-    mesh_area += 0.5 * (in.mesh->points[t[1]] - in.mesh->points[t[0]])
-                           .cross(in.mesh->points[t[2]] - in.mesh->points[t[0]])
-                           .norm();
-  double cell = 3.0 * std::sqrt(2.0 * mesh_area / std::max<size_t>(1, in.mesh->triangles.size()));
-  const double cells_at_one = static_cast<double>(grid.dims[0]) * grid.dims[1] * grid.dims[2];
-  cell = std::clamp(cell, std::max(0.5, std::cbrt(cells_at_one / 8e6)), 4.0);
-  TriangleLocator locator(*in.mesh, cell);
+  std::unique_ptr<TriangleLocator> own;
+  if (in.locator == nullptr) {
+    // Buckets of a few triangles each: about 3 mean triangle sizes, at most 4 voxels.
+    double mesh_area = 0.0;
+    for (const auto& t : in.mesh->triangles)
+      mesh_area += 0.5 * (in.mesh->points[t[1]] - in.mesh->points[t[0]])
+                             .cross(in.mesh->points[t[2]] - in.mesh->points[t[0]])
+                             .norm();
+    double cell = 3.0 * std::sqrt(2.0 * mesh_area / std::max<size_t>(1, in.mesh->triangles.size()));
+    const double cells_at_one = static_cast<double>(grid.dims[0]) * grid.dims[1] * grid.dims[2];
+    cell = std::clamp(cell, std::max(0.5, std::cbrt(cells_at_one / 8e6)), 4.0);
+    own.reset(new TriangleLocator(*in.mesh, cell));
+  }
+  const TriangleLocator& locator = in.locator != nullptr ? *in.locator : *own;
   const double gap = kGap * in.diagonal;
   chunk_max.assign((hs.size() + kChunk - 1) / kChunk, 0.0);
   std::vector<float> point_distance(hs.size(), 0.0f);
   if (!ParallelFor(ctx, chunk_max.size(), [&](size_t c) {
         double m = 0.0;
+        // Only maxima are reported (per hull and overall): a sample that cannot raise its hull's
+        // largest distance so far (the samples come hull by hull) needs no exact value.
+        size_t hull = hulls.size();
+        double hull_max = 0.0;
         for (size_t k = c * kChunk; k < std::min(hs.size(), (c + 1) * kChunk); ++k) {
           const Vec3& p = hs[k].second;
           // On the union's boundary unless inside another hull or across a crack narrower than
@@ -370,7 +379,13 @@ bool ComputeErrorReport(const MetricsInput& in, Context* ctx, Report* report) {
               interior = HullSurfaceDistance(p, hulls[h], gap) < gap;
           }
           if (!interior) {
-            const double dd = locator.Distance(p);
+            if (hs[k].first != hull) {
+              hull = hs[k].first;
+              hull_max = 0.0;
+            }
+            uint32_t nearest = 0;
+            const double dd = locator.DistanceUnlessWithin(p, hull_max, &nearest);
+            hull_max = std::max(hull_max, dd);
             m = std::max(m, dd);
             point_distance[k] = static_cast<float>(dd);
           }

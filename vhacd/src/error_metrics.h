@@ -56,6 +56,8 @@ struct MetricsInput {
   double diagonal = 1.0;  // bounding-box diagonal of the input, grid units
   double volume0 = 1.0;   // concavity normalization, voxel units
   bool closed = false;
+  // A locator of `mesh` to measure with (optional): the report builds its own without one.
+  const TriangleLocator* locator = nullptr;
 };
 
 // Points about `spacing` apart inside the triangle, in rows parallel to its longest edge (linear
