@@ -57,9 +57,9 @@ TEST(VoxelizerTest, TriangleMayMeetVoxelsIsConservative) {
   EXPECT_GT(rejected, 500);
 }
 
-// A fan of long slivers (an STL exporter's round face): the surface voxels are exactly those the
-// voxel test accepts over each triangle's whole box.
-TEST(VoxelizerTest, FanOfSliversMarksTheSameVoxelsAsAFullWalk) {
+// A disc fanned from its centre into 300 long slivers, wavy in z so that all three axes see it at
+// an angle, on an 82 x 82 x 8 grid.
+GridMesh WavyFan() {
   GridMesh fan;
   const int n = 300;
   const Vec3 centre(40.3, 40.7, 3.2);
@@ -71,10 +71,22 @@ TEST(VoxelizerTest, FanOfSliversMarksTheSameVoxelsAsAFullWalk) {
   for (int i = 0; i < n; ++i)
     fan.triangles.push_back(
         {0, static_cast<uint32_t>(i + 1), static_cast<uint32_t>((i + 1) % n + 1)});
-  const int dims[3] = {82, 82, 8};
+  return fan;
+}
+constexpr int kWavyFanDims[3] = {82, 82, 8};
+
+bool VoxelizeOnTwoThreads(const GridMesh& mesh, const int dims[3], VoxelGrid* grid) {
   Context ctx(nullptr, 2);
+  return Voxelize(mesh, dims, &ctx, grid);
+}
+
+// A fan of long slivers (an STL exporter's round face): the surface voxels are exactly those the
+// voxel test accepts over each triangle's whole box.
+TEST(VoxelizerTest, FanOfSliversMarksTheSameVoxelsAsAFullWalk) {
+  const GridMesh fan = WavyFan();
+  const int* dims = kWavyFanDims;
   VoxelGrid grid;
-  ASSERT_TRUE(Voxelize(fan, dims, &ctx, &grid));
+  ASSERT_TRUE(VoxelizeOnTwoThreads(fan, dims, &grid));
   std::vector<uint8_t> expected(grid.size(), 0);
   for (const auto& t : fan.triangles) {
     const Vec3 &a = fan.points[t[0]], &b = fan.points[t[1]], &c = fan.points[t[2]];
@@ -96,21 +108,10 @@ TEST(VoxelizerTest, FanOfSliversMarksTheSameVoxelsAsAFullWalk) {
 // (the lines of a sliver's range that lie outside it are skipped, not miscounted). No line centre
 // lies on an edge here, so a closed point-in-triangle test is the reference.
 TEST(VoxelizerTest, FanOfSliversVotesAsEveryLineDoes) {
-  GridMesh fan;
-  const int n = 300;
-  const Vec3 centre(40.3, 40.7, 3.2);
-  fan.points.push_back(centre);
-  for (int i = 0; i < n; ++i) {
-    const double t = 2 * M_PI * i / n;
-    fan.points.push_back(centre + Vec3(37 * std::cos(t), 37 * std::sin(t), 1.3 * std::sin(3 * t)));
-  }
-  for (int i = 0; i < n; ++i)
-    fan.triangles.push_back(
-        {0, static_cast<uint32_t>(i + 1), static_cast<uint32_t>((i + 1) % n + 1)});
-  const int dims[3] = {82, 82, 8};
-  Context ctx(nullptr, 2);
+  const GridMesh fan = WavyFan();
+  const int* dims = kWavyFanDims;
   VoxelGrid grid;
-  ASSERT_TRUE(Voxelize(fan, dims, &ctx, &grid));
+  ASSERT_TRUE(VoxelizeOnTwoThreads(fan, dims, &grid));
   std::vector<int> expected(grid.size(), 0);
   size_t crossings = 0;
   for (int axis = 0; axis < 3; ++axis) {
