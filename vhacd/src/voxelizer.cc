@@ -148,6 +148,30 @@ void CollectCrossings(const GridMesh& mesh, const int dims[3], int axis, size_t 
       }
       return false;
     };
+    // The line through voxel centres (iu, iv): where it crosses the triangle, if it does.
+    auto cross_line = [&](int iu, int iv) {
+      const double qu = iu + 0.5, qv = iv + 0.5;
+      double w[3];
+      for (int e = 0; e < 3; ++e) {
+        const int i = e, j = (e + 1) % 3;
+        // Canonical evaluation: same operands, same order, for both triangles of an edge.
+        double val;
+        if (id[i] < id[j])
+          val = Orient2((*P[i])[u], (*P[i])[v], (*P[j])[u], (*P[j])[v], qu, qv);
+        else
+          val = -Orient2((*P[j])[u], (*P[j])[v], (*P[i])[u], (*P[i])[v], qu, qv);
+        if (val < 0) return;
+        if (val == 0) {
+          const double du = (*P[j])[u] - (*P[i])[u], dv = (*P[j])[v] - (*P[i])[v];
+          if (!(dv > 0 || (dv == 0 && du > 0))) return;  // the edge does not own the point
+        }
+        w[(e + 2) % 3] = val;  // weight of the vertex opposite edge e
+      }
+      const double s = w[0] + w[1] + w[2];
+      if (!(s > 0)) return;
+      const double ta = (w[0] * (*P[0])[axis] + w[1] * (*P[1])[axis] + w[2] * (*P[2])[axis]) / s;
+      out->push_back({static_cast<uint32_t>(static_cast<size_t>(iv) * dims[u] + iu), ta});
+    };
     struct LineRange {
       int u0, u1, v0, v1;
     };
@@ -173,33 +197,7 @@ void CollectCrossings(const GridMesh& mesh, const int dims[3], int axis, size_t 
         continue;
       }
       for (int iv = r.v0; iv <= r.v1; ++iv)
-        for (int iu = r.u0; iu <= r.u1; ++iu) {
-          const double qu = iu + 0.5, qv = iv + 0.5;
-          double w[3];
-          bool inside = true;
-          for (int e = 0; e < 3 && inside; ++e) {
-            const int i = e, j = (e + 1) % 3;
-            // Canonical evaluation: same operands, same order, for both triangles of an edge.
-            double val;
-            if (id[i] < id[j])
-              val = Orient2((*P[i])[u], (*P[i])[v], (*P[j])[u], (*P[j])[v], qu, qv);
-            else
-              val = -Orient2((*P[j])[u], (*P[j])[v], (*P[i])[u], (*P[i])[v], qu, qv);
-            if (val < 0) {
-              inside = false;
-            } else if (val == 0) {
-              const double du = (*P[j])[u] - (*P[i])[u], dv = (*P[j])[v] - (*P[i])[v];
-              if (!(dv > 0 || (dv == 0 && du > 0))) inside = false;  // edge does not own the point
-            }
-            w[(e + 2) % 3] = val;  // weight of the vertex opposite edge e
-          }
-          if (!inside) continue;
-          const double s = w[0] + w[1] + w[2];
-          if (!(s > 0)) continue;
-          const double ta =
-              (w[0] * (*P[0])[axis] + w[1] * (*P[1])[axis] + w[2] * (*P[2])[axis]) / s;
-          out->push_back({static_cast<uint32_t>(static_cast<size_t>(iv) * dims[u] + iu), ta});
-        }
+        for (int iu = r.u0; iu <= r.u1; ++iu) cross_line(iu, iv);
     }
   }
 }
