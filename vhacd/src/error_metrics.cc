@@ -5,6 +5,7 @@
 #include <limits>
 #include <memory>
 
+#include "range_halving.h"
 #include "thread_pool.h"
 
 namespace vhacd {
@@ -35,41 +36,6 @@ double TriangleLocator::Sliver::Bound(const Vec3& q) const {
   const double to_edge = (q - start - t * edge).norm() - height;
   // Rounding may make either a hair too large: the margin keeps it a lower bound.
   return std::max(plane, to_edge) * (1.0 - 1e-9) - 1e-12;
-}
-
-template <typename Fn>
-void TriangleLocator::ForCellsNear(const Sliver& s, const int lo[3], const int hi[3], double reach,
-                                   Fn fn) const {
-  int extent[3];
-  for (int a = 0; a < 3; ++a) extent[a] = hi[a] - lo[a] + 1;
-  if (extent[0] * extent[1] * extent[2] > 8) {
-    // A sliver crosses its box from corner to corner: halve the box, and skip a half whose cell
-    // centres are all farther than `reach` (Bound is 1-Lipschitz, so at most the half's
-    // half-diagonal less than at its centre; the margin covers rounding, so that the cells kept
-    // are exactly those a walk over every cell keeps).
-    Vec3 centre, half;
-    for (int a = 0; a < 3; ++a) {
-      centre[a] = origin_[a] + cell_ * (0.5 * (lo[a] + hi[a]) + 0.5);
-      half[a] = 0.5 * cell_ * (hi[a] - lo[a]);
-    }
-    if (s.Bound(centre) - half.norm() > reach + 1e-6 * (1.0 + reach)) return;
-    const int axis = extent[0] >= extent[1] && extent[0] >= extent[2] ? 0
-                     : extent[1] >= extent[2]                         ? 1
-                                                                      : 2;
-    const int mid = lo[axis] + (extent[axis] - 1) / 2;
-    int lo2[3] = {lo[0], lo[1], lo[2]}, hi1[3] = {hi[0], hi[1], hi[2]};
-    hi1[axis] = mid;
-    lo2[axis] = mid + 1;
-    ForCellsNear(s, lo, hi1, reach, fn);
-    ForCellsNear(s, lo2, hi, reach, fn);
-    return;
-  }
-  for (int z = lo[2]; z <= hi[2]; ++z)
-    for (int y = lo[1]; y <= hi[1]; ++y)
-      for (int x = lo[0]; x <= hi[0]; ++x) {
-        const Vec3 centre = origin_ + cell_ * Vec3(x + 0.5, y + 0.5, z + 0.5);
-        if (s.Bound(centre) <= reach) fn(x, y, z);
-      }
 }
 
 TriangleLocator::TriangleLocator(const GridMesh& mesh, double cell_size)
@@ -125,7 +91,33 @@ TriangleLocator::TriangleLocator(const GridMesh& mesh, double cell_size)
           ids_[fill[c]++] = ti;
       };
       if (large) {
-        ForCellsNear(slivers_[sliver_of_[ti]], clo, chi, 0.5 * std::sqrt(3.0) * cell_, add);
+        // Only the cells whose centre the sliver may come within a cell's half-diagonal of. A
+        // box of cells is dropped when all its centres are farther (Bound is 1-Lipschitz, so at
+        // most the box's half-diagonal less than at its centre; the margin covers rounding).
+        const Sliver& s = slivers_[sliver_of_[ti]];
+        const double reach = 0.5 * std::sqrt(3.0) * cell_;
+        auto centre_of = [&](const int* lo3, const int* hi3, Vec3* half) {
+          Vec3 centre;
+          for (int a = 0; a < 3; ++a) {
+            centre[a] = origin_[a] + cell_ * (0.5 * (lo3[a] + hi3[a]) + 0.5);
+            (*half)[a] = 0.5 * cell_ * (hi3[a] - lo3[a]);
+          }
+          return centre;
+        };
+        ForEachLeafRange<3>(
+            clo, chi, 8,
+            [&](const int* lo3, const int* hi3) {
+              Vec3 half;
+              const Vec3 centre = centre_of(lo3, hi3, &half);
+              return s.Bound(centre) - half.norm() <= reach + 1e-6 * (1.0 + reach);
+            },
+            [&](const int* lo3, const int* hi3) {
+              for (int z = lo3[2]; z <= hi3[2]; ++z)
+                for (int y = lo3[1]; y <= hi3[1]; ++y)
+                  for (int x = lo3[0]; x <= hi3[0]; ++x)
+                    if (s.Bound(origin_ + cell_ * Vec3(x + 0.5, y + 0.5, z + 0.5)) <= reach)
+                      add(x, y, z);
+            });
         continue;
       }
       for (int z = clo[2]; z <= chi[2]; ++z)

@@ -36,9 +36,6 @@ class TriangleLocator {
     // A lower bound of the distance from q to the triangle, tight for a sliver.
     double Bound(const Vec3& q) const;
   };
-  // Calls fn(x, y, z) for every cell in [lo, hi] whose centre s may come within `reach` of.
-  template <typename Fn>
-  void ForCellsNear(const Sliver& s, const int lo[3], const int hi[3], double reach, Fn fn) const;
   const GridMesh& mesh_;
   double cell_;
   Vec3 origin_;

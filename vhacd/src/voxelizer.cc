@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "distance_field.h"
+#include "range_halving.h"
 #include "thread_pool.h"
 
 namespace vhacd {
@@ -172,33 +173,16 @@ void CollectCrossings(const GridMesh& mesh, const int dims[3], int axis, size_t 
       const double ta = (w[0] * (*P[0])[axis] + w[1] * (*P[1])[axis] + w[2] * (*P[2])[axis]) / s;
       out->push_back({static_cast<uint32_t>(static_cast<size_t>(iv) * dims[u] + iu), ta});
     };
-    struct LineRange {
-      int u0, u1, v0, v1;
-    };
-    LineRange ranges[64];  // depth-first: one entry per halving level, plus one
-    int top = 0;
-    ranges[top++] = LineRange{iu0, iu1, iv0, iv1};
-    while (top > 0) {
-      const LineRange r = ranges[--top];
-      const int nu = r.u1 - r.u0 + 1, nv = r.v1 - r.v0 + 1;
-      if (nu <= 0 || nv <= 0) continue;
-      if (nu * nv > kLeafLines) {
-        if (outside_an_edge(r.u0, r.u1, r.v0, r.v1)) continue;
-        LineRange low = r, high = r;
-        if (nu >= nv) {
-          low.u1 = r.u0 + nu / 2 - 1;
-          high.u0 = low.u1 + 1;
-        } else {
-          low.v1 = r.v0 + nv / 2 - 1;
-          high.v0 = low.v1 + 1;
-        }
-        ranges[top++] = high;
-        ranges[top++] = low;
-        continue;
-      }
-      for (int iv = r.v0; iv <= r.v1; ++iv)
-        for (int iu = r.u0; iu <= r.u1; ++iu) cross_line(iu, iv);
-    }
+    const int range_lo[2] = {iu0, iv0}, range_hi[2] = {iu1, iv1};
+    ForEachLeafRange<2>(
+        range_lo, range_hi, kLeafLines,
+        [&](const int* rlo, const int* rhi) {
+          return !outside_an_edge(rlo[0], rhi[0], rlo[1], rhi[1]);
+        },
+        [&](const int* rlo, const int* rhi) {
+          for (int iv = rlo[1]; iv <= rhi[1]; ++iv)
+            for (int iu = rlo[0]; iu <= rhi[0]; ++iu) cross_line(iu, iv);
+        });
   }
 }
 
@@ -360,39 +344,22 @@ bool Voxelize(const GridMesh& mesh, const int dims[3], Context* ctx, VoxelGrid* 
         lo[axis] = base + slo;
         hi[axis] = std::min(hi[axis], base + shi);
       }
-      // A box of more than kLeafVoxels is halved along its longest side, and a half the triangle
-      // cannot meet is skipped whole: a sliver's box is mostly empty. Every voxel of the halves
-      // kept gets the same test as before, so the marks do not change.
-      constexpr int64_t kLeafVoxels = 64;
-      struct Range {
-        int lo[3], hi[3];
-      };
-      Range stack[96];  // depth-first: one entry per halving level, plus one
-      int top = 0;
-      stack[top++] = Range{{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
-      while (top > 0) {
-        const Range r = stack[--top];
-        const int64_t n[3] = {r.hi[0] - r.lo[0] + 1, r.hi[1] - r.lo[1] + 1, r.hi[2] - r.lo[2] + 1};
-        if (n[0] * n[1] * n[2] > kLeafVoxels) {
-          if (!TriangleMayMeetVoxels(r.lo, r.hi, a, b, d)) continue;
-          const int axis = n[0] >= n[1] && n[0] >= n[2] ? 0 : (n[1] >= n[2] ? 1 : 2);
-          const int mid = r.lo[axis] + static_cast<int>(n[axis] / 2) - 1;
-          Range low = r, high = r;
-          low.hi[axis] = mid;
-          high.lo[axis] = mid + 1;
-          stack[top++] = high;
-          stack[top++] = low;
-          continue;
-        }
-        for (int z = r.lo[2]; z <= r.hi[2]; ++z)
-          for (int y = r.lo[1]; y <= r.hi[1]; ++y)
-            for (int x = r.lo[0]; x <= r.hi[0]; ++x) {
-              const size_t idx = grid->Index(x, y, z);
-              if (marks[idx].load(std::memory_order_relaxed)) continue;
-              if (TriangleBoxOverlap(Vec3(x + 0.5, y + 0.5, z + 0.5), half, a, b, d))
-                marks[idx].store(1, std::memory_order_relaxed);
-            }
-      }
+      // A box of more than 64 voxels is halved, and a half the triangle cannot meet is skipped
+      // whole: a sliver's box is mostly empty. Every voxel of the halves kept gets the same test
+      // as before, so the marks do not change.
+      ForEachLeafRange<3>(
+          lo, hi, 64,
+          [&](const int* rlo, const int* rhi) { return TriangleMayMeetVoxels(rlo, rhi, a, b, d); },
+          [&](const int* rlo, const int* rhi) {
+            for (int z = rlo[2]; z <= rhi[2]; ++z)
+              for (int y = rlo[1]; y <= rhi[1]; ++y)
+                for (int x = rlo[0]; x <= rhi[0]; ++x) {
+                  const size_t idx = grid->Index(x, y, z);
+                  if (marks[idx].load(std::memory_order_relaxed)) continue;
+                  if (TriangleBoxOverlap(Vec3(x + 0.5, y + 0.5, z + 0.5), half, a, b, d))
+                    marks[idx].store(1, std::memory_order_relaxed);
+                }
+          });
     };
     bool ok = ParallelFor(ctx, nchunks, [&](size_t c) {
       const size_t end = std::min(ntri, (c + 1) * kChunk);
