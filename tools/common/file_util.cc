@@ -1,5 +1,6 @@
 #include "common/file_util.h"
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -35,6 +36,53 @@ Result<std::vector<uint8_t>> ReadFileBytes(const std::string& path) {
   std::fclose(f);
   if (failed) return Status(StatusCode::kIoError, path + ": read error");
   return bytes;
+}
+
+Result<RandomAccessFile> RandomAccessFile::Open(const std::string& path) {
+  const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return Status(StatusCode::kIoError, path + ": " + std::strerror(errno));
+  struct stat st;
+  if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    const bool stated = fstat(fd, &st) == 0;
+    const std::string why = !stated               ? std::strerror(errno)
+                            : S_ISDIR(st.st_mode) ? "is a directory"
+                                                  : "not a regular file";
+    close(fd);
+    return Status(StatusCode::kIoError, path + ": " + why);
+  }
+  return RandomAccessFile(fd, static_cast<size_t>(st.st_size), path);
+}
+
+RandomAccessFile::RandomAccessFile(RandomAccessFile&& other) noexcept
+    : fd_(std::exchange(other.fd_, -1)), size_(other.size_), path_(std::move(other.path_)) {}
+
+RandomAccessFile& RandomAccessFile::operator=(RandomAccessFile&& other) noexcept {
+  if (this != &other) {
+    if (fd_ >= 0) close(fd_);
+    fd_ = std::exchange(other.fd_, -1);
+    size_ = other.size_;
+    path_ = std::move(other.path_);
+  }
+  return *this;
+}
+
+RandomAccessFile::~RandomAccessFile() {
+  if (fd_ >= 0) close(fd_);
+}
+
+Status RandomAccessFile::ReadAt(size_t offset, size_t length, char* out) const {
+  while (length > 0) {
+    const ssize_t n = pread(fd_, out, length, static_cast<off_t>(offset));
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return Status(StatusCode::kIoError, path_ + ": read error: " + std::strerror(errno));
+    if (n == 0)
+      return Status(StatusCode::kIoError,
+                    path_ + ": ended early (did it change while being read?)");
+    out += n;
+    offset += static_cast<size_t>(n);
+    length -= static_cast<size_t>(n);
+  }
+  return Status::Ok();
 }
 
 Status WriteFileAtomically(const std::string& path, const void* data, size_t size) {

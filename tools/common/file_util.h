@@ -1,11 +1,12 @@
-// Whole-file reads and atomic writes: outputs go to a temporary file beside the target, then
-// rename, so an interrupted run never leaves a half-written file and never destroys the previous
-// one.
+// Whole-file reads, reads at offsets, and atomic writes: outputs go to a temporary file beside the
+// target, then rename, so an interrupted run never leaves a half-written file and never destroys
+// the previous one.
 #ifndef HULLPACK_TOOLS_COMMON_FILE_UTIL_H_
 #define HULLPACK_TOOLS_COMMON_FILE_UTIL_H_
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/status.h"
@@ -14,6 +15,33 @@ namespace hullpack {
 
 // Reads all of `path`. Errors name the path.
 Result<std::vector<uint8_t>> ReadFileBytes(const std::string& path);
+
+// A regular file read at offsets, for readers that take a large file part by part instead of
+// holding it whole. Reads from several threads at once are safe.
+class RandomAccessFile {
+ public:
+  // Fails (naming the path) when the file cannot be opened or is not a regular file (a pipe,
+  // a folder): those are read whole with ReadFileBytes.
+  static Result<RandomAccessFile> Open(const std::string& path);
+  RandomAccessFile(RandomAccessFile&& other) noexcept;
+  RandomAccessFile& operator=(RandomAccessFile&& other) noexcept;
+  RandomAccessFile(const RandomAccessFile&) = delete;
+  RandomAccessFile& operator=(const RandomAccessFile&) = delete;
+  ~RandomAccessFile();
+
+  // The size when opened.
+  size_t size() const { return size_; }
+  // Reads exactly `length` bytes at `offset` into `out`; an error when the file ends first (it
+  // changed while being read) or the read fails.
+  Status ReadAt(size_t offset, size_t length, char* out) const;
+
+ private:
+  RandomAccessFile(int fd, size_t size, std::string path)
+      : fd_(fd), size_(size), path_(std::move(path)) {}
+  int fd_ = -1;
+  size_t size_ = 0;
+  std::string path_;
+};
 
 // Writes `size` bytes to `path` through a temporary file in the same folder and a rename.
 Status WriteFileAtomically(const std::string& path, const void* data, size_t size);

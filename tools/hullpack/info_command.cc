@@ -1,5 +1,7 @@
 #include "hullpack/info_command.h"
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
@@ -96,11 +98,16 @@ int RunInfoCommand(const std::vector<std::string>& args) {
     }
   }
   const FileFormat format = FormatFromExtension(path);
-  Result<std::vector<uint8_t>> bytes = ReadFileBytes(path);
-  const size_t file_size = bytes.ok() ? bytes.value().size() : 0;
+  // The file is read again whole only for a GLB's hulls: a large mesh file would otherwise be held
+  // beside its scene just for its size.
+  struct stat st;
+  size_t file_size = stat(path.c_str(), &st) == 0 ? static_cast<size_t>(st.st_size) : 0;
   // Collision hulls as a physics engine builds them (the collider nodes' shapes).
   std::vector<CollisionHull> hulls;
+  Result<std::vector<uint8_t>> bytes = std::vector<uint8_t>();
+  if (format == FileFormat::kGlb) bytes = ReadFileBytes(path);
   if (bytes.ok() && format == FileFormat::kGlb) {
+    file_size = bytes->size();
     GltfDocument doc;
     Result<Scene> read = ReadPackedGltf(bytes->data(), bytes->size(), path, "", &doc);
     Result<std::vector<CollisionHull>> found =

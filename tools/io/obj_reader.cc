@@ -119,14 +119,27 @@ bool ReadFaceCorners(TextScanner& s, std::vector<int32_t>* raw, uint32_t* corner
   }
 }
 
-// The numbers of the `v`, `vt`, `vn` and `f` lines of one part of the text (split at line starts),
-// read ahead on several threads; the sequential pass takes them in order instead of reading the
-// text again. A part with a line the read-ahead would not read as the sequential pass does (any
-// malformed line) is marked not ok: the sequential pass reads it itself and reports the error.
-struct ReadAhead {
+// Where the text comes from: the caller's memory, or a file read part by part, so that a large
+// file is never held whole (its parts are freed once parsed).
+struct TextSource {
+  const char* data = nullptr;
+  const RandomAccessFile* file = nullptr;
+  size_t size = 0;
+};
+
+// One part of the text (split at line starts), and the numbers of its `v`, `vt`, `vn` and `f`
+// lines when they were read ahead on another thread; the sequential pass then takes them in order
+// instead of reading the text again. A part with a line the read-ahead would not read as the
+// sequential pass does (any malformed line) is left to the sequential pass, which reports the
+// error.
+struct TextPart {
+  size_t offset = 0, length = 0;  // where in the text
+  std::vector<char> own;          // the part's bytes, when read from a file
   const char* begin = nullptr;
   const char* end = nullptr;
-  bool ok = true;
+  Status loaded = Status::Ok();
+  bool has_nul = false;
+  bool numbers_read = false;
   // The numbers of the v/vt/vn lines, in order: as the floats they become (v, vn), or as read
   // (vt: v is flipped in double first).
   std::vector<float> floats;
@@ -136,8 +149,23 @@ struct ReadAhead {
   std::vector<uint32_t> per_face;  // corners per f line
   size_t next_line = 0, next_float = 0, next_double = 0, next_face = 0, next_corner = 0;
 
+  Status Load(const TextSource& source) {
+    if (source.file != nullptr) {
+      own.resize(length);
+      Status s = source.file->ReadAt(offset, length, own.data());
+      if (!s.ok()) return s;
+      begin = own.data();
+    } else {
+      begin = source.data + offset;
+    }
+    end = begin + length;
+    has_nul = std::memchr(begin, '\0', length) != nullptr;
+    return Status::Ok();
+  }
+
   void Read() {
     TextScanner s(begin, end);
+    bool ok = true;
     while (ok && !s.AtEnd()) {
       s.SkipBlanks();
       if (s.AtLineEnd()) {
@@ -163,79 +191,133 @@ struct ReadAhead {
       }
       s.SkipLine();
     }
+    numbers_read = ok;
   }
 };
 
 // Texts at least this large are read ahead in parallel.
 constexpr size_t kReadAheadBytes = size_t(1) << 20;
+// A file is read in parts of at most this size, at most a few per thread at a time.
+constexpr size_t kMaxPartBytes = size_t(8) << 20;
 
 class ObjParser {
  public:
-  ObjParser(const char* data, size_t size, const std::string& name, const ObjParseOptions& options)
-      : scan_(data, data + size), data_(data), size_(size), name_(name), options_(options) {}
+  ObjParser(const TextSource& source, const std::string& name, const ObjParseOptions& options)
+      : scan_(nullptr, nullptr), source_(source), name_(name), options_(options) {}
 
   Result<Scene> Parse() {
-    if (std::memchr(data_, '\0', size_) != nullptr)
-      return Error("binary data (NUL byte): not an OBJ file");
+    const bool read_ahead = source_.size >= kReadAheadBytes && options_.threads != 1;
+    Status split = SplitIntoParts(read_ahead ? ThreadCount(options_.threads) : 1);
+    if (!split.ok()) return split;
     builders_.emplace_back();
-    if (size_ >= kReadAheadBytes && options_.threads != 1) StartReadAhead();
+    if (read_ahead) StartReadAhead();
     // Progress about every 1 % of the text (checked every 4096 lines).
-    const size_t step = std::max<size_t>(size_ / 100, 1);
-    size_t lines = 0, reported = 0;
-    while (!scan_.AtEnd()) {
-      if (options_.progress && (++lines & 4095) == 0) {
-        const size_t at = static_cast<size_t>(scan_.position() - data_);
-        if (at >= reported + step) {
-          reported = at;
-          options_.progress(static_cast<double>(at) / static_cast<double>(size_));
+    const size_t step = std::max<size_t>(source_.size / 100, 1);
+    size_t lines = 0, reported = 0, first_line = 1;
+    for (size_t k = 0; k < parts_.size(); ++k) {
+      TextPart& part = parts_[k];
+      if (readers_.empty()) {
+        part.loaded = part.Load(source_);
+      } else {
+        WaitUntilRead(k);
+      }
+      if (!part.loaded.ok()) return part.loaded;
+      scan_ = TextScanner(part.begin, part.end, first_line);
+      // Not tied to a line: the same error wherever in the text the byte is.
+      if (part.has_nul)
+        return Status(StatusCode::kParseError, name_ + ": binary data (NUL byte): not an OBJ file");
+      ahead_ = part.numbers_read ? &part : nullptr;
+      while (!scan_.AtEnd()) {
+        if (options_.progress && (++lines & 4095) == 0) {
+          const size_t at = part.offset + static_cast<size_t>(scan_.position() - part.begin);
+          if (at >= reported + step) {
+            reported = at;
+            options_.progress(static_cast<double>(at) / static_cast<double>(source_.size));
+          }
         }
-      }
-      scan_.SkipBlanks();
-      if (scan_.AtLineEnd()) {
+        scan_.SkipBlanks();
+        if (scan_.AtLineEnd()) {
+          scan_.SkipLine();
+          continue;
+        }
+        const std::string_view key = scan_.Word();
+        Status s = Statement(key);
+        if (!s.ok()) return s;
         scan_.SkipLine();
-        continue;
       }
-      const std::string_view key = scan_.Word();
-      Status s = Statement(key);
-      if (!s.ok()) return s;
-      scan_.SkipLine();
+      first_line = scan_.line();
+      ahead_ = nullptr;
+      part = TextPart();  // its text and numbers are no longer needed
+      std::lock_guard<std::mutex> lock(ready_mutex_);
+      consumed_ = k + 1;
+      ready_changed_.notify_all();
     }
     StopReadAhead();
-    ahead_.clear();
+    parts_.clear();
     return Finish();
   }
   ~ObjParser() { StopReadAhead(); }
 
  private:
-  // Splits the text at line starts into a few parts per thread and starts reading their numbers
-  // ahead, in order, while the sequential pass consumes the parts already read.
+  // Splits the text at line starts: a few parts per reading thread, and a file into parts of at
+  // most kMaxPartBytes (never held whole).
+  Status SplitIntoParts(int threads) {
+    const size_t size = source_.size;
+    size_t count = threads > 1 ? static_cast<size_t>(threads) * 16 : 1;
+    if (source_.file != nullptr)
+      count = std::max(count, (size + kMaxPartBytes - 1) / kMaxPartBytes);
+    size_t begin = 0;
+    for (size_t k = 0; k < count && begin < size; ++k) {
+      size_t stop = k + 1 == count ? size : std::max(begin, size * (k + 1) / count);
+      Status s = LineStartAtOrAfter(&stop);
+      if (!s.ok()) return s;
+      parts_.emplace_back();
+      parts_.back().offset = begin;
+      parts_.back().length = stop - begin;
+      begin = stop;
+    }
+    ready_.assign(parts_.size(), 0);
+    return Status::Ok();
+  }
+
+  // Moves *at to just past the first newline at or after it (or to the end of the text).
+  Status LineStartAtOrAfter(size_t* at) const {
+    const size_t size = source_.size;
+    if (source_.file == nullptr) {
+      const void* nl = std::memchr(source_.data + *at, '\n', size - *at);
+      *at = nl ? static_cast<size_t>(static_cast<const char*>(nl) - source_.data) + 1 : size;
+      return Status::Ok();
+    }
+    char window[4096];
+    while (*at < size) {
+      const size_t n = std::min(sizeof(window), size - *at);
+      Status s = source_.file->ReadAt(*at, n, window);
+      if (!s.ok()) return s;
+      if (const void* nl = std::memchr(window, '\n', n)) {
+        *at += static_cast<size_t>(static_cast<const char*>(nl) - window) + 1;
+        return Status::Ok();
+      }
+      *at += n;
+    }
+    return Status::Ok();
+  }
+
+  // Starts reading the parts and their numbers ahead, in order, at most a few parts ahead of the
+  // sequential pass (their text and numbers take memory).
   void StartReadAhead() {
     const int threads = ThreadCount(options_.threads);
-    const size_t parts = static_cast<size_t>(threads) * 16;
-    const char* end = data_ + size_;
-    for (size_t k = 0; k < parts; ++k) {
-      const char* begin = ahead_.empty() ? data_ : ahead_.back().end;
-      const char* stop = k + 1 == parts ? end : data_ + size_ * (k + 1) / parts;
-      if (stop < begin) stop = begin;
-      const void* nl = std::memchr(stop, '\n', static_cast<size_t>(end - stop));
-      stop = nl ? static_cast<const char*>(nl) + 1 : end;
-      ahead_.emplace_back();
-      ahead_.back().begin = begin;
-      ahead_.back().end = stop;
-      if (stop == end) break;
-    }
-    ready_.assign(ahead_.size(), 0);
     const size_t window = 2 * static_cast<size_t>(threads);
     for (int t = 0; t < threads; ++t) {
       readers_.emplace_back([this, window] {
-        for (size_t k; (k = next_to_read_.fetch_add(1)) < ahead_.size();) {
+        for (size_t k; (k = next_to_read_.fetch_add(1)) < parts_.size();) {
           {
-            // At most a few parts ahead of the sequential pass: their numbers take memory.
             std::unique_lock<std::mutex> lock(ready_mutex_);
             ready_changed_.wait(lock, [&] { return stopping_ || k < consumed_ + window; });
             if (stopping_) return;
           }
-          ahead_[k].Read();
+          TextPart& part = parts_[k];
+          part.loaded = part.Load(source_);
+          if (part.loaded.ok()) part.Read();
           std::lock_guard<std::mutex> lock(ready_mutex_);
           ready_[k] = 1;
           ready_changed_.notify_all();
@@ -254,33 +336,13 @@ class ObjParser {
     readers_.clear();
   }
 
-  // The read-ahead part holding the line at `at`, once read, when it read it; null otherwise.
-  // Parts left behind are freed. The lock is taken once per part, not once per line.
-  ReadAhead* AheadAt(const char* at) {
-    while (ahead_at_ < ahead_.size() && ahead_[ahead_at_].end <= at) {
-      if (!ahead_at_read_) WaitUntilRead(ahead_at_);  // a reader may still be writing it
-      ahead_[ahead_at_] = ReadAhead();
-      ++ahead_at_;
-      ahead_at_read_ = false;
-      std::lock_guard<std::mutex> lock(ready_mutex_);
-      consumed_ = ahead_at_;
-      ready_changed_.notify_all();
-    }
-    if (ahead_at_ == ahead_.size()) return nullptr;
-    if (!ahead_at_read_) {
-      WaitUntilRead(ahead_at_);
-      ahead_at_read_ = true;
-    }
-    return ahead_[ahead_at_].ok ? &ahead_[ahead_at_] : nullptr;
-  }
-
   void WaitUntilRead(size_t part) {
     std::unique_lock<std::mutex> lock(ready_mutex_);
     ready_changed_.wait(lock, [&] { return ready_[part] != 0; });
   }
 
   // The next read-ahead v/vt/vn line's numbers.
-  int TakeNumbers(ReadAhead& a, bool as_double, double* out) {
+  int TakeNumbers(TextPart& a, bool as_double, double* out) {
     const int count = a.counts[a.next_line++];
     for (int k = 0; k < count; ++k)
       out[k] = as_double ? a.doubles[a.next_double++] : a.floats[a.next_float++];
@@ -314,9 +376,7 @@ class ObjParser {
   Status Statement(std::string_view key) {
     double n[7];
     int count = 0;
-    ReadAhead* ahead = nullptr;
-    if (!ahead_.empty() && (key == "v" || key == "vt" || key == "vn" || key == "f" || key == "fo"))
-      ahead = AheadAt(scan_.position());
+    TextPart* const ahead = ahead_;  // read ahead; only v, vt, vn, f and fo lines take from it
     if (key == "v") {
       if (ahead) {
         count = TakeNumbers(*ahead, false, n);
@@ -446,7 +506,7 @@ class ObjParser {
   }
 
   // The next read-ahead face, its indices resolved as ParseCorner resolves them.
-  Status FaceReadAhead(ReadAhead& a) {
+  Status FaceReadAhead(TextPart& a) {
     polygon_.clear();
     const uint32_t n = a.per_face[a.next_face++];
     for (uint32_t k = 0; k < n; ++k) {
@@ -740,9 +800,8 @@ class ObjParser {
   }
 
   TextScanner scan_;
-  std::vector<ReadAhead> ahead_;
-  size_t ahead_at_ = 0;
-  bool ahead_at_read_ = false;  // part ahead_at_ is known to be read (sequential pass only)
+  std::vector<TextPart> parts_;
+  TextPart* ahead_ = nullptr;  // the part being parsed, when its numbers were read ahead
   std::vector<std::thread> readers_;
   std::atomic<size_t> next_to_read_{0};
   // Guarded by ready_mutex_: per part, read; the parts the sequential pass is done with; stop.
@@ -751,8 +810,7 @@ class ObjParser {
   bool stopping_ = false;
   std::mutex ready_mutex_;
   std::condition_variable ready_changed_;
-  const char* data_;
-  size_t size_;
+  const TextSource source_;
   const std::string& name_;
   const ObjParseOptions& options_;
   // Kept as the floats the meshes get (texture coordinates stay double: v is flipped first).
@@ -774,7 +832,18 @@ class ObjParser {
 
 Result<Scene> ParseObj(const char* data, size_t size, const std::string& name,
                        const ObjParseOptions& options) {
-  return ObjParser(data, size, name, options).Parse();
+  TextSource source;
+  source.data = data;
+  source.size = size;
+  return ObjParser(source, name, options).Parse();
+}
+
+Result<Scene> ParseObjFile(const RandomAccessFile& file, const std::string& name,
+                           const ObjParseOptions& options) {
+  TextSource source;
+  source.file = &file;
+  source.size = file.size();
+  return ObjParser(source, name, options).Parse();
 }
 
 }  // namespace hullpack

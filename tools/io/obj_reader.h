@@ -11,6 +11,7 @@
 #include <functional>
 #include <string>
 
+#include "common/file_util.h"
 #include "common/status.h"
 #include "scene/scene.h"
 
@@ -30,6 +31,11 @@ struct ObjParseOptions {
 // Parses OBJ text. `name` prefixes error messages (usually the path).
 Result<Scene> ParseObj(const char* data, size_t size, const std::string& name,
                        const ObjParseOptions& options = {});
+
+// The same for a file, read part by part: the file is never held whole, only the few parts being
+// parsed (each at most 8 MB), so a large file costs the memory of its scene and not of its text.
+Result<Scene> ParseObjFile(const RandomAccessFile& file, const std::string& name,
+                           const ObjParseOptions& options = {});
 
 }  // namespace hullpack
 

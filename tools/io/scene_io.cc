@@ -94,11 +94,8 @@ Result<Scene> ReadScene(const std::string& path, const ReadOptions& options) {
                   path + ": unknown format " + (ext.empty() ? "(no extension)" : "'." + ext + "'") +
                       " (reads .obj .off .wrl .ply .stl .gltf .glb .fbx .dae)");
   }
-  Result<std::vector<uint8_t>> bytes = ReadFileBytes(path);
-  if (!bytes.ok()) return bytes.status();
-  if (bytes.value().empty()) return Status(StatusCode::kParseError, path + ": empty file");
+  ObjParseOptions obj_options;
   if (HasOwnParser(format)) {
-    ObjParseOptions obj_options;
     obj_options.progress = options.progress;
     obj_options.threads = options.threads;
     const std::string folder = Folder(path);
@@ -108,6 +105,20 @@ Result<Scene> ReadScene(const std::string& path, const ReadOptions& options) {
       if (!mtl.ok()) return mtl.status();
       return std::string(mtl.value().begin(), mtl.value().end());
     };
+  }
+  // OBJ files, often the largest text meshes, are parsed part by part; anything that is not a
+  // regular file (a pipe) is read whole below.
+  if (format == FileFormat::kObj) {
+    Result<RandomAccessFile> file = RandomAccessFile::Open(path);
+    if (file.ok()) {
+      if (file->size() == 0) return Status(StatusCode::kParseError, path + ": empty file");
+      return RequireTriangles(ParseObjFile(file.value(), path, obj_options), path);
+    }
+  }
+  Result<std::vector<uint8_t>> bytes = ReadFileBytes(path);
+  if (!bytes.ok()) return bytes.status();
+  if (bytes.value().empty()) return Status(StatusCode::kParseError, path + ": empty file");
+  if (HasOwnParser(format)) {
     return RequireTriangles(
         ParseOwnFormat(bytes.value().data(), bytes.value().size(), format, path, obj_options),
         path);

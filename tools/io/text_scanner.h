@@ -13,7 +13,9 @@ namespace hullpack {
 
 class TextScanner {
  public:
-  TextScanner(const char* begin, const char* end) : p_(begin), end_(end) {}
+  // `first_line`: the number of the text's first line (a part of a larger text starts later).
+  TextScanner(const char* begin, const char* end, size_t first_line = 1)
+      : p_(begin), end_(end), line_(first_line) {}
 
   bool AtEnd() const { return p_ >= end_; }
   size_t line() const { return line_; }

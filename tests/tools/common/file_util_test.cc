@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <thread>
@@ -30,6 +31,54 @@ TEST(ReadFileBytes, ReadsEveryByteOfFilesOfEverySize) {
     EXPECT_EQ(read.value(), bytes) << size << " bytes";
     std::remove(path.c_str());
   }
+}
+
+TEST(RandomAccessFile, ReadsAnyRangeFromSeveralThreads) {
+  std::vector<uint8_t> bytes(1 << 20);
+  for (size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<uint8_t>(i * 131 + i / 977);
+  const std::string path = TempPath("random_access");
+  ASSERT_TRUE(WriteFileAtomically(path, bytes).ok());
+  Result<RandomAccessFile> file = RandomAccessFile::Open(path);
+  ASSERT_TRUE(file.ok()) << file.status().message();
+  EXPECT_EQ(file->size(), bytes.size());
+  std::vector<std::thread> threads;
+  std::vector<int> same(4, 0);
+  for (int t = 0; t < 4; ++t) {
+    threads.emplace_back([&, t] {
+      const size_t offset = 1000 + 250000 * size_t(t), length = 200003;
+      std::vector<char> part(length);
+      same[t] = file->ReadAt(offset, length, part.data()).ok() &&
+                std::equal(part.begin(), part.end(), bytes.begin() + offset,
+                           [](char a, uint8_t b) { return static_cast<uint8_t>(a) == b; });
+    });
+  }
+  for (std::thread& t : threads) t.join();
+  EXPECT_EQ(same, std::vector<int>(4, 1));
+  // Past the end: an error naming the file, not a short read.
+  char tail[16];
+  Status past = file->ReadAt(bytes.size() - 8, sizeof(tail), tail);
+  EXPECT_FALSE(past.ok());
+  EXPECT_NE(past.message().find(path), std::string::npos) << past.message();
+  std::remove(path.c_str());
+}
+
+TEST(RandomAccessFile, RefusesWhatIsNotARegularFile) {
+  Result<RandomAccessFile> folder = RandomAccessFile::Open(::testing::TempDir());
+  ASSERT_FALSE(folder.ok());
+  EXPECT_NE(folder.status().message().find("directory"), std::string::npos);
+  Result<RandomAccessFile> missing = RandomAccessFile::Open(TempPath("missing"));
+  ASSERT_FALSE(missing.ok());
+  EXPECT_NE(missing.status().message().find("missing"), std::string::npos);
+  const std::string fifo = TempPath("fifo_refused");
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  // Opening a pipe for reading waits for a writer: one is started first.
+  std::thread writer([&] {
+    if (FILE* f = std::fopen(fifo.c_str(), "wb")) std::fclose(f);
+  });
+  Result<RandomAccessFile> pipe = RandomAccessFile::Open(fifo);
+  writer.join();
+  EXPECT_FALSE(pipe.ok());
+  std::remove(fifo.c_str());
 }
 
 TEST(ReadFileBytes, ReadsWhatStatCannotSize) {

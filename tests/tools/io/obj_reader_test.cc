@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <string>
 
 namespace hullpack {
@@ -186,6 +187,64 @@ TEST(ObjReader, ReadingAheadReportsTheSameErrors) {
     EXPECT_EQ(a.status().message(), b.status().message());
     EXPECT_NE(a.status().message().find("line "), std::string::npos);
   }
+}
+
+// A file is parsed part by part (never held whole): the scene is the one its text gives, with one
+// thread (parts of at most 8 MB, so a larger file has several) and with several.
+TEST(ObjReader, AFileReadPartByPartGivesTheSceneOfItsText) {
+  const std::string text = LargeText(40000);
+  ASSERT_GT(text.size(), size_t(8) << 20);
+  const std::string path = ::testing::TempDir() + "obj_reader_parts.obj";
+  ASSERT_TRUE(WriteFileAtomically(path, text.data(), text.size()).ok());
+  Result<RandomAccessFile> file = RandomAccessFile::Open(path);
+  ASSERT_TRUE(file.ok()) << file.status().message();
+  ObjParseOptions one, many;
+  one.threads = 1;
+  many.threads = 3;
+  Result<Scene> expected = ParseObj(text.data(), text.size(), path, one);
+  ASSERT_TRUE(expected.ok()) << expected.status().ToString();
+  for (const ObjParseOptions* options : {&one, &many}) {
+    Result<Scene> s = ParseObjFile(file.value(), path, *options);
+    ASSERT_TRUE(s.ok()) << s.status().ToString();
+    ASSERT_EQ(s->meshes.size(), expected->meshes.size());
+    for (size_t i = 0; i < s->meshes.size(); ++i) {
+      EXPECT_EQ(s->meshes[i].positions, expected->meshes[i].positions);
+      EXPECT_EQ(s->meshes[i].normals, expected->meshes[i].normals);
+      EXPECT_EQ(s->meshes[i].uv_sets, expected->meshes[i].uv_sets);
+      EXPECT_EQ(s->meshes[i].colors, expected->meshes[i].colors);
+      EXPECT_EQ(s->meshes[i].indices, expected->meshes[i].indices);
+    }
+    EXPECT_EQ(s->dropped, expected->dropped);
+  }
+  std::remove(path.c_str());
+}
+
+// Errors in a later part of a file, a NUL byte among them, name the line the text gives.
+TEST(ObjReader, AFileReadPartByPartReportsTheErrorsOfItsText) {
+  const std::string good = LargeText(40000);
+  const std::string path = ::testing::TempDir() + "obj_reader_bad_part.obj";
+  for (const std::string& bad :
+       {std::string("f 1 2 x\n"), std::string("v 1 2\n"), std::string("v 1 2 3\n\0\n", 10)}) {
+    std::string text = good.substr(0, good.size() * 3 / 4);
+    text = text.substr(0, text.rfind('\n') + 1) + bad + good.substr(good.size() * 3 / 4);
+    ASSERT_TRUE(WriteFileAtomically(path, text.data(), text.size()).ok());
+    Result<RandomAccessFile> file = RandomAccessFile::Open(path);
+    ASSERT_TRUE(file.ok()) << file.status().message();
+    ObjParseOptions one, many;
+    one.threads = 1;
+    many.threads = 2;
+    Result<Scene> expected = ParseObj(text.data(), text.size(), "x.obj", one);
+    Result<Scene> a = ParseObjFile(file.value(), "x.obj", one);
+    Result<Scene> b = ParseObjFile(file.value(), "x.obj", many);
+    ASSERT_FALSE(a.ok());
+    ASSERT_FALSE(b.ok());
+    EXPECT_EQ(a.status().message(), expected.status().message());
+    EXPECT_EQ(b.status().message(), expected.status().message());
+    const bool nul = bad.find('\0') != std::string::npos;
+    EXPECT_NE(a.status().message().find(nul ? "NUL" : "line "), std::string::npos)
+        << a.status().message();
+  }
+  std::remove(path.c_str());
 }
 
 }  // namespace
