@@ -39,16 +39,20 @@ Result<std::vector<uint8_t>> ReadFileBytes(const std::string& path) {
 }
 
 Result<RandomAccessFile> RandomAccessFile::Open(const std::string& path) {
+  // Checked before opening: opening a pipe would wait for a writer, and closing it again would
+  // lose what the writer sent.
+  struct stat st;
+  if (stat(path.c_str(), &st) != 0)
+    return Status(StatusCode::kIoError, path + ": " + std::strerror(errno));
+  if (!S_ISREG(st.st_mode)) {
+    return Status(StatusCode::kIoError,
+                  path + (S_ISDIR(st.st_mode) ? ": is a directory" : ": not a regular file"));
+  }
   const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) return Status(StatusCode::kIoError, path + ": " + std::strerror(errno));
-  struct stat st;
-  if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-    const bool stated = fstat(fd, &st) == 0;
-    const std::string why = !stated               ? std::strerror(errno)
-                            : S_ISDIR(st.st_mode) ? "is a directory"
-                                                  : "not a regular file";
+  if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {  // replaced meanwhile
     close(fd);
-    return Status(StatusCode::kIoError, path + ": " + why);
+    return Status(StatusCode::kIoError, path + ": not a regular file");
   }
   return RandomAccessFile(fd, static_cast<size_t>(st.st_size), path);
 }

@@ -69,14 +69,10 @@ TEST(RandomAccessFile, RefusesWhatIsNotARegularFile) {
   Result<RandomAccessFile> missing = RandomAccessFile::Open(TempPath("missing"));
   ASSERT_FALSE(missing.ok());
   EXPECT_NE(missing.status().message().find("missing"), std::string::npos);
+  // A pipe is refused without being opened (opening it would wait for a writer).
   const std::string fifo = TempPath("fifo_refused");
   ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
-  // Opening a pipe for reading waits for a writer: one is started first.
-  std::thread writer([&] {
-    if (FILE* f = std::fopen(fifo.c_str(), "wb")) std::fclose(f);
-  });
   Result<RandomAccessFile> pipe = RandomAccessFile::Open(fifo);
-  writer.join();
   EXPECT_FALSE(pipe.ok());
   std::remove(fifo.c_str());
 }
