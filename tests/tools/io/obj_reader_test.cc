@@ -146,6 +146,19 @@ std::string LargeText(size_t blocks) {
   return text;
 }
 
+// The meshes' arrays and the reader's notes of two parses are the same.
+void ExpectSameScene(const Scene& a, const Scene& b) {
+  ASSERT_EQ(a.meshes.size(), b.meshes.size());
+  for (size_t i = 0; i < a.meshes.size(); ++i) {
+    EXPECT_EQ(a.meshes[i].positions, b.meshes[i].positions);
+    EXPECT_EQ(a.meshes[i].normals, b.meshes[i].normals);
+    EXPECT_EQ(a.meshes[i].uv_sets, b.meshes[i].uv_sets);
+    EXPECT_EQ(a.meshes[i].colors, b.meshes[i].colors);
+    EXPECT_EQ(a.meshes[i].indices, b.meshes[i].indices);
+  }
+  EXPECT_EQ(a.dropped, b.dropped);
+}
+
 // Large texts are read ahead on several threads: the scene is the one a single thread reads.
 TEST(ObjReader, ReadingAheadOnThreadsGivesTheSameScene) {
   const std::string text = LargeText(10000);
@@ -157,15 +170,7 @@ TEST(ObjReader, ReadingAheadOnThreadsGivesTheSameScene) {
   Result<Scene> b = ParseObj(text.data(), text.size(), "b.obj", many);
   ASSERT_TRUE(a.ok()) << a.status().ToString();
   ASSERT_TRUE(b.ok()) << b.status().ToString();
-  ASSERT_EQ(a->meshes.size(), b->meshes.size());
-  for (size_t i = 0; i < a->meshes.size(); ++i) {
-    EXPECT_EQ(a->meshes[i].positions, b->meshes[i].positions);
-    EXPECT_EQ(a->meshes[i].normals, b->meshes[i].normals);
-    EXPECT_EQ(a->meshes[i].uv_sets, b->meshes[i].uv_sets);
-    EXPECT_EQ(a->meshes[i].colors, b->meshes[i].colors);
-    EXPECT_EQ(a->meshes[i].indices, b->meshes[i].indices);
-  }
-  EXPECT_EQ(a->dropped, b->dropped);
+  ExpectSameScene(a.value(), b.value());
 }
 
 // An error deep in a large text is reported as a single thread reports it, line included.
@@ -206,15 +211,7 @@ TEST(ObjReader, AFileReadPartByPartGivesTheSceneOfItsText) {
   for (const ObjParseOptions* options : {&one, &many}) {
     Result<Scene> s = ParseObjFile(file.value(), path, *options);
     ASSERT_TRUE(s.ok()) << s.status().ToString();
-    ASSERT_EQ(s->meshes.size(), expected->meshes.size());
-    for (size_t i = 0; i < s->meshes.size(); ++i) {
-      EXPECT_EQ(s->meshes[i].positions, expected->meshes[i].positions);
-      EXPECT_EQ(s->meshes[i].normals, expected->meshes[i].normals);
-      EXPECT_EQ(s->meshes[i].uv_sets, expected->meshes[i].uv_sets);
-      EXPECT_EQ(s->meshes[i].colors, expected->meshes[i].colors);
-      EXPECT_EQ(s->meshes[i].indices, expected->meshes[i].indices);
-    }
-    EXPECT_EQ(s->dropped, expected->dropped);
+    ExpectSameScene(s.value(), expected.value());
   }
   std::remove(path.c_str());
 }
