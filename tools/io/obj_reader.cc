@@ -18,13 +18,15 @@
 namespace hullpack {
 namespace {
 
-// One face corner: 0-based indices into the file's v / vt / vn pools; -1 = absent.
+// One face corner: 0-based indices into the file's v / vt / vn pools; -1 = absent. One per output
+// vertex is kept until the end: 32 bits each (pools are limited to kMaxRecords).
 struct Corner {
-  int64_t v = -1, vt = -1, vn = -1;
+  int32_t v = -1, vt = -1, vn = -1;
   bool operator==(const Corner& o) const { return v == o.v && vt == o.vt && vn == o.vn; }
 };
 
 constexpr uint32_t kNone = 0xFFFFFFFFu;
+constexpr size_t kMaxRecords = INT32_MAX;  // v, vt and vn lines each
 
 struct MeshBuilder {
   std::string name;
@@ -377,6 +379,12 @@ class ObjParser {
     double n[7];
     int count = 0;
     TextPart* const ahead = ahead_;  // read ahead; only v, vt, vn, f and fo lines take from it
+    if ((key == "v" && positions_.size() == kMaxRecords) ||
+        (key == "vt" && texcoords_.size() == kMaxRecords) ||
+        (key == "vn" && normals_.size() == kMaxRecords)) {
+      return Error("more than " + std::to_string(kMaxRecords) + " '" + std::string(key) +
+                   "' lines");
+    }
     if (key == "v") {
       if (ahead) {
         count = TakeNumbers(*ahead, false, n);
@@ -450,14 +458,14 @@ class ObjParser {
   }
 
   // Resolves a 1-based or negative OBJ index against a pool of `pool_size` entries.
-  bool Resolve(int64_t raw, size_t pool_size, int64_t* out) const {
+  bool Resolve(int64_t raw, size_t pool_size, int32_t* out) const {
     const int64_t size = static_cast<int64_t>(pool_size);
     if (raw > 0 && raw <= size) {
-      *out = raw - 1;
+      *out = static_cast<int32_t>(raw - 1);
       return true;
     }
     if (raw < 0 && -raw <= size) {
-      *out = size + raw;
+      *out = static_cast<int32_t>(size + raw);
       return true;
     }
     return false;
@@ -544,7 +552,12 @@ class ObjParser {
       ids[1] = vertex(polygon_[i]);
       ids[2] = vertex(polygon_[i + 1]);
       b.indices.insert(b.indices.end(), ids, ids + 3);
-      b.material_ids.push_back(current_material_);
+      // Material ids only once a `usemtl` was seen (most large scans have none); the faces
+      // before it get kNoMaterial then.
+      if (current_material_ != kNoMaterial || !b.material_ids.empty()) {
+        b.material_ids.resize(b.indices.size() / 3 - 1, kNoMaterial);
+        b.material_ids.push_back(current_material_);
+      }
     }
     if (polygon_.size() > 3) ++polygons_triangulated_;
     return Status::Ok();
@@ -719,6 +732,7 @@ class ObjParser {
         m.material_ids = std::vector<uint32_t>();
         continue;
       }
+      m.material_ids.resize(m.triangle_count(), kNoMaterial);
       for (uint32_t& id : m.material_ids) {
         if (id != kNoMaterial) continue;
         if (fallback == kNoMaterial) {

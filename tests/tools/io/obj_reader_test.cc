@@ -51,6 +51,26 @@ TEST(ObjReader, PolygonsNegativeIndicesObjectsAndMaterials) {
   EXPECT_EQ(s->meshes[1].material_ids, (std::vector<uint32_t>{1, 0}));
 }
 
+// Faces before the first `usemtl`, and an object with none, get a material of their own; a file
+// without materials has no material ids.
+TEST(ObjReader, FacesWithoutAMaterialGetOneOfTheirOwn) {
+  const std::string text =
+      "o plain\nv 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n"
+      "o later\nf 3 2 1\nf 1 3 2\nusemtl red\nf 2 1 3\n";
+  Result<Scene> s = Parse(text);
+  ASSERT_TRUE(s.ok()) << s.status().ToString();
+  ASSERT_EQ(s->meshes.size(), 2u);
+  ASSERT_EQ(s->materials.size(), 2u);
+  EXPECT_EQ(s->materials[0].name, "red");
+  EXPECT_EQ(s->materials[1].name, "(no material)");
+  EXPECT_EQ(s->meshes[0].material_ids, (std::vector<uint32_t>{1}));
+  EXPECT_EQ(s->meshes[1].material_ids, (std::vector<uint32_t>{1, 1, 0}));
+  Result<Scene> none = Parse("v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\nf 3 2 1\n");
+  ASSERT_TRUE(none.ok());
+  EXPECT_TRUE(none->materials.empty());
+  EXPECT_TRUE(none->meshes[0].material_ids.empty());
+}
+
 TEST(ObjReader, VertexColorsAndUnreferencedVertices) {
   Result<Scene> s = Parse("v 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 0 1 0 0 0 1\nv 5 5 5 1 1 1\nf 1 2 3\n");
   ASSERT_TRUE(s.ok());
