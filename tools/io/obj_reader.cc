@@ -379,13 +379,12 @@ class ObjParser {
     double n[7];
     int count = 0;
     TextPart* const ahead = ahead_;  // read ahead; only v, vt, vn, f and fo lines take from it
-    if ((key == "v" && positions_.size() == kMaxRecords) ||
-        (key == "vt" && texcoords_.size() == kMaxRecords) ||
-        (key == "vn" && normals_.size() == kMaxRecords)) {
-      return Error("more than " + std::to_string(kMaxRecords) + " '" + std::string(key) +
-                   "' lines");
-    }
+    // Corners index the pools in 32 bits.
+    auto too_many = [&](const char* what) {
+      return Error("more than " + std::to_string(kMaxRecords) + " '" + what + "' lines");
+    };
     if (key == "v") {
+      if (positions_.size() == kMaxRecords) return too_many("v");
       if (ahead) {
         count = TakeNumbers(*ahead, false, n);
       } else {
@@ -403,6 +402,7 @@ class ObjParser {
       return Status::Ok();
     }
     if (key == "vt") {
+      if (texcoords_.size() == kMaxRecords) return too_many("vt");
       if (ahead) {
         count = TakeNumbers(*ahead, true, n);
       } else {
@@ -413,6 +413,7 @@ class ObjParser {
       return Status::Ok();
     }
     if (key == "vn") {
+      if (normals_.size() == kMaxRecords) return too_many("vn");
       if (ahead) {
         count = TakeNumbers(*ahead, false, n);
       } else {
