@@ -185,6 +185,16 @@ bool AllFinite(const float* v, size_t n) {
   return true;
 }
 
+// Whether the box is finite and holds each of the `n` positions.
+bool InsideBox(const std::array<float, 6>& box, const float* positions, size_t n) {
+  if (!AllFinite(box.data(), box.size())) return false;
+  for (size_t i = 0; i < 3 * n; ++i) {
+    const size_t k = i % 3;
+    if (!(positions[i] >= box[k] && positions[i] <= box[3 + k])) return false;
+  }
+  return true;
+}
+
 // Attribute descriptors and quantizers (but the positions', which is each grid's); the input's
 // values copied densely where they are not (and checked).
 Status Describe(Prepared& st) {
@@ -213,6 +223,8 @@ Status Describe(Prepared& st) {
     st.positions = st.own_positions.data();
   }
   if (nv > 0 && !AllFinite(st.positions, 3 * nv)) return Status::kInvalidArgument;
+  if (params.position_box && !InsideBox(*params.position_box, st.positions, nv))
+    return Status::kInvalidArgument;
   if (h.has_normals) {
     h.normal.semantic = Semantic::kNormal;
     h.normal.dimension = 3;
@@ -746,7 +758,13 @@ Status EncodeGrid(const Prepared& pre, Prepared* release, int position_bits,
   position.quant.dimension = 3;
   position.quant.bits = position.bits;
   position.quant.mode = position.range;
-  position.quant.Fit(pre.positions, 3 * sizeof(float), pre.nv);
+  if (pre.params.position_box) {
+    // The grid depends on the positions' per-axis extremes alone: fitted on the box's corners it
+    // is the grid of any positions whose extremes are those corners.
+    position.quant.Fit(pre.params.position_box->data(), 3 * sizeof(float), 2);
+  } else {
+    position.quant.Fit(pre.positions, 3 * sizeof(float), pre.nv);
+  }
   // Values near FLT_MAX can give a range whose end overflows: not representable in a stream.
   if (!position.quant.Valid()) return Status::kUnsupported;
   ArithmeticEncoder& enc = st.enc;

@@ -1,7 +1,10 @@
 // Round trips through Encode/Decode: connectivity, accuracy bounds, attributes, groups, modes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 #include <random>
 #include <vector>
 
@@ -520,6 +523,84 @@ TEST(RoundTrip, RejectsInvalidInput) {
   EXPECT_EQ(Encode(t.View(), p, &s), Status::kInvalidArgument);
   EXPECT_EQ(Encode(t.View(), EncodeParams(), nullptr), Status::kInvalidArgument);
   (void)v;
+}
+
+TEST(RoundTrip, PartsCodedInTheWholeBoxDecodeSharedVerticesAlike) {
+  // A sphere cut in two halves, each coded alone: with the whole sphere's box they share a grid,
+  // so the vertices of the cut decode to the same positions in both streams.
+  const TestMesh whole = o3dgc_test::Sphere(24, 16);
+  std::array<float, 6> box = {whole.positions[0], whole.positions[1], whole.positions[2],
+                              whole.positions[0], whole.positions[1], whole.positions[2]};
+  for (size_t i = 0; i < whole.positions.size(); ++i) {
+    box[i % 3] = std::min(box[i % 3], whole.positions[i]);
+    box[3 + i % 3] = std::max(box[3 + i % 3], whole.positions[i]);
+  }
+  TestMesh half[2];
+  for (size_t t = 0; t < whole.nt(); ++t) {
+    float z = 0;
+    for (int k = 0; k < 3; ++k) z += whole.positions[3 * whole.indices[3 * t + k] + 2];
+    TestMesh& h = half[z > 0 ? 1 : 0];
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t v = whole.indices[3 * t + k];
+      h.indices.push_back(uint32_t(h.nv()));
+      h.positions.insert(h.positions.end(), whole.positions.begin() + 3 * v,
+                         whole.positions.begin() + 3 * v + 3);
+    }
+  }
+  ASSERT_GT(half[0].nt(), 0u);
+  ASSERT_GT(half[1].nt(), 0u);
+  for (RangeMode mode : {RangeMode::kUniform, RangeMode::kPerAxis, RangeMode::kDiagonal}) {
+    EncodeParams p;
+    p.position_bits = 9;
+    p.position_range = mode;
+    p.position_box = box;
+    std::map<std::array<float, 3>, std::array<float, 3>> decoded_of;  // input -> decoded
+    int shared = 0;
+    for (const TestMesh& h : half) {
+      const DecodedMesh d = DecodeOk(EncodeOk(h, p));
+      ASSERT_EQ(d.num_triangles(), h.nt());
+      // Triangles keep their corners' input positions through the quantization: match each
+      // input corner with its decoded corner through the set of decoded positions nearest.
+      const double step = 4.0 / double((1 << 9) - 1);
+      for (size_t v = 0; v < h.nv(); ++v) {
+        const std::array<float, 3> in = {h.positions[3 * v], h.positions[3 * v + 1],
+                                         h.positions[3 * v + 2]};
+        size_t best = 0;
+        double best_d = 1e30;
+        for (size_t u = 0; u < d.num_vertices(); ++u) {
+          double e = 0;
+          for (int k = 0; k < 3; ++k) e += std::pow(double(d.positions[3 * u + k]) - in[k], 2);
+          if (e < best_d) {
+            best_d = e;
+            best = u;
+          }
+        }
+        ASSERT_LT(std::sqrt(best_d), step);
+        const std::array<float, 3> out = {d.positions[3 * best], d.positions[3 * best + 1],
+                                          d.positions[3 * best + 2]};
+        auto it = decoded_of.find(in);
+        if (it == decoded_of.end()) {
+          decoded_of[in] = out;
+        } else if (&h == &half[1]) {
+          ++shared;
+          EXPECT_EQ(it->second, out);
+        }
+      }
+    }
+    EXPECT_GT(shared, 0);
+  }
+  // The box of the mesh itself gives the stream without a box; a box that misses a position is
+  // refused.
+  EncodeParams p;
+  EXPECT_EQ(EncodeOk(whole, p), [&] {
+    p.position_box = box;
+    return EncodeOk(whole, p);
+  }());
+  std::array<float, 6> small = box;
+  small[4] *= 0.5f;
+  p.position_box = small;
+  std::vector<uint8_t> s;
+  EXPECT_EQ(Encode(whole.View(), p, &s), Status::kInvalidArgument);
 }
 
 TEST(RoundTrip, ExtremeCoordinates) {

@@ -46,10 +46,12 @@
 #ifndef O3DGC_O3DGC_H_
 #define O3DGC_O3DGC_H_
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace o3dgc {
@@ -176,6 +178,11 @@ struct EncodeParams {
   int position_bits = 14;  // 1..30
   Prediction position_prediction = Prediction::kParallelogram;
   RangeMode position_range = RangeMode::kUniform;
+  // Optional: the box (min x, y, z, then max x, y, z) whose grid the positions are quantized on,
+  // instead of their own bounding box; every position must lie inside it (else kInvalidArgument).
+  // Parts of one mesh coded as separate streams in the whole mesh's box decode the vertices they
+  // share to the same positions, so no crack opens between them.
+  std::optional<std::array<float, 6>> position_box;
   int normal_bits = 10;  // 1..30
   Prediction normal_prediction = Prediction::kSurfaceNormal;
   ProgressFn progress;  // optional
