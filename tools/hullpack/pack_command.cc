@@ -61,6 +61,7 @@ nlohmann::json ReportJson(const PackReport& r) {
                           {"decode", m.seconds_decode},
                           {"decompose", m.seconds_decompose},
                           {"hull_encode", m.seconds_hull_encode}}}};
+    if (m.parts > 1) j["parts"] = m.parts;
     if (!m.no_hulls_reason.empty()) j["no_hulls"] = m.no_hulls_reason;
     if (m.hull_count) {
       j["hull_error"] = {{"concavity", m.hull_concavity},
@@ -297,6 +298,9 @@ void AddPackOptions(CliArgs& cli, PackOptions* options) {
   cli.Flag("--keep-order", &o.keep_order, "keep vertex and triangle order exactly (larger)");
   cli.Flag("--fast-decode", &o.fast_decode,
            "code values in vertex id order: faster decoding, 2-5% larger");
+  cli.Int("--part-triangles", "N", 0, 1000000000, &o.part_triangles,
+          "code a larger render mesh in parts of at most N triangles, one stream\n"
+          "and glTF mesh each, on one grid: less memory (1000000; 0: never)");
   cli.Flag("--fallback", &o.glb.fallback,
            "also write plain accessors (readers without the extension still work)");
   cli.Flag("--quantized-hulls", &o.glb.quantized_hulls,

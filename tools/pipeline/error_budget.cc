@@ -5,8 +5,10 @@
 #include <cmath>
 #include <memory>
 #include <mutex>
+#include <optional>
 
 #include "common/parallel.h"
+#include "mesh/split.h"
 
 namespace hullpack {
 namespace {
@@ -65,10 +67,20 @@ constexpr float kGridStart = 0.6f;
 
 namespace {
 
+// The groups of the triangles `part` (ascending ids of the whole mesh).
+std::vector<uint32_t> GroupsOf(const std::vector<uint32_t>& groups,
+                               const std::vector<uint32_t>& part) {
+  std::vector<uint32_t> out;
+  if (groups.empty()) return out;
+  out.reserve(part.size());
+  for (uint32_t t : part) out.push_back(groups[t]);
+  return out;
+}
+
 // EncodeWithinError at the UV range of `settings`.
 Result<BudgetedEncoding> EncodeOnGrids(const Mesh& mesh, const std::vector<uint32_t>& groups,
                                        const MeshCodecSettings& settings, double max_error,
-                                       int threads) {
+                                       int threads, size_t max_part_triangles) {
   // Every grid keeps a mesh of zero size (empty, or all positions equal) exactly, so such a mesh
   // meets even a zero budget (max_error x its diagonal of 0).
   const bool zero_size = PositionRange(mesh) == 0;
@@ -79,7 +91,8 @@ Result<BudgetedEncoding> EncodeOnGrids(const Mesh& mesh, const std::vector<uint3
     o3dgc::RangeMode mode;
     int bits;
     double error;
-    Result<EncodedMesh> encoded = Status(StatusCode::kInternal, "not encoded");
+    std::vector<EncodedMesh> parts;  // one stream per part
+    size_t bytes = 0;
   };
   std::vector<Candidate> candidates;
   const std::array<double, 3> extent = PositionExtent(mesh);
@@ -105,77 +118,104 @@ Result<BudgetedEncoding> EncodeOnGrids(const Mesh& mesh, const std::vector<uint3
       error = fewer;
       --bits;
     }
-    candidates.push_back({mode, bits, error});
+    candidates.push_back({mode, bits, error, {}, 0});
   }
   if (candidates.empty()) {
     return Status(StatusCode::kInternal,
                   "mesh '" + mesh.name + "': no position grid keeps the error within the budget");
   }
   auto t = Clock::now();
-  // The stages every grid shares run once; then the candidates, in parallel.
-  CodecInput in;
-  Status status = MakeCodecInput(mesh, groups, settings, &in);
-  if (!status.ok()) return status;
+  // A large mesh is coded in parts, one after the other, each on the whole mesh's grid (so that
+  // the vertices two parts share decode alike): the encoder's memory is then a part's.
+  const std::vector<std::vector<uint32_t>> split = max_part_triangles > 0
+                                                       ? SplitTriangles(mesh, max_part_triangles)
+                                                       : std::vector<std::vector<uint32_t>>();
+  const size_t num_parts = std::max<size_t>(split.size(), 1);
+  MeshCodecSettings part_settings = settings;
+  if (num_parts > 1) part_settings.position_box = PositionBox(mesh);
   std::mutex progress_mutex;
   float prepared = 0;
   std::vector<float> done(candidates.size(), 0.0f);
-  // The fraction of the whole: Prepare's share, then the candidates' (each from kGridStart to 1).
-  auto report = [&]() {
-    float sum = 0;
-    for (float d : done) sum += d;
-    return settings.progress(prepared * kPrepared +
-                             (1 - kPrepared) * sum / static_cast<float>(done.size()));
-  };
-  in.params.progress = [&](float f) {
-    if (!settings.progress) return true;
-    std::lock_guard<std::mutex> lock(progress_mutex);
-    prepared = std::min(f / kPrepared, 1.0f);
-    return report();
-  };
-  // Freed before the chosen stream is decoded: the peak is the larger of the two, not their sum.
-  std::unique_ptr<o3dgc::GridEncoder> shared(new o3dgc::GridEncoder);
-  const o3dgc::GridEncoder& grids = *shared;
-  status = EncoderStatus(shared->Prepare(in.view, in.params), mesh.name);
-  if (!status.ok()) return status;
-  ParallelFor(candidates.size(), threads, [&](size_t i) {
-    const o3dgc::ProgressFn progress = [&, i](float f) {
+  for (size_t p = 0; p < num_parts; ++p) {
+    std::optional<Mesh> part;
+    if (num_parts > 1) part = MeshPart(mesh, split[p]);
+    const Mesh& coded = part ? *part : mesh;
+    // The fraction of the whole: the parts before this one, then this part's Prepare share and
+    // its candidates' (each from kGridStart to 1).
+    prepared = 0;
+    std::fill(done.begin(), done.end(), 0.0f);
+    auto report = [&]() {
+      float sum = 0;
+      for (float d : done) sum += d;
+      const float part_done =
+          prepared * kPrepared + (1 - kPrepared) * sum / static_cast<float>(done.size());
+      return settings.progress((static_cast<float>(p) + part_done) / static_cast<float>(num_parts));
+    };
+    // The stages every grid shares run once; then the candidates, in parallel.
+    // The view of `in` points into these: they live as long as it.
+    const std::vector<uint32_t> part_groups =
+        part ? GroupsOf(groups, split[p]) : std::vector<uint32_t>();
+    CodecInput in;
+    Status status = MakeCodecInput(coded, part ? part_groups : groups, part_settings, &in);
+    if (!status.ok()) return status;
+    in.params.progress = [&](float f) {
       if (!settings.progress) return true;
       std::lock_guard<std::mutex> lock(progress_mutex);
-      done[i] = std::max(0.0f, (f - kGridStart) / (1 - kGridStart));
+      prepared = std::min(f / kPrepared, 1.0f);
       return report();
     };
-    EncodedMesh encoded;
-    encoded.gltf_attributes = in.attributes.gltf_attributes;
-    encoded.gltf_targets = in.attributes.gltf_targets;
-    const Status s = EncoderStatus(grids.Encode(candidates[i].bits, candidates[i].mode,
-                                                &encoded.stream, &encoded.info, progress),
-                                   mesh.name);
-    if (s.ok()) {
-      candidates[i].encoded = std::move(encoded);
-    } else {
-      candidates[i].encoded = s;
+    // Freed before the chosen streams are decoded: the peak is the larger of the two, not their
+    // sum.
+    std::unique_ptr<o3dgc::GridEncoder> shared(new o3dgc::GridEncoder);
+    const o3dgc::GridEncoder& grids = *shared;
+    status = EncoderStatus(shared->Prepare(in.view, in.params), mesh.name);
+    if (!status.ok()) return status;
+    std::vector<Status> statuses(candidates.size());
+    for (Candidate& c : candidates) c.parts.emplace_back();
+    ParallelFor(candidates.size(), threads, [&](size_t i) {
+      const o3dgc::ProgressFn progress = [&, i](float f) {
+        if (!settings.progress) return true;
+        std::lock_guard<std::mutex> lock(progress_mutex);
+        done[i] = std::max(0.0f, (f - kGridStart) / (1 - kGridStart));
+        return report();
+      };
+      EncodedMesh& encoded = candidates[i].parts.back();
+      encoded.gltf_attributes = in.attributes.gltf_attributes;
+      encoded.gltf_targets = in.attributes.gltf_targets;
+      statuses[i] = EncoderStatus(grids.Encode(candidates[i].bits, candidates[i].mode,
+                                               &encoded.stream, &encoded.info, progress),
+                                  mesh.name);
+    });
+    for (size_t i = 0; i < candidates.size(); ++i) {
+      if (!statuses[i].ok()) return statuses[i];
+      candidates[i].bytes += candidates[i].parts.back().stream.size();
     }
-  });
-  shared.reset();
+  }
   BudgetedEncoding out;
   out.seconds_encode = Seconds(t);
-  // The smallest stream; on a tie the first candidate, whatever the thread count.
+  // The smallest streams; on a tie the first candidate, whatever the thread count.
   size_t best = 0;
   for (size_t i = 0; i < candidates.size(); ++i) {
-    if (!candidates[i].encoded.ok()) return candidates[i].encoded.status();
-    if (candidates[i].encoded->stream.size() < candidates[best].encoded->stream.size()) best = i;
+    if (candidates[i].bytes < candidates[best].bytes) best = i;
   }
   Candidate& chosen = candidates[best];
+  for (size_t i = 0; i < candidates.size(); ++i) {
+    if (i != best) candidates[i].parts.clear();
+  }
   t = Clock::now();
-  Result<Mesh> decoded = DecodeMesh(chosen.encoded->stream.data(), chosen.encoded->stream.size(),
-                                    &out.groups, mesh.name, nullptr, &chosen.encoded->gltf_targets);
-  if (!decoded.ok()) {
-    return Status(StatusCode::kInternal,
-                  "mesh '" + mesh.name + "' does not decode: " + decoded.status().message());
+  for (EncodedMesh& encoded : chosen.parts) {
+    EncodedPart part;
+    Result<Mesh> decoded = DecodeMesh(encoded.stream.data(), encoded.stream.size(), &part.groups,
+                                      mesh.name, nullptr, &encoded.gltf_targets);
+    if (!decoded.ok()) {
+      return Status(StatusCode::kInternal,
+                    "mesh '" + mesh.name + "' does not decode: " + decoded.status().message());
+    }
+    part.encoded = std::move(encoded);
+    part.decoded = std::move(decoded.value());
+    out.parts.push_back(std::move(part));
   }
   out.seconds_decode = Seconds(t);
-  out.encoded = std::move(chosen.encoded.value());
-  out.decoded = std::move(decoded.value());
   out.position_bits = chosen.bits;
   out.position_range = chosen.mode;
   out.max_error = chosen.error;
@@ -185,24 +225,32 @@ Result<BudgetedEncoding> EncodeOnGrids(const Mesh& mesh, const std::vector<uint3
 
 }  // namespace
 
+size_t StreamBytes(const BudgetedEncoding& e) {
+  size_t bytes = 0;
+  for (const EncodedPart& p : e.parts) bytes += p.encoded.stream.size();
+  return bytes;
+}
+
 Result<BudgetedEncoding> EncodeWithinError(const Mesh& mesh, const std::vector<uint32_t>& groups,
                                            const MeshCodecSettings& settings, double max_error,
-                                           int threads) {
-  Result<BudgetedEncoding> out = EncodeOnGrids(mesh, groups, settings, max_error, threads);
+                                           int threads, size_t max_part_triangles) {
+  Result<BudgetedEncoding> out =
+      EncodeOnGrids(mesh, groups, settings, max_error, threads, max_part_triangles);
   if (!out.ok() || settings.uv_range != o3dgc::RangeMode::kUniform || !UvExtentsDiffer(mesh)) {
     return out;
   }
   // As EncodeMesh: per-axis UV cells are no larger, and sometimes code smaller.
   MeshCodecSettings per_axis = settings;
   per_axis.uv_range = o3dgc::RangeMode::kPerAxis;
-  Result<BudgetedEncoding> other = EncodeOnGrids(mesh, groups, per_axis, max_error, threads);
+  Result<BudgetedEncoding> other =
+      EncodeOnGrids(mesh, groups, per_axis, max_error, threads, max_part_triangles);
   if (!other.ok()) return other.status();
   BudgetedEncoding& a = out.value();
   BudgetedEncoding& b = other.value();
   const int tried = a.streams_tried + b.streams_tried;
   const double seconds_encode = a.seconds_encode + b.seconds_encode;
   const double seconds_decode = a.seconds_decode + b.seconds_decode;
-  BudgetedEncoding& best = b.encoded.stream.size() < a.encoded.stream.size() ? b : a;
+  BudgetedEncoding& best = StreamBytes(b) < StreamBytes(a) ? b : a;
   best.streams_tried = tried;
   best.seconds_encode = seconds_encode;
   best.seconds_decode = seconds_decode;

@@ -33,18 +33,27 @@ int GuaranteedPositionBits(o3dgc::RangeMode mode, const std::array<double, 3>& e
 // "uniform", "per-axis", "diagonal".
 const char* RangeModeName(o3dgc::RangeMode mode);
 
-struct BudgetedEncoding {
+// One stream of a mesh and what it decodes to.
+struct EncodedPart {
   EncodedMesh encoded;
-  Mesh decoded;                  // the chosen stream, decoded (name and material ids left empty)
+  Mesh decoded;                  // name and material ids left empty
   std::vector<uint32_t> groups;  // its decoded triangle groups
+};
+
+struct BudgetedEncoding {
+  // One stream, or one per part of a mesh split for its size (all on the same grid).
+  std::vector<EncodedPart> parts;
   int position_bits = 0;
   o3dgc::RangeMode position_range = o3dgc::RangeMode::kUniform;
   // Reached, model units: the largest distance between a vertex and its decoded position.
   double max_error = 0;
   int streams_tried = 0;
   double seconds_encode = 0;  // all candidates (wall time, they run in parallel)
-  double seconds_decode = 0;  // the chosen stream
+  double seconds_decode = 0;  // the chosen streams
 };
+
+// The bytes of all streams of `e`.
+size_t StreamBytes(const BudgetedEncoding& e);
 
 // The position error of `mesh` coded with `bits` on the `mode` grid, model units; -1 when the
 // encoder would reject the positions.
@@ -53,10 +62,13 @@ double PositionGridError(const Mesh& mesh, o3dgc::RangeMode mode, int bits);
 // `settings` gives everything but the position grid. `max_error` > 0, model units (or 0 for a
 // mesh of zero size, which every grid keeps exactly). Candidates are encoded on up to `threads`
 // threads; the result does not depend on it. settings.progress, when set, sees the fraction of all
-// candidates encoded (from any of those threads, one call at a time).
+// candidates encoded (from any of those threads, one call at a time). With `max_part_triangles`
+// > 0, a larger mesh that SplitTriangles can split is coded in parts of at most that many
+// triangles, one after the other, all on the grid of the whole mesh: the candidates are compared
+// by the bytes of all their parts, and the encoder's memory follows a part instead of the mesh.
 Result<BudgetedEncoding> EncodeWithinError(const Mesh& mesh, const std::vector<uint32_t>& groups,
                                            const MeshCodecSettings& settings, double max_error,
-                                           int threads = 1);
+                                           int threads = 1, size_t max_part_triangles = 0);
 
 }  // namespace hullpack
 

@@ -129,6 +129,7 @@ Status MakeCodecInput(const Mesh& input, const std::vector<uint32_t>& groups,
   params.fast_decode = s.fast_decode;
   params.position_bits = s.position_bits;
   params.position_range = s.position_range;
+  params.position_box = s.position_box;
   params.normal_bits = s.normal_bits;
   params.progress = s.progress;
   return Status::Ok();

@@ -30,6 +30,9 @@ struct MeshCodecSettings {
   // How the position quantization cube is sized: kUniform (largest extent) or kDiagonal (the
   // bounding-box diagonal: coarser cells at the same bits, for budgets that kUniform overshoots).
   o3dgc::RangeMode position_range = o3dgc::RangeMode::kUniform;
+  // Optional: quantize positions in this box (min x, y, z, max x, y, z) instead of the mesh's own
+  // (o3dgc::EncodeParams::position_box): parts of one mesh coded on one grid.
+  std::optional<std::array<float, 6>> position_box;
   int normal_bits = 10;
   int uv_bits = 12;
   // How the UV quantization square is sized. kUniform: one range for u and v, as Draco and glTF

@@ -7,8 +7,10 @@
 #include <cstdio>
 #include <limits>
 #include <mutex>
+#include <optional>
 
 #include "common/parallel.h"
+#include "mesh/split.h"
 #include "pipeline/collision.h"
 #include "pipeline/error_budget.h"
 #include "pipeline/hull_quantize.h"
@@ -136,8 +138,8 @@ class DecomposeProgress : public vhacd::Observer {
   int last_percent_ = -1;
 };
 
-// The render mesh's stream: explicit bits (uniform grid, as given), or the smallest stream within
-// the error budget.
+// The render mesh's streams: explicit bits (uniform grid, as given), or the smallest streams
+// within the error budget; in parts for a large mesh (PackOptions::part_triangles).
 // `threads` for the candidate grids; `progress` (may be empty) gets the fraction encoded.
 Status EncodeRenderMesh(const Mesh& mesh, const PackOptions& options, int threads,
                         const o3dgc::ProgressFn& progress, PackedMesh& out) {
@@ -146,24 +148,37 @@ Status EncodeRenderMesh(const Mesh& mesh, const PackOptions& options, int thread
   Result<BudgetedEncoding> encoded = Status(StatusCode::kInternal, "");
   if (options.position_bits <= 0) {
     s.morph_error = options.max_error * BoundingBoxDiagonal(mesh);
-    encoded = EncodeWithinError(mesh, mesh.material_ids, s,
-                                options.max_error * BoundingBoxDiagonal(mesh), threads);
+    encoded =
+        EncodeWithinError(mesh, mesh.material_ids, s, options.max_error * BoundingBoxDiagonal(mesh),
+                          threads, options.part_triangles);
   } else {
     BudgetedEncoding e;
     s.position_bits = options.position_bits;
-    auto t = Clock::now();
-    Result<EncodedMesh> stream = EncodeMesh(mesh, mesh.material_ids, s);
-    if (!stream.ok()) return stream.status();
-    e.seconds_encode = Seconds(t);
-    t = Clock::now();
-    Result<Mesh> decoded = DecodeMesh(stream->stream.data(), stream->stream.size(), &e.groups,
-                                      mesh.name, nullptr, &stream->gltf_targets);
-    if (!decoded.ok())
-      return Status(StatusCode::kInternal,
-                    "mesh '" + mesh.name + "' does not decode: " + decoded.status().message());
-    e.seconds_decode = Seconds(t);
-    e.encoded = std::move(stream.value());
-    e.decoded = std::move(decoded.value());
+    const std::vector<std::vector<uint32_t>> split =
+        options.part_triangles > 0 ? SplitTriangles(mesh, options.part_triangles)
+                                   : std::vector<std::vector<uint32_t>>();
+    if (split.size() > 1) s.position_box = PositionBox(mesh);
+    for (size_t p = 0; p < std::max<size_t>(split.size(), 1); ++p) {
+      std::optional<Mesh> part;
+      if (split.size() > 1) part = MeshPart(mesh, split[p]);
+      const Mesh& coded = part ? *part : mesh;
+      auto t = Clock::now();
+      Result<EncodedMesh> stream = EncodeMesh(coded, coded.material_ids, s);
+      if (!stream.ok()) return stream.status();
+      e.seconds_encode += Seconds(t);
+      t = Clock::now();
+      EncodedPart decoded_part;
+      Result<Mesh> decoded =
+          DecodeMesh(stream->stream.data(), stream->stream.size(), &decoded_part.groups, mesh.name,
+                     nullptr, &stream->gltf_targets);
+      if (!decoded.ok())
+        return Status(StatusCode::kInternal,
+                      "mesh '" + mesh.name + "' does not decode: " + decoded.status().message());
+      e.seconds_decode += Seconds(t);
+      decoded_part.encoded = std::move(stream.value());
+      decoded_part.decoded = std::move(decoded.value());
+      e.parts.push_back(std::move(decoded_part));
+    }
     e.position_bits = s.position_bits;
     e.position_range = s.position_range;
     e.max_error = PositionGridError(mesh, s.position_range, s.position_bits);
@@ -179,17 +194,21 @@ Status EncodeRenderMesh(const Mesh& mesh, const PackOptions& options, int thread
   r.max_error = encoded->max_error;
   const double diagonal = BoundingBoxDiagonal(mesh);
   r.max_error_fraction = diagonal > 0 ? r.max_error / diagonal : 0;
-  r.bytes_after = encoded->encoded.stream.size();
+  r.bytes_after = StreamBytes(encoded.value());
+  r.parts = encoded->parts.size();
   r.bits_per_vertex = r.vertices ? 8.0 * r.bytes_after / r.vertices : 0;
-  out.decoded = std::move(encoded->decoded);
-  out.decoded.name = mesh.name;
-  out.decoded.collides = mesh.collides;
-  out.decoded.morph_weights = mesh.morph_weights;
-  for (size_t t = 0; t < out.decoded.morph_targets.size() && t < mesh.morph_targets.size(); ++t)
-    out.decoded.morph_targets[t].name = mesh.morph_targets[t].name;
   out.grouped = !mesh.material_ids.empty();
-  out.decoded.material_ids = out.grouped ? std::move(encoded->groups) : std::vector<uint32_t>();
-  out.stream = std::move(encoded->encoded);
+  for (EncodedPart& part : encoded->parts) {
+    Mesh& decoded = part.decoded;
+    decoded.name = mesh.name;
+    decoded.collides = mesh.collides;
+    decoded.morph_weights = mesh.morph_weights;
+    for (size_t t = 0; t < decoded.morph_targets.size() && t < mesh.morph_targets.size(); ++t)
+      decoded.morph_targets[t].name = mesh.morph_targets[t].name;
+    decoded.material_ids = out.grouped ? std::move(part.groups) : std::vector<uint32_t>();
+    out.decoded.push_back(std::move(decoded));
+    out.streams.push_back(std::move(part.encoded));
+  }
   return Status::Ok();
 }
 

@@ -18,9 +18,11 @@ namespace hullpack {
 
 struct PackedMesh {
   MeshPackReport report;
-  EncodedMesh stream;    // the render stream
-  Mesh decoded;          // as a decoder reads it back (name, collides; material ids = its groups)
-  bool grouped = false;  // the stream has triangle groups (the mesh had material ids)
+  // The render stream, or one per part (PackOptions::part_triangles), each with the mesh a decoder
+  // reads back (name, collides; material ids = its groups).
+  std::vector<EncodedMesh> streams;
+  std::vector<Mesh> decoded;
+  bool grouped = false;  // the streams have triangle groups (the mesh had material ids)
   bool has_hulls = false;
   std::vector<HullGrid> hull_grids;  // per hull: what the writer stores
   std::vector<Mesh> hulls;           // per hull: the positions an engine computes, MESH_hull_h

@@ -15,6 +15,9 @@
 
 namespace hullpack {
 
+// PackOptions::part_triangles by default.
+constexpr size_t kDefaultPartTriangles = 1000000;
+
 struct PackOptions {
   // Largest position error allowed, as a fraction of each mesh's bounding-box diagonal; it sets the
   // position bits unless position_bits is given.
@@ -29,6 +32,10 @@ struct PackOptions {
   o3dgc::StreamType stream_type = o3dgc::StreamType::kBinary;
   bool keep_order = false;
   bool fast_decode = false;  // o3dgc::EncodeParams::fast_decode, for render meshes and hulls
+  // A render mesh of more triangles (without skin or morph targets) is coded in spatially compact
+  // parts of at most this many, each a stream and a glTF mesh of its own on the mesh's node, all
+  // on the mesh's quantization grid: the encoder's memory follows a part, not the mesh. 0: never.
+  size_t part_triangles = kDefaultPartTriangles;
   PackedGlbOptions glb;
   CollisionSettings collision;
   CheckRepairOptions repair;
@@ -41,7 +48,8 @@ struct MeshPackReport {
   std::string name;
   size_t triangles = 0, vertices = 0;
   size_t bytes_before = 0;     // the mesh's vertex and index data as plain glTF accessors
-  size_t bytes_after = 0;      // its compressed stream
+  size_t bytes_after = 0;      // its compressed streams
+  size_t parts = 1;            // streams (more than one: split, PackOptions::part_triangles)
   double bits_per_vertex = 0;  // bytes_after * 8 / vertices
   int position_bits = 0;
   std::string position_range;     // the quantization grid: "uniform", "per-axis" or "diagonal"
@@ -59,7 +67,7 @@ struct MeshPackReport {
   bool hull_target_reached = true;
   std::string hull_target_note;
   double hull_quantization_error = 0;  // hull vertex error after quantization, fraction of diagonal
-  // encode: the render stream's candidate grids (encoded in parallel); decode: the chosen stream
+  // encode: the render stream's candidate grids (encoded in parallel); decode: the chosen streams
   // once; hull_encode: quantizing, welding and encoding the hulls. The render stream and the hulls
   // are made at the same time, so these add up to more than the mesh's share of the wall time.
   double seconds_encode = 0, seconds_decode = 0, seconds_decompose = 0, seconds_hull_encode = 0;

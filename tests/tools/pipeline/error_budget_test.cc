@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "mesh/split.h"
+
 namespace hullpack {
 namespace {
 
@@ -74,18 +76,19 @@ TEST(ErrorBudget, ChoosesTheSmallestStreamWithinTheBudget) {
   ASSERT_TRUE(chosen.ok()) << chosen.status().ToString();
   EXPECT_GE(chosen->streams_tried, 2);
   EXPECT_LE(chosen->max_error, budget);
-  EXPECT_LE(PerVertexError(mesh, chosen->decoded), budget);  // per vertex, not only as point sets
+  EXPECT_LE(PerVertexError(mesh, chosen->parts[0].decoded),
+            budget);  // per vertex, not only as point sets
   // The decoded mesh is the stream's.
-  Result<Mesh> again =
-      DecodeMesh(chosen->encoded.stream.data(), chosen->encoded.stream.size(), nullptr, "t");
+  Result<Mesh> again = DecodeMesh(chosen->parts[0].encoded.stream.data(),
+                                  chosen->parts[0].encoded.stream.size(), nullptr, "t");
   ASSERT_TRUE(again.ok());
-  EXPECT_EQ(again->positions, chosen->decoded.positions);
+  EXPECT_EQ(again->positions, chosen->parts[0].decoded.positions);
   // Never larger than the plain uniform grid at its guaranteed bits (what a fixed rule would pick).
   s.position_bits =
       GuaranteedPositionBits(o3dgc::RangeMode::kUniform, PositionExtent(mesh), budget);
   Result<EncodedMesh> uniform = EncodeMesh(mesh, {}, s);
   ASSERT_TRUE(uniform.ok());
-  EXPECT_LE(chosen->encoded.stream.size(), uniform->stream.size());
+  EXPECT_LE(chosen->parts[0].encoded.stream.size(), uniform->stream.size());
   // On this stretched shape the per-axis grid needs fewer bits than the cube of the largest extent.
   EXPECT_LT(GuaranteedPositionBits(o3dgc::RangeMode::kPerAxis, PositionExtent(mesh), budget),
             s.position_bits);
@@ -109,10 +112,50 @@ TEST(ErrorBudget, TheChosenStreamIsAWholeEncodeOfItsGrid) {
     s.position_range = chosen->position_range;
     Result<EncodedMesh> whole = EncodeMesh(mesh, groups, s);
     ASSERT_TRUE(whole.ok());
-    EXPECT_EQ(chosen->encoded.stream, whole->stream) << threads << " threads";
-    EXPECT_EQ(chosen->encoded.gltf_attributes, whole->gltf_attributes);
-    EXPECT_EQ(chosen->encoded.info.positions, whole->info.positions);
-    EXPECT_EQ(chosen->groups.size(), groups.size());
+    EXPECT_EQ(chosen->parts[0].encoded.stream, whole->stream) << threads << " threads";
+    EXPECT_EQ(chosen->parts[0].encoded.gltf_attributes, whole->gltf_attributes);
+    EXPECT_EQ(chosen->parts[0].encoded.info.positions, whole->info.positions);
+    EXPECT_EQ(chosen->parts[0].groups.size(), groups.size());
+  }
+}
+
+// In parts, each chosen stream is the whole encode of its part (SplitTriangles, MeshPart) at the
+// chosen grid over the whole mesh's box, and the parts' error is the whole mesh's.
+TEST(ErrorBudget, PartsAreWholeEncodesOfThePartsOnTheMeshGrid) {
+  const Mesh mesh = testing::TorusMesh(40, 14);
+  std::vector<uint32_t> groups(mesh.triangle_count());
+  for (size_t t = 0; t < groups.size(); ++t) groups[t] = static_cast<uint32_t>(t % 3);
+  const double budget = 0.001 * BoundingBoxDiagonal(mesh);
+  Result<BudgetedEncoding> whole = EncodeWithinError(mesh, groups, MeshCodecSettings(), budget);
+  ASSERT_TRUE(whole.ok());
+  const std::vector<std::vector<uint32_t>> split = SplitTriangles(mesh, 400);
+  ASSERT_EQ(split.size(), 3u);  // 1120 triangles
+  for (int threads : {1, 3}) {
+    Result<BudgetedEncoding> chosen =
+        EncodeWithinError(mesh, groups, MeshCodecSettings(), budget, threads, 400);
+    ASSERT_TRUE(chosen.ok()) << chosen.status().ToString();
+    ASSERT_EQ(chosen->parts.size(), 3u);
+    EXPECT_EQ(chosen->max_error,
+              PositionGridError(mesh, chosen->position_range, chosen->position_bits));
+    EXPECT_LE(chosen->max_error, budget);
+    // Parts cost bytes: the vertices along the cuts are coded twice, and each stream's models
+    // learn from scratch (much of the bytes of parts this small).
+    EXPECT_GT(StreamBytes(chosen.value()), StreamBytes(whole.value()));
+    EXPECT_LT(StreamBytes(chosen.value()), StreamBytes(whole.value()) * 2);
+    MeshCodecSettings s;
+    s.position_bits = chosen->position_bits;
+    s.position_range = chosen->position_range;
+    s.position_box = PositionBox(mesh);
+    for (size_t p = 0; p < split.size(); ++p) {
+      const Mesh part = MeshPart(mesh, split[p]);
+      std::vector<uint32_t> part_groups;
+      for (uint32_t t : split[p]) part_groups.push_back(groups[t]);
+      Result<EncodedMesh> alone = EncodeMesh(part, part_groups, s);
+      ASSERT_TRUE(alone.ok());
+      EXPECT_EQ(chosen->parts[p].encoded.stream, alone->stream) << p << ", " << threads;
+      EXPECT_EQ(chosen->parts[p].groups.size(), split[p].size());
+      EXPECT_EQ(chosen->parts[p].decoded.triangle_count(), split[p].size());
+    }
   }
 }
 
@@ -152,9 +195,9 @@ TEST(ErrorBudget, ZeroSizeMeshesMeetAZeroBudget) {
     Result<BudgetedEncoding> r = EncodeWithinError(mesh, {}, MeshCodecSettings(), 0.0);
     ASSERT_TRUE(r.ok()) << r.status().ToString();
     EXPECT_EQ(r->max_error, 0);
-    EXPECT_EQ(r->decoded.triangle_count(), mesh.triangle_count());
-    for (size_t i = 0; i < r->decoded.positions.size(); ++i)
-      EXPECT_EQ(r->decoded.positions[i], point.positions[i % 3]);
+    EXPECT_EQ(r->parts[0].decoded.triangle_count(), mesh.triangle_count());
+    for (size_t i = 0; i < r->parts[0].decoded.positions.size(); ++i)
+      EXPECT_EQ(r->parts[0].decoded.positions[i], point.positions[i % 3]);
   }
 }
 

@@ -6,6 +6,7 @@
 #include "test_torus.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <set>
@@ -186,6 +187,70 @@ TEST(Pack, RoundTripKeepsGeometryWithinTheBudgetMaterialsSkinAndHierarchy) {
     ++colliders;
   }
   EXPECT_EQ(colliders, r.meshes[0].hull_count);
+}
+
+// A mesh above PackOptions::part_triangles: streams of compact parts on one grid, no crack
+// between them, its hulls on its node as before; a skinned mesh stays whole.
+TEST(Pack, LargeMeshesAreCodedInPartsWithoutCracks) {
+  const Scene in = TestScene();
+  PackOptions options = FastOptions();
+  options.part_triangles = 200;
+  for (int qp : {0, 11}) {
+    options.position_bits = qp;
+    Result<PackResult> packed = PackScene(in, options);
+    ASSERT_TRUE(packed.ok()) << packed.status().ToString();
+    const PackReport& r = packed->report;
+    ASSERT_EQ(r.meshes.size(), 2u);
+    EXPECT_EQ(r.meshes[0].parts, 4u);  // 768 triangles
+    EXPECT_EQ(r.meshes[1].parts, 1u);  // skinned
+    EXPECT_GT(r.meshes[0].hull_count, 1u);
+    EXPECT_LE(r.meshes[0].max_error_fraction, options.max_error);
+
+    GltfDocument doc;
+    Result<Scene> out =
+        ReadPackedGltf(packed->glb.data(), packed->glb.size(), "packed.glb", "", &doc);
+    ASSERT_TRUE(out.ok()) << out.status().ToString();
+    const Mesh& wheel = in.meshes[0];
+    const double budget = qp ? 1e9 : options.max_error * std::sqrt(2 * 2.6 * 2.6 + 0.6 * 0.6);
+    std::map<size_t, std::array<float, 3>> decoded_of;  // wheel vertex -> its decoded position
+    std::map<std::string, size_t> before, after;
+    size_t parts = 0, triangles = 0, shared = 0;
+    for (const Mesh& m : out->meshes) {
+      if (m.name != "wheel") continue;
+      ++parts;
+      triangles += m.triangle_count();
+      for (uint32_t id : m.material_ids) ++after[out->materials[id].name];
+      for (size_t v = 0; v < m.vertex_count(); ++v) {
+        const size_t o = Nearest(wheel, &m.positions[v * 3]);
+        double d = 0;
+        for (int k = 0; k < 3; ++k)
+          d += std::pow(double(m.positions[v * 3 + k]) - wheel.positions[o * 3 + k], 2);
+        EXPECT_LE(std::sqrt(d), budget * 1.0001);
+        const std::array<float, 3> p = {m.positions[v * 3], m.positions[v * 3 + 1],
+                                        m.positions[v * 3 + 2]};
+        auto [it, added] = decoded_of.insert({o, p});
+        if (!added) {
+          ++shared;
+          EXPECT_EQ(it->second, p) << "vertex " << o << " decodes differently in two parts";
+        }
+      }
+    }
+    EXPECT_EQ(parts, 4u);
+    EXPECT_EQ(triangles, wheel.triangle_count());
+    EXPECT_GT(shared, 0u);
+    for (uint32_t id : wheel.material_ids) ++before[in.materials[id].name];
+    EXPECT_EQ(before, after);
+    Result<std::vector<CollisionHull>> hulls = ReadCollisionHulls(doc, "packed.glb");
+    ASSERT_TRUE(hulls.ok()) << hulls.status().ToString();
+    ASSERT_EQ(hulls->size(), r.meshes[0].hull_count);
+    for (const CollisionHull& h : hulls.value()) EXPECT_EQ(h.body_node, 1);
+    // Without parts, the same scene is one stream per mesh.
+    PackOptions whole = options;
+    whole.part_triangles = 0;
+    Result<PackResult> one = PackScene(in, whole);
+    ASSERT_TRUE(one.ok());
+    EXPECT_EQ(one->report.meshes[0].parts, 1u);
+  }
 }
 
 TEST(Pack, AnimationsAndMaterialLooksSurvivePacking) {
@@ -497,6 +562,7 @@ TEST(Pack, TheBytesDoNotDependOnTheThreadCount) {
   for (int threads : {1, 2, 5}) {
     PackOptions options = FastOptions();
     options.collision.policy = HullPolicy::kAll;
+    options.part_triangles = 300;
     options.threads = threads;
     options.collision.parameters.num_threads = static_cast<uint32_t>(threads);
     Progress progress;
