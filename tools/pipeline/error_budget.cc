@@ -164,8 +164,7 @@ Result<BudgetedEncoding> EncodeOnGrids(const Mesh& mesh, const std::vector<uint3
       prepared = std::min(f / kPrepared, 1.0f);
       return report();
     };
-    // Freed before the chosen streams are decoded: the peak is the larger of the two, not their
-    // sum.
+    // Freed before the next part.
     std::unique_ptr<o3dgc::GridEncoder> shared(new o3dgc::GridEncoder);
     const o3dgc::GridEncoder& grids = *shared;
     status = EncoderStatus(shared->Prepare(in.view, in.params), mesh.name);
@@ -199,23 +198,7 @@ Result<BudgetedEncoding> EncodeOnGrids(const Mesh& mesh, const std::vector<uint3
     if (candidates[i].bytes < candidates[best].bytes) best = i;
   }
   Candidate& chosen = candidates[best];
-  for (size_t i = 0; i < candidates.size(); ++i) {
-    if (i != best) candidates[i].parts.clear();
-  }
-  t = Clock::now();
-  for (EncodedMesh& encoded : chosen.parts) {
-    EncodedPart part;
-    Result<Mesh> decoded = DecodeMesh(encoded.stream.data(), encoded.stream.size(), &part.groups,
-                                      mesh.name, nullptr, &encoded.gltf_targets);
-    if (!decoded.ok()) {
-      return Status(StatusCode::kInternal,
-                    "mesh '" + mesh.name + "' does not decode: " + decoded.status().message());
-    }
-    part.encoded = std::move(encoded);
-    part.decoded = std::move(decoded.value());
-    out.parts.push_back(std::move(part));
-  }
-  out.seconds_decode = Seconds(t);
+  out.streams = std::move(chosen.parts);
   out.position_bits = chosen.bits;
   out.position_range = chosen.mode;
   out.max_error = chosen.error;
@@ -227,7 +210,7 @@ Result<BudgetedEncoding> EncodeOnGrids(const Mesh& mesh, const std::vector<uint3
 
 size_t StreamBytes(const BudgetedEncoding& e) {
   size_t bytes = 0;
-  for (const EncodedPart& p : e.parts) bytes += p.encoded.stream.size();
+  for (const EncodedMesh& s : e.streams) bytes += s.stream.size();
   return bytes;
 }
 
@@ -249,11 +232,9 @@ Result<BudgetedEncoding> EncodeWithinError(const Mesh& mesh, const std::vector<u
   BudgetedEncoding& b = other.value();
   const int tried = a.streams_tried + b.streams_tried;
   const double seconds_encode = a.seconds_encode + b.seconds_encode;
-  const double seconds_decode = a.seconds_decode + b.seconds_decode;
   BudgetedEncoding& best = StreamBytes(b) < StreamBytes(a) ? b : a;
   best.streams_tried = tried;
   best.seconds_encode = seconds_encode;
-  best.seconds_decode = seconds_decode;
   return std::move(best);
 }
 

@@ -33,23 +33,16 @@ int GuaranteedPositionBits(o3dgc::RangeMode mode, const std::array<double, 3>& e
 // "uniform", "per-axis", "diagonal".
 const char* RangeModeName(o3dgc::RangeMode mode);
 
-// One stream of a mesh and what it decodes to.
-struct EncodedPart {
-  EncodedMesh encoded;
-  Mesh decoded;                  // name and material ids left empty
-  std::vector<uint32_t> groups;  // its decoded triangle groups
-};
-
 struct BudgetedEncoding {
-  // One stream, or one per part of a mesh split for its size (all on the same grid).
-  std::vector<EncodedPart> parts;
+  // One stream, or one per part of a mesh split for its size (all on the same grid). Not decoded
+  // here: a caller that keeps many streams decodes them once the sources are gone (DecodeMesh).
+  std::vector<EncodedMesh> streams;
   int position_bits = 0;
   o3dgc::RangeMode position_range = o3dgc::RangeMode::kUniform;
   // Reached, model units: the largest distance between a vertex and its decoded position.
   double max_error = 0;
   int streams_tried = 0;
   double seconds_encode = 0;  // all candidates (wall time, they run in parallel)
-  double seconds_decode = 0;  // the chosen streams
 };
 
 // The bytes of all streams of `e`.

@@ -71,6 +71,10 @@ Result<PackResult> PackLoaded(Scene scene, const PackOptions& options, PackObser
   t = Clock::now();
   if (observer) observer->OnProgress(kMeshesTo, "write");
   scene.meshes.clear();
+  Status decoded = DecodeRenderMeshes(packed.value(), ThreadCount(options.threads));
+  if (!decoded.ok()) return decoded;
+  for (size_t i = 0; i < packed->size(); ++i)
+    report.meshes[i].seconds_decode = packed.value()[i].report.seconds_decode;
   PackedGlbStats stats;
   Result<std::vector<uint8_t>> glb =
       AssemblePackedGlb(std::move(scene), std::move(packed.value()), options.glb, &stats);

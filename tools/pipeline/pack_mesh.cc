@@ -138,8 +138,9 @@ class DecomposeProgress : public vhacd::Observer {
   int last_percent_ = -1;
 };
 
-// The render mesh's streams: explicit bits (uniform grid, as given), or the smallest streams
-// within the error budget; in parts for a large mesh (PackOptions::part_triangles).
+// The render mesh's streams (not decoded yet: DecodeRenderMeshes): explicit bits (uniform grid, as
+// given), or the smallest streams within the error budget; in parts for a large mesh
+// (PackOptions::part_triangles).
 // `threads` for the candidate grids; `progress` (may be empty) gets the fraction encoded.
 Status EncodeRenderMesh(const Mesh& mesh, const PackOptions& options, int threads,
                         const o3dgc::ProgressFn& progress, PackedMesh& out) {
@@ -158,27 +159,16 @@ Status EncodeRenderMesh(const Mesh& mesh, const PackOptions& options, int thread
         options.part_triangles > 0 ? SplitTriangles(mesh, options.part_triangles)
                                    : std::vector<std::vector<uint32_t>>();
     if (split.size() > 1) s.position_box = PositionBox(mesh);
+    const auto t = Clock::now();
     for (size_t p = 0; p < std::max<size_t>(split.size(), 1); ++p) {
       std::optional<Mesh> part;
       if (split.size() > 1) part = MeshPart(mesh, split[p]);
       const Mesh& coded = part ? *part : mesh;
-      auto t = Clock::now();
       Result<EncodedMesh> stream = EncodeMesh(coded, coded.material_ids, s);
       if (!stream.ok()) return stream.status();
-      e.seconds_encode += Seconds(t);
-      t = Clock::now();
-      EncodedPart decoded_part;
-      Result<Mesh> decoded =
-          DecodeMesh(stream->stream.data(), stream->stream.size(), &decoded_part.groups, mesh.name,
-                     nullptr, &stream->gltf_targets);
-      if (!decoded.ok())
-        return Status(StatusCode::kInternal,
-                      "mesh '" + mesh.name + "' does not decode: " + decoded.status().message());
-      e.seconds_decode += Seconds(t);
-      decoded_part.encoded = std::move(stream.value());
-      decoded_part.decoded = std::move(decoded.value());
-      e.parts.push_back(std::move(decoded_part));
+      e.streams.push_back(std::move(stream.value()));
     }
+    e.seconds_encode = Seconds(t);
     e.position_bits = s.position_bits;
     e.position_range = s.position_range;
     e.max_error = PositionGridError(mesh, s.position_range, s.position_bits);
@@ -190,25 +180,17 @@ Status EncodeRenderMesh(const Mesh& mesh, const PackOptions& options, int thread
   r.position_bits = encoded->position_bits;
   r.position_range = RangeModeName(encoded->position_range);
   r.seconds_encode = encoded->seconds_encode;
-  r.seconds_decode = encoded->seconds_decode;
   r.max_error = encoded->max_error;
   const double diagonal = BoundingBoxDiagonal(mesh);
   r.max_error_fraction = diagonal > 0 ? r.max_error / diagonal : 0;
   r.bytes_after = StreamBytes(encoded.value());
-  r.parts = encoded->parts.size();
+  r.parts = encoded->streams.size();
   r.bits_per_vertex = r.vertices ? 8.0 * r.bytes_after / r.vertices : 0;
   out.grouped = !mesh.material_ids.empty();
-  for (EncodedPart& part : encoded->parts) {
-    Mesh& decoded = part.decoded;
-    decoded.name = mesh.name;
-    decoded.collides = mesh.collides;
-    decoded.morph_weights = mesh.morph_weights;
-    for (size_t t = 0; t < decoded.morph_targets.size() && t < mesh.morph_targets.size(); ++t)
-      decoded.morph_targets[t].name = mesh.morph_targets[t].name;
-    decoded.material_ids = out.grouped ? std::move(part.groups) : std::vector<uint32_t>();
-    out.decoded.push_back(std::move(decoded));
-    out.streams.push_back(std::move(part.encoded));
-  }
+  out.collides = mesh.collides;
+  out.morph_weights = mesh.morph_weights;
+  for (const MorphTarget& target : mesh.morph_targets) out.target_names.push_back(target.name);
+  out.streams = std::move(encoded->streams);
   return Status::Ok();
 }
 
@@ -326,6 +308,48 @@ Result<std::vector<PackedMesh>> PackMeshes(const Scene& scene, const PackOptions
   }
   if (first) return *first;
   return packed;
+}
+
+Status DecodeRenderMeshes(std::vector<PackedMesh>& packed, int threads) {
+  struct Job {
+    size_t mesh, part;
+  };
+  std::vector<Job> jobs;
+  for (size_t i = 0; i < packed.size(); ++i) {
+    packed[i].decoded.assign(packed[i].streams.size(), Mesh());
+    packed[i].report.seconds_decode = 0;
+    for (size_t p = 0; p < packed[i].streams.size(); ++p) jobs.push_back({i, p});
+  }
+  std::vector<Status> status(jobs.size());
+  std::vector<double> seconds(jobs.size(), 0);
+  ParallelFor(jobs.size(), threads, [&](size_t k) {
+    PackedMesh& m = packed[jobs[k].mesh];
+    const EncodedMesh& stream = m.streams[jobs[k].part];
+    const std::string& name = m.report.name;
+    const auto t = Clock::now();
+    std::vector<uint32_t> groups;
+    Result<Mesh> decoded = DecodeMesh(stream.stream.data(), stream.stream.size(), &groups, name,
+                                      nullptr, &stream.gltf_targets);
+    seconds[k] = Seconds(t);
+    if (!decoded.ok()) {
+      status[k] = Status(StatusCode::kInternal,
+                         "mesh '" + name + "' does not decode: " + decoded.status().message());
+      return;
+    }
+    Mesh& mesh = m.decoded[jobs[k].part];
+    mesh = std::move(decoded.value());
+    mesh.name = name;
+    mesh.collides = m.collides;
+    mesh.morph_weights = m.morph_weights;
+    for (size_t t = 0; t < mesh.morph_targets.size() && t < m.target_names.size(); ++t)
+      mesh.morph_targets[t].name = m.target_names[t];
+    if (m.grouped) mesh.material_ids = std::move(groups);
+  });
+  for (size_t k = 0; k < jobs.size(); ++k) {
+    if (!status[k].ok()) return status[k];
+    packed[jobs[k].mesh].report.seconds_decode += seconds[k];
+  }
+  return Status::Ok();
 }
 
 }  // namespace hullpack

@@ -7,6 +7,7 @@
 #ifndef HULLPACK_TOOLS_PIPELINE_PACK_MESH_H_
 #define HULLPACK_TOOLS_PIPELINE_PACK_MESH_H_
 
+#include <string>
 #include <vector>
 
 #include "common/status.h"
@@ -18,11 +19,15 @@ namespace hullpack {
 
 struct PackedMesh {
   MeshPackReport report;
-  // The render stream, or one per part (PackOptions::part_triangles), each with the mesh a decoder
-  // reads back (name, collides; material ids = its groups).
+  // The render stream, or one per part (PackOptions::part_triangles).
   std::vector<EncodedMesh> streams;
+  // What a decoder reads back from each stream (DecodeRenderMeshes fills it): with the mesh's
+  // name, collides, morph weights and target names; material ids = the stream's groups.
   std::vector<Mesh> decoded;
   bool grouped = false;  // the streams have triangle groups (the mesh had material ids)
+  bool collides = true;
+  std::vector<float> morph_weights;
+  std::vector<std::string> target_names;
   bool has_hulls = false;
   std::vector<HullGrid> hull_grids;  // per hull: what the writer stores
   std::vector<Mesh> hulls;           // per hull: the positions an engine computes, MESH_hull_h
@@ -32,6 +37,11 @@ struct PackedMesh {
 // and `to` and can cancel. Errors name the mesh.
 Result<std::vector<PackedMesh>> PackMeshes(const Scene& scene, const PackOptions& options,
                                            PackObserver* observer, double from, double to);
+
+// Decodes the render streams of `packed` into their `decoded` meshes, on `threads` threads, and
+// sets each report's seconds_decode. A separate step so that the caller can free the source
+// meshes first: the decoded copies and the sources are then never held together.
+Status DecodeRenderMeshes(std::vector<PackedMesh>& packed, int threads);
 
 }  // namespace hullpack
 

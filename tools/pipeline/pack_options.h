@@ -68,8 +68,9 @@ struct MeshPackReport {
   std::string hull_target_note;
   double hull_quantization_error = 0;  // hull vertex error after quantization, fraction of diagonal
   // encode: the render stream's candidate grids (encoded in parallel); decode: the chosen streams
-  // once; hull_encode: quantizing, welding and encoding the hulls. The render stream and the hulls
-  // are made at the same time, so these add up to more than the mesh's share of the wall time.
+  // once, in the assemble stage; hull_encode: quantizing, welding and encoding the hulls. The
+  // render stream and the hulls are made at the same time, so these add up to more than the mesh's
+  // share of the wall time.
   double seconds_encode = 0, seconds_decode = 0, seconds_decompose = 0, seconds_hull_encode = 0;
 };
 
@@ -86,7 +87,7 @@ struct PackReport {
   size_t key_frame_bytes_before = 0, key_frame_bytes_after = 0;
   // Wall seconds of each stage, in pipeline order; they add up to seconds_total. load is
   // PackInput's (0 from PackScene), write the caller's who writes the file; assemble is the packed
-  // GLB's making.
+  // GLB's making, the decoding of the render streams included.
   double seconds_load = 0, seconds_repair = 0, seconds_prune = 0, seconds_meshes = 0,
          seconds_assemble = 0, seconds_write = 0, seconds_total = 0;
 };

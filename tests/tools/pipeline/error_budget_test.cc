@@ -67,6 +67,13 @@ TEST(ErrorBudget, EveryGridKeepsItsGuarantee) {
   }
 }
 
+// What a decoder reads from `stream`, and its triangle groups.
+Mesh Decoded(const EncodedMesh& stream, std::vector<uint32_t>* groups = nullptr) {
+  Result<Mesh> m = DecodeMesh(stream.stream.data(), stream.stream.size(), groups, "t");
+  EXPECT_TRUE(m.ok()) << m.status().ToString();
+  return m.ok() ? std::move(m.value()) : Mesh();
+}
+
 TEST(ErrorBudget, ChoosesTheSmallestStreamWithinTheBudget) {
   const Mesh mesh = Elongated();
   const double budget = 0.0005 * BoundingBoxDiagonal(mesh);
@@ -76,19 +83,14 @@ TEST(ErrorBudget, ChoosesTheSmallestStreamWithinTheBudget) {
   ASSERT_TRUE(chosen.ok()) << chosen.status().ToString();
   EXPECT_GE(chosen->streams_tried, 2);
   EXPECT_LE(chosen->max_error, budget);
-  EXPECT_LE(PerVertexError(mesh, chosen->parts[0].decoded),
+  EXPECT_LE(PerVertexError(mesh, Decoded(chosen->streams[0])),
             budget);  // per vertex, not only as point sets
-  // The decoded mesh is the stream's.
-  Result<Mesh> again = DecodeMesh(chosen->parts[0].encoded.stream.data(),
-                                  chosen->parts[0].encoded.stream.size(), nullptr, "t");
-  ASSERT_TRUE(again.ok());
-  EXPECT_EQ(again->positions, chosen->parts[0].decoded.positions);
   // Never larger than the plain uniform grid at its guaranteed bits (what a fixed rule would pick).
   s.position_bits =
       GuaranteedPositionBits(o3dgc::RangeMode::kUniform, PositionExtent(mesh), budget);
   Result<EncodedMesh> uniform = EncodeMesh(mesh, {}, s);
   ASSERT_TRUE(uniform.ok());
-  EXPECT_LE(chosen->parts[0].encoded.stream.size(), uniform->stream.size());
+  EXPECT_LE(chosen->streams[0].stream.size(), uniform->stream.size());
   // On this stretched shape the per-axis grid needs fewer bits than the cube of the largest extent.
   EXPECT_LT(GuaranteedPositionBits(o3dgc::RangeMode::kPerAxis, PositionExtent(mesh), budget),
             s.position_bits);
@@ -112,10 +114,12 @@ TEST(ErrorBudget, TheChosenStreamIsAWholeEncodeOfItsGrid) {
     s.position_range = chosen->position_range;
     Result<EncodedMesh> whole = EncodeMesh(mesh, groups, s);
     ASSERT_TRUE(whole.ok());
-    EXPECT_EQ(chosen->parts[0].encoded.stream, whole->stream) << threads << " threads";
-    EXPECT_EQ(chosen->parts[0].encoded.gltf_attributes, whole->gltf_attributes);
-    EXPECT_EQ(chosen->parts[0].encoded.info.positions, whole->info.positions);
-    EXPECT_EQ(chosen->parts[0].groups.size(), groups.size());
+    EXPECT_EQ(chosen->streams[0].stream, whole->stream) << threads << " threads";
+    EXPECT_EQ(chosen->streams[0].gltf_attributes, whole->gltf_attributes);
+    EXPECT_EQ(chosen->streams[0].info.positions, whole->info.positions);
+    std::vector<uint32_t> decoded_groups;
+    Decoded(chosen->streams[0], &decoded_groups);
+    EXPECT_EQ(decoded_groups.size(), groups.size());
   }
 }
 
@@ -134,7 +138,7 @@ TEST(ErrorBudget, PartsAreWholeEncodesOfThePartsOnTheMeshGrid) {
     Result<BudgetedEncoding> chosen =
         EncodeWithinError(mesh, groups, MeshCodecSettings(), budget, threads, 400);
     ASSERT_TRUE(chosen.ok()) << chosen.status().ToString();
-    ASSERT_EQ(chosen->parts.size(), 3u);
+    ASSERT_EQ(chosen->streams.size(), 3u);
     EXPECT_EQ(chosen->max_error,
               PositionGridError(mesh, chosen->position_range, chosen->position_bits));
     EXPECT_LE(chosen->max_error, budget);
@@ -152,9 +156,10 @@ TEST(ErrorBudget, PartsAreWholeEncodesOfThePartsOnTheMeshGrid) {
       for (uint32_t t : split[p]) part_groups.push_back(groups[t]);
       Result<EncodedMesh> alone = EncodeMesh(part, part_groups, s);
       ASSERT_TRUE(alone.ok());
-      EXPECT_EQ(chosen->parts[p].encoded.stream, alone->stream) << p << ", " << threads;
-      EXPECT_EQ(chosen->parts[p].groups.size(), split[p].size());
-      EXPECT_EQ(chosen->parts[p].decoded.triangle_count(), split[p].size());
+      EXPECT_EQ(chosen->streams[p].stream, alone->stream) << p << ", " << threads;
+      std::vector<uint32_t> decoded_groups;
+      EXPECT_EQ(Decoded(chosen->streams[p], &decoded_groups).triangle_count(), split[p].size());
+      EXPECT_EQ(decoded_groups.size(), split[p].size());
     }
   }
 }
@@ -195,9 +200,10 @@ TEST(ErrorBudget, ZeroSizeMeshesMeetAZeroBudget) {
     Result<BudgetedEncoding> r = EncodeWithinError(mesh, {}, MeshCodecSettings(), 0.0);
     ASSERT_TRUE(r.ok()) << r.status().ToString();
     EXPECT_EQ(r->max_error, 0);
-    EXPECT_EQ(r->parts[0].decoded.triangle_count(), mesh.triangle_count());
-    for (size_t i = 0; i < r->parts[0].decoded.positions.size(); ++i)
-      EXPECT_EQ(r->parts[0].decoded.positions[i], point.positions[i % 3]);
+    const Mesh decoded = Decoded(r->streams[0]);
+    EXPECT_EQ(decoded.triangle_count(), mesh.triangle_count());
+    for (size_t i = 0; i < decoded.positions.size(); ++i)
+      EXPECT_EQ(decoded.positions[i], point.positions[i % 3]);
   }
 }
 
