@@ -12,15 +12,15 @@
 
 namespace hullpack {
 
-// Whether SplitTriangles can split `mesh`: it has no skin and no morph targets (a part would need the
-// skin's or the targets' every user to follow it).
+// Whether SplitTriangles can split `mesh`: it has no skin and no morph targets (a part would need
+// the skin's or the targets' every user to follow it).
 bool CanSplitMesh(const Mesh& mesh);
 
 // The triangles of `mesh` in parts of at most `max_triangles` (>= 1), as ascending triangle ids:
 // as few parts as that allows, of about equal size, each cut at a quantile of the triangles'
 // centroids along the longest side of their box, recursively, so that a part is a compact piece
-// of the surface. A mesh of at most
-// `max_triangles` triangles, or that CanSplitMesh refuses, is one part. Deterministic.
+// of the surface. A mesh of at most `max_triangles` triangles, or that CanSplitMesh refuses, is
+// one part. Deterministic.
 std::vector<std::vector<uint32_t>> SplitTriangles(const Mesh& mesh, size_t max_triangles);
 
 // The mesh of `triangles` (ascending ids of `mesh`): the triangles keep their order and corners,
