@@ -100,6 +100,7 @@ def pack(
     ascii: bool = False,
     keep_order: bool = False,
     fast_decode: bool = False,
+    part_triangles: int = 1000000,
     fallback: bool = False,
     quantized_hulls: bool = False,
     plain_animations: bool = False,

@@ -74,6 +74,7 @@ py::dict PackReportDict(const PackReport& r) {
     d["bytes_before"] = m.bytes_before;
     d["bytes_after"] = m.bytes_after;
     d["bits_per_vertex"] = m.bits_per_vertex;
+    d["parts"] = m.parts;
     d["position_bits"] = m.position_bits;
     d["max_error"] = m.max_error;
     d["max_error_fraction"] = m.max_error_fraction;
@@ -140,9 +141,9 @@ void ApplyDecomposition(vhacd::Parameters* p, const std::string& quality,
 
 py::dict Pack(const std::string& input, const std::string& output, double max_error,
               double hull_error, std::optional<int> position_bits, int normal_bits, int uv_bits,
-              bool ascii, bool keep_order, bool fast_decode, bool fallback, bool quantized_hulls,
-              bool plain_animations, py::handle hulls, const std::string& physics,
-              const std::string& method, const std::string& quality,
+              bool ascii, bool keep_order, bool fast_decode, int64_t part_triangles, bool fallback,
+              bool quantized_hulls, bool plain_animations, py::handle hulls,
+              const std::string& physics, const std::string& method, const std::string& quality,
               std::optional<uint32_t> resolution, std::optional<uint32_t> max_hulls,
               std::optional<uint32_t> max_vertices, std::optional<double> concavity,
               std::optional<double> max_concavity, bool force, py::object progress) {
@@ -160,6 +161,8 @@ py::dict Pack(const std::string& input, const std::string& output, double max_er
   o.stream_type = ascii ? o3dgc::StreamType::kAscii : o3dgc::StreamType::kBinary;
   o.keep_order = keep_order;
   o.fast_decode = fast_decode;
+  if (part_triangles < 0) throw py::value_error("part_triangles must be >= 0");
+  o.part_triangles = static_cast<size_t>(part_triangles);
   o.glb.fallback = fallback;
   o.glb.quantized_hulls = quantized_hulls;
   o.glb.compress_animations = !plain_animations;
@@ -371,6 +374,9 @@ normal_bits, uv_bits : int
 ascii, keep_order, fast_decode, fallback, quantized_hulls, plain_animations : bool
     As the command's --ascii, --keep-order, --fast-decode, --fallback, --quantized-hulls,
     --plain-animations.
+part_triangles : int
+    As --part-triangles: a render mesh of more triangles is coded in compact parts of at most
+    this many, one stream and glTF mesh each, on one grid (1000000; 0: never).
 hulls : str or int
     As --hulls: which meshes get hulls, "auto" (default), "all" or "none"; or a count N
     (1 to 100000, an int or its digits): exactly N hulls per mesh (on the meshes "auto"
@@ -401,7 +407,8 @@ progress : callable, optional
 Returns
 -------
 dict
-    Per mesh ("meshes"): triangles, vertices, bytes before/after, bits per vertex, position
+    Per mesh ("meshes"): triangles, vertices, bytes before/after, bits per vertex, streams
+    ("parts"), position
     error, hull count/vertices/bytes, hull concavity and IoU; "left_out", "not_kept",
     "output_bytes", "key_frame_bytes_before" and "key_frame_bytes_after" (animation key
     frames as plain accessors and as written).
@@ -415,13 +422,15 @@ OSError
         py::arg("input"), py::arg("output"), py::kw_only(), py::arg("max_error") = 0.0005,
         py::arg("hull_error") = 0.002, py::arg("position_bits") = py::none(),
         py::arg("normal_bits") = 10, py::arg("uv_bits") = 12, py::arg("ascii") = false,
-        py::arg("keep_order") = false, py::arg("fast_decode") = false, py::arg("fallback") = false,
-        py::arg("quantized_hulls") = false, py::arg("plain_animations") = false,
-        py::arg("hulls") = "auto", py::arg("physics") = "omi", py::arg("method") = "vhacd",
-        py::arg("quality") = "default", py::arg("resolution") = py::none(),
-        py::arg("max_hulls") = py::none(), py::arg("max_vertices") = py::none(),
-        py::arg("concavity") = py::none(), py::arg("max_concavity") = py::none(),
-        py::arg("force") = false, py::arg("progress") = py::none());
+        py::arg("keep_order") = false, py::arg("fast_decode") = false,
+        py::arg("part_triangles") = static_cast<int64_t>(kDefaultPartTriangles),
+        py::arg("fallback") = false, py::arg("quantized_hulls") = false,
+        py::arg("plain_animations") = false, py::arg("hulls") = "auto", py::arg("physics") = "omi",
+        py::arg("method") = "vhacd", py::arg("quality") = "default",
+        py::arg("resolution") = py::none(), py::arg("max_hulls") = py::none(),
+        py::arg("max_vertices") = py::none(), py::arg("concavity") = py::none(),
+        py::arg("max_concavity") = py::none(), py::arg("force") = false,
+        py::arg("progress") = py::none());
   m.def("unpack", &Unpack, R"(Decode a packed GLB back to plain glTF (.glb) or a mesh file.
 
 Parameters

@@ -236,6 +236,20 @@ class Files(unittest.TestCase):
         with self.assertRaises(OSError):
             hullpack.info(os.path.join(self.dir.name, "missing.obj"))
 
+    def test_pack_in_parts(self):
+        # A mesh above part_triangles becomes one glTF mesh per part, on one grid.
+        glb = os.path.join(self.dir.name, "torus.parts.glb")
+        report = hullpack.pack(self.obj, glb, resolution=20000, part_triangles=200)
+        self.assertEqual(report["meshes"][0]["parts"], 3)
+        back = hullpack.unpack(glb, os.path.join(self.dir.name, "parts.obj"))
+        self.assertEqual(back["meshes"], 3)
+        self.assertEqual(back["triangles"], 24 * 12 * 2)
+        whole = hullpack.pack(self.obj, os.path.join(self.dir.name, "whole.glb"),
+                              resolution=20000, part_triangles=0)
+        self.assertEqual(whole["meshes"][0]["parts"], 1)
+        with self.assertRaises(ValueError):
+            hullpack.pack(self.obj, os.path.join(self.dir.name, "bad.glb"), part_triangles=-1)
+
     def test_pack_quantized_hulls(self):
         # Default hulls are floats (nothing required because of them); quantized_hulls stores the
         # same grid integers as bytes/shorts and requires KHR_mesh_quantization.
