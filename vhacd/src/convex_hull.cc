@@ -11,12 +11,17 @@ namespace internal {
 
 namespace {
 
+constexpr uint32_t kNone = UINT32_MAX;
+
 struct Face {
-  uint32_t v[3];
+  uint32_t v[3];  // points
+  uint32_t s[3];  // the same vertices as slots (QuickHull::slot_point_)
   int32_t nb[3];  // nb[i]: face across edge v[i] -> v[(i+1)%3]
   Vec3 n;         // unnormalized outward normal
   double nlen;
-  std::vector<uint32_t> outside;
+  // The points outside this face, in the order they were assigned: a list through
+  // QuickHull::next_, so that every list together takes one index per point.
+  uint32_t first = kNone, last = kNone;
   bool alive = true;
   uint32_t visible_stamp = 0;
   uint32_t hidden_stamp = 0;
@@ -24,19 +29,53 @@ struct Face {
 
 enum class Attempt { kOk, kRetry };
 
+// The input points, in order.
+class PointArray {
+ public:
+  explicit PointArray(const std::vector<Vec3>& points) : points_(points) {}
+  size_t size() const { return points_.size(); }
+  const Vec3& operator[](size_t i) const { return points_[i]; }
+
+ private:
+  const std::vector<Vec3>& points_;
+};
+
+// head, then base gathered by ids.
+class GatheredPoints {
+ public:
+  GatheredPoints(const std::vector<Vec3>& head, const std::vector<Vec3>& base,
+                 const std::vector<uint32_t>& ids)
+      : head_(head), base_(base), ids_(ids) {}
+  size_t size() const { return head_.size() + ids_.size(); }
+  const Vec3& operator[](size_t i) const {
+    return i < head_.size() ? head_[i] : base_[ids_[i - head_.size()]];
+  }
+
+ private:
+  const std::vector<Vec3>& head_;
+  const std::vector<Vec3>& base_;
+  const std::vector<uint32_t>& ids_;
+};
+
+template <typename Points>
 class QuickHull {
  public:
-  QuickHull(const std::vector<Vec3>& pts, double eps) : p_(pts), eps_(eps) {}
+  QuickHull(const Points& pts, double eps) : p_(pts), eps_(eps) {}
 
   // Returns kRetry on a topological inconsistency (tolerant mode only).
   Attempt Run(const uint32_t init[4], HullMesh* out) {
     faces_.clear();
     faces_.reserve(64);
+    slot_point_.clear();
+    start_at_.clear();
+    stamp_at_.clear();
+    next_.assign(p_.size(), kNone);
     const uint32_t a = init[0], b = init[1], c = init[2], d = init[3];
-    AddFace(a, b, c);
-    AddFace(a, d, b);
-    AddFace(b, d, c);
-    AddFace(c, d, a);
+    const uint32_t sa = AddSlot(a), sb = AddSlot(b), sc = AddSlot(c), sd = AddSlot(d);
+    AddFace(sa, sb, sc);
+    AddFace(sa, sd, sb);
+    AddFace(sb, sd, sc);
+    AddFace(sc, sd, sa);
     LinkInitial();
     // Assign every other point to the face it is farthest above.
     for (uint32_t i = 0; i < p_.size(); ++i) {
@@ -45,18 +84,14 @@ class QuickHull {
     }
     std::vector<int32_t> visible;
     std::vector<std::pair<int32_t, int>> horizon;
-    // start_at[v]: the new face whose horizon edge starts at v (valid when stamp_at[v] == stamp).
-    std::vector<int32_t> start_at(p_.size(), -1);
-    std::vector<uint32_t> stamp_at(p_.size(), 0);
-    std::vector<uint32_t> orphans;
     uint32_t stamp = 0;
     for (size_t fi = 0; fi < faces_.size(); ++fi) {
-      if (!faces_[fi].alive || faces_[fi].outside.empty()) continue;
+      if (!faces_[fi].alive || faces_[fi].first == kNone) continue;
       // Farthest outside point of this face.
       const Face& f0 = faces_[fi];
-      uint32_t eye = f0.outside[0];
+      uint32_t eye = f0.first;
       double best = -1.0;
-      for (uint32_t q : f0.outside) {
+      for (uint32_t q = f0.first; q != kNone; q = next_[q]) {
         const double dd = Dot(f0, q);
         if (dd > best) {
           best = dd;
@@ -86,52 +121,56 @@ class QuickHull {
         }
       }
       // New faces over the horizon.
+      const uint32_t seye = AddSlot(eye);
       const size_t first_new = faces_.size();
       for (const auto& he : horizon) {
         const Face& f = faces_[he.first];
-        const uint32_t va = f.v[he.second], vb = f.v[(he.second + 1) % 3];
+        const uint32_t va = f.s[he.second], vb = f.s[(he.second + 1) % 3];
         const int32_t g = f.nb[he.second];
-        const int32_t nf = AddFace(va, vb, eye);
+        const int32_t nf = AddFace(va, vb, seye);
         faces_[nf].nb[0] = g;
         Face& fg = faces_[g];
         int k = 0;
-        while (k < 3 && !(fg.v[k] == vb && fg.v[(k + 1) % 3] == va)) ++k;
+        while (k < 3 && !(fg.s[k] == vb && fg.s[(k + 1) % 3] == va)) ++k;
         if (k == 3) return Attempt::kRetry;
         fg.nb[k] = nf;
-        if (stamp_at[va] == stamp) return Attempt::kRetry;  // the horizon is not a simple loop
-        stamp_at[va] = stamp;
-        start_at[va] = nf;
+        if (stamp_at_[va] == stamp) return Attempt::kRetry;  // the horizon is not a simple loop
+        stamp_at_[va] = stamp;
+        start_at_[va] = nf;
       }
       for (size_t nf = first_new; nf < faces_.size(); ++nf) {
-        const uint32_t vb = faces_[nf].v[1];
-        if (stamp_at[vb] != stamp) return Attempt::kRetry;
-        faces_[nf].nb[1] = start_at[vb];
-        faces_[start_at[vb]].nb[2] = static_cast<int32_t>(nf);
+        const uint32_t vb = faces_[nf].s[1];
+        if (stamp_at_[vb] != stamp) return Attempt::kRetry;
+        faces_[nf].nb[1] = start_at_[vb];
+        faces_[start_at_[vb]].nb[2] = static_cast<int32_t>(nf);
       }
-      // Redistribute the outside points of the visible faces.
-      orphans.clear();
+      // Redistribute the outside points of the visible faces, face by face in list order. Assign
+      // only looks at the new faces, so the lists can be walked while it appends to theirs.
+      for (int32_t f : visible) faces_[f].alive = false;
       for (int32_t f : visible) {
-        Face& fv = faces_[f];
-        fv.alive = false;
-        for (uint32_t q : fv.outside)
-          if (q != eye) orphans.push_back(q);
-        std::vector<uint32_t>().swap(fv.outside);
+        uint32_t q = faces_[f].first;
+        faces_[f].first = faces_[f].last = kNone;
+        while (q != kNone) {
+          const uint32_t after = next_[q];
+          if (q != eye) Assign(q, first_new, faces_.size());
+          q = after;
+        }
       }
-      for (uint32_t q : orphans) Assign(q, first_new, faces_.size());
     }
+    std::vector<uint32_t>().swap(next_);
     // Compact.
     out->vertices.clear();
     out->triangles.clear();
-    std::vector<uint32_t> remap(p_.size(), UINT32_MAX);
+    std::vector<uint32_t> remap(slot_point_.size(), UINT32_MAX);
     for (const Face& f : faces_) {
       if (!f.alive) continue;
       std::array<uint32_t, 3> t;
       for (int i = 0; i < 3; ++i) {
-        if (remap[f.v[i]] == UINT32_MAX) {
-          remap[f.v[i]] = static_cast<uint32_t>(out->vertices.size());
+        if (remap[f.s[i]] == UINT32_MAX) {
+          remap[f.s[i]] = static_cast<uint32_t>(out->vertices.size());
           out->vertices.push_back(p_[f.v[i]]);
         }
-        t[i] = remap[f.v[i]];
+        t[i] = remap[f.s[i]];
       }
       out->triangles.push_back(t);
     }
@@ -144,8 +183,21 @@ class QuickHull {
   }
 
  private:
-  int32_t AddFace(uint32_t a, uint32_t b, uint32_t c) {
+  // A point becomes a face vertex at most once (an eye leaves every outside list): its slot
+  // indexes the per-vertex arrays, which stay as small as the hull instead of the input.
+  uint32_t AddSlot(uint32_t point) {
+    slot_point_.push_back(point);
+    start_at_.push_back(-1);
+    stamp_at_.push_back(0);
+    return static_cast<uint32_t>(slot_point_.size() - 1);
+  }
+
+  int32_t AddFace(uint32_t sa, uint32_t sb, uint32_t sc) {
     Face f;
+    f.s[0] = sa;
+    f.s[1] = sb;
+    f.s[2] = sc;
+    const uint32_t a = slot_point_[sa], b = slot_point_[sb], c = slot_point_[sc];
     f.v[0] = a;
     f.v[1] = b;
     f.v[2] = c;
@@ -186,12 +238,25 @@ class QuickHull {
         }
       }
     }
-    if (best_f != end) faces_[best_f].outside.push_back(q);
+    if (best_f == end) return;
+    Face& f = faces_[best_f];
+    next_[q] = kNone;
+    if (f.last == kNone)
+      f.first = q;
+    else
+      next_[f.last] = q;
+    f.last = q;
   }
 
-  const std::vector<Vec3>& p_;
+  const Points& p_;
   double eps_;
   std::vector<Face> faces_;
+  std::vector<uint32_t> slot_point_;  // the point of each slot
+  // start_at_[s]: the new face whose horizon edge starts at slot s (valid when stamp_at_[s] ==
+  // the current stamp).
+  std::vector<int32_t> start_at_;
+  std::vector<uint32_t> stamp_at_;
+  std::vector<uint32_t> next_;  // next_[q]: the point after q in its face's outside list
 };
 
 }  // namespace
@@ -214,18 +279,22 @@ const char* HullStatusName(HullStatus status) {
   return "unknown";
 }
 
-HullStatus ComputeConvexHull(const std::vector<Vec3>& points, double tolerance, HullMesh* out) {
+namespace {
+
+template <typename Points>
+HullStatus Hull(const Points& points, double tolerance, HullMesh* out) {
   out->vertices.clear();
   out->triangles.clear();
   const size_t n = points.size();
-  for (const Vec3& p : points)
-    if (!p.allFinite()) return HullStatus::kNonFinite;
+  for (size_t i = 0; i < n; ++i)
+    if (!points[i].allFinite()) return HullStatus::kNonFinite;
   if (n < 4) return HullStatus::kTooFewPoints;
   if (n >= std::numeric_limits<uint32_t>::max()) return HullStatus::kFailed;
 
   Vec3 maxabs = Vec3::Zero();
   Vec3 lo = points[0], hi = points[0];
-  for (const Vec3& p : points) {
+  for (size_t i = 0; i < n; ++i) {
+    const Vec3& p = points[i];
     maxabs = maxabs.cwiseMax(p.cwiseAbs());
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
@@ -280,7 +349,7 @@ HullStatus ComputeConvexHull(const std::vector<Vec3>& points, double tolerance, 
     uint32_t init[4] = {i0, i1, i2, i3};
     if (signed_best > 0) std::swap(init[1], init[2]);  // make (i0,i1,i2) face away from i3
 
-    QuickHull qh(points, eps);
+    QuickHull<Points> qh(points, eps);
     if (qh.Run(init, out) == Attempt::kOk) return HullStatus::kOk;
     if (tolerance == 0.0)
       eps = 1e-12 * (maxabs.sum() + (hi - lo).norm());
@@ -290,6 +359,17 @@ HullStatus ComputeConvexHull(const std::vector<Vec3>& points, double tolerance, 
   out->vertices.clear();
   out->triangles.clear();
   return HullStatus::kFailed;
+}
+
+}  // namespace
+
+HullStatus ComputeConvexHull(const std::vector<Vec3>& points, double tolerance, HullMesh* out) {
+  return Hull(PointArray(points), tolerance, out);
+}
+
+HullStatus ComputeConvexHull(const std::vector<Vec3>& head, const std::vector<Vec3>& base,
+                             const std::vector<uint32_t>& ids, double tolerance, HullMesh* out) {
+  return Hull(GatheredPoints(head, base, ids), tolerance, out);
 }
 
 double HullMesh::Volume() const {
