@@ -135,35 +135,52 @@ HullMesh BuildPartHull(const Part& part, const TriangleIndex& index, const Solid
     std::fill(vstamp.begin(), vstamp.end(), 0);
     mark = 1;
   }
-  auto inside = [&](const Vec3& q) {
-    return (q.array() >= lo.array()).all() && (q.array() <= hi.array()).all();
-  };
-  // Triangles inside the box contribute their vertices (each once), the others their clipped
-  // polygon. A part that holds the whole mesh (the root, on a large mesh the largest array of the
-  // decomposition) gets room for every vertex at once rather than by doubling.
-  if (part.cuts.empty() && index.HoldsMesh(lo, hi)) pts.reserve(pts.size() + mesh.points.size());
-  std::vector<Vec3> poly;
+  HullMesh h;
+  HullStatus status;
   const size_t before_surface = pts.size();
-  index.ForEachInBox(lo, hi, &stamp, mark, [&](uint32_t t) {
-    const auto& tr = mesh.triangles[t];
-    if (!part.cuts.empty()) {
-      poly.clear();
-      ClipTriangleToBox(mesh.points[tr[0]], mesh.points[tr[1]], mesh.points[tr[2]], lo, hi, &poly);
-      if (!poly.empty()) ClipPolygonToCuts(poly, part.cuts, &pts);
-      return;
-    }
-    if (inside(mesh.points[tr[0]]) && inside(mesh.points[tr[1]]) && inside(mesh.points[tr[2]])) {
-      for (uint32_t v : tr)
+  if (part.cuts.empty() && index.HoldsMesh(lo, hi)) {
+    // A part that holds the whole mesh (the root; on a large mesh its points are the largest array
+    // of the decomposition): every triangle lies in the box and gives its vertices, which the hull
+    // reads in place, by index, in the order the triangles give them.
+    std::vector<uint32_t> ids;
+    ids.reserve(mesh.points.size());
+    index.ForEachInBox(lo, hi, &stamp, mark, [&](uint32_t t) {
+      for (uint32_t v : mesh.triangles[t])
         if (vstamp[v] != mark) {
           vstamp[v] = mark;
-          pts.push_back(mesh.points[v]);
+          ids.push_back(v);
         }
-      return;
-    }
-    ClipTriangleToBox(mesh.points[tr[0]], mesh.points[tr[1]], mesh.points[tr[2]], lo, hi, &pts);
-  });
-  HullMesh h;
-  if (ComputeConvexHull(pts, -1.0, &h) == HullStatus::kOk && h.Volume() > 1e-3) return h;
+    });
+    status = ComputeConvexHull(pts, mesh.points, ids, -1.0, &h);
+  } else {
+    auto inside = [&](const Vec3& q) {
+      return (q.array() >= lo.array()).all() && (q.array() <= hi.array()).all();
+    };
+    // Triangles inside the box contribute their vertices (each once), the others their clipped
+    // polygon.
+    std::vector<Vec3> poly;
+    index.ForEachInBox(lo, hi, &stamp, mark, [&](uint32_t t) {
+      const auto& tr = mesh.triangles[t];
+      if (!part.cuts.empty()) {
+        poly.clear();
+        ClipTriangleToBox(mesh.points[tr[0]], mesh.points[tr[1]], mesh.points[tr[2]], lo, hi,
+                          &poly);
+        if (!poly.empty()) ClipPolygonToCuts(poly, part.cuts, &pts);
+        return;
+      }
+      if (inside(mesh.points[tr[0]]) && inside(mesh.points[tr[1]]) && inside(mesh.points[tr[2]])) {
+        for (uint32_t v : tr)
+          if (vstamp[v] != mark) {
+            vstamp[v] = mark;
+            pts.push_back(mesh.points[v]);
+          }
+        return;
+      }
+      ClipTriangleToBox(mesh.points[tr[0]], mesh.points[tr[1]], mesh.points[tr[2]], lo, hi, &pts);
+    });
+    status = ComputeConvexHull(pts, -1.0, &h);
+  }
+  if (status == HullStatus::kOk && h.Volume() > 1e-3) return h;
   // A sliver along an oriented cut can hold surface voxels whose surface lies across the plane:
   // its voxels' hull would stick out of the solid by up to a voxel, and the surface is held by the
   // part across the cut. It gets no hull.
