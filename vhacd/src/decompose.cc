@@ -166,10 +166,9 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   // Normalization.
   Vec3 center;
   double scale = 0.0;
-  std::vector<Vec3> pn;
-  if (!internal::NormalizeToUnitBox(input.points, &center, &scale, &pn))
+  std::vector<Vec3> pn = std::move(input.points);
+  if (!internal::NormalizeToUnitBox(&pn, &center, &scale))
     return Fail(Status::kInvalidMesh, "the mesh has a degenerate or overflowing bounding box");
-  std::vector<Vec3>().swap(input.points);  // only the normalized copy is read from here on
   if (input.closed && params.hull_count <= 1) {
     // Tolerance in the unit box: far above the hull's rounding, far below any dent that matters.
     constexpr double kOnHull = 1e-9;

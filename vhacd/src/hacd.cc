@@ -294,8 +294,8 @@ Result DecomposeHacdImpl(const MeshView& view, const HacdParameters& params, Obs
   // Normalization: centre of the box, then the diagonal scaled to 2 * scale_factor.
   Vec3 center;
   double extent = 0.0;
-  std::vector<Vec3> pq;
-  if (!internal::NormalizeToUnitBox(input.points, &center, &extent, &pq))
+  std::vector<Vec3> pq = std::move(input.points);
+  if (!internal::NormalizeToUnitBox(&pq, &center, &extent))
     return Fail(Status::kInvalidMesh, "the mesh has a degenerate or overflowing bounding box");
   Vec3 qlo = Vec3::Constant(HUGE_VAL), qhi = -qlo;
   for (const Vec3& p : pq) {

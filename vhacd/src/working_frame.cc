@@ -16,20 +16,18 @@ double Quantize(double x) {
 
 }  // namespace
 
-bool NormalizeToUnitBox(const std::vector<Vec3>& points, Vec3* center, double* scale,
-                        std::vector<Vec3>* out) {
-  Vec3 lo = points[0], hi = points[0];
-  for (const Vec3& p : points) {
+bool NormalizeToUnitBox(std::vector<Vec3>* points, Vec3* center, double* scale) {
+  Vec3 lo = (*points)[0], hi = (*points)[0];
+  for (const Vec3& p : *points) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
   *center = 0.5 * (lo + hi);
   *scale = (hi - lo).maxCoeff();
   if (!(*scale > 0) || !std::isfinite(*scale) || !center->allFinite()) return false;
-  out->resize(points.size());
-  for (size_t i = 0; i < points.size(); ++i) {
-    const Vec3 q = (points[i] - *center) / *scale;
-    (*out)[i] = Vec3(Quantize(q[0]), Quantize(q[1]), Quantize(q[2]));
+  for (Vec3& p : *points) {
+    const Vec3 q = (p - *center) / *scale;
+    p = Vec3(Quantize(q[0]), Quantize(q[1]), Quantize(q[2]));
   }
   return true;
 }

@@ -12,11 +12,11 @@
 namespace vhacd {
 namespace internal {
 
-// Fills *out with (p - *center) / *scale for every point, quantized to 2^-40 so that the result
-// does not depend on the input's position and scale; *center is the centre of the bounding box,
-// *scale its largest side. Returns false when the box is degenerate or overflows.
-bool NormalizeToUnitBox(const std::vector<Vec3>& points, Vec3* center, double* scale,
-                        std::vector<Vec3>* out);
+// Replaces every point p with (p - *center) / *scale, quantized to 2^-40 so that the result does
+// not depend on the input's position and scale (in place: a mesh's points are its largest array);
+// *center is the centre of the bounding box, *scale its largest side. Returns false, with the
+// points unchanged, when the box is degenerate or overflows.
+bool NormalizeToUnitBox(std::vector<Vec3>* points, Vec3* center, double* scale);
 
 // Fills *out from a working-frame hull: points and centroid through to_world, the volume times
 // volume_scale (clamped to the double range, never Inf). Returns false on a non-finite value.
