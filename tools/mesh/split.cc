@@ -117,4 +117,24 @@ std::array<float, 6> PositionBox(const Mesh& mesh) {
   return box;
 }
 
+Status ForEachPart(const Mesh& mesh, const std::vector<uint32_t>& groups, size_t max_triangles,
+                   const std::function<Status(const PartToCode&)>& visit) {
+  const std::vector<std::vector<uint32_t>> split = max_triangles > 0
+                                                       ? SplitTriangles(mesh, max_triangles)
+                                                       : std::vector<std::vector<uint32_t>>();
+  if (split.size() <= 1) return visit(PartToCode{0, 1, mesh, groups, std::nullopt});
+  const std::array<float, 6> box = PositionBox(mesh);
+  for (size_t p = 0; p < split.size(); ++p) {
+    const Mesh part = MeshPart(mesh, split[p]);
+    std::vector<uint32_t> part_groups;
+    if (!groups.empty()) {
+      part_groups.reserve(split[p].size());
+      for (uint32_t t : split[p]) part_groups.push_back(groups[t]);
+    }
+    const Status status = visit(PartToCode{p, split.size(), part, part_groups, box});
+    if (!status.ok()) return status;
+  }
+  return Status::Ok();
+}
+
 }  // namespace hullpack

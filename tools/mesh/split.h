@@ -6,8 +6,11 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <vector>
 
+#include "common/status.h"
 #include "scene/scene.h"
 
 namespace hullpack {
@@ -30,6 +33,24 @@ Mesh MeshPart(const Mesh& mesh, const std::vector<uint32_t>& triangles);
 
 // The box of the positions of `mesh` (min x, y, z, then max x, y, z); zeros when it has none.
 std::array<float, 6> PositionBox(const Mesh& mesh);
+
+// One part of a mesh to code (ForEachPart).
+struct PartToCode {
+  size_t index = 0;  // from 0
+  size_t count = 1;  // the mesh's parts
+  const Mesh& mesh;  // the part, or the whole mesh when it is one part
+  // The entries of the caller's groups for the part's triangles (empty when those are).
+  const std::vector<uint32_t>& groups;
+  // The whole mesh's PositionBox when it has several parts (coded on it, a vertex two parts share
+  // decodes alike in both), else nothing.
+  std::optional<std::array<float, 6>> box;
+};
+
+// Visits the parts of `mesh` for coding, in order: SplitTriangles with `max_triangles`, or the
+// whole mesh when that is 0. `groups`: one entry per triangle, or empty. Only one part's mesh is
+// held at a time. Stops at the first error `visit` returns, and returns it.
+Status ForEachPart(const Mesh& mesh, const std::vector<uint32_t>& groups, size_t max_triangles,
+                   const std::function<Status(const PartToCode&)>& visit);
 
 }  // namespace hullpack
 

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <memory>
 #include <mutex>
-#include <optional>
 
 #include "common/parallel.h"
 #include "mesh/split.h"
@@ -67,16 +66,6 @@ constexpr float kGridStart = 0.6f;
 
 namespace {
 
-// The groups of the triangles `part` (ascending ids of the whole mesh).
-std::vector<uint32_t> GroupsOf(const std::vector<uint32_t>& groups,
-                               const std::vector<uint32_t>& part) {
-  std::vector<uint32_t> out;
-  if (groups.empty()) return out;
-  out.reserve(part.size());
-  for (uint32_t t : part) out.push_back(groups[t]);
-  return out;
-}
-
 // EncodeWithinError at the UV range of `settings`.
 Result<BudgetedEncoding> EncodeOnGrids(const Mesh& mesh, const std::vector<uint32_t>& groups,
                                        const MeshCodecSettings& settings, double max_error,
@@ -127,69 +116,64 @@ Result<BudgetedEncoding> EncodeOnGrids(const Mesh& mesh, const std::vector<uint3
   auto t = Clock::now();
   // A large mesh is coded in parts, one after the other, each on the whole mesh's grid (so that
   // the vertices two parts share decode alike): the encoder's memory is then a part's.
-  const std::vector<std::vector<uint32_t>> split = max_part_triangles > 0
-                                                       ? SplitTriangles(mesh, max_part_triangles)
-                                                       : std::vector<std::vector<uint32_t>>();
-  const size_t num_parts = std::max<size_t>(split.size(), 1);
-  MeshCodecSettings part_settings = settings;
-  if (num_parts > 1) part_settings.position_box = PositionBox(mesh);
   std::mutex progress_mutex;
   float prepared = 0;
   std::vector<float> done(candidates.size(), 0.0f);
-  for (size_t p = 0; p < num_parts; ++p) {
-    std::optional<Mesh> part;
-    if (num_parts > 1) part = MeshPart(mesh, split[p]);
-    const Mesh& coded = part ? *part : mesh;
-    // The fraction of the whole: the parts before this one, then this part's Prepare share and
-    // its candidates' (each from kGridStart to 1).
-    prepared = 0;
-    std::fill(done.begin(), done.end(), 0.0f);
-    auto report = [&]() {
-      float sum = 0;
-      for (float d : done) sum += d;
-      const float part_done =
-          prepared * kPrepared + (1 - kPrepared) * sum / static_cast<float>(done.size());
-      return settings.progress((static_cast<float>(p) + part_done) / static_cast<float>(num_parts));
-    };
-    // The stages every grid shares run once; then the candidates, in parallel.
-    // The view of `in` points into these: they live as long as it.
-    const std::vector<uint32_t> part_groups =
-        part ? GroupsOf(groups, split[p]) : std::vector<uint32_t>();
-    CodecInput in;
-    Status status = MakeCodecInput(coded, part ? part_groups : groups, part_settings, &in);
-    if (!status.ok()) return status;
-    in.params.progress = [&](float f) {
-      if (!settings.progress) return true;
-      std::lock_guard<std::mutex> lock(progress_mutex);
-      prepared = std::min(f / kPrepared, 1.0f);
-      return report();
-    };
-    // Freed before the next part.
-    std::unique_ptr<o3dgc::GridEncoder> shared(new o3dgc::GridEncoder);
-    const o3dgc::GridEncoder& grids = *shared;
-    status = EncoderStatus(shared->Prepare(in.view, in.params), mesh.name);
-    if (!status.ok()) return status;
-    std::vector<Status> statuses(candidates.size());
-    for (Candidate& c : candidates) c.parts.emplace_back();
-    ParallelFor(candidates.size(), threads, [&](size_t i) {
-      const o3dgc::ProgressFn progress = [&, i](float f) {
-        if (!settings.progress) return true;
-        std::lock_guard<std::mutex> lock(progress_mutex);
-        done[i] = std::max(0.0f, (f - kGridStart) / (1 - kGridStart));
-        return report();
-      };
-      EncodedMesh& encoded = candidates[i].parts.back();
-      encoded.gltf_attributes = in.attributes.gltf_attributes;
-      encoded.gltf_targets = in.attributes.gltf_targets;
-      statuses[i] = EncoderStatus(grids.Encode(candidates[i].bits, candidates[i].mode,
-                                               &encoded.stream, &encoded.info, progress),
-                                  mesh.name);
-    });
-    for (size_t i = 0; i < candidates.size(); ++i) {
-      if (!statuses[i].ok()) return statuses[i];
-      candidates[i].bytes += candidates[i].parts.back().stream.size();
-    }
-  }
+  const Status parts_status =
+      ForEachPart(mesh, groups, max_part_triangles, [&](const PartToCode& part) {
+        // The fraction of the whole: the parts before this one, then this part's Prepare share and
+        // its candidates' (each from kGridStart to 1).
+        prepared = 0;
+        std::fill(done.begin(), done.end(), 0.0f);
+        auto report = [&]() {
+          float sum = 0;
+          for (float d : done) sum += d;
+          const float part_done =
+              prepared * kPrepared + (1 - kPrepared) * sum / static_cast<float>(done.size());
+          return settings.progress((static_cast<float>(part.index) + part_done) /
+                                   static_cast<float>(part.count));
+        };
+        MeshCodecSettings part_settings = settings;
+        part_settings.position_box = part.box;
+        // The stages every grid shares run once; then the candidates, in parallel.
+        // The view of `in` points into these: they live as long as it.
+        CodecInput in;
+        Status status = MakeCodecInput(part.mesh, part.groups, part_settings, &in);
+        if (!status.ok()) return status;
+        in.params.progress = [&](float f) {
+          if (!settings.progress) return true;
+          std::lock_guard<std::mutex> lock(progress_mutex);
+          prepared = std::min(f / kPrepared, 1.0f);
+          return report();
+        };
+        // Freed before the next part.
+        std::unique_ptr<o3dgc::GridEncoder> shared(new o3dgc::GridEncoder);
+        const o3dgc::GridEncoder& grids = *shared;
+        status = EncoderStatus(shared->Prepare(in.view, in.params), mesh.name);
+        if (!status.ok()) return status;
+        std::vector<Status> statuses(candidates.size());
+        for (Candidate& c : candidates) c.parts.emplace_back();
+        ParallelFor(candidates.size(), threads, [&](size_t i) {
+          const o3dgc::ProgressFn progress = [&, i](float f) {
+            if (!settings.progress) return true;
+            std::lock_guard<std::mutex> lock(progress_mutex);
+            done[i] = std::max(0.0f, (f - kGridStart) / (1 - kGridStart));
+            return report();
+          };
+          EncodedMesh& encoded = candidates[i].parts.back();
+          encoded.gltf_attributes = in.attributes.gltf_attributes;
+          encoded.gltf_targets = in.attributes.gltf_targets;
+          statuses[i] = EncoderStatus(grids.Encode(candidates[i].bits, candidates[i].mode,
+                                                   &encoded.stream, &encoded.info, progress),
+                                      mesh.name);
+        });
+        for (size_t i = 0; i < candidates.size(); ++i) {
+          if (!statuses[i].ok()) return statuses[i];
+          candidates[i].bytes += candidates[i].parts.back().stream.size();
+        }
+        return Status::Ok();
+      });
+  if (!parts_status.ok()) return parts_status;
   BudgetedEncoding out;
   out.seconds_encode = Seconds(t);
   // The smallest streams; on a tie the first candidate, whatever the thread count.

@@ -7,7 +7,6 @@
 #include <cstdio>
 #include <limits>
 #include <mutex>
-#include <optional>
 
 #include "common/parallel.h"
 #include "mesh/split.h"
@@ -155,19 +154,17 @@ Status EncodeRenderMesh(const Mesh& mesh, const PackOptions& options, int thread
   } else {
     BudgetedEncoding e;
     s.position_bits = options.position_bits;
-    const std::vector<std::vector<uint32_t>> split =
-        options.part_triangles > 0 ? SplitTriangles(mesh, options.part_triangles)
-                                   : std::vector<std::vector<uint32_t>>();
-    if (split.size() > 1) s.position_box = PositionBox(mesh);
     const auto t = Clock::now();
-    for (size_t p = 0; p < std::max<size_t>(split.size(), 1); ++p) {
-      std::optional<Mesh> part;
-      if (split.size() > 1) part = MeshPart(mesh, split[p]);
-      const Mesh& coded = part ? *part : mesh;
-      Result<EncodedMesh> stream = EncodeMesh(coded, coded.material_ids, s);
-      if (!stream.ok()) return stream.status();
-      e.streams.push_back(std::move(stream.value()));
-    }
+    const Status status =
+        ForEachPart(mesh, mesh.material_ids, options.part_triangles, [&](const PartToCode& part) {
+          MeshCodecSettings part_settings = s;
+          part_settings.position_box = part.box;
+          Result<EncodedMesh> stream = EncodeMesh(part.mesh, part.groups, part_settings);
+          if (!stream.ok()) return stream.status();
+          e.streams.push_back(std::move(stream.value()));
+          return Status::Ok();
+        });
+    if (!status.ok()) return status;
     e.seconds_encode = Seconds(t);
     e.position_bits = s.position_bits;
     e.position_range = s.position_range;
@@ -341,8 +338,8 @@ Status DecodeRenderMeshes(std::vector<PackedMesh>& packed, int threads) {
     mesh.name = name;
     mesh.collides = m.collides;
     mesh.morph_weights = m.morph_weights;
-    for (size_t t = 0; t < mesh.morph_targets.size() && t < m.target_names.size(); ++t)
-      mesh.morph_targets[t].name = m.target_names[t];
+    for (size_t i = 0; i < mesh.morph_targets.size() && i < m.target_names.size(); ++i)
+      mesh.morph_targets[i].name = m.target_names[i];
     if (m.grouped) mesh.material_ids = std::move(groups);
   });
   for (size_t k = 0; k < jobs.size(); ++k) {

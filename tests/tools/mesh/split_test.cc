@@ -104,5 +104,53 @@ TEST(PositionBox, HoldsEveryPosition) {
   EXPECT_EQ(PositionBox(Mesh()), (std::array<float, 6>{0, 0, 0, 0, 0, 0}));
 }
 
+TEST(ForEachPart, VisitsTheSplitPartsWithTheirGroupsOnTheWholeBox) {
+  const Mesh mesh = Tori();
+  std::vector<uint32_t> groups(mesh.triangle_count());
+  for (size_t t = 0; t < groups.size(); ++t) groups[t] = static_cast<uint32_t>(t * 7 % 5);
+  const std::vector<std::vector<uint32_t>> split = SplitTriangles(mesh, 500);
+  ASSERT_GT(split.size(), 2u);
+  size_t visited = 0;
+  const Status status = ForEachPart(mesh, groups, 500, [&](const PartToCode& part) {
+    EXPECT_EQ(part.index, visited);
+    EXPECT_EQ(part.count, split.size());
+    EXPECT_EQ(TriangleSet(part.mesh), TriangleSet(MeshPart(mesh, split[part.index])));
+    EXPECT_EQ(part.groups.size(), split[part.index].size());
+    for (size_t i = 0; i < part.groups.size(); ++i)
+      EXPECT_EQ(part.groups[i], groups[split[part.index][i]]);
+    EXPECT_EQ(part.box, PositionBox(mesh));
+    ++visited;
+    return Status::Ok();
+  });
+  EXPECT_TRUE(status.ok());
+  EXPECT_EQ(visited, split.size());
+}
+
+TEST(ForEachPart, AWholeMeshIsVisitedOnceAsItIs) {
+  const Mesh mesh = Tori();
+  for (size_t max_triangles : {size_t{0}, mesh.triangle_count()}) {
+    int visits = 0;
+    const Status status = ForEachPart(mesh, {}, max_triangles, [&](const PartToCode& part) {
+      EXPECT_EQ(&part.mesh, &mesh);
+      EXPECT_TRUE(part.groups.empty());
+      EXPECT_FALSE(part.box.has_value());
+      ++visits;
+      return Status::Ok();
+    });
+    EXPECT_TRUE(status.ok());
+    EXPECT_EQ(visits, 1);
+  }
+}
+
+TEST(ForEachPart, StopsAtTheFirstError) {
+  int visits = 0;
+  const Status status = ForEachPart(Tori(), {}, 500, [&](const PartToCode&) {
+    ++visits;
+    return Status(StatusCode::kInvalidMesh, "part refused");
+  });
+  EXPECT_EQ(status.code(), StatusCode::kInvalidMesh);
+  EXPECT_EQ(visits, 1);
+}
+
 }  // namespace
 }  // namespace hullpack
