@@ -40,6 +40,19 @@ TEST(ReadMesh, ClosedOnlyWhenEveryEdgeHasTwoTriangles) {
   EXPECT_FALSE(Read(fin).closed);
 }
 
+// Over a million edges, the closedness check takes the vertices in ranges: a hole is found in any.
+TEST(ReadMesh, ClosednessOfALargeMeshIsCheckedInEveryRangeOfVertices) {
+  const vhacd_test::Mesh torus = vhacd_test::Torus(2, 0.5, 1000, 400);
+  ASSERT_GT(torus.indices.size(), size_t{2} << 20);
+  EXPECT_TRUE(Read(torus, false).closed);
+  for (const size_t hole : {size_t{0}, torus.indices.size() / 2, torus.indices.size() - 3}) {
+    vhacd_test::Mesh open = torus;
+    open.indices.erase(open.indices.begin() + static_cast<std::ptrdiff_t>(hole),
+                       open.indices.begin() + static_cast<std::ptrdiff_t>(hole) + 3);
+    EXPECT_FALSE(Read(open, false).closed) << "hole at triangle " << hole / 3;
+  }
+}
+
 TEST(ReadMesh, WeldsEqualPointsAndDropsDegenerateAndRepeatedTriangles) {
   vhacd_test::Mesh m;
   m.points = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 0, 0, 7, 7, 7};  // point 3 = point 1; 4 unused

@@ -12,6 +12,53 @@ void FreeMemory(std::vector<T>& v) {
   std::vector<T>().swap(v);
 }
 
+// Whether every undirected edge is used by exactly two triangles. The edges are listed at their
+// smaller vertex (its larger vertex, 4 bytes per edge instead of a sorted list of 8-byte pairs)
+// and each vertex's short list is sorted. A large mesh's vertices are taken in a few ranges, one
+// range's lists at a time: the decomposition may run beside an encoder of the same mesh, and a
+// list of every edge would be as large as the triangles.
+bool IsClosed(const std::vector<std::array<uint32_t, 3>>& triangles, size_t nv) {
+  std::vector<uint32_t> start(nv + 1, 0);
+  for (const auto& t : triangles)
+    for (int k = 0; k < 3; ++k) ++start[std::min(t[k], t[(k + 1) % 3]) + 1];
+  for (size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+  constexpr size_t kOneRangeEdges = size_t{1} << 20;
+  constexpr size_t kMaxRanges = 4;
+  const size_t edges = start[nv];
+  const size_t ranges = std::min(kMaxRanges, (edges + kOneRangeEdges - 1) / kOneRangeEdges);
+  const size_t range_edges = (edges + ranges - 1) / std::max<size_t>(ranges, 1);
+  std::vector<uint32_t> other, fill;
+  for (size_t first = 0; first < nv;) {
+    // The vertices [first, last): as many as fit in range_edges, and at least one.
+    const uint32_t base = start[first];
+    size_t last = static_cast<size_t>(
+        std::upper_bound(start.begin() + first + 1, start.end(), base + range_edges) -
+        start.begin() - 1);
+    last = std::min(std::max(last, first + 1), nv);
+    other.resize(start[last] - base);
+    fill.assign(start.begin() + first, start.begin() + last);
+    for (const auto& t : triangles)
+      for (int k = 0; k < 3; ++k) {
+        const uint32_t a = t[k], b = t[(k + 1) % 3];
+        const uint32_t lo = std::min(a, b);
+        if (lo >= first && lo < last) other[fill[lo - first]++ - base] = std::max(a, b);
+      }
+    for (size_t v = first; v < last; ++v) {
+      uint32_t* begin = other.data() + (start[v] - base);
+      uint32_t* end = other.data() + (start[v + 1] - base);
+      std::sort(begin, end);
+      for (uint32_t* i = begin; i < end;) {
+        uint32_t* j = i;
+        while (j < end && *j == *i) ++j;
+        if (j - i != 2) return false;
+        i = j;
+      }
+    }
+    first = last;
+  }
+  return true;
+}
+
 }  // namespace
 
 Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* why,
@@ -131,35 +178,7 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
     return Status::kEmptyMesh;
   }
   if (cancelled()) return Status::kCancelled;
-  // Closed: every undirected edge used by exactly two triangles. The edges are listed at their
-  // smaller vertex (its larger vertex, 4 bytes per edge instead of a sorted list of 8-byte pairs)
-  // and each vertex's short list is sorted.
-  const size_t nv = out->points.size();
-  std::vector<uint32_t> start(nv + 1, 0);
-  for (const auto& t : out->triangles)
-    for (int k = 0; k < 3; ++k) ++start[std::min(t[k], t[(k + 1) % 3]) + 1];
-  for (size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
-  std::vector<uint32_t> other(start[nv]);
-  {
-    std::vector<uint32_t> fill(start.begin(), start.end() - 1);
-    for (const auto& t : out->triangles)
-      for (int k = 0; k < 3; ++k) {
-        const uint32_t a = t[k], b = t[(k + 1) % 3];
-        other[fill[std::min(a, b)]++] = std::max(a, b);
-      }
-  }
-  out->closed = true;
-  for (size_t v = 0; v < nv && out->closed; ++v) {
-    uint32_t* first = other.data() + start[v];
-    uint32_t* last = other.data() + start[v + 1];
-    std::sort(first, last);
-    for (uint32_t* i = first; i < last;) {
-      uint32_t* j = i;
-      while (j < last && *j == *i) ++j;
-      if (j - i != 2) out->closed = false;
-      i = j;
-    }
-  }
+  out->closed = IsClosed(out->triangles, out->points.size());
   return Status::kOk;
 }
 
