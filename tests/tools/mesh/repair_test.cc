@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 #include "mesh/topology.h"
@@ -182,6 +183,40 @@ TEST(RepairTest, CountsTwoSidedFacesAfterRemovingCopies) {
   EXPECT_EQ(r.opposite_triangle_pairs, 1u);
   EXPECT_EQ(mesh.indices, (std::vector<uint32_t>{a, b, c, a, c, b}));
   EXPECT_EQ(AnalyzeTopology(mesh).opposite_triangle_pairs, r.opposite_triangle_pairs);
+}
+
+// Copies are found among the triangles that share their smallest vertex: many share the apex of a
+// fan, and a copy may list its corners in any rotation.
+TEST(RepairTest, FindsCopiesAmongTheManyTrianglesOfAFanApex) {
+  Mesh mesh;
+  const uint32_t apex = AddVertex(mesh, 0, 0, 0);
+  constexpr int kRing = 40;
+  for (int i = 0; i < kRing; ++i) {
+    const double angle = 2 * 3.141592653589793 * i / kRing;
+    AddVertex(mesh, static_cast<float>(std::cos(angle)), static_cast<float>(std::sin(angle)), 0);
+  }
+  for (uint32_t i = 1; i <= kRing; ++i) AddTriangle(mesh, apex, i, i % kRing + 1);
+  const std::vector<uint32_t> fan = mesh.indices;
+  AddTriangle(mesh, 8, apex, 7);    // triangle 6, rotated
+  AddTriangle(mesh, 31, 32, apex);  // triangle 30, rotated
+  AddTriangle(mesh, apex, 8, 7);    // triangle 6, flipped
+  AddTriangle(mesh, 20, apex, 21);  // triangle 19, flipped
+  AddTriangle(mesh, 21, 20, apex);  // triangle 19 (a later copy of the same winding)
+  Mesh copy = mesh;
+
+  RepairReport r = RepairMesh(mesh);
+  EXPECT_EQ(r.duplicate_triangles_removed, 3u);
+  EXPECT_EQ(r.opposite_triangle_pairs, 2u);
+  std::vector<uint32_t> expected = fan;
+  expected.insert(expected.end(), {apex, 8, 7, 20, apex, 21});
+  EXPECT_EQ(mesh.indices, expected);
+
+  RepairOptions options;
+  options.remove_opposite_duplicates = true;
+  r = RepairMesh(copy, options);
+  EXPECT_EQ(r.duplicate_triangles_removed, 3u);
+  EXPECT_EQ(r.opposite_triangles_removed, 2u);
+  EXPECT_EQ(copy.indices, fan);
 }
 
 TEST(RepairTest, OppositeRemovalLeavesSameWindingCopiesWhenTheyAreKept) {
