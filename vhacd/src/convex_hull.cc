@@ -66,6 +66,7 @@ class QuickHull {
   Attempt Run(const uint32_t init[4], HullMesh* out) {
     faces_.clear();
     faces_.reserve(64);
+    dead_ = 0;
     slot_point_.clear();
     start_at_.clear();
     stamp_at_.clear();
@@ -87,6 +88,10 @@ class QuickHull {
     uint32_t stamp = 0;
     for (size_t fi = 0; fi < faces_.size(); ++fi) {
       if (!faces_[fi].alive || faces_[fi].first == kNone) continue;
+      if (dead_ > faces_.size() / 2 && faces_.size() >= kDropDeadAt) {
+        fi = DropDeadFaces(fi);
+        dead_ = 0;
+      }
       // Farthest outside point of this face.
       const Face& f0 = faces_[fi];
       uint32_t eye = f0.first;
@@ -147,6 +152,7 @@ class QuickHull {
       // Redistribute the outside points of the visible faces, face by face in list order. Assign
       // only looks at the new faces, so the lists can be walked while it appends to theirs.
       for (int32_t f : visible) faces_[f].alive = false;
+      dead_ += visible.size();
       for (int32_t f : visible) {
         uint32_t q = faces_[f].first;
         faces_[f].first = faces_[f].last = kNone;
@@ -183,6 +189,29 @@ class QuickHull {
   }
 
  private:
+  // Dead faces are never visited again, but each step leaves its visible faces dead: on a large
+  // input they outnumber the live ones many times over.
+  static constexpr size_t kDropDeadAt = 4096;
+
+  // Drops the dead faces, keeping the live ones in their order (the order the main loop visits
+  // them in, so the hull does not change); returns the new index of live face `keep`.
+  size_t DropDeadFaces(size_t keep) {
+    std::vector<int32_t> index(faces_.size(), -1);
+    int32_t m = 0;
+    for (size_t f = 0; f < faces_.size(); ++f)
+      if (faces_[f].alive) index[f] = m++;
+    size_t k = 0;
+    for (size_t f = 0; f < faces_.size(); ++f) {
+      if (!faces_[f].alive) continue;
+      if (k != f) faces_[k] = faces_[f];
+      for (int32_t& g : faces_[k].nb)
+        if (g >= 0) g = index[g];
+      ++k;
+    }
+    faces_.resize(k);
+    return static_cast<size_t>(index[keep]);
+  }
+
   // A point becomes a face vertex at most once (an eye leaves every outside list): its slot
   // indexes the per-vertex arrays, which stay as small as the hull instead of the input.
   uint32_t AddSlot(uint32_t point) {
@@ -251,6 +280,7 @@ class QuickHull {
   const Points& p_;
   double eps_;
   std::vector<Face> faces_;
+  size_t dead_ = 0;                   // dead faces in faces_
   std::vector<uint32_t> slot_point_;  // the point of each slot
   // start_at_[s]: the new face whose horizon edge starts at slot s (valid when stamp_at_[s] ==
   // the current stamp).
