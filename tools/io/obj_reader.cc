@@ -12,6 +12,7 @@
 #include <mutex>
 #include <thread>
 
+#include "common/block_vector.h"
 #include "common/parallel.h"
 #include "io/text_scanner.h"
 
@@ -37,8 +38,9 @@ struct MeshBuilder {
   std::vector<uint32_t> first_of_v;
   size_t v_base = 0;
   std::vector<uint32_t> next_same_v;
-  std::vector<Corner> corners;  // one per output vertex
-  std::vector<uint32_t> indices;
+  // Kept in blocks: a large mesh is appended element by element (see BlockVector).
+  BlockVector<Corner> corners;  // one per output vertex
+  BlockVector<uint32_t> indices;
   std::vector<uint32_t> material_ids;
 
   // The output vertex of `c`, made on first use (so vertices are numbered in order of first use).
@@ -552,7 +554,7 @@ class ObjParser {
     for (size_t i = 1; i + 1 < polygon_.size(); ++i) {  // fan triangulation
       ids[1] = vertex(polygon_[i]);
       ids[2] = vertex(polygon_[i + 1]);
-      b.indices.insert(b.indices.end(), ids, ids + 3);
+      for (const uint32_t id : ids) b.indices.push_back(id);
       // Material ids only once a `usemtl` was seen (most large scans have none); the faces
       // before it get kNoMaterial then.
       if (current_material_ != kNoMaterial || !b.material_ids.empty()) {
@@ -676,12 +678,14 @@ class ObjParser {
       if (b.indices.empty()) continue;
       b.first_of_v = std::vector<uint32_t>();
       b.next_same_v = std::vector<uint32_t>();
-      KeepFileOrder(b, ThreadCount(options_.threads));
+      const std::vector<uint32_t> order = KeepFileOrder(b);
       Mesh m;
       m.name = b.name;
-      const size_t n = b.corners.size();
+      m.indices = b.indices.TakeAll();  // before the vertex arrays: the blocks are freed first
+      const size_t n = order.size();
       bool has_uv = false, has_normal = false;
-      for (const Corner& c : b.corners) {
+      for (const uint32_t id : order) {
+        const Corner& c = b.corners[id];
         has_uv |= c.vt >= 0;
         has_normal |= c.vn >= 0;
       }
@@ -691,7 +695,7 @@ class ObjParser {
       if (!colors_.empty()) m.colors.resize(n * 4, 1.0f);
       std::vector<uint8_t> lacks_normal;
       for (size_t i = 0; i < n; ++i) {
-        const Corner& c = b.corners[i];
+        const Corner& c = b.corners[order[i]];
         referenced[static_cast<size_t>(c.v)] = 1;
         for (int k = 0; k < 3; ++k) m.positions[i * 3 + k] = static_cast<float>(positions_[c.v][k]);
         if (!colors_.empty()) {
@@ -717,9 +721,8 @@ class ObjParser {
         }
       }
       if (!lacks_normal.empty()) FillNormalsFromFaces(m, lacks_normal);
+      b.corners = BlockVector<Corner>();
       // Grown face by face: down to their size, the mesh lives through the whole pipeline.
-      m.indices = std::move(b.indices);
-      m.indices.shrink_to_fit();
       m.material_ids = std::move(b.material_ids);
       m.material_ids.shrink_to_fit();
       scene.meshes.push_back(std::move(m));
@@ -762,30 +765,46 @@ class ObjParser {
   }
 
   // Vertices were numbered in order of first use; renumber them in the order of their (v, vt, vn)
-  // triples so that a file's vertex order survives (a positions-only file keeps its `v` order).
-  // The sort runs on `threads`; corners are distinct, so the order is total (the index breaks
-  // ties that cannot happen) and the result does not depend on the thread count.
-  static void KeepFileOrder(MeshBuilder& b, int threads) {
-    std::vector<uint32_t> order(b.corners.size());
-    for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
-    ParallelSort(
-        order.begin(), order.end(),
-        [&](uint32_t x, uint32_t y) {
-          const Corner& a = b.corners[x];
-          const Corner& c = b.corners[y];
-          if (a.v != c.v) return a.v < c.v;
-          if (a.vt != c.vt) return a.vt < c.vt;
-          return a.vn != c.vn ? a.vn < c.vn : x < y;
-        },
-        threads);
-    std::vector<uint32_t> new_index(order.size());
-    std::vector<Corner> sorted(order.size());
-    for (uint32_t i = 0; i < order.size(); ++i) {
-      new_index[order[i]] = i;
-      sorted[i] = b.corners[order[i]];
+  // triples so that a file's vertex order survives (a positions-only file keeps its `v` order):
+  // returns the corner ids in that order and renumbers b.indices. Corners are distinct, so the
+  // order is total. A mesh usually uses its own run of `v` lines: then its corners are bucketed by
+  // v (a position has one corner, or a few with other texture coordinates or normals) and each
+  // bucket sorted by (vt, vn); a mesh whose positions are spread over the file is sorted whole.
+  static std::vector<uint32_t> KeepFileOrder(MeshBuilder& b) {
+    const size_t n = b.corners.size();
+    std::vector<uint32_t> order(n);
+    auto less = [&b](uint32_t x, uint32_t y) {
+      const Corner& a = b.corners[x];
+      const Corner& c = b.corners[y];
+      if (a.v != c.v) return a.v < c.v;
+      if (a.vt != c.vt) return a.vt < c.vt;
+      return a.vn != c.vn ? a.vn < c.vn : x < y;
+    };
+    int32_t lo = INT32_MAX, hi = 0;
+    for (size_t i = 0; i < n; ++i) {
+      lo = std::min(lo, b.corners[i].v);
+      hi = std::max(hi, b.corners[i].v);
     }
-    b.corners = std::move(sorted);
-    for (uint32_t& index : b.indices) index = new_index[index];
+    const size_t range = n == 0 ? 0 : static_cast<size_t>(hi - lo) + 1;
+    if (range > 2 * n + 1024) {
+      for (uint32_t i = 0; i < n; ++i) order[i] = i;
+      std::sort(order.begin(), order.end(), less);
+    } else {
+      std::vector<uint32_t> end(range + 1, 0);
+      for (size_t i = 0; i < n; ++i) ++end[static_cast<size_t>(b.corners[i].v - lo) + 1];
+      for (size_t v = 0; v < range; ++v) end[v + 1] += end[v];
+      for (uint32_t i = 0; i < n; ++i) order[end[static_cast<size_t>(b.corners[i].v - lo)]++] = i;
+      // end[v] is now the end of bucket v.
+      for (size_t v = 0, begin = 0; v < range; begin = end[v++]) {
+        if (end[v] - begin < 2) continue;
+        std::sort(order.begin() + static_cast<ptrdiff_t>(begin),
+                  order.begin() + static_cast<ptrdiff_t>(end[v]), less);
+      }
+    }
+    std::vector<uint32_t> new_index(n);
+    for (uint32_t i = 0; i < n; ++i) new_index[order[i]] = i;
+    b.indices.ForEach([&](uint32_t& index) { index = new_index[index]; });
+    return order;
   }
 
   static void FillNormalsFromFaces(Mesh& m, const std::vector<uint8_t>& lacks_normal) {
@@ -829,8 +848,9 @@ class ObjParser {
   const std::string& name_;
   const ObjParseOptions& options_;
   // Kept as the floats the meshes get (texture coordinates stay double: v is flipped first).
-  std::vector<std::array<float, 3>> positions_, colors_, normals_;
-  std::vector<std::array<double, 2>> texcoords_;
+  BlockVector<std::array<float, 3>> positions_, normals_;
+  std::vector<std::array<float, 3>> colors_;
+  BlockVector<std::array<double, 2>> texcoords_;
   std::vector<MeshBuilder> builders_;
   std::vector<Corner> polygon_;
   std::vector<Material> materials_;

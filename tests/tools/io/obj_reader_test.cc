@@ -37,6 +37,23 @@ TEST(ObjReader, MixedCornerFormatsUnifyIntoVertices) {
   EXPECT_FALSE(s->dropped.empty());  // corners without vt/vn are reported
 }
 
+// An object whose positions lie far apart in a large pool keeps the (v, vt, vn) order too.
+TEST(ObjReader, VerticesFollowTheFileOrderWhereverTheirPositionsAre) {
+  std::string text;
+  for (int i = 1; i <= 3000; ++i) text += "v " + std::to_string(i) + " 0 0\n";
+  text += "vt 0 0\nvt 1 0\n";
+  text += "o spread\nf 3000 2 1500/2\nf 1500/1 2 3000/1\nf 2/2 1500/2 3000\n";
+  Result<Scene> s = Parse(text);
+  ASSERT_TRUE(s.ok()) << s.status().ToString();
+  ASSERT_EQ(s->meshes.size(), 1u);
+  const Mesh& m = s->meshes[0];
+  // 2, 2/2, 1500/1, 1500/2, 3000, 3000/1.
+  ASSERT_EQ(m.vertex_count(), 6u);
+  const float x[] = {2, 2, 1500, 1500, 3000, 3000};
+  for (size_t v = 0; v < 6; ++v) EXPECT_EQ(m.positions[3 * v], x[v]) << "vertex " << v;
+  EXPECT_EQ(m.indices, (std::vector<uint32_t>{4, 0, 3, 2, 0, 5, 1, 3, 4}));
+}
+
 TEST(ObjReader, PolygonsNegativeIndicesObjectsAndMaterials) {
   const std::string text =
       "o first\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nusemtl red\nf -4 -3 -2 -1\n"
