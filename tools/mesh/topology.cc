@@ -65,13 +65,31 @@ size_t WeldPositions(const Mesh& mesh, std::vector<uint32_t>& point_of) {
   return n == 0 ? 0 : points + 1;
 }
 
-// One triangle side, as the sort-based edge list stores it.
-struct HalfEdge {
-  uint64_t key;  // (min point << 32) | max point
-  uint32_t triangle;
-  uint8_t corner;  // the side runs from corner to corner + 1 (mod 3)
-  bool forward;    // the triangle traverses it from the smaller point to the larger
+// Ids 0..n-1 grouped by a key below key_count (ascending ids in a group); ids whose key is kSkip
+// are left out. Group k is ids[start[k], start[k + 1]). Why: the edges, duplicates and fans are
+// found among the few entries that share a point, at 4 bytes per entry, instead of in one sort of
+// every entry's whole key.
+constexpr uint32_t kSkip = UINT32_MAX;
+struct Buckets {
+  std::vector<uint32_t> start, ids;
 };
+template <typename KeyOf>
+Buckets BucketBy(size_t n, size_t key_count, KeyOf key_of) {
+  Buckets b;
+  b.start.assign(key_count + 1, 0);
+  for (size_t i = 0; i < n; ++i) {
+    const uint32_t k = key_of(i);
+    if (k != kSkip) ++b.start[size_t(k) + 1];
+  }
+  for (size_t k = 0; k < key_count; ++k) b.start[k + 1] += b.start[k];
+  b.ids.resize(b.start[key_count]);
+  std::vector<uint32_t> fill(b.start.begin(), b.start.end() - 1);
+  for (size_t i = 0; i < n; ++i) {
+    const uint32_t k = key_of(i);
+    if (k != kSkip) b.ids[fill[k]++] = static_cast<uint32_t>(i);
+  }
+  return b;
+}
 
 struct Vec3 {
   double x, y, z;
@@ -145,9 +163,9 @@ TopologyReport AnalyzeTopology(const Mesh& mesh, const TopologyOptions& options)
     }
   }
 
-  // Duplicates: rotate each triangle so its smallest point comes first (keeps the winding),
-  // then sort; equal rotated triples are duplicates, equal sorted triples with the other
-  // winding are opposite pairs.
+  // Duplicates: rotate each triangle so its smallest point comes first (keeps the winding); equal
+  // rotated triples are duplicates, equal sorted triples with the other winding are opposite
+  // pairs. Equal triples share their smallest point: they are looked for among its triangles.
   {
     struct Canonical {
       std::array<uint32_t, 3> sorted;
@@ -156,41 +174,43 @@ TopologyReport AnalyzeTopology(const Mesh& mesh, const TopologyOptions& options)
         return sorted != o.sorted ? sorted < o.sorted : flipped < o.flipped;
       }
     };
+    const Buckets by_smallest = BucketBy(triangle_count, point_count, [&](size_t t) {
+      return degenerate[t] ? kSkip : std::min({tri[t][0], tri[t][1], tri[t][2]});
+    });
     std::vector<Canonical> canon;
-    canon.reserve(triangle_count);
-    for (size_t t = 0; t < triangle_count; ++t) {
-      if (degenerate[t]) continue;
-      const auto& p = tri[t];
-      const int m = p[0] < p[1] ? (p[0] < p[2] ? 0 : 2) : (p[1] < p[2] ? 1 : 2);
-      const uint32_t next = p[(m + 1) % 3], prev = p[(m + 2) % 3];
-      canon.push_back({{p[m], std::min(next, prev), std::max(next, prev)}, next > prev});
-    }
-    std::sort(canon.begin(), canon.end());
-    for (size_t i = 0; i < canon.size();) {
-      size_t j = i;
-      size_t same_winding[2] = {0, 0};
-      while (j < canon.size() && canon[j].sorted == canon[i].sorted)
-        ++same_winding[canon[j++].flipped];
-      for (size_t count : same_winding) report.duplicate_triangles += count > 0 ? count - 1 : 0;
-      report.opposite_triangle_pairs += std::min(same_winding[0], same_winding[1]);
-      i = j;
+    for (size_t p = 0; p < point_count; ++p) {
+      const uint32_t first = by_smallest.start[p], last = by_smallest.start[p + 1];
+      if (last - first < 2) continue;
+      canon.clear();
+      for (uint32_t e = first; e < last; ++e) {
+        const auto& q = tri[by_smallest.ids[e]];
+        const int m = q[0] < q[1] ? (q[0] < q[2] ? 0 : 2) : (q[1] < q[2] ? 1 : 2);
+        const uint32_t next = q[(m + 1) % 3], prev = q[(m + 2) % 3];
+        canon.push_back({{q[m], std::min(next, prev), std::max(next, prev)}, next > prev});
+      }
+      std::sort(canon.begin(), canon.end());
+      for (size_t i = 0; i < canon.size();) {
+        size_t j = i;
+        size_t same_winding[2] = {0, 0};
+        while (j < canon.size() && canon[j].sorted == canon[i].sorted)
+          ++same_winding[canon[j++].flipped];
+        for (size_t count : same_winding) report.duplicate_triangles += count > 0 ? count - 1 : 0;
+        report.opposite_triangle_pairs += std::min(same_winding[0], same_winding[1]);
+        i = j;
+      }
     }
   }
 
-  // Sort-based edge list: every non-degenerate triangle contributes three sides.
-  std::vector<HalfEdge> sides;
-  sides.reserve(3 * (triangle_count - report.degenerate_triangles));
-  for (size_t t = 0; t < triangle_count; ++t) {
-    if (degenerate[t]) continue;
-    for (uint8_t k = 0; k < 3; ++k) {
-      const uint32_t a = tri[t][k], b = tri[t][(k + 1) % 3];
-      const uint64_t key = (uint64_t{std::min(a, b)} << 32) | std::max(a, b);
-      sides.push_back({key, static_cast<uint32_t>(t), k, a < b});
-    }
-  }
-  std::sort(sides.begin(), sides.end(), [](const HalfEdge& x, const HalfEdge& y) {
-    return x.key != y.key ? x.key < y.key : x.triangle < y.triangle;
-  });
+  // Edges: every non-degenerate triangle's three sides (side 3t + k runs from corner k to k + 1),
+  // grouped by their smaller point; the sides of one edge share both points.
+  auto side_points = [&tri](uint32_t side) {
+    const auto& t = tri[side / 3];
+    return std::pair<uint32_t, uint32_t>(t[side % 3], t[(side % 3 + 1) % 3]);
+  };
+  auto larger = [&side_points](uint32_t side) {
+    const auto ends = side_points(side);
+    return std::max(ends.first, ends.second);
+  };
 
   // Walk the edges once: classify them, join triangles into components, and join the corners
   // that meet across a manifold edge into fans.
@@ -201,32 +221,51 @@ TopologyReport AnalyzeTopology(const Mesh& mesh, const TopologyOptions& options)
     bool bad;           // boundary or non-manifold
   };
   std::vector<EdgeRecord> edge_records;
-  for (size_t i = 0; i < sides.size();) {
-    size_t j = i + 1;
-    while (j < sides.size() && sides[j].key == sides[i].key) ++j;
-    const size_t uses = j - i;
-    ++report.edges;
-    if (uses == 1) ++report.boundary_edges;
-    if (uses > 2) ++report.non_manifold_edges;
-    for (size_t k = i + 1; k < j; ++k) triangle_sets.Union(sides[i].triangle, sides[k].triangle);
-    if (uses == 2) {
-      const HalfEdge& e1 = sides[i];
-      const HalfEdge& e2 = sides[i + 1];
-      if (e1.forward == e2.forward) ++report.inconsistent_edges;
-      // Corners of e1 at its two ends, matched with e2's corners at the same points.
-      for (int end = 0; end < 2; ++end) {
-        const uint32_t c1 = (e1.corner + end) % 3;
-        const uint32_t point = tri[e1.triangle][c1];
-        const uint32_t c2 = tri[e2.triangle][e2.corner] == point ? e2.corner : (e2.corner + 1) % 3;
-        corner_fans.Union(3 * e1.triangle + c1, 3 * e2.triangle + c2);
+  {
+    const Buckets by_smaller = BucketBy(3 * triangle_count, point_count, [&](size_t side) {
+      if (degenerate[side / 3]) return kSkip;
+      const auto ends = side_points(static_cast<uint32_t>(side));
+      return std::min(ends.first, ends.second);
+    });
+    std::vector<uint32_t> sides;
+    for (size_t p = 0; p < point_count; ++p) {
+      sides.assign(by_smaller.ids.begin() + by_smaller.start[p],
+                   by_smaller.ids.begin() + by_smaller.start[p + 1]);
+      // By the larger point, then by triangle (ascending ids: the side order within a triangle
+      // never ties, a triangle has one side between two points).
+      std::sort(sides.begin(), sides.end(), [&](uint32_t x, uint32_t y) {
+        const uint32_t lx = larger(x), ly = larger(y);
+        return lx != ly ? lx < ly : x < y;
+      });
+      for (size_t i = 0; i < sides.size();) {
+        size_t j = i + 1;
+        while (j < sides.size() && larger(sides[j]) == larger(sides[i])) ++j;
+        const size_t uses = j - i;
+        ++report.edges;
+        if (uses == 1) ++report.boundary_edges;
+        if (uses > 2) ++report.non_manifold_edges;
+        const uint32_t t1 = sides[i] / 3;
+        for (size_t k = i + 1; k < j; ++k) triangle_sets.Union(t1, sides[k] / 3);
+        if (uses == 2) {
+          const uint32_t s1 = sides[i], s2 = sides[i + 1];
+          const uint32_t t2 = s2 / 3, c1_start = s1 % 3, c2_start = s2 % 3;
+          const auto e1 = side_points(s1), e2 = side_points(s2);
+          if ((e1.first < e1.second) == (e2.first < e2.second)) ++report.inconsistent_edges;
+          // Corners of the first side at its two ends, matched with the second's at the same
+          // points.
+          for (uint32_t end = 0; end < 2; ++end) {
+            const uint32_t c1 = (c1_start + end) % 3;
+            const uint32_t point = tri[t1][c1];
+            const uint32_t c2 = tri[t2][c2_start] == point ? c2_start : (c2_start + 1) % 3;
+            corner_fans.Union(3 * t1 + c1, 3 * t2 + c2);
+          }
+        }
+        edge_records.push_back({t1, uses != 2});
+        i = j;
       }
     }
-    edge_records.push_back({sides[i].triangle, uses != 2});
-    i = j;
   }
   report.consistently_oriented = report.inconsistent_edges == 0;
-  sides.clear();
-  sides.shrink_to_fit();
 
   // Components by shared points.
   {
@@ -267,43 +306,38 @@ TopologyReport AnalyzeTopology(const Mesh& mesh, const TopologyOptions& options)
   edge_records.clear();
   edge_records.shrink_to_fit();
 
-  // Fans: a point is manifold when all its corners fall into one fan. Sorting the corners by
-  // (point, component, fan) puts, per point, its components and fans next to each other; a fan
-  // never spans two components since fans are joined across edges.
+  // Fans: a point is manifold when all its corners fall into one fan. The corners at a point,
+  // sorted by (component, fan), put its components and fans next to each other; a fan never spans
+  // two components since fans are joined across edges.
   {
     struct CornerAt {
-      uint32_t point, component, fan;
+      uint32_t component, fan;
       bool operator<(const CornerAt& o) const {
-        return point != o.point
-                   ? point < o.point
-                   : (component != o.component ? component < o.component : fan < o.fan);
+        return component != o.component ? component < o.component : fan < o.fan;
       }
     };
+    const Buckets at_point = BucketBy(3 * triangle_count, point_count, [&](size_t corner) {
+      return degenerate[corner / 3] ? kSkip : tri[corner / 3][corner % 3];
+    });
     std::vector<CornerAt> corners;
-    corners.reserve(3 * triangle_count);
-    for (size_t t = 0; t < triangle_count; ++t) {
-      if (degenerate[t]) continue;
-      for (uint32_t k = 0; k < 3; ++k) {
-        const uint32_t corner = static_cast<uint32_t>(3 * t + k);
-        corners.push_back({tri[t][k], component_of[t], corner_fans.Find(corner)});
+    for (size_t p = 0; p < point_count; ++p) {
+      const uint32_t first = at_point.start[p], last = at_point.start[p + 1];
+      if (first == last) continue;
+      corners.clear();
+      for (uint32_t e = first; e < last; ++e) {
+        const uint32_t corner = at_point.ids[e];
+        corners.push_back({component_of[corner / 3], corner_fans.Find(corner)});
       }
-    }
-    std::sort(corners.begin(), corners.end());
-    for (size_t i = 0; i < corners.size();) {
-      size_t j = i + 1;
+      std::sort(corners.begin(), corners.end());
       bool several_fans = false;
-      while (j < corners.size() && corners[j].point == corners[i].point) {
-        several_fans |= corners[j].fan != corners[i].fan;
-        ++j;
-      }
+      for (const CornerAt& c : corners) several_fans |= c.fan != corners[0].fan;
       if (several_fans) ++report.non_manifold_vertices;
-      for (size_t k = i; k < j; ++k) {
+      for (size_t k = 0; k < corners.size(); ++k) {
         ComponentStats& c = stats[corners[k].component];
         // One count per (point, component): the component's V in chi = V - E + F.
-        if (k == i || corners[k].component != corners[k - 1].component) ++c.points;
+        if (k == 0 || corners[k].component != corners[k - 1].component) ++c.points;
         if (several_fans) c.has_non_manifold_vertex = true;
       }
-      i = j;
     }
   }
 
