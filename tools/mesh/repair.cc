@@ -8,6 +8,7 @@
 #include <numeric>
 #include <vector>
 
+#include "common/buckets.h"
 #include "common/parallel.h"
 
 namespace hullpack {
@@ -151,37 +152,24 @@ void MarkCopiesAmong(const std::vector<Canonical>& canon, const RepairOptions& o
 
 void MarkDuplicateTriangles(const Mesh& mesh, const RepairOptions& options,
                             std::vector<uint8_t>& remove, RepairReport& report) {
-  // Equal vertex sets share their smallest vertex: the triangles are bucketed by it (ascending
-  // triangle ids in each bucket), and each bucket, a few triangles, is sorted alone. A sort of the
-  // whole mesh's keys held several times the mesh's indices at once.
-  auto canonical = [&mesh](uint32_t t) {
-    const uint32_t* p = &mesh.indices[3 * size_t(t)];
-    // Rotating to the smallest index keeps the winding and makes rotations compare equal.
-    const int m = p[0] < p[1] ? (p[0] < p[2] ? 0 : 2) : (p[1] < p[2] ? 1 : 2);
-    const uint32_t next = p[(m + 1) % 3], prev = p[(m + 2) % 3];
-    return Canonical{{p[m], std::min(next, prev), std::max(next, prev)}, next > prev, t};
-  };
-  const size_t triangle_count = mesh.triangle_count();
-  std::vector<uint32_t> start(mesh.vertex_count() + 1, 0);
-  for (size_t t = 0; t < triangle_count; ++t) {
-    if (remove[t]) continue;
+  // Equal vertex sets share their smallest vertex: copies are looked for among its triangles.
+  const Buckets by_smallest = BucketBy(mesh.triangle_count(), mesh.vertex_count(), [&](size_t t) {
     const uint32_t* p = &mesh.indices[3 * t];
-    ++start[std::min({p[0], p[1], p[2]}) + 1];
-  }
-  for (size_t v = 0; v + 1 < start.size(); ++v) start[v + 1] += start[v];
-  std::vector<uint32_t> by_smallest(start.back());
-  for (size_t t = 0; t < triangle_count; ++t) {
-    if (remove[t]) continue;
-    const uint32_t* p = &mesh.indices[3 * t];
-    by_smallest[start[std::min({p[0], p[1], p[2]})]++] = static_cast<uint32_t>(t);
-  }
-  // start[v] is now the end of bucket v, the start of bucket v + 1.
+    return remove[t] ? kNoBucket : std::min({p[0], p[1], p[2]});
+  });
   std::vector<Canonical> canon;
-  for (size_t v = 0; v + 1 < start.size(); ++v) {
-    const uint32_t first_entry = v == 0 ? 0 : start[v - 1];
-    if (start[v] - first_entry < 2) continue;  // one triangle (or none): no copy
+  for (size_t v = 0; v < mesh.vertex_count(); ++v) {
+    const uint32_t first = by_smallest.start[v], last = by_smallest.start[v + 1];
+    if (last - first < 2) continue;  // one triangle (or none): no copy
     canon.clear();
-    for (uint32_t e = first_entry; e < start[v]; ++e) canon.push_back(canonical(by_smallest[e]));
+    for (uint32_t e = first; e < last; ++e) {
+      const uint32_t t = by_smallest.ids[e];
+      const uint32_t* p = &mesh.indices[3 * size_t(t)];
+      // Rotating to the smallest index keeps the winding and makes rotations compare equal.
+      const int m = p[0] < p[1] ? (p[0] < p[2] ? 0 : 2) : (p[1] < p[2] ? 1 : 2);
+      const uint32_t next = p[(m + 1) % 3], prev = p[(m + 2) % 3];
+      canon.push_back({{p[m], std::min(next, prev), std::max(next, prev)}, next > prev, t});
+    }
     std::sort(canon.begin(), canon.end());
     MarkCopiesAmong(canon, options, remove, report);
   }

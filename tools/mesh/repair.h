@@ -27,7 +27,8 @@ struct RepairOptions {
   bool remove_opposite_duplicates = false;
   // Remove vertices no remaining triangle uses.
   bool remove_unused_vertices = true;
-  // Threads for the sorts (the result does not depend on it).
+  // Threads for the weld's sort and the degenerate-triangle checks (the result does not depend
+  // on it).
   int threads = 1;
 };
 

@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include "common/buckets.h"
+
 namespace hullpack {
 namespace {
 
@@ -63,32 +65,6 @@ size_t WeldPositions(const Mesh& mesh, std::vector<uint32_t>& point_of) {
     point_of[order[i]] = static_cast<uint32_t>(points);
   }
   return n == 0 ? 0 : points + 1;
-}
-
-// Ids 0..n-1 grouped by a key below key_count (ascending ids in a group); ids whose key is kSkip
-// are left out. Group k is ids[start[k], start[k + 1]). Why: the edges, duplicates and fans are
-// found among the few entries that share a point, at 4 bytes per entry, instead of in one sort of
-// every entry's whole key.
-constexpr uint32_t kSkip = UINT32_MAX;
-struct Buckets {
-  std::vector<uint32_t> start, ids;
-};
-template <typename KeyOf>
-Buckets BucketBy(size_t n, size_t key_count, KeyOf key_of) {
-  Buckets b;
-  b.start.assign(key_count + 1, 0);
-  for (size_t i = 0; i < n; ++i) {
-    const uint32_t k = key_of(i);
-    if (k != kSkip) ++b.start[size_t(k) + 1];
-  }
-  for (size_t k = 0; k < key_count; ++k) b.start[k + 1] += b.start[k];
-  b.ids.resize(b.start[key_count]);
-  std::vector<uint32_t> fill(b.start.begin(), b.start.end() - 1);
-  for (size_t i = 0; i < n; ++i) {
-    const uint32_t k = key_of(i);
-    if (k != kSkip) b.ids[fill[k]++] = static_cast<uint32_t>(i);
-  }
-  return b;
 }
 
 struct Vec3 {
@@ -175,7 +151,7 @@ TopologyReport AnalyzeTopology(const Mesh& mesh, const TopologyOptions& options)
       }
     };
     const Buckets by_smallest = BucketBy(triangle_count, point_count, [&](size_t t) {
-      return degenerate[t] ? kSkip : std::min({tri[t][0], tri[t][1], tri[t][2]});
+      return degenerate[t] ? kNoBucket : std::min({tri[t][0], tri[t][1], tri[t][2]});
     });
     std::vector<Canonical> canon;
     for (size_t p = 0; p < point_count; ++p) {
@@ -223,7 +199,7 @@ TopologyReport AnalyzeTopology(const Mesh& mesh, const TopologyOptions& options)
   std::vector<EdgeRecord> edge_records;
   {
     const Buckets by_smaller = BucketBy(3 * triangle_count, point_count, [&](size_t side) {
-      if (degenerate[side / 3]) return kSkip;
+      if (degenerate[side / 3]) return kNoBucket;
       const auto ends = side_points(static_cast<uint32_t>(side));
       return std::min(ends.first, ends.second);
     });
@@ -317,7 +293,7 @@ TopologyReport AnalyzeTopology(const Mesh& mesh, const TopologyOptions& options)
       }
     };
     const Buckets at_point = BucketBy(3 * triangle_count, point_count, [&](size_t corner) {
-      return degenerate[corner / 3] ? kSkip : tri[corner / 3][corner % 3];
+      return degenerate[corner / 3] ? kNoBucket : tri[corner / 3][corner % 3];
     });
     std::vector<CornerAt> corners;
     for (size_t p = 0; p < point_count; ++p) {

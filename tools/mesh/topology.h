@@ -78,7 +78,8 @@ struct TopologyReport {
   std::array<float, 3> bbox_max = {0, 0, 0};
 };
 
-// O(n log n) in the triangle count (sort-based welding and edge lists), memory O(n).
+// O(n log n) in the triangle count (a sort welds the positions; edges, duplicates and fans are
+// found among the entries that share a point), memory O(n).
 // Expects a mesh that passed ValidateMesh (indices in range, finite positions).
 TopologyReport AnalyzeTopology(const Mesh& mesh, const TopologyOptions& options = {});
 
