@@ -145,33 +145,57 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
   FreeMemory(used);
   FreeMemory(order);
   if (cancelled()) return Status::kCancelled;
-  // Triangles: drop degenerate and duplicate (same vertex set) ones, keep the first.
-  std::vector<std::pair<std::array<uint32_t, 3>, uint32_t>> keyed;
-  keyed.reserve(m.triangle_count);
+  // Triangles: drop degenerate and duplicate (same vertex set) ones, keep the first. Equal vertex
+  // sets share their smallest vertex: the triangles are grouped by it (a counting pass, 4 bytes
+  // per triangle) and each group, a few triangles, is sorted alone.
+  auto welded = [&](size_t t) {
+    std::array<uint32_t, 3> tri;
+    for (int k = 0; k < 3; ++k) tri[k] = remap[m.indices[t * m.triangle_stride + k]];
+    return tri;
+  };
+  const size_t nw = out->points.size();
+  std::vector<uint8_t> drop(m.triangle_count, 0);
+  {
+    std::vector<uint32_t> end(nw + 1, 0);
+    for (size_t t = 0; t < m.triangle_count; ++t) {
+      const std::array<uint32_t, 3> tri = welded(t);
+      if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) {
+        drop[t] = 1;
+        continue;
+      }
+      ++end[std::min({tri[0], tri[1], tri[2]}) + 1];
+    }
+    for (size_t v = 0; v < nw; ++v) end[v + 1] += end[v];
+    std::vector<uint32_t> by_smallest(end[nw]);
+    for (size_t t = 0; t < m.triangle_count; ++t) {
+      if (drop[t]) continue;
+      const std::array<uint32_t, 3> tri = welded(t);
+      by_smallest[end[std::min({tri[0], tri[1], tri[2]})]++] = static_cast<uint32_t>(t);
+    }
+    // end[v] is now the end of v's group, where v + 1's starts.
+    std::vector<std::pair<std::array<uint32_t, 3>, uint32_t>> group;
+    for (size_t v = 0, begin = 0; v < nw; begin = end[v++]) {
+      if (end[v] - begin < 2) continue;
+      group.clear();
+      for (size_t e = begin; e < end[v]; ++e) {
+        std::array<uint32_t, 3> key = welded(by_smallest[e]);
+        std::sort(key.begin(), key.end());
+        group.emplace_back(key, by_smallest[e]);
+      }
+      std::sort(group.begin(), group.end());
+      for (size_t k = 1; k < group.size(); ++k)
+        if (group[k].first == group[k - 1].first) drop[group[k].second] = 1;
+    }
+  }
+  const size_t kept = static_cast<size_t>(std::count(drop.begin(), drop.end(), uint8_t{0}));
+  out->triangles.reserve(kept);
+  if (keep_sources) out->triangle_source.reserve(kept);
   for (size_t t = 0; t < m.triangle_count; ++t) {
-    std::array<uint32_t, 3> tri;
-    for (int k = 0; k < 3; ++k) tri[k] = remap[m.indices[t * m.triangle_stride + k]];
-    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;
-    std::array<uint32_t, 3> key = tri;
-    std::sort(key.begin(), key.end());
-    keyed.emplace_back(key, static_cast<uint32_t>(t));
+    if (drop[t]) continue;
+    out->triangles.push_back(welded(t));
+    if (keep_sources) out->triangle_source.push_back(static_cast<uint32_t>(t));
   }
-  std::sort(keyed.begin(), keyed.end());
-  std::vector<uint32_t> keep;
-  keep.reserve(keyed.size());
-  for (size_t k = 0; k < keyed.size(); ++k)
-    if (k == 0 || keyed[k].first != keyed[k - 1].first) keep.push_back(keyed[k].second);
-  FreeMemory(keyed);
-  std::sort(keep.begin(), keep.end());
-  out->triangles.reserve(keep.size());
-  if (keep_sources) out->triangle_source.reserve(keep.size());
-  for (uint32_t t : keep) {
-    std::array<uint32_t, 3> tri;
-    for (int k = 0; k < 3; ++k) tri[k] = remap[m.indices[t * m.triangle_stride + k]];
-    out->triangles.push_back(tri);
-    if (keep_sources) out->triangle_source.push_back(t);
-  }
-  FreeMemory(keep);
+  FreeMemory(drop);
   FreeMemory(remap);
   if (out->triangles.empty()) {
     *why = "every triangle is degenerate";
