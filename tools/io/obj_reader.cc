@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "common/block_vector.h"
+#include "common/buckets.h"
 #include "common/parallel.h"
 #include "io/text_scanner.h"
 
@@ -772,7 +773,7 @@ class ObjParser {
   // bucket sorted by (vt, vn); a mesh whose positions are spread over the file is sorted whole.
   static std::vector<uint32_t> KeepFileOrder(MeshBuilder& b) {
     const size_t n = b.corners.size();
-    std::vector<uint32_t> order(n);
+    std::vector<uint32_t> order;
     auto less = [&b](uint32_t x, uint32_t y) {
       const Corner& a = b.corners[x];
       const Corner& c = b.corners[y];
@@ -787,18 +788,17 @@ class ObjParser {
     }
     const size_t range = n == 0 ? 0 : static_cast<size_t>(hi - lo) + 1;
     if (range > 2 * n + 1024) {
+      order.resize(n);
       for (uint32_t i = 0; i < n; ++i) order[i] = i;
       std::sort(order.begin(), order.end(), less);
     } else {
-      std::vector<uint32_t> end(range + 1, 0);
-      for (size_t i = 0; i < n; ++i) ++end[static_cast<size_t>(b.corners[i].v - lo) + 1];
-      for (size_t v = 0; v < range; ++v) end[v + 1] += end[v];
-      for (uint32_t i = 0; i < n; ++i) order[end[static_cast<size_t>(b.corners[i].v - lo)]++] = i;
-      // end[v] is now the end of bucket v.
-      for (size_t v = 0, begin = 0; v < range; begin = end[v++]) {
-        if (end[v] - begin < 2) continue;
-        std::sort(order.begin() + static_cast<ptrdiff_t>(begin),
-                  order.begin() + static_cast<ptrdiff_t>(end[v]), less);
+      Buckets by_v =
+          BucketBy(n, range, [&](size_t i) { return static_cast<uint32_t>(b.corners[i].v - lo); });
+      order = std::move(by_v.ids);
+      for (size_t v = 0; v < range; ++v) {
+        const uint32_t first = by_v.start[v], last = by_v.start[v + 1];
+        if (last - first < 2) continue;
+        std::sort(order.begin() + first, order.begin() + last, less);
       }
     }
     std::vector<uint32_t> new_index(n);
