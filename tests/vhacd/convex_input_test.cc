@@ -15,8 +15,8 @@ std::vector<Vec3> Points(const vhacd_test::Mesh& m) {
   return p;
 }
 
-std::vector<std::array<uint32_t, 3>> Triangles(const vhacd_test::Mesh& m) {
-  std::vector<std::array<uint32_t, 3>> t;
+TriangleList Triangles(const vhacd_test::Mesh& m) {
+  TriangleList t;
   for (size_t k = 0; k < m.triangle_count(); ++k)
     t.push_back({m.indices[3 * k], m.indices[3 * k + 1], m.indices[3 * k + 2]});
   return t;

@@ -1,4 +1,5 @@
-// ReadMesh: welding, dropped triangles, closedness, sources, float and double input alike.
+// ReadMesh: welding, dropped triangles, closedness, sources, float and double input alike, and
+// the lent triangles of a clean mesh.
 #include "input_mesh.h"
 
 #include <gtest/gtest.h>
@@ -7,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "error_metrics.h"
 #include "test_meshes.h"
 
 namespace {
@@ -14,13 +16,16 @@ namespace {
 using vhacd::internal::InputMesh;
 using vhacd::internal::ReadMesh;
 
-InputMesh Read(const vhacd_test::Mesh& m, bool keep_sources = true) {
+InputMesh Read(const vhacd_test::Mesh& m, bool keep_sources = true, bool may_borrow = false) {
   vhacd::internal::Context ctx(nullptr, 1);
   InputMesh out;
   std::string why;
+  vhacd::internal::ReadOptions options;
+  options.keep_sources = keep_sources;
+  options.may_borrow = may_borrow;
   EXPECT_EQ(ReadMesh(vhacd::MeshView::FromDouble(m.points.data(), m.point_count(), m.indices.data(),
                                                  m.indices.size() / 3),
-                     &ctx, &out, &why, keep_sources),
+                     &ctx, &out, &why, options),
             vhacd::Status::kOk)
       << why;
   return out;
@@ -73,6 +78,43 @@ TEST(ReadMesh, WeldsEqualPointsAndDropsDegenerateAndRepeatedTriangles) {
   EXPECT_TRUE(lean.triangle_source.empty());
   EXPECT_EQ(lean.points, in.points);
   EXPECT_EQ(lean.triangles, in.triangles);
+}
+
+TEST(ReadMesh, ACleanMeshKeepsItsPointOrderAndLendsItsTrianglesWhenAllowed) {
+  // Over 20001 points, so that the vertex samples are every second point or sparser.
+  const vhacd_test::Mesh torus = vhacd_test::Torus(2, 0.5, 200, 101);
+  const InputMesh lent = Read(torus, false, /*may_borrow=*/true);
+  ASSERT_EQ(lent.points.size(), torus.point_count());
+  EXPECT_TRUE(lent.triangles.borrowed());
+  EXPECT_EQ(lent.triangles[0].begin(), torus.indices.data());
+  for (size_t i = 0; i < lent.points.size(); ++i)
+    EXPECT_EQ(lent.points[i], vhacd::internal::Vec3(torus.points[3 * i], torus.points[3 * i + 1],
+                                                    torus.points[3 * i + 2]));
+  EXPECT_TRUE(lent.closed);
+  // The same vertex samples as the lexicographic order's stride.
+  const InputMesh sorted = Read(torus, false);
+  EXPECT_FALSE(sorted.triangles.borrowed());
+  EXPECT_TRUE(sorted.vertex_samples.empty());
+  const size_t stride = vhacd::internal::VertexSampleStride(sorted.points.size());
+  ASSERT_GT(stride, 1u);
+  std::vector<vhacd::internal::Vec3> expected, samples;
+  for (size_t i = 0; i < sorted.points.size(); i += stride) expected.push_back(sorted.points[i]);
+  for (uint32_t i : lent.vertex_samples) samples.push_back(lent.points[i]);
+  EXPECT_EQ(samples, expected);
+  // A repeated triangle: the points keep their order, the triangles are copied without it.
+  vhacd_test::Mesh repeated = torus;
+  repeated.AddTriangle(torus.indices[0], torus.indices[1], torus.indices[2]);
+  const InputMesh copied = Read(repeated, false, true);
+  EXPECT_FALSE(copied.triangles.borrowed());
+  EXPECT_EQ(copied.points, lent.points);
+  EXPECT_EQ(copied.triangles, lent.triangles);
+  // Equal positions or an unused point: the lexicographic order.
+  vhacd_test::Mesh unused = torus;
+  unused.AddPoint(9, 9, 9);
+  const InputMesh renumbered = Read(unused, false, true);
+  EXPECT_FALSE(renumbered.triangles.borrowed());
+  EXPECT_EQ(renumbered.points, sorted.points);
+  EXPECT_EQ(renumbered.triangles, sorted.triangles);
 }
 
 TEST(ReadMesh, FloatInputReadsAsItsDoubleValues) {

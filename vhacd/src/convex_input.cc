@@ -1,16 +1,21 @@
 #include "convex_input.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace vhacd {
 namespace internal {
 
-bool ConvexInputHull(const std::vector<Vec3>& points,
-                     const std::vector<std::array<uint32_t, 3>>& triangles, size_t max_vertices,
-                     double tolerance, HullMesh* hull) {
+bool ConvexInputHull(const std::vector<Vec3>& points, const TriangleList& triangles,
+                     size_t max_vertices, double tolerance, HullMesh* hull) {
   if (points.size() > kMaxConvexInputPoints || triangles.empty()) return false;
+  // The hull of the points in lexicographic order: the same hull whatever order they come in.
+  std::vector<Vec3> sorted = points;
+  std::sort(sorted.begin(), sorted.end(), [](const Vec3& a, const Vec3& b) {
+    return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
+  });
   HullMesh h;
-  if (ComputeConvexHull(points, -1.0, &h) != HullStatus::kOk) return false;
+  if (ComputeConvexHull(sorted, -1.0, &h) != HullStatus::kOk) return false;
   if (h.vertices.size() > max_vertices) return false;
   // A dent puts a point inside the hull; a self-intersecting surface could still enclose the
   // hull's volume by its signed sum, hence both tests.

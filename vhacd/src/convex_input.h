@@ -4,11 +4,11 @@
 #ifndef VHACD_SRC_CONVEX_INPUT_H_
 #define VHACD_SRC_CONVEX_INPUT_H_
 
-#include <array>
 #include <cstdint>
 #include <vector>
 
 #include "convex_hull.h"
+#include "triangle_list.h"
 
 namespace vhacd {
 namespace internal {
@@ -21,9 +21,8 @@ constexpr size_t kMaxConvexInputPoints = 4096;
 // every edge shared by two) is convex: every point lies on its convex hull within `tolerance` and
 // the mesh encloses the hull's volume to a relative 1e-6, and the hull has at most
 // `max_vertices` vertices. False otherwise, and for more than kMaxConvexInputPoints points.
-bool ConvexInputHull(const std::vector<Vec3>& points,
-                     const std::vector<std::array<uint32_t, 3>>& triangles, size_t max_vertices,
-                     double tolerance, HullMesh* hull);
+bool ConvexInputHull(const std::vector<Vec3>& points, const TriangleList& triangles,
+                     size_t max_vertices, double tolerance, HullMesh* hull);
 
 }  // namespace internal
 }  // namespace vhacd

@@ -156,7 +156,10 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   if (st != Status::kOk) return Fail(st, why);
   internal::Context ctx(observer, internal::ThreadCount(params.num_threads));
   internal::InputMesh input;
-  st = internal::ReadMesh(view, &ctx, &input, &why, /*keep_sources=*/false);
+  internal::ReadOptions read;
+  read.keep_sources = false;
+  read.may_borrow = true;  // the decomposition does not depend on the point order
+  st = internal::ReadMesh(view, &ctx, &input, &why, read);
   if (st != Status::kOk) return Fail(st, why);
   Result result;
   Report& rep = result.report;
@@ -264,6 +267,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   }
   internal::GridMesh gmesh;
   gmesh.triangles = std::move(input.triangles);
+  gmesh.vertex_samples = std::move(input.vertex_samples);
   gmesh.points = std::move(pn);  // mapped to the grid in place
   for (Vec3& p : gmesh.points) p = (p - place.origin) / place.h;
   // grid -> world: center + scale * rot^T * (origin + h * g)

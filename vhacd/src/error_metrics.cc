@@ -52,7 +52,7 @@ TriangleLocator::TriangleLocator(const GridMesh& mesh, double cell_size)
     dims_[a] = std::max(1, static_cast<int>(std::ceil((hi[a] - lo[a]) / cell_)) + 1);
   const size_t ncell = static_cast<size_t>(dims_[0]) * dims_[1] * dims_[2];
   start_.assign(ncell + 1, 0);
-  auto range = [&](const std::array<uint32_t, 3>& t, int* clo, int* chi) {
+  auto range = [&](TriangleList::Ref t, int* clo, int* chi) {
     for (int a = 0; a < 3; ++a) {
       double mn = mesh.points[t[0]][a], mx = mn;
       for (uint32_t v : t) {
@@ -242,7 +242,7 @@ void SampleTriangle(Vec3 a, Vec3 b, Vec3 c, double spacing, std::vector<Vec3>* o
   }
 }
 
-std::vector<Vec3> SampleSurface(const GridMesh& mesh, size_t count) {
+std::vector<Vec3> SampleSurface(const GridMesh& mesh) {
   double area = 0.0;
   for (const auto& t : mesh.triangles)
     area +=
@@ -250,9 +250,14 @@ std::vector<Vec3> SampleSurface(const GridMesh& mesh, size_t count) {
         (mesh.points[t[1]] - mesh.points[t[0]]).cross(mesh.points[t[2]] - mesh.points[t[0]]).norm();
   std::vector<Vec3> out;
   // Vertices (a deterministic stride of them), then rows across each triangle.
-  const size_t vstride = std::max<size_t>(1, mesh.points.size() / (count / 2 + 1));
-  for (size_t i = 0; i < mesh.points.size(); i += vstride) out.push_back(mesh.points[i]);
-  const double spacing = std::max(1e-9, std::sqrt(2.0 * area / std::max<size_t>(1, count / 2)));
+  if (!mesh.vertex_samples.empty()) {
+    for (uint32_t i : mesh.vertex_samples) out.push_back(mesh.points[i]);
+  } else {
+    const size_t vstride = VertexSampleStride(mesh.points.size());
+    for (size_t i = 0; i < mesh.points.size(); i += vstride) out.push_back(mesh.points[i]);
+  }
+  const double spacing =
+      std::max(1e-9, std::sqrt(2.0 * area / std::max<size_t>(1, kSurfaceSamples / 2)));
   for (const auto& t : mesh.triangles)
     SampleTriangle(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], spacing, &out);
   return out;
@@ -302,7 +307,7 @@ bool ComputeErrorReport(const MetricsInput& in, Context* ctx, Report* report) {
   if (ctx->Cancelled()) return false;
 
   // mesh -> hulls.
-  const std::vector<Vec3> ms = SampleSurface(*in.mesh, 20000);
+  const std::vector<Vec3> ms = SampleSurface(*in.mesh);
   const size_t stride = 1;
   const size_t nms = ms.size();
   const size_t kChunk = 256;

@@ -61,9 +61,17 @@ struct MetricsInput {
 // in the area, and empty for a degenerate triangle).
 void SampleTriangle(Vec3 a, Vec3 b, Vec3 c, double spacing, std::vector<Vec3>* out);
 
-// About `count` points spread over the surface (vertices first, then a stratified grid on each
-// triangle), deterministic.
-std::vector<Vec3> SampleSurface(const GridMesh& mesh, size_t count);
+// The error report's surface samples, and the stride between its vertex samples on a mesh of
+// `points` points (half the samples are vertices).
+constexpr size_t kSurfaceSamples = 20000;
+inline size_t VertexSampleStride(size_t points) {
+  return points / (kSurfaceSamples / 2 + 1) > 1 ? points / (kSurfaceSamples / 2 + 1) : 1;
+}
+
+// About kSurfaceSamples points spread over the surface, deterministic: vertices first (every
+// VertexSampleStride-th in the lexicographic order of positions: mesh.vertex_samples, or with none
+// given, the points in their order), then a stratified grid on each triangle.
+std::vector<Vec3> SampleSurface(const GridMesh& mesh);
 
 // Fills report->hulls, volume_iou, the Hausdorff distances and concavity. False when cancelled.
 bool ComputeErrorReport(const MetricsInput& in, Context* ctx, Report* report);

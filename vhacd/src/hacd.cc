@@ -308,7 +308,7 @@ Result DecomposeHacdImpl(const MeshView& view, const HacdParameters& params, Obs
   auto to_world = [&](const Vec3& n) -> Vec3 { return center + (n / to_norm) * extent; };
   const double diag = 2.0 * params.scale_factor;
 
-  std::vector<Tri> tris = input.triangles;
+  std::vector<Tri> tris = input.triangles.ToArrays();
 
   // Decimation (the simplifier does not need consistent windings: the triangles are oriented
   // after it, on the smaller mesh).

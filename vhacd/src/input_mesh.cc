@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "error_metrics.h"
+
 namespace vhacd {
 namespace internal {
 
@@ -17,7 +19,7 @@ void FreeMemory(std::vector<T>& v) {
 // and each vertex's short list is sorted. A large mesh's vertices are taken in a few ranges, one
 // range's lists at a time: the decomposition may run beside an encoder of the same mesh, and a
 // list of every edge would be as large as the triangles.
-bool IsClosed(const std::vector<std::array<uint32_t, 3>>& triangles, size_t nv) {
+bool IsClosed(const TriangleList& triangles, size_t nv) {
   std::vector<uint32_t> start(nv + 1, 0);
   for (const auto& t : triangles)
     for (int k = 0; k < 3; ++k) ++start[std::min(t[k], t[(k + 1) % 3]) + 1];
@@ -62,7 +64,7 @@ bool IsClosed(const std::vector<std::array<uint32_t, 3>>& triangles, size_t nv) 
 }  // namespace
 
 Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* why,
-                bool keep_sources) {
+                const ReadOptions& options) {
   if (m.point_count == 0 || m.triangle_count == 0) {
     *why = "the mesh has no points or no triangles";
     return Status::kEmptyMesh;
@@ -113,7 +115,7 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
     return true;
   };
   if (cancelled()) return Status::kCancelled;
-  // Weld bit-identical positions (deterministic: sorted order).
+  // Weld bit-identical positions: equal positions are neighbours in their lexicographic order.
   std::vector<uint32_t> order;
   for (uint32_t i = 0; i < np; ++i)
     if (used[i]) order.push_back(i);
@@ -124,21 +126,37 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
     if (pa[2] != pb[2]) return pa[2] < pb[2];
     return a < b;
   });
-  std::vector<uint32_t> remap(np, 0);
   // Sized before they are filled: the mesh stays for the whole decomposition, and grown one
   // element at a time it would hold up to twice its size.
   size_t distinct = 0;
   for (size_t k = 0; k < order.size(); ++k)
     distinct += k == 0 || point(order[k]) != point(order[k - 1]);
+  // Every point used and distinct: with may_borrow, the welded points are the input's, in order.
+  const bool keep_order = options.may_borrow && distinct == np;
+  std::vector<uint32_t> remap(np, 0);
   out->points.reserve(distinct);
-  if (keep_sources) out->point_source.reserve(distinct);
-  for (size_t k = 0; k < order.size(); ++k) {
-    const Vec3 p = point(order[k]);
-    if (k == 0 || p != out->points.back()) {
-      out->points.push_back(p);
-      if (keep_sources) out->point_source.push_back(order[k]);
+  if (options.keep_sources) out->point_source.reserve(distinct);
+  if (keep_order) {
+    for (uint32_t i = 0; i < np; ++i) {
+      out->points.push_back(point(i));
+      if (options.keep_sources) out->point_source.push_back(i);
+      remap[i] = i;
     }
-    remap[order[k]] = static_cast<uint32_t>(out->points.size() - 1);
+  } else {
+    for (size_t k = 0; k < order.size(); ++k) {
+      const Vec3 p = point(order[k]);
+      if (k == 0 || p != out->points.back()) {
+        out->points.push_back(p);
+        if (options.keep_sources) out->point_source.push_back(order[k]);
+      }
+      remap[order[k]] = static_cast<uint32_t>(out->points.size() - 1);
+    }
+  }
+  if (keep_order) {
+    // The welded points at every stride-th rank of the lexicographic order, which are the points
+    // a lexicographically ordered mesh samples (see SampleSurface).
+    const size_t stride = VertexSampleStride(distinct);
+    for (size_t k = 0; k < order.size(); k += stride) out->vertex_samples.push_back(order[k]);
   }
   // Each working array is freed once done: the decomposition beside which this may run (a
   // pipeline also encodes the mesh) feels the sum of what is alive at once.
@@ -188,12 +206,19 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
     }
   }
   const size_t kept = static_cast<size_t>(std::count(drop.begin(), drop.end(), uint8_t{0}));
-  out->triangles.reserve(kept);
-  if (keep_sources) out->triangle_source.reserve(kept);
-  for (size_t t = 0; t < m.triangle_count; ++t) {
-    if (drop[t]) continue;
-    out->triangles.push_back(welded(t));
-    if (keep_sources) out->triangle_source.push_back(static_cast<uint32_t>(t));
+  if (options.keep_sources) out->triangle_source.reserve(kept);
+  if (keep_order && kept == m.triangle_count && m.triangle_stride == 3) {
+    out->triangles = TriangleList::Borrow(m.indices, m.triangle_count);
+    if (options.keep_sources)
+      for (size_t t = 0; t < m.triangle_count; ++t)
+        out->triangle_source.push_back(static_cast<uint32_t>(t));
+  } else {
+    out->triangles.reserve(kept);
+    for (size_t t = 0; t < m.triangle_count; ++t) {
+      if (drop[t]) continue;
+      out->triangles.push_back(welded(t));
+      if (options.keep_sources) out->triangle_source.push_back(static_cast<uint32_t>(t));
+    }
   }
   FreeMemory(drop);
   FreeMemory(remap);

@@ -10,24 +10,37 @@
 
 #include "context.h"
 #include "convex_hull.h"
+#include "triangle_list.h"
 #include "vhacd/vhacd.h"
 
 namespace vhacd {
 namespace internal {
 
 struct InputMesh {
-  std::vector<Vec3> points;                        // welded, referenced only
-  std::vector<std::array<uint32_t, 3>> triangles;  // no degenerate, no duplicate
-  std::vector<uint32_t> point_source;              // an input point index of each welded point
-  std::vector<uint32_t> triangle_source;           // the input triangle index of each triangle
+  std::vector<Vec3> points;               // welded, referenced only
+  TriangleList triangles;                 // no degenerate, no duplicate
+  std::vector<uint32_t> point_source;     // an input point index of each welded point
+  std::vector<uint32_t> triangle_source;  // the input triangle index of each triangle
+  // The points at ranks 0, s, 2s, ... of the lexicographic order of positions, s as SampleSurface
+  // spaces them: the same samples whatever the point order (with ReadOptions::may_borrow).
+  std::vector<uint32_t> vertex_samples;
   bool closed = false;
 };
 
+struct ReadOptions {
+  // Fill point_source and triangle_source (for callers that map back to the input).
+  bool keep_sources = true;
+  // The points of an input with no equal positions and no unused point keep their order, and
+  // when no triangle is dropped either (and the indices are contiguous) `triangles` borrows the
+  // view's indices: a large clean mesh is not copied. Otherwise, and without it, the welded
+  // points are in lexicographic order. Only for callers whose results do not depend on the
+  // point order; the view must outlive the InputMesh.
+  bool may_borrow = false;
+};
+
 // Validates `m` and fills *out; on failure returns the status and names the problem in *why.
-// Without `keep_sources`, point_source and triangle_source stay empty (for callers that do not
-// map back to the input).
 Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* why,
-                bool keep_sources = true);
+                const ReadOptions& options = ReadOptions());
 
 }  // namespace internal
 }  // namespace vhacd

@@ -85,7 +85,7 @@ SimplifyResult SimplifyImpl(const MeshView& view, const SimplifyParameters& para
   ctx.BeginStage("Simplification", 0, 100);
   internal::QemMesh mesh, out;
   mesh.points = input.points;
-  mesh.triangles = input.triangles;
+  mesh.triangles = input.triangles.ToArrays();
   internal::Vec3 lo = input.points[0], hi = input.points[0];
   for (const auto& p : input.points) {
     lo = lo.cwiseMin(p);

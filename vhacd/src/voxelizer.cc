@@ -114,14 +114,21 @@ void CollectCrossings(const GridMesh& mesh, const int dims[3], int axis, size_t 
                       size_t tri_end, std::vector<Crossing>* out) {
   const int u = (axis + 1) % 3, v = (axis + 2) % 3;
   for (size_t t = tri_begin; t < tri_end; ++t) {
-    uint32_t id[3] = {mesh.triangles[t][0], mesh.triangles[t][1], mesh.triangles[t][2]};
-    const Vec3* P[3] = {&mesh.points[id[0]], &mesh.points[id[1]], &mesh.points[id[2]]};
+    const auto tri = mesh.triangles[t];
+    const Vec3* P[3] = {&mesh.points[tri[0]], &mesh.points[tri[1]], &mesh.points[tri[2]]};
     double area = Orient2((*P[0])[u], (*P[0])[v], (*P[1])[u], (*P[1])[v], (*P[2])[u], (*P[2])[v]);
     if (area == 0.0 || !std::isfinite(area)) continue;  // parallel to the rays: never crossed
     if (area < 0) {
-      std::swap(id[1], id[2]);
       std::swap(P[1], P[2]);
       area = -area;
+    }
+    // Each edge is evaluated from its lexicographically smaller end, for both of its triangles:
+    // same operands, same order, whatever the point numbering.
+    bool from_start[3];
+    for (int e = 0; e < 3; ++e) {
+      const Vec3& a = *P[e];
+      const Vec3& b = *P[(e + 1) % 3];
+      from_start[e] = std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
     }
     const double umin = std::min({(*P[0])[u], (*P[1])[u], (*P[2])[u]});
     const double umax = std::max({(*P[0])[u], (*P[1])[u], (*P[2])[u]});
@@ -155,9 +162,8 @@ void CollectCrossings(const GridMesh& mesh, const int dims[3], int axis, size_t 
       double w[3];
       for (int e = 0; e < 3; ++e) {
         const int i = e, j = (e + 1) % 3;
-        // Canonical evaluation: same operands, same order, for both triangles of an edge.
         double val;
-        if (id[i] < id[j])
+        if (from_start[e])
           val = Orient2((*P[i])[u], (*P[i])[v], (*P[j])[u], (*P[j])[v], qu, qv);
         else
           val = -Orient2((*P[j])[u], (*P[j])[v], (*P[i])[u], (*P[i])[v], qu, qv);

@@ -9,6 +9,7 @@
 
 #include "context.h"
 #include "convex_hull.h"
+#include "triangle_list.h"
 
 namespace vhacd {
 namespace internal {
@@ -16,7 +17,10 @@ namespace internal {
 // A triangle soup in grid units: voxel (x, y, z) is the box [x, x+1] x [y, y+1] x [z, z+1].
 struct GridMesh {
   std::vector<Vec3> points;
-  std::vector<std::array<uint32_t, 3>> triangles;  // no degenerate or duplicate triangles
+  TriangleList triangles;  // no degenerate or duplicate triangles
+  // The error report's vertex samples (see SampleSurface); empty when `points` are in
+  // lexicographic order.
+  std::vector<uint32_t> vertex_samples;
 };
 
 // Where the grid sits in the (normalized) input space: p = origin + h * g.
