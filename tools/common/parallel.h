@@ -52,6 +52,76 @@ inline void ParallelFor(size_t count, int threads, const std::function<void(size
   for (std::thread& t : pool) t.join();
 }
 
+// Cores lent by workers that ran out of work to loops that can use more threads: a stage that
+// finishes early (a decomposition beside an encode of the same mesh) leaves its core to the
+// other. Never blocks.
+class CoreLender {
+ public:
+  void Lend() { free_.fetch_add(1); }
+  bool TryBorrow() {
+    for (int f = free_.load(); f > 0;)
+      if (free_.compare_exchange_weak(f, f - 1)) return true;
+    return false;
+  }
+
+ private:
+  std::atomic<int> free_{0};
+};
+
+// Threads for a parallel loop: `base` always, and up to `extra` more while `lender` has cores free.
+struct ThreadBudget {
+  ThreadBudget(int threads = 1) : base(threads) {}  // NOLINT: a plain count converts
+  int base;
+  int extra = 0;
+  CoreLender* lender = nullptr;
+};
+
+// ParallelFor on budget.base threads; before it takes each task, the calling thread starts a
+// helper on a core borrowed from budget.lender (up to budget.extra of them) while tasks remain.
+// A helper gives its core back when no task is left.
+inline void ParallelFor(size_t count, const ThreadBudget& budget,
+                        const std::function<void(size_t)>& task) {
+  if (budget.lender == nullptr || budget.extra <= 0) {
+    ParallelFor(count, budget.base, task);
+    return;
+  }
+  std::atomic<size_t> next{0};
+  auto worker = [&] {
+    for (size_t i; (i = next.fetch_add(1)) < count;) task(i);
+  };
+  std::vector<std::thread> pool;
+  const size_t n = std::min<size_t>(count, static_cast<size_t>(std::max(1, budget.base)));
+  for (size_t t = 1; t < n; ++t) pool.emplace_back(worker);
+  int borrowed = 0;
+  for (size_t i; (i = next.fetch_add(1)) < count;) {
+    while (borrowed < budget.extra && next.load() < count && budget.lender->TryBorrow()) {
+      ++borrowed;
+      pool.emplace_back([&] {
+        worker();
+        budget.lender->Lend();
+      });
+    }
+    task(i);
+  }
+  for (std::thread& t : pool) t.join();
+}
+
+// ParallelFor whose threads each lend their core to `lender` once no task is left to take.
+inline void ParallelForLendingIdle(size_t count, int threads, CoreLender* lender,
+                                   const std::function<void(size_t)>& task) {
+  std::atomic<size_t> next{0};
+  auto worker = [&] {
+    for (size_t i; (i = next.fetch_add(1)) < count;) task(i);
+    lender->Lend();
+  };
+  std::vector<std::thread> pool;
+  const size_t n = std::min<size_t>(count, static_cast<size_t>(std::max(1, threads)));
+  for (size_t t = n; t < static_cast<size_t>(std::max(1, threads)); ++t) lender->Lend();
+  for (size_t t = 1; t < n; ++t) pool.emplace_back(worker);
+  worker();
+  for (std::thread& t : pool) t.join();
+}
+
 // std::sort of [first, last) with parts sorted on up to `threads` threads, then merged. `less` must
 // be a strict total order (no two elements equivalent, e.g. ties broken by an index): then the
 // result is the one std::sort gives, whatever the thread count.

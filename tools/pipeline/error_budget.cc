@@ -66,10 +66,20 @@ constexpr float kGridStart = 0.6f;
 
 namespace {
 
+// The candidate with the fewest bytes; on a tie the first, whatever the thread count.
+template <typename Candidate>
+size_t Smallest(const std::vector<Candidate>& candidates) {
+  size_t best = 0;
+  for (size_t i = 0; i < candidates.size(); ++i) {
+    if (candidates[i].bytes < candidates[best].bytes) best = i;
+  }
+  return best;
+}
+
 // EncodeWithinError at the UV range of `settings`.
 Result<BudgetedEncoding> EncodeOnGrids(const Mesh& mesh, const std::vector<uint32_t>& groups,
                                        const MeshCodecSettings& settings, double max_error,
-                                       int threads, size_t max_part_triangles) {
+                                       const ThreadBudget& threads, size_t max_part_triangles) {
   // Every grid keeps a mesh of zero size (empty, or all positions equal) exactly, so such a mesh
   // meets even a zero budget (max_error x its diagonal of 0).
   const bool zero_size = PositionRange(mesh) == 0;
@@ -113,6 +123,7 @@ Result<BudgetedEncoding> EncodeOnGrids(const Mesh& mesh, const std::vector<uint3
     return Status(StatusCode::kInternal,
                   "mesh '" + mesh.name + "': no position grid keeps the error within the budget");
   }
+  const int tried = static_cast<int>(candidates.size());
   auto t = Clock::now();
   // A large mesh is coded in parts, one after the other, each on the whole mesh's grid (so that
   // the vertices two parts share decode alike): the encoder's memory is then a part's.
@@ -171,22 +182,25 @@ Result<BudgetedEncoding> EncodeOnGrids(const Mesh& mesh, const std::vector<uint3
           if (!statuses[i].ok()) return statuses[i];
           candidates[i].bytes += candidates[i].parts.back().stream.size();
         }
+        // The other parts only on the grid that coded the first smallest: a part of a mesh large
+        // enough to be split is a large sample of it, and coding every candidate in every part
+        // was most of the run's time.
+        if (part.index == 0 && part.count > 1) {
+          candidates.erase(candidates.begin(), candidates.begin() + Smallest(candidates));
+          candidates.resize(1);
+          done.resize(1);
+        }
         return Status::Ok();
       });
   if (!parts_status.ok()) return parts_status;
   BudgetedEncoding out;
   out.seconds_encode = Seconds(t);
-  // The smallest streams; on a tie the first candidate, whatever the thread count.
-  size_t best = 0;
-  for (size_t i = 0; i < candidates.size(); ++i) {
-    if (candidates[i].bytes < candidates[best].bytes) best = i;
-  }
-  Candidate& chosen = candidates[best];
+  Candidate& chosen = candidates[Smallest(candidates)];
   out.streams = std::move(chosen.parts);
   out.position_bits = chosen.bits;
   out.position_range = chosen.mode;
   out.max_error = chosen.error;
-  out.streams_tried = static_cast<int>(candidates.size());
+  out.streams_tried = tried;
   return out;
 }
 
@@ -200,7 +214,7 @@ size_t StreamBytes(const BudgetedEncoding& e) {
 
 Result<BudgetedEncoding> EncodeWithinError(const Mesh& mesh, const std::vector<uint32_t>& groups,
                                            const MeshCodecSettings& settings, double max_error,
-                                           int threads, size_t max_part_triangles) {
+                                           const ThreadBudget& threads, size_t max_part_triangles) {
   Result<BudgetedEncoding> out =
       EncodeOnGrids(mesh, groups, settings, max_error, threads, max_part_triangles);
   if (!out.ok() || settings.uv_range != o3dgc::RangeMode::kUniform || !UvExtentsDiffer(mesh)) {

@@ -20,6 +20,7 @@
 #include <array>
 #include <vector>
 
+#include "common/parallel.h"
 #include "common/status.h"
 #include "pipeline/mesh_codec.h"
 #include "scene/scene.h"
@@ -53,15 +54,18 @@ size_t StreamBytes(const BudgetedEncoding& e);
 double PositionGridError(const Mesh& mesh, o3dgc::RangeMode mode, int bits);
 
 // `settings` gives everything but the position grid. `max_error` > 0, model units (or 0 for a
-// mesh of zero size, which every grid keeps exactly). Candidates are encoded on up to `threads`
-// threads; the result does not depend on it. settings.progress, when set, sees the fraction of all
-// candidates encoded (from any of those threads, one call at a time). With `max_part_triangles`
-// > 0, a larger mesh that SplitTriangles can split is coded in parts of at most that many
-// triangles, one after the other, all on the grid of the whole mesh: the candidates are compared
-// by the bytes of all their parts, and the encoder's memory follows a part instead of the mesh.
+// mesh of zero size, which every grid keeps exactly). Candidates are encoded on `threads` (and
+// on the cores its lender frees as they free up); the result does not depend on it.
+// settings.progress, when set, sees the fraction of all candidates encoded (from any of those
+// threads, one call at a time). With `max_part_triangles` > 0, a larger mesh that SplitTriangles
+// can split is coded in parts of at most that many triangles, one after the other, all on the grid
+// of the whole mesh: the candidates are compared by the bytes of the first part (a large sample of
+// the mesh), the other parts are coded on the chosen grid only, and the encoder's memory follows a
+// part instead of the mesh.
 Result<BudgetedEncoding> EncodeWithinError(const Mesh& mesh, const std::vector<uint32_t>& groups,
                                            const MeshCodecSettings& settings, double max_error,
-                                           int threads = 1, size_t max_part_triangles = 0);
+                                           const ThreadBudget& threads = 1,
+                                           size_t max_part_triangles = 0);
 
 }  // namespace hullpack
 

@@ -141,7 +141,7 @@ class DecomposeProgress : public vhacd::Observer {
 // given), or the smallest streams within the error budget; in parts for a large mesh
 // (PackOptions::part_triangles).
 // `threads` for the candidate grids; `progress` (may be empty) gets the fraction encoded.
-Status EncodeRenderMesh(const Mesh& mesh, const PackOptions& options, int threads,
+Status EncodeRenderMesh(const Mesh& mesh, const PackOptions& options, const ThreadBudget& threads,
                         const o3dgc::ProgressFn& progress, PackedMesh& out) {
   MeshCodecSettings s = SettingsFor(options);
   s.progress = progress;
@@ -264,7 +264,9 @@ Result<std::vector<PackedMesh>> PackMeshes(const Scene& scene, const PackOptions
   for (const Task& t : tasks) weights.push_back(t.weight);
   ProgressBoard board(observer, weights, from, to);
   std::vector<Status> status(tasks.size());
-  ParallelFor(tasks.size(), ThreadCount(options.threads), [&](size_t k) {
+  // A worker with no task left lends its core to an encode still running (its candidates).
+  CoreLender lender;
+  ParallelForLendingIdle(tasks.size(), ThreadCount(options.threads), &lender, [&](size_t k) {
     const Task& task = tasks[k];
     if (board.Cancelled()) {
       status[k] = Status(StatusCode::kCancelled, "cancelled");
@@ -280,12 +282,16 @@ Result<std::vector<PackedMesh>> PackMeshes(const Scene& scene, const PackOptions
       board.Set(k, 1, prefix + "hulls encoded");
     } else {
       board.Set(k, 0, prefix + "encode");
-      // The candidates in parallel, as many as the memory holds; beside this mesh's
-      // decomposition, on one thread fewer: the decomposition is then the longer task (the
-      // candidates share one connectivity coding), and the encode's threads only slowed it.
+      // The candidates in parallel, as many as the memory holds. Beside this mesh's
+      // decomposition on one thread fewer, until a core is free: two candidates beside the
+      // decomposition would add an encoder's memory to the run's peak (theirs and the
+      // decomposition's are then alive at once) and slow the decomposition as much.
       const bool beside = packed[task.mesh].report.no_hulls_reason.empty();
-      const int threads =
-          CandidateThreads(mesh, std::max(1, ThreadCount(options.threads) - (beside ? 1 : 0)));
+      const int all = CandidateThreads(mesh, ThreadCount(options.threads));
+      ThreadBudget threads(
+          CandidateThreads(mesh, std::max(1, ThreadCount(options.threads) - (beside ? 1 : 0))));
+      threads.extra = all - threads.base;
+      threads.lender = &lender;
       const o3dgc::ProgressFn progress = [&board, k, &prefix](float f) {
         board.Set(k, f, prefix + "encode " + std::to_string(static_cast<int>(f * 100)) + "%");
         return !board.Cancelled();

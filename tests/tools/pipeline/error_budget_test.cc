@@ -124,7 +124,8 @@ TEST(ErrorBudget, TheChosenStreamIsAWholeEncodeOfItsGrid) {
 }
 
 // In parts, each chosen stream is the whole encode of its part (SplitTriangles, MeshPart) at the
-// chosen grid over the whole mesh's box, and the parts' error is the whole mesh's.
+// grid that coded the first part smallest, over the whole mesh's box, and the parts' error is the
+// whole mesh's.
 TEST(ErrorBudget, PartsAreWholeEncodesOfThePartsOnTheMeshGrid) {
   const Mesh mesh = testing::TorusMesh(40, 14);
   std::vector<uint32_t> groups(mesh.triangle_count());
@@ -139,6 +140,9 @@ TEST(ErrorBudget, PartsAreWholeEncodesOfThePartsOnTheMeshGrid) {
         EncodeWithinError(mesh, groups, MeshCodecSettings(), budget, threads, 400);
     ASSERT_TRUE(chosen.ok()) << chosen.status().ToString();
     ASSERT_EQ(chosen->streams.size(), 3u);
+    // The same grids tried (the first part on each, the others on the one it chose).
+    EXPECT_EQ(chosen->streams_tried, whole->streams_tried);
+    EXPECT_GT(chosen->streams_tried, 1);
     EXPECT_EQ(chosen->max_error,
               PositionGridError(mesh, chosen->position_range, chosen->position_bits));
     EXPECT_LE(chosen->max_error, budget);
