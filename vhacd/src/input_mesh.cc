@@ -142,6 +142,10 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
       if (options.keep_sources) out->point_source.push_back(i);
       remap[i] = i;
     }
+    // The points at every stride-th rank of the lexicographic order: those a lexicographically
+    // numbered mesh samples (see SampleSurface).
+    const size_t stride = VertexSampleStride(distinct);
+    for (size_t k = 0; k < order.size(); k += stride) out->vertex_samples.push_back(order[k]);
   } else {
     for (size_t k = 0; k < order.size(); ++k) {
       const Vec3 p = point(order[k]);
@@ -151,12 +155,6 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
       }
       remap[order[k]] = static_cast<uint32_t>(out->points.size() - 1);
     }
-  }
-  if (keep_order) {
-    // The welded points at every stride-th rank of the lexicographic order, which are the points
-    // a lexicographically ordered mesh samples (see SampleSurface).
-    const size_t stride = VertexSampleStride(distinct);
-    for (size_t k = 0; k < order.size(); k += stride) out->vertex_samples.push_back(order[k]);
   }
   // Each working array is freed once done: the decomposition beside which this may run (a
   // pipeline also encodes the mesh) feels the sum of what is alive at once.
