@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <limits>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -115,6 +117,24 @@ TEST(ReadMesh, ACleanMeshKeepsItsPointOrderAndLendsItsTrianglesWhenAllowed) {
   EXPECT_FALSE(renumbered.triangles.borrowed());
   EXPECT_EQ(renumbered.points, sorted.points);
   EXPECT_EQ(renumbered.triangles, sorted.triangles);
+}
+
+// A scrambled point order (one block of points per corner) would make every triangle's points
+// far apart in memory: the lexicographic order is kept then.
+TEST(ReadMesh, AScrambledPointOrderIsNotKept) {
+  const vhacd_test::Mesh torus = vhacd_test::Torus(2, 0.5, 700, 300);
+  std::vector<uint32_t> to(torus.point_count());
+  for (uint32_t i = 0; i < to.size(); ++i) to[i] = i;
+  std::shuffle(to.begin(), to.end(), std::mt19937(5));
+  vhacd_test::Mesh scrambled = torus;
+  for (uint32_t i = 0; i < to.size(); ++i)
+    for (int k = 0; k < 3; ++k) scrambled.points[3 * to[i] + k] = torus.points[3 * i + k];
+  for (uint32_t& v : scrambled.indices) v = to[v];
+  EXPECT_TRUE(Read(torus, false, true).triangles.borrowed());
+  const InputMesh read = Read(scrambled, false, true);
+  EXPECT_FALSE(read.triangles.borrowed());
+  EXPECT_TRUE(read.vertex_samples.empty());
+  EXPECT_EQ(read.points, Read(scrambled, false).points);
 }
 
 TEST(ReadMesh, FloatInputReadsAsItsDoubleValues) {

@@ -30,9 +30,10 @@ struct InputMesh {
 struct ReadOptions {
   // Fill point_source and triangle_source (for callers that map back to the input).
   bool keep_sources = true;
-  // The points of an input with no equal positions and no unused point keep their order, and
-  // when no triangle is dropped either (and the indices are contiguous) `triangles` borrows the
-  // view's indices: a large clean mesh is not copied. Otherwise, and without it, the welded
+  // The points of an input with no equal positions and no unused point, whose consecutive
+  // triangles use points near each other in its order (not a scrambled order), keep their order,
+  // and when no triangle is dropped either (and the indices are contiguous) `triangles` borrows
+  // the view's indices: a large clean mesh is not copied. Otherwise, and without it, the welded
   // points are in lexicographic order. Only for callers whose results do not depend on the
   // point order; the view must outlive the InputMesh.
   bool may_borrow = false;
