@@ -34,6 +34,25 @@ inline int ThreadCount(int requested) {
   return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 }
 
+namespace parallel_internal {
+
+// task(0) .. task(count - 1) on `threads` threads (the calling one included), each taking the next
+// index; each thread calls idle() once no index is left to take.
+template <typename Idle>
+void Run(size_t count, size_t threads, const std::function<void(size_t)>& task, Idle idle) {
+  std::atomic<size_t> next{0};
+  auto worker = [&] {
+    for (size_t i; (i = next.fetch_add(1)) < count;) task(i);
+    idle();
+  };
+  std::vector<std::thread> pool;
+  for (size_t t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (std::thread& t : pool) t.join();
+}
+
+}  // namespace parallel_internal
+
 // Calls task(0) .. task(count - 1) on up to `threads` threads (the calling one included) and
 // returns when all have returned. Tasks must not throw.
 inline void ParallelFor(size_t count, int threads, const std::function<void(size_t)>& task) {
@@ -42,14 +61,7 @@ inline void ParallelFor(size_t count, int threads, const std::function<void(size
     for (size_t i = 0; i < count; ++i) task(i);
     return;
   }
-  std::atomic<size_t> next{0};
-  auto worker = [&] {
-    for (size_t i; (i = next.fetch_add(1)) < count;) task(i);
-  };
-  std::vector<std::thread> pool;
-  for (size_t t = 1; t < n; ++t) pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool) t.join();
+  parallel_internal::Run(count, n, task, [] {});
 }
 
 // Cores lent by workers that ran out of work to loops that can use more threads: a stage that
@@ -109,17 +121,10 @@ inline void ParallelFor(size_t count, const ThreadBudget& budget,
 // ParallelFor whose threads each lend their core to `lender` once no task is left to take.
 inline void ParallelForLendingIdle(size_t count, int threads, CoreLender* lender,
                                    const std::function<void(size_t)>& task) {
-  std::atomic<size_t> next{0};
-  auto worker = [&] {
-    for (size_t i; (i = next.fetch_add(1)) < count;) task(i);
-    lender->Lend();
-  };
-  std::vector<std::thread> pool;
-  const size_t n = std::min<size_t>(count, static_cast<size_t>(std::max(1, threads)));
-  for (size_t t = n; t < static_cast<size_t>(std::max(1, threads)); ++t) lender->Lend();
-  for (size_t t = 1; t < n; ++t) pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool) t.join();
+  const size_t all = static_cast<size_t>(std::max(1, threads));
+  const size_t n = std::max<size_t>(1, std::min(count, all));
+  for (size_t t = n; t < all; ++t) lender->Lend();  // threads that would get no task
+  parallel_internal::Run(count, n, task, [lender] { lender->Lend(); });
 }
 
 // std::sort of [first, last) with parts sorted on up to `threads` threads, then merged. `less` must
