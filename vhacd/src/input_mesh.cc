@@ -161,14 +161,13 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
   // Every point used and distinct, in an order local to the triangles: with may_borrow, the
   // welded points are the input's, in order.
   const bool keep_order = options.may_borrow && distinct == np && LocalOrder(m);
-  std::vector<uint32_t> remap(np, 0);
+  std::vector<uint32_t> remap(keep_order ? 0 : np, 0);  // input point -> welded (else the same)
   out->points.reserve(distinct);
   if (options.keep_sources) out->point_source.reserve(distinct);
   if (keep_order) {
     for (uint32_t i = 0; i < np; ++i) {
       out->points.push_back(point(i));
       if (options.keep_sources) out->point_source.push_back(i);
-      remap[i] = i;
     }
     // The points at every stride-th rank of the lexicographic order: those a lexicographically
     // numbered mesh samples (see SampleSurface).
@@ -194,7 +193,10 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
   // per triangle) and each group, a few triangles, is sorted alone.
   auto welded = [&](size_t t) {
     std::array<uint32_t, 3> tri;
-    for (int k = 0; k < 3; ++k) tri[k] = remap[m.indices[t * m.triangle_stride + k]];
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t v = m.indices[t * m.triangle_stride + k];
+      tri[k] = keep_order ? v : remap[v];
+    }
     return tri;
   };
   const size_t nw = out->points.size();
