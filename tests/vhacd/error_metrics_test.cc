@@ -33,20 +33,22 @@ TEST(ErrorMetricsTest, TriangleLocatorMatchesBruteForce) {
 // brute-force search, near the surface and away from it.
 TEST(ErrorMetricsTest, TriangleLocatorMatchesBruteForceOnSliversAndLargeTriangles) {
   GridMesh g;
+  std::vector<Vec3> points;
   const Vec3 centre(30, 30, 20), axis_u = Vec3(1, 0.2, 0.4).normalized();
   const Vec3 axis_v = axis_u.cross(Vec3(0.1, 1, -0.3)).normalized();
-  g.points.push_back(centre);
+  points.push_back(centre);
   const int n = 400;
   for (int i = 0; i < n; ++i) {
     const double a = 2 * 3.14159265358979 * i / n;
-    g.points.push_back(centre + 25 * (std::cos(a) * axis_u + std::sin(a) * axis_v));
+    points.push_back(centre + 25 * (std::cos(a) * axis_u + std::sin(a) * axis_v));
   }
   for (int i = 0; i < n; ++i)
     g.triangles.push_back({0, uint32_t(1 + i), uint32_t(1 + (i + 1) % n)});
-  g.points.push_back(Vec3(0, 0, 0));
-  g.points.push_back(Vec3(60, 5, 45));
-  g.points.push_back(Vec3(10, 55, 50));
+  points.push_back(Vec3(0, 0, 0));
+  points.push_back(Vec3(60, 5, 45));
+  points.push_back(Vec3(10, 55, 50));
   g.triangles.push_back({uint32_t(n + 1), uint32_t(n + 2), uint32_t(n + 3)});
+  g.points = GridPoints(points);
   TriangleLocator loc(g, 2.0);
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-5, 65), near(-0.5, 0.5);
@@ -72,15 +74,17 @@ TEST(ErrorMetricsTest, TriangleLocatorMatchesBruteForceOnSliversAndLargeTriangle
 // slivers, where the search would otherwise measure most of the fan near its centre.
 TEST(ErrorMetricsTest, DistanceUnlessWithinIsExactAboveItsThreshold) {
   GridMesh g;
+  std::vector<Vec3> points;
   const Vec3 centre(20, 20, 10);
-  g.points.push_back(centre);
+  points.push_back(centre);
   const int n = 2000;
   for (int i = 0; i < n; ++i) {
     const double a = 2 * 3.14159265358979 * i / n;
-    g.points.push_back(centre + Vec3(15 * std::cos(a), 15 * std::sin(a), 0));
+    points.push_back(centre + Vec3(15 * std::cos(a), 15 * std::sin(a), 0));
   }
   for (int i = 0; i < n; ++i)
     g.triangles.push_back({0, uint32_t(1 + i), uint32_t(1 + (i + 1) % n)});
+  g.points = GridPoints(points);
   TriangleLocator loc(g, 2.0);
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(-3, 3), height(-1.5, 1.5), enough(0, 1.5);
@@ -123,8 +127,8 @@ TEST(ErrorMetricsTest, ReportIsTheSameWithAGivenLocator) {
   std::vector<HullMesh> hulls(2);
   for (int side = 0; side < 2; ++side) {
     std::vector<Vec3> pts;
-    for (const Vec3& p : g.points)
-      if ((p[0] < 15) == (side == 0)) pts.push_back(p);
+    for (size_t i = 0; i < g.points.size(); ++i)
+      if ((g.points[i][0] < 15) == (side == 0)) pts.push_back(g.points[i]);
     ASSERT_EQ(ComputeConvexHull(pts, -1.0, &hulls[side]), HullStatus::kOk);
   }
   MetricsInput in;

@@ -18,6 +18,7 @@ namespace {
 using vhacd::internal::InputMesh;
 using vhacd::internal::ReadMesh;
 
+// may_borrow reads the points in place at any size (ReadOptions::in_place_points = 0).
 InputMesh Read(const vhacd_test::Mesh& m, bool keep_sources = true, bool may_borrow = false) {
   vhacd::internal::Context ctx(nullptr, 1);
   InputMesh out;
@@ -25,6 +26,7 @@ InputMesh Read(const vhacd_test::Mesh& m, bool keep_sources = true, bool may_bor
   vhacd::internal::ReadOptions options;
   options.keep_sources = keep_sources;
   options.may_borrow = may_borrow;
+  options.in_place_points = 0;
   EXPECT_EQ(ReadMesh(vhacd::MeshView::FromDouble(m.points.data(), m.point_count(), m.indices.data(),
                                                  m.indices.size() / 3),
                      &ctx, &out, &why, options),
@@ -82,16 +84,18 @@ TEST(ReadMesh, WeldsEqualPointsAndDropsDegenerateAndRepeatedTriangles) {
   EXPECT_EQ(lean.triangles, in.triangles);
 }
 
-TEST(ReadMesh, ACleanMeshKeepsItsPointOrderAndLendsItsTrianglesWhenAllowed) {
+TEST(ReadMesh, ACleanMeshIsReadInPlaceWhenAllowed) {
   // Over 20001 points, so that the vertex samples are every second point or sparser.
   const vhacd_test::Mesh torus = vhacd_test::Torus(2, 0.5, 200, 101);
   const InputMesh lent = Read(torus, false, /*may_borrow=*/true);
-  ASSERT_EQ(lent.points.size(), torus.point_count());
+  EXPECT_TRUE(lent.points.empty());
+  ASSERT_EQ(lent.point_count(), torus.point_count());
+  EXPECT_EQ(lent.view_points.d, torus.points.data());
   EXPECT_TRUE(lent.triangles.borrowed());
   EXPECT_EQ(lent.triangles[0].begin(), torus.indices.data());
-  for (size_t i = 0; i < lent.points.size(); ++i)
-    EXPECT_EQ(lent.points[i], vhacd::internal::Vec3(torus.points[3 * i], torus.points[3 * i + 1],
-                                                    torus.points[3 * i + 2]));
+  for (size_t i = 0; i < lent.point_count(); ++i)
+    EXPECT_EQ(lent.Point(i), vhacd::internal::Vec3(torus.points[3 * i], torus.points[3 * i + 1],
+                                                   torus.points[3 * i + 2]));
   EXPECT_TRUE(lent.closed);
   // The same vertex samples as the lexicographic order's stride.
   const InputMesh sorted = Read(torus, false);
@@ -101,14 +105,15 @@ TEST(ReadMesh, ACleanMeshKeepsItsPointOrderAndLendsItsTrianglesWhenAllowed) {
   ASSERT_GT(stride, 1u);
   std::vector<vhacd::internal::Vec3> expected, samples;
   for (size_t i = 0; i < sorted.points.size(); i += stride) expected.push_back(sorted.points[i]);
-  for (uint32_t i : lent.vertex_samples) samples.push_back(lent.points[i]);
+  for (uint32_t i : lent.vertex_samples) samples.push_back(lent.Point(i));
   EXPECT_EQ(samples, expected);
   // A repeated triangle: the points keep their order, the triangles are copied without it.
   vhacd_test::Mesh repeated = torus;
   repeated.AddTriangle(torus.indices[0], torus.indices[1], torus.indices[2]);
   const InputMesh copied = Read(repeated, false, true);
   EXPECT_FALSE(copied.triangles.borrowed());
-  EXPECT_EQ(copied.points, lent.points);
+  EXPECT_EQ(copied.view_points.d, repeated.points.data());
+  EXPECT_EQ(copied.point_count(), lent.point_count());
   EXPECT_EQ(copied.triangles, lent.triangles);
   // Equal positions or an unused point: the lexicographic order.
   vhacd_test::Mesh unused = torus;
@@ -117,6 +122,48 @@ TEST(ReadMesh, ACleanMeshKeepsItsPointOrderAndLendsItsTrianglesWhenAllowed) {
   EXPECT_FALSE(renumbered.triangles.borrowed());
   EXPECT_EQ(renumbered.points, sorted.points);
   EXPECT_EQ(renumbered.triangles, sorted.triangles);
+  // Below in_place_points, the points are copied in their order.
+  InputMesh small;
+  std::string why;
+  vhacd::internal::Context ctx(nullptr, 1);
+  vhacd::internal::ReadOptions options;
+  options.keep_sources = false;
+  options.may_borrow = true;
+  options.in_place_points = torus.point_count() + 1;
+  ASSERT_EQ(ReadMesh(vhacd::MeshView::FromDouble(torus.points.data(), torus.point_count(),
+                                                 torus.indices.data(), torus.triangle_count()),
+                     &ctx, &small, &why, options),
+            vhacd::Status::kOk);
+  EXPECT_TRUE(small.view_points.empty());
+  EXPECT_TRUE(small.triangles.borrowed());
+  ASSERT_EQ(small.points.size(), torus.point_count());
+  for (size_t i = 0; i < small.points.size(); ++i) EXPECT_EQ(small.points[i], lent.Point(i));
+}
+
+// The grid points mapped on every read from the caller's floats are those of the copy mapped in
+// place (which Decompose uses below vhacd::internal::kInPlacePoints), with and without a rotation.
+TEST(GridPoints, MappedOnReadEqualsMappedOnce) {
+  const vhacd_test::Mesh torus = vhacd_test::Torus(2, 0.5, 40, 20);
+  std::vector<float> floats(torus.points.begin(), torus.points.end());
+  for (float& f : floats) f = f * 3.7f + 1234.5f;  // far from the origin, off the unit scale
+  const vhacd::internal::PointSource source{floats.data(), nullptr, 3, torus.point_count()};
+  for (bool rotate : {false, true}) {
+    vhacd::internal::GridFrame frame;
+    ASSERT_TRUE(vhacd::internal::FitUnitBox(
+        source.size(), [&](size_t i) { return source[i]; }, &frame.unit));
+    if (rotate) {
+      frame.unit.rotate = true;
+      frame.unit.rotation =
+          Eigen::AngleAxisd(0.7, vhacd::internal::Vec3(1, 2, 3).normalized()).toRotationMatrix();
+    }
+    frame.origin = vhacd::internal::Vec3(-0.61, -0.57, -0.33);
+    frame.h = 0.0173;
+    std::vector<vhacd::internal::Vec3> copy(source.size());
+    for (size_t i = 0; i < copy.size(); ++i) copy[i] = frame.FromUnit(frame.unit.Unit(source[i]));
+    const vhacd::internal::GridPoints owned(copy), mapped(source, frame);
+    ASSERT_EQ(mapped.size(), owned.size());
+    for (size_t i = 0; i < owned.size(); ++i) ASSERT_EQ(mapped[i], owned[i]);
+  }
 }
 
 // A scrambled point order (one block of points per corner) would make every triangle's points

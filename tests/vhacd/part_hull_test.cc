@@ -114,8 +114,10 @@ TEST(PartHullTest, InsideCornersOfSurfaceVoxelsReachTheCut) {
   const double outline[6][2] = {{0.25, 0.25},  {6.25, 0.25}, {6.25, 10.25},
                                 {4.75, 10.25}, {4.75, 4.75}, {0.25, 4.75}};
   GridMesh g;
+  std::vector<Vec3> points;
   for (double z : {0.5, 9.5})
-    for (const auto& p : outline) g.points.emplace_back(p[0], p[1], z);
+    for (const auto& p : outline) points.emplace_back(p[0], p[1], z);
+  g.points = GridPoints(points);
   const int fan[4][2] = {{5, 0}, {0, 1}, {1, 2}, {2, 3}};  // from the reflex vertex 4
   for (const auto& f : fan) {
     g.triangles.push_back({4, static_cast<uint32_t>(f[1]), static_cast<uint32_t>(f[0])});

@@ -13,10 +13,12 @@ inline vhacd::internal::GridMesh ToGridMesh(
     const Mesh& m, double scale = 1.0,
     const vhacd::internal::Vec3& offset = vhacd::internal::Vec3::Zero()) {
   vhacd::internal::GridMesh g;
+  std::vector<vhacd::internal::Vec3> points;
   for (size_t i = 0; i < m.point_count(); ++i)
-    g.points.push_back(
+    points.push_back(
         scale * vhacd::internal::Vec3(m.points[3 * i], m.points[3 * i + 1], m.points[3 * i + 2]) +
         offset);
+  g.points = vhacd::internal::GridPoints(points);
   for (size_t t = 0; t < m.triangle_count(); ++t)
     g.triangles.push_back({m.indices[3 * t], m.indices[3 * t + 1], m.indices[3 * t + 2]});
   return g;

@@ -63,11 +63,12 @@ GridMesh WavyFan() {
   GridMesh fan;
   const int n = 300;
   const Vec3 centre(40.3, 40.7, 3.2);
-  fan.points.push_back(centre);
+  std::vector<Vec3> points{centre};
   for (int i = 0; i < n; ++i) {
     const double t = 2 * M_PI * i / n;
-    fan.points.push_back(centre + Vec3(37 * std::cos(t), 37 * std::sin(t), 1.3 * std::sin(3 * t)));
+    points.push_back(centre + Vec3(37 * std::cos(t), 37 * std::sin(t), 1.3 * std::sin(3 * t)));
   }
+  fan.points = GridPoints(points);
   for (int i = 0; i < n; ++i)
     fan.triangles.push_back(
         {0, static_cast<uint32_t>(i + 1), static_cast<uint32_t>((i + 1) % n + 1)});

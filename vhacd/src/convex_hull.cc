@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <limits>
 
+#include "grid_points.h"
+
 namespace vhacd {
 namespace internal {
 
@@ -18,6 +20,7 @@ struct Face {
   uint32_t s[3];  // the same vertices as slots (QuickHull::slot_point_)
   int32_t nb[3];  // nb[i]: face across edge v[i] -> v[(i+1)%3]
   Vec3 n;         // unnormalized outward normal
+  Vec3 base;      // the point v[0] (read once: the points may be mapped on every read)
   double nlen;
   // The points outside this face, in the order they were assigned: a list through
   // QuickHull::next_, so that every list together takes one index per point.
@@ -43,17 +46,17 @@ class PointArray {
 // head, then base gathered by ids.
 class GatheredPoints {
  public:
-  GatheredPoints(const std::vector<Vec3>& head, const std::vector<Vec3>& base,
+  GatheredPoints(const std::vector<Vec3>& head, const GridPoints& base,
                  const std::vector<uint32_t>& ids)
       : head_(head), base_(base), ids_(ids) {}
   size_t size() const { return head_.size() + ids_.size(); }
-  const Vec3& operator[](size_t i) const {
+  Vec3 operator[](size_t i) const {
     return i < head_.size() ? head_[i] : base_[ids_[i - head_.size()]];
   }
 
  private:
   const std::vector<Vec3>& head_;
-  const std::vector<Vec3>& base_;
+  const GridPoints& base_;
   const std::vector<uint32_t>& ids_;
 };
 
@@ -231,7 +234,8 @@ class QuickHull {
     f.v[1] = b;
     f.v[2] = c;
     f.nb[0] = f.nb[1] = f.nb[2] = -1;
-    f.n = (p_[b] - p_[a]).cross(p_[c] - p_[a]);
+    f.base = p_[a];
+    f.n = (p_[b] - f.base).cross(p_[c] - f.base);
     f.nlen = f.n.norm();
     faces_.push_back(std::move(f));
     return static_cast<int32_t>(faces_.size() - 1);
@@ -249,7 +253,7 @@ class QuickHull {
       }
   }
 
-  double Dot(const Face& f, uint32_t q) const { return f.n.dot(p_[q] - p_[f.v[0]]); }
+  double Dot(const Face& f, uint32_t q) const { return f.n.dot(p_[q] - f.base); }
   bool Above(const Face& f, uint32_t q) const { return Dot(f, q) > eps_ * f.nlen; }
 
   void Assign(uint32_t q, size_t begin, size_t end) {
@@ -334,12 +338,22 @@ HullStatus Hull(const Points& points, double tolerance, HullMesh* out) {
 
   for (int attempt = 0; attempt < 4; ++attempt) {
     // Initial simplex from the extreme points.
+    // Each point read once per pass: a mesh read in place is mapped on every read.
     uint32_t ext[6] = {0, 0, 0, 0, 0, 0};
-    for (uint32_t i = 0; i < n; ++i)
+    Vec3 ext_lo = points[0], ext_hi = ext_lo;
+    for (uint32_t i = 0; i < n; ++i) {
+      const Vec3 p = points[i];
       for (int a = 0; a < 3; ++a) {
-        if (points[i][a] < points[ext[2 * a]][a]) ext[2 * a] = i;
-        if (points[i][a] > points[ext[2 * a + 1]][a]) ext[2 * a + 1] = i;
+        if (p[a] < ext_lo[a]) {
+          ext_lo[a] = p[a];
+          ext[2 * a] = i;
+        }
+        if (p[a] > ext_hi[a]) {
+          ext_hi[a] = p[a];
+          ext[2 * a + 1] = i;
+        }
       }
+    }
     uint32_t i0 = ext[0], i1 = ext[1];
     double best = -1.0;
     for (int s = 0; s < 6; ++s)
@@ -352,23 +366,24 @@ HullStatus Hull(const Points& points, double tolerance, HullMesh* out) {
         }
       }
     if (std::sqrt(best) <= eps) return HullStatus::kCollinear;
-    const Vec3 dir = points[i1] - points[i0];
+    const Vec3 p0 = points[i0];
+    const Vec3 dir = points[i1] - p0;
     uint32_t i2 = i0;
     best = -1.0;
     for (uint32_t i = 0; i < n; ++i) {
-      const double d = (points[i] - points[i0]).cross(dir).squaredNorm();
+      const double d = (points[i] - p0).cross(dir).squaredNorm();
       if (d > best) {
         best = d;
         i2 = i;
       }
     }
     if (std::sqrt(best) / dir.norm() <= eps) return HullStatus::kCollinear;
-    const Vec3 nrm = dir.cross(points[i2] - points[i0]);
+    const Vec3 nrm = dir.cross(points[i2] - p0);
     uint32_t i3 = i0;
     best = -1.0;
     double signed_best = 0.0;
     for (uint32_t i = 0; i < n; ++i) {
-      const double d = nrm.dot(points[i] - points[i0]);
+      const double d = nrm.dot(points[i] - p0);
       if (std::fabs(d) > best) {
         best = std::fabs(d);
         signed_best = d;
@@ -397,7 +412,7 @@ HullStatus ComputeConvexHull(const std::vector<Vec3>& points, double tolerance, 
   return Hull(PointArray(points), tolerance, out);
 }
 
-HullStatus ComputeConvexHull(const std::vector<Vec3>& head, const std::vector<Vec3>& base,
+HullStatus ComputeConvexHull(const std::vector<Vec3>& head, const GridPoints& base,
                              const std::vector<uint32_t>& ids, double tolerance, HullMesh* out) {
   return Hull(GatheredPoints(head, base, ids), tolerance, out);
 }

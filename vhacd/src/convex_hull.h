@@ -21,6 +21,7 @@ namespace vhacd {
 namespace internal {
 
 using Vec3 = Eigen::Vector3d;
+class GridPoints;
 
 struct HullMesh {
   std::vector<Vec3> vertices;
@@ -47,7 +48,7 @@ const char* HullStatusName(HullStatus status);
 HullStatus ComputeConvexHull(const std::vector<Vec3>& points, double tolerance, HullMesh* out);
 // The same for the points head followed by base[ids[0]], base[ids[1]], ...: the hull of a subset
 // of a large array (a mesh's points) without a copy of it. Same result as on those points copied.
-HullStatus ComputeConvexHull(const std::vector<Vec3>& head, const std::vector<Vec3>& base,
+HullStatus ComputeConvexHull(const std::vector<Vec3>& head, const GridPoints& base,
                              const std::vector<uint32_t>& ids, double tolerance, HullMesh* out);
 
 // Half-space form of a hull: n.x <= d for every face (n unit length).

@@ -166,18 +166,30 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   rep.closed_input = input.closed;
   internal::Clock clock, total;
 
-  // Normalization.
-  Vec3 center;
-  double scale = 0.0;
+  // Normalization. A large clean input is read in place (input.view_points), with no copy in
+  // double; otherwise its welded copy is mapped in place. Both give the same grid points.
+  internal::GridFrame frame;
+  const bool in_place = !input.view_points.empty();
+  const size_t np = input.point_count();
   std::vector<Vec3> pn = std::move(input.points);
-  if (!internal::NormalizeToUnitBox(&pn, &center, &scale))
+  auto given = [&](size_t i) { return in_place ? input.view_points[i] : pn[i]; };
+  if (!internal::FitUnitBox(np, given, &frame.unit))
     return Fail(Status::kInvalidMesh, "the mesh has a degenerate or overflowing bounding box");
-  if (input.closed && params.hull_count <= 1) {
+  if (!in_place)
+    for (Vec3& p : pn) p = frame.unit.Unit(p);
+  // Point i in the unit box (turned onto the principal axes once frame.unit.rotate is set).
+  auto unit = [&](size_t i) { return in_place ? frame.unit.Unit(input.view_points[i]) : pn[i]; };
+  const Vec3 center = frame.unit.center;
+  const double scale = frame.unit.scale;
+  if (input.closed && params.hull_count <= 1 && np <= internal::kMaxConvexInputPoints) {
     // Tolerance in the unit box: far above the hull's rounding, far below any dent that matters.
     constexpr double kOnHull = 1e-9;
+    std::vector<Vec3> few;  // the points in the unit box, when read in place
+    if (in_place)
+      for (size_t i = 0; i < np; ++i) few.push_back(unit(i));
     internal::HullMesh hull;
-    if (internal::ConvexInputHull(pn, input.triangles, params.max_vertices_per_hull, kOnHull,
-                                  &hull)) {
+    if (internal::ConvexInputHull(in_place ? few : pn, input.triangles,
+                                  params.max_vertices_per_hull, kOnHull, &hull)) {
       ConvexHull out;
       if (!internal::ToOutputHull(
               hull, [&](const Vec3& p) -> Vec3 { return center + scale * p; }, scale* scale* scale,
@@ -207,16 +219,18 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     Vec3 mean = Vec3::Zero();
     double area = 0.0;
     for (const auto& t : input.triangles) {
-      const double a = 0.5 * (pn[t[1]] - pn[t[0]]).cross(pn[t[2]] - pn[t[0]]).norm();
-      mean += a * (pn[t[0]] + pn[t[1]] + pn[t[2]]) / 3.0;
+      const Vec3 p0 = unit(t[0]), p1 = unit(t[1]), p2 = unit(t[2]);
+      const double a = 0.5 * (p1 - p0).cross(p2 - p0).norm();
+      mean += a * (p0 + p1 + p2) / 3.0;
       area += a;
     }
     if (area > 0) {
       mean /= area;
       for (const auto& t : input.triangles) {
-        const double a = 0.5 * (pn[t[1]] - pn[t[0]]).cross(pn[t[2]] - pn[t[0]]).norm();
+        const Vec3 p0 = unit(t[0]), p1 = unit(t[1]), p2 = unit(t[2]);
+        const double a = 0.5 * (p1 - p0).cross(p2 - p0).norm();
         for (int k = 0; k < 3; ++k) {
-          const Vec3 d = pn[t[k]] - mean;
+          const Vec3 d = unit(t[k]) - mean;
           cov += (a / 3.0) * d * d.transpose();
         }
       }
@@ -232,11 +246,14 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
         if (ev.determinant() < 0) ev.col(0) = -ev.col(0);
         rot = ev.transpose();  // rows are the principal axes
         for (Vec3& p : pn) p = rot * p;
+        frame.unit.rotate = true;
+        frame.unit.rotation = rot;
       }
     }
   }
-  Vec3 nlo = pn[0], nhi = pn[0];
-  for (const Vec3& p : pn) {
+  Vec3 nlo = unit(0), nhi = nlo;
+  for (size_t i = 1; i < np; ++i) {
+    const Vec3 p = unit(i);
     nlo = nlo.cwiseMin(p);
     nhi = nhi.cwiseMax(p);
   }
@@ -268,8 +285,14 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   internal::GridMesh gmesh;
   gmesh.triangles = std::move(input.triangles);
   gmesh.vertex_samples = std::move(input.vertex_samples);
-  gmesh.points = std::move(pn);  // mapped to the grid in place
-  for (Vec3& p : gmesh.points) p = (p - place.origin) / place.h;
+  frame.origin = place.origin;
+  frame.h = place.h;
+  if (in_place) {
+    gmesh.points = internal::GridPoints(input.view_points, frame);
+  } else {
+    for (Vec3& p : pn) p = frame.FromUnit(p);  // pn holds the unit points
+    gmesh.points = internal::GridPoints(std::move(pn));
+  }
   // grid -> world: center + scale * rot^T * (origin + h * g)
   auto to_world = [&](const Vec3& g) -> Vec3 {
     return center + scale * (rot.transpose() * (place.origin + place.h * g));

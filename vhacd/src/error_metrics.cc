@@ -43,8 +43,9 @@ TriangleLocator::TriangleLocator(const GridMesh& mesh, double cell_size)
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (const auto& t : mesh.triangles)
     for (uint32_t v : t) {
-      lo = lo.cwiseMin(mesh.points[v]);
-      hi = hi.cwiseMax(mesh.points[v]);
+      const Vec3 p = mesh.points[v];
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
     }
   if (mesh.triangles.empty()) lo = hi = Vec3::Zero();
   origin_ = lo;
@@ -53,12 +54,11 @@ TriangleLocator::TriangleLocator(const GridMesh& mesh, double cell_size)
   const size_t ncell = static_cast<size_t>(dims_[0]) * dims_[1] * dims_[2];
   start_.assign(ncell + 1, 0);
   auto range = [&](TriangleList::Ref t, int* clo, int* chi) {
+    // Each point read once: a mesh read in place is mapped on every read.
+    const Vec3 p0 = mesh.points[t[0]], p1 = mesh.points[t[1]], p2 = mesh.points[t[2]];
+    const Vec3 lo3 = p0.cwiseMin(p1).cwiseMin(p2), hi3 = p0.cwiseMax(p1).cwiseMax(p2);
     for (int a = 0; a < 3; ++a) {
-      double mn = mesh.points[t[0]][a], mx = mn;
-      for (uint32_t v : t) {
-        mn = std::min(mn, mesh.points[v][a]);
-        mx = std::max(mx, mesh.points[v][a]);
-      }
+      const double mn = lo3[a], mx = hi3[a];
       clo[a] = std::clamp(static_cast<int>(std::floor((mn - origin_[a]) / cell_)), 0, dims_[a] - 1);
       chi[a] = std::clamp(static_cast<int>(std::floor((mx - origin_[a]) / cell_)), 0, dims_[a] - 1);
     }
@@ -161,7 +161,7 @@ double TriangleLocator::DistanceUnlessWithin(const Vec3& p, double enough,
           for (uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
             const uint32_t ti = ids_[k];
             const auto& t = mesh_.triangles[ti];
-            const Vec3 &a = mesh_.points[t[0]], &b = mesh_.points[t[1]], &e = mesh_.points[t[2]];
+            const Vec3 a = mesh_.points[t[0]], b = mesh_.points[t[1]], e = mesh_.points[t[2]];
             // The triangle's box first: a cheap lower bound (computed here, not stored: 48 bytes
             // per triangle of a large mesh). Skipping it would give the same result, slower.
             const Vec3 tlo = a.cwiseMin(b).cwiseMin(e), thi = a.cwiseMax(b).cwiseMax(e);

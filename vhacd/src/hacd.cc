@@ -479,13 +479,14 @@ Result DecomposeHacdImpl(const MeshView& view, const HacdParameters& params, Obs
     if (!grid) {
       place = internal::ChooseGrid(qlo * to_norm, qhi * to_norm, 100000);
       gmesh.triangles = input.triangles;
-      gmesh.points.resize(pq.size());
-      for (size_t i = 0; i < pq.size(); ++i) gmesh.points[i] = (pq[i] - place.origin) / place.h;
+      std::vector<Vec3> gpoints(pq.size());
+      for (size_t i = 0; i < pq.size(); ++i) gpoints[i] = (pq[i] - place.origin) / place.h;
+      internal::HullMesh whole;
+      if (internal::ComputeConvexHull(gpoints, -1.0, &whole) == internal::HullStatus::kOk)
+        volume0 = whole.Volume();
+      gmesh.points = internal::GridPoints(gpoints);
       grid = std::make_unique<internal::VoxelGrid>();
       if (!internal::Voxelize(gmesh, place.dims, &ctx, grid.get())) return false;
-      internal::HullMesh whole;
-      if (internal::ComputeConvexHull(gmesh.points, -1.0, &whole) == internal::HullStatus::kOk)
-        volume0 = whole.Volume();
     }
     std::vector<internal::HullMesh> ghulls = hulls;
     for (auto& h : ghulls)

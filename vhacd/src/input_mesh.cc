@@ -113,13 +113,8 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
     return Status::kInvalidMesh;
   }
   const size_t np = m.point_count;
-  // Point i in double, read from the view (no copy: float inputs would double in size).
-  auto point = [&m](size_t i) {
-    const size_t at = i * m.point_stride;
-    if (m.points_d) return Vec3(m.points_d[at], m.points_d[at + 1], m.points_d[at + 2]);
-    return Vec3(static_cast<double>(m.points_f[at]), static_cast<double>(m.points_f[at + 1]),
-                static_cast<double>(m.points_f[at + 2]));
-  };
+  // The view's points in double (no copy: float inputs would double in size).
+  const PointSource point{m.points_f, m.points_d, m.point_stride, np};
   std::vector<char> used(np, 0);
   for (size_t t = 0; t < m.triangle_count; ++t)
     for (int k = 0; k < 3; ++k) {
@@ -132,7 +127,7 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
       used[v] = 1;
     }
   for (size_t i = 0; i < np; ++i)
-    if (used[i] && !point(i).allFinite()) {
+    if (used[i] && !point[i].allFinite()) {
       *why = "point " + std::to_string(i) + " has a non-finite coordinate";
       return Status::kInvalidMesh;
     }
@@ -147,7 +142,7 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
   for (uint32_t i = 0; i < np; ++i)
     if (used[i]) order.push_back(i);
   std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
-    const Vec3 pa = point(a), pb = point(b);
+    const Vec3 pa = point[a], pb = point[b];
     if (pa[0] != pb[0]) return pa[0] < pb[0];
     if (pa[1] != pb[1]) return pa[1] < pb[1];
     if (pa[2] != pb[2]) return pa[2] < pb[2];
@@ -157,25 +152,29 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
   // element at a time it would hold up to twice its size.
   size_t distinct = 0;
   for (size_t k = 0; k < order.size(); ++k)
-    distinct += k == 0 || point(order[k]) != point(order[k - 1]);
+    distinct += k == 0 || point[order[k]] != point[order[k - 1]];
   // Every point used and distinct, in an order local to the triangles: with may_borrow, the
   // welded points are the input's, in order.
   const bool keep_order = options.may_borrow && distinct == np && LocalOrder(m);
   std::vector<uint32_t> remap(keep_order ? 0 : np, 0);  // input point -> welded (else the same)
-  out->points.reserve(distinct);
   if (options.keep_sources) out->point_source.reserve(distinct);
   if (keep_order) {
-    for (uint32_t i = 0; i < np; ++i) {
-      out->points.push_back(point(i));
-      if (options.keep_sources) out->point_source.push_back(i);
+    if (np >= options.in_place_points) {
+      out->view_points = point;
+    } else {
+      out->points.reserve(np);
+      for (uint32_t i = 0; i < np; ++i) out->points.push_back(point[i]);
     }
+    if (options.keep_sources)
+      for (uint32_t i = 0; i < np; ++i) out->point_source.push_back(i);
     // The points at every stride-th rank of the lexicographic order: those a lexicographically
     // numbered mesh samples (see SampleSurface).
     const size_t stride = VertexSampleStride(distinct);
     for (size_t k = 0; k < order.size(); k += stride) out->vertex_samples.push_back(order[k]);
   } else {
+    out->points.reserve(distinct);
     for (size_t k = 0; k < order.size(); ++k) {
-      const Vec3 p = point(order[k]);
+      const Vec3 p = point[order[k]];
       if (k == 0 || p != out->points.back()) {
         out->points.push_back(p);
         if (options.keep_sources) out->point_source.push_back(order[k]);
@@ -199,7 +198,7 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
     }
     return tri;
   };
-  const size_t nw = out->points.size();
+  const size_t nw = out->point_count();
   std::vector<uint8_t> drop(m.triangle_count, 0);
   {
     std::vector<uint32_t> end(nw + 1, 0);
@@ -255,7 +254,7 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
     return Status::kEmptyMesh;
   }
   if (cancelled()) return Status::kCancelled;
-  out->closed = IsClosed(out->triangles, out->points.size());
+  out->closed = IsClosed(out->triangles, out->point_count());
   return Status::kOk;
 }
 

@@ -10,6 +10,7 @@
 
 #include "context.h"
 #include "convex_hull.h"
+#include "grid_points.h"
 #include "triangle_list.h"
 #include "vhacd/vhacd.h"
 
@@ -17,7 +18,10 @@ namespace vhacd {
 namespace internal {
 
 struct InputMesh {
-  std::vector<Vec3> points;               // welded, referenced only
+  // The welded points, each referenced. Empty when the view's points are kept in place
+  // (view_points; see ReadOptions::may_borrow).
+  std::vector<Vec3> points;
+  PointSource view_points;
   TriangleList triangles;                 // no degenerate, no duplicate
   std::vector<uint32_t> point_source;     // an input point index of each welded point
   std::vector<uint32_t> triangle_source;  // the input triangle index of each triangle
@@ -25,7 +29,15 @@ struct InputMesh {
   // spaces them: the same samples whatever the point order (with ReadOptions::may_borrow).
   std::vector<uint32_t> vertex_samples;
   bool closed = false;
+
+  size_t point_count() const { return view_points.empty() ? points.size() : view_points.size(); }
+  Vec3 Point(size_t i) const { return view_points.empty() ? points[i] : view_points[i]; }
 };
+
+// From this many points (48 MB in double) a decomposition reads a clean mesh's points in place:
+// there the copy would be its largest array, below it is small beside the voxel grid, and mapping
+// every read is slower than reading a copy (see docs/benchmarks.md).
+constexpr size_t kInPlacePoints = size_t{1} << 21;
 
 struct ReadOptions {
   // Fill point_source and triangle_source (for callers that map back to the input).
@@ -37,6 +49,9 @@ struct ReadOptions {
   // points are in lexicographic order. Only for callers whose results do not depend on the
   // point order; the view must outlive the InputMesh.
   bool may_borrow = false;
+  // With may_borrow and the order kept, meshes of at least this many points are read in place
+  // (view_points) instead of copied into `points`.
+  size_t in_place_points = kInPlacePoints;
 };
 
 // Validates `m` and fills *out; on failure returns the status and names the problem in *why.

@@ -26,7 +26,8 @@ TriangleIndex::TriangleIndex(const GridMesh& mesh, const int dims[3], int cell)
   };
   mesh_lo_ = Vec3::Constant(std::numeric_limits<double>::infinity());
   mesh_hi_ = -mesh_lo_;
-  for (const Vec3& p : mesh.points) {
+  for (size_t i = 0; i < mesh.points.size(); ++i) {
+    const Vec3 p = mesh.points[i];
     mesh_lo_ = mesh_lo_.cwiseMin(p);
     mesh_hi_ = mesh_hi_.cwiseMax(p);
   }

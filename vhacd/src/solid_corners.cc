@@ -30,7 +30,7 @@ bool SolidCorners::Build(const GridMesh& mesh, const VoxelGrid& grid,
     const double d = locator.Distance(p, &tri);
     if (tri >= mesh.triangles.size() || d < kMinDepth) return false;
     const auto& t = mesh.triangles[tri];
-    const Vec3& a = mesh.points[t[0]];
+    const Vec3 a = mesh.points[t[0]];
     const Vec3 n = (mesh.points[t[1]] - a).cross(mesh.points[t[2]] - a);
     const double len = n.norm();
     if (!(len > 0)) return false;

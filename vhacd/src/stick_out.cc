@@ -62,7 +62,7 @@ double StickOutMeter::OutsideDistance(const Vec3& p, double best) const {
       // A closed surface: the side of the nearest triangle's plane (exact away from its edges;
       // near an edge only points within that distance of the surface are misjudged).
       const auto& t = mesh_.triangles[tri];
-      const Vec3& a = mesh_.points[t[0]];
+      const Vec3 a = mesh_.points[t[0]];
       const Vec3 n = (mesh_.points[t[1]] - a).cross(mesh_.points[t[2]] - a);
       return n.dot(p - a) > 0 ? d : 0.0;
     }

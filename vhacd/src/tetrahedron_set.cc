@@ -307,7 +307,7 @@ bool BuildSurfaceCells(const GridMesh& mesh, const VoxelGrid& grid, Context* ctx
       const int z0 = static_cast<int>(s) * kSlab, z1 = std::min(dims[2] - 1, z0 + kSlab - 1);
       for (uint32_t t : by_slab[s]) {
         const auto& tr = mesh.triangles[t];
-        const Vec3 &a = mesh.points[tr[0]], &b = mesh.points[tr[1]], &c = mesh.points[tr[2]];
+        const Vec3 a = mesh.points[tr[0]], b = mesh.points[tr[1]], c = mesh.points[tr[2]];
         const Vec3 cr = (b - a).cross(c - a);
         const double len = cr.norm();
         if (!(len > 0)) continue;

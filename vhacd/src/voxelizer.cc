@@ -115,7 +115,8 @@ void CollectCrossings(const GridMesh& mesh, const int dims[3], int axis, size_t 
   const int u = (axis + 1) % 3, v = (axis + 2) % 3;
   for (size_t t = tri_begin; t < tri_end; ++t) {
     const auto tri = mesh.triangles[t];
-    const Vec3* P[3] = {&mesh.points[tri[0]], &mesh.points[tri[1]], &mesh.points[tri[2]]};
+    const Vec3 corner[3] = {mesh.points[tri[0]], mesh.points[tri[1]], mesh.points[tri[2]]};
+    const Vec3* P[3] = {&corner[0], &corner[1], &corner[2]};
     double area = Orient2((*P[0])[u], (*P[0])[v], (*P[1])[u], (*P[1])[v], (*P[2])[u], (*P[2])[v]);
     if (area == 0.0 || !std::isfinite(area)) continue;  // parallel to the rays: never crossed
     if (area < 0) {
@@ -326,9 +327,9 @@ bool Voxelize(const GridMesh& mesh, const int dims[3], Context* ctx, VoxelGrid* 
     // Marks the voxels of triangle t's box, restricted to [slo, shi] on the box's longest axis
     // (slo = -1: the whole box, deferring big triangles to the slab pass).
     auto mark_range = [&](size_t t, int slo, int shi, size_t chunk) {
-      const Vec3& a = mesh.points[mesh.triangles[t][0]];
-      const Vec3& b = mesh.points[mesh.triangles[t][1]];
-      const Vec3& d = mesh.points[mesh.triangles[t][2]];
+      const Vec3 a = mesh.points[mesh.triangles[t][0]];
+      const Vec3 b = mesh.points[mesh.triangles[t][1]];
+      const Vec3 d = mesh.points[mesh.triangles[t][2]];
       int lo[3], hi[3];
       for (int k = 0; k < 3; ++k) {
         lo[k] = std::clamp(static_cast<int>(std::floor(std::min({a[k], b[k], d[k]}) - 1e-9)), 0,

@@ -9,6 +9,7 @@
 
 #include "context.h"
 #include "convex_hull.h"
+#include "grid_points.h"
 #include "triangle_list.h"
 
 namespace vhacd {
@@ -16,7 +17,7 @@ namespace internal {
 
 // A triangle soup in grid units: voxel (x, y, z) is the box [x, x+1] x [y, y+1] x [z, z+1].
 struct GridMesh {
-  std::vector<Vec3> points;
+  GridPoints points;
   TriangleList triangles;  // no degenerate or duplicate triangles
   // The error report's vertex samples (see SampleSurface); empty when `points` are in
   // lexicographic order.

@@ -7,28 +7,14 @@
 namespace vhacd {
 namespace internal {
 
-namespace {
-
-double Quantize(double x) {
-  const double q = 1099511627776.0;  // 2^40: makes the normalized mesh scale-invariant
-  return std::nearbyint(x * q) / q;
-}
-
-}  // namespace
-
 bool NormalizeToUnitBox(std::vector<Vec3>* points, Vec3* center, double* scale) {
-  Vec3 lo = (*points)[0], hi = (*points)[0];
-  for (const Vec3& p : *points) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  *center = 0.5 * (lo + hi);
-  *scale = (hi - lo).maxCoeff();
-  if (!(*scale > 0) || !std::isfinite(*scale) || !center->allFinite()) return false;
-  for (Vec3& p : *points) {
-    const Vec3 q = (p - *center) / *scale;
-    p = Vec3(Quantize(q[0]), Quantize(q[1]), Quantize(q[2]));
-  }
+  UnitFrame frame;
+  if (!FitUnitBox(
+          points->size(), [points](size_t i) { return (*points)[i]; }, &frame))
+    return false;
+  for (Vec3& p : *points) p = frame.Unit(p);
+  *center = frame.center;
+  *scale = frame.scale;
   return true;
 }
 
