@@ -9,12 +9,28 @@ bool CanSplitMesh(const Mesh& mesh) {
   return mesh.joints.empty() && mesh.weights.empty() && mesh.morph_targets.empty();
 }
 
-std::vector<std::vector<uint32_t>> SplitTriangles(const Mesh& mesh, size_t max_triangles) {
+TriangleParts::TriangleParts(size_t part_count, const std::vector<uint32_t>& part_of)
+    : count_(std::max<size_t>(part_count, 1)) {
+  if (count_ == 1) return;
+  if (count_ <= 256)
+    small_.assign(part_of.begin(), part_of.end());
+  else
+    large_ = part_of;
+}
+
+std::vector<uint32_t> TriangleParts::Triangles(size_t p, size_t triangle_count) const {
+  std::vector<uint32_t> out;
+  for (size_t t = 0; t < triangle_count; ++t)
+    if (Of(t) == p) out.push_back(static_cast<uint32_t>(t));
+  return out;
+}
+
+TriangleParts SplitTriangles(const Mesh& mesh, size_t max_triangles) {
   const size_t n = mesh.triangle_count();
   max_triangles = std::max<size_t>(max_triangles, 1);
+  if (n <= max_triangles || !CanSplitMesh(mesh)) return TriangleParts();
   std::vector<uint32_t> order(n);
   std::iota(order.begin(), order.end(), 0u);
-  if (n <= max_triangles || !CanSplitMesh(mesh)) return {std::move(order)};
   // The centroid (as the sum of the corners) along one axis, per triangle: one float each, not
   // three, as the split runs beside the decomposition of the same large mesh.
   std::vector<float> key(n);
@@ -24,17 +40,15 @@ std::vector<std::vector<uint32_t>> SplitTriangles(const Mesh& mesh, size_t max_t
       sum += mesh.positions[3 * size_t(mesh.indices[3 * size_t(t) + k]) + axis];
     return sum;
   };
-  std::vector<std::vector<uint32_t>> parts;
   // Ranges of `order` still too large; each is cut at a quantile along its widest axis. Ties are
-  // broken by triangle id, so that the sides do not depend on the sort's implementation.
-  std::vector<std::pair<size_t, size_t>> pending = {{0, n}};
+  // broken by triangle id, so that the sides do not depend on the sort's implementation. The
+  // finished ranges are numbered in the order they come out, first half first.
+  std::vector<std::pair<size_t, size_t>> pending = {{0, n}}, done;
   while (!pending.empty()) {
     const auto [begin, end] = pending.back();
     pending.pop_back();
     if (end - begin <= max_triangles) {
-      std::vector<uint32_t> part(order.begin() + begin, order.begin() + end);
-      std::sort(part.begin(), part.end());
-      parts.push_back(std::move(part));
+      done.push_back({begin, end});
       continue;
     }
     float lo[3], hi[3];
@@ -63,7 +77,13 @@ std::vector<std::vector<uint32_t>> SplitTriangles(const Mesh& mesh, size_t max_t
     pending.push_back({middle, end});
     pending.push_back({begin, middle});
   }
-  return parts;
+  std::vector<float>().swap(key);
+  std::vector<uint32_t> part_of(n);
+  for (size_t p = 0; p < done.size(); ++p)
+    for (size_t i = done[p].first; i < done[p].second; ++i)
+      part_of[order[i]] = static_cast<uint32_t>(p);
+  std::vector<uint32_t>().swap(order);
+  return TriangleParts(done.size(), part_of);
 }
 
 Mesh MeshPart(const Mesh& mesh, const std::vector<uint32_t>& triangles) {
@@ -119,19 +139,22 @@ std::array<float, 6> PositionBox(const Mesh& mesh) {
 
 Status ForEachPart(const Mesh& mesh, const std::vector<uint32_t>& groups, size_t max_triangles,
                    const std::function<Status(const PartToCode&)>& visit) {
-  const std::vector<std::vector<uint32_t>> split = max_triangles > 0
-                                                       ? SplitTriangles(mesh, max_triangles)
-                                                       : std::vector<std::vector<uint32_t>>();
-  if (split.size() <= 1) return visit(PartToCode{0, 1, mesh, groups, std::nullopt});
+  const TriangleParts split =
+      max_triangles > 0 ? SplitTriangles(mesh, max_triangles) : TriangleParts();
+  if (split.count() <= 1) return visit(PartToCode{0, 1, mesh, groups, std::nullopt});
   const std::array<float, 6> box = PositionBox(mesh);
-  for (size_t p = 0; p < split.size(); ++p) {
-    const Mesh part = MeshPart(mesh, split[p]);
+  for (size_t p = 0; p < split.count(); ++p) {
+    Mesh part;
     std::vector<uint32_t> part_groups;
-    if (!groups.empty()) {
-      part_groups.reserve(split[p].size());
-      for (uint32_t t : split[p]) part_groups.push_back(groups[t]);
+    {
+      const std::vector<uint32_t> triangles = split.Triangles(p, mesh.triangle_count());
+      part = MeshPart(mesh, triangles);
+      if (!groups.empty()) {
+        part_groups.reserve(triangles.size());
+        for (uint32_t t : triangles) part_groups.push_back(groups[t]);
+      }
     }
-    const Status status = visit(PartToCode{p, split.size(), part, part_groups, box});
+    const Status status = visit(PartToCode{p, split.count(), part, part_groups, box});
     if (!status.ok()) return status;
   }
   return Status::Ok();

@@ -19,12 +19,35 @@ namespace hullpack {
 // the skin's or the targets' every user to follow it).
 bool CanSplitMesh(const Mesh& mesh);
 
-// The triangles of `mesh` in parts of at most `max_triangles` (>= 1), as ascending triangle ids:
-// as few parts as that allows, of about equal size, each cut at a quantile of the triangles'
-// centroids along the longest side of their box, recursively, so that a part is a compact piece
-// of the surface. A mesh of at most `max_triangles` triangles, or that CanSplitMesh refuses, is
-// one part. Deterministic.
-std::vector<std::vector<uint32_t>> SplitTriangles(const Mesh& mesh, size_t max_triangles);
+// The part of each triangle of a mesh (SplitTriangles), one byte per triangle when there are at
+// most 256 parts: the split of a large mesh is held while its parts are coded, beside its
+// decomposition, and triangle ids would take four bytes each.
+class TriangleParts {
+ public:
+  // Every triangle in part 0 (count() == 1).
+  TriangleParts() = default;
+  // part_of[t] < part_count for every t.
+  TriangleParts(size_t part_count, const std::vector<uint32_t>& part_of);
+
+  size_t count() const { return count_; }
+  uint32_t Of(size_t t) const {
+    if (count_ == 1) return 0;
+    return small_.empty() ? large_[t] : small_[t];
+  }
+  // The triangles of part p, ascending, among the mesh's `triangle_count`.
+  std::vector<uint32_t> Triangles(size_t p, size_t triangle_count) const;
+
+ private:
+  size_t count_ = 1;
+  std::vector<uint8_t> small_;   // count_ <= 256
+  std::vector<uint32_t> large_;  // otherwise
+};
+
+// The triangles of `mesh` in parts of at most `max_triangles` (>= 1): as few parts as that allows,
+// of about equal size, each cut at a quantile of the triangles' centroids along the longest side
+// of their box, recursively, so that a part is a compact piece of the surface. A mesh of at most
+// `max_triangles` triangles, or that CanSplitMesh refuses, is one part. Deterministic.
+TriangleParts SplitTriangles(const Mesh& mesh, size_t max_triangles);
 
 // The mesh of `triangles` (ascending ids of `mesh`): the triangles keep their order and corners,
 // the vertices they use their order, and every per-vertex attribute and material id goes along.

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <set>
 
@@ -40,8 +41,9 @@ Mesh Tori() {
 
 std::vector<Mesh> Parts(const Mesh& mesh, size_t max_triangles) {
   std::vector<Mesh> parts;
-  for (const std::vector<uint32_t>& t : SplitTriangles(mesh, max_triangles))
-    parts.push_back(MeshPart(mesh, t));
+  const TriangleParts split = SplitTriangles(mesh, max_triangles);
+  for (size_t p = 0; p < split.count(); ++p)
+    parts.push_back(MeshPart(mesh, split.Triangles(p, mesh.triangle_count())));
   return parts;
 }
 
@@ -80,20 +82,44 @@ TEST(SplitTriangles, PartsHoldEveryTriangleOnceWithItsAttributes) {
   }
 }
 
+// Over 256 parts the part of a triangle takes four bytes instead of one: the same split either way.
+TEST(SplitTriangles, ManyPartsHoldEveryTriangleOnceInAscendingOrder) {
+  const Mesh mesh = Tori();
+  const size_t n = mesh.triangle_count();
+  for (size_t max_triangles : {n / 200, size_t{4}}) {
+    const TriangleParts split = SplitTriangles(mesh, max_triangles);
+    EXPECT_EQ(split.count(), (n + max_triangles - 1) / max_triangles);
+    std::vector<int> seen(n, 0);
+    for (size_t p = 0; p < split.count(); ++p) {
+      const std::vector<uint32_t> triangles = split.Triangles(p, n);
+      EXPECT_GE(triangles.size(), 1u);
+      EXPECT_LE(triangles.size(), max_triangles);
+      EXPECT_TRUE(std::is_sorted(triangles.begin(), triangles.end()));
+      for (uint32_t t : triangles) {
+        ++seen[t];
+        EXPECT_EQ(split.Of(t), p);
+      }
+    }
+    EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<long>(n));
+  }
+  EXPECT_GT(SplitTriangles(mesh, 4).count(), 256u);
+  EXPECT_LE(SplitTriangles(mesh, n / 200).count(), 256u);
+}
+
 TEST(SplitTriangles, SmallSkinnedAndMorphedMeshesStayWhole) {
   Mesh mesh = Tori();
-  EXPECT_EQ(SplitTriangles(mesh, mesh.triangle_count()).size(), 1u);
+  EXPECT_EQ(SplitTriangles(mesh, mesh.triangle_count()).count(), 1u);
   EXPECT_EQ(Parts(mesh, mesh.triangle_count()).front().indices, mesh.indices);
   Mesh skinned = mesh;
   skinned.joints.assign(4 * mesh.vertex_count(), 0);
   skinned.weights.assign(4 * mesh.vertex_count(), 0.25f);
   EXPECT_FALSE(CanSplitMesh(skinned));
-  EXPECT_EQ(SplitTriangles(skinned, 100).size(), 1u);
+  EXPECT_EQ(SplitTriangles(skinned, 100).count(), 1u);
   Mesh morphed = mesh;
   morphed.morph_targets.resize(1);
   morphed.morph_targets[0].positions.assign(mesh.positions.size(), 0.0f);
   EXPECT_FALSE(CanSplitMesh(morphed));
-  EXPECT_EQ(SplitTriangles(morphed, 100).size(), 1u);
+  EXPECT_EQ(SplitTriangles(morphed, 100).count(), 1u);
 }
 
 TEST(PositionBox, HoldsEveryPosition) {
@@ -108,22 +134,22 @@ TEST(ForEachPart, VisitsTheSplitPartsWithTheirGroupsOnTheWholeBox) {
   const Mesh mesh = Tori();
   std::vector<uint32_t> groups(mesh.triangle_count());
   for (size_t t = 0; t < groups.size(); ++t) groups[t] = static_cast<uint32_t>(t * 7 % 5);
-  const std::vector<std::vector<uint32_t>> split = SplitTriangles(mesh, 500);
-  ASSERT_GT(split.size(), 2u);
+  const TriangleParts split = SplitTriangles(mesh, 500);
+  ASSERT_GT(split.count(), 2u);
   size_t visited = 0;
   const Status status = ForEachPart(mesh, groups, 500, [&](const PartToCode& part) {
     EXPECT_EQ(part.index, visited);
-    EXPECT_EQ(part.count, split.size());
-    EXPECT_EQ(TriangleSet(part.mesh), TriangleSet(MeshPart(mesh, split[part.index])));
-    EXPECT_EQ(part.groups.size(), split[part.index].size());
-    for (size_t i = 0; i < part.groups.size(); ++i)
-      EXPECT_EQ(part.groups[i], groups[split[part.index][i]]);
+    EXPECT_EQ(part.count, split.count());
+    const std::vector<uint32_t> triangles = split.Triangles(part.index, mesh.triangle_count());
+    EXPECT_EQ(TriangleSet(part.mesh), TriangleSet(MeshPart(mesh, triangles)));
+    EXPECT_EQ(part.groups.size(), triangles.size());
+    for (size_t i = 0; i < part.groups.size(); ++i) EXPECT_EQ(part.groups[i], groups[triangles[i]]);
     EXPECT_EQ(part.box, PositionBox(mesh));
     ++visited;
     return Status::Ok();
   });
   EXPECT_TRUE(status.ok());
-  EXPECT_EQ(visited, split.size());
+  EXPECT_EQ(visited, split.count());
 }
 
 TEST(ForEachPart, AWholeMeshIsVisitedOnceAsItIs) {

@@ -133,8 +133,8 @@ TEST(ErrorBudget, PartsAreWholeEncodesOfThePartsOnTheMeshGrid) {
   const double budget = 0.001 * BoundingBoxDiagonal(mesh);
   Result<BudgetedEncoding> whole = EncodeWithinError(mesh, groups, MeshCodecSettings(), budget);
   ASSERT_TRUE(whole.ok());
-  const std::vector<std::vector<uint32_t>> split = SplitTriangles(mesh, 400);
-  ASSERT_EQ(split.size(), 3u);  // 1120 triangles
+  const TriangleParts split = SplitTriangles(mesh, 400);
+  ASSERT_EQ(split.count(), 3u);  // 1120 triangles
   for (int threads : {1, 3}) {
     Result<BudgetedEncoding> chosen =
         EncodeWithinError(mesh, groups, MeshCodecSettings(), budget, threads, 400);
@@ -154,16 +154,17 @@ TEST(ErrorBudget, PartsAreWholeEncodesOfThePartsOnTheMeshGrid) {
     s.position_bits = chosen->position_bits;
     s.position_range = chosen->position_range;
     s.position_box = PositionBox(mesh);
-    for (size_t p = 0; p < split.size(); ++p) {
-      const Mesh part = MeshPart(mesh, split[p]);
+    for (size_t p = 0; p < split.count(); ++p) {
+      const std::vector<uint32_t> triangles = split.Triangles(p, mesh.triangle_count());
+      const Mesh part = MeshPart(mesh, triangles);
       std::vector<uint32_t> part_groups;
-      for (uint32_t t : split[p]) part_groups.push_back(groups[t]);
+      for (uint32_t t : triangles) part_groups.push_back(groups[t]);
       Result<EncodedMesh> alone = EncodeMesh(part, part_groups, s);
       ASSERT_TRUE(alone.ok());
       EXPECT_EQ(chosen->streams[p].stream, alone->stream) << p << ", " << threads;
       std::vector<uint32_t> decoded_groups;
-      EXPECT_EQ(Decoded(chosen->streams[p], &decoded_groups).triangle_count(), split[p].size());
-      EXPECT_EQ(decoded_groups.size(), split[p].size());
+      EXPECT_EQ(Decoded(chosen->streams[p], &decoded_groups).triangle_count(), triangles.size());
+      EXPECT_EQ(decoded_groups.size(), triangles.size());
     }
   }
 }
