@@ -10,6 +10,7 @@
 
 #include "common/buckets.h"
 #include "common/parallel.h"
+#include "mesh/triangle_key.h"
 
 namespace hullpack {
 namespace {
@@ -105,14 +106,13 @@ void Compact(std::vector<T>& values, size_t width, const std::vector<uint32_t>& 
 
 // Marks extra copies of triangles (same cyclic order) and, if asked, the opposite-winding
 // partners of earlier triangles; counts both.
-// A triangle as its sorted vertex set, its winding and its index.
+// A triangle's key and its index.
 struct Canonical {
-  std::array<uint32_t, 3> sorted;
-  bool flipped;  // the winding visits the two larger vertices in decreasing order
+  TriangleKey key;
   uint32_t triangle;
   bool operator<(const Canonical& o) const {
-    if (sorted != o.sorted) return sorted < o.sorted;
-    return flipped != o.flipped ? flipped < o.flipped : triangle < o.triangle;
+    if (key.sorted != o.key.sorted || key.flipped != o.key.flipped) return key < o.key;
+    return triangle < o.triangle;
   }
 };
 
@@ -123,11 +123,11 @@ void MarkCopiesAmong(const std::vector<Canonical>& canon, const RepairOptions& o
     size_t j = i;
     size_t per_winding[2] = {0, 0};
     const Canonical* first = &canon[i];  // the earliest triangle of the group
-    for (; j < canon.size() && canon[j].sorted == canon[i].sorted; ++j) {
+    for (; j < canon.size() && canon[j].key.sorted == canon[i].key.sorted; ++j) {
       const Canonical& c = canon[j];
       if (c.triangle < first->triangle) first = &c;
       // Within one winding, the first entry (lowest triangle index) is the one kept.
-      if (per_winding[c.flipped]++ > 0 && options.remove_duplicate_triangles) {
+      if (per_winding[c.key.flipped]++ > 0 && options.remove_duplicate_triangles) {
         remove[c.triangle] = 1;
         ++report.duplicate_triangles_removed;
       }
@@ -141,7 +141,7 @@ void MarkCopiesAmong(const std::vector<Canonical>& canon, const RepairOptions& o
     if (options.remove_opposite_duplicates && per_winding[0] > 0 && per_winding[1] > 0) {
       for (size_t k = i; k < j; ++k) {
         const Canonical& c = canon[k];
-        if (c.flipped == first->flipped || remove[c.triangle]) continue;
+        if (c.key.flipped == first->key.flipped || remove[c.triangle]) continue;
         remove[c.triangle] = 1;
         ++report.opposite_triangles_removed;
       }
@@ -164,11 +164,7 @@ void MarkDuplicateTriangles(const Mesh& mesh, const RepairOptions& options,
     canon.clear();
     for (uint32_t e = first; e < last; ++e) {
       const uint32_t t = by_smallest.ids[e];
-      const uint32_t* p = &mesh.indices[3 * size_t(t)];
-      // Rotating to the smallest index keeps the winding and makes rotations compare equal.
-      const int m = p[0] < p[1] ? (p[0] < p[2] ? 0 : 2) : (p[1] < p[2] ? 1 : 2);
-      const uint32_t next = p[(m + 1) % 3], prev = p[(m + 2) % 3];
-      canon.push_back({{p[m], std::min(next, prev), std::max(next, prev)}, next > prev, t});
+      canon.push_back({TriangleKey::Of(&mesh.indices[3 * size_t(t)]), t});
     }
     std::sort(canon.begin(), canon.end());
     MarkCopiesAmong(canon, options, remove, report);

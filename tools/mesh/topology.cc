@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "common/buckets.h"
+#include "mesh/triangle_key.h"
 
 namespace hullpack {
 namespace {
@@ -143,26 +144,16 @@ TopologyReport AnalyzeTopology(const Mesh& mesh, const TopologyOptions& options)
   // rotated triples are duplicates, equal sorted triples with the other winding are opposite
   // pairs. Equal triples share their smallest point: they are looked for among its triangles.
   {
-    struct Canonical {
-      std::array<uint32_t, 3> sorted;
-      bool flipped;  // the winding visits the two larger points in decreasing order
-      bool operator<(const Canonical& o) const {
-        return sorted != o.sorted ? sorted < o.sorted : flipped < o.flipped;
-      }
-    };
     const Buckets by_smallest = BucketBy(triangle_count, point_count, [&](size_t t) {
       return degenerate[t] ? kNoBucket : std::min({tri[t][0], tri[t][1], tri[t][2]});
     });
-    std::vector<Canonical> canon;
+    std::vector<TriangleKey> canon;
     for (size_t p = 0; p < point_count; ++p) {
       const uint32_t first = by_smallest.start[p], last = by_smallest.start[p + 1];
       if (last - first < 2) continue;
       canon.clear();
       for (uint32_t e = first; e < last; ++e) {
-        const auto& q = tri[by_smallest.ids[e]];
-        const int m = q[0] < q[1] ? (q[0] < q[2] ? 0 : 2) : (q[1] < q[2] ? 1 : 2);
-        const uint32_t next = q[(m + 1) % 3], prev = q[(m + 2) % 3];
-        canon.push_back({{q[m], std::min(next, prev), std::max(next, prev)}, next > prev});
+        canon.push_back(TriangleKey::Of(tri[by_smallest.ids[e]].data()));
       }
       std::sort(canon.begin(), canon.end());
       for (size_t i = 0; i < canon.size();) {
