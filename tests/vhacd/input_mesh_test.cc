@@ -18,7 +18,7 @@ namespace {
 using vhacd::internal::InputMesh;
 using vhacd::internal::ReadMesh;
 
-// may_borrow reads the points in place at any size (ReadOptions::in_place_points = 0).
+// may_borrow reads the points in place too (ReadOptions::points_in_place).
 InputMesh Read(const vhacd_test::Mesh& m, bool keep_sources = true, bool may_borrow = false) {
   vhacd::internal::Context ctx(nullptr, 1);
   InputMesh out;
@@ -26,7 +26,7 @@ InputMesh Read(const vhacd_test::Mesh& m, bool keep_sources = true, bool may_bor
   vhacd::internal::ReadOptions options;
   options.keep_sources = keep_sources;
   options.may_borrow = may_borrow;
-  options.in_place_points = 0;
+  options.points_in_place = may_borrow;
   EXPECT_EQ(ReadMesh(vhacd::MeshView::FromDouble(m.points.data(), m.point_count(), m.indices.data(),
                                                  m.indices.size() / 3),
                      &ctx, &out, &why, options),
@@ -122,14 +122,14 @@ TEST(ReadMesh, ACleanMeshIsReadInPlaceWhenAllowed) {
   EXPECT_FALSE(renumbered.triangles.borrowed());
   EXPECT_EQ(renumbered.points, sorted.points);
   EXPECT_EQ(renumbered.triangles, sorted.triangles);
-  // Below in_place_points, the points are copied in their order.
+  // Without points_in_place, the points are copied in their order.
   InputMesh small;
   std::string why;
   vhacd::internal::Context ctx(nullptr, 1);
   vhacd::internal::ReadOptions options;
   options.keep_sources = false;
   options.may_borrow = true;
-  options.in_place_points = torus.point_count() + 1;
+  options.points_in_place = false;
   ASSERT_EQ(ReadMesh(vhacd::MeshView::FromDouble(torus.points.data(), torus.point_count(),
                                                  torus.indices.data(), torus.triangle_count()),
                      &ctx, &small, &why, options),
@@ -141,7 +141,7 @@ TEST(ReadMesh, ACleanMeshIsReadInPlaceWhenAllowed) {
 }
 
 // The grid points mapped on every read from the caller's floats are those of the copy mapped in
-// place (which Decompose uses below vhacd::internal::kInPlacePoints), with and without a rotation.
+// place (Decompose without Parameters::points_in_place), with and without a rotation.
 TEST(GridPoints, MappedOnReadEqualsMappedOnce) {
   const vhacd_test::Mesh torus = vhacd_test::Torus(2, 0.5, 40, 20);
   std::vector<float> floats(torus.points.begin(), torus.points.end());

@@ -71,11 +71,18 @@ vhacd::MeshView ViewOf(const Mesh& mesh) {
                                     mesh.triangle_count());
 }
 
+// From this many vertices the decomposition reads the mesh's points in place: their copy in
+// double precision would be its largest array, and beside the render-mesh encode its slower reads
+// cost little wall time (docs/benchmarks.md).
+constexpr size_t kPointsInPlaceFrom = size_t{1} << 21;
+
 }  // namespace
 
 Result<HullSet> DecomposeMesh(const Mesh& mesh, const vhacd::Parameters& parameters,
                               vhacd::Observer* observer) {
-  return ToHullSet(mesh, vhacd::Decompose(ViewOf(mesh), parameters, observer));
+  vhacd::Parameters p = parameters;
+  p.points_in_place = p.points_in_place || mesh.vertex_count() >= kPointsInPlaceFrom;
+  return ToHullSet(mesh, vhacd::Decompose(ViewOf(mesh), p, observer));
 }
 
 Result<HullSet> DecomposeMesh(const Mesh& mesh, const CollisionSettings& settings,

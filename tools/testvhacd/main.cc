@@ -135,6 +135,9 @@ std::optional<int> ParseCommandLine(const std::vector<std::string>& args, Comman
              [&p] { p.oriented_cuts = vhacd::OrientedCuts::kOff; });
   cli.Double("--min-opening", "X", -1e300, 1e300, &p.min_opening,
              "fill rule: cavities behind openings wider than X of the diagonal stay empty");
+  cli.Flag("--points-in-place", &p.points_in_place,
+           "read a clean mesh's points in place instead of copying them (24 bytes per point\n"
+           "less; about twice the time; the same hulls)");
   cli.Epilog(kPositionalForm);
   if (IsPositionalForm(args)) {
     if (std::optional<int> exit_code = ParsePositionalForm(cli, args, cmd)) return exit_code;

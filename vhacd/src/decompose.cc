@@ -159,6 +159,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   internal::ReadOptions read;
   read.keep_sources = false;
   read.may_borrow = true;  // the decomposition does not depend on the point order
+  read.points_in_place = params.points_in_place;
   st = internal::ReadMesh(view, &ctx, &input, &why, read);
   if (st != Status::kOk) return Fail(st, why);
   Result result;
@@ -533,9 +534,9 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
                                       kExactSplit * params.max_distance * diag_grid}
                              : Limits{params.concavity, params.gamma, max_depth, 0.0};
       reuse_slices = compare_orientations;
-      const Status st = run(lim, &res);
-      if (st == kUnoriented) return st;
-      if (st != Status::kOk) return Status::kCancelled;
+      const Status outcome = run(lim, &res);
+      if (outcome == kUnoriented) return outcome;
+      if (outcome != Status::kOk) return Status::kCancelled;
       if (exact_count && hulls.size() != params.hull_count) {
         res.target_reached = false;
         res.target_note = "the voxel set could be cut into only " + std::to_string(hulls.size()) +
@@ -568,11 +569,11 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
       for (int attempt = 0; attempt < kAttempts; ++attempt) {
         Report r = res;
         reuse_slices = static_cast<size_t>(attempt) < slice_attempts.size();
-        const Status st = run(Limits{1.0, 1.0, limit, stick, split_open}, &r);
-        if (st == kUnoriented) {
+        const Status outcome = run(Limits{1.0, 1.0, limit, stick, split_open}, &r);
+        if (outcome == kUnoriented) {
           r = slice_attempts[attempt].first;
           hulls = slice_attempts[attempt].second;
-        } else if (st != Status::kOk) {
+        } else if (outcome != Status::kOk) {
           return Status::kCancelled;
         } else if (compare_orientations && !oriented) {
           slice_attempts.emplace_back(r, hulls);
@@ -652,11 +653,13 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     std::vector<internal::HullMesh> slice_hulls = std::move(hulls);
     oriented = true;
     Report oriented_rep = rep;
-    const Status st = decompose(&oriented_rep);
-    if (st != Status::kOk && st != kUnoriented) return Fail(Status::kCancelled, "cancelled");
-    const bool keep = st == Status::kOk && OrientedIsBetter(oriented_rep, hulls.size(), slice_rep,
-                                                            slice_hulls.size(), params);
-    if (st == kUnoriented)
+    const Status outcome = decompose(&oriented_rep);
+    if (outcome != Status::kOk && outcome != kUnoriented)
+      return Fail(Status::kCancelled, "cancelled");
+    const bool keep =
+        outcome == Status::kOk &&
+        OrientedIsBetter(oriented_rep, hulls.size(), slice_rep, slice_hulls.size(), params);
+    if (outcome == kUnoriented)
       ctx.Log("oriented cuts: none kept by the clipping, the slices' result stands");
     else
       ctx.Log("oriented cuts: " + std::to_string(hulls.size()) + " hulls, concavity " +

@@ -11,6 +11,16 @@
 namespace vhacd {
 namespace internal {
 
+namespace {
+
+// Each point read once: a mesh read in place is mapped on every read.
+double TriangleArea(const GridMesh& mesh, TriangleList::Ref t) {
+  const Vec3 a = mesh.points[t[0]];
+  return 0.5 * (mesh.points[t[1]] - a).cross(mesh.points[t[2]] - a).norm();
+}
+
+}  // namespace
+
 // The Sliver of triangle (a, b, c): every point of the triangle lies in its plane, and within
 // its height over its longest edge of that edge.
 TriangleLocator::Sliver TriangleLocator::Sliver::Of(const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -244,10 +254,7 @@ void SampleTriangle(Vec3 a, Vec3 b, Vec3 c, double spacing, std::vector<Vec3>* o
 
 std::vector<Vec3> SampleSurface(const GridMesh& mesh) {
   double area = 0.0;
-  for (const auto& t : mesh.triangles)
-    area +=
-        0.5 *
-        (mesh.points[t[1]] - mesh.points[t[0]]).cross(mesh.points[t[2]] - mesh.points[t[0]]).norm();
+  for (const auto& t : mesh.triangles) area += TriangleArea(mesh, t);
   std::vector<Vec3> out;
   // Vertices (a deterministic stride of them), then rows across each triangle.
   if (!mesh.vertex_samples.empty()) {
@@ -343,10 +350,7 @@ bool ComputeErrorReport(const MetricsInput& in, Context* ctx, Report* report) {
   if (in.locator == nullptr) {
     // Buckets of a few triangles each: about 3 mean triangle sizes, at most 4 voxels.
     double mesh_area = 0.0;
-    for (const auto& t : in.mesh->triangles)
-      mesh_area += 0.5 * (in.mesh->points[t[1]] - in.mesh->points[t[0]])
-                             .cross(in.mesh->points[t[2]] - in.mesh->points[t[0]])
-                             .norm();
+    for (const auto& t : in.mesh->triangles) mesh_area += TriangleArea(*in.mesh, t);
     double cell = 3.0 * std::sqrt(2.0 * mesh_area / std::max<size_t>(1, in.mesh->triangles.size()));
     const double cells_at_one = static_cast<double>(grid.dims[0]) * grid.dims[1] * grid.dims[2];
     cell = std::clamp(cell, std::max(0.5, std::cbrt(cells_at_one / 8e6)), 4.0);

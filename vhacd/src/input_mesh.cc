@@ -159,7 +159,7 @@ Status ReadMesh(const MeshView& m, Context* ctx, InputMesh* out, std::string* wh
   std::vector<uint32_t> remap(keep_order ? 0 : np, 0);  // input point -> welded (else the same)
   if (options.keep_sources) out->point_source.reserve(distinct);
   if (keep_order) {
-    if (np >= options.in_place_points) {
+    if (options.points_in_place) {
       out->view_points = point;
     } else {
       out->points.reserve(np);

@@ -34,11 +34,6 @@ struct InputMesh {
   Vec3 Point(size_t i) const { return view_points.empty() ? points[i] : view_points[i]; }
 };
 
-// From this many points (48 MB in double) a decomposition reads a clean mesh's points in place:
-// there the copy would be its largest array, below it is small beside the voxel grid, and mapping
-// every read is slower than reading a copy (see docs/benchmarks.md).
-constexpr size_t kInPlacePoints = size_t{1} << 21;
-
 struct ReadOptions {
   // Fill point_source and triangle_source (for callers that map back to the input).
   bool keep_sources = true;
@@ -49,9 +44,9 @@ struct ReadOptions {
   // points are in lexicographic order. Only for callers whose results do not depend on the
   // point order; the view must outlive the InputMesh.
   bool may_borrow = false;
-  // With may_borrow and the order kept, meshes of at least this many points are read in place
-  // (view_points) instead of copied into `points`.
-  size_t in_place_points = kInPlacePoints;
+  // With may_borrow and the order kept, the points are read in place (view_points) instead of
+  // copied into `points`.
+  bool points_in_place = false;
 };
 
 // Validates `m` and fills *out; on failure returns the status and names the problem in *why.

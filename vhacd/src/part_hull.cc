@@ -162,22 +162,23 @@ HullMesh BuildPartHull(const Part& part, const TriangleIndex& index, const Solid
     std::vector<Vec3> poly;
     index.ForEachInBox(lo, hi, &stamp, mark, [&](uint32_t t) {
       const auto& tr = mesh.triangles[t];
+      // Each point read once: a mesh read in place is mapped on every read.
+      const Vec3 corner[3] = {mesh.points[tr[0]], mesh.points[tr[1]], mesh.points[tr[2]]};
       if (!part.cuts.empty()) {
         poly.clear();
-        ClipTriangleToBox(mesh.points[tr[0]], mesh.points[tr[1]], mesh.points[tr[2]], lo, hi,
-                          &poly);
+        ClipTriangleToBox(corner[0], corner[1], corner[2], lo, hi, &poly);
         if (!poly.empty()) ClipPolygonToCuts(poly, part.cuts, &pts);
         return;
       }
-      if (inside(mesh.points[tr[0]]) && inside(mesh.points[tr[1]]) && inside(mesh.points[tr[2]])) {
-        for (uint32_t v : tr)
-          if (vstamp[v] != mark) {
-            vstamp[v] = mark;
-            pts.push_back(mesh.points[v]);
+      if (inside(corner[0]) && inside(corner[1]) && inside(corner[2])) {
+        for (int k = 0; k < 3; ++k)
+          if (vstamp[tr[k]] != mark) {
+            vstamp[tr[k]] = mark;
+            pts.push_back(corner[k]);
           }
         return;
       }
-      ClipTriangleToBox(mesh.points[tr[0]], mesh.points[tr[1]], mesh.points[tr[2]], lo, hi, &pts);
+      ClipTriangleToBox(corner[0], corner[1], corner[2], lo, hi, &pts);
     });
     status = ComputeConvexHull(pts, -1.0, &h);
   }

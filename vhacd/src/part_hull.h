@@ -41,8 +41,10 @@ class TriangleIndex {
   // The bounding box of triangle t.
   void TriangleBox(size_t t, Vec3* lo, Vec3* hi) const {
     const auto& tr = mesh_.triangles[t];
-    *lo = mesh_.points[tr[0]].cwiseMin(mesh_.points[tr[1]]).cwiseMin(mesh_.points[tr[2]]);
-    *hi = mesh_.points[tr[0]].cwiseMax(mesh_.points[tr[1]]).cwiseMax(mesh_.points[tr[2]]);
+    // Each point read once: a mesh read in place is mapped on every read.
+    const Vec3 a = mesh_.points[tr[0]], b = mesh_.points[tr[1]], c = mesh_.points[tr[2]];
+    *lo = a.cwiseMin(b).cwiseMin(c);
+    *hi = a.cwiseMax(b).cwiseMax(c);
   }
   std::vector<uint32_t> start_, ids_;
   Vec3 mesh_lo_, mesh_hi_;  // the mesh's bounding box

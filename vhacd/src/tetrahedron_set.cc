@@ -289,8 +289,8 @@ bool BuildSurfaceCells(const GridMesh& mesh, const VoxelGrid& grid, Context* ctx
   std::vector<std::array<int, 6>> range(mesh.triangles.size());
   for (size_t t = 0; t < mesh.triangles.size(); ++t) {
     const auto& tr = mesh.triangles[t];
-    const Vec3 lo = mesh.points[tr[0]].cwiseMin(mesh.points[tr[1]]).cwiseMin(mesh.points[tr[2]]);
-    const Vec3 hi = mesh.points[tr[0]].cwiseMax(mesh.points[tr[1]]).cwiseMax(mesh.points[tr[2]]);
+    const Vec3 p0 = mesh.points[tr[0]], p1 = mesh.points[tr[1]], p2 = mesh.points[tr[2]];
+    const Vec3 lo = p0.cwiseMin(p1).cwiseMin(p2), hi = p0.cwiseMax(p1).cwiseMax(p2);
     // The voxels whose closed box meets the triangle's box (a bound on an integer coordinate
     // touches the voxels on both sides).
     for (int a = 0; a < 3; ++a) {

@@ -46,6 +46,23 @@ run tetra 0 "hulls:" -- "$bin" "$tmp/cube.obj" --mode tetra --resolution 10000 -
 run sample 0 "561 points, 1024 triangles" -- "$bin" "$src/samples/torus.obj" --resolution 10000 \
   -o "$tmp/torus_hulls.glb"
 [ -s "$tmp/torus_hulls.glb" ] && pass || fail "sample: no GLB written"
+# --points-in-place reaches the library and gives the same hulls: an L prism as one closed
+# surface (every point used once, none repeated: read in place).
+{
+  printf 'v %s %s 0\n' 0 0 4 0 4 1 1 1 1 4 0 4
+  printf 'v %s %s 1\n' 0 0 4 0 4 1 1 1 1 4 0 4
+  printf 'f %s\n' "1 4 2" "2 4 3" "1 5 4" "1 6 5" "7 8 10" "8 9 10" "7 10 11" "7 11 12"
+  for i in 1 2 3 4 5 6; do
+    j=$((i % 6 + 1))
+    printf 'f %d %d %d\nf %d %d %d\n' $i $j $((j + 6)) $i $((j + 6)) $((i + 6))
+  done
+} >"$tmp/l_prism.obj"
+run in-place-copy 0 "hulls:" -- "$bin" "$tmp/l_prism.obj" -o "$tmp/l_copy.obj" --resolution 20000
+run in-place 0 "hulls:" -- "$bin" "$tmp/l_prism.obj" -o "$tmp/l_in_place.obj" \
+  --resolution 20000 --points-in-place
+hulls=$(grep -c '^o ' "$tmp/l_in_place.obj" 2>/dev/null)
+[ "${hulls:-0}" -ge 2 ] && pass || fail "in-place: the L prism gave ${hulls:-no} hulls, expected >= 2"
+cmp -s "$tmp/l_copy.obj" "$tmp/l_in_place.obj" && pass || fail "in-place: other hulls than the copy"
 
 # Mistakes: usage errors exit 64 with one line; a bad input exits 1 naming the file.
 run bad-mode 64 "--mode takes voxel, tetra" -- "$bin" "$tmp/cube.obj" --mode foo
