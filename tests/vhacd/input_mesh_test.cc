@@ -94,8 +94,9 @@ TEST(ReadMesh, ACleanMeshIsReadInPlaceWhenAllowed) {
   EXPECT_TRUE(lent.triangles.borrowed());
   EXPECT_EQ(lent.triangles[0].begin(), torus.indices.data());
   for (size_t i = 0; i < lent.point_count(); ++i)
-    EXPECT_EQ(lent.Point(i), vhacd::internal::Vec3(torus.points[3 * i], torus.points[3 * i + 1],
-                                                   torus.points[3 * i + 2]));
+    EXPECT_EQ(lent.view_points[i],
+              vhacd::internal::Vec3(torus.points[3 * i], torus.points[3 * i + 1],
+                                    torus.points[3 * i + 2]));
   EXPECT_TRUE(lent.closed);
   // The same vertex samples as the lexicographic order's stride.
   const InputMesh sorted = Read(torus, false);
@@ -105,7 +106,7 @@ TEST(ReadMesh, ACleanMeshIsReadInPlaceWhenAllowed) {
   ASSERT_GT(stride, 1u);
   std::vector<vhacd::internal::Vec3> expected, samples;
   for (size_t i = 0; i < sorted.points.size(); i += stride) expected.push_back(sorted.points[i]);
-  for (uint32_t i : lent.vertex_samples) samples.push_back(lent.Point(i));
+  for (uint32_t i : lent.vertex_samples) samples.push_back(lent.view_points[i]);
   EXPECT_EQ(samples, expected);
   // A repeated triangle: the points keep their order, the triangles are copied without it.
   vhacd_test::Mesh repeated = torus;
@@ -137,7 +138,7 @@ TEST(ReadMesh, ACleanMeshIsReadInPlaceWhenAllowed) {
   EXPECT_TRUE(small.view_points.empty());
   EXPECT_TRUE(small.triangles.borrowed());
   ASSERT_EQ(small.points.size(), torus.point_count());
-  for (size_t i = 0; i < small.points.size(); ++i) EXPECT_EQ(small.points[i], lent.Point(i));
+  for (size_t i = 0; i < small.points.size(); ++i) EXPECT_EQ(small.points[i], lent.view_points[i]);
 }
 
 // The grid points mapped on every read from the caller's floats are those of the copy mapped in

@@ -167,8 +167,9 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   rep.closed_input = input.closed;
   internal::Clock clock, total;
 
-  // Normalization. A large clean input is read in place (input.view_points), with no copy in
-  // double; otherwise its welded copy is mapped in place. Both give the same grid points.
+  // Normalization. With points_in_place a clean input is read in place (input.view_points), with
+  // no copy in double; otherwise its welded copy is mapped in place. Both give the same grid
+  // points.
   internal::GridFrame frame;
   const bool in_place = !input.view_points.empty();
   const size_t np = input.point_count();

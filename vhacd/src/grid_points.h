@@ -1,6 +1,7 @@
 // The points of a decomposition's mesh in grid units: either owned, or mapped from the caller's
-// points on every read. A large clean input is then not copied: in double precision its points
-// would be the decomposition's largest array. Both forms give the same values.
+// points on every read (Parameters::points_in_place: a large clean input is then not copied; in
+// double precision its points would be the decomposition's largest array). Both forms give the
+// same values.
 #ifndef VHACD_SRC_GRID_POINTS_H_
 #define VHACD_SRC_GRID_POINTS_H_
 

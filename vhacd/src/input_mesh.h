@@ -31,7 +31,6 @@ struct InputMesh {
   bool closed = false;
 
   size_t point_count() const { return view_points.empty() ? points.size() : view_points.size(); }
-  Vec3 Point(size_t i) const { return view_points.empty() ? points[i] : view_points[i]; }
 };
 
 struct ReadOptions {
