@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include "common/buckets.h"
+
 namespace hullpack {
 
 bool CanSplitMesh(const Mesh& mesh) {
@@ -143,11 +145,21 @@ Status ForEachPart(const Mesh& mesh, const std::vector<uint32_t>& groups, size_t
       max_triangles > 0 ? SplitTriangles(mesh, max_triangles) : TriangleParts();
   if (split.count() <= 1) return visit(PartToCode{0, 1, mesh, groups, std::nullopt});
   const std::array<float, 6> box = PositionBox(mesh);
+  // A few parts list their triangles by a pass over the part ids each (the split stays one byte
+  // per triangle); many parts, whose passes would add up, are grouped once.
+  constexpr size_t kPassesAtMost = 16;
+  const size_t n = mesh.triangle_count();
+  const Buckets grouped = split.count() > kPassesAtMost
+                              ? BucketBy(n, split.count(), [&](size_t t) { return split.Of(t); })
+                              : Buckets();
   for (size_t p = 0; p < split.count(); ++p) {
     Mesh part;
     std::vector<uint32_t> part_groups;
     {
-      const std::vector<uint32_t> triangles = split.Triangles(p, mesh.triangle_count());
+      const std::vector<uint32_t> triangles =
+          grouped.ids.empty() ? split.Triangles(p, n)
+                              : std::vector<uint32_t>(grouped.ids.begin() + grouped.start[p],
+                                                      grouped.ids.begin() + grouped.start[p + 1]);
       part = MeshPart(mesh, triangles);
       if (!groups.empty()) {
         part_groups.reserve(triangles.size());

@@ -130,6 +130,22 @@ TEST(PositionBox, HoldsEveryPosition) {
   EXPECT_EQ(PositionBox(Mesh()), (std::array<float, 6>{0, 0, 0, 0, 0, 0}));
 }
 
+// Past 16 parts ForEachPart groups the triangles once instead of a pass per part: the same parts.
+TEST(ForEachPart, ManyPartsAreTheSplitsParts) {
+  const Mesh mesh = Tori();
+  const TriangleParts split = SplitTriangles(mesh, 64);
+  ASSERT_GT(split.count(), 16u);
+  size_t visited = 0;
+  const Status status = ForEachPart(mesh, {}, 64, [&](const PartToCode& part) {
+    EXPECT_EQ(part.index, visited++);
+    EXPECT_EQ(part.mesh.indices,
+              MeshPart(mesh, split.Triangles(part.index, mesh.triangle_count())).indices);
+    return Status::Ok();
+  });
+  EXPECT_TRUE(status.ok());
+  EXPECT_EQ(visited, split.count());
+}
+
 TEST(ForEachPart, VisitsTheSplitPartsWithTheirGroupsOnTheWholeBox) {
   const Mesh mesh = Tori();
   std::vector<uint32_t> groups(mesh.triangle_count());
