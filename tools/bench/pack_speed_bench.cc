@@ -24,7 +24,7 @@
 #include "bench/svg_plot.h"
 #include "common/cli_args.h"
 #include "common/file_util.h"
-#include "common/parallel.h"
+#include "common/malloc_policy.h"
 #include "hullpack/cli_util.h"
 #include "io/scene_io.h"
 #include "mesh/flatten.h"
@@ -146,7 +146,7 @@ struct Row {
 }  // namespace
 
 int main(int argc, char** argv) {
-  hullpack::UseOneMallocArena();  // as hullpack does: the packs run in children of this process
+  hullpack::ConfigureMalloc();  // as hullpack does: the packs run in children of this process
   std::vector<std::string> meshes;
   std::string out, level_list = "0,1,2";
   int repeats = 3;

@@ -10,23 +10,7 @@
 #include <thread>
 #include <vector>
 
-#ifdef __GLIBC__
-#include <malloc.h>
-#endif
-
 namespace hullpack {
-
-// One malloc arena for the whole process; programs call it first, before any thread starts.
-// Why: glibc gives each thread that allocates an arena of its own and keeps what a thread frees
-// there for that thread. The pipeline's threads allocate and free large arrays in turn (an encode
-// beside a decomposition), so with two threads the resident peak was about a third above the
-// heap's (docs/benchmarks.md, "Pack speed and memory"). Its large arrays are what it allocates, so
-// one arena costs no measurable time.
-inline void UseOneMallocArena() {
-#ifdef __GLIBC__
-  mallopt(M_ARENA_MAX, 1);
-#endif
-}
 
 // Threads to use for `requested` (0 = every core), at least 1.
 inline int ThreadCount(int requested) {

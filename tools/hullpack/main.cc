@@ -2,7 +2,7 @@
 #include <string>
 #include <vector>
 
-#include "common/parallel.h"
+#include "common/malloc_policy.h"
 #include "hullpack/batch_command.h"
 #include "hullpack/cli_util.h"
 #include "hullpack/collision_command.h"
@@ -11,7 +11,7 @@
 #include "hullpack/unpack_command.h"
 
 int main(int argc, char** argv) {
-  hullpack::UseOneMallocArena();
+  hullpack::ConfigureMalloc();
   hullpack::CliArgs cli(
       "hullpack", "COMMAND [options]",
       "Convex collision hulls and compressed meshes, packed for the web and game engines.\n"
