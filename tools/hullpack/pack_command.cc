@@ -300,7 +300,7 @@ void AddPackOptions(CliArgs& cli, PackOptions* options) {
            "code values in vertex id order: faster decoding, 2-5% larger");
   cli.Int("--part-triangles", "N", 0, 1000000000, &o.part_triangles,
           "code a larger render mesh in parts of at most N triangles, one stream\n"
-          "and glTF mesh each, on one grid: less memory (1000000; 0: never)");
+          "and glTF mesh each, on one grid: less memory (600000; 0: never)");
   cli.Flag("--fallback", &o.glb.fallback,
            "also write plain accessors (readers without the extension still work)");
   cli.Flag("--quantized-hulls", &o.glb.quantized_hulls,

@@ -16,7 +16,7 @@
 namespace hullpack {
 
 // PackOptions::part_triangles by default.
-constexpr size_t kDefaultPartTriangles = 1000000;
+constexpr size_t kDefaultPartTriangles = 600000;
 
 struct PackOptions {
   // Largest position error allowed, as a fraction of each mesh's bounding-box diagonal; it sets the
