@@ -4,6 +4,7 @@
 
 #include "context.h"
 #include "error_metrics.h"
+#include "oriented_cuts.h"
 #include "solid_corners.h"
 #include "test_grid_mesh.h"
 #include "test_meshes.h"
@@ -103,6 +104,35 @@ TEST(PartHullTest, PartHullsGivesEachPartItsOwnHull) {
   }
   EXPECT_NEAR(hulls.Of(whole).Volume(), (7.6 - 2.3) * (5.9 - 2.2) * (4.8 - 2.1), 1e-9);
   EXPECT_LT(hulls.Of(cut).Volume(), hulls.Of(whole).Volume() - 1.0);
+}
+
+// A part bounded by oblique cuts gets the hull of the surface clipped to its box and its cuts: the
+// triangles inside them all give their vertices once, the others their clipped polygons.
+TEST(PartHullTest, APartWithCutsHasTheHullOfItsClippedSurface) {
+  const GridMesh g = vhacd_test::ToGridMesh(vhacd_test::Sphere(7.0, 64, 32), 1.0, Vec3(10, 10, 10));
+  const int dims[3] = {20, 20, 20};
+  Part part;
+  for (int z = 2; z <= 17; ++z)
+    for (int y = 2; y <= 17; ++y)
+      for (int x = 2; x <= 17; ++x) part.voxels.push_back(VoxelAt(x, y, z, true));
+  part.ComputeBounds();
+  part.cuts.push_back(CutPlane{Vec3(1, 1, 0).normalized(), 15.0});
+  part.cuts.push_back(CutPlane{Vec3(0, -1, 1).normalized(), 3.0});
+  const TriangleIndex index(g, dims, 4);
+  const HullMesh got = BuildPartHull(part, index);
+  ASSERT_FALSE(got.empty());
+  const Vec3 lo(2, 2, 2), hi(18, 18, 18);
+  std::vector<Vec3> clipped, poly;
+  for (const auto& t : g.triangles) {
+    poly.clear();
+    ClipTriangleToBox(g.points[t[0]], g.points[t[1]], g.points[t[2]], lo, hi, &poly);
+    if (!poly.empty()) ClipPolygonToCuts(poly, part.cuts, &clipped);
+  }
+  HullMesh expected;
+  ASSERT_EQ(ComputeConvexHull(clipped, -1.0, &expected), HullStatus::kOk);
+  EXPECT_NEAR(got.Volume(), expected.Volume(), 1e-9 * expected.Volume());
+  EXPECT_EQ(got.vertices.size(), expected.vertices.size());
+  for (const Vec3& p : clipped) EXPECT_TRUE(HullContains(got, p, 1e-9));
 }
 
 TEST(PartHullTest, InsideCornersOfSurfaceVoxelsReachTheCut) {

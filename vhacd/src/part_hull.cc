@@ -157,20 +157,24 @@ HullMesh BuildPartHull(const Part& part, const TriangleIndex& index, const Solid
     auto inside = [&](const Vec3& q) {
       return (q.array() >= lo.array()).all() && (q.array() <= hi.array()).all();
     };
-    // Triangles inside the box contribute their vertices (each once), the others their clipped
-    // polygon.
+    // Triangles inside the box and every cut contribute their vertices (each once), the others
+    // their clipped polygon. (Clipped too, an inside triangle gave its corners again: a copy of a
+    // vertex per triangle around it, most of a large part's points.)
     std::vector<Vec3> poly;
     index.ForEachInBox(lo, hi, &stamp, mark, [&](uint32_t t) {
       const auto& tr = mesh.triangles[t];
       // Each point read once: a mesh read in place is mapped on every read.
       const Vec3 corner[3] = {mesh.points[tr[0]], mesh.points[tr[1]], mesh.points[tr[2]]};
-      if (!part.cuts.empty()) {
+      const bool in_box = inside(corner[0]) && inside(corner[1]) && inside(corner[2]);
+      if (!part.cuts.empty() &&
+          !(in_box && CutsContain(part.cuts, corner[0]) && CutsContain(part.cuts, corner[1]) &&
+            CutsContain(part.cuts, corner[2]))) {
         poly.clear();
         ClipTriangleToBox(corner[0], corner[1], corner[2], lo, hi, &poly);
         if (!poly.empty()) ClipPolygonToCuts(poly, part.cuts, &pts);
         return;
       }
-      if (inside(corner[0]) && inside(corner[1]) && inside(corner[2])) {
+      if (in_box) {
         for (int k = 0; k < 3; ++k)
           if (vstamp[tr[k]] != mark) {
             vstamp[tr[k]] = mark;
