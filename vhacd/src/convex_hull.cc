@@ -43,21 +43,22 @@ class PointArray {
   const std::vector<Vec3>& points_;
 };
 
-// head, then base gathered by ids.
-class GatheredPoints {
+// Points from head or base, by ref (see ComputeConvexHull).
+class ReferencedPoints {
  public:
-  GatheredPoints(const std::vector<Vec3>& head, const GridPoints& base,
-                 const std::vector<uint32_t>& ids)
-      : head_(head), base_(base), ids_(ids) {}
-  size_t size() const { return head_.size() + ids_.size(); }
+  ReferencedPoints(const std::vector<Vec3>& head, const GridPoints& base,
+                   const std::vector<uint32_t>& refs)
+      : head_(head), base_(base), refs_(refs) {}
+  size_t size() const { return refs_.size(); }
   Vec3 operator[](size_t i) const {
-    return i < head_.size() ? head_[i] : base_[ids_[i - head_.size()]];
+    const uint32_t r = refs_[i];
+    return r >= kHeadRef ? head_[r - kHeadRef] : base_[r];
   }
 
  private:
   const std::vector<Vec3>& head_;
   const GridPoints& base_;
-  const std::vector<uint32_t>& ids_;
+  const std::vector<uint32_t>& refs_;
 };
 
 template <typename Points>
@@ -413,8 +414,8 @@ HullStatus ComputeConvexHull(const std::vector<Vec3>& points, double tolerance, 
 }
 
 HullStatus ComputeConvexHull(const std::vector<Vec3>& head, const GridPoints& base,
-                             const std::vector<uint32_t>& ids, double tolerance, HullMesh* out) {
-  return Hull(GatheredPoints(head, base, ids), tolerance, out);
+                             const std::vector<uint32_t>& refs, double tolerance, HullMesh* out) {
+  return Hull(ReferencedPoints(head, base, refs), tolerance, out);
 }
 
 double HullMesh::Volume() const {

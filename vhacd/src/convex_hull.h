@@ -46,10 +46,13 @@ enum class HullStatus {
 const char* HullStatusName(HullStatus status);
 
 HullStatus ComputeConvexHull(const std::vector<Vec3>& points, double tolerance, HullMesh* out);
-// The same for the points head followed by base[ids[0]], base[ids[1]], ...: the hull of a subset
-// of a large array (a mesh's points) without a copy of it. Same result as on those points copied.
+// The same for the points named by `refs`, in that order: a ref with kHeadRef set is
+// head[ref - kHeadRef], any other base[ref]. The hull of a subset of a large array (a mesh's
+// points) mixed with a few points of its own, without a copy of the array; the same result as on
+// the points copied in that order.
+constexpr uint32_t kHeadRef = 0x80000000u;
 HullStatus ComputeConvexHull(const std::vector<Vec3>& head, const GridPoints& base,
-                             const std::vector<uint32_t>& ids, double tolerance, HullMesh* out);
+                             const std::vector<uint32_t>& refs, double tolerance, HullMesh* out);
 
 // Half-space form of a hull: n.x <= d for every face (n unit length).
 struct HullPlanes {

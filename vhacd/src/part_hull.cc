@@ -136,23 +136,26 @@ HullMesh BuildPartHull(const Part& part, const TriangleIndex& index, const Solid
     std::fill(vstamp.begin(), vstamp.end(), 0);
     mark = 1;
   }
-  HullMesh h;
-  HullStatus status;
+  // The hull's points by reference, in the order they come: the voxel corners above and the
+  // clipped points are kept in `pts`, the mesh's own vertices are read in place by index (as
+  // copies they were a part's largest array, 24 bytes per point).
   const size_t before_surface = pts.size();
+  std::vector<uint32_t> refs;
+  auto add_own = [&](size_t from) {
+    for (size_t i = from; i < pts.size(); ++i) refs.push_back(kHeadRef + static_cast<uint32_t>(i));
+  };
+  add_own(0);
   if (part.cuts.empty() && index.HoldsMesh(lo, hi)) {
-    // A part that holds the whole mesh (the root; on a large mesh its points are the largest array
-    // of the decomposition): every triangle lies in the box and gives its vertices, which the hull
-    // reads in place, by index, in the order the triangles give them.
-    std::vector<uint32_t> ids;
-    ids.reserve(mesh.points.size());
+    // A part that holds the whole mesh (the root): every triangle lies in the box and gives its
+    // vertices, in the order the triangles give them.
+    refs.reserve(before_surface + mesh.points.size());
     index.ForEachInBox(lo, hi, &stamp, mark, [&](uint32_t t) {
       for (uint32_t v : mesh.triangles[t])
         if (vstamp[v] != mark) {
           vstamp[v] = mark;
-          ids.push_back(v);
+          refs.push_back(v);
         }
     });
-    status = ComputeConvexHull(pts, mesh.points, ids, -1.0, &h);
   } else {
     auto inside = [&](const Vec3& q) {
       return (q.array() >= lo.array()).all() && (q.array() <= hi.array()).all();
@@ -166,31 +169,37 @@ HullMesh BuildPartHull(const Part& part, const TriangleIndex& index, const Solid
       // Each point read once: a mesh read in place is mapped on every read.
       const Vec3 corner[3] = {mesh.points[tr[0]], mesh.points[tr[1]], mesh.points[tr[2]]};
       const bool in_box = inside(corner[0]) && inside(corner[1]) && inside(corner[2]);
+      const size_t own = pts.size();
       if (!part.cuts.empty() &&
           !(in_box && CutsContain(part.cuts, corner[0]) && CutsContain(part.cuts, corner[1]) &&
             CutsContain(part.cuts, corner[2]))) {
         poly.clear();
         ClipTriangleToBox(corner[0], corner[1], corner[2], lo, hi, &poly);
         if (!poly.empty()) ClipPolygonToCuts(poly, part.cuts, &pts);
+        add_own(own);
         return;
       }
       if (in_box) {
         for (int k = 0; k < 3; ++k)
           if (vstamp[tr[k]] != mark) {
             vstamp[tr[k]] = mark;
-            pts.push_back(corner[k]);
+            refs.push_back(tr[k]);
           }
         return;
       }
       ClipTriangleToBox(corner[0], corner[1], corner[2], lo, hi, &pts);
+      add_own(own);
     });
-    status = ComputeConvexHull(pts, -1.0, &h);
   }
+  const bool has_surface = refs.size() > before_surface;
+  HullMesh h;
+  HullStatus status = ComputeConvexHull(pts, mesh.points, refs, -1.0, &h);
+  std::vector<uint32_t>().swap(refs);
   if (status == HullStatus::kOk && h.Volume() > 1e-3) return h;
   // A sliver along an oriented cut can hold surface voxels whose surface lies across the plane:
   // its voxels' hull would stick out of the solid by up to a voxel, and the surface is held by the
   // part across the cut. It gets no hull.
-  if (!part.cuts.empty() && pts.size() == before_surface) return HullMesh();
+  if (!part.cuts.empty() && !has_surface) return HullMesh();
   PartHullPoints(part, false, &pts);
   if (ComputeConvexHull(pts, 0.0, &h) != HullStatus::kOk) return HullMesh();
   // A flat piece of surface (a sheet) gets the slab of its voxels, within its cuts.
