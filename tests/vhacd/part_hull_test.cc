@@ -135,6 +135,46 @@ TEST(PartHullTest, APartWithCutsHasTheHullOfItsClippedSurface) {
   for (const Vec3& p : clipped) EXPECT_TRUE(HullContains(got, p, 1e-9));
 }
 
+// Mapped on every read (Parameters::points_in_place), the mesh's points are read by index instead
+// of copied into a part's points: the same hulls, bit for bit.
+TEST(PartHullTest, MappedPointsGiveTheSameHullsAsHeldOnes) {
+  const vhacd_test::Mesh sphere = vhacd_test::Sphere(7.0, 64, 32);
+  std::vector<double> coords;
+  for (size_t i = 0; i < sphere.point_count(); ++i)
+    for (int a = 0; a < 3; ++a) coords.push_back(sphere.points[3 * i + a] + 10.0);
+  PointSource source;
+  source.d = coords.data();
+  source.count = sphere.point_count();
+  GridFrame frame;
+  frame.unit.scale = 32.0;
+  frame.h = 1.0 / 32.0;
+  std::vector<Vec3> held;
+  for (size_t i = 0; i < source.size(); ++i) held.push_back(frame.ToGrid(source[i]));
+  GridMesh owned = vhacd_test::ToGridMesh(sphere), mapped = vhacd_test::ToGridMesh(sphere);
+  owned.points = GridPoints(held);
+  mapped.points = GridPoints(source, frame);
+  const int dims[3] = {20, 20, 20};
+  Part whole, cut, half;
+  for (int z = 2; z <= 17; ++z)
+    for (int y = 2; y <= 17; ++y)
+      for (int x = 2; x <= 17; ++x) {
+        whole.voxels.push_back(VoxelAt(x, y, z, true));
+        if (x <= 9) half.voxels.push_back(VoxelAt(x, y, z, true));
+      }
+  whole.ComputeBounds();
+  half.ComputeBounds();
+  cut = whole;
+  cut.cuts.push_back(CutPlane{Vec3(1, 1, 0).normalized(), 15.0});
+  const TriangleIndex owned_index(owned, dims, 4), mapped_index(mapped, dims, 4);
+  for (const Part* part : {&whole, &half, &cut}) {
+    const HullMesh a = BuildPartHull(*part, owned_index);
+    const HullMesh b = BuildPartHull(*part, mapped_index);
+    ASSERT_FALSE(a.empty());
+    EXPECT_EQ(a.vertices, b.vertices);
+    EXPECT_EQ(a.triangles, b.triangles);
+  }
+}
+
 TEST(PartHullTest, InsideCornersOfSurfaceVoxelsReachTheCut) {
   // An L-shaped prism (grid units): a floor x in [0.25, 6.25], y in [0.25, 4.75] and a wall x in
   // [4.75, 6.25] up to y = 10.25, z in [0.5, 9.5]. The part is cut at x = 5, y = 6, z = 3 and z =

@@ -52,6 +52,8 @@ class GridPoints {
 
   size_t size() const { return count_; }
   bool empty() const { return count_ == 0; }
+  // Whether the points are mapped on every read (not held).
+  bool mapped() const { return mapped_; }
   Vec3 operator[](size_t i) const { return mapped_ ? frame_.ToGrid(source_[i]) : owned_[i]; }
 
  private:

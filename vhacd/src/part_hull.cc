@@ -136,18 +136,28 @@ HullMesh BuildPartHull(const Part& part, const TriangleIndex& index, const Solid
     std::fill(vstamp.begin(), vstamp.end(), 0);
     mark = 1;
   }
-  // The hull's points by reference, in the order they come: the voxel corners above and the
-  // clipped points are kept in `pts`, the mesh's own vertices are read in place by index (as
-  // copies they were a part's largest array, 24 bytes per point).
+  // The mesh's own vertices are read by index (`refs`, in the order they come, with the voxel
+  // corners above and the clipped points kept in `pts`) for the root, and for every part when the
+  // points are mapped on every read: copied they were the largest array of a large part (24 bytes
+  // per point, against 4). A mesh holding its points copies a part's own (the hull's passes then
+  // read them in order).
+  const bool root = part.cuts.empty() && index.HoldsMesh(lo, hi);
+  const bool by_index = root || mesh.points.mapped();
   const size_t before_surface = pts.size();
   std::vector<uint32_t> refs;
   auto add_own = [&](size_t from) {
+    if (!by_index) return;
     for (size_t i = from; i < pts.size(); ++i) refs.push_back(kHeadRef + static_cast<uint32_t>(i));
   };
+  auto add_vertex = [&](uint32_t v, const Vec3& p) {
+    if (by_index)
+      refs.push_back(v);
+    else
+      pts.push_back(p);
+  };
   add_own(0);
-  if (part.cuts.empty() && index.HoldsMesh(lo, hi)) {
-    // A part that holds the whole mesh (the root): every triangle lies in the box and gives its
-    // vertices, in the order the triangles give them.
+  if (root) {
+    // Every triangle lies in the box and gives its vertices, in the order the triangles give them.
     refs.reserve(before_surface + mesh.points.size());
     index.ForEachInBox(lo, hi, &stamp, mark, [&](uint32_t t) {
       for (uint32_t v : mesh.triangles[t])
@@ -183,7 +193,7 @@ HullMesh BuildPartHull(const Part& part, const TriangleIndex& index, const Solid
         for (int k = 0; k < 3; ++k)
           if (vstamp[tr[k]] != mark) {
             vstamp[tr[k]] = mark;
-            refs.push_back(tr[k]);
+            add_vertex(tr[k], corner[k]);
           }
         return;
       }
@@ -191,9 +201,10 @@ HullMesh BuildPartHull(const Part& part, const TriangleIndex& index, const Solid
       add_own(own);
     });
   }
-  const bool has_surface = refs.size() > before_surface;
+  const bool has_surface = (by_index ? refs.size() : pts.size()) > before_surface;
   HullMesh h;
-  HullStatus status = ComputeConvexHull(pts, mesh.points, refs, -1.0, &h);
+  HullStatus status = by_index ? ComputeConvexHull(pts, mesh.points, refs, -1.0, &h)
+                               : ComputeConvexHull(pts, -1.0, &h);
   std::vector<uint32_t>().swap(refs);
   if (status == HullStatus::kOk && h.Volume() > 1e-3) return h;
   // A sliver along an oriented cut can hold surface voxels whose surface lies across the plane:
