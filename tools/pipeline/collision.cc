@@ -72,9 +72,9 @@ vhacd::MeshView ViewOf(const Mesh& mesh) {
 }
 
 // From this many vertices the decomposition reads the mesh's points in place: their copy in
-// double precision would be its largest array, and beside the render-mesh encode its slower reads
-// cost little wall time (docs/benchmarks.md).
-constexpr size_t kPointsInPlaceFrom = size_t{1} << 21;
+// double precision (and the part hulls' copies) would be a large share of the run's memory, and
+// beside the render-mesh encode part of the slower reads' time is hidden (docs/benchmarks.md).
+constexpr size_t kPointsInPlaceFrom = size_t{1} << 20;
 
 }  // namespace
 

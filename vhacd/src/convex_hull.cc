@@ -101,12 +101,13 @@ class QuickHull {
       uint32_t eye = f0.first;
       double best = -1.0;
       for (uint32_t q = f0.first; q != kNone; q = next_[q]) {
-        const double dd = Dot(f0, q);
+        const double dd = Dot(f0, p_[q]);
         if (dd > best) {
           best = dd;
           eye = q;
         }
       }
+      const Vec3 eye_point = p_[eye];
       ++stamp;
       visible.clear();
       horizon.clear();
@@ -119,7 +120,7 @@ class QuickHull {
           Face& fg = faces_[g];
           if (fg.visible_stamp == stamp) continue;
           if (fg.hidden_stamp != stamp) {
-            if (Above(fg, eye)) {
+            if (Above(fg, eye_point)) {
               fg.visible_stamp = stamp;
               visible.push_back(g);
               continue;
@@ -254,16 +255,18 @@ class QuickHull {
       }
   }
 
-  double Dot(const Face& f, uint32_t q) const { return f.n.dot(p_[q] - f.base); }
-  bool Above(const Face& f, uint32_t q) const { return Dot(f, q) > eps_ * f.nlen; }
+  // Points are passed by value, read once per use: a mesh read in place is mapped on every read.
+  static double Dot(const Face& f, const Vec3& p) { return f.n.dot(p - f.base); }
+  bool Above(const Face& f, const Vec3& p) const { return Dot(f, p) > eps_ * f.nlen; }
 
   void Assign(uint32_t q, size_t begin, size_t end) {
+    const Vec3 p = p_[q];
     double best = 0.0;
     size_t best_f = end;
     for (size_t f = begin; f < end; ++f) {
       const Face& fa = faces_[f];
       if (!fa.alive) continue;
-      const double dd = Dot(fa, q);
+      const double dd = Dot(fa, p);
       if (dd > eps_ * fa.nlen) {
         const double dist = dd / fa.nlen;
         if (best_f == end || dist > best) {
