@@ -175,6 +175,41 @@ TEST(PartHullTest, MappedPointsGiveTheSameHullsAsHeldOnes) {
   }
 }
 
+TEST(PartHullTest, ALargeMeshGivesTheSameHullsReadByIndex) {
+  // The same triangles over the same points, once as a small mesh (a part's points are copied)
+  // and once padded with unused copies of a point to a size whose parts read points by index.
+  const vhacd_test::Mesh sphere = vhacd_test::Sphere(7.0, 64, 32);
+  GridMesh small = vhacd_test::ToGridMesh(sphere);
+  std::vector<Vec3> points;
+  for (size_t i = 0; i < sphere.point_count(); ++i)
+    points.emplace_back(sphere.points[3 * i] + 10.0, sphere.points[3 * i + 1] + 10.0,
+                        sphere.points[3 * i + 2] + 10.0);
+  small.points = GridPoints(points);
+  GridMesh large = small;
+  points.resize(size_t{1} << 18, points[0]);
+  large.points = GridPoints(points);
+  const int dims[3] = {20, 20, 20};
+  Part whole, cut, half;
+  for (int z = 2; z <= 17; ++z)
+    for (int y = 2; y <= 17; ++y)
+      for (int x = 2; x <= 17; ++x) {
+        whole.voxels.push_back(VoxelAt(x, y, z, true));
+        if (x <= 9) half.voxels.push_back(VoxelAt(x, y, z, true));
+      }
+  whole.ComputeBounds();
+  half.ComputeBounds();
+  cut = whole;
+  cut.cuts.push_back(CutPlane{Vec3(1, 1, 0).normalized(), 15.0});
+  const TriangleIndex small_index(small, dims, 4), large_index(large, dims, 4);
+  for (const Part* part : {&whole, &half, &cut}) {
+    const HullMesh a = BuildPartHull(*part, small_index);
+    const HullMesh b = BuildPartHull(*part, large_index);
+    ASSERT_FALSE(a.empty());
+    EXPECT_EQ(a.vertices, b.vertices);
+    EXPECT_EQ(a.triangles, b.triangles);
+  }
+}
+
 TEST(PartHullTest, InsideCornersOfSurfaceVoxelsReachTheCut) {
   // An L-shaped prism (grid units): a floor x in [0.25, 6.25], y in [0.25, 4.75] and a wall x in
   // [4.75, 6.25] up to y = 10.25, z in [0.5, 9.5]. The part is cut at x = 5, y = 6, z = 3 and z =

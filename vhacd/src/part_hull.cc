@@ -87,6 +87,9 @@ void ClipTriangleToBox(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& 
 }
 
 namespace {
+// From this many mesh points on, part hulls read the mesh's points by index.
+constexpr size_t kPartRefsFrom = size_t{1} << 18;
+
 bool CutsContain(const std::vector<CutPlane>& cuts, const Vec3& p) {
   for (const CutPlane& cut : cuts)
     if (cut.n.dot(p) > cut.d) return false;
@@ -137,12 +140,12 @@ HullMesh BuildPartHull(const Part& part, const TriangleIndex& index, const Solid
     mark = 1;
   }
   // The mesh's own vertices are read by index (`refs`, in the order they come, with the voxel
-  // corners above and the clipped points kept in `pts`) for the root, and for every part when the
-  // points are mapped on every read: copied they were the largest array of a large part (24 bytes
-  // per point, against 4). A mesh holding its points copies a part's own (the hull's passes then
-  // read them in order).
+  // corners above and the clipped points kept in `pts`) for the root, and for every part of a
+  // large mesh or of one mapped on every read: copied they were the largest array of a large part
+  // (24 bytes per point, against 4), one per thread. A smaller mesh holding its points copies a
+  // part's own (the hull's passes then read them in order, which is faster).
   const bool root = part.cuts.empty() && index.HoldsMesh(lo, hi);
-  const bool by_index = root || mesh.points.mapped();
+  const bool by_index = root || mesh.points.mapped() || mesh.points.size() >= kPartRefsFrom;
   const size_t before_surface = pts.size();
   std::vector<uint32_t> refs;
   auto add_own = [&](size_t from) {
