@@ -2,6 +2,7 @@
 #include <pybind11/stl.h>
 
 #include <optional>
+#include <utility>
 
 #include "common/file_util.h"
 #include "hullpack/cli_util.h"
@@ -301,7 +302,7 @@ py::dict Collision(const std::string& input, const std::string& output_dir,
       return;
     }
     Result<CollisionExportReport> done =
-        ExportCollision(scene.value(), input, output_dir, o, &observer);
+        ExportCollision(std::move(scene).value(), input, output_dir, o, &observer);
     if (!done.ok()) {
       failed = done.status();
       return;

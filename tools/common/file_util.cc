@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstring>
 #include <random>
+#include <utility>
 
 namespace hullpack {
 
@@ -89,27 +90,59 @@ Status RandomAccessFile::ReadAt(size_t offset, size_t length, char* out) const {
   return Status::Ok();
 }
 
-Status WriteFileAtomically(const std::string& path, const void* data, size_t size) {
+Result<AtomicFileWriter> AtomicFileWriter::Create(const std::string& path) {
   std::random_device rd;
-  const std::string tmp =
+  std::string tmp =
       path + ".tmp-" + std::to_string(getpid()) + "-" + std::to_string(rd() % 1000000);
-  FILE* f = std::fopen(tmp.c_str(), "wb");
+  std::FILE* f = std::fopen(tmp.c_str(), "wb");
   if (!f) return Status(StatusCode::kIoError, path + ": cannot create: " + std::strerror(errno));
-  bool ok = size == 0 || std::fwrite(data, 1, size, f) == size;
-  ok = (std::fflush(f) == 0) && ok;
-  ok = (fsync(fileno(f)) == 0 || errno == EINVAL) && ok;
-  ok = (std::fclose(f) == 0) && ok;
-  if (!ok) {
-    const std::string why = std::strerror(errno);
-    std::remove(tmp.c_str());
-    return Status(StatusCode::kIoError, path + ": write failed: " + why);
+  return AtomicFileWriter(f, path, std::move(tmp));
+}
+
+AtomicFileWriter::AtomicFileWriter(AtomicFileWriter&& other) noexcept
+    : file_(std::exchange(other.file_, nullptr)),
+      path_(std::move(other.path_)),
+      tmp_(std::move(other.tmp_)),
+      failed_(other.failed_),
+      error_(other.error_) {}
+
+AtomicFileWriter::~AtomicFileWriter() {
+  if (file_ == nullptr) return;
+  std::fclose(file_);
+  std::remove(tmp_.c_str());
+}
+
+void AtomicFileWriter::Write(const void* data, size_t size) {
+  if (failed_ || file_ == nullptr || size == 0) return;
+  if (std::fwrite(data, 1, size, file_) != size) {
+    failed_ = true;
+    error_ = errno;
   }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+}
+
+Status AtomicFileWriter::Commit() {
+  if (file_ == nullptr) return Status(StatusCode::kIoError, path_ + ": already written");
+  int error = failed_ ? (error_ != 0 ? error_ : EIO) : 0;  // the first error
+  if (std::fflush(file_) != 0 && error == 0) error = errno;
+  if (fsync(fileno(file_)) != 0 && errno != EINVAL && error == 0) error = errno;
+  if (std::fclose(std::exchange(file_, nullptr)) != 0 && error == 0) error = errno;
+  if (error != 0) {
+    std::remove(tmp_.c_str());
+    return Status(StatusCode::kIoError, path_ + ": write failed: " + std::strerror(error));
+  }
+  if (std::rename(tmp_.c_str(), path_.c_str()) != 0) {
     const std::string why = std::strerror(errno);
-    std::remove(tmp.c_str());
-    return Status(StatusCode::kIoError, path + ": cannot rename into place: " + why);
+    std::remove(tmp_.c_str());
+    return Status(StatusCode::kIoError, path_ + ": cannot rename into place: " + why);
   }
   return Status::Ok();
+}
+
+Status WriteFileAtomically(const std::string& path, const void* data, size_t size) {
+  Result<AtomicFileWriter> file = AtomicFileWriter::Create(path);
+  if (!file.ok()) return file.status();
+  file->Write(data, size);
+  return file->Commit();
 }
 
 Status MakeDirectories(const std::string& path) {

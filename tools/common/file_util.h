@@ -5,6 +5,7 @@
 #define HULLPACK_TOOLS_COMMON_FILE_UTIL_H_
 
 #include <cstdint>
+#include <cstdio>
 #include <string>
 #include <utility>
 #include <vector>
@@ -41,6 +42,33 @@ class RandomAccessFile {
   int fd_ = -1;
   size_t size_ = 0;
   std::string path_;
+};
+
+// A file written in pieces through a temporary file in the same folder, renamed to `path` by
+// Commit: for outputs too large to build in memory first. Destroyed without Commit (an error on
+// the way), it removes the temporary file and leaves `path` as it was.
+class AtomicFileWriter {
+ public:
+  // Fails, naming the path, when the temporary file cannot be created.
+  static Result<AtomicFileWriter> Create(const std::string& path);
+  AtomicFileWriter(AtomicFileWriter&& other) noexcept;
+  AtomicFileWriter& operator=(AtomicFileWriter&&) = delete;
+  AtomicFileWriter(const AtomicFileWriter&) = delete;
+  AtomicFileWriter& operator=(const AtomicFileWriter&) = delete;
+  ~AtomicFileWriter();
+
+  // Appends bytes. After a failed write the later ones are skipped, and Commit reports it.
+  void Write(const void* data, size_t size);
+  // Flushes the file to disk and renames it into place; errors name the path.
+  Status Commit();
+
+ private:
+  AtomicFileWriter(std::FILE* file, std::string path, std::string tmp)
+      : file_(file), path_(std::move(path)), tmp_(std::move(tmp)) {}
+  std::FILE* file_ = nullptr;
+  std::string path_, tmp_;
+  bool failed_ = false;
+  int error_ = 0;
 };
 
 // Writes `size` bytes to `path` through a temporary file in the same folder and a rename.

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <utility>
 
 #include "hullpack/cli_util.h"
 #include "io/scene_io.h"
@@ -83,7 +84,7 @@ int RunCollisionCommand(const std::vector<std::string>& args) {
   ProgressLine progress(!quiet && !json);
   ProgressObserver observer(progress);
   Result<CollisionExportReport> r =
-      ExportCollision(scene.value(), input, output, options, &observer);
+      ExportCollision(std::move(scene).value(), input, output, options, &observer);
   progress.Clear();
   if (!r.ok()) {
     std::fprintf(stderr, "hullpack collision: %s\n", r.status().message().c_str());

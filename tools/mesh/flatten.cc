@@ -1,6 +1,7 @@
 #include "mesh/flatten.h"
 
 #include <cmath>
+#include <utility>
 
 namespace hullpack {
 namespace {
@@ -99,6 +100,32 @@ std::vector<Matrix4> WorldTransforms(const Scene& scene) {
     world[i] = m;
   }
   return world;
+}
+
+Mesh FlattenScene(Scene&& scene) {
+  if (scene.meshes.size() != 1) return FlattenScene(static_cast<const Scene&>(scene));
+  const std::vector<Matrix4> world = WorldTransforms(scene);
+  int shown = 0;
+  for (size_t n = 0; n < scene.nodes.size(); ++n) {
+    for (int m : scene.nodes[n].meshes) {
+      if (m != 0) continue;
+      if (++shown > 1 || !(world[n] == kIdentity))
+        return FlattenScene(static_cast<const Scene&>(scene));
+    }
+  }
+  // What Append keeps of one untransformed instance.
+  Mesh all = std::move(scene.meshes[0]);
+  all.name.clear();
+  all.tangents.clear();
+  if (all.uv_sets.size() > 1) all.uv_sets.resize(1);
+  if (!all.has_skin()) {
+    all.joints.clear();
+    all.weights.clear();
+  }
+  all.morph_targets.clear();
+  all.morph_weights.clear();
+  all.collides = true;
+  return all;
 }
 
 Mesh FlattenScene(const Scene& scene) {

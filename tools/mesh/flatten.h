@@ -21,6 +21,9 @@ std::vector<Matrix4> WorldTransforms(const Scene& scene);
 // instance has it; tangents are not kept; material ids are kept when any instance has them, 0 for
 // the triangles of meshes without.
 Mesh FlattenScene(const Scene& scene);
+// The same, taking the meshes over: a scene of one mesh shown at most once and as stored (a file
+// of one mesh) becomes that mesh without a copy.
+Mesh FlattenScene(Scene&& scene);
 
 }  // namespace hullpack
 

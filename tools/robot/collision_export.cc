@@ -4,6 +4,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <utility>
 
 #include "common/file_util.h"
 #include "mesh/flatten.h"
@@ -41,7 +42,7 @@ bool Exists(const std::string& path) {
 
 }  // namespace
 
-Result<CollisionExportReport> ExportCollision(const Scene& scene, const std::string& input_path,
+Result<CollisionExportReport> ExportCollision(Scene scene, const std::string& input_path,
                                               const std::string& output_dir,
                                               const CollisionExportOptions& options,
                                               vhacd::Observer* observer) {
@@ -59,7 +60,7 @@ Result<CollisionExportReport> ExportCollision(const Scene& scene, const std::str
   if (scene.meshes.empty() || scene.triangle_count() == 0)
     return Status(StatusCode::kInvalidMesh, input_path + ": no triangles");
 
-  Mesh merged = FlattenScene(scene);
+  Mesh merged = FlattenScene(std::move(scene));
   merged.name = SanitizeName(options.name.empty() ? Stem(input_path) : options.name);
   Status valid = ValidateMesh(merged);
   if (!valid.ok()) return Status(valid.code(), input_path + ": " + valid.message());
@@ -96,31 +97,35 @@ Result<CollisionExportReport> ExportCollision(const Scene& scene, const std::str
   model.mass = mass.value();
 
   // Every target is checked before anything is written.
-  std::vector<std::pair<std::string, std::vector<uint8_t>>> files;
   const std::string text = format == RobotFormat::kUrdf   ? WriteUrdf(model)
                            : format == RobotFormat::kMjcf ? WriteMjcf(model)
                                                           : WriteSdf(model);
-  files.emplace_back(dir + "/" + model.visual_file, EncodeMeshFile(merged, format));
+  std::vector<std::pair<std::string, const Mesh*>> mesh_files;
+  mesh_files.emplace_back(dir + "/" + model.visual_file, &merged);
   for (size_t h = 0; h < hulls->hulls.size(); ++h)
-    files.emplace_back(dir + "/" + model.hull_files[h], EncodeMeshFile(hulls->hulls[h], format));
-  // The description last: it never points at a mesh file that was not written.
-  files.emplace_back(report.description, std::vector<uint8_t>(text.begin(), text.end()));
-  for (const auto& file : files) {
-    if (SameFile(file.first, input_path))
+    mesh_files.emplace_back(dir + "/" + model.hull_files[h], &hulls->hulls[h]);
+  std::vector<std::string> targets;
+  for (const auto& file : mesh_files) targets.push_back(file.first);
+  targets.push_back(report.description);
+  for (const std::string& target : targets) {
+    if (SameFile(target, input_path))
       return Status(StatusCode::kInvalidArgument,
-                    file.first + ": is the input; refusing to overwrite it");
-    if (!options.force && Exists(file.first))
-      return Status(StatusCode::kInvalidArgument,
-                    file.first + ": exists (use --force to replace it)");
+                    target + ": is the input; refusing to overwrite it");
+    if (!options.force && Exists(target))
+      return Status(StatusCode::kInvalidArgument, target + ": exists (use --force to replace it)");
   }
   Status made = MakeFolder(dir);
   if (made.ok()) made = MakeFolder(dir + "/meshes");
   if (!made.ok()) return made;
-  for (const auto& file : files) {
-    Status written = WriteFileAtomically(file.first, file.second);
+  for (const auto& file : mesh_files) {
+    Status written = WriteMeshFile(*file.second, format, file.first);
     if (!written.ok()) return written;
     report.files.push_back(file.first);
   }
+  // The description last: it never points at a mesh file that was not written.
+  Status written = WriteFileAtomically(report.description, text.data(), text.size());
+  if (!written.ok()) return written;
+  report.files.push_back(report.description);
   report.hull_count = hulls->hulls.size();
   report.mass = model.mass;
   report.decomposition = std::move(hulls->report);

@@ -41,11 +41,12 @@ struct CollisionExportReport {
   vhacd::Report decomposition;
 };
 
-// Every mesh of `scene` (merged, in their own coordinates: node transforms are not applied) is one
-// rigid body. `input_path` names the input in errors and gives the default name; `output_dir` is
-// created when missing (its parent must exist). Nothing is written unless the decomposition
-// succeeds; each file is written atomically; an existing file is an error unless `force`.
-Result<CollisionExportReport> ExportCollision(const Scene& scene, const std::string& input_path,
+// Every mesh of `scene`, merged in world space (FlattenScene), is one rigid body. The scene is
+// taken by value: moved in, its only mesh becomes the body without a copy. `input_path` names the
+// input in errors and gives the default name; `output_dir` is created when missing (its parent
+// must exist). Nothing is written unless the decomposition succeeds; each file is written
+// atomically; an existing file is an error unless `force`.
+Result<CollisionExportReport> ExportCollision(Scene scene, const std::string& input_path,
                                               const std::string& output_dir,
                                               const CollisionExportOptions& options,
                                               vhacd::Observer* observer = nullptr);

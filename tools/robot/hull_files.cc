@@ -2,11 +2,15 @@
 
 #include <cmath>
 #include <cstring>
+#include <vector>
 
+#include "common/file_util.h"
 #include "io/obj_writer.h"
 
 namespace hullpack {
 namespace {
+
+constexpr size_t kPieceBytes = size_t{1} << 20;
 
 void PutFloat(float value, std::vector<uint8_t>* out) {
   uint32_t bits;
@@ -16,13 +20,13 @@ void PutFloat(float value, std::vector<uint8_t>* out) {
 
 }  // namespace
 
-std::vector<uint8_t> EncodeBinaryStl(const Mesh& mesh) {
+void EncodeBinaryStl(const Mesh& mesh, const ByteSink& sink) {
   std::vector<uint8_t> out(80, 0);
   const char header[] = "binary STL written by hullpack";
   std::memcpy(out.data(), header, sizeof(header) - 1);
   const uint32_t count = static_cast<uint32_t>(mesh.triangle_count());
   for (int i = 0; i < 4; ++i) out.push_back(static_cast<uint8_t>(count >> (8 * i)));
-  out.reserve(out.size() + size_t(count) * 50);
+  out.reserve(kPieceBytes + 50);
   for (size_t t = 0; t < mesh.triangle_count(); ++t) {
     const float* p[3];
     for (int k = 0; k < 3; ++k) p[k] = &mesh.positions[mesh.indices[t * 3 + k] * 3];
@@ -36,17 +40,24 @@ std::vector<uint8_t> EncodeBinaryStl(const Mesh& mesh) {
       for (int i = 0; i < 3; ++i) PutFloat(p[k][i], &out);
     out.push_back(0);
     out.push_back(0);
+    if (out.size() >= kPieceBytes) {
+      sink(out.data(), out.size());
+      out.clear();
+    }
   }
-  return out;
+  if (!out.empty()) sink(out.data(), out.size());
 }
 
-std::vector<uint8_t> EncodeMeshFile(const Mesh& mesh, RobotFormat format) {
-  if (format != RobotFormat::kMjcf) return EncodeBinaryStl(mesh);
-  Scene scene;
-  scene.meshes.push_back(mesh);
-  scene.meshes[0].material_ids.clear();  // no .mtl beside it
-  const std::string text = EncodeObj(scene);
-  return std::vector<uint8_t>(text.begin(), text.end());
+Status WriteMeshFile(const Mesh& mesh, RobotFormat format, const std::string& path) {
+  Result<AtomicFileWriter> file = AtomicFileWriter::Create(path);
+  if (!file.ok()) return file.status();
+  AtomicFileWriter& writer = file.value();
+  if (format != RobotFormat::kMjcf) {
+    EncodeBinaryStl(mesh, [&](const void* data, size_t size) { writer.Write(data, size); });
+  } else {
+    EncodeObjMesh(mesh, [&](std::string_view text) { writer.Write(text.data(), text.size()); });
+  }
+  return writer.Commit();
 }
 
 }  // namespace hullpack

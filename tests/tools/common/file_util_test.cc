@@ -1,5 +1,6 @@
 #include "common/file_util.h"
 
+#include <dirent.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -94,6 +95,58 @@ TEST(ReadFileBytes, ReadsWhatStatCannotSize) {
   std::remove(path.c_str());
   ASSERT_TRUE(read.ok()) << read.status().message();
   EXPECT_EQ(read.value(), bytes);
+}
+
+// Names in `folder` that start with `prefix`.
+std::vector<std::string> NamesStartingWith(const std::string& folder, const std::string& prefix) {
+  std::vector<std::string> names;
+  if (DIR* d = opendir(folder.c_str())) {
+    while (dirent* e = readdir(d))
+      if (std::string(e->d_name).rfind(prefix, 0) == 0) names.push_back(e->d_name);
+    closedir(d);
+  }
+  return names;
+}
+
+TEST(AtomicFileWriter, WritesThePiecesInOrderOnCommit) {
+  const std::string path = TempPath("pieces");
+  ASSERT_TRUE(WriteFileAtomically(path, std::vector<uint8_t>{9, 9}).ok());
+  Result<AtomicFileWriter> file = AtomicFileWriter::Create(path);
+  ASSERT_TRUE(file.ok()) << file.status().message();
+  std::vector<uint8_t> expected;
+  for (int piece = 0; piece < 100; ++piece) {
+    std::vector<uint8_t> bytes(static_cast<size_t>(piece) * 37);
+    for (size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<uint8_t>(piece + i);
+    file->Write(bytes.data(), bytes.size());
+    expected.insert(expected.end(), bytes.begin(), bytes.end());
+  }
+  // The previous file stays whole until the commit.
+  EXPECT_EQ(ReadFileBytes(path).value(), (std::vector<uint8_t>{9, 9}));
+  ASSERT_TRUE(file->Commit().ok());
+  EXPECT_EQ(ReadFileBytes(path).value(), expected);
+  std::remove(path.c_str());
+}
+
+TEST(AtomicFileWriter, WithoutCommitLeavesTheTargetAndNoTemporaryFile) {
+  const std::string path = TempPath("abandoned");
+  ASSERT_TRUE(WriteFileAtomically(path, std::vector<uint8_t>{1, 2, 3}).ok());
+  {
+    Result<AtomicFileWriter> file = AtomicFileWriter::Create(path);
+    ASSERT_TRUE(file.ok());
+    const uint8_t bytes[4] = {4, 5, 6, 7};
+    file->Write(bytes, sizeof(bytes));
+  }
+  EXPECT_EQ(ReadFileBytes(path).value(), (std::vector<uint8_t>{1, 2, 3}));
+  const std::string name = path.substr(path.find_last_of('/') + 1);
+  EXPECT_EQ(NamesStartingWith(::testing::TempDir(), name + ".tmp"), std::vector<std::string>());
+  std::remove(path.c_str());
+}
+
+TEST(AtomicFileWriter, AFolderThatCannotHoldTheFileIsAnErrorNamingThePath) {
+  const std::string path = TempPath("no_such_folder") + "/out.bin";
+  Result<AtomicFileWriter> file = AtomicFileWriter::Create(path);
+  ASSERT_FALSE(file.ok());
+  EXPECT_NE(file.status().message().find(path), std::string::npos);
 }
 
 TEST(ReadFileBytes, MissingFilesAndFoldersAreErrorsNamingThePath) {

@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <string_view>
 
 #include "io/obj_writer.h"
 #include "io/off_format.h"
@@ -62,6 +64,27 @@ TEST(ObjWriter, HullSetIsOneObjectGroupPerHull) {
     EXPECT_EQ(out->meshes[k].name, "hull_" + std::to_string(k));
     ExpectSameGeometry(in.meshes[k], out->meshes[k]);
   }
+}
+
+TEST(ObjWriter, InPiecesTheTextIsTheSame) {
+  const Scene in = TorusScene(400, 200, /*colors=*/true, /*materials=*/true);
+  const std::string whole = EncodeObj(in);
+  std::string joined;
+  size_t pieces = 0;
+  EncodeObj(in, [&](std::string_view piece) {
+    joined.append(piece.data(), piece.size());
+    ++pieces;
+  });
+  EXPECT_GT(pieces, 1u);  // the torus's text is several megabytes
+  EXPECT_EQ(joined, whole);
+  // One mesh alone: the text of a scene of it without materials.
+  Scene alone;
+  alone.meshes = {in.meshes[0]};
+  alone.meshes[0].material_ids.clear();
+  std::string mesh_text;
+  EncodeObjMesh(in.meshes[0],
+                [&](std::string_view piece) { mesh_text.append(piece.data(), piece.size()); });
+  EXPECT_EQ(mesh_text, EncodeObj(alone));
 }
 
 TEST(OffFormat, RoundTripMergesMeshes) {

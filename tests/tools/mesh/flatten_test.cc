@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "test_meshes.h"
@@ -75,6 +76,52 @@ TEST(FlattenSceneTest, MaterialIdsAreKeptWhenAnyMeshHasThemAndZeroElsewhere) {
   for (size_t t = 0; t < per_cube; ++t) {
     EXPECT_EQ(all.material_ids[t], 0u);
     EXPECT_EQ(all.material_ids[per_cube + t], 3u);
+  }
+}
+
+void ExpectSameMesh(const Mesh& a, const Mesh& b) {
+  EXPECT_EQ(a.name, b.name);
+  EXPECT_EQ(a.positions, b.positions);
+  EXPECT_EQ(a.indices, b.indices);
+  EXPECT_EQ(a.normals, b.normals);
+  EXPECT_EQ(a.tangents, b.tangents);
+  EXPECT_EQ(a.uv_sets, b.uv_sets);
+  EXPECT_EQ(a.colors, b.colors);
+  EXPECT_EQ(a.joints, b.joints);
+  EXPECT_EQ(a.weights, b.weights);
+  EXPECT_EQ(a.material_ids, b.material_ids);
+  EXPECT_EQ(a.morph_targets.size(), b.morph_targets.size());
+  EXPECT_EQ(a.morph_weights, b.morph_weights);
+  EXPECT_EQ(a.collides, b.collides);
+}
+
+TEST(FlattenSceneTest, AMovedSceneGivesTheSameMesh) {
+  Mesh rich = CubeWith(true, true, true, true, true, 2);
+  rich.name = "rich";
+  rich.tangents.assign(4 * rich.vertex_count(), 1.0f);
+  rich.morph_targets.resize(1);
+  rich.morph_targets[0].positions.assign(rich.positions.size(), 0.0f);
+  rich.morph_weights = {0.5f};
+  rich.collides = false;
+  Mesh joints_only = UnitCube();
+  joints_only.joints.assign(4 * joints_only.vertex_count(), 1);
+  Matrix4 moved = kIdentity;
+  moved[12] = 3;
+  for (const Mesh& mesh : {rich, joints_only}) {
+    // Not shown, shown once as stored, shown once moved, shown twice; and beside a second mesh.
+    for (int shape = 0; shape < 5; ++shape) {
+      Scene scene;
+      scene.meshes = {mesh};
+      if (shape == 4) scene.meshes.push_back(UnitCube());
+      Node node;
+      node.meshes = {0};
+      if (shape == 2) node.local_transform = moved;
+      if (shape >= 1) scene.nodes.push_back(node);
+      if (shape == 3) scene.nodes.push_back(node);
+      SCOPED_TRACE(shape);
+      const Mesh copied = FlattenScene(scene);
+      ExpectSameMesh(FlattenScene(std::move(scene)), copied);
+    }
   }
 }
 

@@ -64,12 +64,44 @@ TEST(RobotModel, BinaryStlHoldsEveryTriangle) {
   Mesh m;
   m.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
   m.indices = {0, 1, 2};
-  const std::vector<uint8_t> stl = EncodeBinaryStl(m);
+  std::vector<uint8_t> stl;
+  EncodeBinaryStl(m, [&](const void* data, size_t size) {
+    stl.insert(stl.end(), static_cast<const uint8_t*>(data),
+               static_cast<const uint8_t*>(data) + size);
+  });
   ASSERT_EQ(stl.size(), 84u + 50u);
   EXPECT_EQ(stl[80], 1);
   float nz;
   std::memcpy(&nz, &stl[84 + 8], 4);
   EXPECT_EQ(nz, 1.0f);
+}
+
+TEST(RobotModel, BinaryStlOfALargeMeshComesInPiecesThatJoinUp) {
+  Mesh m;
+  const uint32_t n = 60000;  // 3 MB of STL
+  for (uint32_t t = 0; t < n; ++t) {
+    const float x = static_cast<float>(t);
+    const float corners[9] = {x, 0, 0, x + 1, 0, 0, x, 1, 0};
+    m.positions.insert(m.positions.end(), corners, corners + 9);
+    for (uint32_t k = 0; k < 3; ++k) m.indices.push_back(3 * t + k);
+  }
+  std::vector<uint8_t> stl;
+  size_t pieces = 0;
+  EncodeBinaryStl(m, [&](const void* data, size_t size) {
+    stl.insert(stl.end(), static_cast<const uint8_t*>(data),
+               static_cast<const uint8_t*>(data) + size);
+    ++pieces;
+  });
+  EXPECT_GT(pieces, 1u);
+  ASSERT_EQ(stl.size(), 84u + 50u * n);
+  uint32_t count;
+  std::memcpy(&count, &stl[80], 4);
+  EXPECT_EQ(count, n);
+  for (uint32_t t = 0; t < n; ++t) {
+    float x;
+    std::memcpy(&x, &stl[84 + 50 * size_t(t) + 12], 4);  // the first corner's x
+    ASSERT_EQ(x, static_cast<float>(t)) << t;
+  }
 }
 
 }  // namespace
