@@ -1,5 +1,7 @@
 #include "io/scene_io.h"
 
+#include <string_view>
+
 #include "common/file_util.h"
 #include "gltf/glb_writer.h"
 #include "io/assimp_reader.h"
@@ -172,6 +174,13 @@ Status WriteScene(const Scene& scene, const std::string& path) {
   if (format == FileFormat::kUnknown) {
     return Status(StatusCode::kUnknownFormat,
                   path + ": unknown output format (writes .obj .off .wrl .ply .glb)");
+  }
+  if (format == FileFormat::kObj) {
+    // In pieces: a large mesh's text would otherwise be held whole, twice.
+    Result<AtomicFileWriter> file = AtomicFileWriter::Create(path);
+    if (!file.ok()) return file.status();
+    EncodeObj(scene, [&](std::string_view text) { file->Write(text.data(), text.size()); });
+    return file->Commit();
   }
   Result<std::vector<uint8_t>> bytes = EncodeScene(scene, format);
   if (!bytes.ok()) return Status(bytes.status().code(), path + ": " + bytes.status().message());
