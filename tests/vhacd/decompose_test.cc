@@ -83,6 +83,34 @@ double LBlockIoU(const std::vector<vhacd::ConvexHull>& hulls, double scale) {
   return static_cast<double>(inter) / uni;
 }
 
+TEST_P(ModeTest, SeparateObjectsKeepTheirOwnHullsUnderADistanceTarget) {
+  // Six unit boxes in a row, a unit apart: a hull over two neighbours sticks out by half the gap,
+  // within 0.08 of the row's diagonal, yet it would fill the space between them.
+  Mesh row;
+  for (int i = 0; i < 6; ++i) row.Append(vhacd_test::Box(2 * i, 0, 0, 2 * i + 1, 1, 1));
+  vhacd::Parameters p = Fast();
+  p.max_concavity = 0.08;
+  const vhacd::Result r = vhacd::Decompose(row.View(), p);
+  ASSERT_TRUE(r.ok()) << r.message;
+  EXPECT_EQ(r.hulls.size(), 6u);
+  for (int i = 0; i < 6; ++i) {
+    EXPECT_TRUE(vhacd_test::InsideAnyHull(r.hulls, 2 * i + 0.5, 0.5, 0.5, 1e-9)) << i;
+    if (i < 5) EXPECT_FALSE(vhacd_test::InsideAnyHull(r.hulls, 2 * i + 1.5, 0.5, 0.5, 1e-9)) << i;
+  }
+  EXPECT_GT(r.report.volume_iou, 0.9);
+  EXPECT_EQ(vhacd_test::CheckHulls(r.hulls, 1e-9), "");
+  p.num_threads = 1;
+  const vhacd::Result one_thread = vhacd::Decompose(row.View(), p);
+  ASSERT_EQ(one_thread.hulls.size(), r.hulls.size());
+  for (size_t h = 0; h < r.hulls.size(); ++h)
+    EXPECT_EQ(one_thread.hulls[h].points, r.hulls[h].points);
+  // A hull budget still merges across the gaps.
+  p.max_convex_hulls = 3;
+  const vhacd::Result budget = vhacd::Decompose(row.View(), p);
+  ASSERT_TRUE(budget.ok()) << budget.message;
+  EXPECT_EQ(budget.hulls.size(), 3u);
+}
+
 TEST_P(ModeTest, LBlockGivesTwoHullsWithHighIoU) {
   const Mesh l = vhacd_test::LBlock();
   const vhacd::Result r = vhacd::Decompose(l.View(), Fast());

@@ -30,6 +30,28 @@ TEST(MergeTest, MergesTouchingBoxesButNotAnLShape) {
   EXPECT_NEAR(hulls[0].Volume(), 23.5, 1e-9);  // hull of the three boxes
 }
 
+TEST(MergeTest, HullsOfDifferentGroupsMergeOnlyForTheBudget) {
+  Context ctx(nullptr, 2);
+  MergeParams mp;
+  mp.volume0 = 8.0;
+  // Touching boxes (a free merge) of two groups stay apart; of one group they merge.
+  const std::vector<uint32_t> two = {0, 1}, one = {3, 3};
+  std::vector<HullMesh> hulls = {BoxHull(0, 0, 0, 1, 1, 1), BoxHull(1, 0, 0, 2, 1, 1)};
+  mp.groups = &two;
+  ASSERT_TRUE(MergeHulls(&hulls, mp, &ctx));
+  EXPECT_EQ(hulls.size(), 2u);
+  mp.groups = &one;
+  ASSERT_TRUE(MergeHulls(&hulls, mp, &ctx));
+  EXPECT_EQ(hulls.size(), 1u);
+  // A budget merges across groups.
+  hulls = {BoxHull(0, 0, 0, 1, 1, 1), BoxHull(1, 0, 0, 2, 1, 1)};
+  mp.groups = &two;
+  mp.max_hulls = 1;
+  ASSERT_TRUE(MergeHulls(&hulls, mp, &ctx));
+  ASSERT_EQ(hulls.size(), 1u);
+  EXPECT_NEAR(hulls[0].Volume(), 2.0, 1e-12);
+}
+
 TEST(MergeTest, MergedHullContainsBoth) {
   const HullMesh a = BoxHull(0, 0, 0, 1, 1, 1), b = BoxHull(2, 2, 2, 3, 3, 3);
   const HullMesh m = MergedHull(a, b);

@@ -8,6 +8,7 @@
 #include "part_hull.h"
 #include "stick_out.h"
 #include "thread_pool.h"
+#include "voxel_islands.h"
 
 namespace vhacd {
 namespace internal {
@@ -318,7 +319,10 @@ bool ClipRecursively(Part root, const ClipParams& params, Context* ctx, ClipOutp
   weights.volume0 = out->volume0;
 
   std::vector<Part> current;
-  current.push_back(std::move(root));
+  if (params.islands != nullptr && params.islands->count() > 1)
+    current = params.islands->Split(std::move(root));
+  else
+    current.push_back(std::move(root));
   for (int level = 0;; ++level) {
     out->levels = level;
     const size_t n = current.size();

@@ -35,6 +35,8 @@ struct ClipParams {
   // Also try planes along each part's own axes (oriented_cuts.h), kept where they give closer
   // hulls on the exact surface (needs meter and index).
   bool oriented_cuts = false;
+  // When set, the root is first split into these islands (voxel_islands.h): no part spans two.
+  const class VoxelIslands* islands = nullptr;
 };
 
 struct ClipOutput {

@@ -26,6 +26,7 @@
 #include "stick_out.h"
 #include "thread_pool.h"
 #include "vhacd/vhacd.h"
+#include "voxel_islands.h"
 #include "voxelizer.h"
 #include "working_frame.h"
 
@@ -398,6 +399,30 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
   bool oriented = can_orient && params.oriented_cuts == OrientedCuts::kAlways;
   const internal::SolidCorners* hull_corners = exact_count && input.closed ? &corners : nullptr;
   internal::PartHulls part_hulls(root, index, hull_corners);
+  // Under a distance target, separate pieces of a closed mesh's solid start apart and keep their
+  // own hulls (voxel_islands.h), unless their hulls hold more than kIslandShare of the whole's
+  // (clusters: a hull each is no closer than one), there are more than kMaxIslands (a hull each
+  // would outweigh the mesh, and merging them down to a budget compares every pair), or the surface
+  // is open (its voxels are a shell whose pieces may be one sheet's). See vhacd/README.md.
+  constexpr uint32_t kMaxIslands = 256;
+  constexpr double kIslandShare = 0.6;
+  std::unique_ptr<internal::VoxelIslands> islands;
+  if (target && input.closed) {
+    islands.reset(new internal::VoxelIslands(root, grid.dims));
+    const uint32_t count = islands->count();
+    std::string why;
+    if (count > kMaxIslands) {
+      why = "too many, decomposed as one";
+    } else if (count > 1) {
+      const double share = islands->HullShare(root, kIslandShare);
+      if (share > kIslandShare) why = "their hulls overlap, decomposed as one";
+      ctx.Log("the islands' hulls hold " + std::to_string(share) + " of the whole's");
+    }
+    if (count > 1)
+      ctx.Log(std::to_string(count) + " separate pieces of solid (voxel islands): " +
+              (why.empty() ? "decomposed apart" : why));
+    if (count <= 1 || !why.empty()) islands.reset();
+  }
   std::vector<internal::HullMesh> hulls;
   int clip_levels = 0;
   // A run with oriented cuts whose clipping kept none made the slices' parts: it stops there and
@@ -423,6 +448,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     cp.corners = hull_corners;
     cp.part_hulls = &part_hulls;
     cp.oriented_cuts = oriented;
+    cp.islands = islands.get();
     // On an open surface the side is only known per voxel: for max_concavity the exact measure
     // splits only from the second attempt on, kept when it gets closer (on scans with filled
     // holes it multiplied hulls without getting closer); hull_count merges down to N anyway.
@@ -455,9 +481,17 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     if (!internal::ParallelFor(&ctx, clip.parts.size(),
                                [&](size_t i) { hulls[i] = part_hulls.Of(clip.parts[i]); }))
       return Status::kCancelled;
-    hulls.erase(std::remove_if(hulls.begin(), hulls.end(),
-                               [](const internal::HullMesh& h) { return h.empty(); }),
-                hulls.end());
+    std::vector<uint32_t> hull_islands;  // the island of each hull's part
+    {
+      size_t kept = 0;
+      for (size_t i = 0; i < hulls.size(); ++i) {
+        if (hulls[i].empty()) continue;
+        if (islands) hull_islands.push_back(islands->Of(clip.parts[i].voxels[0]));
+        if (kept != i) hulls[kept] = std::move(hulls[i]);
+        ++kept;
+      }
+      hulls.resize(kept);
+    }
     std::vector<internal::Part>().swap(clip.parts);
     r.seconds_hulls = clock.Lap();
 
@@ -495,6 +529,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     mp.max_depth = lim.max_depth;
     mp.meter = meter.get();
     mp.max_stick = lim.max_stick;
+    if (islands) mp.groups = &hull_islands;
     if (!internal::MergeHulls(&hulls, mp, &ctx)) return Status::kCancelled;
     r.seconds_merge = clock.Lap();
 

@@ -51,6 +51,10 @@ bool MergeHulls(std::vector<HullMesh>* hulls_io, const MergeParams& params, Cont
   std::vector<Box> box(n);
   std::vector<char> alive(n, 1);
   std::vector<uint32_t> version(n, 0);
+  // A hull merged over the budget keeps the group of the first of the pair.
+  const std::vector<uint32_t> group = params.groups != nullptr && params.groups->size() == n
+                                          ? *params.groups
+                                          : std::vector<uint32_t>(n, 0);
   for (size_t i = 0; i < n; ++i) {
     vol[i] = hulls[i].Volume();
     box[i] = BoxOf(hulls[i]);
@@ -109,7 +113,8 @@ bool MergeHulls(std::vector<HullMesh>* hulls_io, const MergeParams& params, Cont
       const uint32_t i = pairs[k].first, j = pairs[k].second;
       const double limit =
           params.meter != nullptr ? std::max(0.0, params.max_stick) : params.max_depth;
-      if (cost[k] < params.gamma && (!(use_depth || params.meter) || depth[k] <= limit))
+      if (cost[k] < params.gamma && (!(use_depth || params.meter) || depth[k] <= limit) &&
+          group[i] == group[j])
         under.push({cost[k], 0.0, i, j, version[i], version[j], true});
       if (budget)
         over.push({params.meter ? lower[k]
@@ -122,7 +127,8 @@ bool MergeHulls(std::vector<HullMesh>* hulls_io, const MergeParams& params, Cont
   auto pairs_with = [&](uint32_t h, bool everything) {
     std::vector<std::pair<uint32_t, uint32_t>> pairs;
     for (uint32_t k = 0; k < n; ++k)
-      if (k != h && alive[k] && (everything || BoxGap(box[h], box[k]) <= params.adjacency))
+      if (k != h && alive[k] && (budget || group[h] == group[k]) &&
+          (everything || BoxGap(box[h], box[k]) <= params.adjacency))
         pairs.emplace_back(std::min(h, k), std::max(h, k));
     return pairs;
   };
@@ -130,7 +136,8 @@ bool MergeHulls(std::vector<HullMesh>* hulls_io, const MergeParams& params, Cont
     std::vector<std::pair<uint32_t, uint32_t>> pairs;
     for (uint32_t i = 0; i < n; ++i)
       for (uint32_t j = i + 1; j < n; ++j)
-        if (BoxGap(box[i], box[j]) <= params.adjacency) pairs.emplace_back(i, j);
+        if ((budget || group[i] == group[j]) && BoxGap(box[i], box[j]) <= params.adjacency)
+          pairs.emplace_back(i, j);
     if (!evaluate(pairs)) return false;
   }
   auto valid = [&](const Cand& c) {

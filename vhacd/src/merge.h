@@ -27,6 +27,9 @@ struct MergeParams {
   // sticks out least is merged.
   const class StickOutMeter* meter = nullptr;
   double max_stick = 0.0;
+  // When set, one group per hull (its voxel island): hulls of different groups are merged only to
+  // meet max_hulls, never under gamma.
+  const std::vector<uint32_t>* groups = nullptr;
 };
 
 // cost(i, j) = max(0, |CH(Hi u Hj)| - |Hi| - |Hj|) / volume0; among the pairs with cost < gamma
