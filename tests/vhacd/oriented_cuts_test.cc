@@ -7,20 +7,12 @@
 #include <vector>
 
 #include "shape_gen.h"
+#include "test_grid_mesh.h"
 #include "vhacd/vhacd.h"
 
 namespace vhacd {
 namespace internal {
 namespace {
-
-Voxel MakeVoxel(int x, int y, int z) {
-  Voxel v;
-  v.c[0] = static_cast<uint16_t>(x);
-  v.c[1] = static_cast<uint16_t>(y);
-  v.c[2] = static_cast<uint16_t>(z);
-  v.surface = 0;
-  return v;
-}
 
 // An L of voxels in the xy plane (arms along x and y, 3 thick), 2 voxels deep in z.
 Part VoxelL() {
@@ -28,7 +20,7 @@ Part VoxelL() {
   for (int z = 0; z < 2; ++z)
     for (int y = 0; y < 12; ++y)
       for (int x = 0; x < 12; ++x)
-        if (x < 3 || y < 3) part.voxels.push_back(MakeVoxel(x, y, z));
+        if (x < 3 || y < 3) part.voxels.push_back(vhacd_test::VoxelAt(x, y, z));
   part.ComputeBounds();
   return part;
 }

@@ -13,14 +13,7 @@ namespace vhacd {
 namespace internal {
 namespace {
 
-Voxel VoxelAt(int x, int y, int z, bool surface) {
-  Voxel v;
-  v.c[0] = static_cast<uint16_t>(x);
-  v.c[1] = static_cast<uint16_t>(y);
-  v.c[2] = static_cast<uint16_t>(z);
-  v.surface = surface;
-  return v;
-}
+using vhacd_test::VoxelAt;
 
 TEST(PartHullTest, ClipTriangleToBox) {
   std::vector<Vec3> out;
@@ -137,6 +130,31 @@ TEST(PartHullTest, APartWithCutsHasTheHullOfItsClippedSurface) {
 
 // Mapped on every read (Parameters::points_in_place), the mesh's points are read by index instead
 // of copied into a part's points: the same hulls, bit for bit.
+// BuildPartHull on `a` and on `b` (the same surface held differently) for a whole box of voxels,
+// its half, and the whole under an oriented cut: the hulls must be the same.
+void ExpectSamePartHulls(const GridMesh& a, const GridMesh& b) {
+  const int dims[3] = {20, 20, 20};
+  Part whole, cut, half;
+  for (int z = 2; z <= 17; ++z)
+    for (int y = 2; y <= 17; ++y)
+      for (int x = 2; x <= 17; ++x) {
+        whole.voxels.push_back(VoxelAt(x, y, z, true));
+        if (x <= 9) half.voxels.push_back(VoxelAt(x, y, z, true));
+      }
+  whole.ComputeBounds();
+  half.ComputeBounds();
+  cut = whole;
+  cut.cuts.push_back(CutPlane{Vec3(1, 1, 0).normalized(), 15.0});
+  const TriangleIndex a_index(a, dims, 4), b_index(b, dims, 4);
+  for (const Part* part : {&whole, &half, &cut}) {
+    const HullMesh ha = BuildPartHull(*part, a_index);
+    const HullMesh hb = BuildPartHull(*part, b_index);
+    ASSERT_FALSE(ha.empty());
+    EXPECT_EQ(ha.vertices, hb.vertices);
+    EXPECT_EQ(ha.triangles, hb.triangles);
+  }
+}
+
 TEST(PartHullTest, MappedPointsGiveTheSameHullsAsHeldOnes) {
   const vhacd_test::Mesh sphere = vhacd_test::Sphere(7.0, 64, 32);
   std::vector<double> coords;
@@ -153,26 +171,7 @@ TEST(PartHullTest, MappedPointsGiveTheSameHullsAsHeldOnes) {
   GridMesh owned = vhacd_test::ToGridMesh(sphere), mapped = vhacd_test::ToGridMesh(sphere);
   owned.points = GridPoints(held);
   mapped.points = GridPoints(source, frame);
-  const int dims[3] = {20, 20, 20};
-  Part whole, cut, half;
-  for (int z = 2; z <= 17; ++z)
-    for (int y = 2; y <= 17; ++y)
-      for (int x = 2; x <= 17; ++x) {
-        whole.voxels.push_back(VoxelAt(x, y, z, true));
-        if (x <= 9) half.voxels.push_back(VoxelAt(x, y, z, true));
-      }
-  whole.ComputeBounds();
-  half.ComputeBounds();
-  cut = whole;
-  cut.cuts.push_back(CutPlane{Vec3(1, 1, 0).normalized(), 15.0});
-  const TriangleIndex owned_index(owned, dims, 4), mapped_index(mapped, dims, 4);
-  for (const Part* part : {&whole, &half, &cut}) {
-    const HullMesh a = BuildPartHull(*part, owned_index);
-    const HullMesh b = BuildPartHull(*part, mapped_index);
-    ASSERT_FALSE(a.empty());
-    EXPECT_EQ(a.vertices, b.vertices);
-    EXPECT_EQ(a.triangles, b.triangles);
-  }
+  ExpectSamePartHulls(owned, mapped);
 }
 
 TEST(PartHullTest, ALargeMeshGivesTheSameHullsReadByIndex) {
@@ -188,26 +187,7 @@ TEST(PartHullTest, ALargeMeshGivesTheSameHullsReadByIndex) {
   GridMesh large = small;
   points.resize(size_t{1} << 18, points[0]);
   large.points = GridPoints(points);
-  const int dims[3] = {20, 20, 20};
-  Part whole, cut, half;
-  for (int z = 2; z <= 17; ++z)
-    for (int y = 2; y <= 17; ++y)
-      for (int x = 2; x <= 17; ++x) {
-        whole.voxels.push_back(VoxelAt(x, y, z, true));
-        if (x <= 9) half.voxels.push_back(VoxelAt(x, y, z, true));
-      }
-  whole.ComputeBounds();
-  half.ComputeBounds();
-  cut = whole;
-  cut.cuts.push_back(CutPlane{Vec3(1, 1, 0).normalized(), 15.0});
-  const TriangleIndex small_index(small, dims, 4), large_index(large, dims, 4);
-  for (const Part* part : {&whole, &half, &cut}) {
-    const HullMesh a = BuildPartHull(*part, small_index);
-    const HullMesh b = BuildPartHull(*part, large_index);
-    ASSERT_FALSE(a.empty());
-    EXPECT_EQ(a.vertices, b.vertices);
-    EXPECT_EQ(a.triangles, b.triangles);
-  }
+  ExpectSamePartHulls(small, large);
 }
 
 TEST(PartHullTest, InsideCornersOfSurfaceVoxelsReachTheCut) {

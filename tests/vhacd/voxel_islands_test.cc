@@ -4,37 +4,32 @@
 
 #include <vector>
 
+#include "test_grid_mesh.h"
+
 namespace vhacd {
 namespace internal {
 namespace {
 
-Voxel At(int x, int y, int z, bool surface) {
-  Voxel v;
-  v.c[0] = static_cast<uint16_t>(x);
-  v.c[1] = static_cast<uint16_t>(y);
-  v.c[2] = static_cast<uint16_t>(z);
-  v.surface = surface ? 1 : 0;
-  return v;
-}
+using vhacd_test::VoxelAt;
 
 TEST(VoxelIslandsTest, CornersJoinAndGapsSeparate) {
   Part root;
   // Island 0: a 2x2x2 block and a voxel touching it at a corner only.
   for (int z = 0; z < 2; ++z)
     for (int y = 0; y < 2; ++y)
-      for (int x = 0; x < 2; ++x) root.voxels.push_back(At(x, y, z, x == 0));
-  root.voxels.push_back(At(2, 2, 2, true));
+      for (int x = 0; x < 2; ++x) root.voxels.push_back(VoxelAt(x, y, z, x == 0));
+  root.voxels.push_back(VoxelAt(2, 2, 2, true));
   // Island 1: a line one empty voxel away.
-  for (int x = 4; x < 8; ++x) root.voxels.push_back(At(x, 0, 0, true));
+  for (int x = 4; x < 8; ++x) root.voxels.push_back(VoxelAt(x, 0, 0, true));
   // Island 2: a lone voxel at the grid's far corner.
-  root.voxels.push_back(At(9, 9, 9, false));
+  root.voxels.push_back(VoxelAt(9, 9, 9, false));
   const int dims[3] = {10, 10, 10};
   const VoxelIslands islands(root, dims);
   ASSERT_EQ(islands.count(), 3u);
   EXPECT_EQ(islands.Of(root.voxels[0]), 0u);
-  EXPECT_EQ(islands.Of(At(2, 2, 2, true)), 0u);
-  EXPECT_EQ(islands.Of(At(5, 0, 0, true)), 1u);
-  EXPECT_EQ(islands.Of(At(9, 9, 9, false)), 2u);
+  EXPECT_EQ(islands.Of(VoxelAt(2, 2, 2, true)), 0u);
+  EXPECT_EQ(islands.Of(VoxelAt(5, 0, 0, true)), 1u);
+  EXPECT_EQ(islands.Of(VoxelAt(9, 9, 9, false)), 2u);
   const std::vector<Part> parts = islands.Split(root);
   ASSERT_EQ(parts.size(), 3u);
   EXPECT_EQ(parts[0].voxels.size(), 9u);
@@ -51,8 +46,8 @@ TEST(VoxelIslandsTest, HullShareTellsObjectsApartFromNestedOnes) {
   Part apart;
   for (int y = 0; y < 2; ++y)
     for (int x = 0; x < 2; ++x) {
-      apart.voxels.push_back(At(x, y, 0, true));
-      apart.voxels.push_back(At(10 + x, 10 + y, 0, true));
+      apart.voxels.push_back(VoxelAt(x, y, 0, true));
+      apart.voxels.push_back(VoxelAt(10 + x, 10 + y, 0, true));
     }
   const VoxelIslands two(apart, dims);
   ASSERT_EQ(two.count(), 2u);
@@ -60,14 +55,14 @@ TEST(VoxelIslandsTest, HullShareTellsObjectsApartFromNestedOnes) {
   // A square frame around a lone voxel: the frame's hull is the whole's, so more than all of it.
   Part nested;
   for (int i = 0; i < 9; ++i) {
-    nested.voxels.push_back(At(i, 0, 0, true));
-    nested.voxels.push_back(At(i, 8, 0, true));
+    nested.voxels.push_back(VoxelAt(i, 0, 0, true));
+    nested.voxels.push_back(VoxelAt(i, 8, 0, true));
     if (i > 0 && i < 8) {
-      nested.voxels.push_back(At(0, i, 0, true));
-      nested.voxels.push_back(At(8, i, 0, true));
+      nested.voxels.push_back(VoxelAt(0, i, 0, true));
+      nested.voxels.push_back(VoxelAt(8, i, 0, true));
     }
   }
-  nested.voxels.push_back(At(4, 4, 0, true));
+  nested.voxels.push_back(VoxelAt(4, 4, 0, true));
   const VoxelIslands frame(nested, dims);
   ASSERT_EQ(frame.count(), 2u);
   EXPECT_GT(frame.HullShare(nested, 2.0), 1.0);
@@ -79,7 +74,7 @@ TEST(VoxelIslandsTest, SplitKeepsEachSurfaceVoxelsCell) {
   root.tetra = true;
   const int xs[5] = {0, 1, 5, 6, 7};
   for (int i = 0; i < 5; ++i) {
-    root.voxels.push_back(At(xs[i], 0, 0, i != 1));
+    root.voxels.push_back(VoxelAt(xs[i], 0, 0, i != 1));
     if (i != 1) {
       SurfaceCell c;
       c.volume = 0.1f * static_cast<float>(i + 1);
