@@ -49,6 +49,7 @@ TEST(VoxelIslandsTest, HullShareTellsObjectsApartFromNestedOnes) {
       apart.voxels.push_back(VoxelAt(x, y, 0, true));
       apart.voxels.push_back(VoxelAt(10 + x, 10 + y, 0, true));
     }
+  apart.ComputeBounds();
   const VoxelIslands two(apart, dims);
   ASSERT_EQ(two.count(), 2u);
   EXPECT_LT(two.HullShare(apart, 1.0), 0.25);
@@ -63,6 +64,7 @@ TEST(VoxelIslandsTest, HullShareTellsObjectsApartFromNestedOnes) {
     }
   }
   nested.voxels.push_back(VoxelAt(4, 4, 0, true));
+  nested.ComputeBounds();
   const VoxelIslands frame(nested, dims);
   ASSERT_EQ(frame.count(), 2u);
   EXPECT_GT(frame.HullShare(nested, 2.0), 1.0);

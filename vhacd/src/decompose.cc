@@ -414,6 +414,7 @@ Result DecomposeImpl(const MeshView& view, const Parameters& params, Observer* o
     if (count > kMaxIslands) {
       why = "too many, decomposed as one";
     } else if (count > 1) {
+      root.ComputeBounds();
       const double share = islands->HullShare(root, kIslandShare);
       if (share > kIslandShare) why = "their hulls overlap, decomposed as one";
       ctx.Log("the islands' hulls hold " + std::to_string(share) + " of the whole's");

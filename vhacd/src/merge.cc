@@ -52,9 +52,9 @@ bool MergeHulls(std::vector<HullMesh>* hulls_io, const MergeParams& params, Cont
   std::vector<char> alive(n, 1);
   std::vector<uint32_t> version(n, 0);
   // A hull merged over the budget keeps the group of the first of the pair.
-  const std::vector<uint32_t> group = params.groups != nullptr && params.groups->size() == n
-                                          ? *params.groups
-                                          : std::vector<uint32_t>(n, 0);
+  auto same_group = [&](uint32_t i, uint32_t j) {
+    return params.groups == nullptr || (*params.groups)[i] == (*params.groups)[j];
+  };
   for (size_t i = 0; i < n; ++i) {
     vol[i] = hulls[i].Volume();
     box[i] = BoxOf(hulls[i]);
@@ -114,7 +114,7 @@ bool MergeHulls(std::vector<HullMesh>* hulls_io, const MergeParams& params, Cont
       const double limit =
           params.meter != nullptr ? std::max(0.0, params.max_stick) : params.max_depth;
       if (cost[k] < params.gamma && (!(use_depth || params.meter) || depth[k] <= limit) &&
-          group[i] == group[j])
+          same_group(i, j))
         under.push({cost[k], 0.0, i, j, version[i], version[j], true});
       if (budget)
         over.push({params.meter ? lower[k]
@@ -127,7 +127,7 @@ bool MergeHulls(std::vector<HullMesh>* hulls_io, const MergeParams& params, Cont
   auto pairs_with = [&](uint32_t h, bool everything) {
     std::vector<std::pair<uint32_t, uint32_t>> pairs;
     for (uint32_t k = 0; k < n; ++k)
-      if (k != h && alive[k] && (budget || group[h] == group[k]) &&
+      if (k != h && alive[k] && (budget || same_group(h, k)) &&
           (everything || BoxGap(box[h], box[k]) <= params.adjacency))
         pairs.emplace_back(std::min(h, k), std::max(h, k));
     return pairs;
@@ -136,7 +136,7 @@ bool MergeHulls(std::vector<HullMesh>* hulls_io, const MergeParams& params, Cont
     std::vector<std::pair<uint32_t, uint32_t>> pairs;
     for (uint32_t i = 0; i < n; ++i)
       for (uint32_t j = i + 1; j < n; ++j)
-        if ((budget || group[i] == group[j]) && BoxGap(box[i], box[j]) <= params.adjacency)
+        if ((budget || same_group(i, j)) && BoxGap(box[i], box[j]) <= params.adjacency)
           pairs.emplace_back(i, j);
     if (!evaluate(pairs)) return false;
   }

@@ -27,8 +27,8 @@ struct MergeParams {
   // sticks out least is merged.
   const class StickOutMeter* meter = nullptr;
   double max_stick = 0.0;
-  // When set, one group per hull (its voxel island): hulls of different groups are merged only to
-  // meet max_hulls, never under gamma.
+  // When set, one group per hull (its voxel island; as many as hulls): hulls of different groups
+  // are merged only to meet max_hulls, never under gamma.
   const std::vector<uint32_t>* groups = nullptr;
 };
 

@@ -71,9 +71,7 @@ double VoxelIslands::HullShare(const Part& root, double stop) const {
     HullMesh h;
     return PrimitiveHull(part, points, &h) ? h.Volume() : 0.0;
   };
-  Part whole = root;
-  whole.ComputeBounds();
-  const double all = hull_volume(whole);
+  const double all = hull_volume(root);
   if (!(all > 0)) return 1.0;
   double sum = 0.0;
   for (const Part& island : Split(root)) {

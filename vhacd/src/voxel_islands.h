@@ -31,8 +31,9 @@ class VoxelIslands {
   // in tetrahedron mode their cells) in root's order, with bounds and cell volume computed.
   std::vector<Part> Split(Part root) const;
   // The volume of the islands' own hulls together over that of the hull of `root` (the labelled
-  // set), stopping once past `stop`. Small when the pieces are objects apart; near or above 1 for
-  // clusters of objects closer than a voxel, whose hulls overlap and fill the same space as one.
+  // set, its bounds computed), stopping once past `stop`. Small when the pieces are objects apart;
+  // near or above 1 for clusters of objects closer than a voxel, whose hulls overlap and fill the
+  // same space as one.
   double HullShare(const Part& root, double stop) const;
 
  private:
