@@ -7,10 +7,10 @@ namespace {
 
 constexpr size_t kPieceBytes = size_t{1} << 20;
 
-// Writes meshes into `w`, handing the text to `sink` (when there is one) piece by piece.
+// Writes meshes as OBJ text, handing it to `sink` piece by piece.
 class ObjText {
  public:
-  explicit ObjText(const TextSink* sink) : sink_(sink) { w_ << "# written by hullpack\n"; }
+  explicit ObjText(const TextSink& sink) : sink_(sink) { w_ << "# written by hullpack\n"; }
 
   // `materials`: the scene's, for `usemtl` names; null writes no `usemtl`.
   void AddMesh(const Mesh& m, size_t index, const std::vector<Material>* materials) {
@@ -67,21 +67,20 @@ class ObjText {
     base_ += n;  // OBJ indices are global and 1-based
   }
 
-  // The rest of the text: to the sink, or returned.
-  std::string Finish() {
-    if (sink_ == nullptr) return std::move(w_.str());
-    if (!w_.str().empty()) (*sink_)(w_.str());
-    return std::string();
+  // Hands over the rest of the text.
+  void Finish() {
+    if (!w_.str().empty()) sink_(w_.str());
+    w_.str().clear();
   }
 
  private:
   void Hand() {
-    if (sink_ == nullptr || w_.str().size() < kPieceBytes) return;
-    (*sink_)(w_.str());
+    if (w_.str().size() < kPieceBytes) return;
+    sink_(w_.str());
     w_.str().clear();
   }
 
-  const TextSink* sink_;
+  const TextSink& sink_;
   TextWriter w_;
   uint64_t base_ = 1;
 };
@@ -89,21 +88,20 @@ class ObjText {
 }  // namespace
 
 std::string EncodeObj(const Scene& scene) {
-  ObjText text(nullptr);
-  for (size_t mi = 0; mi < scene.meshes.size(); ++mi)
-    text.AddMesh(scene.meshes[mi], mi, &scene.materials);
-  return text.Finish();
+  std::string text;
+  EncodeObj(scene, [&](std::string_view piece) { text.append(piece.data(), piece.size()); });
+  return text;
 }
 
 void EncodeObj(const Scene& scene, const TextSink& sink) {
-  ObjText text(&sink);
+  ObjText text(sink);
   for (size_t mi = 0; mi < scene.meshes.size(); ++mi)
     text.AddMesh(scene.meshes[mi], mi, &scene.materials);
   text.Finish();
 }
 
 void EncodeObjMesh(const Mesh& mesh, const TextSink& sink) {
-  ObjText text(&sink);
+  ObjText text(sink);
   text.AddMesh(mesh, 0, nullptr);
   text.Finish();
 }
