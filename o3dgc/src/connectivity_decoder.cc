@@ -40,6 +40,7 @@ class Decoder {
       if (front_.empty()) {
         if (!dec.Decode(m_->more_components)) break;
         if (Full()) return Status::kCorrupt;
+        if (count_ > 0) EndComponent();
         uint32_t x, y, z;
         Status s;
         if ((s = VertexRef(dec, &x)) != Status::kOk) return s;
@@ -87,6 +88,8 @@ class Decoder {
     const uint64_t extras = DecodeEG(dec, m_->extra_count);
     if (extras > nt_ - count_) return Status::kCorrupt;
     extras_ = extras;
+    EndComponent();
+    if (extras != 0) components_share_vertices_ = true;
     for (uint64_t i = 0; i < extras; ++i) {
       if (dec.failed()) return Status::kTruncated;
       uint32_t v[3];
@@ -109,6 +112,11 @@ class Decoder {
     counts.resize(front_.num_vertices());
     for (uint32_t v = 0; v < front_.num_vertices(); ++v) counts[v] = front_.degree(v);
     return counts;
+  }
+  // See DecodeConnectivity.
+  std::vector<uint32_t> TakeComponentEnds() {
+    if (components_share_vertices_) component_ends_.clear();
+    return std::move(component_ends_);
   }
   std::vector<uint32_t> TakeOpposite() { return front_.TakeOpposite(nt_); }
   std::vector<uint32_t> TakeOppositeVertices() { return front_.TakeOppositeVertices(nt_); }
@@ -138,7 +146,12 @@ class Decoder {
     const uint64_t d = DecodeEG(dec, m_->other_ref);
     if (d >= front_.num_vertices()) return Status::kCorrupt;
     *c = uint32_t(front_.num_vertices() - 1 - d);
+    components_share_vertices_ |= *c < component_start_;
     return Status::kOk;
+  }
+  O3DGC_NOINLINE void EndComponent() {
+    component_start_ = front_.num_vertices();
+    component_ends_.push_back(component_start_);
   }
 
   O3DGC_INLINE Status VertexRef(ArithmeticDecoder& dec, uint32_t* v) {
@@ -150,6 +163,7 @@ class Decoder {
     const uint64_t d = DecodeEG(dec, m_->start_ref);
     if (d >= front_.num_vertices()) return Status::kCorrupt;
     *v = uint32_t(front_.num_vertices() - 1 - d);
+    components_share_vertices_ = true;  // a part's first triangle reuses an earlier vertex
     return Status::kOk;
   }
 
@@ -178,6 +192,12 @@ class Decoder {
   Front front_;
   bool has_flips_ = false, has_copies_ = false;
   uint64_t extras_ = 0;
+  // One past the last vertex of each part decoded so far (see DecodeConnectivity), the first
+  // vertex of the part being decoded, and whether a triangle used vertices of two parts. (A walk
+  // stays on the front, which holds the current part's gates only: it is empty when a part ends.)
+  std::vector<uint32_t> component_ends_;
+  uint32_t component_start_ = 0;
+  bool components_share_vertices_ = false;
   const bool keep_edges_;
   const bool compact_;  // Front::MakeRoom between steps
 };
@@ -188,7 +208,7 @@ Status DecodeConnectivity(ArithmeticDecoder* dec, size_t num_triangles, size_t m
                           std::vector<uint32_t>* triangles, uint32_t* num_vertices,
                           std::vector<uint32_t>* opposite, std::vector<uint32_t>* opposite_vertices,
                           std::vector<uint32_t>* vertex_triangles, uint32_t minor,
-                          bool compact_front) {
+                          bool compact_front, std::vector<uint32_t>* component_ends) {
   Decoder d(dec, num_triangles, max_vertices, triangles, opposite != nullptr, minor, compact_front);
   const Status s = d.Run();
   *dec = d.decoder();
@@ -196,6 +216,7 @@ Status DecodeConnectivity(ArithmeticDecoder* dec, size_t num_triangles, size_t m
   if (s == Status::kOk && opposite) *opposite = d.TakeOpposite();
   if (s == Status::kOk && opposite_vertices) *opposite_vertices = d.TakeOppositeVertices();
   if (s == Status::kOk && vertex_triangles) *vertex_triangles = d.VertexTriangles();
+  if (s == Status::kOk && component_ends) *component_ends = d.TakeComponentEnds();
   return s;
 }
 

@@ -18,12 +18,15 @@ namespace o3dgc {
 // front: no repeated or degenerate ones), else stays empty. `minor`: the stream's format minor
 // version (0 or 1: see EncodeConnectivity). `compact_front`: the front's closed gates are
 // dropped between steps (Front::MakeRoom; the same result in less memory, see
-// kCompactFrontTriangles).
+// kCompactFrontTriangles). `component_ends` (if not null) receives, for each part the front
+// decoded in turn, one past its last vertex id, when no triangle uses vertices of two parts (then
+// part k's vertices are the ids from the previous end up to its own); else it stays empty.
 Status DecodeConnectivity(ArithmeticDecoder* dec, size_t num_triangles, size_t max_vertices,
                           std::vector<uint32_t>* triangles, uint32_t* num_vertices,
                           std::vector<uint32_t>* opposite, std::vector<uint32_t>* opposite_vertices,
                           std::vector<uint32_t>* vertex_triangles, uint32_t minor,
-                          bool compact_front = false);
+                          bool compact_front = false,
+                          std::vector<uint32_t>* component_ends = nullptr);
 
 // From this many triangles on the decoder compacts the front's gates: without, they take about
 // 56 bytes per triangle (every gate ever opened is kept); with, about the front. On igea (268k

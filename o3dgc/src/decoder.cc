@@ -33,7 +33,7 @@ struct DecodeState {
   size_t nt = 0;
   std::unique_ptr<SideModels> sm{new SideModels};
   // Connectivity, over position vertices.
-  std::vector<uint32_t> tris, opposite, opposite_vertices, vertex_triangles;
+  std::vector<uint32_t> tris, opposite, opposite_vertices, vertex_triangles, component_ends;
   uint32_t nc = 0;
   // Seams: the position vertex of each attribute vertex, the attribute mesh when it differs.
   bool has_seams = false;
@@ -92,7 +92,8 @@ Status DecodeTriangles(DecodeState& st) {
     attribute_wedges |= d.prediction == Prediction::kParallelogram;
   return DecodeConnectivity(&st.dec, st.nt, st.nv, &st.tris, &st.nc,
                             attribute_wedges ? &st.opposite : nullptr, &st.opposite_vertices,
-                            &st.vertex_triangles, st.sh.minor, st.nt >= kCompactFrontTriangles);
+                            &st.vertex_triangles, st.sh.minor, st.nt >= kCompactFrontTriangles,
+                            &st.component_ends);
 }
 
 Status DecodeSeams(DecodeState& st) {
@@ -196,7 +197,8 @@ Status DecodePositions(DecodeState& st, DecodedMesh* m) {
   {
     WedgeTable wedges;
     if (h.position.prediction == Prediction::kParallelogram) {
-      wedges.BuildFromOppositeVertices(st.tris, st.nw, st.opposite_vertices, &st.vertex_triangles);
+      wedges.BuildFromOppositeVertices(st.tris, st.nw, st.opposite_vertices, &st.vertex_triangles,
+                                       &st.component_ends);
     }
     const Status s =
         DecodeQuantized(&st.dec, &wedges, st.nw, 3, h.position.bits, h.position.prediction,

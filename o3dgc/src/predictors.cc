@@ -52,6 +52,7 @@ void WedgeTable::Count(const uint32_t* tri, size_t nt, uint32_t num_vertices,
 
 void WedgeTable::Build(const std::vector<uint32_t>& triangles, uint32_t num_vertices,
                        const std::vector<uint32_t>& opposite, bool verify) {
+  component_ends_ = nullptr;
   const size_t nt = triangles.size() / 3;
   const uint32_t* tri = triangles.data();
   const uint32_t* opp = opposite.size() >= 3 * nt ? opposite.data() : nullptr;
@@ -86,7 +87,9 @@ void WedgeTable::Build(const std::vector<uint32_t>& triangles, uint32_t num_vert
 void WedgeTable::BuildFromOppositeVertices(const std::vector<uint32_t>& triangles,
                                            uint32_t num_vertices,
                                            const std::vector<uint32_t>& opposite_vertices,
-                                           const std::vector<uint32_t>* vertex_triangles) {
+                                           const std::vector<uint32_t>* vertex_triangles,
+                                           const std::vector<uint32_t>* component_ends) {
+  component_ends_ = component_ends;
   const size_t nt = triangles.size() / 3;
   const uint32_t* tri = triangles.data();
   const uint32_t* oppv = opposite_vertices.size() >= 3 * nt ? opposite_vertices.data() : nullptr;
@@ -142,6 +145,16 @@ void CodingOrder::Grow(int level, size_t pushes) {
 }
 
 uint32_t CodingOrder::NextWithoutParallelogram() {
+  // When exactly the vertices below a component end B are coded, the logged visits have no
+  // uncoded neighbour left (no triangle reaches from below B to B and above), so the search
+  // below would find none: it is skipped. (Exactly those: the order enters a component only at
+  // its lowest uncoded id, and none from B on before every vertex below B is coded, so
+  // visited_ == B says it.) On meshes of many parts the search at each part's end walked every
+  // visit of the part.
+  if (const std::vector<uint32_t>* ends = wedges_.component_ends()) {
+    while (component_ < ends->size() && (*ends)[component_] < visited_) ++component_;
+    if (component_ < ends->size() && (*ends)[component_] == visited_) log_size_ = 0;
+  }
   // The level-0 stack would hold, for every visit in order, w then u of each wedge whose u and w
   // were both uncoded then; it is taken from the top, stale entries skipped. A vertex uncoded and
   // without parallelogram now had both uncoded at every visit next to it (else it would have

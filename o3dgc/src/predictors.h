@@ -52,14 +52,20 @@ class WedgeTable {
   // DecodeConnectivity gives it: the non-degenerate triangles at each vertex, zero past its end)
   // spares counting them; non-empty, it promises that no triangle is degenerate (every triangle
   // went through the connectivity front), so the per-triangle checks are skipped too.
+  // `component_ends` (optional, as DecodeConnectivity gives it): ascending vertex ids B such that
+  // no triangle has corners both below B and from B on, for CodingOrder; not copied: it must
+  // outlive the table.
   void BuildFromOppositeVertices(const std::vector<uint32_t>& triangles, uint32_t num_vertices,
                                  const std::vector<uint32_t>& opposite_vertices,
-                                 const std::vector<uint32_t>* vertex_triangles = nullptr);
+                                 const std::vector<uint32_t>* vertex_triangles = nullptr,
+                                 const std::vector<uint32_t>* component_ends = nullptr);
   const Wedge* begin(uint32_t v) const { return wedges_.get() + start_[v]; }
   const Wedge* end(uint32_t v) const { return wedges_.get() + start_[v + 1]; }
   uint32_t num_vertices() const { return uint32_t(start_.size() - 1); }
   size_t num_wedges() const { return start_.empty() ? 0 : start_.back(); }
   uint32_t max_wedges() const { return max_wedges_; }  // the most wedges of one vertex
+  // See BuildFromOppositeVertices; null when not known.
+  const std::vector<uint32_t>* component_ends() const { return component_ends_; }
 
  private:
   // Counts wedges per vertex into start_ (start_[v + 2]) and sizes wedges_; `counts` (optional)
@@ -69,6 +75,7 @@ class WedgeTable {
   std::vector<uint32_t> start_;
   std::unique_ptr<Wedge[]> wedges_;  // every entry is written by Build (no zero fill first)
   uint32_t max_wedges_ = 0;
+  const std::vector<uint32_t>* component_ends_ = nullptr;
 };
 
 // The order in which parallelogram-predicted values are coded, one of two:
@@ -136,6 +143,7 @@ class CodingOrder {
   };
   std::unique_ptr<Visited[]> log_;  // one entry per visit at most
   size_t log_size_ = 0;
+  size_t component_ = 0;  // the first of the wedge table's component ends not below visited_
   // Visit's outputs and scratch, sized by the constructor for the vertex with the most wedges.
   std::vector<const Wedge*> par_;
   std::vector<uint64_t> moved_;  // vertex << 2 | new level, per vertex moved up (kGreedy)

@@ -154,6 +154,68 @@ TEST(Connectivity, WalkStepsAreBounded) {
   }
 }
 
+// The vertex ranges of the parts, as the decoder numbers them: one past each part's last id,
+// when no triangle joins two parts, else none.
+std::vector<uint32_t> DecodedComponentEnds(const std::vector<uint32_t>& tris, uint32_t nv,
+                                           std::vector<uint32_t>* decoded) {
+  std::vector<uint8_t> buf;
+  ConnectivityEncoding enc_out;
+  ArithmeticEncoder enc(&buf);
+  EncodeConnectivity(tris, nv, &enc, &enc_out, false, kFormatMinor);
+  enc.Finish();
+  ArithmeticDecoder dec(buf.data(), buf.size());
+  std::vector<uint32_t> ends;
+  uint32_t dnv = 0;
+  EXPECT_EQ(DecodeConnectivity(&dec, tris.size() / 3, nv, decoded, &dnv, nullptr, nullptr, nullptr,
+                               kFormatMinor, false, &ends),
+            Status::kOk);
+  EXPECT_EQ(dnv, nv);
+  return ends;
+}
+
+// Ascending ends, and no triangle with corners in two of the ranges they bound.
+void ExpectTrianglesWithinRanges(const std::vector<uint32_t>& tris,
+                                 const std::vector<uint32_t>& ends) {
+  EXPECT_TRUE(std::is_sorted(ends.begin(), ends.end()));
+  const auto range = [&](uint32_t v) {
+    return std::upper_bound(ends.begin(), ends.end(), v) - ends.begin();
+  };
+  for (size_t i = 0; i < tris.size() / 3; ++i) {
+    EXPECT_EQ(range(tris[3 * i]), range(tris[3 * i + 1])) << "triangle " << i;
+    EXPECT_EQ(range(tris[3 * i]), range(tris[3 * i + 2])) << "triangle " << i;
+  }
+}
+
+TEST(Connectivity, DisjointPartsGiveTheirVertexRanges) {
+  const o3dgc_test::TestMesh t = o3dgc_test::Concatenated(
+      {o3dgc_test::Torus(12, 8), o3dgc_test::Grid(6, 5), o3dgc_test::Sphere(10, 7)});
+  std::vector<uint32_t> decoded;
+  const std::vector<uint32_t> ends = DecodedComponentEnds(t.indices, uint32_t(t.nv()), &decoded);
+  ASSERT_EQ(ends.size(), 3u);
+  EXPECT_EQ(ends.back(), t.nv());
+  ExpectTrianglesWithinRanges(decoded, ends);
+}
+
+TEST(Connectivity, PartsJoinedAtAVertexGiveNoRanges) {
+  // Two grids sharing one corner vertex: the second part's triangles reuse a vertex of the first.
+  o3dgc_test::TestMesh t =
+      o3dgc_test::Concatenated({o3dgc_test::Grid(4, 4), o3dgc_test::Grid(4, 4)});
+  const uint32_t second = 25;  // the first vertex of the second grid
+  for (size_t i = 3 * 32; i < t.indices.size(); ++i) {
+    if (t.indices[i] == second) t.indices[i] = 0;
+  }
+  std::vector<uint32_t> tris;
+  for (const uint32_t v : t.indices) tris.push_back(v > second ? v - 1 : v);
+  std::vector<uint32_t> decoded;
+  EXPECT_TRUE(DecodedComponentEnds(tris, uint32_t(t.nv() - 1), &decoded).empty());
+  // A non-manifold mesh with a separate component and duplicated triangles.
+  std::vector<uint32_t> awkward = o3dgc_test::Awkward().indices;
+  for (auto& v : awkward) {
+    if (v == 11) v = 9;
+  }
+  ExpectTrianglesWithinRanges(decoded, DecodedComponentEnds(awkward, 10, &decoded));
+}
+
 TEST(Connectivity, NonManifoldFlippedDuplicatedDegenerate) {
   const auto a = o3dgc_test::Awkward();
   // Awkward() references all but vertices 9 and 10; renumber to drop them.

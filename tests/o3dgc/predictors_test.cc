@@ -84,6 +84,30 @@ TEST(CodingOrder, GreedyOrderVisitsEveryVertexOnceAndFindsMoreParallelograms) {
   EXPECT_GT(greedy, size_t(2 * n) * 9 / 10);
 }
 
+// Component ends only spare the search for a next vertex when a part is done: the greedy order
+// is the same with them as without, on parts with boundaries (searches mid-part) and closed ones.
+TEST(CodingOrder, ComponentEndsDoNotChangeTheGreedyOrder) {
+  std::vector<uint32_t> ends;
+  const o3dgc_test::TestMesh t = o3dgc_test::Concatenated(
+      {o3dgc_test::Grid(7, 4), o3dgc_test::Torus(10, 6), o3dgc_test::PocketPlate(2, 1),
+       o3dgc_test::Grid(1, 1), o3dgc_test::Sphere(8, 5)},
+      &ends);
+  const std::vector<uint32_t> corners = o3dgc_test::OppositeCorners(t.indices);
+  std::vector<uint32_t> opposite_vertices(corners.size(), 0xFFFFFFFFu);
+  for (size_t c = 0; c < corners.size(); ++c) {
+    if (corners[c] != 0xFFFFFFFFu) opposite_vertices[c] = t.indices[corners[c]];
+  }
+  WedgeTable with, without;
+  with.BuildFromOppositeVertices(t.indices, uint32_t(t.nv()), opposite_vertices, nullptr, &ends);
+  without.BuildFromOppositeVertices(t.indices, uint32_t(t.nv()), opposite_vertices);
+  ASSERT_EQ(with.component_ends(), &ends);
+  EXPECT_EQ(without.component_ends(), nullptr);
+  size_t p_with = 0, p_without = 0;
+  EXPECT_EQ(Traverse(with, CodingOrder::kGreedy, &p_with),
+            Traverse(without, CodingOrder::kGreedy, &p_without));
+  EXPECT_EQ(p_with, p_without);
+}
+
 TEST(CodingOrder, EmptyTable) {
   const WedgeTable wedges = WedgesOf(o3dgc_test::TestMesh());
   for (const CodingOrder::Kind kind : {CodingOrder::kGreedy, CodingOrder::kVertexId}) {

@@ -233,6 +233,22 @@ inline TestMesh PocketPlate(int nx, int ny) {
   return t;
 }
 
+// The meshes side by side in one mesh, each part's vertex ids after the previous part's;
+// `ends` (optional) receives one past each part's last id.
+inline TestMesh Concatenated(const std::vector<TestMesh>& parts,
+                             std::vector<uint32_t>* ends = nullptr) {
+  TestMesh t;
+  for (const TestMesh& part : parts) {
+    const uint32_t base = uint32_t(t.nv());
+    for (size_t i = 0; i < part.positions.size(); ++i) {
+      t.positions.push_back(part.positions[i] + (i % 3 == 0 ? 3.0f * float(base) : 0.0f));
+    }
+    for (const uint32_t v : part.indices) t.indices.push_back(base + v);
+    if (ends) ends->push_back(uint32_t(t.nv()));
+  }
+  return t;
+}
+
 // Sorted multiset of triangles up to rotation (winding kept), over vertex positions.
 inline std::vector<std::array<float, 9>> TriangleSet(const std::vector<float>& p,
                                                      const std::vector<uint32_t>& idx) {
