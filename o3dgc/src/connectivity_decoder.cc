@@ -40,7 +40,7 @@ class Decoder {
       if (front_.empty()) {
         if (!dec.Decode(m_->more_components)) break;
         if (Full()) return Status::kCorrupt;
-        if (count_ > 0) EndComponent();
+        components_.StartPart(front_.num_vertices());
         uint32_t x, y, z;
         Status s;
         if ((s = VertexRef(dec, &x)) != Status::kOk) return s;
@@ -88,8 +88,7 @@ class Decoder {
     const uint64_t extras = DecodeEG(dec, m_->extra_count);
     if (extras > nt_ - count_) return Status::kCorrupt;
     extras_ = extras;
-    EndComponent();
-    if (extras != 0) components_share_vertices_ = true;
+    if (extras != 0) components_.Share();
     for (uint64_t i = 0; i < extras; ++i) {
       if (dec.failed()) return Status::kTruncated;
       uint32_t v[3];
@@ -114,10 +113,7 @@ class Decoder {
     return counts;
   }
   // See DecodeConnectivity.
-  std::vector<uint32_t> TakeComponentEnds() {
-    if (components_share_vertices_) component_ends_.clear();
-    return std::move(component_ends_);
-  }
+  std::vector<uint32_t> TakeComponentEnds() { return components_.Finish(front_.num_vertices()); }
   std::vector<uint32_t> TakeOpposite() { return front_.TakeOpposite(nt_); }
   std::vector<uint32_t> TakeOppositeVertices() { return front_.TakeOppositeVertices(nt_); }
   const ArithmeticDecoder& decoder() const { return dec_; }
@@ -146,12 +142,8 @@ class Decoder {
     const uint64_t d = DecodeEG(dec, m_->other_ref);
     if (d >= front_.num_vertices()) return Status::kCorrupt;
     *c = uint32_t(front_.num_vertices() - 1 - d);
-    components_share_vertices_ |= *c < component_start_;
+    components_.UseEarlier(*c);
     return Status::kOk;
-  }
-  O3DGC_NOINLINE void EndComponent() {
-    component_start_ = front_.num_vertices();
-    component_ends_.push_back(component_start_);
   }
 
   O3DGC_INLINE Status VertexRef(ArithmeticDecoder& dec, uint32_t* v) {
@@ -163,7 +155,7 @@ class Decoder {
     const uint64_t d = DecodeEG(dec, m_->start_ref);
     if (d >= front_.num_vertices()) return Status::kCorrupt;
     *v = uint32_t(front_.num_vertices() - 1 - d);
-    components_share_vertices_ = true;  // a part's first triangle reuses an earlier vertex
+    components_.UseEarlier(*v);
     return Status::kOk;
   }
 
@@ -192,12 +184,7 @@ class Decoder {
   Front front_;
   bool has_flips_ = false, has_copies_ = false;
   uint64_t extras_ = 0;
-  // One past the last vertex of each part decoded so far (see DecodeConnectivity), the first
-  // vertex of the part being decoded, and whether a triangle used vertices of two parts. (A walk
-  // stays on the front, which holds the current part's gates only: it is empty when a part ends.)
-  std::vector<uint32_t> component_ends_;
-  uint32_t component_start_ = 0;
-  bool components_share_vertices_ = false;
+  ComponentEnds components_;
   const bool keep_edges_;
   const bool compact_;  // Front::MakeRoom between steps
 };

@@ -74,6 +74,7 @@ class Encoder {
           break;
         }
         enc_.Encode(1, m_->more_components);
+        components_.StartPart(front_.num_vertices());
         const size_t t = scan;
         visited_[t] = 1;
         const uint32_t x = CodeVertexRef(tris_[3 * t]);
@@ -153,6 +154,7 @@ class Encoder {
     }
     // Degenerate triangles, with explicit references.
     EncodeEG(enc_, m_->extra_count, degenerate_.size());
+    if (!degenerate_.empty()) components_.Share();
     for (uint32_t t : degenerate_) {
       const uint32_t x = CodeVertexRef(tris_[3 * t]);
       const uint32_t y = CodeVertexRef(tris_[3 * t + 1]);
@@ -161,6 +163,7 @@ class Encoder {
     }
     out_.opposite = front_.TakeOpposite(nt_);
     out_.opposite_vertices = front_.TakeOppositeVertices(nt_);
+    out_.component_ends = components_.Finish(front_.num_vertices());
     if (!has_copies_ && degenerate_.empty()) {
       out_.vertex_triangles.resize(front_.num_vertices());
       for (uint32_t v = 0; v < front_.num_vertices(); ++v)
@@ -308,6 +311,7 @@ class Encoder {
       }
     }
     EncodeEG(enc_, m_->other_ref, front_.num_vertices() - 1 - c);
+    components_.UseEarlier(c);
   }
 
   uint32_t CodeVertexRef(uint32_t old) {
@@ -318,6 +322,7 @@ class Encoder {
     }
     enc_.Encode(0, m_->start_new);
     EncodeEG(enc_, m_->start_ref, front_.num_vertices() - 1 - v);
+    components_.UseEarlier(v);
     return v;
   }
 
@@ -351,6 +356,7 @@ class Encoder {
   Front front_;
   std::vector<uint8_t> kind_, visited_;
   std::vector<uint32_t> first_copy_, next_copy_, degenerate_;
+  ComponentEnds components_;
   std::vector<uint32_t> vt_start_, vt_;
   std::vector<uint32_t> new_of_old_;
   bool has_flips_ = false, has_copies_ = false;

@@ -27,6 +27,9 @@ struct ConnectivityEncoding {
   // Triangles at each new vertex when every triangle went through the front (no repeated or
   // degenerate ones), else empty (see DecodeConnectivity).
   std::vector<uint32_t> vertex_triangles;
+  // One past each part's last new vertex id, when no triangle joins two parts (see
+  // DecodeConnectivity's component_ends), else empty.
+  std::vector<uint32_t> component_ends;
 };
 
 // `triangles`: 3 * num_triangles vertex ids < num_vertices, every vertex referenced at least once.

@@ -66,6 +66,36 @@ struct ConnectivityModels {
   EGModel walk_steps;
 };
 
+// The vertex ranges of the parts the front codes one after another, kept alike by the encoder and
+// the decoder: part k's vertices are the ids from the end of part k - 1 up to its own end, unless
+// a triangle uses vertices of two parts (a part's first triangle reuses an earlier vertex, a back
+// reference reaches below the part's first vertex, or there are extra triangles); then there are
+// none. (A walk stays on the front, which holds the current part's gates only: it is empty when a
+// part ends.)
+class ComponentEnds {
+ public:
+  // A part starts; `num_vertices` vertices are coded before it.
+  O3DGC_NOINLINE void StartPart(uint32_t num_vertices) {
+    if (started_) ends_.push_back(num_vertices);
+    started_ = true;
+    start_ = num_vertices;
+  }
+  // A triangle of the current part uses the earlier vertex v.
+  void UseEarlier(uint32_t v) { shared_ |= v < start_; }
+  void Share() { shared_ = true; }
+  // After the last part, `num_vertices` in all: one past each part's last vertex id, or nothing.
+  std::vector<uint32_t> Finish(uint32_t num_vertices) {
+    if (shared_) return {};
+    if (started_) ends_.push_back(num_vertices);
+    return std::move(ends_);
+  }
+
+ private:
+  std::vector<uint32_t> ends_;
+  uint32_t start_ = 0;
+  bool started_ = false, shared_ = false;
+};
+
 class Front {
  public:
   struct Gate {

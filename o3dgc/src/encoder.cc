@@ -463,7 +463,7 @@ void FinishPrepare(Prepared& st) {
   ConnectivityEncoding& conn = st.conn;
   if (st.h.position.prediction == Prediction::kParallelogram) {
     st.wedges.BuildFromOppositeVertices(conn.triangles, st.nw, conn.opposite_vertices,
-                                        &conn.vertex_triangles);
+                                        &conn.vertex_triangles, &conn.component_ends);
   }
   Release(conn.triangles);
   Release(conn.opposite_vertices);

@@ -73,11 +73,12 @@ void RoundTrip(const std::vector<uint32_t>& tris, uint32_t nv, size_t* bytes = n
     ASSERT_EQ(enc_out.old_of_new.size(), nv);
     ExpectCopiesFollowTheirPrimary(tris, enc_out.source);
     ArithmeticDecoder dec(buf.data(), buf.size());
-    std::vector<uint32_t> out, opposite, opposite_vertices;
+    std::vector<uint32_t> out, opposite, opposite_vertices, component_ends;
     uint32_t dnv = 0;
     ASSERT_EQ(DecodeConnectivity(&dec, tris.size() / 3, nv, &out, &dnv, &opposite,
-                                 &opposite_vertices, nullptr, minor),
+                                 &opposite_vertices, nullptr, minor, false, &component_ends),
               Status::kOk);
+    EXPECT_EQ(component_ends, enc_out.component_ends);  // the encoder keeps the same ranges
     {
       // With the front's gates compacted between steps: the same triangles and neighbours.
       ArithmeticDecoder again(buf.data(), buf.size());
@@ -189,6 +190,7 @@ void ExpectTrianglesWithinRanges(const std::vector<uint32_t>& tris,
 TEST(Connectivity, DisjointPartsGiveTheirVertexRanges) {
   const o3dgc_test::TestMesh t = o3dgc_test::Concatenated(
       {o3dgc_test::Torus(12, 8), o3dgc_test::Grid(6, 5), o3dgc_test::Sphere(10, 7)});
+  RoundTrip(t.indices, uint32_t(t.nv()));  // the encoder's ranges are the decoder's
   std::vector<uint32_t> decoded;
   const std::vector<uint32_t> ends = DecodedComponentEnds(t.indices, uint32_t(t.nv()), &decoded);
   ASSERT_EQ(ends.size(), 3u);
