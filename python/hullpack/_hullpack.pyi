@@ -39,6 +39,7 @@ def decompose(
     max_concavity: Optional[float] = None,
     hulls: Optional[int] = None,
     min_opening: Optional[float] = None,
+    points_in_place: Optional[bool] = None,
     # HACD only (method="hacd").
     target_triangles: Optional[int] = None,
     scale_factor: Optional[float] = None,
