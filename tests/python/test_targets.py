@@ -100,18 +100,6 @@ class PackTargets(unittest.TestCase):
         self.assertGreaterEqual(r["meshes"][0]["hull_count"], 2)
         self.assertLessEqual(r["meshes"][0]["hull_concavity"], 0.05)
 
-    def test_points_in_place_gives_the_same_hulls(self):
-        v, f = meshes.l_block()
-        copied, _ = hullpack.decompose(v, f, max_concavity=0.05, compute_report=False)
-        in_place, _ = hullpack.decompose(v, f, max_concavity=0.05, compute_report=False,
-                                         points_in_place=True)
-        self.assertEqual(len(in_place), len(copied))
-        for (av, af), (bv, bf) in zip(in_place, copied):
-            np.testing.assert_array_equal(av, bv)
-            np.testing.assert_array_equal(af, bf)
-        with self.assertRaisesRegex(ValueError, "points_in_place"):
-            hullpack.decompose(v, f, method="hacd", points_in_place=True)
-
     def test_bad_values_name_the_keyword(self):
         for value in (0, -2, 100001, "many", "", 2.5, True):
             with self.subTest(hulls=value):
