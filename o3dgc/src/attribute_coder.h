@@ -171,15 +171,19 @@ inline bool HasLowBitsChoice(Prediction mode, uint32_t n, int dim, bool texcoord
 // `wedges` (needed for kParallelogram) gives the predictions and, with `order`, the coding order;
 // other modes code the vertices in id order. `geometry` (optional, 3 doubles per vertex): with
 // dim == 2 and kParallelogram, texture coordinates are predicted from the shape (PredictTexCoord)
-// instead of parallelograms.
+// instead of parallelograms. `expect_selection`: whether 3-component parallelogram-predicted
+// values will most likely use the parallelogram selection (EstimatePositionBits tells); right, the
+// encoder takes one pass over the mesh to find the residuals instead of two. The bytes are the
+// same either way.
 void EncodeQuantized(ArithmeticEncoder* enc, const WedgeTable* wedges,
                      const std::vector<int32_t>& q, int dim, int bits, Prediction mode,
                      CodingOrder::Kind order, const std::vector<double>* geometry = nullptr,
-                     LowBits low_bits = LowBits::kNoFlag);
+                     LowBits low_bits = LowBits::kNoFlag, bool expect_selection = true);
 // Estimated bits of 3-component parallelogram-predicted values coded in `order` (nothing coded):
-// the encoder's choice between the two orders (EncodeParams::auto_fast_decode).
+// the encoder's choice between the two orders (EncodeParams::auto_fast_decode). `selects` (if
+// not null) receives whether they would use the parallelogram selection.
 double EstimatePositionBits(const WedgeTable& wedges, const std::vector<int32_t>& q, int bits,
-                            CodingOrder::Kind order);
+                            CodingOrder::Kind order, bool* selects = nullptr);
 Status DecodeQuantized(ArithmeticDecoder* dec, const WedgeTable* wedges, uint32_t n, int dim,
                        int bits, Prediction mode, CodingOrder::Kind order, std::vector<int32_t>* q,
                        const std::vector<double>* geometry = nullptr, bool low_bits_flag = false);

@@ -85,11 +85,14 @@ namespace {
 
 // The multi-parallelogram loop for kDim components (mirror of DecodeParallelogram). The residuals
 // are found first, in coding order, then coded: on large meshes the class shifts they select are
-// sent before them. With `estimate`, nothing is coded: *estimate receives the estimated bits.
+// sent before them. With `estimate`, nothing is coded: *estimate receives the estimated bits and
+// *selects (if not null) whether the selection would be used. `expect_selection`: see
+// EncodeQuantized.
 template <int kDim, bool kRawLow>
 void EncodeParallelogram(ArithmeticEncoder* enc, const WedgeTable& wedges, CodingOrder::Kind kind,
                          int64_t maxq, int coarse, ResidualModels& models, const int32_t* q,
-                         uint32_t* mags, double* estimate = nullptr) {
+                         uint32_t* mags, bool expect_selection, double* estimate = nullptr,
+                         bool* selects = nullptr) {
   // One per vertex of the mesh, kept until coded: small. Values and clamped predictions lie in
   // [0, maxq] with maxq < 2^30, so a residual fits 32 bits.
   struct Vertex {
@@ -168,17 +171,22 @@ void EncodeParallelogram(ArithmeticEncoder* enc, const WedgeTable& wedges, Codin
       }
     }
   };
+  // Whether the selection pays does not depend on the contexts (the bits are estimated from the
+  // residuals' lengths and the symbols' counts), so the first pass may assume either; a wrong
+  // assumption costs a second pass, never other bytes.
   double combined_bits, selected_bits;
-  analyse(kDim == 3, &combined_bits, &selected_bits);
+  const bool assumed = kDim == 3 && expect_selection;
+  analyse(assumed, &combined_bits, &selected_bits);
   // Selection costs decoding time (a symbol per vertex: 5-8 % on bunny): on large meshes, where
   // decoding time matters (see RawLowBits), it is used only when it spares a tenth of the
   // estimated bits (CAD parts: 25-70 %; smooth scans: 1-9 %), on smaller ones from 2 %.
   const bool select = kDim == 3 && selected_bits < (kRawLow ? 0.90 : 0.98) * combined_bits;
   if (estimate) {
     *estimate = select ? selected_bits : combined_bits;
+    if (selects) *selects = select;
     return;
   }
-  if (kDim == 3 && !select) analyse(false, &combined_bits, &selected_bits);
+  if (select != assumed) analyse(select, &combined_bits, &selected_bits);
   enc->EncodeBits(select ? 1 : 0, 1);
   ClassShifts shifts;
   if (kRawLow) {
@@ -212,18 +220,21 @@ void EncodeParallelogram(ArithmeticEncoder* enc, const WedgeTable& wedges, Codin
 template <int kDim>
 void EncodeParallelogramFor(bool raw, ArithmeticEncoder* enc, const WedgeTable& wedges,
                             CodingOrder::Kind kind, int64_t maxq, int coarse,
-                            ResidualModels& models, const int32_t* q, uint32_t* mags) {
+                            ResidualModels& models, const int32_t* q, uint32_t* mags,
+                            bool expect_selection) {
   if (raw) {
-    EncodeParallelogram<kDim, true>(enc, wedges, kind, maxq, coarse, models, q, mags);
+    EncodeParallelogram<kDim, true>(enc, wedges, kind, maxq, coarse, models, q, mags,
+                                    expect_selection);
   } else {
-    EncodeParallelogram<kDim, false>(enc, wedges, kind, maxq, coarse, models, q, mags);
+    EncodeParallelogram<kDim, false>(enc, wedges, kind, maxq, coarse, models, q, mags,
+                                     expect_selection);
   }
 }
 
 }  // namespace
 
 double EstimatePositionBits(const WedgeTable& wedges, const std::vector<int32_t>& q, int bits,
-                            CodingOrder::Kind order) {
+                            CodingOrder::Kind order, bool* selects) {
   const uint32_t n = uint32_t(q.size() / 3);
   std::unique_ptr<ResidualModels> models(new ResidualModels(3, kResidualKinds));
   std::vector<uint32_t> mags(n, 0);
@@ -232,10 +243,10 @@ double EstimatePositionBits(const WedgeTable& wedges, const std::vector<int32_t>
   double estimate = 0;
   if (RawLowBits(n)) {
     EncodeParallelogram<3, true>(nullptr, wedges, order, maxq, coarse, *models, q.data(),
-                                 mags.data(), &estimate);
+                                 mags.data(), true, &estimate, selects);
   } else {
     EncodeParallelogram<3, false>(nullptr, wedges, order, maxq, coarse, *models, q.data(),
-                                  mags.data(), &estimate);
+                                  mags.data(), true, &estimate, selects);
   }
   return estimate;
 }
@@ -243,7 +254,7 @@ double EstimatePositionBits(const WedgeTable& wedges, const std::vector<int32_t>
 void EncodeQuantized(ArithmeticEncoder* enc, const WedgeTable* wedges,
                      const std::vector<int32_t>& q, int dim, int bits, Prediction mode,
                      CodingOrder::Kind order_kind, const std::vector<double>* geometry,
-                     LowBits low_bits) {
+                     LowBits low_bits, bool expect_selection) {
   const uint32_t n = uint32_t(q.size() / size_t(dim));
   if (mode == Prediction::kNone) {
     for (int32_t v : q) enc->EncodeBits(uint32_t(v), bits);
@@ -289,16 +300,16 @@ void EncodeQuantized(ArithmeticEncoder* enc, const WedgeTable* wedges,
     switch (dim) {
       case 1:
         return EncodeParallelogramFor<1>(raw, enc, *wedges, order_kind, maxq, coarse, *models,
-                                         q.data(), mags.data());
+                                         q.data(), mags.data(), expect_selection);
       case 2:
         return EncodeParallelogramFor<2>(raw, enc, *wedges, order_kind, maxq, coarse, *models,
-                                         q.data(), mags.data());
+                                         q.data(), mags.data(), expect_selection);
       case 3:
         return EncodeParallelogramFor<3>(raw, enc, *wedges, order_kind, maxq, coarse, *models,
-                                         q.data(), mags.data());
+                                         q.data(), mags.data(), expect_selection);
       default:
         return EncodeParallelogramFor<4>(raw, enc, *wedges, order_kind, maxq, coarse, *models,
-                                         q.data(), mags.data());
+                                         q.data(), mags.data(), expect_selection);
     }
   }
   CodingOrder order(*wedges, order_kind);

@@ -497,6 +497,9 @@ void EncodePositions(GridState& st) {
   }
   bool coded = false;  // the positions are in the stream already (auto_fast_decode)
   const WedgeTable& wedges = pre.wedges;
+  // Whether each order uses the parallelogram selection, when its estimate tells (see
+  // EncodeQuantized's expect_selection).
+  bool selects[2] = {true, true};
   if (!fast_decode && params.auto_fast_decode &&
       h.position.prediction == Prediction::kParallelogram && RawLowBits(nw)) {
     // The bytes of the positions alone in each order (see EncodeParams::auto_fast_decode). The
@@ -504,12 +507,13 @@ void EncodePositions(GridState& st) {
     // larger (CAD parts: 1.7-2.5x, igea 1.10x); they are too coarse to decide the close ones
     // (bunny: +0.7 % estimated, +4 % coded; a noisy scan: +0.6 %, +2.4 %).
     auto bits_in = [&](CodingOrder::Kind kind) {
-      return EstimatePositionBits(wedges, qpos, h.position.bits, kind);
+      return EstimatePositionBits(wedges, qpos, h.position.bits, kind, &selects[kind]);
     };
     auto size_in = [&](CodingOrder::Kind kind) {
       std::vector<uint8_t> scratch;
       ArithmeticEncoder e(&scratch);
-      EncodeQuantized(&e, &wedges, qpos, 3, h.position.bits, h.position.prediction, kind);
+      EncodeQuantized(&e, &wedges, qpos, 3, h.position.bits, h.position.prediction, kind, nullptr,
+                      LowBits::kNoFlag, selects[kind]);
       e.Finish();
       return double(scratch.size());
     };
@@ -521,7 +525,8 @@ void EncodePositions(GridState& st) {
       const size_t saved_size = st.payload.size();
       const size_t start = enc.BytesSoFar();
       EncodeQuantized(&enc, &wedges, qpos, 3, h.position.bits, h.position.prediction,
-                      CodingOrder::kVertexId);
+                      CodingOrder::kVertexId, nullptr, LowBits::kNoFlag,
+                      selects[CodingOrder::kVertexId]);
       const double id_bytes = double(enc.BytesSoFar() - start);
       if (id_bytes <= kAutoFastDecodeCost * size_in(CodingOrder::kGreedy)) {
         fast_decode = true;
@@ -543,7 +548,7 @@ void EncodePositions(GridState& st) {
           modelled + kLowBitsMinGain <= plain && (plain - modelled) * kLowBitsMinShare >= plain;
     }
     EncodeQuantized(&enc, &wedges, qpos, 3, h.position.bits, h.position.prediction, order, nullptr,
-                    st.low_bits ? LowBits::kModelled : LowBits::kNoFlag);
+                    st.low_bits ? LowBits::kModelled : LowBits::kNoFlag, selects[order]);
   }
 }
 

@@ -118,6 +118,36 @@ TEST(ClassShifts, LargeMeshWithLargeResidualsRoundTripsThroughShifts) {
   }
 }
 
+// The encoder's first pass over the residuals assumes the parallelogram selection is used or not
+// (EncodeQuantized's expect_selection); the bytes are the same either way, on a smooth noisy grid
+// (no selection) and on a CAD-like plate (selection), each guessed right and wrong.
+TEST(ParallelogramSelection, TheExpectationChangesNoByte) {
+  const o3dgc_test::TestMesh grid = o3dgc_test::Grid(72, 60);
+  const o3dgc_test::TestMesh plate = o3dgc_test::PocketPlate(12, 10);
+  std::mt19937 rng(9);
+  for (const o3dgc_test::TestMesh* t : {&grid, &plate}) {
+    const uint32_t n = uint32_t(t->nv());
+    WedgeTable wedges;
+    wedges.Build(t->indices, n, o3dgc_test::OppositeCorners(t->indices), true);
+    std::vector<int32_t> q(size_t(n) * 3);
+    for (size_t i = 0; i < q.size(); ++i) {
+      q[i] = int32_t(std::lround(t->positions[i] * 1000.0f)) + 20000;
+      if (t == &grid) q[i] += int32_t(rng() % 9) - 4;
+    }
+    bool selects = false;
+    EstimatePositionBits(wedges, q, 16, CodingOrder::kGreedy, &selects);
+    EXPECT_EQ(selects, t == &plate);
+    std::vector<uint8_t> bytes[2];
+    for (const bool expect : {false, true}) {
+      ArithmeticEncoder enc(&bytes[expect]);
+      EncodeQuantized(&enc, &wedges, q, 3, 16, Prediction::kParallelogram, CodingOrder::kGreedy,
+                      nullptr, LowBits::kNoFlag, expect);
+      enc.Finish();
+    }
+    EXPECT_EQ(bytes[0], bytes[1]) << (t == &grid ? "grid" : "plate");
+  }
+}
+
 // Positions of a grid-built model (GridBlocks) quantized so that the grid step is 937 steps: the
 // residuals are a few multiples of it, whose low bits recur.
 std::vector<int32_t> GridQuantized(const o3dgc_test::TestMesh& t) {
