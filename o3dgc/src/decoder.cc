@@ -466,7 +466,13 @@ Status DecodeBinary(const uint8_t* data, size_t size, const DecodeOptions& optio
 Status Decode(const uint8_t* data, size_t size, const DecodeOptions& options, DecodedMesh* out,
               StreamInfo* info) {
   if (!out || (!data && size > 0)) return Status::kInvalidArgument;
-  if (IsLegacyStream(data, size)) return DecodeLegacy(data, size, options, out, info);
+  if (IsLegacyStream(data, size)) {
+#ifdef O3DGC_NO_LEGACY_DECODER  // a build without their decoder (the default WebAssembly one)
+    return Status::kUnsupported;
+#else
+    return DecodeLegacy(data, size, options, out, info);
+#endif
+  }
   if (IsAsciiStream(data, size)) {
     std::vector<uint8_t> binary;
     const Status s = UnpackAscii(data, size, &binary);
@@ -483,7 +489,13 @@ Status Decode(const uint8_t* data, size_t size, const DecodeOptions& options, De
 
 O3DGC_WASM_MINSIZE Status ReadStreamInfo(const uint8_t* data, size_t size, StreamInfo* info) {
   if (!info || (!data && size > 0)) return Status::kInvalidArgument;
-  if (IsLegacyStream(data, size)) return ReadLegacyStreamInfo(data, size, info);
+  if (IsLegacyStream(data, size)) {
+#ifdef O3DGC_NO_LEGACY_DECODER
+    return Status::kUnsupported;
+#else
+    return ReadLegacyStreamInfo(data, size, info);
+#endif
+  }
   std::vector<uint8_t> binary;
   StreamType type = StreamType::kBinary;
   if (IsAsciiStream(data, size)) {

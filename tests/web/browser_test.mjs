@@ -89,6 +89,8 @@ try {
       truncated: await errorOf(() => dec.decode(bytes.subarray(0, bytes.length >> 1))),
       flipped: await errorOf(() => { const b = bytes.slice(); b[b.length - 5] ^= 0x55; return dec.decode(b); }),
       workerJunk: await errorOf(() => worker.decode(junk)),
+      // An original Open3DGC stream: this build leaves their decoder out (HULLPACK_WASM_LEGACY).
+      legacy: await errorOf(async () => dec.decode(new Uint8Array(await (await fetch('/tests/o3dgc/vectors/cup.binary.s3d')).arrayBuffer()))),
     };
     // Mutated streams (fixed seed, CRC check off so the decoder proper sees them): each must fail
     // cleanly or decode; anything but HullpackDecodeError is a wasm trap.
@@ -125,6 +127,7 @@ try {
   check(/^HullpackDecodeError:/.test(direct.errs.flipped), `flipped byte -> ${direct.errs.flipped}`);
   check(direct.errs.trapCount === 0, `1000 mutated streams: no wasm trap${direct.errs.trapCount ? `: ${direct.errs.traps}` : ''}`);
   check(direct.errs.workerJunk === 'HullpackDecodeError:bad_magic', `worker junk -> ${direct.errs.workerJunk}`);
+  check(direct.errs.legacy === 'HullpackDecodeError:unsupported', `original Open3DGC stream -> ${direct.errs.legacy}`);
 
   // 3. The viewer on the bare stream, decoded in a worker.
   const page2 = await context.newPage();

@@ -293,9 +293,10 @@ class GridEncoder {
 // by the original Open3DGC encoder (2013; binary or ASCII, recognised by their start code) are
 // decoded too: values as stored, triangles in the encoder's input order when the stream keeps it
 // (see src/legacy_decoder.h); verify_checksum does not apply to them (they have none), and as they
-// are not padded the allocation guard allows them 256 elements per byte instead of 64. Safe on
-// untrusted input. On success `*out` is replaced by the mesh; on failure its content is
-// unspecified.
+// are not padded the allocation guard allows them 256 elements per byte instead of 64. A build
+// that defines O3DGC_NO_LEGACY_DECODER (the default WebAssembly decoder) returns kUnsupported for
+// them, from ReadStreamInfo too. Safe on untrusted input. On success `*out` is replaced by the
+// mesh; on failure its content is unspecified.
 Status Decode(const uint8_t* data, size_t size, const DecodeOptions& options, DecodedMesh* out,
               StreamInfo* info = nullptr);
 
