@@ -231,7 +231,7 @@ py::dict Pack(const std::string& input, const std::string& output, double max_er
 
 py::dict Unpack(const std::string& input, const std::string& output, bool force) {
   if (FormatFromExtension(output) == FileFormat::kUnknown)
-    throw py::value_error(output + ": unknown output format (.glb .obj .off .wrl .ply)");
+    throw py::value_error(output + ": unknown output format (.glb .gltf .obj .off .wrl .ply)");
   Result<UnpackSummary> done = UnpackSummary();
   {
     py::gil_scoped_release release;
@@ -245,6 +245,7 @@ py::dict Unpack(const std::string& input, const std::string& output, bool force)
   d["triangles"] = done->triangles;
   d["hulls"] = done->hulls;
   if (!done->hulls_path.empty()) d["hulls_output"] = done->hulls_path;
+  if (!done->buffer_path.empty()) d["buffer_output"] = done->buffer_path;
   return d;
 }
 
@@ -432,7 +433,7 @@ OSError
         py::arg("max_vertices") = py::none(), py::arg("concavity") = py::none(),
         py::arg("max_concavity") = py::none(), py::arg("force") = false,
         py::arg("progress") = py::none());
-  m.def("unpack", &Unpack, R"(Decode a packed GLB back to plain glTF (.glb) or a mesh file.
+  m.def("unpack", &Unpack, R"(Decode a packed GLB back to plain glTF (.glb, .gltf) or a mesh file.
 
 Parameters
 ----------
@@ -441,7 +442,8 @@ input : str
 output : str
     .glb (every compressed primitive decoded into plain accessors, colliders and hulls kept);
     .obj .wrl (the render meshes, then each hull as a closed mesh named hull_N); .off .ply
-    (the render meshes; the hulls go to STEM.hulls.off / .ply beside it).
+    (the render meshes; the hulls go to STEM.hulls.off / .ply beside it), .gltf (the document
+    as JSON, its buffer in STEM.bin beside it).
 force : bool
     Replace an existing output.
 
@@ -449,7 +451,8 @@ Returns
 -------
 dict
     "input", "output", "meshes" (render meshes; .glb: every mesh), "triangles" (of those),
-    "hulls", and "hulls_output" when the hulls went to a file of their own.)",
+    "hulls", "hulls_output" when the hulls went to a file of their own, and "buffer_output"
+    for a .gltf's buffer.)",
         py::arg("input"), py::arg("output"), py::kw_only(), py::arg("force") = false);
   m.def("load_mesh", &LoadMesh, R"(Read a mesh or scene file into numpy arrays.
 

@@ -233,6 +233,10 @@ class Files(unittest.TestCase):
         self.assertTrue(off["hulls_output"].endswith("back.hulls.off"))
         self.assertEqual(hullpack.info(off["hulls_output"])["triangles"],
                          summary["triangles"] - back["triangles"])
+        # .gltf: the JSON and its buffer beside it; read back like the GLB.
+        gltf = hullpack.unpack(glb, os.path.join(self.dir.name, "back.gltf"))
+        self.assertTrue(gltf["buffer_output"].endswith("back.bin"))
+        self.assertEqual(hullpack.info(gltf["output"])["triangles"], back["triangles"])
         with self.assertRaises(OSError):
             hullpack.info(os.path.join(self.dir.name, "missing.obj"))
 

@@ -20,11 +20,6 @@ namespace {
 // Bumped whenever the layout or the key recipe changes.
 constexpr char kCacheLayout[] = "hullpack-cache 1";
 
-std::string FolderOf(const std::string& path) {
-  const size_t slash = path.find_last_of('/');
-  return slash == std::string::npos ? "." : path.substr(0, slash == 0 ? 1 : slash);
-}
-
 std::string NameOf(const std::string& path) {
   const size_t slash = path.find_last_of('/');
   return slash == std::string::npos ? path : path.substr(slash + 1);

@@ -86,6 +86,9 @@ bool SameFile(const std::string& a, const std::string& b);
 // Lower-case extension without the dot ("obj" for "a/b.OBJ"), or "".
 std::string LowerExtension(const std::string& path);
 
+// The folder of `path` without a trailing slash ("a/b" for "a/b/c.obj"), "." when it names none.
+std::string FolderOf(const std::string& path);
+
 }  // namespace hullpack
 
 #endif  // HULLPACK_TOOLS_COMMON_FILE_UTIL_H_

@@ -3,6 +3,7 @@
 #include <cstring>
 #include <utility>
 
+#include "common/file_util.h"
 #include "gltf/glb_reader_decoder.h"
 
 namespace hullpack {
@@ -74,7 +75,6 @@ Result<Scene> Decoder::Run() {
 }  // namespace glb_reader_internal
 
 using glb_reader_internal::Decoder;
-using glb_reader_internal::DirName;
 using glb_reader_internal::ReadWholeFile;
 
 bool RelativePathFromUri(const std::string& uri, std::string* path, std::string* error) {
@@ -168,7 +168,7 @@ Result<Scene> ReadGltfFile(const std::string& path) {
   Result<GltfDocument> doc = ReadGltfDocumentFile(path);
   if (!doc.ok()) return doc.status();
   GltfReadOptions options;
-  options.base_dir = DirName(path);
+  options.base_dir = FolderOf(path);
   return DecodeGltfDocument(doc.value(), path, options);
 }
 

@@ -83,13 +83,6 @@ Status ReadWholeFile(const std::string& path, std::vector<uint8_t>* out) {
   return Status::Ok();
 }
 
-std::string DirName(const std::string& path) {
-  const size_t slash = path.find_last_of('/');
-  if (slash == std::string::npos) return ".";
-  if (slash == 0) return "/";
-  return path.substr(0, slash);
-}
-
 Status Decoder::GetArray(const json& obj, const char* key, const std::string& where,
                          const json** out) const {
   *out = nullptr;

@@ -64,7 +64,6 @@ struct DataUri {
 bool ParseDataUri(const std::string& uri, DataUri* out, std::string* error);
 bool IsDataUri(const std::string& uri);
 Status ReadWholeFile(const std::string& path, std::vector<uint8_t>* out);
-std::string DirName(const std::string& path);
 
 // A checked accessor: where its elements are and how to read them.
 struct AccessorView {

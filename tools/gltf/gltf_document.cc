@@ -202,6 +202,31 @@ void GltfDocument::DropExtension(const std::string& name) {
   }
 }
 
+Result<std::string> GltfDocument::SerializeJson(const std::string& buffer_uri) const {
+  nlohmann::json j = json_;
+  if (!binary_.empty()) {
+    nlohmann::json& buffers = j["buffers"];
+    if (!buffers.is_array()) buffers = nlohmann::json::array();
+    if (buffers.empty()) buffers.push_back(nlohmann::json::object());
+    if (!buffers[0].is_object()) buffers[0] = nlohmann::json::object();
+    buffers[0]["uri"] = buffer_uri;
+    buffers[0]["byteLength"] = binary_.size();
+  }
+  const nlohmann::json* buffers = j.contains("buffers") ? &j["buffers"] : nullptr;
+  for (size_t b = binary_.empty() ? 0 : 1; buffers && buffers->is_array() && b < buffers->size();
+       ++b) {
+    if (!(*buffers)[b].is_object() || !(*buffers)[b].contains("uri")) {
+      return Status(StatusCode::kUnsupported,
+                    "buffer " + std::to_string(b) + " has no uri: it can only live in a GLB");
+    }
+  }
+  try {
+    return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  } catch (const std::exception& e) {
+    return Status(StatusCode::kInternal, std::string("cannot serialize glTF JSON: ") + e.what());
+  }
+}
+
 Result<std::vector<uint8_t>> GltfDocument::Serialize() const {
   nlohmann::json j = json_;
   if (!binary_.empty()) {

@@ -112,6 +112,10 @@ class GltfDocument {
   // The GLB file: header, JSON chunk (space-padded), BIN chunk (zero-padded; omitted when the
   // binary chunk is empty). Sets buffers[0].byteLength. Fails when the file would exceed 4 GiB.
   Result<std::vector<uint8_t>> Serialize() const;
+  // The .gltf form of the same document: the JSON text, with buffer 0 (the binary chunk, which the
+  // caller writes as its own file) at `buffer_uri`, a URI relative to the .gltf. Fails when another
+  // buffer has no uri (it would only exist inside a GLB).
+  Result<std::string> SerializeJson(const std::string& buffer_uri) const;
 
  private:
   nlohmann::json json_;

@@ -63,11 +63,6 @@ size_t UsableCores() {
   return cores;
 }
 
-std::string Folder(const std::string& path) {
-  const size_t slash = path.find_last_of('/');
-  return slash == std::string::npos ? "." : path.substr(0, slash);
-}
-
 std::string SelfPath() {
   char buffer[4096];
   const ssize_t n = readlink("/proc/self/exe", buffer, sizeof(buffer) - 1);
@@ -88,7 +83,7 @@ void RemoveStaleTemporaries(const std::string& out_dir, const std::vector<BatchA
   std::set<std::string> outputs;
   for (const BatchAsset& a : assets) {
     const std::string path = out_dir + "/" + a.output;
-    folders.insert(Folder(path));
+    folders.insert(FolderOf(path));
     outputs.insert(path);
   }
   for (const std::string& folder : folders) {
@@ -181,7 +176,7 @@ AssetOutcome RunOne(const BatchRun& run, const BatchAsset& asset) {
   struct stat st;
   if (stat(asset.input.c_str(), &st) == 0) o.input_bytes = static_cast<uint64_t>(st.st_size);
   const std::string path = run.out_dir + "/" + asset.output;
-  Status s = MakeDirectories(Folder(path));
+  Status s = MakeDirectories(FolderOf(path));
   if (s.ok() && stat(path.c_str(), &st) == 0 && run.input_files.count({st.st_dev, st.st_ino}))
     s = Status(StatusCode::kInvalidArgument, path + ": is an input file; refusing to overwrite it");
   StopOnSignal stop;

@@ -105,14 +105,18 @@ int RunInfoCommand(const std::vector<std::string>& args) {
   // Collision hulls as a physics engine builds them (the collider nodes' shapes).
   std::vector<CollisionHull> hulls;
   Result<std::vector<uint8_t>> bytes = std::vector<uint8_t>();
-  if (format == FileFormat::kGlb) bytes = ReadFileBytes(path);
-  if (bytes.ok() && format == FileFormat::kGlb) {
+  const bool gltf = format == FileFormat::kGlb || format == FileFormat::kGltf;
+  if (gltf) bytes = ReadFileBytes(path);
+  if (bytes.ok() && gltf) {
     file_size = bytes->size();
     GltfDocument doc;
-    Result<Scene> read = ReadPackedGltf(bytes->data(), bytes->size(), path, "", &doc);
+    const std::string folder = FolderOf(path);
+    Result<Scene> read = ReadPackedGltf(bytes->data(), bytes->size(), path, folder, &doc);
+    Status adopted = read.ok() ? AdoptBufferFile(doc, folder, path) : Status::Ok();
     Result<std::vector<CollisionHull>> found =
-        read.ok() ? ReadCollisionHulls(doc, path)
-                  : Result<std::vector<CollisionHull>>(std::vector<CollisionHull>());
+        !adopted.ok() ? Result<std::vector<CollisionHull>>(adopted)
+        : read.ok()   ? ReadCollisionHulls(doc, path)
+                      : Result<std::vector<CollisionHull>>(std::vector<CollisionHull>());
     if (!found.ok()) {
       std::fprintf(stderr, "hullpack info: %s\n", found.status().message().c_str());
       return 1;

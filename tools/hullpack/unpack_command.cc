@@ -1,5 +1,6 @@
 #include "hullpack/unpack_command.h"
 
+#include <cctype>
 #include <cstdio>
 #include <optional>
 
@@ -25,31 +26,82 @@ std::string HullsPath(const std::string& output) {
   return output.substr(0, dot) + ".hulls" + output.substr(dot);
 }
 
+// "dir/name.gltf" -> "dir/name.bin": the .gltf's buffer, beside it.
+std::string BufferPath(const std::string& output) {
+  const size_t slash = output.find_last_of("/\\");
+  const size_t dot = output.rfind('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+    return output + ".bin";
+  return output.substr(0, dot) + ".bin";
+}
+
+// A file name as a relative URI reference: every byte outside RFC 3986's unreserved set escaped.
+std::string UriOfFileName(const std::string& name) {
+  static const char kHex[] = "0123456789ABCDEF";
+  std::string uri;
+  for (const unsigned char c : name) {
+    if (std::isalnum(c) || c == '-' || c == '.' || c == '_' || c == '~') {
+      uri += static_cast<char>(c);
+    } else {
+      uri += '%';
+      uri += kHex[c >> 4];
+      uri += kHex[c & 15];
+    }
+  }
+  return uri;
+}
+
+// The plain document as NAME.gltf and, when it has a binary chunk, NAME.bin.
+Status WriteGltfPair(const GltfDocument& plain, const std::string& output,
+                     const std::string& buffer_path) {
+  const size_t slash = buffer_path.find_last_of("/\\");
+  const std::string buffer_name =
+      slash == std::string::npos ? buffer_path : buffer_path.substr(slash + 1);
+  Result<std::string> json = plain.SerializeJson(UriOfFileName(buffer_name));
+  if (!json.ok()) return Status(json.status().code(), output + ": " + json.status().message());
+  if (!plain.binary().empty()) {
+    Status written = WriteFileAtomically(buffer_path, plain.binary());
+    if (!written.ok()) return written;
+  }
+  return WriteFileAtomically(output, json.value().data(), json.value().size());
+}
+
 }  // namespace
 
 Result<UnpackSummary> Unpack(const std::string& input, const std::string& output, bool force) {
   const FileFormat format = FormatFromExtension(output);
-  if (format != FileFormat::kGlb && format != FileFormat::kObj && format != FileFormat::kOff &&
-      format != FileFormat::kWrl && format != FileFormat::kPly) {
+  if (format != FileFormat::kGlb && format != FileFormat::kGltf && format != FileFormat::kObj &&
+      format != FileFormat::kOff && format != FileFormat::kWrl && format != FileFormat::kPly) {
     return Status(StatusCode::kInvalidArgument,
-                  output + ": unknown output format (.glb .obj .off .wrl .ply)");
+                  output + ": unknown output format (.glb .gltf .obj .off .wrl .ply)");
   }
   const bool separate_hulls = format == FileFormat::kOff || format == FileFormat::kPly;
   UnpackSummary summary;
   if (separate_hulls) summary.hulls_path = HullsPath(output);
   Status writable = CheckOutputPath(output, {input}, force);
   if (!writable.ok()) return writable;
+  if (format == FileFormat::kGltf) {
+    summary.buffer_path = BufferPath(output);
+    writable = CheckOutputPath(summary.buffer_path, {input, output}, force);
+    if (!writable.ok()) return writable;
+  }
   Result<std::vector<uint8_t>> bytes = ReadFileBytes(input);
   if (!bytes.ok()) return bytes.status();
   GltfDocument plain;
   Result<Scene> scene =
       ReadPackedGltf(bytes.value().data(), bytes.value().size(), input, "", &plain);
   if (!scene.ok()) return scene.status();
-  if (format == FileFormat::kGlb) {
-    Result<std::vector<uint8_t>> glb = plain.Serialize();
-    if (!glb.ok()) return glb.status();
+  if (format == FileFormat::kGlb || format == FileFormat::kGltf) {
     summary.meshes = scene->meshes.size();
     summary.triangles = scene->triangle_count();
+    if (format == FileFormat::kGltf) {
+      if (plain.binary().empty()) summary.buffer_path.clear();
+      Status written = WriteGltfPair(plain, output, summary.buffer_path);
+      if (!written.ok()) return written;
+      return summary;
+    }
+    Result<std::vector<uint8_t>> glb = plain.Serialize();
+    if (!glb.ok()) return glb.status();
     Status written = WriteFileAtomically(output, glb.value());
     if (!written.ok()) return written;
     return summary;
@@ -112,18 +164,21 @@ int RunUnpackCommand(const std::vector<std::string>& args) {
               "Decodes a packed GLB.\n"
               "  OUTPUT .glb: the same glTF with every compressed primitive decoded into plain\n"
               "               accessors (collider nodes and hull meshes kept);\n"
+              "  OUTPUT .gltf: the same as JSON, its binary buffer in STEM.bin beside it;\n"
               "  OUTPUT .obj .wrl: the render meshes, then each collision hull as a closed mesh\n"
               "               (the convex hull of its points), one object/Shape hull_N each;\n"
               "  OUTPUT .off .ply: the render meshes; the hulls go to STEM.hulls.off/.ply");
   cli.VersionDetail(FormatVersionText());
   cli.Positional("PACKED.glb", &inputs, 1, 1);
-  cli.String("-o, --output", "OUTPUT", &output, "the file to write (.glb .obj .off .wrl .ply)")
+  cli.String("-o, --output", "OUTPUT", &output,
+             "the file to write (.glb .gltf .obj .off .wrl .ply)")
       .Required();
   cli.Flag("--force", &force, "replace an existing OUTPUT");
   if (std::optional<int> exit_code = cli.Parse(args)) return *exit_code;
   const std::string& input = inputs[0];
   if (FormatFromExtension(output) == FileFormat::kUnknown) {
-    std::fprintf(stderr, "hullpack unpack: %s: unknown output format (.glb .obj .off .wrl .ply)\n",
+    std::fprintf(stderr,
+                 "hullpack unpack: %s: unknown output format (.glb .gltf .obj .off .wrl .ply)\n",
                  output.c_str());
     return kExitUsage;
   }
@@ -132,7 +187,8 @@ int RunUnpackCommand(const std::vector<std::string>& args) {
     std::fprintf(stderr, "hullpack unpack: %s\n", done.status().message().c_str());
     return 1;
   }
-  std::printf("%s -> %s: %zu meshes, %zu triangles", input.c_str(), output.c_str(), done->meshes,
+  std::printf("%s -> %s%s%s: %zu meshes, %zu triangles", input.c_str(), output.c_str(),
+              done->buffer_path.empty() ? "" : " + ", done->buffer_path.c_str(), done->meshes,
               done->triangles);
   if (done->hulls > 0) {
     std::printf(", %zu hulls%s%s", done->hulls, done->hulls_path.empty() ? "" : " -> ",

@@ -15,11 +15,6 @@
 namespace hullpack {
 namespace {
 
-std::string Folder(const std::string& path) {
-  const size_t slash = path.find_last_of('/');
-  return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
-}
-
 Result<Scene> RequireTriangles(Result<Scene> scene, const std::string& name) {
   if (scene.ok() && scene.value().triangle_count() == 0) {
     return Status(StatusCode::kInvalidMesh, name + ": contains no triangles");
@@ -100,7 +95,7 @@ Result<Scene> ReadScene(const std::string& path, const ReadOptions& options) {
   if (HasOwnParser(format)) {
     obj_options.progress = options.progress;
     obj_options.threads = options.threads;
-    const std::string folder = Folder(path);
+    const std::string folder = FolderOf(path) + "/";
     obj_options.load_material_library =
         [folder](const std::string& library) -> Result<std::string> {
       Result<std::vector<uint8_t>> mtl = ReadFileBytes(folder + library);
@@ -128,9 +123,9 @@ Result<Scene> ReadScene(const std::string& path, const ReadOptions& options) {
   if (format == FileFormat::kGlb || format == FileFormat::kGltf) {
     // The project's own hardened reader; it also decodes HULLPACK_mesh_compression primitives.
     // External buffers resolve next to the file.
-    return RequireTriangles(ReadPackedGltf(bytes.value().data(), bytes.value().size(), path,
-                                           Folder(path).empty() ? "." : Folder(path), nullptr),
-                            path);
+    return RequireTriangles(
+        ReadPackedGltf(bytes.value().data(), bytes.value().size(), path, FolderOf(path), nullptr),
+        path);
   }
   // Through the file name, so that assimp finds companion files.
   return RequireTriangles(ReadWithAssimp(path, format), path);

@@ -8,6 +8,7 @@
 #include <new>
 #include <set>
 
+#include "common/file_util.h"
 #include "gltf/buffer_compaction.h"
 #include "gltf/component_store.h"
 #include "gltf/draco_inflate.h"
@@ -509,6 +510,33 @@ Status ReadAccessor(const GltfDocument& doc, int64_t index, const std::string& w
 }
 
 }  // namespace
+
+Status AdoptBufferFile(GltfDocument& doc, const std::string& base_dir, const std::string& name) {
+  nlohmann::json& json = doc.json();
+  if (doc.has_binary_chunk() || !json.contains("buffers") || !json["buffers"].is_array() ||
+      json["buffers"].empty() || !json["buffers"][0].is_object())
+    return Status::Ok();
+  nlohmann::json& buffer = json["buffers"][0];
+  if (!buffer.contains("uri") || !buffer["uri"].is_string()) return Status::Ok();
+  const std::string uri = buffer["uri"].get<std::string>();
+  std::string relative, error;
+  if (uri.compare(0, 5, "data:") == 0 || !RelativePathFromUri(uri, &relative, &error))
+    return Status::Ok();
+  uint64_t length = 0;
+  if (!gltf::GetUintMember(buffer, "byteLength", 0, &length))
+    return Status(StatusCode::kParseError, name + ": buffers[0]: byteLength is malformed");
+  const std::string path = (base_dir.empty() ? std::string(".") : base_dir) + "/" + relative;
+  Result<std::vector<uint8_t>> bytes = ReadFileBytes(path);
+  if (!bytes.ok()) return bytes.status();
+  if (bytes->size() < length) {
+    return Status(StatusCode::kParseError,
+                  name + ": buffers[0]: byteLength " + std::to_string(length) + " exceeds " + path);
+  }
+  bytes->resize(static_cast<size_t>(length));
+  doc.binary() = std::move(bytes.value());
+  buffer.erase("uri");
+  return Status::Ok();
+}
 
 Result<std::vector<CollisionHull>> ReadCollisionHulls(const GltfDocument& doc,
                                                       const std::string& name) {

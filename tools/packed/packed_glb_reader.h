@@ -51,6 +51,12 @@ inline constexpr const char* kCollisionExtensions[] = {"OMI_physics_shape", "OMI
 Result<std::vector<CollisionHull>> ReadCollisionHulls(const GltfDocument& doc,
                                                       const std::string& name);
 
+// For a .gltf (no binary chunk) whose buffer 0 is a file beside it (a relative URI resolved in
+// `base_dir`, as `hullpack unpack OUT.gltf` writes): reads that file into doc's binary chunk and
+// drops the uri, so that ReadCollisionHulls reads its colliders as it reads a GLB's. Nothing
+// happens for a document with a binary chunk or whose buffer 0 has no such uri.
+Status AdoptBufferFile(GltfDocument& doc, const std::string& base_dir, const std::string& name);
+
 }  // namespace hullpack
 
 #endif  // HULLPACK_TOOLS_PACKED_PACKED_GLB_READER_H_

@@ -1,15 +1,10 @@
 #include "pipeline/load.h"
 
+#include "common/file_util.h"
 #include "gltf/external_images.h"
 #include "io/scene_io.h"
 
 namespace hullpack {
-
-std::string FolderOf(const std::string& path) {
-  const size_t slash = path.find_last_of('/');
-  if (slash == std::string::npos) return ".";
-  return slash == 0 ? "/" : path.substr(0, slash);
-}
 
 Result<LoadedScene> LoadScene(const std::string& path, const std::function<void(double)>& progress,
                               int threads) {

@@ -25,9 +25,6 @@ struct LoadedScene {
 Result<LoadedScene> LoadScene(const std::string& path,
                               const std::function<void(double)>& progress = {}, int threads = 0);
 
-// The folder part of `path` ("." when it has none).
-std::string FolderOf(const std::string& path);
-
 }  // namespace hullpack
 
 #endif  // HULLPACK_TOOLS_PIPELINE_LOAD_H_

@@ -159,5 +159,12 @@ TEST(ReadFileBytes, MissingFilesAndFoldersAreErrorsNamingThePath) {
   EXPECT_NE(read.status().message().find("directory"), std::string::npos);
 }
 
+TEST(FolderOf, IsThePathUpToItsLastSlash) {
+  EXPECT_EQ(FolderOf("a/b/c.obj"), "a/b");
+  EXPECT_EQ(FolderOf("c.obj"), ".");
+  EXPECT_EQ(FolderOf("/c.obj"), "/");
+  EXPECT_EQ(FolderOf("a/"), "a");
+}
+
 }  // namespace
 }  // namespace hullpack

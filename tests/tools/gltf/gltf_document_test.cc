@@ -164,6 +164,38 @@ TEST(GltfDocumentTest, SerializeRefusesBufferZeroWithUri) {
   EXPECT_EQ(glb.status().code(), StatusCode::kInvalidArgument);
 }
 
+TEST(GltfDocumentTest, SerializeJsonNamesTheBufferFileAndParsesBack) {
+  GltfDocument doc;
+  const uint8_t five[5] = {1, 2, 3, 4, 5};
+  doc.AddBufferView(five, 5, 4);
+  Result<std::string> text = doc.SerializeJson("a%20b.bin");
+  ASSERT_TRUE(text.ok()) << text.status().ToString();
+  const json j = json::parse(text.value());
+  EXPECT_EQ(j["buffers"][0]["uri"], "a%20b.bin");
+  EXPECT_EQ(j["buffers"][0]["byteLength"], 5);
+  Result<GltfDocument> back =
+      ParseGltfBytes(reinterpret_cast<const uint8_t*>(text->data()), text->size(), "a b.gltf");
+  ASSERT_TRUE(back.ok()) << back.status().ToString();
+  EXPECT_FALSE(back->has_binary_chunk());
+  EXPECT_EQ(back->json()["bufferViews"][0]["byteLength"], 5);
+}
+
+TEST(GltfDocumentTest, SerializeJsonRefusesAnotherBufferWithoutUri) {
+  GltfDocument doc;
+  doc.Append("buffers", json::object());
+  doc.Append("buffers", json{{"byteLength", 8}});
+  const uint8_t four[4] = {1, 2, 3, 4};
+  doc.AddBufferView(four, 4, 4);
+  Result<std::string> text = doc.SerializeJson("x.bin");
+  EXPECT_FALSE(text.ok());
+  EXPECT_EQ(text.status().code(), StatusCode::kUnsupported);
+  EXPECT_NE(text.status().message().find("buffer 1"), std::string::npos);
+  GltfDocument empty;
+  Result<std::string> plain = empty.SerializeJson("unused.bin");
+  ASSERT_TRUE(plain.ok());
+  EXPECT_FALSE(json::parse(plain.value()).contains("buffers"));
+}
+
 TEST(GltfDocumentTest, UseExtensionListsOnce) {
   GltfDocument doc;
   doc.UseExtension("A", false);

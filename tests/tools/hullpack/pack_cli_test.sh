@@ -51,6 +51,19 @@ run 0 unpack-hulls-obj -- "$bin" unpack "$tmp/hulls.glb" -o "$tmp/h.obj"
 grep -q "$hulls hulls" "$tmp/out" && pass || fail "unpack summary: $(cat "$tmp/out")"
 run 0 info-hulls-obj -- "$bin" info "$tmp/h.obj"
 grep -q "meshes $((hulls + 1))" "$tmp/out" && pass || fail "OBJ read back: $(cat "$tmp/out")"
+# .gltf: the same document as JSON, its buffer beside it under a URI (escaped: a space in the name).
+run 0 unpack-hulls-gltf -- "$bin" unpack "$tmp/hulls.glb" -o "$tmp/h plain.gltf"
+[ -s "$tmp/h plain.bin" ] && pass || fail ".gltf buffer not written: $(cat "$tmp/out")"
+grep -q '"uri":"h%20plain.bin"' "$tmp/h plain.gltf" && pass || fail ".gltf buffer uri: $(grep -o '"buffers":[^]]*' "$tmp/h plain.gltf")"
+run 0 info-hulls-gltf -- "$bin" info "$tmp/h plain.gltf"
+grep -q "triangles 1024" "$tmp/out" && grep -q "collision hulls $hulls " "$tmp/out" && pass ||
+  fail ".gltf read back: $(cat "$tmp/out")"
+cp "$tmp/h plain.gltf" "$tmp/hv.gltf"
+cp "$tmp/h plain.bin" "$tmp/hv.bin"
+sed -i 's/h%20plain.bin/hv.bin/' "$tmp/hv.gltf"
+rm "$tmp/h plain.gltf"
+run 1 unpack-gltf-buffer-exists -- "$bin" unpack "$tmp/hulls.glb" -o "$tmp/h plain.gltf"
+[ ! -e "$tmp/h plain.gltf" ] && pass || fail ".gltf written although its buffer's file exists"
 run 0 unpack-hulls-wrl -- "$bin" unpack "$tmp/hulls.glb" -o "$tmp/h.wrl"
 run 0 info-hulls-wrl -- "$bin" info "$tmp/h.wrl"
 grep -q "meshes $((hulls + 1))" "$tmp/out" && pass || fail "WRL read back: $(cat "$tmp/out")"
@@ -167,7 +180,7 @@ awk -v g="$(concavity "$tmp/rot_grid.json")" -v a="$(concavity "$tmp/rot_auto.js
 # The Khronos validator on the packed and unpacked files (skipped without node + gltf-validator).
 if [ -n "$node" ] && [ -f "$src/node_modules/gltf-validator/package.json" ]; then
   run 0 pack-khr -- "$bin" pack "$sample" -o "$tmp/khr.glb" --physics khr --fallback --quiet
-  for f in hulls.glb t.glb plain.glb khr.glb batch/in.packed.glb; do
+  for f in hulls.glb t.glb plain.glb hv.gltf khr.glb batch/in.packed.glb; do
     run 0 "validate-$f" -- "$node" "$src/tests/tools/gltf/validate_gltf.mjs" "$tmp/$f"
   done
 else
