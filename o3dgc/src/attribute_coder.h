@@ -32,8 +32,12 @@ constexpr uint32_t kTinyMesh = 300;
 // large meshes decoding time matters, and there those adaptive models save 0-3 % of the stream
 // (corpus, 14-bit positions: rocker_arm 0.0 %, bunny 1.3 %, igea 2.0 %, fandisk 3.1 %) for 13-20 %
 // of the decoding time; smaller meshes decode in a millisecond or less and keep the smaller stream.
+// Streams with the header's all_adaptive flag (format 1.3, EncodeParams::max_compression) code
+// them adaptively in sections of every size.
 constexpr uint32_t kRawLowBitsMesh = 4096;
-inline bool RawLowBits(uint32_t num_vertices) { return num_vertices >= kRawLowBitsMesh; }
+inline bool RawLowBits(uint32_t num_vertices, bool all_adaptive = false) {
+  return !all_adaptive && num_vertices >= kRawLowBitsMesh;
+}
 
 // Context from the residual of the previous component of the same vertex.
 // Bit length of a (0 for 0), without a branch.
@@ -163,8 +167,9 @@ struct NormalGeometry {
 // loop that can read trees adds to the WebAssembly decoder's download, and grid-built models need
 // them for positions and texture coordinates.
 enum class LowBits : uint8_t { kNoFlag, kPlain, kModelled };
-inline bool HasLowBitsChoice(Prediction mode, uint32_t n, int dim, bool texcoord) {
-  return mode != Prediction::kNone && !RawLowBits(n) &&
+inline bool HasLowBitsChoice(Prediction mode, uint32_t n, int dim, bool texcoord,
+                             bool all_adaptive = false) {
+  return mode != Prediction::kNone && !RawLowBits(n, all_adaptive) &&
          (mode != Prediction::kParallelogram || dim == 3 || texcoord);
 }
 
@@ -174,11 +179,12 @@ inline bool HasLowBitsChoice(Prediction mode, uint32_t n, int dim, bool texcoord
 // instead of parallelograms. `expect_selection`: whether 3-component parallelogram-predicted
 // values will most likely use the parallelogram selection (EstimatePositionBits tells); right, the
 // encoder takes one pass over the mesh to find the residuals instead of two. The bytes are the
-// same either way.
+// same either way. `all_adaptive`: the stream's flag (see RawLowBits).
 void EncodeQuantized(ArithmeticEncoder* enc, const WedgeTable* wedges,
                      const std::vector<int32_t>& q, int dim, int bits, Prediction mode,
                      CodingOrder::Kind order, const std::vector<double>* geometry = nullptr,
-                     LowBits low_bits = LowBits::kNoFlag, bool expect_selection = true);
+                     LowBits low_bits = LowBits::kNoFlag, bool expect_selection = true,
+                     bool all_adaptive = false);
 // Estimated bits of 3-component parallelogram-predicted values coded in `order` (nothing coded):
 // the encoder's choice between the two orders (EncodeParams::auto_fast_decode). `selects` (if
 // not null) receives whether they would use the parallelogram selection.
@@ -186,7 +192,8 @@ double EstimatePositionBits(const WedgeTable& wedges, const std::vector<int32_t>
                             CodingOrder::Kind order, bool* selects = nullptr);
 Status DecodeQuantized(ArithmeticDecoder* dec, const WedgeTable* wedges, uint32_t n, int dim,
                        int bits, Prediction mode, CodingOrder::Kind order, std::vector<int32_t>* q,
-                       const std::vector<double>* geometry = nullptr, bool low_bits_flag = false);
+                       const std::vector<double>* geometry = nullptr, bool low_bits_flag = false,
+                       bool all_adaptive = false);
 
 // Positions of attribute vertices as doubles (quantized value * step), for PredictTexCoord.
 std::vector<double> AttributeGeometry(const NormalGeometry& geo, uint32_t n);

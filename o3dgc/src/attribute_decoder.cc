@@ -126,7 +126,7 @@ Status DecodeParallelogramFor(bool raw, ArithmeticDecoder* dec, const WedgeTable
 Status DecodeQuantized(ArithmeticDecoder* dec_in, const WedgeTable* wedges, uint32_t n, int dim,
                        int bits, Prediction mode, CodingOrder::Kind order_kind,
                        std::vector<int32_t>* out, const std::vector<double>* geometry,
-                       bool low_bits_flag) {
+                       bool low_bits_flag, bool all_adaptive) {
   ScopedDecoder dec(dec_in);
   std::vector<int32_t>& q = *out;
   q.assign(size_t(n) * dim, 0);
@@ -140,12 +140,13 @@ Status DecodeQuantized(ArithmeticDecoder* dec_in, const WedgeTable* wedges, uint
   }
   std::unique_ptr<ResidualModels> models(new ResidualModels(dim, kResidualKinds));
   const double* geo = (geometry && dim == 2) ? geometry->data() : nullptr;
-  if (low_bits_flag && HasLowBitsChoice(mode, n, dim, geo != nullptr) && dec->DecodeBits(1)) {
+  if (low_bits_flag && HasLowBitsChoice(mode, n, dim, geo != nullptr, all_adaptive) &&
+      dec->DecodeBits(1)) {
     models->tree.assign(size_t(dim) * kTreeModels, BitModel());
   }
   std::vector<uint32_t> mags(n, 0);
   const int coarse = n < kTinyMesh ? 2 : (n < kSmallMesh ? 1 : 0);
-  const bool raw = RawLowBits(n);
+  const bool raw = RawLowBits(n, all_adaptive);
   // Residuals against `pred` for vertex c, with the context of `pc`.
   auto decode_vertex = [&](uint32_t c, const PredictionContext& pc, const int64_t* pred) {
     const int mctx = MagContext(pc.neighbour_magnitude) >> coarse;

@@ -254,7 +254,7 @@ double EstimatePositionBits(const WedgeTable& wedges, const std::vector<int32_t>
 void EncodeQuantized(ArithmeticEncoder* enc, const WedgeTable* wedges,
                      const std::vector<int32_t>& q, int dim, int bits, Prediction mode,
                      CodingOrder::Kind order_kind, const std::vector<double>* geometry,
-                     LowBits low_bits, bool expect_selection) {
+                     LowBits low_bits, bool expect_selection, bool all_adaptive) {
   const uint32_t n = uint32_t(q.size() / size_t(dim));
   if (mode == Prediction::kNone) {
     for (int32_t v : q) enc->EncodeBits(uint32_t(v), bits);
@@ -262,14 +262,15 @@ void EncodeQuantized(ArithmeticEncoder* enc, const WedgeTable* wedges,
   }
   std::unique_ptr<ResidualModels> models(new ResidualModels(dim, kResidualKinds));
   const double* geo = (geometry && dim == 2) ? geometry->data() : nullptr;
-  if (low_bits != LowBits::kNoFlag && HasLowBitsChoice(mode, n, dim, geo != nullptr)) {
+  if (low_bits != LowBits::kNoFlag &&
+      HasLowBitsChoice(mode, n, dim, geo != nullptr, all_adaptive)) {
     enc->EncodeBits(low_bits == LowBits::kModelled ? 1 : 0, 1);
     if (low_bits == LowBits::kModelled) models->tree.assign(size_t(dim) * kTreeModels, BitModel());
   }
   std::vector<uint32_t> mags(n, 0);
   const int64_t maxq = (int64_t(1) << bits) - 1;
   const int coarse = n < kTinyMesh ? 2 : (n < kSmallMesh ? 1 : 0);
-  const bool raw = RawLowBits(n);
+  const bool raw = RawLowBits(n, all_adaptive);
   auto encode_vertex = [&](uint32_t c, const PredictionContext& pc, const int64_t* pred) {
     const int mctx = MagContext(pc.neighbour_magnitude) >> coarse;
     int64_t r[4];

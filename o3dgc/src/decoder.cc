@@ -63,6 +63,7 @@ O3DGC_WASM_MINSIZE Status DecodeHeaders(const uint8_t* data, size_t size,
   st.si.keep_order = sh.keep_order;
   st.si.fast_decode = sh.fast_decode;
   st.si.low_bits = sh.low_bits;
+  st.si.all_adaptive = sh.all_adaptive;
   st.order = CodingOrder::ForStream(sh.fast_decode);
   PayloadHeader& h = st.h;
   if ((s = DecodePayloadHeader(&st.dec, &h)) != Status::kOk) return s;
@@ -202,7 +203,7 @@ Status DecodePositions(DecodeState& st, DecodedMesh* m) {
     }
     const Status s =
         DecodeQuantized(&st.dec, &wedges, st.nw, 3, h.position.bits, h.position.prediction,
-                        st.order, &st.qpos, nullptr, st.sh.low_bits);
+                        st.order, &st.qpos, nullptr, st.sh.low_bits, st.sh.all_adaptive);
     if (s != Status::kOk) return s;
   }
   m->positions.resize(size_t(st.nv) * 3);
@@ -312,9 +313,9 @@ Status DecodeAttributes(DecodeState& st, DecodedMesh* m) {
       mesh->wedges.Build(*mesh->tris, mesh->n, st.opposite, st.has_seams);
       mesh->wedges_built = true;
     }
-    const Status r =
-        DecodeQuantized(&dec, &mesh->wedges, mesh->n, int(d.dimension), d.bits, d.prediction,
-                        st.order, &q, texcoord ? &mesh->geometry : nullptr, st.sh.low_bits);
+    const Status r = DecodeQuantized(
+        &dec, &mesh->wedges, mesh->n, int(d.dimension), d.bits, d.prediction, st.order, &q,
+        texcoord ? &mesh->geometry : nullptr, st.sh.low_bits, st.sh.all_adaptive);
     if (r != Status::kOk) return r;
     values->resize(q.size());
     d.quant.DequantizeAll(q.data(), nullptr, mesh->n, values->data());
@@ -518,6 +519,7 @@ O3DGC_WASM_MINSIZE Status ReadStreamInfo(const uint8_t* data, size_t size, Strea
   info->keep_order = sh.keep_order;
   info->fast_decode = sh.fast_decode;
   info->low_bits = sh.low_bits;
+  info->all_adaptive = sh.all_adaptive;
   info->num_vertices = size_t(h.num_vertices);
   info->num_triangles = size_t(h.num_triangles);
   info->total = size;

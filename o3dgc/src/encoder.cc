@@ -112,6 +112,8 @@ struct GridState {
         order(CodingOrder::ForStream(p.params.fast_decode)) {
     h.position.bits = bits;
     h.position.range = range;
+    // Only where a section could code its low bits raw: a smaller stream stays readable by 1.2.
+    all_adaptive = p.params.max_compression && (p.nw >= kRawLowBitsMesh || p.nv >= kRawLowBitsMesh);
   }
   const Prepared& pre;
   PayloadHeader h;
@@ -123,15 +125,16 @@ struct GridState {
   std::unique_ptr<SideModels> sm{new SideModels};
   std::vector<int32_t> qpos;  // quantized positions per position vertex
   bool low_bits = false;      // format 1.2's modelled low bits (decided by the positions)
+  bool all_adaptive = false;  // format 1.3: no raw low bits (EncodeParams::max_compression)
 };
 
 // Bytes of one section of quantized values coded alone (the choice of LowBits).
 size_t SectionBytes(const WedgeTable* wedges, const std::vector<int32_t>& q, int dim, int bits,
                     Prediction mode, CodingOrder::Kind order, const std::vector<double>* geometry,
-                    LowBits low_bits) {
+                    LowBits low_bits, bool all_adaptive) {
   std::vector<uint8_t> scratch;
   ArithmeticEncoder e(&scratch);
-  EncodeQuantized(&e, wedges, q, dim, bits, mode, order, geometry, low_bits);
+  EncodeQuantized(&e, wedges, q, dim, bits, mode, order, geometry, low_bits, true, all_adaptive);
   e.Finish();
   return scratch.size();
 }
@@ -170,6 +173,7 @@ Status Validate(const MeshView& mesh, const EncodeParams& params) {
   if ((nv > 0 && !mesh.positions) || (nt > 0 && !mesh.indices)) return Status::kInvalidArgument;
   if (params.normal_bits < 1 || params.normal_bits > 30) return Status::kInvalidArgument;
   if (params.position_prediction == Prediction::kSurfaceNormal) return Status::kInvalidArgument;
+  if (params.max_compression && params.fast_decode) return Status::kInvalidArgument;
   for (size_t i = 0; i < 3 * nt; ++i) {
     if (mesh.indices[i] >= nv) return Status::kInvalidArgument;
   }
@@ -500,7 +504,30 @@ void EncodePositions(GridState& st) {
   // Whether each order uses the parallelogram selection, when its estimate tells (see
   // EncodeQuantized's expect_selection).
   bool selects[2] = {true, true};
-  if (!fast_decode && params.auto_fast_decode &&
+  if (st.all_adaptive && h.position.prediction != Prediction::kNone) {
+    // max_compression: the positions alone in the greedy order with every residual coded
+    // adaptively (plain or with trees), against the raw coding of the default stream in either
+    // order; the smallest sets the stream's flag and order, so that the option never makes a
+    // stream larger (rocker_arm, whose residuals are large, gains nothing from adaptive low bits
+    // and loses its class shifts).
+    auto bytes = [&](CodingOrder::Kind kind, LowBits low_bits, bool all) {
+      return SectionBytes(&wedges, qpos, 3, h.position.bits, h.position.prediction, kind, nullptr,
+                          low_bits, all);
+    };
+    const size_t adaptive = std::min(bytes(CodingOrder::kGreedy, LowBits::kNoFlag, true),
+                                     bytes(CodingOrder::kGreedy, LowBits::kModelled, true));
+    const size_t raw_greedy = bytes(CodingOrder::kGreedy, LowBits::kNoFlag, false);
+    const bool id_order = h.position.prediction == Prediction::kParallelogram;
+    const size_t raw_id = id_order ? bytes(CodingOrder::kVertexId, LowBits::kNoFlag, false) : 0;
+    if (std::min(raw_greedy, id_order ? raw_id : raw_greedy) < adaptive) {
+      st.all_adaptive = false;
+      if (id_order && raw_id < raw_greedy) {
+        fast_decode = true;
+        order = CodingOrder::kVertexId;
+      }
+    }
+  }
+  if (!fast_decode && params.auto_fast_decode && !params.max_compression &&
       h.position.prediction == Prediction::kParallelogram && RawLowBits(nw)) {
     // The bytes of the positions alone in each order (see EncodeParams::auto_fast_decode). The
     // estimates (a pass without coding) rule out the meshes where the id order is clearly
@@ -539,16 +566,17 @@ void EncodePositions(GridState& st) {
     }
   }
   if (!coded) {
-    if (HasLowBitsChoice(h.position.prediction, nw, 3, false)) {
+    const bool all = st.all_adaptive;
+    if (HasLowBitsChoice(h.position.prediction, nw, 3, false, all)) {
       const size_t plain = SectionBytes(&wedges, qpos, 3, h.position.bits, h.position.prediction,
-                                        order, nullptr, LowBits::kNoFlag);
+                                        order, nullptr, LowBits::kNoFlag, all);
       const size_t modelled = SectionBytes(&wedges, qpos, 3, h.position.bits, h.position.prediction,
-                                           order, nullptr, LowBits::kModelled);
+                                           order, nullptr, LowBits::kModelled, all);
       st.low_bits =
           modelled + kLowBitsMinGain <= plain && (plain - modelled) * kLowBitsMinShare >= plain;
     }
     EncodeQuantized(&enc, &wedges, qpos, 3, h.position.bits, h.position.prediction, order, nullptr,
-                    st.low_bits ? LowBits::kModelled : LowBits::kNoFlag, selects[order]);
+                    st.low_bits ? LowBits::kModelled : LowBits::kNoFlag, selects[order], all);
   }
 }
 
@@ -672,18 +700,19 @@ void EncodeAttributes(GridState& st) {
       mesh.wedges_built = true;
     }
     const std::vector<double>* geometry = texcoord ? &mesh.geometry : nullptr;
+    const bool all = st.all_adaptive;
     LowBits low_bits = st.low_bits ? LowBits::kPlain : LowBits::kNoFlag;
-    if (st.low_bits && HasLowBitsChoice(d.prediction, mesh.n, int(d.dimension), geometry)) {
+    if (st.low_bits && HasLowBitsChoice(d.prediction, mesh.n, int(d.dimension), geometry, all)) {
       const size_t plain = SectionBytes(&mesh.wedges, q, int(d.dimension), d.bits, d.prediction,
-                                        order, geometry, LowBits::kPlain);
+                                        order, geometry, LowBits::kPlain, all);
       const size_t modelled = SectionBytes(&mesh.wedges, q, int(d.dimension), d.bits, d.prediction,
-                                           order, geometry, LowBits::kModelled);
+                                           order, geometry, LowBits::kModelled, all);
       if (modelled < plain && (plain - modelled) * kLowBitsMinShare >= plain) {
         low_bits = LowBits::kModelled;
       }
     }
     EncodeQuantized(&enc, &mesh.wedges, q, int(d.dimension), d.bits, d.prediction, order, geometry,
-                    low_bits);
+                    low_bits, true, all);
   };
   size_t mark = enc.BytesSoFar();
   if (h.has_normals) {
@@ -798,7 +827,8 @@ Status EncodeGrid(const Prepared& pre, Prepared* release, int position_bits,
   AddTailBytes(h, st.payload.size() > mark ? st.payload.size() - mark : 0, &si);
   const EncodeParams& params = pre.params;
   out->clear();
-  WriteHeader(params.keep_order, st.fast_decode, st.low_bits, st.payload.size(), out);
+  WriteHeader(params.keep_order, st.fast_decode, st.low_bits, st.all_adaptive, st.payload.size(),
+              out);
   const size_t byte_header = out->size();
   out->insert(out->end(), st.payload.begin(), st.payload.end());
   Release(st.payload);
@@ -806,10 +836,11 @@ Status EncodeGrid(const Prepared& pre, Prepared* release, int position_bits,
   si.header += byte_header;
   si.stream_type = params.stream_type;
   si.version_major = kFormatMajor;
-  si.version_minor = WrittenMinor(st.low_bits);
+  si.version_minor = WrittenMinor(st.low_bits, st.all_adaptive);
   si.keep_order = params.keep_order;
   si.fast_decode = st.fast_decode;
   si.low_bits = st.low_bits;
+  si.all_adaptive = st.all_adaptive;
   si.num_vertices = pre.nv;
   si.num_triangles = pre.nt;
   if (params.stream_type == StreamType::kAscii) *out = PackAscii(*out);

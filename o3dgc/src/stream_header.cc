@@ -47,12 +47,13 @@ uint32_t Crc32(const uint8_t* data, size_t size, uint32_t crc) {
   return ~crc;
 }
 
-void WriteHeader(bool keep_order, bool fast_decode, bool low_bits, size_t payload_size,
-                 std::vector<uint8_t>* out) {
+void WriteHeader(bool keep_order, bool fast_decode, bool low_bits, bool all_adaptive,
+                 size_t payload_size, std::vector<uint8_t>* out) {
   out->insert(out->end(), kMagic, kMagic + 4);
   out->push_back(uint8_t(kFormatMajor));
-  out->push_back(uint8_t(WrittenMinor(low_bits)));
-  out->push_back(uint8_t((keep_order ? 1 : 0) | (fast_decode ? 2 : 0) | (low_bits ? 4 : 0)));
+  out->push_back(uint8_t(WrittenMinor(low_bits, all_adaptive)));
+  out->push_back(uint8_t((keep_order ? 1 : 0) | (fast_decode ? 2 : 0) | (low_bits ? 4 : 0) |
+                         (all_adaptive ? 8 : 0)));
   for (size_t i = 0; i < kCrcSize; ++i) out->push_back(0);
   uint64_t v = payload_size;
   do {
@@ -80,10 +81,13 @@ Status ParseHeader(const uint8_t* data, size_t size, StreamHeader* header) {
   header->minor = data[kVersionOffset + 1];
   if (header->major != kFormatMajor || header->minor > kFormatMinor) return Status::kBadVersion;
   const uint8_t flags = data[kFlagsOffset];
-  if (flags & ~(header->minor >= kLowBitsMinor ? 7u : 3u)) return Status::kCorrupt;
+  const unsigned known =
+      header->minor >= kAllAdaptiveMinor ? 15u : (header->minor >= kLowBitsMinor ? 7u : 3u);
+  if (flags & ~known) return Status::kCorrupt;
   header->keep_order = (flags & 1) != 0;
   header->fast_decode = (flags & 2) != 0;
   header->low_bits = (flags & 4) != 0;
+  header->all_adaptive = (flags & 8) != 0;
   const uint8_t* c = data + kCrcOffset;
   header->crc = uint32_t(c[0]) | uint32_t(c[1]) << 8 | uint32_t(c[2]) << 16 | uint32_t(c[3]) << 24;
   uint64_t v = 0;

@@ -5,7 +5,8 @@
 //   byte  4      format major version (kFormatMajor)
 //   byte  5      format minor version (kFormatMinor)
 //   byte  6      flags (bit 0: keep_order; bit 1: fast_decode; bit 2, from format 1.2 on:
-//                modelled low bits; other bits must be 0)
+//                modelled low bits; bit 3, from format 1.3 on: adaptive low bits in sections of
+//                every size; other bits must be 0)
 //   bytes 7..10  CRC32 (IEEE, little endian) of every other byte of the stream (bytes 0..6, then
 //                every byte after this field)
 //   varint      payload length in bytes (LEB128, at most 5 bytes)
@@ -31,8 +32,9 @@ struct StreamHeader {
   uint32_t major = kFormatMajor;
   uint32_t minor = kFormatMinor;
   bool keep_order = false;
-  bool fast_decode = false;  // parallelogram-predicted values coded in vertex id order
-  bool low_bits = false;     // 1.2: sections of adaptively coded values say if they model low bits
+  bool fast_decode = false;   // parallelogram-predicted values coded in vertex id order
+  bool low_bits = false;      // 1.2: sections of adaptively coded values say if they model low bits
+  bool all_adaptive = false;  // 1.3: no section codes its low bits raw (see RawLowBits)
   size_t payload_offset = 0;
   size_t payload_size = 0;
   uint32_t crc = 0;
@@ -46,13 +48,18 @@ uint32_t StreamCrc(const uint8_t* data, size_t size);
 
 // The first format minor version with modelled low bits (the flag `low_bits`).
 constexpr uint32_t kLowBitsMinor = 2;
+// The first format minor version with adaptive low bits in large sections (`all_adaptive`).
+constexpr uint32_t kAllAdaptiveMinor = 3;
 
 // Appends the header for a payload of `payload_size` bytes; the CRC field is left zero and filled
 // by FinalizeCrc once the payload is appended. The minor version written is the lowest that has
-// the stream's features: kLowBitsMinor with `low_bits`, else 1 (older decoders read the stream).
-void WriteHeader(bool keep_order, bool fast_decode, bool low_bits, size_t payload_size,
-                 std::vector<uint8_t>* out);
-inline uint32_t WrittenMinor(bool low_bits) { return low_bits ? kLowBitsMinor : 1; }
+// the stream's features: kAllAdaptiveMinor with `all_adaptive`, kLowBitsMinor with `low_bits`,
+// else 1 (older decoders read the stream).
+void WriteHeader(bool keep_order, bool fast_decode, bool low_bits, bool all_adaptive,
+                 size_t payload_size, std::vector<uint8_t>* out);
+inline uint32_t WrittenMinor(bool low_bits, bool all_adaptive) {
+  return all_adaptive ? kAllAdaptiveMinor : (low_bits ? kLowBitsMinor : 1);
+}
 void FinalizeCrc(std::vector<uint8_t>* stream);
 
 // Parses and checks the header of a binary stream of `size` bytes; the payload must end exactly at

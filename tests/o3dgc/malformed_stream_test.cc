@@ -169,7 +169,7 @@ TEST(Malformed, RandomGarbageAfterHeader) {
     for (size_t i = 0; i < n; ++i) c.push_back(uint8_t(rng()));
     // Fix the payload length so the header parses.
     std::vector<uint8_t> out;
-    WriteHeader(false, false, false, n, &out);
+    WriteHeader(false, false, false, false, n, &out);
     out.insert(out.end(), c.begin() + 11, c.end());
     FinalizeCrc(&out);
     DecodedMesh m;
@@ -199,7 +199,7 @@ TEST(Malformed, HugeVertexCountRejectedQuickly) {
     enc.Finish();
   }
   std::vector<uint8_t> s;
-  WriteHeader(false, false, false, payload.size(), &s);
+  WriteHeader(false, false, false, false, payload.size(), &s);
   s.insert(s.end(), payload.begin(), payload.end());
   FinalizeCrc(&s);
   const auto t0 = std::chrono::steady_clock::now();
@@ -254,6 +254,12 @@ TEST(Malformed, HeaderChecks) {
   for (const uint8_t flag : {8, 16, 128}) {  // 1.2 adds bit 2 (modelled low bits)
     c = s;
     c[5] = uint8_t(kLowBitsMinor);
+    c[6] |= flag;
+    EXPECT_EQ(Decode(c.data(), c.size(), DecodeOptions(), &m), Status::kCorrupt) << int(flag);
+  }
+  for (const uint8_t flag : {16, 32, 128}) {  // 1.3 adds bit 3 (adaptive low bits everywhere)
+    c = s;
+    c[5] = uint8_t(kAllAdaptiveMinor);
     c[6] |= flag;
     EXPECT_EQ(Decode(c.data(), c.size(), DecodeOptions(), &m), Status::kCorrupt) << int(flag);
   }

@@ -382,6 +382,57 @@ TEST(RoundTrip, LargeMeshesCodeResidualLowBitsRaw) {
   }
 }
 
+TEST(RoundTrip, MaxCompressionCodesLargeSectionsAdaptivelyAsFormat13) {
+  // A large noisy torus with colours and joint ids, and a large grid with uvs: with
+  // max_compression every section codes its low bits adaptively; the decoded values are exactly
+  // those of the default stream, which is larger.
+  TestMesh torus = o3dgc_test::Torus(72, 60);
+  TestMesh grid = o3dgc_test::Grid(72, 60);
+  grid.normals.clear();
+  for (size_t i = 0; i < torus.positions.size(); ++i)
+    torus.positions[i] += float(((i * 2654435761u) % 1000) * 2e-5);
+  for (const TestMesh* t : {&torus, &grid}) {
+    ASSERT_GE(t->nv(), 4096u);
+    for (int bits : {14, 30}) {
+      EncodeParams p;
+      p.keep_order = true;
+      p.position_bits = bits;
+      StreamInfo plain_info, max_info;
+      const std::vector<uint8_t> plain = EncodeOk(*t, p, &plain_info);
+      p.max_compression = true;
+      const std::vector<uint8_t> max = EncodeOk(*t, p, &max_info);
+      EXPECT_TRUE(max_info.all_adaptive);
+      EXPECT_EQ(max_info.version_minor, 3u);
+      EXPECT_FALSE(plain_info.all_adaptive);
+      EXPECT_LE(plain_info.version_minor, 2u);
+      EXPECT_LT(max.size(), plain.size()) << bits << " bits";
+      StreamInfo read;
+      ASSERT_EQ(ReadStreamInfo(max.data(), max.size(), &read), Status::kOk);
+      EXPECT_TRUE(read.all_adaptive);
+      EXPECT_EQ(read.version_minor, 3u);
+      const DecodedMesh a = DecodeOk(plain), b = DecodeOk(max);
+      EXPECT_EQ(a.positions, b.positions);
+      EXPECT_EQ(a.indices, b.indices);
+      ASSERT_EQ(a.float_attributes.size(), b.float_attributes.size());
+      for (size_t k = 0; k < a.float_attributes.size(); ++k)
+        EXPECT_EQ(a.float_attributes[k].values, b.float_attributes[k].values);
+      CheckExact(*t, b, bits, 0, 12);
+    }
+  }
+  // A small mesh has no raw section: the option changes nothing and the stream stays 1.2 or older.
+  TestMesh small = o3dgc_test::Grid(10, 10);
+  EncodeParams p;
+  StreamInfo plain_info, max_info;
+  const std::vector<uint8_t> plain = EncodeOk(small, p, &plain_info);
+  p.max_compression = true;
+  EXPECT_EQ(EncodeOk(small, p, &max_info), plain);
+  EXPECT_FALSE(max_info.all_adaptive);
+  // It cannot be combined with the vertex id order.
+  p.fast_decode = true;
+  std::vector<uint8_t> s;
+  EXPECT_EQ(Encode(small.View(), p, &s), Status::kInvalidArgument);
+}
+
 TEST(RoundTrip, FloatAttributeModesDimensionsAndRanges) {
   TestMesh t = o3dgc_test::Grid(10, 10);
   t.normals.clear();
@@ -505,7 +556,7 @@ TEST(RoundTrip, DeterministicAndStreamInfoAddsUp) {
   EXPECT_EQ(read.version_minor, info.version_minor);
   EXPECT_EQ(info.version_minor, info.low_bits ? 2u : 1u);
   EXPECT_EQ(info.version_major, 1u);
-  EXPECT_STREQ(FormatVersionString(), "1.2");
+  EXPECT_STREQ(FormatVersionString(), "1.3");
 }
 
 TEST(RoundTrip, RejectsInvalidInput) {

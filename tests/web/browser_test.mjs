@@ -89,6 +89,22 @@ try {
       truncated: await errorOf(() => dec.decode(bytes.subarray(0, bytes.length >> 1))),
       flipped: await errorOf(() => { const b = bytes.slice(); b[b.length - 5] ^= 0x55; return dec.decode(b); }),
       workerJunk: await errorOf(() => worker.decode(junk)),
+      // Format 1.3 (max_compression): decoded exactly as the C++ decoder's conformance text.
+      conformance13: await (async () => {
+        const dir = '/tests/o3dgc/conformance/1.3/max_compression';
+        const s3d = new Uint8Array(await (await fetch(`${dir}.s3d`)).arrayBuffer());
+        const text = await (await fetch(`${dir}.txt`)).text();
+        const d = dec.decode(s3d);
+        const v = [], f = [];
+        for (const line of text.split('\n')) {
+          const w = line.split(' ');
+          if (w[0] === 'v') v.push(...w.slice(1).map((x) => Math.fround(Number(x))));
+          if (w[0] === 'f') f.push(...w.slice(1).map(Number));
+        }
+        const same = v.length === d.positions.length && v.every((x, i) => x === d.positions[i]) &&
+          f.length === d.indices.length && f.every((x, i) => x === d.indices[i]);
+        return same ? 'same' : `differs (${d.positions.length} / ${v.length} coordinates)`;
+      })().catch((e) => `${e.name}:${e.status ?? e.message}`),
       // An original Open3DGC stream: this build leaves their decoder out (HULLPACK_WASM_LEGACY).
       legacy: await errorOf(async () => dec.decode(new Uint8Array(await (await fetch('/tests/o3dgc/vectors/cup.binary.s3d')).arrayBuffer()))),
     };
@@ -128,6 +144,7 @@ try {
   check(direct.errs.trapCount === 0, `1000 mutated streams: no wasm trap${direct.errs.trapCount ? `: ${direct.errs.traps}` : ''}`);
   check(direct.errs.workerJunk === 'HullpackDecodeError:bad_magic', `worker junk -> ${direct.errs.workerJunk}`);
   check(direct.errs.legacy === 'HullpackDecodeError:unsupported', `original Open3DGC stream -> ${direct.errs.legacy}`);
+  check(direct.errs.conformance13 === 'same', `format 1.3 conformance vector -> ${direct.errs.conformance13}`);
 
   // 3. The viewer on the bare stream, decoded in a worker.
   const page2 = await context.newPage();

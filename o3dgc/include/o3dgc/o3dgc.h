@@ -28,12 +28,12 @@
 //    arithmetic-coded payload. The ASCII form ("O3DA") is the same stream repacked 7 bits per
 //    byte. The format is specified in docs/o3dgc-stream-format.md.
 //
-// Format versions: Encode writes the lowest version that has the stream's features (1.2 when it
-// models residuals' low bits, which pays on models built on a design grid; else 1.1, which older
-// decoders read), at most kFormatMajor.kFormatMinor. Decode reads every stream of
-// major version 1 up to its own minor version (a later feature is a new minor version or a new
-// flag, never a change of what an existing version means); a stream of another major version, or
-// of a later minor version than the decoder's, is kBadVersion.
+// Format versions: Encode writes the lowest version that has the stream's features (1.3 with
+// EncodeParams::max_compression; 1.2 when it models residuals' low bits, which pays on models built
+// on a design grid; else 1.1, which older decoders read), at most kFormatMajor.kFormatMinor. Decode
+// reads every stream of major version 1 up to its own minor version (a later feature is a new minor
+// version or a new flag, never a change of what an existing version means); a stream of another
+// major version, or of a later minor version than the decoder's, is kBadVersion.
 //
 // Trust model: Encode trusts nothing it cannot check cheaply but expects the pointers of a
 // MeshView to be valid for the sizes stated below (it is not hardened against hostile callers).
@@ -59,9 +59,9 @@ namespace o3dgc {
 // The newest stream format version, which Encode writes when a stream needs it (see "Format
 // versions" above) and Decode reads.
 constexpr uint32_t kFormatMajor = 1;
-constexpr uint32_t kFormatMinor = 2;
+constexpr uint32_t kFormatMinor = 3;
 
-// "1.2": the newest stream format version this library writes and reads, for --version output.
+// "1.3": the newest stream format version this library writes and reads, for --version output.
 const char* FormatVersionString();
 
 enum class Status : uint8_t {
@@ -175,6 +175,12 @@ struct EncodeParams {
   // about 0.7x the time; CAD parts and most smooth meshes keep the default order. Encoding the
   // positions three times takes longer.
   bool auto_fast_decode = true;
+  // true: the smallest stream this coder makes, for slower decoding (format 1.3): residuals code
+  // their sign and low bits adaptively in sections of every size (not raw from 4096 vertices on),
+  // and parallelogram-predicted values keep the order with the most parallelograms
+  // (auto_fast_decode is not applied; fast_decode must be false). Large scans come out 2-5 %
+  // smaller and decode in about 1.2-1.5x the time (docs/benchmarks.md).
+  bool max_compression = false;
   int position_bits = 14;  // 1..30
   Prediction position_prediction = Prediction::kParallelogram;
   RangeMode position_range = RangeMode::kUniform;
@@ -236,6 +242,7 @@ struct StreamInfo {
   bool fast_decode =
       false;              // values in vertex id order (EncodeParams::fast_decode, auto_fast_decode)
   bool low_bits = false;  // format 1.2: modelled low bits (grid-built meshes; chosen by Encode)
+  bool all_adaptive = false;  // format 1.3: adaptive low bits in large sections (max_compression)
   size_t num_vertices = 0;
   size_t num_triangles = 0;
   size_t total = 0;
