@@ -77,6 +77,7 @@ def encode(
     color_bits: int = 10,
     keep_order: bool = False,
     fast_decode: bool = False,
+    max_compression: bool = False,
     ascii: bool = False,
     progress: Progress = None,
 ) -> bytes: ...
@@ -101,7 +102,8 @@ def pack(
     ascii: bool = False,
     keep_order: bool = False,
     fast_decode: bool = False,
-    part_triangles: int = 1000000,
+    max_compression: bool = False,
+    part_triangles: int = 600000,
     fallback: bool = False,
     quantized_hulls: bool = False,
     plain_animations: bool = False,

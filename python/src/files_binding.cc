@@ -142,12 +142,13 @@ void ApplyDecomposition(vhacd::Parameters* p, const std::string& quality,
 
 py::dict Pack(const std::string& input, const std::string& output, double max_error,
               double hull_error, std::optional<int> position_bits, int normal_bits, int uv_bits,
-              bool ascii, bool keep_order, bool fast_decode, int64_t part_triangles, bool fallback,
-              bool quantized_hulls, bool plain_animations, py::handle hulls,
-              const std::string& physics, const std::string& method, const std::string& quality,
-              std::optional<uint32_t> resolution, std::optional<uint32_t> max_hulls,
-              std::optional<uint32_t> max_vertices, std::optional<double> concavity,
-              std::optional<double> max_concavity, bool force, py::object progress) {
+              bool ascii, bool keep_order, bool fast_decode, bool max_compression,
+              int64_t part_triangles, bool fallback, bool quantized_hulls, bool plain_animations,
+              py::handle hulls, const std::string& physics, const std::string& method,
+              const std::string& quality, std::optional<uint32_t> resolution,
+              std::optional<uint32_t> max_hulls, std::optional<uint32_t> max_vertices,
+              std::optional<double> concavity, std::optional<double> max_concavity, bool force,
+              py::object progress) {
   PackOptions o;
   if (!(max_error > 0 && max_error <= 0.5)) throw py::value_error("max_error must be in (0, 0.5]");
   if (!(hull_error > 0 && hull_error <= 0.5))
@@ -162,6 +163,9 @@ py::dict Pack(const std::string& input, const std::string& output, double max_er
   o.stream_type = ascii ? o3dgc::StreamType::kAscii : o3dgc::StreamType::kBinary;
   o.keep_order = keep_order;
   o.fast_decode = fast_decode;
+  o.max_compression = max_compression;
+  if (fast_decode && max_compression)
+    throw py::value_error("fast_decode and max_compression exclude each other");
   if (part_triangles < 0) throw py::value_error("part_triangles must be >= 0");
   o.part_triangles = static_cast<size_t>(part_triangles);
   o.glb.fallback = fallback;
@@ -373,9 +377,9 @@ position_bits : int, optional
     Explicit position bits (1 to 30) instead of max_error.
 normal_bits, uv_bits : int
     Bits for normals (10) and texture coordinates (12).
-ascii, keep_order, fast_decode, fallback, quantized_hulls, plain_animations : bool
-    As the command's --ascii, --keep-order, --fast-decode, --fallback, --quantized-hulls,
-    --plain-animations.
+ascii, keep_order, fast_decode, max_compression, fallback, quantized_hulls, plain_animations : bool
+    As the command's --ascii, --keep-order, --fast-decode, --max-compression, --fallback,
+    --quantized-hulls, --plain-animations.
 part_triangles : int
     As --part-triangles: a render mesh of more triangles is coded in compact parts of at most
     this many, one stream and glTF mesh each, on one grid (1000000; 0: never).
@@ -425,6 +429,7 @@ OSError
         py::arg("hull_error") = 0.002, py::arg("position_bits") = py::none(),
         py::arg("normal_bits") = 10, py::arg("uv_bits") = 12, py::arg("ascii") = false,
         py::arg("keep_order") = false, py::arg("fast_decode") = false,
+        py::arg("max_compression") = false,
         py::arg("part_triangles") = static_cast<int64_t>(kDefaultPartTriangles),
         py::arg("fallback") = false, py::arg("quantized_hulls") = false,
         py::arg("plain_animations") = false, py::arg("hulls") = "auto", py::arg("physics") = "omi",

@@ -173,6 +173,21 @@ class Codec(unittest.TestCase):
                 self.assertEqual(info["triangles"], len(f))
                 self.assertEqual(info["bytes"]["total"], len(data))
 
+    def test_max_compression_is_smaller_and_decodes_the_same(self):
+        v, f, _, _ = meshes.sphere(80, 80)  # past 4096 vertices: format 1.3's adaptive low bits
+        rng = np.random.default_rng(7)
+        v = v + rng.uniform(-1e-3, 1e-3, v.shape)
+        plain = hullpack.encode(v, f)
+        small = hullpack.encode(v, f, max_compression=True)
+        self.assertLess(len(small), len(plain))
+        info = hullpack.stream_info(small)
+        self.assertTrue(info["max_compression"])
+        self.assertEqual(info["version"], "1.3")
+        self.assertFalse(hullpack.stream_info(plain)["max_compression"])
+        np.testing.assert_array_equal(hullpack.decode(small)["vertices"], hullpack.decode(plain)["vertices"])
+        with self.assertRaises(ValueError):
+            hullpack.encode(v, f, max_compression=True, fast_decode=True)
+
     def test_decode_reads_any_buffer(self):
         v, f, _, _ = meshes.sphere(8, 16)
         data = hullpack.encode(v, f)

@@ -16,7 +16,8 @@
 // than a ratio of medians. --clock cpu times the process's CPU time
 // instead of wall time: steadier on a loaded machine (the time spent waiting for a core is left
 // out), the same on a quiet one. --ours-only skips Draco (profiling runs, size checks).
-// --fast-decode encodes ours with EncodeParams::fast_decode (values in vertex id order).
+// --fast-decode encodes ours with EncodeParams::fast_decode (values in vertex id order),
+// --max-compression with EncodeParams::max_compression.
 #include <time.h>
 
 #include <algorithm>
@@ -46,6 +47,7 @@ struct Settings {
   bool cpu_clock = false;
   bool ours_only = false;
   bool fast_decode = false;
+  bool max_compression = false;
   bool parts = false;
   std::string csv;
   std::vector<std::string> only;  // mesh names (file names without extension); empty: all
@@ -107,6 +109,7 @@ bool RunAll(const Mesh& mesh, const Settings& s, Row& row) {
   cs.normal_bits = s.qn;
   cs.uv_bits = s.qt;
   cs.fast_decode = s.fast_decode;
+  cs.max_compression = s.max_compression;
   DracoRun draco[2];
   draco[0].level = 7;
   draco[1].level = 10;
@@ -219,6 +222,8 @@ int main(int argc, char** argv) {
             });
   cli.Flag("--ours-only", &s.ours_only, "skip Draco (profiling runs, size checks)");
   cli.Flag("--fast-decode", &s.fast_decode, "encode ours with EncodeParams::fast_decode");
+  cli.Flag("--max-compression", &s.max_compression,
+           "encode ours with EncodeParams::max_compression");
   cli.Flag("--parts", &s.parts, "also print the bytes of each part of our stream");
   if (std::optional<int> exit_code = cli.Parse(argc, argv)) return *exit_code;
   const std::string& folder = folders[0];

@@ -127,6 +127,7 @@ Status MakeCodecInput(const Mesh& input, const std::vector<uint32_t>& groups,
   params.stream_type = s.stream_type;
   params.keep_order = s.keep_order;
   params.fast_decode = s.fast_decode;
+  params.max_compression = s.max_compression;
   params.position_bits = s.position_bits;
   params.position_range = s.position_range;
   params.position_box = s.position_box;

@@ -24,8 +24,9 @@ namespace hullpack {
 
 struct MeshCodecSettings {
   o3dgc::StreamType stream_type = o3dgc::StreamType::kBinary;
-  bool keep_order = false;   // true: decoded vertex and triangle order equal the input's
-  bool fast_decode = false;  // o3dgc::EncodeParams::fast_decode
+  bool keep_order = false;       // true: decoded vertex and triangle order equal the input's
+  bool fast_decode = false;      // o3dgc::EncodeParams::fast_decode
+  bool max_compression = false;  // o3dgc::EncodeParams::max_compression
   int position_bits = 14;
   // How the position quantization cube is sized: kUniform (largest extent) or kDiagonal (the
   // bounding-box diagonal: coarser cells at the same bits, for budgets that kUniform overshoots).

@@ -79,6 +79,7 @@ MeshCodecSettings SettingsFor(const PackOptions& options) {
   s.stream_type = options.stream_type;
   s.keep_order = options.keep_order;
   s.fast_decode = options.fast_decode;
+  s.max_compression = options.max_compression;
   s.normal_bits = options.normal_bits;
   s.uv_bits = options.uv_bits;
   return s;

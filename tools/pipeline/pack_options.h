@@ -32,6 +32,9 @@ struct PackOptions {
   o3dgc::StreamType stream_type = o3dgc::StreamType::kBinary;
   bool keep_order = false;
   bool fast_decode = false;  // o3dgc::EncodeParams::fast_decode, for render meshes and hulls
+  // o3dgc::EncodeParams::max_compression (excludes fast_decode): smaller large meshes, slower
+  // decoding.
+  bool max_compression = false;
   // A render mesh of more triangles (without skin or morph targets) is coded in spatially compact
   // parts of at most this many, each a stream and a glTF mesh of its own on the mesh's node, all
   // on the mesh's quantization grid: the encoder's memory follows a part, not the mesh. 0: never.

@@ -314,7 +314,11 @@ int main(int argc, char** argv) {
            "keep vertex and triangle order exactly (larger)");
   cli.Flag("-fast, --fast-decode", &settings.fast_decode,
            "code values in vertex id order: faster decoding, a few % larger");
+  cli.Flag("-max, --max-compression", &settings.max_compression,
+           "the smallest stream (format 1.3): slower decoding");
   if (std::optional<int> exit_code = cli.Parse(argc, argv)) return *exit_code;
+  if (settings.fast_decode && settings.max_compression)
+    return cli.UsageError("-fast and -max exclude each other");
   if (compress == decompress) return cli.UsageError("give one of -c and -d");
   if (!operands.empty()) {
     if (!input.empty()) return cli.UsageError("give INPUT once (-i or operand)");

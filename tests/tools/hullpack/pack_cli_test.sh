@@ -87,6 +87,18 @@ cmp -s "$tmp/order_default.glb" "$tmp/order_fast.glb" && fail "--fast-decode wro
 run 0 unpack-default -- "$bin" unpack "$tmp/order_default.glb" -o "$tmp/order_default.obj"
 run 0 unpack-fast -- "$bin" unpack "$tmp/order_fast.glb" -o "$tmp/order_fast.obj"
 cmp -s "$tmp/order_default.obj" "$tmp/order_fast.obj" && pass || fail "--fast-decode decodes to another mesh"
+# --max-compression: a smaller stream (format 1.3) of a mesh past 4096 vertices, the same mesh
+# decoded; not with --fast-decode.
+scan=$src/samples/scans/thorvaldsen_maria.glb
+run 0 pack-scan-default -- "$bin" pack "$scan" -o "$tmp/scan_default.glb" --hulls none --qp 14 --quiet
+run 0 pack-scan-max -- "$bin" pack "$scan" -o "$tmp/scan_max.glb" --hulls none --qp 14 --max-compression --quiet
+[ "$(stat -c %s "$tmp/scan_max.glb")" -lt "$(stat -c %s "$tmp/scan_default.glb")" ] && pass ||
+  fail "--max-compression: $(stat -c %s "$tmp/scan_max.glb") bytes, default $(stat -c %s "$tmp/scan_default.glb")"
+run 0 unpack-scan-default -- "$bin" unpack "$tmp/scan_default.glb" -o "$tmp/scan_default.obj"
+run 0 unpack-scan-max -- "$bin" unpack "$tmp/scan_max.glb" -o "$tmp/scan_max.obj"
+cmp -s "$tmp/scan_default.obj" "$tmp/scan_max.obj" && pass || fail "--max-compression decodes to another mesh"
+run 64 max-and-fast -- "$bin" pack "$scan" -o "$tmp/scan_both.glb" --max-compression --fast-decode --quiet
+grep -q "exclude each other" "$tmp/err" && pass || fail "--max-compression --fast-decode: $(cat "$tmp/err")"
 
 # Batch into a folder: one bad input among good ones.
 mkdir "$tmp/batch"
