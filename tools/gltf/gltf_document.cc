@@ -202,15 +202,34 @@ void GltfDocument::DropExtension(const std::string& name) {
   }
 }
 
+namespace {
+
+// buffers[0] of `j`, made an object (and the list made) when it is not one.
+nlohmann::json& BufferZero(nlohmann::json& j) {
+  nlohmann::json& buffers = j["buffers"];
+  if (!buffers.is_array()) buffers = nlohmann::json::array();
+  if (buffers.empty()) buffers.push_back(nlohmann::json::object());
+  if (!buffers[0].is_object()) buffers[0] = nlohmann::json::object();
+  return buffers[0];
+}
+
+// Invalid UTF-8 in names is replaced rather than failing the whole write.
+Result<std::string> DumpJson(const nlohmann::json& j) {
+  try {
+    return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  } catch (const std::exception& e) {
+    return Status(StatusCode::kInternal, std::string("cannot serialize glTF JSON: ") + e.what());
+  }
+}
+
+}  // namespace
+
 Result<std::string> GltfDocument::SerializeJson(const std::string& buffer_uri) const {
   nlohmann::json j = json_;
   if (!binary_.empty()) {
-    nlohmann::json& buffers = j["buffers"];
-    if (!buffers.is_array()) buffers = nlohmann::json::array();
-    if (buffers.empty()) buffers.push_back(nlohmann::json::object());
-    if (!buffers[0].is_object()) buffers[0] = nlohmann::json::object();
-    buffers[0]["uri"] = buffer_uri;
-    buffers[0]["byteLength"] = binary_.size();
+    nlohmann::json& buffer = BufferZero(j);
+    buffer["uri"] = buffer_uri;
+    buffer["byteLength"] = binary_.size();
   }
   const nlohmann::json* buffers = j.contains("buffers") ? &j["buffers"] : nullptr;
   for (size_t b = binary_.empty() ? 0 : 1; buffers && buffers->is_array() && b < buffers->size();
@@ -220,33 +239,22 @@ Result<std::string> GltfDocument::SerializeJson(const std::string& buffer_uri) c
                     "buffer " + std::to_string(b) + " has no uri: it can only live in a GLB");
     }
   }
-  try {
-    return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
-  } catch (const std::exception& e) {
-    return Status(StatusCode::kInternal, std::string("cannot serialize glTF JSON: ") + e.what());
-  }
+  return DumpJson(j);
 }
 
 Result<std::vector<uint8_t>> GltfDocument::Serialize() const {
   nlohmann::json j = json_;
   if (!binary_.empty()) {
-    nlohmann::json& buffers = j["buffers"];
-    if (!buffers.is_array()) buffers = nlohmann::json::array();
-    if (buffers.empty()) buffers.push_back(nlohmann::json::object());
-    if (!buffers[0].is_object()) buffers[0] = nlohmann::json::object();
-    if (buffers[0].contains("uri")) {
+    nlohmann::json& buffer = BufferZero(j);
+    if (buffer.contains("uri")) {
       return Status(StatusCode::kInvalidArgument,
                     "buffer 0 has a uri, so it cannot be the GLB binary chunk");
     }
-    buffers[0]["byteLength"] = binary_.size();
+    buffer["byteLength"] = binary_.size();
   }
-  std::string text;
-  try {
-    // Invalid UTF-8 in names is replaced rather than failing the whole write.
-    text = j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
-  } catch (const std::exception& e) {
-    return Status(StatusCode::kInternal, std::string("cannot serialize glTF JSON: ") + e.what());
-  }
+  Result<std::string> dumped = DumpJson(j);
+  if (!dumped.ok()) return dumped.status();
+  const std::string& text = dumped.value();
   const size_t json_padded = (text.size() + 3) & ~static_cast<size_t>(3);
   const size_t bin_padded = (binary_.size() + 3) & ~static_cast<size_t>(3);
   uint64_t total =
