@@ -1,7 +1,7 @@
 // libFuzzer target: the GLB reader with the packed-file decoder (what `hullpack unpack` and every
-// GLB input go through) and the collision-hull reader (`hullpack info`). Any bytes give a Status or
-// a consistent scene and hulls (indices, animation targets, morph targets, camera and light
-// references in range).
+// GLB input go through), the collision-hull reader and the stream version listing (`hullpack
+// info`). Any bytes give a Status or a consistent scene and hulls (indices, animation targets,
+// morph targets, camera and light references in range).
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -10,6 +10,13 @@
 #include "packed/packed_glb_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  hullpack::Result<hullpack::GltfDocument> parsed =
+      hullpack::ParseGltfBytes(data, size, "fuzz.glb");
+  if (parsed.ok()) {
+    for (const auto& [version, count] : hullpack::StreamVersions(parsed.value())) {
+      if (count == 0 || version.empty()) std::abort();
+    }
+  }
   hullpack::GltfDocument doc;
   hullpack::Result<hullpack::Scene> scene =
       hullpack::ReadPackedGltf(data, size, "fuzz.glb", "", &doc);

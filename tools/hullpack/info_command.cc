@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <iostream>
 #include <iterator>
+#include <map>
 #include <optional>
 
 #include "common/file_util.h"
@@ -104,6 +105,7 @@ int RunInfoCommand(const std::vector<std::string>& args) {
   size_t file_size = stat(path.c_str(), &st) == 0 ? static_cast<size_t>(st.st_size) : 0;
   // Collision hulls as a physics engine builds them (the collider nodes' shapes).
   std::vector<CollisionHull> hulls;
+  std::map<std::string, size_t> stream_versions;  // of the compressed primitives' streams
   Result<std::vector<uint8_t>> bytes = std::vector<uint8_t>();
   const bool gltf = format == FileFormat::kGlb || format == FileFormat::kGltf;
   if (gltf) bytes = ReadFileBytes(path);
@@ -122,6 +124,8 @@ int RunInfoCommand(const std::vector<std::string>& args) {
       return 1;
     }
     hulls = std::move(found.value());
+    Result<GltfDocument> parsed = ParseGltfBytes(bytes->data(), bytes->size(), path);
+    if (parsed.ok()) stream_versions = StreamVersions(parsed.value());
   }
   LeaveOutPointHulls(hulls, scene.value());
   if (!hulls.empty()) ForgetReadCollisionExtensions(scene.value());
@@ -135,6 +139,7 @@ int RunInfoCommand(const std::vector<std::string>& args) {
     j["bytes"] = file_size;
     j["collision_hulls"] = hulls.size();
     j["collision_hull_points"] = hull_points;
+    j["stream_versions"] = stream_versions;
     std::cout << j.dump(2) << "\n";
   } else {
     std::cout << path << ": " << FormatName(format) << ", " << file_size << " bytes\n"
@@ -142,6 +147,16 @@ int RunInfoCommand(const std::vector<std::string>& args) {
     if (!hulls.empty())
       std::cout << "  collision hulls " << hulls.size() << " (convex colliders), " << hull_points
                 << " points\n";
+    if (!stream_versions.empty()) {
+      // Which decoder releases read the file: each stream needs its format version.
+      size_t streams = 0;
+      std::string by_version;
+      for (const auto& [version, count] : stream_versions) {
+        streams += count;
+        by_version += (by_version.empty() ? "" : ", ") + version + ": " + std::to_string(count);
+      }
+      std::cout << "  compressed streams " << streams << " (format " << by_version << ")\n";
+    }
   }
   return 0;
 }

@@ -511,6 +511,37 @@ Status ReadAccessor(const GltfDocument& doc, int64_t index, const std::string& w
 
 }  // namespace
 
+std::map<std::string, size_t> StreamVersions(const GltfDocument& doc) {
+  std::map<std::string, size_t> versions;
+  nlohmann::json json = doc.json();  // ForEachPrimitiveWith takes the extension off its copy
+  const size_t views = gltf::ArraySize(json, "bufferViews");
+  std::set<int64_t> seen;
+  const std::vector<uint8_t>& bin = doc.binary();
+  gltf::ForEachPrimitiveWith(
+      json, kMeshCompressionExtension, [&](nlohmann::json& prim, const std::string&) {
+        const nlohmann::json& ext = prim["extensions"][kMeshCompressionExtension];
+        const int64_t view = ext.is_object() ? gltf::IndexMember(ext, "bufferView", views) : -1;
+        if (view < 0 || !seen.insert(view).second) return Status::Ok();
+        const nlohmann::json& v = json["bufferViews"][size_t(view)];
+        uint64_t offset = 0, length = 0, buffer = 0;
+        o3dgc::StreamInfo info;
+        const bool inside = gltf::GetUintMember(v, "byteOffset", 0, &offset) &&
+                            gltf::GetUintMember(v, "byteLength", 0, &length) &&
+                            gltf::GetUintMember(v, "buffer", 0, &buffer) && buffer == 0 &&
+                            offset <= bin.size() && length <= bin.size() - offset;
+        if (!inside ||
+            o3dgc::ReadStreamInfo(bin.data() + offset, length, &info) != o3dgc::Status::kOk) {
+          ++versions["unreadable"];
+        } else if (info.format != o3dgc::StreamFormat::kNative) {
+          ++versions["Open3DGC 2013"];
+        } else {
+          ++versions[std::to_string(info.version_major) + "." + std::to_string(info.version_minor)];
+        }
+        return Status::Ok();
+      });
+  return versions;
+}
+
 Status AdoptBufferFile(GltfDocument& doc, const std::string& base_dir, const std::string& name) {
   nlohmann::json& json = doc.json();
   if (doc.has_binary_chunk() || !json.contains("buffers") || !json["buffers"].is_array() ||

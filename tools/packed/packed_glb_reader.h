@@ -8,6 +8,7 @@
 #define HULLPACK_TOOLS_PACKED_PACKED_GLB_READER_H_
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,12 @@ inline constexpr const char* kCollisionExtensions[] = {"OMI_physics_shape", "OMI
 // the hull of the points is the shape). The document is hostile: every index is checked.
 Result<std::vector<CollisionHull>> ReadCollisionHulls(const GltfDocument& doc,
                                                       const std::string& name);
+
+// The stream format version ("1.1", "1.3", ...) of each distinct o3dgc stream the compressed
+// primitives of a parsed, not inflated, document `doc` reference, with how many streams have it:
+// which decoder releases read the file (docs/o3dgc-stream-format.md). A stream whose header cannot
+// be read counts as "unreadable" (decoding the file reports why).
+std::map<std::string, size_t> StreamVersions(const GltfDocument& doc);
 
 // For a .gltf (no binary chunk) whose buffer 0 is a file beside it (a relative URI resolved in
 // `base_dir`, as `hullpack unpack OUT.gltf` writes): reads that file into doc's binary chunk and

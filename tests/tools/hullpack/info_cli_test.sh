@@ -40,6 +40,10 @@ check no-args 64 "usage" -- "$bin" info
 "$bin" pack "$src/samples/torus.obj" -o "$tmp/torus.glb" --quiet
 check packed-hulls 0 "collision hulls [1-9][0-9]* (convex colliders)" -- "$bin" info "$tmp/torus.glb"
 check packed-hulls-json 0 '"collision_hulls": [1-9]' -- "$bin" info --json "$tmp/torus.glb"
+# ... and the format versions of their streams (which decoders read the file).
+check packed-stream-versions 0 "compressed streams 1 (format 1.1: 1)" -- "$bin" info "$tmp/torus.glb"
+"$bin" pack "$src/samples/scans/thorvaldsen_maria.glb" -o "$tmp/maria.glb" --hulls none --max-compression --quiet
+check packed-stream-versions-13 0 '"1.3": 1' -- "$bin" info --json "$tmp/maria.glb"
 # The physics extensions it reads the hulls from are not listed as ignored.
 "$bin" info "$tmp/torus.glb" >"$tmp/info.txt" 2>&1
 if grep -q "OMI_physics" "$tmp/info.txt"; then
