@@ -17,22 +17,23 @@ namespace {
 // Hulls `hullpack pack` writes have at most 1024 points (--max-vertices).
 constexpr size_t kMaxUnpackedHullPoints = 16384;
 
+// Where the extension of "dir/name.off" starts (the path's size when it has none).
+size_t ExtensionStart(const std::string& path) {
+  const size_t slash = path.find_last_of("/\\");
+  const size_t dot = path.rfind('.');
+  return dot == std::string::npos || (slash != std::string::npos && dot < slash) ? path.size()
+                                                                                 : dot;
+}
+
 // "dir/name.off" -> "dir/name.hulls.off"
 std::string HullsPath(const std::string& output) {
-  const size_t slash = output.find_last_of("/\\");
-  const size_t dot = output.rfind('.');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
-    return output + ".hulls";
+  const size_t dot = ExtensionStart(output);
   return output.substr(0, dot) + ".hulls" + output.substr(dot);
 }
 
 // "dir/name.gltf" -> "dir/name.bin": the .gltf's buffer, beside it.
 std::string BufferPath(const std::string& output) {
-  const size_t slash = output.find_last_of("/\\");
-  const size_t dot = output.rfind('.');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
-    return output + ".bin";
-  return output.substr(0, dot) + ".bin";
+  return output.substr(0, ExtensionStart(output)) + ".bin";
 }
 
 // A file name as a relative URI reference: every byte outside RFC 3986's unreserved set escaped.
