@@ -13,6 +13,8 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <set>
+#include <string>
 #include <unordered_map>
 
 #include "io/assimp_cameras_lights.h"
@@ -661,7 +663,64 @@ const char* HintFor(FileFormat format) {
   }
 }
 
-Result<Scene> Finish(const aiScene* ai, Assimp::Importer& importer, const std::string& name) {
+// Whether assimp's validation rejected the scene for two cameras or two lights of one name.
+bool RejectedForTwinNames(const Assimp::Importer& importer) {
+  const std::string why = importer.GetErrorString();
+  return why.find("has the same name as") != std::string::npos &&
+         (why.find("aiScene::mCameras[") != std::string::npos ||
+          why.find("aiScene::mLights[") != std::string::npos);
+}
+
+void CountNodeNames(const aiNode* node, std::map<std::string, int>* count, int depth = 0) {
+  if (!node || depth > 1000) return;  // the validation that follows rejects a deeper tree
+  ++(*count)[node->mName.C_Str()];
+  for (unsigned i = 0; node->mChildren && i < node->mNumChildren; ++i)
+    CountNodeNames(node->mChildren[i], count, depth + 1);
+}
+
+// Keeps, among `count` items, the first of each name that exactly one node bears (a camera or a
+// light is placed by the node of its name); the others are deleted. Returns how many were.
+template <typename T>
+unsigned DropTwins(T** items, unsigned* count, const std::map<std::string, int>& nodes_named) {
+  std::set<std::string> seen;
+  unsigned kept = 0;
+  for (unsigned i = 0; items && i < *count; ++i) {
+    const std::string name = items[i] ? items[i]->mName.C_Str() : "";
+    const auto nodes = nodes_named.find(name);
+    if (items[i] && nodes != nodes_named.end() && nodes->second == 1 && seen.insert(name).second) {
+      items[kept++] = items[i];
+    } else {
+      delete items[i];
+    }
+  }
+  const unsigned dropped = *count - kept;
+  *count = kept;
+  return dropped;
+}
+
+// Blender's COLLADA exporter can write copies of one camera or lamp object under one name, on
+// nodes of one name too (the UR10's visual meshes in ros-industrial/universal_robot), which
+// assimp's validation rejects the whole file for. Such a file is read again without the
+// validation, the cameras and lights no single node can be told for are dropped, and then the
+// scene is validated and post-processed as any other: nothing the converter reads escapes the
+// check.
+template <typename ReadRaw>
+const aiScene* ReadDroppingTwins(Assimp::Importer& importer, FileFormat format, ReadRaw read_raw,
+                                 unsigned* dropped) {
+  const aiScene* raw = read_raw(0u);
+  if (!raw) return nullptr;
+  // The importer owns the scene; assimp's own steps edit it in place the same way.
+  aiScene* scene = const_cast<aiScene*>(raw);
+  std::map<std::string, int> nodes_named;
+  CountNodeNames(scene->mRootNode, &nodes_named);
+  *dropped = DropTwins(scene->mCameras, &scene->mNumCameras, nodes_named) +
+             DropTwins(scene->mLights, &scene->mNumLights, nodes_named);
+  return importer.ApplyPostProcessing(FlagsFor(format));
+}
+
+// `twins`: cameras and lights dropped for a name an earlier one has (ReadDroppingTwins).
+Result<Scene> Finish(const aiScene* ai, Assimp::Importer& importer, const std::string& name,
+                     unsigned twins) {
   if (!ai) {
     std::string why = importer.GetErrorString();
     if (why.empty()) why = "the importer could not read it";
@@ -671,7 +730,12 @@ Result<Scene> Finish(const aiScene* ai, Assimp::Importer& importer, const std::s
     return Status(StatusCode::kParseError,
                   name + ": incomplete scene (truncated or unsupported content)");
   }
-  return ConvertAssimpScene(*ai, name);
+  Scene scene = ConvertAssimpScene(*ai, name);
+  if (twins > 0)
+    scene.dropped.push_back(
+        std::to_string(twins) +
+        " cameras or lights not kept: another one, or several nodes, have the same name");
+  return scene;
 }
 
 }  // namespace
@@ -684,7 +748,12 @@ Result<Scene> ReadWithAssimp(const std::string& path, FileFormat format) {
   Assimp::Importer importer;
   Configure(importer, format);
   const aiScene* ai = importer.ReadFile(path, FlagsFor(format));
-  return Finish(ai, importer, path);
+  unsigned dropped = 0;
+  if (!ai && RejectedForTwinNames(importer)) {
+    ai = ReadDroppingTwins(
+        importer, format, [&](unsigned flags) { return importer.ReadFile(path, flags); }, &dropped);
+  }
+  return Finish(ai, importer, path, dropped);
 }
 
 Result<Scene> ReadWithAssimpFromMemory(const uint8_t* data, size_t size, FileFormat format,
@@ -692,7 +761,16 @@ Result<Scene> ReadWithAssimpFromMemory(const uint8_t* data, size_t size, FileFor
   Assimp::Importer importer;
   Configure(importer, format);
   const aiScene* ai = importer.ReadFileFromMemory(data, size, FlagsFor(format), HintFor(format));
-  return Finish(ai, importer, name);
+  unsigned dropped = 0;
+  if (!ai && RejectedForTwinNames(importer)) {
+    ai = ReadDroppingTwins(
+        importer, format,
+        [&](unsigned flags) {
+          return importer.ReadFileFromMemory(data, size, flags, HintFor(format));
+        },
+        &dropped);
+  }
+  return Finish(ai, importer, name, dropped);
 }
 
 }  // namespace hullpack

@@ -543,5 +543,71 @@ TEST(AssimpReader, GltfAlphaModeUnlitAndSamplerThroughAssimp) {
   EXPECT_EQ(sampler.min_filter, 9728);
 }
 
+// As Blender writes copies of one camera object (the UR10's visual meshes): two cameras of one id
+// on two nodes of one name, a third camera on a node of its own, and a triangle.
+const char kTwinCamerasDae[] = R"(<?xml version="1.0" encoding="utf-8"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+  <asset><unit name="meter" meter="1"/><up_axis>Z_UP</up_axis></asset>
+  <library_cameras>
+    <camera id="Cam-camera" name="Cam"><optics><technique_common><perspective>
+      <xfov>49</xfov><aspect_ratio>1.5</aspect_ratio><znear>0.1</znear><zfar>100</zfar>
+    </perspective></technique_common></optics></camera>
+    <camera id="Cam-camera" name="Cam.001"><optics><technique_common><perspective>
+      <xfov>49</xfov><aspect_ratio>1.5</aspect_ratio><znear>0.1</znear><zfar>100</zfar>
+    </perspective></technique_common></optics></camera>
+    <camera id="Solo-camera" name="Solo"><optics><technique_common><perspective>
+      <xfov>30</xfov><aspect_ratio>1</aspect_ratio><znear>0.1</znear><zfar>100</zfar>
+    </perspective></technique_common></optics></camera>
+  </library_cameras>
+  <library_geometries>
+    <geometry id="tri" name="tri"><mesh>
+      <source id="tri-pos"><float_array id="tri-pos-a" count="9">0 0 0 1 0 0 0 1 0</float_array>
+        <technique_common><accessor source="#tri-pos-a" count="3" stride="3">
+          <param name="X" type="float"/><param name="Y" type="float"/><param name="Z" type="float"/>
+        </accessor></technique_common></source>
+      <vertices id="tri-v"><input semantic="POSITION" source="#tri-pos"/></vertices>
+      <triangles count="1"><input semantic="VERTEX" source="#tri-v" offset="0"/><p>0 1 2</p>
+      </triangles>
+    </mesh></geometry>
+  </library_geometries>
+  <library_visual_scenes>
+    <visual_scene id="scene" name="scene">
+      <node id="Cam" name="Cam"><translate>0 0 5</translate>
+        <instance_camera url="#Cam-camera"/></node>
+      <node id="Cam" name="Cam"><translate>0 0 6</translate>
+        <instance_camera url="#Cam-camera"/></node>
+      <node id="Solo" name="Solo"><translate>0 0 7</translate>
+        <instance_camera url="#Solo-camera"/></node>
+      <node id="part" name="part"><instance_geometry url="#tri"/></node>
+    </visual_scene>
+  </library_visual_scenes>
+  <scene><instance_visual_scene url="#scene"/></scene>
+</COLLADA>
+)";
+
+// assimp's validation rejects such a file whole; it is read again with the cameras no single node
+// can be told for dropped, and the rest validated as usual.
+TEST(AssimpReader, ColladaTwinCamerasAreDroppedNotTheFile) {
+  TempDir dir;
+  const std::string path = dir.File("twins.dae");
+  WriteText(path, kTwinCamerasDae);
+  Result<Scene> s = ReadWithAssimp(path, FileFormat::kDae);
+  ASSERT_TRUE(s.ok()) << s.status().ToString();
+  ASSERT_EQ(s->meshes.size(), 1u);
+  EXPECT_EQ(s->meshes[0].triangle_count(), 1u);
+  ASSERT_EQ(s->cameras.size(), 1u);  // Solo's
+  const int solo = NodeNamed(s.value(), "Solo");
+  ASSERT_GE(solo, 0);
+  EXPECT_EQ(s->nodes[static_cast<size_t>(solo)].camera, 0);
+  EXPECT_TRUE(MentionsAll(s.value(), "cameras or lights not kept", "same name"));
+
+  // The same bytes from memory (a file inside a container).
+  const std::string text(kTwinCamerasDae);
+  Result<Scene> m = ReadWithAssimpFromMemory(reinterpret_cast<const uint8_t*>(text.data()),
+                                             text.size(), FileFormat::kDae, "twins.dae");
+  ASSERT_TRUE(m.ok()) << m.status().ToString();
+  EXPECT_EQ(m->cameras.size(), 1u);
+}
+
 }  // namespace
 }  // namespace hullpack
