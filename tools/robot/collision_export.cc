@@ -2,8 +2,6 @@
 
 #include <sys/stat.h>
 
-#include <cerrno>
-#include <cstring>
 #include <utility>
 
 #include "common/file_util.h"
@@ -22,17 +20,6 @@ std::string Stem(const std::string& path) {
   std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
   const size_t dot = name.find_last_of('.');
   return dot == std::string::npos || dot == 0 ? name : name.substr(0, dot);
-}
-
-Status MakeFolder(const std::string& path) {
-  struct stat st;
-  if (stat(path.c_str(), &st) == 0) {
-    if (S_ISDIR(st.st_mode)) return Status::Ok();
-    return Status(StatusCode::kIoError, path + ": exists and is not a folder");
-  }
-  if (mkdir(path.c_str(), 0777) != 0)
-    return Status(StatusCode::kIoError, path + ": cannot create folder: " + std::strerror(errno));
-  return Status::Ok();
 }
 
 bool Exists(const std::string& path) {
@@ -114,8 +101,8 @@ Result<CollisionExportReport> ExportCollision(Scene scene, const std::string& in
     if (!options.force && Exists(target))
       return Status(StatusCode::kInvalidArgument, target + ": exists (use --force to replace it)");
   }
-  Status made = MakeFolder(dir);
-  if (made.ok()) made = MakeFolder(dir + "/meshes");
+  // DIR and its missing parents, as mkdir -p makes them.
+  Status made = MakeDirectories(dir + "/meshes");
   if (!made.ok()) return made;
   for (const auto& file : mesh_files) {
     Status written = WriteMeshFile(*file.second, format, file.first);

@@ -67,6 +67,15 @@ grep -q "exists" "$work/err.log" || fail "no 'exists' message: $(cat "$work/err.
 [ "$(md5sum <"$work/urdf/wheel_part.urdf")" = "$before" ] || fail "the description changed"
 "$hullpack" collision "$input" -o "$work/urdf" --resolution 20000 --quiet --force >/dev/null || fail "--force failed"
 
+# The output folder is made with its missing parents, as mkdir -p would; a file in the way is an error.
+"$hullpack" collision "$input" -o "$work/new/nested" --resolution 20000 --quiet >"$work/nested.log" 2>&1 ||
+  fail "missing parents of -o: $(cat "$work/nested.log")"
+[ -f "$work/new/nested/wheel_part.urdf" ] || fail "no description under the new folders"
+touch "$work/plain_file"
+"$hullpack" collision "$input" -o "$work/plain_file/sub" --resolution 20000 --quiet 2>"$work/err.log" &&
+  fail "a file where a folder must go was accepted"
+grep -q "plain_file" "$work/err.log" || fail "the folder error does not name the path: $(cat "$work/err.log")"
+
 # The vertex cap is respected and checked per format; JSON report.
 "$hullpack" collision "$input" -o "$work/cap" --format mjcf --max-hull-vertices 12 --resolution 20000 --json >"$work/cap.json" || fail "--max-hull-vertices 12"
 grep -q '"largest_hull_vertices": \([4-9]\|1[0-2]\),' "$work/cap.json" || fail "cap not respected: $(grep largest "$work/cap.json")"
