@@ -8,6 +8,7 @@
 #include "io/obj_reader.h"
 #include "io/obj_writer.h"
 #include "io/off_format.h"
+#include "io/ply_reader.h"
 #include "io/ply_writer.h"
 #include "io/wrl_format.h"
 #include "packed/packed_glb_reader.h"
@@ -32,13 +33,16 @@ Result<Scene> ParseOwnFormat(const uint8_t* data, size_t size, FileFormat format
       return ParseOff(text, size, name);
     case FileFormat::kWrl:
       return ParseWrl(text, size, name);
+    case FileFormat::kPly:
+      return ParsePly(data, size, name);
     default:
       return Status(StatusCode::kInternal, name + ": not a format of the project's own parsers");
   }
 }
 
 bool HasOwnParser(FileFormat format) {
-  return format == FileFormat::kObj || format == FileFormat::kOff || format == FileFormat::kWrl;
+  return format == FileFormat::kObj || format == FileFormat::kOff || format == FileFormat::kWrl ||
+         format == FileFormat::kPly;
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // Reading and writing whole scenes, dispatched by file extension (and, for reading, by content).
 //
-// Readers: OBJ (+MTL), OFF, VRML .wrl and glTF/GLB use the project's own parsers (GLB files packed
-// by `hullpack pack` are decoded on the way in); FBX, DAE, PLY and STL go through assimp. Every
+// Readers: OBJ (+MTL), OFF, VRML .wrl, PLY and glTF/GLB use the project's own parsers (GLB files
+// packed by `hullpack pack` are decoded on the way in); FBX, DAE and STL go through assimp. Every
 // reader triangulates polygons, keeps what the scene model can hold and lists in Scene::dropped
 // what it could not keep. Errors name the file and the problem.
 //
