@@ -22,8 +22,9 @@ inline constexpr const char* kDracoExtension = "KHR_draco_mesh_compression";
 // accessors get a new bufferView with the decoded values in their own component type, the
 // extension goes from the primitive, extensionsUsed and extensionsRequired, and the streams'
 // bufferViews are dropped. The streams must lie in the GLB binary chunk or in a data: URI buffer
-// (a .gltf whose streams sit in external files is kUnsupported: convert it to GLB first). A
-// document without the extension is left as it is.
+// (ReadPackedGltf first reads a .gltf's buffer 0 from its file into the binary chunk; a stream in
+// another external buffer is kUnsupported: convert the file to GLB). A document without the
+// extension is left as it is.
 Status InflateDracoPrimitives(GltfDocument& doc, const std::string& name);
 
 }  // namespace hullpack

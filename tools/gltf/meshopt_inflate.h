@@ -21,8 +21,9 @@ inline constexpr const char* kMeshoptExtension = "EXT_meshopt_compression";
 // Decodes the compressed bufferViews of `doc` in place: each gets buffer 0 (the binary chunk),
 // a new byteOffset and its decoded length, the extension goes from the views, extensionsUsed and
 // extensionsRequired, and the fallback buffers nothing refers to any more are removed. The
-// compressed data must lie in the GLB binary chunk or in data: URI buffers (kUnsupported for
-// external files). A document without the extension is left as it is.
+// compressed data must lie in the GLB binary chunk or in data: URI buffers (ReadPackedGltf first
+// reads a .gltf's buffer 0 from its file into the binary chunk; data in another external buffer is
+// kUnsupported). A document without the extension is left as it is.
 Status InflateMeshoptBufferViews(GltfDocument& doc, const std::string& name);
 
 }  // namespace hullpack

@@ -312,10 +312,32 @@ Status InflatePackedDocument(GltfDocument& doc, const std::string& name) {
   }
 }
 
+namespace {
+
+// Whether the document uses an extension whose decoder reads its streams from the buffers itself.
+bool UsesDocumentCompression(const GltfDocument& doc) {
+  const nlohmann::json& json = doc.json();
+  if (!json.contains("extensionsUsed") || !json["extensionsUsed"].is_array()) return false;
+  for (const nlohmann::json& e : json["extensionsUsed"]) {
+    if (e.is_string() &&
+        (e == kDracoExtension || e == kMeshoptExtension || e == kMeshCompressionExtension))
+      return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 Result<Scene> ReadPackedGltf(const uint8_t* data, size_t size, const std::string& name,
                              const std::string& base_dir, GltfDocument* inflated) {
   Result<GltfDocument> doc = DecodeGlbDocument(data, size, name);
   if (!doc.ok()) return doc.status();
+  // A .gltf whose compressed streams sit in the .bin beside it (glTF-Transform writes Draco and
+  // meshopt files so): that buffer is read in first, where the inflaters read their streams.
+  if (!base_dir.empty() && UsesDocumentCompression(doc.value())) {
+    const Status adopted = AdoptBufferFile(doc.value(), base_dir, name);
+    if (!adopted.ok()) return adopted;
+  }
   Status s = InflatePackedDocument(doc.value(), name);
   if (!s.ok()) return s;
   s = InflateMeshoptBufferViews(doc.value(), name);

@@ -49,6 +49,33 @@ fi
   fail "meshopt UV ranges: $(ranges "$tmp/meshopt.obj" vt) against $(ranges "$tmp/original.obj" vt)"
 "$bin" pack "$meshopt" -o "$tmp/meshopt_packed.glb" --quiet >/dev/null || fail "meshopt pack"
 
+# The same two files as a .gltf whose buffer 0 is a .bin beside it (glTF-Transform's .gltf output):
+# the streams are read from the .bin, and the file reads like its GLB.
+split_glb() {  # GLB OUT.gltf BIN_NAME
+  python3 - "$@" <<'PY'
+import json, struct, sys, os
+glb, gltf, bin_name = sys.argv[1:4]
+data = open(glb, "rb").read()
+at, chunks = 12, {}
+while at + 8 <= len(data):
+    length, kind = struct.unpack_from("<II", data, at)
+    chunks[kind] = data[at + 8:at + 8 + length]
+    at += 8 + length
+doc = json.loads(chunks[0x4E4F534A])
+doc["buffers"][0]["uri"] = bin_name.replace(" ", "%20")
+open(gltf, "w").write(json.dumps(doc))
+open(os.path.join(os.path.dirname(gltf), bin_name), "wb").write(chunks[0x004E4942])
+PY
+}
+for glb in "$draco" "$meshopt"; do
+  name=$(basename "$glb" .glb)
+  split_glb "$glb" "$tmp/$name.gltf" "$name data.bin" || { fail "$name: cannot split"; continue; }
+  want=$(info_line "$glb" "meshes")
+  got=$(info_line "$tmp/$name.gltf" "meshes")
+  [ -n "$got" ] && [ "$want" = "$got" ] || fail "$name.gltf: '$got' against the GLB's '$want'"
+  "$bin" pack "$tmp/$name.gltf" -o "$tmp/${name}_gltf_packed.glb" --quiet >/dev/null || fail "$name.gltf pack"
+done
+
 if [ "$failures" -ne 0 ]; then
   echo "$failures checks failed"
   exit 1

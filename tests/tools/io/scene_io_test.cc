@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include "../gltf/draco_square.h"
 #include "common/file_util.h"
 #include "io_test_util.h"
 
@@ -72,6 +73,27 @@ TEST(SceneIo, FormatsThroughAssimp) {
       EXPECT_TRUE(out->materials.empty()) << c.ext;
     }
   }
+}
+
+// glTF-Transform writes a Draco .gltf with its streams in the .bin beside it: the buffer is read
+// in before the streams are decoded. Without the .bin the error names it.
+TEST(SceneIo, DracoGltfWithItsStreamsInTheBinBesideIt) {
+  TempDir dir;
+  const GltfDocument doc = DracoDocument(EncodeSquare(), 4);
+  Result<std::string> json = doc.SerializeJson("square streams.bin");
+  ASSERT_TRUE(json.ok()) << json.status().ToString();
+  const std::string gltf = dir.File("square.gltf");
+  testing::WriteBytes(gltf, json->data(), json->size());
+  Result<Scene> missing = ReadScene(gltf);
+  ASSERT_FALSE(missing.ok());
+  EXPECT_NE(missing.status().message().find("square streams.bin"), std::string::npos)
+      << missing.status().message();
+  testing::WriteBytes(dir.File("square streams.bin"), doc.binary().data(), doc.binary().size());
+  Result<Scene> s = ReadScene(gltf);
+  ASSERT_TRUE(s.ok()) << s.status().ToString();
+  ASSERT_EQ(s->meshes.size(), 1u);
+  EXPECT_EQ(s->meshes[0].triangle_count(), 2u);
+  EXPECT_EQ(s->meshes[0].uv_sets.size(), 1u);
 }
 
 TEST(SceneIo, MissingFileAndUnknownFormat) {
