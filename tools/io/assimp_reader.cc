@@ -727,6 +727,22 @@ Result<Scene> Finish(const aiScene* ai, Assimp::Importer& importer, const std::s
     return Status(StatusCode::kParseError, name + ": " + why);
   }
   if (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) {
+    // A file of no mesh (only cameras, lights or animations) is marked incomplete too, and assimp
+    // draws its nodes as a placeholder mesh of the material "SkeletonMaterial".
+    bool placeholders_only = true;
+    for (unsigned m = 0; ai->mMeshes && m < ai->mNumMeshes && placeholders_only; ++m) {
+      const aiMesh* mesh = ai->mMeshes[m];
+      const aiMaterial* material =
+          mesh && ai->mMaterials && mesh->mMaterialIndex < ai->mNumMaterials
+              ? ai->mMaterials[mesh->mMaterialIndex]
+              : nullptr;
+      aiString material_name;
+      placeholders_only = material && material->Get(AI_MATKEY_NAME, material_name) == AI_SUCCESS &&
+                          std::string(material_name.C_Str()) == "SkeletonMaterial";
+    }
+    if (placeholders_only)
+      return Status(StatusCode::kInvalidMesh,
+                    name + ": contains no triangles (no mesh in the file)");
     return Status(StatusCode::kParseError,
                   name + ": incomplete scene (truncated or unsupported content)");
   }

@@ -609,5 +609,30 @@ TEST(AssimpReader, ColladaTwinCamerasAreDroppedNotTheFile) {
   EXPECT_EQ(m->cameras.size(), 1u);
 }
 
+TEST(AssimpReader, AFileOfOnlyACameraHasNoTrianglesNotAnIncompleteScene) {
+  const std::string text = R"(<?xml version="1.0" encoding="utf-8"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+  <asset><unit name="meter" meter="1"/><up_axis>Z_UP</up_axis></asset>
+  <library_cameras>
+    <camera id="Solo-camera" name="Solo"><optics><technique_common><perspective>
+      <xfov>30</xfov><aspect_ratio>1</aspect_ratio><znear>0.1</znear><zfar>100</zfar>
+    </perspective></technique_common></optics></camera>
+  </library_cameras>
+  <library_visual_scenes>
+    <visual_scene id="scene" name="scene">
+      <node id="Solo" name="Solo"><instance_camera url="#Solo-camera"/></node>
+    </visual_scene>
+  </library_visual_scenes>
+  <scene><instance_visual_scene url="#scene"/></scene>
+</COLLADA>
+)";
+  Result<Scene> s = ReadWithAssimpFromMemory(reinterpret_cast<const uint8_t*>(text.data()),
+                                             text.size(), FileFormat::kDae, "camera.dae");
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.status().code(), StatusCode::kInvalidMesh);
+  EXPECT_NE(s.status().message().find("camera.dae: contains no triangles"), std::string::npos)
+      << s.status().message();
+}
+
 }  // namespace
 }  // namespace hullpack
