@@ -376,8 +376,13 @@ Result<Scene> ReadBody(Cursor& c, const Header& h, size_t body_bytes, const std:
     } else if (faces) {
       if (face_list < 0) return error("element 'face' has no vertex_indices list");
       if (!have_vertices) return error("element 'face' comes before element 'vertex'");
-      // Bounded by the file; a list of many corners grows it further.
-      mesh.indices.reserve(static_cast<size_t>(e.count) * 3);
+      // As many triangles as the bytes left can hold (a triangle's record takes at least its count
+      // and three indices); a polygon of many corners grows the array as it is read.
+      const Property& corners = e.properties[static_cast<size_t>(face_list)];
+      const size_t per_triangle =
+          binary ? SizeOf(corners.count_type) + 3 * SizeOf(corners.type) : 8;
+      mesh.indices.reserve(
+          3 * std::min<size_t>(static_cast<size_t>(e.count), body_bytes / per_triangle));
       have_faces = true;
       if (!skipped.empty()) not_kept.push_back("face properties not kept: " + Join(skipped));
     } else if (e.count > 0) {
