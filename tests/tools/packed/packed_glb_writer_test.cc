@@ -55,7 +55,9 @@ TEST(PackedGlbWriter, StreamedAttributesHaveNoPlainDataUnlessFallback) {
     EXPECT_EQ(position["max"], nlohmann::json::array({1.0, 1.0, 0.0}));
     EXPECT_EQ(json["accessors"][prim["indices"].get<int>()].contains("bufferView"), fallback);
     // Without fallback the binary chunk holds the stream alone.
-    if (!fallback) EXPECT_EQ(json["bufferViews"].size(), 1u);
+    if (!fallback) {
+      EXPECT_EQ(json["bufferViews"].size(), 1u);
+    }
   }
 }
 
