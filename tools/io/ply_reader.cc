@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <string>
@@ -239,6 +240,22 @@ class AsciiCursor {
   TextScanner s_;
 };
 
+// `v` as a float: beyond the float range it is an infinity (which the mesh checks then report), not
+// the undefined conversion.
+float ToFloat(double v) {
+  constexpr double kMax = std::numeric_limits<float>::max();
+  if (v > kMax) return std::numeric_limits<float>::infinity();
+  if (v < -kMax) return -std::numeric_limits<float>::infinity();
+  return static_cast<float>(v);
+}
+
+// An index read from the file, for a message: any double, integral or not, huge or not.
+std::string IndexText(double v) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.15g", v);
+  return text;
+}
+
 std::string Join(const std::vector<std::string>& names) {
   std::string list;
   for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
@@ -404,15 +421,15 @@ Result<Scene> ReadBody(Cursor& c, const Header& h, size_t body_bytes, const std:
           const size_t i = static_cast<size_t>(r);
           const Slot s = slots[k];
           if (s <= kZ) {
-            mesh.positions[3 * i + s] = static_cast<float>(v);
+            mesh.positions[3 * i + s] = ToFloat(v);
           } else if (s <= kNz) {
-            if (!mesh.normals.empty()) mesh.normals[3 * i + (s - kNx)] = static_cast<float>(v);
+            if (!mesh.normals.empty()) mesh.normals[3 * i + (s - kNx)] = ToFloat(v);
           } else if (s <= kV) {
             // PLY's t is up (as in OBJ); the scene model's v is down (as in glTF).
             if (!mesh.uv_sets.empty())
-              mesh.uv_sets[0][2 * i + (s - kU)] = static_cast<float>(s == kV ? 1.0 - v : v);
+              mesh.uv_sets[0][2 * i + (s - kU)] = ToFloat(s == kV ? 1.0 - v : v);
           } else if (!mesh.colors.empty()) {
-            mesh.colors[4 * i + (s - kRed)] = static_cast<float>(ColorUnit(p.type, v));
+            mesh.colors[4 * i + (s - kRed)] = ToFloat(ColorUnit(p.type, v));
           }
           continue;
         }
@@ -429,11 +446,11 @@ Result<Scene> ReadBody(Cursor& c, const Header& h, size_t body_bytes, const std:
           if (!c.Read(p.type, &v))
             return error("element '" + e.name + "' record " + std::to_string(r) + ": list '" +
                          p.name + "' is truncated (" + c.Where() + ")");
-          if (uvs) corner_uvs.push_back(static_cast<float>(v));
+          if (uvs) corner_uvs.push_back(ToFloat(v));
           if (!corners) continue;
           if (!(v >= 0 && v < static_cast<double>(nv)))
-            return error("face " + std::to_string(r) + " refers to vertex " +
-                         std::to_string(static_cast<long long>(v)) + " of " + std::to_string(nv));
+            return error("face " + std::to_string(r) + " refers to vertex " + IndexText(v) +
+                         " of " + std::to_string(nv));
           polygon.push_back(static_cast<uint32_t>(v));
         }
       }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -223,6 +224,22 @@ TEST(PlyReader, MalformedFilesAreErrorsNamingTheFileAndTheProblem) {
     EXPECT_NE(s.status().message().find("bad.ply"), std::string::npos) << s.status().message();
     EXPECT_NE(s.status().message().find(why), std::string::npos) << s.status().message();
   }
+}
+
+// Found by ply_reader_fuzzer: values beyond every integer and float type, converted without
+// undefined behaviour (UBSan checks it in the sanitized test run).
+TEST(PlyReader, ValuesBeyondTheirTypesAreErrorsOrInfinities) {
+  const std::string head =
+      "ply\nformat ascii 1.0\nelement vertex 3\n"
+      "property float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  Result<Scene> index = Parse(head + "0 0 0\n1 0 0\n0 1 0\n3 0 1 1e54\n", "big.ply");
+  ASSERT_FALSE(index.ok());
+  EXPECT_NE(index.status().message().find("refers to vertex 1e+54 of 3"), std::string::npos)
+      << index.status().message();
+  Result<Scene> position = Parse(head + "1e300 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  ASSERT_TRUE(position.ok()) << position.status().ToString();
+  EXPECT_EQ(position->meshes[0].positions[0], std::numeric_limits<float>::infinity());
 }
 
 TEST(PlyReader, EveryTruncationOrCorruptionIsAnErrorOrAMeshInRange) {
