@@ -754,6 +754,19 @@ Result<Scene> Finish(const aiScene* ai, Assimp::Importer& importer, const std::s
   return scene;
 }
 
+// Reads with `read(flags)` (a file or bytes in memory), again without the twin names assimp's
+// validation rejects (ReadDroppingTwins), and converts.
+template <typename Read>
+Result<Scene> ReadAndConvert(Assimp::Importer& importer, FileFormat format, const std::string& name,
+                             Read read) {
+  Configure(importer, format);
+  const aiScene* ai = read(FlagsFor(format));
+  unsigned dropped = 0;
+  if (!ai && RejectedForTwinNames(importer))
+    ai = ReadDroppingTwins(importer, format, read, &dropped);
+  return Finish(ai, importer, name, dropped);
+}
+
 }  // namespace
 
 Scene ConvertAssimpScene(const aiScene& ai, const std::string& name) {
@@ -762,31 +775,16 @@ Scene ConvertAssimpScene(const aiScene& ai, const std::string& name) {
 
 Result<Scene> ReadWithAssimp(const std::string& path, FileFormat format) {
   Assimp::Importer importer;
-  Configure(importer, format);
-  const aiScene* ai = importer.ReadFile(path, FlagsFor(format));
-  unsigned dropped = 0;
-  if (!ai && RejectedForTwinNames(importer)) {
-    ai = ReadDroppingTwins(
-        importer, format, [&](unsigned flags) { return importer.ReadFile(path, flags); }, &dropped);
-  }
-  return Finish(ai, importer, path, dropped);
+  return ReadAndConvert(importer, format, path,
+                        [&](unsigned flags) { return importer.ReadFile(path, flags); });
 }
 
 Result<Scene> ReadWithAssimpFromMemory(const uint8_t* data, size_t size, FileFormat format,
                                        const std::string& name) {
   Assimp::Importer importer;
-  Configure(importer, format);
-  const aiScene* ai = importer.ReadFileFromMemory(data, size, FlagsFor(format), HintFor(format));
-  unsigned dropped = 0;
-  if (!ai && RejectedForTwinNames(importer)) {
-    ai = ReadDroppingTwins(
-        importer, format,
-        [&](unsigned flags) {
-          return importer.ReadFileFromMemory(data, size, flags, HintFor(format));
-        },
-        &dropped);
-  }
-  return Finish(ai, importer, name, dropped);
+  return ReadAndConvert(importer, format, name, [&](unsigned flags) {
+    return importer.ReadFileFromMemory(data, size, flags, HintFor(format));
+  });
 }
 
 }  // namespace hullpack
