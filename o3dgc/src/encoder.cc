@@ -10,6 +10,7 @@
 #include "attribute_coder.h"
 #include "connectivity_encoder.h"
 #include "decision_log.h"
+#include "degenerate_triangles.h"
 #include "entropy.h"
 #include "key_table.h"
 #include "o3dgc/o3dgc.h"
@@ -65,9 +66,10 @@ std::vector<float> Reorder(const std::vector<float>& v, uint32_t dim,
 struct GridEncoder::Prepared {
   Prepared(const MeshView& m, const EncodeParams& p)
       : mesh(m), params(p), nv(m.num_vertices), nt(m.num_triangles) {}
-  const MeshView mesh;
+  MeshView mesh;  // the caller's, or `kept`'s view of it
   const EncodeParams params;
-  const size_t nv, nt;
+  size_t nv, nt;
+  KeptMesh kept;    // the input without its degenerate triangles, when it has any
   PayloadHeader h;  // the position quantizer is each grid's
   // The input's values, dense: `positions` points at the caller's array when it is dense, else
   // at own_positions.
@@ -769,6 +771,12 @@ void EncodeGroups(GridState& st) {
 Status PrepareStages(Prepared& st, const std::function<bool(float)>& progress) {
   Status s = Validate(st.mesh, st.params);
   if (s != Status::kOk) return s;
+  if (!st.params.keep_order && !st.params.keep_degenerate_triangles &&
+      LeaveOutDegenerateTriangles(st.mesh, &st.kept)) {
+    st.mesh = st.kept.view;
+    st.nv = st.mesh.num_vertices;
+    st.nt = st.mesh.num_triangles;
+  }
   if ((s = Describe(st)) != Status::kOk) return s;
   Weld(st);
   EncodeTriangles(st);

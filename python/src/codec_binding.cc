@@ -91,8 +91,8 @@ void CheckBits(const char* name, int bits) {
 
 py::bytes Encode(py::handle vertices, py::handle faces, py::object normals, py::object uvs,
                  py::object colors, int position_bits, int normal_bits, int uv_bits, int color_bits,
-                 bool keep_order, bool fast_decode, bool max_compression, bool ascii,
-                 py::object progress) {
+                 bool keep_order, bool keep_degenerate_triangles, bool fast_decode,
+                 bool max_compression, bool ascii, py::object progress) {
   CheckBits("position_bits", position_bits);
   CheckBits("normal_bits", normal_bits);
   CheckBits("uv_bits", uv_bits);
@@ -145,6 +145,7 @@ py::bytes Encode(py::handle vertices, py::handle faces, py::object normals, py::
   o3dgc::EncodeParams params;
   params.stream_type = ascii ? o3dgc::StreamType::kAscii : o3dgc::StreamType::kBinary;
   params.keep_order = keep_order;
+  params.keep_degenerate_triangles = keep_degenerate_triangles;
   params.fast_decode = fast_decode;
   params.max_compression = max_compression;
   params.position_bits = position_bits;
@@ -273,6 +274,9 @@ normal_bits, uv_bits, color_bits : int
     The same for normals (10), texture coordinates (12) and colours (10).
 keep_order : bool
     Keep vertex, triangle and corner order exactly (larger stream). Default False.
+keep_degenerate_triangles : bool
+    Code the faces with two corners at one position too (no area; left out by default with the
+    vertices only they use, as Draco does). keep_order keeps them. Default False.
 fast_decode : bool
     Code values in vertex order: faster decoding for 2-5 % more bytes. Default False.
 max_compression : bool
@@ -297,9 +301,9 @@ The GIL is released while encoding.)",
         py::arg("vertices"), py::arg("faces"), py::kw_only(), py::arg("normals") = py::none(),
         py::arg("uvs") = py::none(), py::arg("colors") = py::none(), py::arg("position_bits") = 14,
         py::arg("normal_bits") = 10, py::arg("uv_bits") = 12, py::arg("color_bits") = 10,
-        py::arg("keep_order") = false, py::arg("fast_decode") = false,
-        py::arg("max_compression") = false, py::arg("ascii") = false,
-        py::arg("progress") = py::none());
+        py::arg("keep_order") = false, py::arg("keep_degenerate_triangles") = false,
+        py::arg("fast_decode") = false, py::arg("max_compression") = false,
+        py::arg("ascii") = false, py::arg("progress") = py::none());
   m.def("decode", &Decode, R"(Decompress an o3dgc stream (or an original Open3DGC one).
 
 Parameters

@@ -165,15 +165,91 @@ std::vector<TestMesh> AllMeshes() {
           WithGroups(o3dgc_test::Sphere(12, 7))};
 }
 
+// `t` without its degenerate triangles (two corners at equal positions) and their groups.
+TestMesh WithoutDegenerateTriangles(TestMesh t) {
+  auto same = [&](uint32_t a, uint32_t b) {
+    const float* p = &t.positions[3 * a];
+    const float* q = &t.positions[3 * b];
+    return p[0] == q[0] && p[1] == q[1] && p[2] == q[2];
+  };
+  std::vector<uint32_t> indices, groups;
+  for (size_t k = 0; k < t.nt(); ++k) {
+    const uint32_t* c = &t.indices[3 * k];
+    if (same(c[0], c[1]) || same(c[1], c[2]) || same(c[0], c[2])) continue;
+    indices.insert(indices.end(), c, c + 3);
+    if (!t.groups.empty()) groups.push_back(t.groups[k]);
+  }
+  t.indices = indices;
+  t.groups = groups;
+  return t;
+}
+
+// Every triangle comes back but the degenerate ones (none of these meshes has a vertex that only
+// degenerate triangles use).
 TEST(RoundTrip, DefaultModeKeepsTriangleSet) {
   for (const TestMesh& t : AllMeshes()) {
     EncodeParams p;
     const auto s = EncodeOk(t, p);
     const DecodedMesh m = DecodeOk(s);
+    const TestMesh kept = WithoutDegenerateTriangles(t);
+    EXPECT_EQ(m.num_triangles(), kept.nt());
+    EXPECT_EQ(m.num_vertices(), t.nv());
+    CheckTriangleSet(kept, m, p.position_bits);
+  }
+}
+
+TEST(RoundTrip, KeepDegenerateTrianglesKeepsEveryTriangle) {
+  for (const TestMesh& t : AllMeshes()) {
+    EncodeParams p;
+    p.keep_degenerate_triangles = true;
+    const DecodedMesh m = DecodeOk(EncodeOk(t, p));
     EXPECT_EQ(m.num_triangles(), t.nt());
     EXPECT_EQ(m.num_vertices(), t.nv());
     CheckTriangleSet(t, m, p.position_bits);
   }
+}
+
+// A welded CAD export's slivers that collapse (two corners at one position, distinct vertices):
+// left out with the vertices only they use, they cost nothing; only with keep_degenerate_triangles
+// each is coded. Of a mesh of nothing but degenerate triangles only its unreferenced vertex stays.
+TEST(RoundTrip, DegenerateTrianglesAreLeftOutByDefault) {
+  TestMesh t = o3dgc_test::Sphere(24, 16);
+  const size_t nt = t.nt(), sphere_vertices = t.nv();
+  for (size_t k = 0; k < nt; k += 3) {
+    const uint32_t a = t.indices[3 * k], b = t.indices[3 * k + 1];
+    // A copy of vertex a (a range of a vector cannot be inserted into itself).
+    auto copy_row = [a](std::vector<float>& v, size_t dim) {
+      if (v.empty()) return;
+      const std::vector<float> row(v.begin() + dim * a, v.begin() + dim * (a + 1));
+      v.insert(v.end(), row.begin(), row.end());
+    };
+    copy_row(t.positions, 3);
+    copy_row(t.normals, 3);
+    copy_row(t.uvs, 2);
+    t.indices.insert(t.indices.end(), {a, uint32_t(t.nv() - 1), b});
+    t.indices.insert(t.indices.end(), {b, b, a});
+  }
+  EncodeParams p;
+  StreamInfo dropped, kept;
+  const DecodedMesh m = DecodeOk(EncodeOk(t, p, &dropped));
+  EXPECT_EQ(m.num_triangles(), nt);
+  EXPECT_EQ(dropped.num_triangles, nt);
+  EXPECT_EQ(m.num_vertices(), sphere_vertices);
+  CheckTriangleSet(WithoutDegenerateTriangles(t), m, p.position_bits);
+  p.keep_degenerate_triangles = true;
+  const DecodedMesh all = DecodeOk(EncodeOk(t, p, &kept));
+  EXPECT_EQ(all.num_triangles(), t.nt());
+  EXPECT_EQ(all.num_vertices(), t.nv());
+  EXPECT_GT(kept.connectivity, dropped.connectivity + (t.nt() - nt) * 2);
+
+  TestMesh points;
+  points.positions = {1, 2, 3, 1, 2, 3, 4, 5, 6, 7, 8, 9};
+  points.indices = {0, 1, 2, 2, 2, 0};
+  points.groups = {5, 6};
+  const DecodedMesh p2 = DecodeOk(EncodeOk(points, EncodeParams()));
+  EXPECT_EQ(p2.num_triangles(), 0u);
+  EXPECT_EQ(p2.positions, std::vector<float>({7, 8, 9}));
+  EXPECT_TRUE(p2.triangle_groups.empty());
 }
 
 // Format 1.2's modelled low bits: taken by a grid-built model (version 1.2, flag reported by

@@ -190,9 +190,23 @@ class Codec(unittest.TestCase):
 
     def test_decode_reads_any_buffer(self):
         v, f, _, _ = meshes.sphere(8, 16)
-        data = hullpack.encode(v, f)
+        data = hullpack.encode(v, f, keep_degenerate_triangles=True)
         for buffer in (bytearray(data), memoryview(data), np.frombuffer(data, np.uint8)):
             self.assertEqual(hullpack.decode(buffer)["faces"].shape, f.shape)
+
+    def test_degenerate_faces_are_left_out_unless_kept(self):
+        v, f, _, _ = meshes.sphere(8, 16)  # the pole rows: two corners at one pole position
+        corners = v[f]
+        degenerate = (np.all(corners[:, 0] == corners[:, 1], axis=1) |
+                      np.all(corners[:, 1] == corners[:, 2], axis=1) |
+                      np.all(corners[:, 0] == corners[:, 2], axis=1))
+        self.assertGreater(degenerate.sum(), 0)
+        out = hullpack.decode(hullpack.encode(v, f))
+        self.assertEqual(len(out["faces"]), len(f) - degenerate.sum())
+        # Vertices only the left-out faces use go too.
+        self.assertEqual(len(out["vertices"]), len(np.unique(f[~degenerate])))
+        for keep in ({"keep_degenerate_triangles": True}, {"keep_order": True}):
+            self.assertEqual(len(hullpack.decode(hullpack.encode(v, f, **keep))["faces"]), len(f))
 
     def test_hostile_streams_raise_value_error(self):
         v, f, _, _ = meshes.sphere(8, 16)

@@ -126,6 +126,7 @@ Status MakeCodecInput(const Mesh& input, const std::vector<uint32_t>& groups,
   params = o3dgc::EncodeParams();
   params.stream_type = s.stream_type;
   params.keep_order = s.keep_order;
+  params.keep_degenerate_triangles = s.keep_degenerate_triangles;
   params.fast_decode = s.fast_decode;
   params.max_compression = s.max_compression;
   params.position_bits = s.position_bits;

@@ -24,7 +24,9 @@ namespace hullpack {
 
 struct MeshCodecSettings {
   o3dgc::StreamType stream_type = o3dgc::StreamType::kBinary;
-  bool keep_order = false;       // true: decoded vertex and triangle order equal the input's
+  bool keep_order = false;  // true: decoded vertex and triangle order equal the input's
+  // o3dgc::EncodeParams::keep_degenerate_triangles (keep_order keeps them too).
+  bool keep_degenerate_triangles = false;
   bool fast_decode = false;      // o3dgc::EncodeParams::fast_decode
   bool max_compression = false;  // o3dgc::EncodeParams::max_compression
   int position_bits = 14;

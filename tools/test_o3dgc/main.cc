@@ -312,6 +312,8 @@ int main(int argc, char** argv) {
   cli.Int("-qt, --qt", "BITS", 1, 30, &settings.uv_bits, "texture coordinate bits (12)");
   cli.Flag("-keep, --keep-order", &settings.keep_order,
            "keep vertex and triangle order exactly (larger)");
+  cli.Flag("--keep-degenerate", &settings.keep_degenerate_triangles,
+           "code triangles with two corners at one position too (left out by default)");
   cli.Flag("-fast, --fast-decode", &settings.fast_decode,
            "code values in vertex id order: faster decoding, a few % larger");
   cli.Flag("-max, --max-compression", &settings.max_compression,

@@ -10,6 +10,8 @@
 //   s = o3dgc::Decode(stream.data(), stream.size(), o3dgc::DecodeOptions(), &out);
 //
 // How it codes (details in src/*.h):
+//  - unless asked to keep them, degenerate triangles (two corners at one position) are left out
+//    first, with the vertices only they use (EncodeParams::keep_degenerate_triangles);
 //  - positions are welded (bitwise-equal positions of referenced vertices share one "position
 //    vertex"); connectivity is coded over position vertices by region growing over gates (a
 //    cut-border traversal: per gate "boundary / new vertex / right / left / back reference",
@@ -141,7 +143,8 @@ struct IntAttributeView {
 //  normals: optional (null = none), 3 floats per vertex;
 //  triangle_groups: optional (null = none), one id per triangle (e.g. an OBJ usemtl group).
 // Triangles may be degenerate, duplicated, inconsistently oriented or non-manifold; vertices may
-// be unreferenced.
+// be unreferenced. Every triangle is coded but, by default, degenerate ones
+// (EncodeParams::keep_degenerate_triangles).
 struct MeshView {
   const float* positions = nullptr;
   size_t position_stride = 0;
@@ -164,6 +167,11 @@ struct EncodeParams {
   // winding kept) for size. true: the decoded vertex order, triangle order and corner order are
   // exactly those of the input.
   bool keep_order = false;
+  // false (default): degenerate triangles (two corners at equal positions: no area) are left
+  // out, with the vertices only they use, as Draco's encoder does; on welded CAD exports they can
+  // be a few % of the stream. Vertices the input leaves unreferenced are kept.
+  // true, or keep_order: every input triangle and vertex is coded.
+  bool keep_degenerate_triangles = false;
   // true: values predicted by parallelograms are coded in vertex id order instead of the order that
   // finds the most parallelograms: a few % more bytes, faster decoding, because the decoder reads
   // and writes the vertices in memory order instead of jumping over the mesh

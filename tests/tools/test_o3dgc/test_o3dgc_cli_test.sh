@@ -55,6 +55,20 @@ run cube-decode 0 "triangles 12" -- "$bin" -d -i "$tmp/cube.s3d"
 grep -q '^usemtl red' "$tmp/cube_dec.obj" && grep -q '^usemtl blue' "$tmp/cube_dec.obj" && pass ||
   fail "materials lost: $(grep usemtl "$tmp/cube_dec.obj" | tr '\n' ' ')"
 
+# Triangles with two corners at one position (a repeated index, a copied vertex) are left out
+# unless --keep-degenerate is given.
+{
+  printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\nv 0 0 0\n'
+  printf 'f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\n'
+  printf 'f 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\nf 4 1 5\nf 4 5 8\nf 1 1 2\nf 9 2 1\n'
+} >"$tmp/slivers.obj"
+run degenerate-left-out 0 "triangles 14" -- "$bin" -c -i "$tmp/slivers.obj"
+run degenerate-left-out-decode 0 "triangles 12" -- "$bin" -d -i "$tmp/slivers.s3d"
+grep -q "vertices 8$" "$tmp/out" && pass || fail "the copied vertex only a degenerate triangle used stayed"
+run degenerate-kept 0 "triangles 14" -- "$bin" -c -i "$tmp/slivers.obj" --keep-degenerate
+run degenerate-kept-decode 0 "triangles 14" -- "$bin" -d -i "$tmp/slivers.s3d"
+grep -q "vertices 9$" "$tmp/out" && pass || fail "--keep-degenerate: a vertex went missing"
+
 # Streams of the original Open3DGC tool: test_o3dgc decodes them to the original's triangles, and
 # o3dgc_legacy_check agrees with the original decoder's OBJs (and notices one that differs).
 mkdir "$tmp/legacy"
