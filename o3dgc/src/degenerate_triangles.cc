@@ -21,6 +21,21 @@ std::vector<T> KeptRows(const T* data, size_t stride, uint32_t dim,
   return out;
 }
 
+// Points each attribute view at a dense copy of the kept vertices' rows, kept in `*store`. Bad
+// attribute descriptions are left for the encoder to reject.
+template <typename View, typename T>
+void KeepAttributeRows(const std::vector<uint32_t>& kept, std::vector<View>* views,
+                       std::vector<std::vector<T>>* store) {
+  store->resize(views->size());
+  for (size_t a = 0; a < views->size(); ++a) {
+    View& view = (*views)[a];
+    if (!view.data || view.dimension < 1 || view.dimension > 4) continue;
+    (*store)[a] = KeptRows(view.data, view.stride, view.dimension, kept);
+    view.data = (*store)[a].data();
+    view.stride = 0;
+  }
+}
+
 }  // namespace
 
 bool LeaveOutDegenerateTriangles(const MeshView& mesh, KeptMesh* out) {
@@ -76,23 +91,8 @@ bool LeaveOutDegenerateTriangles(const MeshView& mesh, KeptMesh* out) {
     view.normals = out->normals.data();
     view.normal_stride = 0;
   }
-  // Bad attribute descriptions are left for the encoder to reject.
-  out->floats.resize(mesh.float_attributes.size());
-  for (size_t a = 0; a < mesh.float_attributes.size(); ++a) {
-    const FloatAttributeView& in = mesh.float_attributes[a];
-    if (!in.data || in.dimension < 1 || in.dimension > 4) continue;
-    out->floats[a] = KeptRows(in.data, in.stride, in.dimension, kept);
-    view.float_attributes[a].data = out->floats[a].data();
-    view.float_attributes[a].stride = 0;
-  }
-  out->ints.resize(mesh.int_attributes.size());
-  for (size_t a = 0; a < mesh.int_attributes.size(); ++a) {
-    const IntAttributeView& in = mesh.int_attributes[a];
-    if (!in.data || in.dimension < 1 || in.dimension > 4) continue;
-    out->ints[a] = KeptRows(in.data, in.stride, in.dimension, kept);
-    view.int_attributes[a].data = out->ints[a].data();
-    view.int_attributes[a].stride = 0;
-  }
+  KeepAttributeRows(kept, &view.float_attributes, &out->floats);
+  KeepAttributeRows(kept, &view.int_attributes, &out->ints);
   return true;
 }
 
