@@ -114,7 +114,7 @@ int RunInfoCommand(const std::vector<std::string>& args) {
     GltfDocument doc;
     const std::string folder = FolderOf(path);
     Result<Scene> read = ReadPackedGltf(bytes->data(), bytes->size(), path, folder, &doc);
-    Status adopted = read.ok() ? AdoptBufferFile(doc, folder, path) : Status::Ok();
+    Status adopted = read.ok() ? AdoptBufferFiles(doc, folder, path, true) : Status::Ok();
     Result<std::vector<CollisionHull>> found =
         !adopted.ok() ? Result<std::vector<CollisionHull>>(adopted)
         : read.ok()   ? ReadCollisionHulls(doc, path)

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <exception>
+#include <functional>
 #include <map>
 #include <new>
 #include <set>
@@ -332,10 +334,11 @@ Result<Scene> ReadPackedGltf(const uint8_t* data, size_t size, const std::string
                              const std::string& base_dir, GltfDocument* inflated) {
   Result<GltfDocument> doc = DecodeGlbDocument(data, size, name);
   if (!doc.ok()) return doc.status();
-  // A .gltf whose compressed streams sit in the .bin beside it (glTF-Transform writes Draco and
-  // meshopt files so): that buffer is read in first, where the inflaters read their streams.
+  // A .gltf whose compressed streams sit in the .bin files beside it (glTF-Transform writes Draco
+  // and meshopt files so, one .bin per buffer after `partition`): they are read in first, where
+  // the inflaters read their streams.
   if (!base_dir.empty() && UsesDocumentCompression(doc.value())) {
-    const Status adopted = AdoptBufferFile(doc.value(), base_dir, name);
+    const Status adopted = AdoptBufferFiles(doc.value(), base_dir, name);
     if (!adopted.ok()) return adopted;
   }
   Status s = InflatePackedDocument(doc.value(), name);
@@ -564,30 +567,129 @@ std::map<std::string, size_t> StreamVersions(const GltfDocument& doc) {
   return versions;
 }
 
-Status AdoptBufferFile(GltfDocument& doc, const std::string& base_dir, const std::string& name) {
-  nlohmann::json& json = doc.json();
-  if (doc.has_binary_chunk() || !json.contains("buffers") || !json["buffers"].is_array() ||
-      json["buffers"].empty() || !json["buffers"][0].is_object())
-    return Status::Ok();
-  nlohmann::json& buffer = json["buffers"][0];
-  if (!buffer.contains("uri") || !buffer["uri"].is_string()) return Status::Ok();
+namespace {
+
+// The bytes of buffer `index`'s file, when it is one beside the .gltf (a relative URI, not data:);
+// else *found stays false.
+Result<std::vector<uint8_t>> ReadBufferFile(const nlohmann::json& buffer, size_t index,
+                                            const std::string& base_dir, const std::string& name,
+                                            bool* found) {
+  *found = false;
+  const std::string item = "buffers[" + std::to_string(index) + "]";
+  if (!buffer.is_object() || !buffer.contains("uri") || !buffer["uri"].is_string())
+    return std::vector<uint8_t>();
   const std::string uri = buffer["uri"].get<std::string>();
   std::string relative, error;
   if (uri.compare(0, 5, "data:") == 0 || !RelativePathFromUri(uri, &relative, &error))
-    return Status::Ok();
+    return std::vector<uint8_t>();
   uint64_t length = 0;
   if (!gltf::GetUintMember(buffer, "byteLength", 0, &length))
-    return Status(StatusCode::kParseError, name + ": buffers[0]: byteLength is malformed");
+    return Status(StatusCode::kParseError, name + ": " + item + ": byteLength is malformed");
   const std::string path = (base_dir.empty() ? std::string(".") : base_dir) + "/" + relative;
   Result<std::vector<uint8_t>> bytes = ReadFileBytes(path);
   if (!bytes.ok()) return bytes.status();
   if (bytes->size() < length) {
-    return Status(StatusCode::kParseError,
-                  name + ": buffers[0]: byteLength " + std::to_string(length) + " exceeds " + path);
+    return Status(StatusCode::kParseError, name + ": " + item + ": byteLength " +
+                                               std::to_string(length) + " exceeds " + path);
   }
   bytes->resize(static_cast<size_t>(length));
-  doc.binary() = std::move(bytes.value());
-  buffer.erase("uri");
+  *found = true;
+  return bytes;
+}
+
+}  // namespace
+
+// Every reference to a buffer: bufferViews[].buffer and, for EXT_meshopt_compression, the
+// extension's buffer.
+void ForEachBufferRef(nlohmann::json& json, const std::function<void(nlohmann::json&)>& visit) {
+  if (!json.contains("bufferViews") || !json["bufferViews"].is_array()) return;
+  for (nlohmann::json& view : json["bufferViews"]) {
+    if (!view.is_object()) continue;
+    if (view.contains("buffer") && view["buffer"].is_number_unsigned()) visit(view["buffer"]);
+    if (view.contains("extensions") && view["extensions"].is_object() &&
+        view["extensions"].contains(kMeshoptExtension)) {
+      nlohmann::json& ext = view["extensions"][kMeshoptExtension];
+      if (ext.is_object() && ext.contains("buffer") && ext["buffer"].is_number_unsigned())
+        visit(ext["buffer"]);
+    }
+  }
+}
+
+// The byteOffset member of the object that refers to a buffer (a bufferView or its meshopt
+// extension), moved by `by`; false when it is malformed.
+bool MoveOffset(nlohmann::json& holder, uint64_t by) {
+  uint64_t offset = 0;
+  if (!gltf::GetUintMember(holder, "byteOffset", 0, &offset) || offset > UINT64_MAX - by)
+    return false;
+  holder["byteOffset"] = offset + by;
+  return true;
+}
+
+Status AdoptBufferFiles(GltfDocument& doc, const std::string& base_dir, const std::string& name,
+                        bool first_only) {
+  nlohmann::json& json = doc.json();
+  if (!json.contains("buffers") || !json["buffers"].is_array() || json["buffers"].empty())
+    return Status::Ok();
+  nlohmann::json& buffers = json["buffers"];
+  if (!doc.has_binary_chunk()) {
+    bool found = false;
+    Result<std::vector<uint8_t>> bytes = ReadBufferFile(buffers[0], 0, base_dir, name, &found);
+    if (!bytes.ok()) return bytes.status();
+    if (!found) return Status::Ok();
+    doc.binary() = std::move(bytes.value());
+    buffers[0].erase("uri");
+  }
+  if (first_only) return Status::Ok();
+  // The other buffer files are appended to the binary chunk (16-byte aligned) and their views
+  // rebased onto it, so that the decoders read one buffer, as in a GLB.
+  std::vector<int64_t> new_index(buffers.size());
+  std::vector<uint64_t> base(buffers.size(), 0);
+  std::vector<bool> merged(buffers.size(), false);
+  nlohmann::json kept = nlohmann::json::array();
+  kept.push_back(buffers[0]);
+  new_index[0] = 0;
+  for (size_t i = 1; i < buffers.size(); ++i) {
+    bool found = false;
+    Result<std::vector<uint8_t>> bytes = ReadBufferFile(buffers[i], i, base_dir, name, &found);
+    if (!bytes.ok()) return bytes.status();
+    if (!found) {
+      new_index[i] = static_cast<int64_t>(kept.size());
+      kept.push_back(buffers[i]);
+      continue;
+    }
+    std::vector<uint8_t>& bin = doc.binary();
+    bin.resize((bin.size() + 15) / 16 * 16, 0);
+    base[i] = bin.size();
+    bin.insert(bin.end(), bytes->begin(), bytes->end());
+    merged[i] = true;
+    new_index[i] = 0;
+  }
+  if (kept.size() == buffers.size()) return Status::Ok();
+  bool well_formed = true;
+  if (json.contains("bufferViews") && json["bufferViews"].is_array()) {
+    for (nlohmann::json& view : json["bufferViews"]) {
+      if (!view.is_object()) continue;
+      nlohmann::json* holders[2] = {&view, nullptr};
+      if (view.contains("extensions") && view["extensions"].is_object() &&
+          view["extensions"].contains(kMeshoptExtension))
+        holders[1] = &view["extensions"][kMeshoptExtension];
+      for (nlohmann::json* h : holders) {
+        uint64_t buffer = 0;
+        if (h == nullptr || !h->is_object() || !gltf::GetUintMember(*h, "buffer", 0, &buffer) ||
+            buffer >= merged.size() || !merged[buffer])
+          continue;
+        well_formed = well_formed && MoveOffset(*h, base[buffer]);
+      }
+    }
+  }
+  if (!well_formed)
+    return Status(StatusCode::kParseError, name + ": a bufferView's byteOffset is malformed");
+  ForEachBufferRef(json, [&](nlohmann::json& ref) {
+    const uint64_t i = ref.get<uint64_t>();
+    if (i < new_index.size()) ref = new_index[i];
+  });
+  buffers = std::move(kept);
+  buffers[0]["byteLength"] = doc.binary().size();
   return Status::Ok();
 }
 

@@ -58,11 +58,15 @@ Result<std::vector<CollisionHull>> ReadCollisionHulls(const GltfDocument& doc,
 // be read counts as "unreadable" (decoding the file reports why).
 std::map<std::string, size_t> StreamVersions(const GltfDocument& doc);
 
-// For a .gltf (no binary chunk) whose buffer 0 is a file beside it (a relative URI resolved in
-// `base_dir`, as `hullpack unpack OUT.gltf` writes): reads that file into doc's binary chunk and
-// drops the uri, so that ReadCollisionHulls reads its colliders as it reads a GLB's. Nothing
-// happens for a document with a binary chunk or whose buffer 0 has no such uri.
-Status AdoptBufferFile(GltfDocument& doc, const std::string& base_dir, const std::string& name);
+// For a .gltf whose buffers are files beside it (relative URIs resolved in `base_dir`, as
+// `hullpack unpack OUT.gltf` and glTF-Transform write): reads buffer 0's file into doc's binary
+// chunk and drops its uri, so that ReadCollisionHulls reads the colliders as it reads a GLB's; then
+// (unless `first_only`) appends every other buffer file to the binary chunk and moves the views on
+// it there, so that the decoders of compressed data read one buffer as in a GLB (glTF-Transform's
+// `partition` writes one .bin per mesh). A document with a binary chunk keeps it; data: URIs and
+// buffers without a uri stay as they are. Errors name the file.
+Status AdoptBufferFiles(GltfDocument& doc, const std::string& base_dir, const std::string& name,
+                        bool first_only = false);
 
 }  // namespace hullpack
 

@@ -67,14 +67,57 @@ open(gltf, "w").write(json.dumps(doc))
 open(os.path.join(os.path.dirname(gltf), bin_name), "wb").write(chunks[0x004E4942])
 PY
 }
+# The same with the streams in a second buffer file (glTF-Transform's `partition` writes one .bin
+# per buffer): a small first buffer is put in front, and every buffer index moves up by one.
+split_glb_second_buffer() {  # GLB OUT.gltf BIN_NAME
+  python3 - "$@" <<'PY'
+import json, struct, sys, os
+glb, gltf, bin_name = sys.argv[1:4]
+data = open(glb, "rb").read()
+at, chunks = 12, {}
+while at + 8 <= len(data):
+    length, kind = struct.unpack_from("<II", data, at)
+    chunks[kind] = data[at + 8:at + 8 + length]
+    at += 8 + length
+doc = json.loads(chunks[0x4E4F534A])
+doc["buffers"][0]["uri"] = bin_name.replace(" ", "%20")
+doc["buffers"].insert(0, {"uri": "first.bin", "byteLength": 4})
+for view in doc.get("bufferViews", []):
+    view["buffer"] += 1
+    meshopt = view.get("extensions", {}).get("EXT_meshopt_compression")
+    if meshopt is not None:
+        meshopt["buffer"] += 1
+folder = os.path.dirname(gltf)
+open(gltf, "w").write(json.dumps(doc))
+open(os.path.join(folder, bin_name), "wb").write(chunks[0x004E4942])
+open(os.path.join(folder, "first.bin"), "wb").write(bytes(4))
+PY
+}
 for glb in "$draco" "$meshopt"; do
   name=$(basename "$glb" .glb)
-  split_glb "$glb" "$tmp/$name.gltf" "$name data.bin" || { fail "$name: cannot split"; continue; }
   want=$(info_line "$glb" "meshes")
+  split_glb "$glb" "$tmp/$name.gltf" "$name data.bin" || { fail "$name: cannot split"; continue; }
   got=$(info_line "$tmp/$name.gltf" "meshes")
   [ -n "$got" ] && [ "$want" = "$got" ] || fail "$name.gltf: '$got' against the GLB's '$want'"
   "$bin" pack "$tmp/$name.gltf" -o "$tmp/${name}_gltf_packed.glb" --quiet >/dev/null || fail "$name.gltf pack"
+  mkdir -p "$tmp/second_$name"
+  split_glb_second_buffer "$glb" "$tmp/second_$name/$name.gltf" "$name streams.bin" ||
+    { fail "$name: cannot split into two buffers"; continue; }
+  got=$(info_line "$tmp/second_$name/$name.gltf" "meshes")
+  [ -n "$got" ] && [ "$want" = "$got" ] ||
+    fail "$name.gltf, streams in buffer 1: '$got' against the GLB's '$want'"
+  "$bin" pack "$tmp/second_$name/$name.gltf" -o "$tmp/${name}_second_packed.glb" --quiet \
+    >/dev/null || fail "$name.gltf, streams in buffer 1: pack"
+  cmp -s "$tmp/${name}_gltf_packed.glb" "$tmp/${name}_second_packed.glb" ||
+    fail "$name.gltf: the streams in buffer 1 pack to other bytes than in buffer 0"
 done
+# A missing buffer file is an error that names it.
+rm "$tmp/second_$(basename "$draco" .glb)/$(basename "$draco" .glb) streams.bin"
+if "$bin" info "$tmp/second_$(basename "$draco" .glb)/$(basename "$draco" .glb).gltf" >/dev/null 2>"$tmp/err"; then
+  fail "a missing second buffer file was not an error"
+else
+  grep -q "streams.bin" "$tmp/err" || fail "the missing buffer file is not named: $(cat "$tmp/err")"
+fi
 
 if [ "$failures" -ne 0 ]; then
   echo "$failures checks failed"

@@ -6,6 +6,7 @@
 
 #include "../gltf/draco_square.h"
 #include "common/file_util.h"
+#include "gltf/gltf_document.h"
 #include "io_test_util.h"
 
 namespace hullpack {
@@ -89,6 +90,37 @@ TEST(SceneIo, DracoGltfWithItsStreamsInTheBinBesideIt) {
   EXPECT_NE(missing.status().message().find("square streams.bin"), std::string::npos)
       << missing.status().message();
   testing::WriteBytes(dir.File("square streams.bin"), doc.binary().data(), doc.binary().size());
+  Result<Scene> s = ReadScene(gltf);
+  ASSERT_TRUE(s.ok()) << s.status().ToString();
+  ASSERT_EQ(s->meshes.size(), 1u);
+  EXPECT_EQ(s->meshes[0].triangle_count(), 2u);
+  EXPECT_EQ(s->meshes[0].uv_sets.size(), 1u);
+}
+
+// glTF-Transform's `partition` gives each mesh its own .bin: the streams lie in buffer 1, after a
+// buffer 0 of other data, and a data: buffer follows (its index moves down when buffer 1 joins
+// the binary chunk).
+TEST(SceneIo, DracoGltfWithItsStreamsInASecondBufferFile) {
+  TempDir dir;
+  const GltfDocument doc = DracoDocument(EncodeSquare(), 4);
+  Result<std::string> text = doc.SerializeJson("streams.bin");
+  ASSERT_TRUE(text.ok()) << text.status().ToString();
+  nlohmann::json json = nlohmann::json::parse(text.value());
+  nlohmann::json& buffers = json["buffers"];
+  buffers.insert(buffers.begin(), nlohmann::json{{"uri", "first.bin"}, {"byteLength", 5}});
+  buffers.push_back(
+      nlohmann::json{{"uri", "data:application/octet-stream;base64,AAAA"}, {"byteLength", 3}});
+  for (nlohmann::json& view : json["bufferViews"]) view["buffer"] = 1;
+  const std::string gltf = dir.File("square.gltf");
+  const std::string dumped = json.dump();
+  testing::WriteBytes(gltf, dumped.data(), dumped.size());
+  const uint8_t first[5] = {1, 2, 3, 4, 5};
+  testing::WriteBytes(dir.File("first.bin"), first, sizeof(first));
+  Result<Scene> missing = ReadScene(gltf);
+  ASSERT_FALSE(missing.ok());
+  EXPECT_NE(missing.status().message().find("streams.bin"), std::string::npos)
+      << missing.status().message();
+  testing::WriteBytes(dir.File("streams.bin"), doc.binary().data(), doc.binary().size());
   Result<Scene> s = ReadScene(gltf);
   ASSERT_TRUE(s.ok()) << s.status().ToString();
   ASSERT_EQ(s->meshes.size(), 1u);
