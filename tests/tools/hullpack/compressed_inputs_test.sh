@@ -50,11 +50,14 @@ fi
 "$bin" pack "$meshopt" -o "$tmp/meshopt_packed.glb" --quiet >/dev/null || fail "meshopt pack"
 
 # The same two files as a .gltf whose buffer 0 is a .bin beside it (glTF-Transform's .gltf output):
-# the streams are read from the .bin, and the file reads like its GLB.
-split_glb() {  # GLB OUT.gltf BIN_NAME
+# the streams are read from the .bin, and the file reads like its GLB. With "second", the streams
+# are in a second buffer file (glTF-Transform's `partition` writes one .bin per buffer): a small
+# first buffer is put in front, and every buffer index moves up by one.
+split_glb() {  # GLB OUT.gltf BIN_NAME [second]
   python3 - "$@" <<'PY'
 import json, struct, sys, os
 glb, gltf, bin_name = sys.argv[1:4]
+second = len(sys.argv) > 4 and sys.argv[4] == "second"
 data = open(glb, "rb").read()
 at, chunks = 12, {}
 while at + 8 <= len(data):
@@ -63,34 +66,17 @@ while at + 8 <= len(data):
     at += 8 + length
 doc = json.loads(chunks[0x4E4F534A])
 doc["buffers"][0]["uri"] = bin_name.replace(" ", "%20")
-open(gltf, "w").write(json.dumps(doc))
-open(os.path.join(os.path.dirname(gltf), bin_name), "wb").write(chunks[0x004E4942])
-PY
-}
-# The same with the streams in a second buffer file (glTF-Transform's `partition` writes one .bin
-# per buffer): a small first buffer is put in front, and every buffer index moves up by one.
-split_glb_second_buffer() {  # GLB OUT.gltf BIN_NAME
-  python3 - "$@" <<'PY'
-import json, struct, sys, os
-glb, gltf, bin_name = sys.argv[1:4]
-data = open(glb, "rb").read()
-at, chunks = 12, {}
-while at + 8 <= len(data):
-    length, kind = struct.unpack_from("<II", data, at)
-    chunks[kind] = data[at + 8:at + 8 + length]
-    at += 8 + length
-doc = json.loads(chunks[0x4E4F534A])
-doc["buffers"][0]["uri"] = bin_name.replace(" ", "%20")
-doc["buffers"].insert(0, {"uri": "first.bin", "byteLength": 4})
-for view in doc.get("bufferViews", []):
-    view["buffer"] += 1
-    meshopt = view.get("extensions", {}).get("EXT_meshopt_compression")
-    if meshopt is not None:
-        meshopt["buffer"] += 1
 folder = os.path.dirname(gltf)
+if second:
+    doc["buffers"].insert(0, {"uri": "first.bin", "byteLength": 4})
+    for view in doc.get("bufferViews", []):
+        view["buffer"] += 1
+        meshopt = view.get("extensions", {}).get("EXT_meshopt_compression")
+        if meshopt is not None:
+            meshopt["buffer"] += 1
+    open(os.path.join(folder, "first.bin"), "wb").write(bytes(4))
 open(gltf, "w").write(json.dumps(doc))
 open(os.path.join(folder, bin_name), "wb").write(chunks[0x004E4942])
-open(os.path.join(folder, "first.bin"), "wb").write(bytes(4))
 PY
 }
 for glb in "$draco" "$meshopt"; do
@@ -101,7 +87,7 @@ for glb in "$draco" "$meshopt"; do
   [ -n "$got" ] && [ "$want" = "$got" ] || fail "$name.gltf: '$got' against the GLB's '$want'"
   "$bin" pack "$tmp/$name.gltf" -o "$tmp/${name}_gltf_packed.glb" --quiet >/dev/null || fail "$name.gltf pack"
   mkdir -p "$tmp/second_$name"
-  split_glb_second_buffer "$glb" "$tmp/second_$name/$name.gltf" "$name streams.bin" ||
+  split_glb "$glb" "$tmp/second_$name/$name.gltf" "$name streams.bin" second ||
     { fail "$name: cannot split into two buffers"; continue; }
   got=$(info_line "$tmp/second_$name/$name.gltf" "meshes")
   [ -n "$got" ] && [ "$want" = "$got" ] ||
