@@ -599,24 +599,23 @@ Result<std::vector<uint8_t>> ReadBufferFile(const nlohmann::json& buffer, size_t
 
 }  // namespace
 
-// Every reference to a buffer: bufferViews[].buffer and, for EXT_meshopt_compression, the
-// extension's buffer.
-void ForEachBufferRef(nlohmann::json& json, const std::function<void(nlohmann::json&)>& visit) {
+// Every object that refers to a buffer by its "buffer" member (an unsigned integer): each
+// bufferView and, for EXT_meshopt_compression, the view's extension.
+void ForEachBufferHolder(nlohmann::json& json, const std::function<void(nlohmann::json&)>& visit) {
   if (!json.contains("bufferViews") || !json["bufferViews"].is_array()) return;
+  auto holds = [](const nlohmann::json& h) {
+    return h.is_object() && h.contains("buffer") && h["buffer"].is_number_unsigned();
+  };
   for (nlohmann::json& view : json["bufferViews"]) {
     if (!view.is_object()) continue;
-    if (view.contains("buffer") && view["buffer"].is_number_unsigned()) visit(view["buffer"]);
+    if (holds(view)) visit(view);
     if (view.contains("extensions") && view["extensions"].is_object() &&
-        view["extensions"].contains(kMeshoptExtension)) {
-      nlohmann::json& ext = view["extensions"][kMeshoptExtension];
-      if (ext.is_object() && ext.contains("buffer") && ext["buffer"].is_number_unsigned())
-        visit(ext["buffer"]);
-    }
+        view["extensions"].contains(kMeshoptExtension) &&
+        holds(view["extensions"][kMeshoptExtension]))
+      visit(view["extensions"][kMeshoptExtension]);
   }
 }
 
-// The byteOffset member of the object that refers to a buffer (a bufferView or its meshopt
-// extension), moved by `by`; false when it is malformed.
 bool MoveOffset(nlohmann::json& holder, uint64_t by) {
   uint64_t offset = 0;
   if (!gltf::GetUintMember(holder, "byteOffset", 0, &offset) || offset > UINT64_MAX - by)
@@ -666,28 +665,14 @@ Status AdoptBufferFiles(GltfDocument& doc, const std::string& base_dir, const st
   }
   if (kept.size() == buffers.size()) return Status::Ok();
   bool well_formed = true;
-  if (json.contains("bufferViews") && json["bufferViews"].is_array()) {
-    for (nlohmann::json& view : json["bufferViews"]) {
-      if (!view.is_object()) continue;
-      nlohmann::json* holders[2] = {&view, nullptr};
-      if (view.contains("extensions") && view["extensions"].is_object() &&
-          view["extensions"].contains(kMeshoptExtension))
-        holders[1] = &view["extensions"][kMeshoptExtension];
-      for (nlohmann::json* h : holders) {
-        uint64_t buffer = 0;
-        if (h == nullptr || !h->is_object() || !gltf::GetUintMember(*h, "buffer", 0, &buffer) ||
-            buffer >= merged.size() || !merged[buffer])
-          continue;
-        well_formed = well_formed && MoveOffset(*h, base[buffer]);
-      }
-    }
-  }
+  ForEachBufferHolder(json, [&](nlohmann::json& holder) {
+    const uint64_t i = holder["buffer"].get<uint64_t>();
+    if (i >= new_index.size()) return;
+    if (merged[i]) well_formed = well_formed && MoveOffset(holder, base[i]);
+    holder["buffer"] = new_index[i];
+  });
   if (!well_formed)
     return Status(StatusCode::kParseError, name + ": a bufferView's byteOffset is malformed");
-  ForEachBufferRef(json, [&](nlohmann::json& ref) {
-    const uint64_t i = ref.get<uint64_t>();
-    if (i < new_index.size()) ref = new_index[i];
-  });
   buffers = std::move(kept);
   buffers[0]["byteLength"] = doc.binary().size();
   return Status::Ok();

@@ -78,6 +78,22 @@ TEST(SceneIo, FormatsThroughAssimp) {
 
 // glTF-Transform writes a Draco .gltf with its streams in the .bin beside it: the buffer is read
 // in before the streams are decoded. Without the .bin the error names it.
+// `gltf` refers to the Draco square's streams (doc's binary chunk) in the file `streams` of `dir`:
+// without it the error names it; with it written the square reads.
+void ExpectSquareReadsOnceItsStreamsAreThere(const TempDir& dir, const std::string& gltf,
+                                             const std::string& streams, const GltfDocument& doc) {
+  Result<Scene> missing = ReadScene(gltf);
+  ASSERT_FALSE(missing.ok());
+  EXPECT_NE(missing.status().message().find(streams), std::string::npos)
+      << missing.status().message();
+  testing::WriteBytes(dir.File(streams), doc.binary().data(), doc.binary().size());
+  Result<Scene> s = ReadScene(gltf);
+  ASSERT_TRUE(s.ok()) << s.status().ToString();
+  ASSERT_EQ(s->meshes.size(), 1u);
+  EXPECT_EQ(s->meshes[0].triangle_count(), 2u);
+  EXPECT_EQ(s->meshes[0].uv_sets.size(), 1u);
+}
+
 TEST(SceneIo, DracoGltfWithItsStreamsInTheBinBesideIt) {
   TempDir dir;
   const GltfDocument doc = DracoDocument(EncodeSquare(), 4);
@@ -85,16 +101,7 @@ TEST(SceneIo, DracoGltfWithItsStreamsInTheBinBesideIt) {
   ASSERT_TRUE(json.ok()) << json.status().ToString();
   const std::string gltf = dir.File("square.gltf");
   testing::WriteBytes(gltf, json->data(), json->size());
-  Result<Scene> missing = ReadScene(gltf);
-  ASSERT_FALSE(missing.ok());
-  EXPECT_NE(missing.status().message().find("square streams.bin"), std::string::npos)
-      << missing.status().message();
-  testing::WriteBytes(dir.File("square streams.bin"), doc.binary().data(), doc.binary().size());
-  Result<Scene> s = ReadScene(gltf);
-  ASSERT_TRUE(s.ok()) << s.status().ToString();
-  ASSERT_EQ(s->meshes.size(), 1u);
-  EXPECT_EQ(s->meshes[0].triangle_count(), 2u);
-  EXPECT_EQ(s->meshes[0].uv_sets.size(), 1u);
+  ExpectSquareReadsOnceItsStreamsAreThere(dir, gltf, "square streams.bin", doc);
 }
 
 // glTF-Transform's `partition` gives each mesh its own .bin: the streams lie in buffer 1, after a
@@ -116,16 +123,7 @@ TEST(SceneIo, DracoGltfWithItsStreamsInASecondBufferFile) {
   testing::WriteBytes(gltf, dumped.data(), dumped.size());
   const uint8_t first[5] = {1, 2, 3, 4, 5};
   testing::WriteBytes(dir.File("first.bin"), first, sizeof(first));
-  Result<Scene> missing = ReadScene(gltf);
-  ASSERT_FALSE(missing.ok());
-  EXPECT_NE(missing.status().message().find("streams.bin"), std::string::npos)
-      << missing.status().message();
-  testing::WriteBytes(dir.File("streams.bin"), doc.binary().data(), doc.binary().size());
-  Result<Scene> s = ReadScene(gltf);
-  ASSERT_TRUE(s.ok()) << s.status().ToString();
-  ASSERT_EQ(s->meshes.size(), 1u);
-  EXPECT_EQ(s->meshes[0].triangle_count(), 2u);
-  EXPECT_EQ(s->meshes[0].uv_sets.size(), 1u);
+  ExpectSquareReadsOnceItsStreamsAreThere(dir, gltf, "streams.bin", doc);
 }
 
 TEST(SceneIo, MissingFileAndUnknownFormat) {
