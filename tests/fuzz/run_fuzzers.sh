@@ -17,7 +17,8 @@ if [ ! -f "$build/CMakeCache.txt" ]; then
   CC=clang CXX=clang++ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DHULLPACK_FUZZ=ON -DHULLPACK_BUILD_TESTS=OFF >/dev/null
 fi
-targets=(o3dgc_decoder_fuzzer packed_glb_fuzzer obj_reader_fuzzer off_reader_fuzzer wrl_reader_fuzzer ply_reader_fuzzer)
+targets=(o3dgc_decoder_fuzzer packed_glb_fuzzer obj_reader_fuzzer off_reader_fuzzer wrl_reader_fuzzer ply_reader_fuzzer
+  threemf_reader_fuzzer)
 # Only the fuzzers and the two programs that make the seeds (not every tool of the fuzz build).
 cmake --build "$build" -j "$(nproc)" --target "${targets[@]}" test_o3dgc hullpack >/dev/null
 mkdir -p "$build/artifacts"

@@ -1,6 +1,6 @@
 // libFuzzer target for the project's own scene parsers, built once per format
-// (HULLPACK_FUZZ_FORMAT = kObj, kOff, kWrl or kPly): any bytes must give a Status or a mesh whose
-// indices are in range; never a crash, hang or sanitizer report.
+// (HULLPACK_FUZZ_FORMAT = kObj, kOff, kWrl, kPly or kThreeMf): any bytes must give a Status or a
+// mesh whose indices are in range; never a crash, hang or sanitizer report.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>

@@ -10,6 +10,7 @@
 #include "io/off_format.h"
 #include "io/ply_reader.h"
 #include "io/ply_writer.h"
+#include "io/threemf_reader.h"
 #include "io/wrl_format.h"
 #include "packed/packed_glb_reader.h"
 
@@ -35,6 +36,8 @@ Result<Scene> ParseOwnFormat(const uint8_t* data, size_t size, FileFormat format
       return ParseWrl(text, size, name);
     case FileFormat::kPly:
       return ParsePly(data, size, name);
+    case FileFormat::kThreeMf:
+      return Parse3mf(data, size, name);
     default:
       return Status(StatusCode::kInternal, name + ": not a format of the project's own parsers");
   }
@@ -42,7 +45,7 @@ Result<Scene> ParseOwnFormat(const uint8_t* data, size_t size, FileFormat format
 
 bool HasOwnParser(FileFormat format) {
   return format == FileFormat::kObj || format == FileFormat::kOff || format == FileFormat::kWrl ||
-         format == FileFormat::kPly;
+         format == FileFormat::kPly || format == FileFormat::kThreeMf;
 }
 
 }  // namespace
@@ -58,6 +61,7 @@ FileFormat FormatFromExtension(const std::string& path) {
   if (ext == "glb") return FileFormat::kGlb;
   if (ext == "fbx") return FileFormat::kFbx;
   if (ext == "dae") return FileFormat::kDae;
+  if (ext == "3mf") return FileFormat::kThreeMf;
   return FileFormat::kUnknown;
 }
 
@@ -81,6 +85,8 @@ const char* FormatName(FileFormat format) {
       return "FBX";
     case FileFormat::kDae:
       return "COLLADA";
+    case FileFormat::kThreeMf:
+      return "3MF";
     case FileFormat::kUnknown:
       break;
   }
@@ -93,7 +99,7 @@ Result<Scene> ReadScene(const std::string& path, const ReadOptions& options) {
     const std::string ext = LowerExtension(path);
     return Status(StatusCode::kUnknownFormat,
                   path + ": unknown format " + (ext.empty() ? "(no extension)" : "'." + ext + "'") +
-                      " (reads .obj .off .wrl .ply .stl .gltf .glb .fbx .dae)");
+                      " (reads .obj .off .wrl .ply .stl .gltf .glb .fbx .dae .3mf)");
   }
   ObjParseOptions obj_options;
   if (HasOwnParser(format)) {

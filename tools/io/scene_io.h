@@ -1,9 +1,9 @@
 // Reading and writing whole scenes, dispatched by file extension (and, for reading, by content).
 //
-// Readers: OBJ (+MTL), OFF, VRML .wrl, PLY and glTF/GLB use the project's own parsers (GLB files
-// packed by `hullpack pack` are decoded on the way in); FBX, DAE and STL go through assimp. Every
-// reader triangulates polygons, keeps what the scene model can hold and lists in Scene::dropped
-// what it could not keep. Errors name the file and the problem.
+// Readers: OBJ (+MTL), OFF, VRML .wrl, PLY, 3MF and glTF/GLB use the project's own parsers (GLB
+// files packed by `hullpack pack` are decoded on the way in); FBX, DAE and STL go through assimp.
+// Every reader triangulates polygons, keeps what the scene model can hold and lists in
+// Scene::dropped what it could not keep. Errors name the file and the problem.
 //
 // Writers: .obj (one `o` group per mesh, `usemtl` per material id), .off, .wrl (one Shape per
 // mesh), .ply (binary little-endian) and .glb (plain, uncompressed glTF 2.0). A hull set is written
@@ -22,7 +22,7 @@
 
 namespace hullpack {
 
-enum class FileFormat { kUnknown, kObj, kOff, kWrl, kPly, kStl, kGltf, kGlb, kFbx, kDae };
+enum class FileFormat { kUnknown, kObj, kOff, kWrl, kPly, kStl, kGltf, kGlb, kFbx, kDae, kThreeMf };
 
 // The format a path names by its extension (case-insensitive).
 FileFormat FormatFromExtension(const std::string& path);
